@@ -1,0 +1,27 @@
+#pragma once
+// Loads a knee model YAML (models/*.yaml) into a knee law: the model's own law (damping
+// table or Mauch cylinder) plus its hyperextension stop. Knee friction belongs to the
+// participant's knee unit (Burkett Table 2, Tc) and is added by the participant loader.
+#include <string>
+
+#include "knee/knee_law.h"
+#include "knee/joint_stop.h"
+
+namespace swingsim {
+
+struct KneeModel {
+  std::string path;
+  std::string name;   ///< `name:` key, or the file stem
+  std::string kind;   ///< `kind:` key: damping_table, mauch (more may follow)
+  KneeLawSum law;     ///< the model's resisting law(s) followed by the hyperextension stop
+};
+
+/// Reads a knee model. Throws InputError (`file:line: key: ...`) on any bad input.
+KneeModel loadKneeModel(const std::string& path);
+
+class YamlMap;
+/// Reads a `hyperextension_stop:` block (all keys optional, defaults in JointStopParams
+/// with the stop engaging at full extension).
+JointStopParams readHyperextensionStop(YamlMap& yaml);
+
+}  // namespace swingsim

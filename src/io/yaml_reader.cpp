@@ -1,0 +1,261 @@
+#include "io/yaml_reader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace swingsim {
+
+std::string formatNumber(double value) {
+  char buf[64];
+  for (int precision = 6; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, value);
+    if (std::strtod(buf, nullptr) == value) break;
+  }
+  return buf;
+}
+
+namespace {
+
+std::string describe(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "nothing";
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "?";
+}
+
+// yaml-cpp keeps both entries of a duplicated key; a user who writes a key twice has
+// made a mistake we must not paper over by silently taking one of them.
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& path) {
+  if (node.IsMap()) {
+    std::set<std::string> seen;
+    for (const auto& kv : node) {
+      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "";
+      if (!seen.insert(key).second) {
+        throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) + ": " +
+                         key + ": key appears twice in the same mapping");
+      }
+      rejectDuplicateKeys(kv.second, path);
+    }
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) rejectDuplicateKeys(item, path);
+  }
+}
+
+YamlMap fromText(const std::string& text, const std::string& path) {
+  YAML::Node root;
+  try {
+    // A UTF-8 byte-order mark is what spreadsheet and Windows editors write; accept it.
+    std::string body = text;
+    if (body.size() >= 3 && body.compare(0, 3, "\xEF\xBB\xBF") == 0) body.erase(0, 3);
+    root = YAML::Load(body);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " +
+                     e.msg);
+  }
+  if (!root.IsMap()) {
+    throw InputError(path + ":1: expected a YAML mapping of keys (got " + describe(root) +
+                     ")");
+  }
+  rejectDuplicateKeys(root, path);
+  return YamlMap(root, path);
+}
+
+}  // namespace
+
+YamlMap YamlMap::loadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return fromText(text.str(), path);
+}
+
+YamlMap YamlMap::loadString(const std::string& text, const std::string& path) {
+  return fromText(text, path);
+}
+
+YamlMap::YamlMap(YAML::Node node, std::string path, std::string keyPrefix)
+    : node_(std::move(node)), path_(std::move(path)), prefix_(std::move(keyPrefix)) {}
+
+bool YamlMap::has(const std::string& key) const {
+  if (std::find(used_.begin(), used_.end(), key) == used_.end()) used_.push_back(key);
+  return node_[key].IsDefined() && !node_[key].IsNull();
+}
+
+int YamlMap::lineOf(const std::string& key) const {
+  if (!key.empty()) {
+    for (const auto& kv : node_) {
+      if (kv.first.IsScalar() && kv.first.Scalar() == key) return kv.first.Mark().line + 1;
+    }
+  }
+  return node_.Mark().line + 1;
+}
+
+std::string YamlMap::where(const std::string& key) const {
+  std::string s = path_ + ":" + std::to_string(std::max(1, lineOf(key))) + ": ";
+  if (!key.empty()) s += prefix_ + key + ": ";
+  else if (!prefix_.empty()) s += prefix_.substr(0, prefix_.size() - 1) + ": ";
+  return s;
+}
+
+void YamlMap::fail(const std::string& key, const std::string& what,
+                   const std::string& got) const {
+  throw InputError(where(key) + what + " (got " + got + ")");
+}
+
+YAML::Node YamlMap::require(const std::string& key) const {
+  if (std::find(used_.begin(), used_.end(), key) == used_.end()) used_.push_back(key);
+  YAML::Node n = node_[key];
+  if (!n.IsDefined()) {
+    throw InputError(where() + (prefix_ + key) + ": required key is missing");
+  }
+  return n;
+}
+
+double YamlMap::toDouble(const YAML::Node& n, const std::string& key) const {
+  if (!n.IsScalar()) fail(key, "expected a number", describe(n));
+  const std::string& s = n.Scalar();
+  // Spreadsheet exports with a comma decimal separator ("0,41") must not parse as 0.
+  errno = 0;
+  char* end = nullptr;
+  double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size()) {
+    std::string lower = s;
+    std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+    if (lower == ".nan" || lower == ".inf" || lower == "-.inf" || lower == "+.inf")
+      fail(key, "expected a finite number", "'" + s + "'");
+    if (s.find(',') != std::string::npos)
+      fail(key, "expected a number with a decimal point, not a comma", "'" + s + "'");
+    fail(key, "expected a number", "'" + s + "'");
+  }
+  if (!std::isfinite(v) || errno == ERANGE) fail(key, "expected a finite number", "'" + s + "'");
+  return v;
+}
+
+double YamlMap::getDouble(const std::string& key,
+                          const std::function<std::string(double)>& check) {
+  YAML::Node n = require(key);
+  double v = toDouble(n, key);
+  if (check) {
+    std::string what = check(v);
+    if (!what.empty()) fail(key, what, formatNumber(v));
+  }
+  return v;
+}
+
+double YamlMap::getDouble(const std::string& key, double defaultValue,
+                          const std::function<std::string(double)>& check) {
+  if (!has(key)) return defaultValue;
+  return getDouble(key, check);
+}
+
+int YamlMap::getInt(const std::string& key, int defaultValue) {
+  if (!has(key)) return defaultValue;
+  double v = toDouble(require(key), key);
+  if (v != std::floor(v) || std::fabs(v) > 1e9) fail(key, "expected an integer", formatNumber(v));
+  return static_cast<int>(v);
+}
+
+bool YamlMap::getBool(const std::string& key, bool defaultValue) {
+  if (!has(key)) return defaultValue;
+  YAML::Node n = require(key);
+  if (n.IsScalar()) {
+    const std::string& s = n.Scalar();
+    if (s == "true" || s == "yes" || s == "True") return true;
+    if (s == "false" || s == "no" || s == "False") return false;
+  }
+  fail(key, "expected true or false", describe(n));
+}
+
+std::string YamlMap::getString(const std::string& key) {
+  YAML::Node n = require(key);
+  if (!n.IsScalar() || n.Scalar().empty()) fail(key, "expected a text value", describe(n));
+  return n.Scalar();
+}
+
+std::string YamlMap::getString(const std::string& key, const std::string& defaultValue) {
+  if (!has(key)) return defaultValue;
+  return getString(key);
+}
+
+std::string YamlMap::getChoice(const std::string& key, const std::vector<std::string>& allowed,
+                               const std::string& defaultValue) {
+  std::string v = defaultValue.empty() ? getString(key) : getString(key, defaultValue);
+  if (std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
+    std::string list;
+    for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+    fail(key, "expected one of: " + list, "'" + v + "'");
+  }
+  return v;
+}
+
+std::vector<double> YamlMap::getDoubleList(const std::string& key) {
+  YAML::Node n = require(key);
+  if (!n.IsSequence()) fail(key, "expected a list of numbers", describe(n));
+  std::vector<double> out;
+  out.reserve(n.size());
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    out.push_back(toDouble(n[i], key + "[" + std::to_string(i) + "]"));
+  }
+  return out;
+}
+
+std::vector<std::string> YamlMap::getStringList(const std::string& key) {
+  YAML::Node n = require(key);
+  if (!n.IsSequence()) fail(key, "expected a list of text values", describe(n));
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].IsScalar()) fail(key + "[" + std::to_string(i) + "]", "expected a text value", describe(n[i]));
+    out.push_back(n[i].Scalar());
+  }
+  return out;
+}
+
+YamlMap YamlMap::getMap(const std::string& key) {
+  YAML::Node n = require(key);
+  if (!n.IsMap()) fail(key, "expected a mapping of keys", describe(n));
+  return YamlMap(n, path_, prefix_ + key + ".");
+}
+
+std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
+  YAML::Node n = require(key);
+  if (!n.IsSequence()) fail(key, "expected a list", describe(n));
+  std::vector<YamlMap> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].IsMap()) fail(key + "[" + std::to_string(i) + "]", "expected a mapping of keys", describe(n[i]));
+    out.emplace_back(n[i], path_, prefix_ + key + "[" + std::to_string(i) + "].");
+  }
+  return out;
+}
+
+void YamlMap::finish() const {
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+    if (std::find(used_.begin(), used_.end(), key) == used_.end()) {
+      throw InputError(path_ + ":" + std::to_string(kv.first.Mark().line + 1) + ": " + prefix_ +
+                       key + ": unknown key (check the spelling; see README 'File formats')");
+    }
+  }
+}
+
+std::string YamlMap::directory() const {
+  auto slash = path_.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : path_.substr(0, slash);
+}
+
+std::string YamlMap::resolvePath(const std::string& relative) const {
+  if (!relative.empty() && relative[0] == '/') return relative;
+  return directory() + "/" + relative;
+}
+
+std::string mustBePositive(double v) { return v > 0 ? "" : "must be positive"; }
+std::string mustBeNonNegative(double v) { return v >= 0 ? "" : "must not be negative"; }
+
+}  // namespace swingsim
