@@ -1,0 +1,16 @@
+#pragma once
+// Trajectory output: CSV with our column names and an OpenSim .sto (version=1 header with
+// nRows, nColumns, inDegrees=yes, endheader) so OpenSim users can open it.
+#include <string>
+
+#include "swing/swing_simulation.h"
+
+namespace swingsim {
+
+/// CSV text: time_s, hip_flexion_deg, knee_flexion_deg, hip_flexion_rate_deg_s,
+/// knee_flexion_rate_deg_s, hip_moment_Nm, knee_moment_Nm.
+std::string formatTrajectoryCsv(const SwingTrajectory& trajectory);
+/// OpenSim storage text with the same columns (angles in degrees, inDegrees=yes).
+std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::string& name);
+
+}  // namespace swingsim

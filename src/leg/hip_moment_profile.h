@@ -1,0 +1,36 @@
+#pragma once
+// The hip moment that drives the swing, as a function of time since toe-off. Burkett 2004
+// measured it per participant on an isokinetic dynamometer but did not publish it; see the
+// README ("Assumptions") for the profile we use and how it is calibrated.
+#include <string>
+#include <vector>
+
+namespace swingsim {
+
+struct HipMomentProfile {
+  enum class Kind { kBiphasicSine, kTable };
+  Kind kind = Kind::kBiphasicSine;
+
+  // kBiphasicSine: a hip-flexion half-sine then a hip-extension half-sine (the
+  // concentric/concentric flexion-extension cycle of the dynamometer), then zero.
+  double flexionAmplitude = 30;    ///< N m, peak hip flexion moment
+  double flexionDuration = 0.20;   ///< s
+  double extensionAmplitude = 15;  ///< N m, peak hip extension moment (magnitude)
+  double extensionDuration = 0.20; ///< s
+
+  // kTable: moment (N m, + = flexion) at strictly increasing times (s); monotone cubic
+  // (Fritsch-Carlson) between samples, held at the end values outside.
+  std::vector<double> times, moments;
+
+  /// Multiplies the whole profile. The one calibrated number per participant
+  /// (`swingsim calibrate`): swing time falls monotonically as it grows.
+  double scale = 1.0;
+
+  /// Hip moment at time t (s), N m, positive = flexion.
+  double calcMoment(double t) const;
+  /// Throws std::invalid_argument with a description if the profile is unusable.
+  void validate() const;
+  std::string describe() const;
+};
+
+}  // namespace swingsim

@@ -1,0 +1,79 @@
+#include "leg/knee_force_element.h"
+
+#include <vector>
+
+namespace swingsim {
+
+using namespace SimTK;
+
+KneeForceElement::KneeForceElement(const GeneralForceSubsystem& forces, const SimbodyMatterSubsystem& matter,
+                                   const MobilizedBody& shank, const KneeLaw& law)
+    : matter_(matter),
+      subsystem_(forces.getMySubsystemIndex()),
+      shank_(shank.getMobilizedBodyIndex()),
+      law_(law.clone()) {}
+
+KneeKinematics KneeForceElement::kinematics(const State& s) const {
+  const MobilizedBody& shank = matter_.getMobilizedBody(shank_);
+  return {shank.getOneQ(s, 0), shank.getOneU(s, 0)};
+}
+
+void KneeForceElement::realizeTopology(State& s) const {
+  Vector z(law_->numStates() + 1, 0.0);
+  if (law_->numStates() > 0) law_->initialStates(&z[0]);
+  firstZ_ = s.allocateZ(subsystem_, z);
+}
+
+const double* KneeForceElement::getLawStates(const State& s) const {
+  return &s.getZ(subsystem_)[firstZ_];
+}
+
+double KneeForceElement::calcKneeMoment(const State& s) const {
+  return law_->calcMoment(kinematics(s), getLawStates(s));
+}
+
+double KneeForceElement::getWork(const State& s) const {
+  return s.getZ(subsystem_)[firstZ_ + law_->numStates()];
+}
+
+void KneeForceElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&,
+                                 Vector& mobilityForces) const {
+  matter_.getMobilizedBody(shank_).applyOneMobilityForce(s, 0, calcKneeMoment(s), mobilityForces);
+}
+
+void KneeForceElement::realizeDynamics(const State& s) const {
+  const KneeKinematics knee = kinematics(s);
+  const double* z = getLawStates(s);
+  Vector& zdot = s.updZDot(subsystem_);
+  const int n = law_->numStates();
+  if (n > 0) law_->calcStateDerivatives(knee, z, &zdot[firstZ_]);
+  zdot[firstZ_ + n] = law_->calcMoment(knee, z) * knee.flexionRate;  // power, W
+}
+
+HipDriveElement::HipDriveElement(const GeneralForceSubsystem& forces, const SimbodyMatterSubsystem& matter,
+                                 const MobilizedBody& thigh, HipMomentProfile profile, JointStopParams range)
+    : matter_(matter),
+      subsystem_(forces.getMySubsystemIndex()),
+      thigh_(thigh.getMobilizedBodyIndex()),
+      profile_(std::move(profile)),
+      range_(range) {}
+
+void HipDriveElement::realizeTopology(State& s) const { workZ_ = s.allocateZ(subsystem_, Vector(1, 0.0)); }
+
+double HipDriveElement::calcHipMoment(const State& s) const {
+  const MobilizedBody& thigh = matter_.getMobilizedBody(thigh_);
+  return profile_.calcMoment(s.getTime()) + range_.calcJointMoment(thigh.getOneQ(s, 0), thigh.getOneU(s, 0));
+}
+
+double HipDriveElement::getWork(const State& s) const { return s.getZ(subsystem_)[workZ_]; }
+
+void HipDriveElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&,
+                                Vector& mobilityForces) const {
+  matter_.getMobilizedBody(thigh_).applyOneMobilityForce(s, 0, calcHipMoment(s), mobilityForces);
+}
+
+void HipDriveElement::realizeDynamics(const State& s) const {
+  s.updZDot(subsystem_)[workZ_] = calcHipMoment(s) * matter_.getMobilizedBody(thigh_).getOneU(s, 0);
+}
+
+}  // namespace swingsim

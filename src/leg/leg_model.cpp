@@ -1,0 +1,93 @@
+#include "leg/leg_model.h"
+
+namespace swingsim {
+
+using namespace SimTK;
+
+namespace {
+
+// Planar segment: mass m with its COM at `com` in the body frame and moment of inertia
+// izz about the COM (Burkett Table 2's Izz). Ixx = Iyy = Izz keeps the inertia physical;
+// only Izz acts in this planar chain.
+MassProperties segmentMassProperties(double m, const Vec3& com, double izz) {
+  return MassProperties(m, com, Inertia(izz).shiftFromMassCenter(com, m));
+}
+
+}  // namespace
+
+LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment,
+                   const HipRange& hipRange, double hipHeight)
+    : matter_(system_),
+      forces_(system_),
+      thighLength_(g.thighLength),
+      shankLength_(g.shankLength),
+      footLength_(g.footLength) {
+  Force::UniformGravity(forces_, matter_, Vec3(0, -kGravity, 0));
+
+  // The orientation link of Burkett's DH chain: no mass, places the hip in space.
+  orientation_ = MobilizedBody::Weld(matter_.Ground(), Transform(Vec3(0, hipHeight, 0)),
+                                     Body::Massless(), Transform());
+
+  thigh_ = MobilizedBody::Pin(orientation_, Transform(),
+                              Body::Rigid(segmentMassProperties(g.thighMass, Vec3(0, -g.thighCom, 0), g.thighInertia)),
+                              Transform());
+
+  // Shank, with an optional added point mass (Bach 1994) below the knee.
+  MassProperties shankProps = segmentMassProperties(g.shankMass, Vec3(0, -g.shankCom, 0), g.shankInertia);
+  if (g.added.mass > 0) {
+    const double m = g.shankMass + g.added.mass;
+    const Vec3 com = (g.shankMass * Vec3(0, -g.shankCom, 0) + g.added.mass * Vec3(0, -g.added.distanceBelowKnee, 0)) / m;
+    const Inertia inertiaAboutKnee =
+        shankProps.getInertia() + Inertia::pointMassAt(Vec3(0, -g.added.distanceBelowKnee, 0), g.added.mass);
+    shankProps = MassProperties(m, com, inertiaAboutKnee);
+  }
+  const Rotation flip(Pi, XAxis);  // makes the knee pin's +q a flexion (see header)
+  shank_ = MobilizedBody::Pin(thigh_, Transform(flip, Vec3(0, -g.thighLength, 0)), Body::Rigid(shankProps),
+                              Transform(flip, Vec3(0)));
+
+  // Foot welded at the ankle at 90 deg to the shank, pointing forward (+x of the shank).
+  foot_ = MobilizedBody::Weld(shank_, Transform(Vec3(0, -g.shankLength, 0)),
+                              Body::Rigid(segmentMassProperties(g.footMass, Vec3(g.footComForward, 0, 0), g.footInertia)),
+                              Transform());
+
+  JointStopParams range;
+  range.lower = hipRange.minFlexion;
+  range.upper = hipRange.maxFlexion;
+  auto* kneeImpl = new KneeForceElement(forces_, matter_, shank_, knee);
+  knee_ = kneeImpl;
+  Force::Custom(forces_, kneeImpl);
+  auto* hipImpl = new HipDriveElement(forces_, matter_, thigh_, hipMoment, range);
+  hipDrive_ = hipImpl;
+  Force::Custom(forces_, hipImpl);
+
+  system_.realizeTopology();
+}
+
+State LegModel::makeInitialState(const InitialConditions& initial) const {
+  State s = system_.getDefaultState();
+  thigh_.setOneQ(s, 0, initial.hipFlexion);
+  shank_.setOneQ(s, 0, initial.kneeFlexion);
+  thigh_.setOneU(s, 0, initial.hipFlexionRate);
+  shank_.setOneU(s, 0, initial.kneeFlexionRate);
+  system_.realize(s, Stage::Velocity);
+  return s;
+}
+
+double LegModel::calcMechanicalEnergy(const State& s) const {
+  return system_.calcKineticEnergy(s) + system_.calcPotentialEnergy(s);
+}
+
+LegPose LegModel::calcPose(const State& s) const {
+  auto at = [&](const MobilizedBody& b, const Vec3& p) {
+    Vec3 g = b.findStationLocationInGround(s, p);
+    return Vec2(g[0], g[1]);
+  };
+  LegPose pose;
+  pose.hip = at(thigh_, Vec3(0));
+  pose.knee = at(shank_, Vec3(0));
+  pose.ankle = at(foot_, Vec3(0));
+  pose.toe = at(foot_, Vec3(footLength_, 0, 0));
+  return pose;
+}
+
+}  // namespace swingsim

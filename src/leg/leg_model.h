@@ -1,0 +1,70 @@
+#pragma once
+// The Simbody model of the prosthetic leg (Burkett 2004 Fig. 2): Ground -> orientation
+// (welded frame placing the hip) -> thigh (pin at the hip) -> shank (pin at the knee) ->
+// foot (welded at the ankle, perpendicular to the shank). Planar, gravity -y, x forward.
+//
+// Coordinates: hip pin q = hip flexion (counter-clockwise about +z with the subject facing
+// +x); knee pin q = knee flexion (its frames are flipped about x so that a positive q
+// swings the shank backwards, the clinical sign).
+#include <Simbody.h>
+
+#include "knee/joint_stop.h"
+#include "knee/knee_law.h"
+#include "leg/knee_force_element.h"
+#include "leg/leg_parameters.h"
+
+namespace swingsim {
+
+/// Ground-frame positions of the chain's landmarks (m), for stick figures and clearance.
+struct LegPose {
+  SimTK::Vec2 hip, knee, ankle, toe;
+};
+
+class LegModel {
+ public:
+  /// Builds the system. `hipHeight` (m) places the hip above the ground.
+  LegModel(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
+           const HipRange& hipRange, double hipHeight);
+  LegModel(const LegModel&) = delete;
+  LegModel& operator=(const LegModel&) = delete;
+
+  const SimTK::MultibodySystem& getSystem() const { return system_; }
+  SimTK::MultibodySystem& updSystem() { return system_; }
+  const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
+
+  /// A state at toe-off with the given angles and rates, realized to Velocity.
+  SimTK::State makeInitialState(const InitialConditions& initial) const;
+
+  double getHipFlexion(const SimTK::State& s) const { return thigh_.getOneQ(s, 0); }
+  double getKneeFlexion(const SimTK::State& s) const { return shank_.getOneQ(s, 0); }
+  double getHipFlexionRate(const SimTK::State& s) const { return thigh_.getOneU(s, 0); }
+  double getKneeFlexionRate(const SimTK::State& s) const { return shank_.getOneU(s, 0); }
+  double calcHipMoment(const SimTK::State& s) const { return hipDrive_->calcHipMoment(s); }
+  double calcKneeMoment(const SimTK::State& s) const { return knee_->calcKneeMoment(s); }
+  /// Knee law states (e.g. Mauch S2) in state s.
+  const double* getKneeLawStates(const SimTK::State& s) const { return knee_->getLawStates(s); }
+  const KneeLaw& getKneeLaw() const { return knee_->law(); }
+
+  /// Kinetic + gravitational potential energy, J (needs Velocity stage).
+  double calcMechanicalEnergy(const SimTK::State& s) const;
+  /// Work done on the leg by the knee moment and by the hip moment since toe-off, J.
+  double getKneeWork(const SimTK::State& s) const { return knee_->getWork(s); }
+  double getHipWork(const SimTK::State& s) const { return hipDrive_->getWork(s); }
+
+  /// Landmark positions (needs Position stage).
+  LegPose calcPose(const SimTK::State& s) const;
+
+ private:
+  SimTK::MultibodySystem system_;
+  SimTK::SimbodyMatterSubsystem matter_;
+  SimTK::GeneralForceSubsystem forces_;
+  SimTK::MobilizedBody::Weld orientation_;
+  SimTK::MobilizedBody::Pin thigh_;
+  SimTK::MobilizedBody::Pin shank_;
+  SimTK::MobilizedBody::Weld foot_;
+  const KneeForceElement* knee_ = nullptr;    // owned by forces_
+  const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_
+  double thighLength_, shankLength_, footLength_;
+};
+
+}  // namespace swingsim
