@@ -1,0 +1,102 @@
+#pragma once
+// The Mauch S-N-S hydraulic knee cylinder: 2-phase and 4-phase force laws with smooth
+// phase switches (Chien 2014 Eqs. 2-16), the S2 hyperextension latch as a continuous
+// state (Eq. 6), and the knee moment through the knee geometry (Eq. 1).
+//
+// Readings of the paper's ambiguous lines (papers.md section 2; docs/mauch.md says why):
+// - x0 is split: a velocity width (m/s) in S1 and a position width (m) in Eq. 6 and S8.
+//   Defaults read the published x0 = 0.05 in the unit of xhy (0.005 cm): 0.05 cm(/s).
+// - x > 0 in flexion (design.md), so S1 = 1 while flexing and S4 selects stance flexion.
+// - Phase gates follow the paper's phase descriptions and Table 1 (not Eqs. 9-10 as
+//   printed): phase 2 "flexion at end stance and early swing" is gated by S1 S2 S8, and
+//   phase 3 "extension" by (1 - S1) S8.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "knee/knee_geometry.h"
+#include "knee/knee_law.h"
+
+namespace swingsim {
+
+/// Switch constants (Chien 2014 Eqs. 4, 6, 16).
+struct MauchSwitchParams {
+  double velocityWidth = 5e-4;           ///< x0 in S1 (Eq. 4), m/s, > 0
+  double positionWidth = 5e-4;           ///< x0 in Eq. 6 and S8 (Eq. 16), m, > 0
+  double hyperextensionPosition = 5e-5;  ///< xhy, m (0.005 cm)
+  double latchRate = 1e4;                ///< k in Eq. 6, 1/s, > 0
+};
+
+/// One phase's force law f + k x + c xd.
+struct MauchPhaseCoefficients {
+  double f = 0;  ///< offset force, N
+  double k = 0;  ///< stiffness, N/m
+  double c = 0;  ///< damping, N s/m
+};
+
+struct MauchCylinderParams {
+  int phases = 4;  ///< 2 or 4
+  std::vector<MauchPhaseCoefficients> coefficients;  ///< one per phase, phase 1 first
+  MauchSwitchParams switches;
+  KneeGeometryParams geometry;
+  /// S2 at the start of a simulation. 1 for a swing that starts at toe-off: the late-stance
+  /// hyperextension has released the valve. A bench test starting at heel strike uses 0.
+  double initialLatch = 1.0;
+};
+
+/// All switch variables at one instant (Chien 2014 Eqs. 3-4, 12-16), each in [0, 1].
+struct MauchSwitches {
+  double s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0, s8 = 0;
+};
+
+/// Switch values at piston position x (m), velocity xd (m/s) and latch state s2.
+MauchSwitches calcMauchSwitches(double x, double xd, double s2, const MauchSwitchParams& sw);
+
+/// dS2/dt (1/s), Chien 2014 Eq. 6: k (1 - S1) [1/2 - 1/2 tanh((x - xhy)/x0) - S2].
+double calcLatchDerivative(double x, double xd, double s2, const MauchSwitchParams& sw);
+
+/// Phase gates (weights of each phase's force law, summing to 1) for a 2- or 4-phase model:
+/// 2-phase: {S1 (1 - S2), S3} (Eq. 2); 4-phase: {S1 (1 - S2) S8, S1 S2 S8, (1 - S1) S8, 1 - S8}.
+std::vector<double> calcPhaseGates(int phases, const MauchSwitches& s);
+
+/// S2 along sampled data: integrates Eq. 6 exactly for coefficients held piecewise constant
+/// over `substeps` sub-intervals of each sample interval (x, xd interpolated linearly), so the
+/// stiff latch (k = 1e4/s against 361.4 Hz samples) stays stable and in [0, 1].
+/// `time` (s) strictly increasing; all vectors the same length. Returns S2 at each sample.
+std::vector<double> calcLatchHistory(const std::vector<double>& time, const std::vector<double>& x,
+                                     const std::vector<double>& xd, const MauchSwitchParams& sw,
+                                     double s2Start, int substeps = 10);
+
+/// The Mauch cylinder as a knee law with one state (S2). Throws std::invalid_argument on a
+/// phase count other than 2 or 4, a coefficient count that differs from it, non-finite
+/// coefficients, or non-positive switch widths or latch rate.
+class MauchCylinder final : public KneeLaw {
+ public:
+  explicit MauchCylinder(MauchCylinderParams params);
+  const MauchCylinderParams& params() const { return p_; }
+  const KneeGeometry& geometry() const { return geometry_; }
+  int numCoefficients() const { return 3 * p_.phases; }
+
+  /// Cylinder force (N, positive resists compression) at piston position x (m), velocity
+  /// xd (m/s) and latch S2: sum over phases of gate * (f + k x + c xd) (Eqs. 2, 7-11).
+  double calcForce(double x, double xd, double s2) const;
+  /// The regression row for one sample: for each phase p, {g_p, g_p x, g_p xd}, so that
+  /// calcForce = row . {f1, k1, c1, f2, k2, c2, ...}. Size numCoefficients().
+  std::vector<double> calcRegressorRow(double x, double xd, double s2) const;
+  /// Coefficients flattened in the regressor's order.
+  std::vector<double> getCoefficientVector() const;
+
+  std::string name() const override;
+  int numStates() const override { return 1; }
+  void initialStates(double* z) const override { z[0] = p_.initialLatch; }
+  /// M = -F dx/dtheta (N m, positive = flexion), z[0] = S2.
+  double calcMoment(const KneeKinematics& knee, const double* z) const override;
+  void calcStateDerivatives(const KneeKinematics& knee, const double* z, double* zdot) const override;
+  std::unique_ptr<KneeLaw> clone() const override { return std::make_unique<MauchCylinder>(*this); }
+
+ private:
+  MauchCylinderParams p_;
+  KneeGeometry geometry_;
+};
+
+}  // namespace swingsim
