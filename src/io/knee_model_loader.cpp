@@ -5,6 +5,7 @@
 #include "io/output_files.h"
 #include "io/yaml_reader.h"
 #include "knee/damping_table.h"
+#include "knee/mauch_cylinder.h"
 
 namespace swingsim {
 
@@ -36,7 +37,93 @@ std::unique_ptr<KneeLaw> readDampingTable(YamlMap& yaml) {
   return std::make_unique<DampingTable>(p);
 }
 
+std::string mustBeDialSetting(double v) {
+  return (v == 0 || v == 90 || v == 180) ? "" : "must be a dial setting: 0, 90 or 180";
+}
+
 }  // namespace
+
+MauchCylinderParams readMauchCylinder(YamlMap& yaml) {
+  MauchCylinderParams p;
+  p.phases = yaml.getInt("phases", 0);
+  if (p.phases != 2 && p.phases != 4) {
+    if (!yaml.has("phases")) yaml.getDouble("phases");  // throws "required key is missing"
+    yaml.fail("phases", "must be 2 or 4 (Chien 2014 2-phase or 4-phase model)", std::to_string(p.phases));
+  }
+  if (yaml.has("geometry")) {
+    YamlMap g = yaml.getMap("geometry");
+    p.geometry.ab = g.getDouble("ab_m", p.geometry.ab, mustBePositive);
+    p.geometry.ac = g.getDouble("ac_m", p.geometry.ac, mustBePositive);
+    if (p.geometry.ab == p.geometry.ac) g.fail("ac_m", "must differ from ab_m", formatNumber(p.geometry.ac));
+    g.finish();
+  }
+  YamlMap sw = yaml.getMap("switches");
+  p.switches.velocityWidth = sw.getDouble("velocity_width_m_per_s", mustBePositive);
+  p.switches.positionWidth = sw.getDouble("position_width_m", mustBePositive);
+  p.switches.hyperextensionPosition = sw.getDouble("hyperextension_position_m");
+  p.switches.latchRate = sw.getDouble("latch_rate_per_s", mustBePositive);
+  p.initialLatch = sw.getDouble("initial_latch", 1.0, [](double v) {
+    return v >= 0 && v <= 1 ? "" : "must be in [0, 1]";
+  });
+  sw.finish();
+
+  const double flexionDial = yaml.getDouble("flexion_dial_deg", mustBeDialSetting);
+  const double extensionDial = yaml.getDouble("extension_dial_deg", mustBeDialSetting);
+  bool found = false;
+  std::vector<std::pair<double, double>> seen;
+  for (YamlMap& setting : yaml.getMapList("settings")) {
+    const double f = setting.getDouble("flexion_dial_deg", mustBeDialSetting);
+    const double e = setting.getDouble("extension_dial_deg", mustBeDialSetting);
+    for (const auto& fe : seen) {
+      if (fe.first == f && fe.second == e)
+        setting.fail("flexion_dial_deg", "dial setting appears twice", "F" + formatNumber(f) + "E" + formatNumber(e));
+    }
+    seen.emplace_back(f, e);
+    std::vector<YamlMap> rows = setting.getMapList("coefficients");
+    std::vector<MauchPhaseCoefficients> coefficients(static_cast<std::size_t>(p.phases));
+    std::vector<bool> have(static_cast<std::size_t>(p.phases), false);
+    for (YamlMap& row : rows) {
+      const int phase = row.getInt("phase", 0);
+      if (phase < 1 || phase > p.phases)
+        row.fail("phase", "must be a phase number from 1 to " + std::to_string(p.phases), std::to_string(phase));
+      if (have[static_cast<std::size_t>(phase - 1)]) row.fail("phase", "phase appears twice", std::to_string(phase));
+      have[static_cast<std::size_t>(phase - 1)] = true;
+      auto& c = coefficients[static_cast<std::size_t>(phase - 1)];
+      c.f = row.getDouble("f_N");
+      c.k = row.getDouble("k_N_per_m");
+      c.c = row.getDouble("c_Ns_per_m");
+      row.finish();
+    }
+    for (int i = 0; i < p.phases; ++i) {
+      if (!have[static_cast<std::size_t>(i)])
+        setting.fail("coefficients", "phase " + std::to_string(i + 1) + " is missing; a " +
+                     std::to_string(p.phases) + "-phase model needs phases 1 to " + std::to_string(p.phases),
+                     std::to_string(rows.size()) + " phases");
+    }
+    setting.finish();
+    if (f == flexionDial && e == extensionDial) {
+      p.coefficients = coefficients;
+      found = true;
+    }
+  }
+  if (!found)
+    yaml.fail("flexion_dial_deg", "no coefficient set in settings for this dial setting",
+              "F" + formatNumber(flexionDial) + "E" + formatNumber(extensionDial));
+  return p;
+}
+
+MauchCylinderParams loadMauchCylinder(const std::string& path) {
+  YamlMap yaml = YamlMap::loadFile(path);
+  const std::string kind = yaml.getChoice("kind", {"damping_table", "mauch"}, "");
+  if (kind != "mauch") yaml.fail("kind", "expected a Mauch cylinder model (kind: mauch)", kind);
+  yaml.getString("name", "");
+  yaml.getString("description", "");
+  yaml.getString("source", "");
+  MauchCylinderParams p = readMauchCylinder(yaml);
+  readHyperextensionStop(yaml);
+  yaml.finish();
+  return p;
+}
 
 JointStopParams readHyperextensionStop(YamlMap& yaml) {
   JointStopParams p;
@@ -54,11 +141,18 @@ KneeModel loadKneeModel(const std::string& path) {
   YamlMap yaml = YamlMap::loadFile(path);
   KneeModel model;
   model.path = path;
-  model.kind = yaml.getChoice("kind", {"damping_table"}, "");
+  model.kind = yaml.getChoice("kind", {"damping_table", "mauch"}, "");
   model.name = yaml.getString("name", fileStem(path));
   yaml.getString("description", "");
   yaml.getString("source", "");
   if (model.kind == "damping_table") model.law.add(readDampingTable(yaml));
+  if (model.kind == "mauch") {
+    try {
+      model.law.add(std::make_unique<MauchCylinder>(readMauchCylinder(yaml)));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(yaml.where() + e.what());
+    }
+  }
   model.law.add(std::make_unique<JointStop>(readHyperextensionStop(yaml)));
   yaml.finish();
   return model;

@@ -4,8 +4,9 @@
 // participant's knee unit (Burkett Table 2, Tc) and is added by the participant loader.
 #include <string>
 
-#include "knee/knee_law.h"
 #include "knee/joint_stop.h"
+#include "knee/knee_law.h"
+#include "knee/mauch_cylinder.h"
 
 namespace swingsim {
 
@@ -19,7 +20,14 @@ struct KneeModel {
 /// Reads a knee model. Throws InputError (`file:line: key: ...`) on any bad input.
 KneeModel loadKneeModel(const std::string& path);
 
+/// Reads the Mauch cylinder of a `kind: mauch` model (phases, geometry, switches and the
+/// coefficient set of the selected dial setting; docs/mauch.md). Throws InputError.
+MauchCylinderParams loadMauchCylinder(const std::string& path);
+
 class YamlMap;
+/// Reads the Mauch part of a `kind: mauch` model already opened as `yaml`.
+MauchCylinderParams readMauchCylinder(YamlMap& yaml);
+
 /// Reads a `hyperextension_stop:` block (all keys optional, defaults in JointStopParams
 /// with the stop engaging at full extension).
 JointStopParams readHyperextensionStop(YamlMap& yaml);

@@ -1,0 +1,110 @@
+#include "io/knee_model_loader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "io/input_error.h"
+
+namespace swingsim {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "swingsim_knee_model_loader_test";
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string errorOf(const std::string& path) {
+  try {
+    loadKneeModel(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kValidHead = R"(kind: mauch
+phases: 4
+switches:
+  velocity_width_m_per_s: 0.0005
+  position_width_m: 0.0005
+  hyperextension_position_m: 0.00005
+  latch_rate_per_s: 10000
+flexion_dial_deg: 90
+extension_dial_deg: 90
+settings:
+  - flexion_dial_deg: 90
+    extension_dial_deg: 90
+    coefficients:
+)";
+
+TEST(KneeModelLoader, MauchFourPhaseModelWorksInRadiansWithItsLatchState) {
+  const KneeModel model = loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-4phase.yaml");
+  EXPECT_EQ(model.kind, "mauch");
+  ASSERT_EQ(model.law.size(), 2u);  // cylinder, then the hyperextension stop
+  EXPECT_EQ(model.law.part(1).name(), "hyperextension stop");
+  ASSERT_EQ(model.law.numStates(), 1);
+  double z = 0;
+  model.law.initialStates(&z);
+  EXPECT_EQ(z, 1.0);
+  // Swing flexion at 30 deg and 5 rad/s: phase 2 resists flexion.
+  const double m = model.law.calcMoment({30 * kDeg, 5.0}, &z);
+  EXPECT_LT(m, 0.0);
+  // Order of magnitude: c2 * (arm * rate) * arm with arm ~ 0.02 m/rad: ~ 2 N m.
+  EXPECT_GT(m, -20.0);
+  double zdot = 1;
+  model.law.calcStateDerivatives({30 * kDeg, 5.0}, &z, &zdot);
+  EXPECT_NEAR(zdot, 0.0, 1e-6);  // flexing: latch frozen
+}
+
+TEST(KneeModelLoader, MauchTwoPhaseModelLoads) {
+  const auto p = loadMauchCylinder(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-2phase.yaml");
+  EXPECT_EQ(p.phases, 2);
+  ASSERT_EQ(p.coefficients.size(), 2u);
+  EXPECT_GT(p.coefficients[0].c, p.coefficients[1].c);  // phase 1 is the high-force phase
+}
+
+TEST(KneeModelLoader, MissingPhaseNamesFileLineAndPhase) {
+  const std::string path = writeTemp("missing.yaml", std::string(kValidHead) +
+      "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
+      "      - {phase: 2, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
+      "      - {phase: 4, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n");
+  EXPECT_THAT(errorOf(path), HasSubstr("missing.yaml:13: settings[0].coefficients: phase 3 is missing"));
+}
+
+TEST(KneeModelLoader, RejectsBadPhaseCountsDialsAndDuplicates) {
+  std::string text = kValidHead;
+  text.replace(text.find("phases: 4"), 9, "phases: 3");
+  EXPECT_THAT(errorOf(writeTemp("p3.yaml", text)), HasSubstr("p3.yaml:2: phases: must be 2 or 4"));
+
+  text = kValidHead;
+  text.replace(text.find("flexion_dial_deg: 90"), 20, "flexion_dial_deg: 45");
+  EXPECT_THAT(errorOf(writeTemp("dial.yaml", text)), HasSubstr("dial.yaml:8: flexion_dial_deg: must be a dial setting"));
+
+  text = std::string(kValidHead) + "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
+                                   "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n";
+  EXPECT_THAT(errorOf(writeTemp("dup.yaml", text)), HasSubstr("phase appears twice"));
+
+  text = kValidHead;
+  text.replace(text.find("extension_dial_deg: 90\nsettings"), 22, "extension_dial_deg: 180");
+  for (int phase = 1; phase <= 4; ++phase)
+    text += "      - {phase: " + std::to_string(phase) + ", f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n";
+  EXPECT_THAT(errorOf(writeTemp("nodial.yaml", text)), HasSubstr("no coefficient set in settings for this dial setting (got F90E180)"));
+
+  text = kValidHead;
+  text.replace(text.find("  position_width_m: 0.0005\n"), 26, "");
+  EXPECT_THAT(errorOf(writeTemp("nowidth.yaml", text)), HasSubstr("switches.position_width_m: required key is missing"));
+}
+
+}  // namespace
+}  // namespace swingsim
