@@ -47,7 +47,7 @@ HipMomentProfile readHipMoment(YamlMap& yaml) {
     h.extensionAmplitude = m.getDouble("extension_amplitude_Nm", mustBeNonNegative);
     h.extensionDuration = m.getDouble("extension_duration_s", mustBePositive);
   }
-  h.scale = m.getDouble("scale", 1.0, mustBePositive);
+  h.timeScale = m.getDouble("time_scale", 1.0, mustBePositive);
   m.finish();
   return h;
 }

@@ -32,17 +32,19 @@ double interpolateMonotone(const std::vector<double>& x, const std::vector<doubl
 }
 }  // namespace
 
-double HipMomentProfile::calcMoment(double t) const {
-  if (kind == Kind::kTable) return scale * interpolateMonotone(times, moments, t);
+double HipMomentProfile::calcMoment(double time) const {
+  const double t = time / timeScale;
+  const double gain = 1.0 / (timeScale * timeScale);
+  if (kind == Kind::kTable) return gain * interpolateMonotone(times, moments, t);
   if (t < 0) return 0;
-  if (t < flexionDuration) return scale * flexionAmplitude * std::sin(kPiLocal * t / flexionDuration);
+  if (t < flexionDuration) return gain * flexionAmplitude * std::sin(kPiLocal * t / flexionDuration);
   const double te = t - flexionDuration;
-  if (te < extensionDuration) return -scale * extensionAmplitude * std::sin(kPiLocal * te / extensionDuration);
+  if (te < extensionDuration) return -gain * extensionAmplitude * std::sin(kPiLocal * te / extensionDuration);
   return 0;
 }
 
 void HipMomentProfile::validate() const {
-  if (!(scale > 0) || !std::isfinite(scale)) throw std::invalid_argument("scale must be positive");
+  if (!(timeScale > 0) || !std::isfinite(timeScale)) throw std::invalid_argument("time_scale must be positive");
   if (kind == Kind::kTable) {
     if (times.size() < 2 || times.size() != moments.size())
       throw std::invalid_argument("table needs at least 2 times and one moment per time");
@@ -57,11 +59,11 @@ void HipMomentProfile::validate() const {
 std::string HipMomentProfile::describe() const {
   char buf[256];
   if (kind == Kind::kTable) {
-    std::snprintf(buf, sizeof buf, "table of %zu samples (monotone cubic), scale %.4f", times.size(), scale);
+    std::snprintf(buf, sizeof buf, "table of %zu samples (monotone cubic), time scale %.4f", times.size(), timeScale);
   } else {
     std::snprintf(buf, sizeof buf,
-                  "biphasic sine: flexion %.1f N m for %.3f s, then extension %.1f N m for %.3f s, scale %.4f",
-                  flexionAmplitude, flexionDuration, extensionAmplitude, extensionDuration, scale);
+                  "biphasic sine: flexion %.1f N m for %.3f s, then extension %.1f N m for %.3f s, time scale %.4f",
+                  flexionAmplitude, flexionDuration, extensionAmplitude, extensionDuration, timeScale);
   }
   return buf;
 }

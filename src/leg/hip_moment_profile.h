@@ -22,9 +22,13 @@ struct HipMomentProfile {
   // (Fritsch-Carlson) between samples, held at the end values outside.
   std::vector<double> times, moments;
 
-  /// Multiplies the whole profile. The one calibrated number per participant
-  /// (`swingsim calibrate`): swing time falls monotonically as it grows.
-  double scale = 1.0;
+  /// Time scale tau, the one calibrated number per participant (`swingsim calibrate`):
+  /// the profile runs tau times slower with moments divided by tau^2, i.e.
+  /// M(t) = base(t / tau) / tau^2. For a purely inertial chain this stretches the whole
+  /// swing by exactly tau (dimensional analysis); gravity and knee damping make it
+  /// approximate, and the calibration scan checks that swing time rises monotonically.
+  /// (An amplitude scale was tried first and rejected: swing time is not monotonic in it.)
+  double timeScale = 1.0;
 
   /// Hip moment at time t (s), N m, positive = flexion.
   double calcMoment(double t) const;

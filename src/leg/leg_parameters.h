@@ -47,7 +47,7 @@ struct InitialConditions {
 /// The swing-end rule: the thigh has reached its defined flexion position AND the knee,
 /// after its peak flexion, is back inside the zone of stability, in whichever order.
 struct SwingEndRule {
-  double thighTargetFlexion = 25 * kDegToRad;  ///< rad
+  double thighTargetFlexion = 20 * kDegToRad;  ///< rad
   double zoneOfStability = 6 * kDegToRad;      ///< rad (Burkett Fig. 3: < 6 deg)
   double timeLimit = 1.5;                      ///< s: a swing not ended by then is an error
   double bounceWindow = 0.15;                  ///< s simulated after the end to see a bounce

@@ -95,15 +95,21 @@ class KneePeakHandler : public LegEventHandler {
   double zone_;
 };
 
-// Knee flexion crosses the zone-of-stability boundary, either way.
+// Knee flexion crosses the zone-of-stability boundary. One handler per direction: at the
+// localized event the knee can sit on the boundary to round-off, so the direction must
+// come from the trigger, not from re-reading the angle.
 class KneeZoneHandler : public LegEventHandler {
  public:
-  KneeZoneHandler(const LegModel& leg, SwingLog& log, double window, double zone)
-      : LegEventHandler(leg, log, Stage::Position, window), zone_(zone) {}
+  KneeZoneHandler(const LegModel& leg, SwingLog& log, double window, double zone, bool entering)
+      : LegEventHandler(leg, log, Stage::Position, window), zone_(zone), entering_(entering) {
+    // witness = zone - knee rises through zero when the knee enters the zone.
+    getTriggerInfo().setTriggerOnRisingSignTransition(entering);
+    getTriggerInfo().setTriggerOnFallingSignTransition(!entering);
+  }
   Real getValue(const State& s) const override { return zone_ - leg_.getKneeFlexion(s); }
   void handleEvent(State& s, Real, bool&) const override {
     const double t = s.getTime();
-    if (leg_.getKneeFlexion(s) < zone_) {
+    if (entering_) {
       if (!log_.peakSeen) return;  // still on the way up from toe-off
       log_.add("knee_enters_zone", t);
       log_.kneeInZone = true;
@@ -118,6 +124,7 @@ class KneeZoneHandler : public LegEventHandler {
 
  private:
   double zone_;
+  bool entering_;
 };
 
 std::string describeState(const LegModel& leg, const State& s) {
@@ -158,7 +165,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   MultibodySystem& system = leg.updSystem();
   system.addEventHandler(new ThighTargetHandler(leg, log, options.eventWindow, rule.thighTargetFlexion));
   system.addEventHandler(new KneePeakHandler(leg, log, options.eventWindow, rule.zoneOfStability));
-  system.addEventHandler(new KneeZoneHandler(leg, log, options.eventWindow, rule.zoneOfStability));
+  system.addEventHandler(new KneeZoneHandler(leg, log, options.eventWindow, rule.zoneOfStability, true));
+  system.addEventHandler(new KneeZoneHandler(leg, log, options.eventWindow, rule.zoneOfStability, false));
   system.realizeTopology();
 
   State state = leg.makeInitialState(p.initial);
@@ -174,7 +182,9 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   double minClearance = 1e9;
   auto observe = [&](const State& s) {
     if (options.recordTrajectory) recordSample(leg, s, result.trajectory);
-    if (!log.ended) {
+    // Clearance matters from peak knee flexion (mid-swing) to the swing end; before that
+    // the foot is still leaving the ground it pushed off from.
+    if (log.peakSeen && !log.ended) {
       LegPose pose = leg.calcPose(s);
       minClearance = std::min({minClearance, pose.ankle[1], pose.toe[1]});
     }

@@ -35,7 +35,7 @@ struct SwingResult {
   double peakKneeFlexion = 0;      ///< rad
   double peakKneeFlexionTime = 0;  ///< s
   bool bounce = false;             ///< knee left the zone again after entering it
-  double minToeClearance = 0;      ///< m, lowest toe height above ground before the swing end
+  double minToeClearance = 0;      ///< m, lowest ankle or toe height above ground from peak knee flexion to the swing end
   std::vector<SwingEvent> events;
   SwingTrajectory trajectory;
   int steps = 0;                   ///< integrator steps taken

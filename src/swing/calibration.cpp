@@ -1,0 +1,69 @@
+#include "swing/calibration.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "io/input_error.h"
+
+namespace swingsim {
+
+namespace {
+
+double swingTimeAt(SwingSetup setup, double scale, const SwingOptions& options) {
+  setup.participant.hipMoment.timeScale = scale;
+  try {
+    return simulateSwing(setup, options).swingTime;
+  } catch (const RunError&) {
+    return std::numeric_limits<double>::quiet_NaN();  // no swing end at this scale
+  }
+}
+
+}  // namespace
+
+CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, const SwingOptions& swingOptions,
+                                    const CalibrationOptions& options) {
+  SwingOptions fast = swingOptions;
+  fast.recordTrajectory = false;
+  SwingSetup setup = base;
+  setup.lowering = 0;
+  CalibrationResult r;
+  // Geometric scan: swing time must rise with the time scale wherever a swing ends.
+  const double ratio = std::pow(options.maxScale / options.minScale, 1.0 / (options.scanPoints - 1));
+  for (int i = 0; i < options.scanPoints; ++i) {
+    const double s = options.minScale * std::pow(ratio, i);
+    r.scanScales.push_back(s);
+    r.scanSwingTimes.push_back(swingTimeAt(setup, s, fast));
+  }
+  int bracket = -1;
+  for (int i = 0; i + 1 < options.scanPoints; ++i) {
+    const double a = r.scanSwingTimes[static_cast<std::size_t>(i)], b = r.scanSwingTimes[static_cast<std::size_t>(i) + 1];
+    if (std::isnan(a) || std::isnan(b)) continue;
+    if (!(b > a)) {
+      throw RunError(setup.participant.name + ": swing time is not monotonic in the hip-moment time scale between " +
+                     formatNumber(r.scanScales[static_cast<std::size_t>(i)]) + " and " +
+                     formatNumber(r.scanScales[static_cast<std::size_t>(i) + 1]) + " (" + formatNumber(a) + " s, " +
+                     formatNumber(b) + " s): the calibration would not be unique");
+    }
+    if (a <= target && target <= b) bracket = i;
+  }
+  if (bracket < 0) {
+    throw RunError(setup.participant.name + ": target swing time " + formatNumber(target) +
+                   " s is outside what hip-moment time scales " + formatNumber(options.minScale) + ".." +
+                   formatNumber(options.maxScale) + " reach (change the profile shape or the range)");
+  }
+  // Bisection on log(scale): robust, and the scan proved monotonicity in the bracket.
+  double lo = r.scanScales[static_cast<std::size_t>(bracket)], hi = r.scanScales[static_cast<std::size_t>(bracket) + 1];
+  double mid = lo, t = 0;
+  for (int it = 0; it < 60; ++it) {
+    mid = std::sqrt(lo * hi);
+    t = swingTimeAt(setup, mid, fast);
+    if (std::fabs(t - target) < options.timeTolerance) break;
+    if (t < target) lo = mid; else hi = mid;
+  }
+  r.timeScale = mid;
+  r.swingTime = t;
+  return r;
+}
+
+}  // namespace swingsim

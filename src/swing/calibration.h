@@ -1,0 +1,30 @@
+#pragma once
+// Calibration of the one free hip-moment parameter per participant (design.md,
+// "Calibration"): the profile's time scale, chosen so the standard-location swing time equals a
+// target (Burkett Table 3's model prediction).
+#include <vector>
+
+#include "swing/swing_simulation.h"
+
+namespace swingsim {
+
+struct CalibrationResult {
+  double timeScale = 0;   ///< calibrated hip-moment time scale
+  double swingTime = 0;   ///< s, swing time at that scale (lowering 0)
+  /// The scan that checked monotonicity: scale and swing time (NaN where no swing end).
+  std::vector<double> scanScales, scanSwingTimes;
+};
+
+struct CalibrationOptions {
+  double minScale = 0.85, maxScale = 1.8;
+  int scanPoints = 14;
+  double timeTolerance = 1e-5;  ///< s: stop when |swing time - target| is below this
+};
+
+/// Finds the scale. Throws RunError if swing time does not rise monotonically with the time scale over the
+/// scan, or the target is outside the reachable range.
+CalibrationResult calibrateHipTimeScale(const SwingSetup& setup, double targetSwingTime,
+                                    const SwingOptions& swingOptions = {},
+                                    const CalibrationOptions& options = {});
+
+}  // namespace swingsim

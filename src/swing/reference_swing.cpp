@@ -1,0 +1,300 @@
+#include "swing/reference_swing.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "io/input_error.h"
+#include "swing/dormand_prince.h"
+
+namespace swingsim {
+
+// ---------------------------------------------------------------------------------------
+// Equations of motion, derived by hand (Lagrange's equations of the second kind; e.g.
+// Goldstein, Classical Mechanics, Sec. 1.4; the double compound pendulum).
+//
+// Frame: x forward, y up, gravity g along -y, hip fixed at the origin. Angles are
+// counter-clockwise about +z, zero when a segment hangs straight down.
+//
+// Body 1, the thigh: mass m1 = thighMass, COM a1 = thighCom below the hip, inertia I1 about
+// its COM, length L1 = thighLength. Coordinate phi = hip flexion.
+//   p_knee = L1 (sin phi, -cos phi),  p_1 = a1 (sin phi, -cos phi).
+//
+// Body 2, the shank + foot (+ added point mass) as ONE rigid body (the ankle is welded).
+// In the shank frame (origin at the knee, -y along the shank towards the ankle, +x the
+// direction the foot points) its parts are:
+//   shank       m_s at (0, -a_s), inertia I_s about its COM    (a_s = shankCom)
+//   foot        m_f at (c_f, -L2), inertia I_f about its COM   (c_f = footComForward, L2 = shankLength)
+//   added mass  m_a at (0, -d_a)                               (d_a = added.distanceBelowKnee)
+// so m2 = m_s + m_f + m_a, and the composite COM lies at
+//   m2 r2 (sin gamma, -cos gamma) = (m_f c_f, -(m_s a_s + m_f L2 + m_a d_a)),
+// i.e. at distance r2 from the knee, rotated by gamma (forward) from the shank axis.
+// Its inertia about the knee is
+//   J2 = I_s + m_s a_s^2 + I_f + m_f (c_f^2 + L2^2) + m_a d_a^2 = I2 + m2 r2^2,
+// with I2 the inertia about the composite COM (parallel-axis theorem).
+//
+// The shank's absolute angle is psi = phi - theta (theta = knee flexion: flexing the knee
+// swings the shank backwards, the clinical sign used by LegModel). The composite COM line
+// therefore has absolute angle
+//   beta = psi + gamma = phi - theta + gamma,    theta = phi - beta + gamma,
+// and p_2 = p_knee + r2 (sin beta, -cos beta).
+//
+// Generalized coordinates (phi, beta). Velocities:
+//   v_1 = a1 phi' (cos phi, sin phi)
+//   v_2 = L1 phi' (cos phi, sin phi) + r2 beta' (cos beta, sin beta)
+// Kinetic and potential energy:
+//   T = 1/2 M11 phi'^2 + M12 phi' beta' + 1/2 M22 beta'^2
+//     M11 = I1 + m1 a1^2 + m2 L1^2
+//     M12 = m2 L1 r2 cos(phi - beta)
+//     M22 = I2 + m2 r2^2 = J2
+//   V = -(m1 a1 + m2 L1) g cos phi - m2 r2 g cos beta
+// d/dt dL/dq' - dL/dq = Q gives
+//   M11 phi'' + M12 beta'' + m2 L1 r2 sin(phi - beta) beta'^2 + (m1 a1 + m2 L1) g sin phi = Q_phi
+//   M12 phi'' + M22 beta'' - m2 L1 r2 sin(phi - beta) phi'^2 + m2 r2 g sin beta          = Q_beta
+// (the velocity terms: dM12/dt = -m2 L1 r2 sin(phi - beta)(phi' - beta'), and
+// dT/dphi = -dT/dbeta = -m2 L1 r2 sin(phi - beta) phi' beta').
+//
+// Generalized forces from the virtual work of the hip moment M_hip (on phi) and the knee
+// moment M_knee (on theta): dW = M_hip dphi + M_knee dtheta, dtheta = dphi - dbeta, so
+//   Q_phi = M_hip + M_knee,   Q_beta = -M_knee.
+// M_hip = hip moment profile(t) + hip range stop(phi, phi'); M_knee = knee law(theta,
+// theta', z) with theta' = phi' - beta', and the law's own states z integrated alongside
+// (z' = law.calcStateDerivatives). The 2x2 system is solved by Cramer's rule; its
+// determinant M11 M22 - M12^2 >= M11 M22 - (m2 L1 r2)^2 > 0 because M22 >= m2 r2^2 and
+// M11 > m2 L1^2 (the thigh has inertia).
+//
+// State vector y = (phi, beta, phi', beta', z_0 .. z_{n-1}).
+// ---------------------------------------------------------------------------------------
+class ReferenceSwing::Equations final : public OdeSystem {
+ public:
+  Equations(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment, const HipRange& hipRange)
+      : law_(knee.clone()), numLawStates_(law_->numStates()), hipMoment_(hipMoment), hipStop_(makeHipStop(hipRange)) {
+    const double m1 = g.thighMass, a1 = g.thighCom, I1 = g.thighInertia, L1 = g.thighLength;
+    const double ms = g.shankMass, as = g.shankCom, Is = g.shankInertia, L2 = g.shankLength;
+    const double mf = g.footMass, cf = g.footComForward, If = g.footInertia;
+    const double ma = g.added.mass, da = g.added.distanceBelowKnee;
+    const double m2 = ms + mf + ma;
+    const double momentX = mf * cf;                      // m2 r2 sin gamma
+    const double momentY = ms * as + mf * L2 + ma * da;  // m2 r2 cos gamma
+    const double r2 = std::hypot(momentX, momentY) / m2;
+    gamma_ = std::atan2(momentX, momentY);
+    m11_ = I1 + m1 * a1 * a1 + m2 * L1 * L1;
+    m22_ = Is + ms * as * as + If + mf * (cf * cf + L2 * L2) + ma * da * da;
+    m2L1r2_ = m2 * L1 * r2;
+    gravity1_ = (m1 * a1 + m2 * L1) * kGravity;
+    gravity2_ = m2 * r2 * kGravity;
+  }
+
+  int numStates() const override { return 4 + numLawStates_; }
+
+  void calcDerivatives(double t, const double* y, double* dydt) const override {
+    const double phi = y[0], beta = y[1], phiDot = y[2], betaDot = y[3];
+    const KneeKinematics knee{calcKneeFlexion(y), phiDot - betaDot};
+    const double* z = y + 4;
+    const double kneeMoment = law_->calcMoment(knee, z);
+    const double hipMoment = hipMoment_.calcMoment(t) + hipStop_.calcJointMoment(phi, phiDot);
+    const double s = std::sin(phi - beta);
+    const double m12 = m2L1r2_ * std::cos(phi - beta);
+    const double rhs1 = hipMoment + kneeMoment - m2L1r2_ * s * betaDot * betaDot - gravity1_ * std::sin(phi);
+    const double rhs2 = -kneeMoment + m2L1r2_ * s * phiDot * phiDot - gravity2_ * std::sin(beta);
+    const double det = m11_ * m22_ - m12 * m12;
+    dydt[0] = phiDot;
+    dydt[1] = betaDot;
+    dydt[2] = (m22_ * rhs1 - m12 * rhs2) / det;
+    dydt[3] = (m11_ * rhs2 - m12 * rhs1) / det;
+    if (numLawStates_ > 0) law_->calcStateDerivatives(knee, z, dydt + 4);
+  }
+
+  double calcKneeFlexion(const double* y) const { return calcKneeFlexion(y[0], y[1]); }
+  double calcKneeFlexion(double phi, double beta) const { return phi - beta + gamma_; }
+  double toBeta(double hipFlexion, double kneeFlexion) const { return hipFlexion - kneeFlexion + gamma_; }
+
+  /// y at toe-off: the mechanics from the initial conditions, the law's own initial states.
+  std::vector<double> makeInitialState(const InitialConditions& initial) const {
+    std::vector<double> y(static_cast<std::size_t>(numStates()));
+    y[0] = initial.hipFlexion;
+    y[1] = toBeta(initial.hipFlexion, initial.kneeFlexion);
+    y[2] = initial.hipFlexionRate;
+    y[3] = initial.hipFlexionRate - initial.kneeFlexionRate;
+    if (numLawStates_ > 0) law_->initialStates(y.data() + 4);
+    return y;
+  }
+
+  double calcEnergy(double phi, double beta, double phiDot, double betaDot) const {
+    const double m12 = m2L1r2_ * std::cos(phi - beta);
+    const double kinetic = 0.5 * m11_ * phiDot * phiDot + m12 * phiDot * betaDot + 0.5 * m22_ * betaDot * betaDot;
+    return kinetic - gravity1_ * std::cos(phi) - gravity2_ * std::cos(beta);
+  }
+
+ private:
+  static JointStop makeHipStop(const HipRange& range) {
+    JointStopParams p;  // stiffness and dissipation: the defaults, as in LegModel
+    p.lower = range.minFlexion;
+    p.upper = range.maxFlexion;
+    return JointStop(p);
+  }
+
+  std::unique_ptr<KneeLaw> law_;
+  int numLawStates_;
+  HipMomentProfile hipMoment_;
+  JointStop hipStop_;
+  double gamma_ = 0, m11_ = 0, m22_ = 0, m2L1r2_ = 0, gravity1_ = 0, gravity2_ = 0;
+};
+
+ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
+                               const HipRange& hipRange)
+    : equations_(std::make_shared<Equations>(geometry, knee, hipMoment, hipRange)) {}
+
+namespace {
+
+int signOf(double v) { return (v > 0) - (v < 0); }
+
+// Simbody's Event::classifyTransition: leaving zero is not an event; reaching zero is.
+bool isRising(double before, double after) { return signOf(before) == -1 && signOf(after) >= 0; }
+bool isFalling(double before, double after) { return signOf(before) == 1 && signOf(after) <= 0; }
+
+// Bisection on the dense output of the last step for a sign change of f; returns the
+// midpoint of the final bracket (< ReferenceSwing::kEventTimeTol wide).
+template <class F>
+double locateCrossing(const DormandPrince& dp, F f) {
+  double lo = dp.getStepStartTime(), hi = dp.getTime();
+  const int loSign = signOf(f(lo));
+  while (hi - lo > ReferenceSwing::kEventTimeTol) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;  // bracket at floating-point resolution
+    if (signOf(f(mid)) == loSign) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, const std::vector<double>& sampleTimes,
+                                              double relTol, double absTol) const {
+  const Equations& eq = *equations_;
+  for (std::size_t i = 0; i < sampleTimes.size(); ++i) {
+    if (!(sampleTimes[i] >= 0) || (i > 0 && sampleTimes[i] < sampleTimes[i - 1]))
+      throw std::invalid_argument("reference swing: sample times must be >= 0 and non-decreasing");
+  }
+  const std::vector<double> y0 = eq.makeInitialState(initial);
+  DormandPrince dp(eq, relTol, absTol);
+  dp.initialize(0.0, y0.data());
+
+  ReferenceTrajectory out;
+  for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate})
+    v->reserve(sampleTimes.size());
+  for (double t : sampleTimes) {
+    while (dp.getTime() < t) dp.step(t);
+    const double* y = dp.getState();
+    out.time.push_back(t);
+    out.hipFlexion.push_back(y[0]);
+    out.kneeFlexion.push_back(eq.calcKneeFlexion(y));
+    out.hipFlexionRate.push_back(y[2]);
+    out.kneeFlexionRate.push_back(y[2] - y[3]);
+  }
+  return out;
+}
+
+ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial, const SwingEndRule& rule,
+                                               double relTol, double absTol) const {
+  const Equations& eq = *equations_;
+  const std::vector<double> y0 = eq.makeInitialState(initial);
+  DormandPrince dp(eq, relTol, absTol);
+  dp.initialize(0.0, y0.data());
+
+  // The three trigger functions of simulateSwing's event handlers.
+  const double target = rule.thighTargetFlexion, zone = rule.zoneOfStability;
+  auto thighSignal = [&](double t) { return dp.interpolate(t, 0) - target; };
+  auto kneeRate = [&](double t) { return dp.interpolate(t, 2) - dp.interpolate(t, 3); };
+  auto kneeFlexionAt = [&](double t) { return eq.calcKneeFlexion(dp.interpolate(t, 0), dp.interpolate(t, 1)); };
+  auto zoneSignal = [&](double t) { return zone - kneeFlexionAt(t); };
+  auto signals = [&](const double* y, double& thigh, double& rate, double& zoneValue) {
+    thigh = y[0] - target;
+    rate = y[2] - y[3];
+    zoneValue = zone - eq.calcKneeFlexion(y);
+  };
+
+  ReferenceSwingEnd result;
+  result.peakKneeFlexion = -1e9;
+  bool thighReached = false, peakSeen = false, kneeInZone = false;
+  double thigh0, rate0, zone0;
+  signals(dp.getState(), thigh0, rate0, zone0);
+
+  enum Kind { kThigh, kPeak, kZone };
+  struct Crossing {
+    double time;
+    Kind kind;
+  };
+  while (true) {
+    if (dp.getTime() >= rule.timeLimit) {
+      throw RunError("reference swing: the swing did not end within the time limit of " +
+                     formatNumber(rule.timeLimit) + " s");
+    }
+    dp.step(rule.timeLimit);
+    double thigh1, rate1, zone1;
+    signals(dp.getState(), thigh1, rate1, zone1);
+
+    Crossing crossings[3];
+    int count = 0;
+    if (!thighReached && isRising(thigh0, thigh1)) crossings[count++] = {locateCrossing(dp, thighSignal), kThigh};
+    if (isFalling(rate0, rate1)) crossings[count++] = {locateCrossing(dp, kneeRate), kPeak};
+    if (isRising(zone0, zone1) || isFalling(zone0, zone1)) crossings[count++] = {locateCrossing(dp, zoneSignal), kZone};
+    // Handle in time order, as Simbody does.
+    for (int i = 1; i < count; ++i)
+      for (int j = i; j > 0 && crossings[j].time < crossings[j - 1].time; --j) std::swap(crossings[j], crossings[j - 1]);
+
+    for (int i = 0; i < count; ++i) {
+      const double t = crossings[i].time;
+      switch (crossings[i].kind) {
+        case kThigh:
+          thighReached = true;
+          result.thighAtTargetTime = t;
+          break;
+        case kPeak: {
+          const double knee = kneeFlexionAt(t);
+          if (knee <= zone) break;  // wiggles inside the zone are not the swing's peak
+          peakSeen = true;
+          if (knee > result.peakKneeFlexion) {
+            result.peakKneeFlexion = knee;
+            result.peakKneeFlexionTime = t;
+          }
+          break;
+        }
+        case kZone:
+          if (isRising(zone0, zone1)) {  // knee flexion fell below the zone boundary
+            if (!peakSeen) break;       // still on the way up from toe-off
+            kneeInZone = true;
+            result.kneeEntersZoneTime = t;
+          } else {
+            kneeInZone = false;
+          }
+          break;
+      }
+      if (thighReached && kneeInZone) {
+        result.swingTime = t;
+        result.steps = dp.getNumSteps();
+        return result;
+      }
+    }
+    thigh0 = thigh1;
+    rate0 = rate1;
+    zone0 = zone1;
+  }
+}
+
+double ReferenceSwing::calcSwingTime(const InitialConditions& initial, const SwingEndRule& rule, double tol) const {
+  return calcSwingEnd(initial, rule, tol, tol).swingTime;
+}
+
+double ReferenceSwing::calcMechanicalEnergy(double hipFlexion, double kneeFlexion, double hipFlexionRate,
+                                            double kneeFlexionRate) const {
+  const Equations& eq = *equations_;
+  return eq.calcEnergy(hipFlexion, eq.toBeta(hipFlexion, kneeFlexion), hipFlexionRate,
+                       hipFlexionRate - kneeFlexionRate);
+}
+
+}  // namespace swingsim

@@ -1,0 +1,76 @@
+#pragma once
+// An independent reference for the Simbody swing (issue 2, Verification 4): the thigh and
+// the rigid shank+foot(+added mass) as a 2-DOF planar double pendulum whose equations of
+// motion are derived by hand (Lagrange, see reference_swing.cpp), integrated by our own
+// Dormand-Prince RK5(4) (dormand_prince.h). No Simbody anywhere in this unit: it shares
+// with LegModel only the inputs (LegGeometry, the knee law, the hip moment profile and the
+// hip range stop), so a mistake in the multibody model shows up as a disagreement.
+// It is also the performance baseline for the Simbody swing.
+#include <memory>
+#include <vector>
+
+#include "knee/joint_stop.h"
+#include "knee/knee_law.h"
+#include "leg/hip_moment_profile.h"
+#include "leg/leg_parameters.h"
+
+namespace swingsim {
+
+/// Hip and knee angles and rates at requested times (rad, rad/s).
+struct ReferenceTrajectory {
+  std::vector<double> time, hipFlexion, kneeFlexion, hipFlexionRate, kneeFlexionRate;
+  std::size_t size() const { return time.size(); }
+};
+
+/// The swing end found by the reference, with the same rule as simulateSwing.
+struct ReferenceSwingEnd {
+  double swingTime = 0;            ///< s: thigh past target AND knee back in the zone after its peak
+  double thighAtTargetTime = 0;    ///< s: first rising crossing of the thigh target
+  double peakKneeFlexion = 0;      ///< rad: highest knee peak above the zone
+  double peakKneeFlexionTime = 0;  ///< s
+  double kneeEntersZoneTime = 0;   ///< s: last entry into the zone before the end
+  long steps = 0;                  ///< accepted integrator steps
+};
+
+class ReferenceSwing {
+ public:
+  /// Copies everything it needs (the knee law is cloned). The hip range becomes the same
+  /// Hunt-Crossley stop LegModel applies (JointStopParams defaults, lower = minFlexion,
+  /// upper = maxFlexion).
+  ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
+                 const HipRange& hipRange);
+
+  /// Integrates from toe-off (t = 0) and returns the state at `sampleTimes` (s, >= 0,
+  /// non-decreasing); steps are shortened to land exactly on each sample time. relTol and
+  /// absTol are the Dormand-Prince local error tolerances (rad, rad/s and the knee law's
+  /// state units). Throws std::invalid_argument on bad sample times, std::runtime_error if
+  /// the integration fails.
+  ReferenceTrajectory integrate(const InitialConditions& initial, const std::vector<double>& sampleTimes,
+                                double relTol, double absTol) const;
+
+  /// Swing end by the rule of simulateSwing (swing_simulation.cpp): the thigh's first rising
+  /// crossing of rule.thighTargetFlexion, a knee peak (flexion rate falling through zero)
+  /// above rule.zoneOfStability, then the knee re-entering the zone; the swing ends when the
+  /// thigh has reached its target and the knee is inside the zone, in whichever order.
+  /// Sign transitions follow Simbody's Event::classifyTransition (a value leaving exactly
+  /// zero is not an event). Crossings are located on the dense output to kEventTimeTol.
+  /// Throws RunError if the swing has not ended by rule.timeLimit.
+  ReferenceSwingEnd calcSwingEnd(const InitialConditions& initial, const SwingEndRule& rule, double relTol,
+                                 double absTol) const;
+  /// calcSwingEnd(initial, rule, tol, tol).swingTime, s.
+  double calcSwingTime(const InitialConditions& initial, const SwingEndRule& rule, double tol) const;
+
+  /// Kinetic + gravitational potential energy (J) at hip/knee angles and rates, with the
+  /// potential zero at hip height (LegModel's differs by a constant).
+  double calcMechanicalEnergy(double hipFlexion, double kneeFlexion, double hipFlexionRate,
+                              double kneeFlexionRate) const;
+
+  /// Time tolerance of the crossing search on the dense output, s.
+  static constexpr double kEventTimeTol = 1e-12;
+
+ private:
+  class Equations;
+  std::shared_ptr<const Equations> equations_;
+};
+
+}  // namespace swingsim

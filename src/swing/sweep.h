@@ -1,0 +1,73 @@
+#pragma once
+// The knee-axis sweep (Burkett 2004): for each participant, lower the knee axis in fixed
+// steps from the standard location and simulate a swing at each step; optionally also
+// add a shank mass (Bach 1994) at each step. Runs on a thread pool; results are stored by
+// job index, so they are identical whatever the number of threads.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/knee_model_loader.h"
+#include "swing/swing_simulation.h"
+
+namespace swingsim {
+
+struct SweepStudy {
+  std::string path;
+  std::string name;
+  std::vector<Participant> participants;
+  std::string kneeModelOverride;  ///< resolved path, "" = each participant's own model
+  double loweringStep = 0.010;    ///< m
+  double loweringMax = 0.200;     ///< m, capped per participant at calcMaxLowering
+  /// Added shank masses (kg) and their distances below the knee (m). The sweep always
+  /// includes 0 kg; more entries make a lowering x mass x position grid.
+  std::vector<double> addedMasses = {0.0};
+  std::vector<double> addedMassDistances = {};
+  /// Also simulate the lowerings of Burkett Table 4 that are off the step grid (0.125 m,
+  /// 0.175 m, ...), up to the participant's physical limit, for the side-by-side table.
+  bool includePublishedLowerings = true;
+  SwingOptions swing;
+  std::string outputDir;  ///< "" = out/<name>
+};
+
+/// One simulated (participant, lowering, added mass) point.
+struct SweepPoint {
+  double lowering = 0;
+  bool onGrid = true;       ///< a study step (false: an extra Table 4 lowering, never "fastest")
+  AddedMass added;
+  bool ok = false;          ///< the swing ended
+  std::string failure;      ///< why not, if !ok
+  SwingResult result;
+};
+
+struct ParticipantSweep {
+  std::string name;
+  double loweringCap = 0;        ///< largest lowering simulated, m
+  std::string capNote;           ///< non-empty if the study's maximum was capped
+  std::vector<SweepPoint> points;       ///< the plain sweep (no added mass), by lowering
+  std::vector<SweepPoint> massPoints;   ///< the added-mass grid (may be empty)
+  /// Index into points of the fastest swing, -1 if none ended.
+  int best = -1;
+  int bestWithMass = -1;  ///< index into massPoints, -1 if none
+};
+
+struct SweepResults {
+  std::string study;
+  std::vector<ParticipantSweep> participants;
+};
+
+/// Reads studies/*.yaml of kind knee-axis-sweep. Throws InputError.
+SweepStudy loadSweepStudy(const std::string& path);
+
+/// Lowerings for a participant: 0, step, 2 step, ... up to min(max, cap), plus the
+/// Table 4 lowerings if requested, sorted.
+std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p);
+
+/// Runs the sweep on `jobs` threads (0 = all cores). `progress(done, total)` is called
+/// from the calling thread only. A stop flag (SIGINT) ends it early: unfinished points
+/// then have ok = false and failure = "not run (interrupted)".
+SweepResults runSweep(const SweepStudy& study, int jobs,
+                      const std::function<void(int, int)>& progress = {},
+                      const volatile bool* stopFlag = nullptr);
+
+}  // namespace swingsim
