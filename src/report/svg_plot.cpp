@@ -132,6 +132,12 @@ void SvgPlot::addBand(double x0, double x1, const std::string& label, const std:
   bands_.push_back({std::min(x0, x1), std::max(x0, x1), label, color, opacity});
 }
 
+void SvgPlot::addHBand(double y0, double y1, const std::string& label, const std::string& color,
+                       double opacity) {
+  if (!std::isfinite(y0) || !std::isfinite(y1)) return;
+  bands_.push_back({std::min(y0, y1), std::max(y0, y1), label, color, opacity, true});
+}
+
 void SvgPlot::addHLine(double y, const std::string& label, const std::string& color, bool dashed,
                        bool includeInRange) {
   if (!std::isfinite(y)) return;
@@ -163,6 +169,7 @@ void SvgPlot::calcRanges(double& x0, double& x1, double& y0, double& y1) const {
   }
   if (!(xmax >= xmin)) {
     for (const auto& b : bands_) {
+      if (b.horizontal) continue;
       xmin = std::min(xmin, b.x0);
       xmax = std::max(xmax, b.x1);
     }
@@ -221,6 +228,13 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
   // Bands first, beneath everything.
   s += "<g clip-path=\"url(#" + clipId + ")\">\n";
   for (const auto& b : bands_) {
+    if (b.horizontal) {
+      const double a = std::max(mapY(b.x1), top - 1), c = std::min(mapY(b.x0), top + plotH + 1);
+      if (c <= a) continue;
+      s += "<rect x=\"" + px(left) + "\" y=\"" + px(a) + "\" width=\"" + px(plotW) + "\" height=\"" +
+           px(c - a) + "\" fill=\"" + svgEscape(b.color) + "\" fill-opacity=\"" + opacity(b.opacity) + "\"/>\n";
+      continue;
+    }
     const double a = std::max(mapX(b.x0), left - 1), c = std::min(mapX(b.x1), left + plotW + 1);
     if (c <= a) continue;
     s += "<rect x=\"" + px(a) + "\" y=\"" + px(top) + "\" width=\"" + px(c - a) + "\" height=\"" +

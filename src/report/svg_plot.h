@@ -45,6 +45,10 @@ class SvgPlot {
   /// appear once in the legend. Drawn beneath lines and points.
   void addBand(double x0, double x1, const std::string& label, const std::string& color,
                double opacity = 0.18);
+  /// A shaded horizontal band y0..y1 across the full width (e.g. a zone of stability).
+  /// Not used for auto-ranging; drawn beneath lines and points.
+  void addHBand(double y0, double y1, const std::string& label, const std::string& color,
+                double opacity = 0.15);
   /// A horizontal reference line across the panel (not used for auto-ranging y unless
   /// `includeInRange`).
   void addHLine(double y, const std::string& label, const std::string& color,
@@ -73,6 +77,7 @@ class SvgPlot {
     double x0, x1;
     std::string label, color;
     double opacity;
+    bool horizontal = false;
   };
   struct RefLine {
     double value;
