@@ -1,0 +1,82 @@
+// swingsim fit STUDY.yaml [--out DIR] [--json FILE]: fit Mauch cylinder models to bench
+// data and validate them on held-out conditions (Chien 2014 procedure). All inputs are read
+// and checked before anything is written.
+#include <cstdio>
+
+#include "cli/command_registry.h"
+#include "fit/bench_data.h"
+#include "fit/cylinder_fit.h"
+#include "io/cylinder_study.h"
+#include "io/input_error.h"
+#include "io/knee_model_loader.h"
+#include "io/output_files.h"
+#include "io/yaml_reader.h"
+#include "report/cylinder_fit_report.h"
+
+namespace swingsim::cli {
+
+namespace {
+
+int runFit(const std::vector<std::string>& argv) {
+  const Arguments args(argv, {"--out", "--json"});
+  if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
+  YamlMap yaml = YamlMap::loadFile(args.positional()[0]);
+  if (!yaml.has("kind")) yaml.getString("kind");
+  yaml.getChoice("kind", {"cylinder-fit"}, "");
+  const CylinderFitStudy study = readCylinderFitStudy(yaml);
+  yaml.finish();
+
+  std::vector<std::string> names;
+  std::vector<MauchCylinderParams> models;
+  std::size_t maxCoefficients = 0;
+  for (const auto& path : study.models) {
+    models.push_back(loadMauchCylinder(path));
+    YamlMap m = YamlMap::loadFile(path);
+    names.push_back(m.getString("name", fileStem(path)));
+    maxCoefficients = std::max(maxCoefficients, static_cast<std::size_t>(3 * models.back().phases));
+  }
+  // Each training file alone must hold more samples than the largest model has coefficients.
+  std::vector<BenchData> train, validate;
+  for (const auto& p : study.train) train.push_back(readBenchCsv(p, maxCoefficients + 1));
+  for (const auto& p : study.validate) validate.push_back(readBenchCsv(p, 3));
+
+  std::vector<ModelEvaluation> results;
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    CylinderFitOptions options;
+    options.fitSwitches = study.fitSwitches;
+    int lastPercent = -1;
+    options.progress = [&](int done, int total) {
+      const int percent = 100 * done / total;
+      if (percent / 10 != lastPercent / 10) {
+        std::fprintf(stderr, "\r%s: profiling switches %3d %%", names[i].c_str(), percent);
+        if (done == total) std::fprintf(stderr, "\n");
+        lastPercent = percent;
+      }
+    };
+    ModelEvaluation e;
+    e.name = names[i];
+    e.fit = fitCylinder(models[i], train, options);
+    results.push_back(std::move(e));
+  }
+  for (auto& r : results) r.files = evaluateFiles(MauchCylinder(r.fit.params), train, validate);
+
+  std::printf("%s", formatFitTable(results).c_str());
+  for (const auto& r : results)
+    for (const auto& w : r.fit.warnings) std::fprintf(stderr, "swingsim fit: warning: %s: %s\n", r.name.c_str(), w.c_str());
+
+  std::string command = "swingsim fit";
+  for (const auto& a : argv) command += " " + a;
+  const std::string outDir = args.get("--out", "out/" + study.name);
+  writeFitReport(outDir, study.name, command, results, study.plotSeconds);
+  if (args.has("--json")) writeFileAtomic(args.get("--json"), formatFitJson(results));
+  std::printf("report: %s/report.md\n", outDir.c_str());
+  return 0;
+}
+
+static Registrar reg("fit", {"fit STUDY.yaml [--out DIR] [--json FILE]",
+                             "fit Mauch cylinder models to bench data and validate them on held-out files",
+                             runFit});
+
+}  // namespace
+
+}  // namespace swingsim::cli

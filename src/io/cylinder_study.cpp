@@ -1,0 +1,92 @@
+#include "io/cylinder_study.h"
+
+#include <cmath>
+
+#include "io/yaml_reader.h"
+#include "io/output_files.h"
+
+namespace swingsim {
+
+namespace {
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+std::vector<std::string> resolveAll(const YamlMap& yaml, const std::vector<std::string>& paths) {
+  std::vector<std::string> out;
+  for (const auto& p : paths) out.push_back(yaml.resolvePath(p));
+  return out;
+}
+
+}  // namespace
+
+CylinderBenchStudy readCylinderBenchStudy(YamlMap& yaml) {
+  CylinderBenchStudy s;
+  s.path = yaml.path();
+  s.name = yaml.getString("name", fileStem(yaml.path()));
+  yaml.getString("description", "");
+  s.modelPath = yaml.resolvePath(yaml.getString("model"));
+  s.kneeAnglesPath = yaml.resolvePath(yaml.getString("knee_angles"));
+  s.strideFirstFrame = yaml.getInt("stride_first_frame", s.strideFirstFrame);
+  s.strideLastFrame = yaml.getInt("stride_last_frame", s.strideLastFrame);
+  if (s.strideLastFrame <= s.strideFirstFrame + 8)
+    yaml.fail("stride_last_frame", "must be at least 8 frames after stride_first_frame", std::to_string(s.strideLastFrame));
+  auto& p = s.profile;
+  p.sampleRate = yaml.getDouble("sample_rate_Hz", p.sampleRate, mustBePositive);
+  p.cycles = yaml.getInt("cycles", p.cycles);
+  if (p.cycles < 1) yaml.fail("cycles", "must be at least 1", std::to_string(p.cycles));
+  p.terminalSwingMinimum = yaml.getDouble("terminal_swing_min_deg", 3.0) * kDegToRad;
+  p.hyperextension = yaml.getDouble("hyperextension_deg", -4.0, [](double v) {
+    return v < 0 ? "" : "must be negative (hyperextension)";
+  }) * kDegToRad;
+  p.holdSamples = yaml.getInt("hold_samples", p.holdSamples);
+  if (p.holdSamples < 0) yaml.fail("hold_samples", "must not be negative", std::to_string(p.holdSamples));
+  s.noise = yaml.getDouble("noise_N", 0.0, mustBeNonNegative);
+  const double seed = yaml.getDouble("seed", 1.0, [](double v) {
+    return v >= 0 && v == std::floor(v) && v < 9e15 ? "" : "must be a whole number >= 0";
+  });
+  s.seed = static_cast<std::uint64_t>(seed);
+  s.outputDir = yaml.resolvePath(yaml.getString("output_dir"));
+  for (YamlMap& c : yaml.getMapList("conditions")) {
+    BenchCondition b;
+    b.name = c.getString("name");
+    if (b.name.empty() || b.name.find_first_of("/\\ ") != std::string::npos)
+      c.fail("name", "must be a plain file stem without spaces or slashes", "'" + b.name + "'");
+    for (const auto& other : s.conditions) {
+      if (other.name == b.name) c.fail("name", "condition name appears twice", b.name);
+    }
+    b.strideTime = c.getDouble("stride_s", mustBePositive);
+    b.amplitudeScale = c.getDouble("amplitude_scale", 1.0, mustBePositive);
+    c.finish();
+    s.conditions.push_back(b);
+  }
+  if (s.conditions.empty()) yaml.fail("conditions", "expected at least one condition", "an empty list");
+  return s;
+}
+
+CylinderFitStudy readCylinderFitStudy(YamlMap& yaml) {
+  CylinderFitStudy s;
+  s.path = yaml.path();
+  s.name = yaml.getString("name", fileStem(yaml.path()));
+  yaml.getString("description", "");
+  s.models = resolveAll(yaml, yaml.getStringList("models"));
+  s.train = resolveAll(yaml, yaml.getStringList("train"));
+  s.validate = yaml.has("validate") ? resolveAll(yaml, yaml.getStringList("validate")) : std::vector<std::string>{};
+  s.fitSwitches = yaml.getBool("fit_switches", false);
+  s.plotSeconds = yaml.getDouble("plot_seconds", s.plotSeconds, mustBePositive);
+  if (s.models.empty()) yaml.fail("models", "expected at least one model", "an empty list");
+  if (s.train.empty()) yaml.fail("train", "expected at least one bench CSV", "an empty list");
+  // Files are reported by stem: two files with the same stem would be ambiguous.
+  std::vector<std::string> stems;
+  for (const auto& list : {s.train, s.validate}) {
+    for (const auto& f : list) {
+      const std::string stem = fileStem(f);
+      for (const auto& other : stems) {
+        if (other == stem) yaml.fail("validate", "two bench files share the file stem '" + stem + "'", f);
+      }
+      stems.push_back(stem);
+    }
+  }
+  return s;
+}
+
+}  // namespace swingsim
