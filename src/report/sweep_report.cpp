@@ -178,6 +178,10 @@ SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps) {
     y.push_back(pt.ok ? pt.result.swingTime : kNaN);
   }
   plot.addLine(x, y, "this model", svgPaletteColor(0), 2.0);
+  double xMax = x.empty() ? 0.2 : x.back();
+  if (const PublishedParticipant* pub = findPublished(ps.name))
+    for (const auto& row : pub->table4) xMax = std::max(xMax, row.lowering);
+  plot.setXRange(-0.005, xMax + 0.01);
   if (const PublishedParticipant* pub = findPublished(ps.name)) {
     std::vector<double> px, pm, pp;
     for (const auto& row : pub->table4) {
@@ -215,27 +219,32 @@ SvgPlot makeKneeFlexionFigure(const ParticipantSweep& ps, double zoneDeg) {
 }
 
 SvgPlot makeFilmstrip(const std::string& title, const SwingResult& r, double hipHeight) {
-  // Frames every 40 ms, shifted right so they do not overlap (a filmstrip).
-  SvgPlot plot(800, 300);
-  plot.setTitle(title);
-  plot.setXLabel("frames every 0.04 s, shifted 0.45 m apart (m)");
-  plot.setYLabel("height (m)");
+  // Frames every 40 ms up to the swing end, shifted right so they do not overlap.
   const auto& tr = r.trajectory;
   const double frameStep = 0.04, shift = 0.45;
-  int frame = 0;
-  double maxX = 0;
-  for (double t = 0; t <= r.swingTime + 1e-9 && frame < 14; t += frameStep, ++frame) {
+  std::vector<std::vector<double>> frameX, frameY;
+  for (double t = 0; t <= r.swingTime + 1e-9 && frameX.size() < 14; t += frameStep) {
     std::size_t k = 0;
     while (k + 1 < tr.size() && tr.time[k] < t - 1e-9) ++k;
-    const double dx = frame * shift;
-    std::vector<double> xs = {dx, tr.kneeX[k] + dx, tr.ankleX[k] + dx, tr.toeX[k] + dx};
-    std::vector<double> ys = {hipHeight, tr.kneeY[k], tr.ankleY[k], tr.toeY[k]};
-    plot.addLine(xs, ys, frame == 0 ? "thigh - shank - foot" : "", svgPaletteColor(frame % 2 ? 4 : 0), 2.2);
-    maxX = std::max(maxX, dx + 0.5);
+    const double dx = static_cast<double>(frameX.size()) * shift;
+    frameX.push_back({dx, tr.kneeX[k] + dx, tr.ankleX[k] + dx, tr.toeX[k] + dx});
+    frameY.push_back({hipHeight, tr.kneeY[k], tr.ankleY[k], tr.toeY[k]});
   }
-  plot.addHLine(0.0, "ground", "#555555", false, true);
-  plot.setXRange(-0.6, std::max(maxX, 1.0));
-  plot.setYRange(-0.1, hipHeight + 0.1);
+  const double xLo = -0.6, xHi = static_cast<double>(frameX.size()) * shift + 0.3;
+  const double yLo = -0.1, yHi = hipHeight + 0.1;
+  // Equal scale on both axes so the leg is not distorted: about 700 px of plot width and
+  // about 90 px of title and axis margins.
+  SvgPlot plot(800, 90 + 700 * (yHi - yLo) / (xHi - xLo));
+  plot.setTitle(title);
+  plot.setXLabel("hip-thigh-shank-foot every 0.04 s from toe-off, frames shifted 0.45 m apart (m)");
+  plot.setYLabel("height (m)");
+  for (std::size_t f = 0; f < frameX.size(); ++f) {
+    plot.addLine(frameX[f], frameY[f], "", svgPaletteColor(f % 2 ? 4 : 0), 2.2);
+  }
+  plot.addHLine(0.0, "", "#555555", false, true);
+  plot.setXRange(xLo, xHi);
+  plot.setYRange(yLo, yHi);
+  plot.setLegend(false);
   return plot;
 }
 
