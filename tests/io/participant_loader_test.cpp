@@ -1,0 +1,118 @@
+// Every bad-input case of the participant file gives `file:line: key: what (got V)`.
+#include "io/participant_loader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "io/input_error.h"
+#include "io/output_files.h"
+
+namespace swingsim {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kGood = R"(name: PX
+height_m: 1.80
+body_mass_kg: 75
+segments:
+  thigh: {length_m: 0.410, mass_kg: 3.350, com_from_distal_m: 0.284, inertia_kgm2: 0.0264}
+  shank: {length_m: 0.515, mass_kg: 0.785, com_from_distal_m: 0.260, inertia_kgm2: 0.0161}
+  foot:  {length_m: 0.240, mass_kg: 1.030, com_from_distal_m: 0.140, inertia_kgm2: 0.0059}
+knee_friction_Nm: 10
+knee_model: ../models/damping-table-default.yaml
+hip_moment:
+  profile: biphasic_sine
+  flexion_amplitude_Nm: 30
+  flexion_duration_s: 0.2
+  extension_amplitude_Nm: 15
+  extension_duration_s: 0.2
+)";
+
+std::string errorFor(const std::string& text) {
+  try {
+    parseParticipant(text, "participants/px.yaml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string replaced(const std::string& from, const std::string& to) {
+  std::string t = kGood;
+  auto at = t.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return t.replace(at, from.size(), to);
+}
+
+TEST(ParticipantLoader, GoodFileLoadsWithDefaultsAndResolvedPaths) {
+  Participant p = parseParticipant(kGood, "participants/px.yaml");
+  EXPECT_EQ(p.name, "PX");
+  EXPECT_DOUBLE_EQ(p.thigh.length, 0.410);
+  EXPECT_DOUBLE_EQ(p.kneeFriction, 10);
+  EXPECT_EQ(p.kneeModelPath, "participants/../models/damping-table-default.yaml");
+  EXPECT_EQ(p.comRule, ComRule::kFixedFromProximal);
+}
+
+TEST(ParticipantLoader, BundledParticipantsLoad) {
+  for (const char* f : {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml"}) {
+    EXPECT_NO_THROW(loadParticipant(f)) << f;
+  }
+}
+
+struct BadCase {
+  const char* what;
+  std::string text;
+  const char* expected;
+};
+
+TEST(ParticipantLoader, EveryBadInputNamesFileLineKeyAndValue) {
+  const std::vector<BadCase> cases = {
+      {"unknown key", kGood + "colour: blue\n", "participants/px.yaml:16: colour: unknown key"},
+      {"missing key", replaced("knee_friction_Nm: 10\n", ""), "knee_friction_Nm: required key is missing"},
+      {"wrong type", replaced("body_mass_kg: 75", "body_mass_kg: heavy"), "participants/px.yaml:3: body_mass_kg: expected a number (got 'heavy')"},
+      {"NaN", replaced("mass_kg: 3.350", "mass_kg: .nan"), "px.yaml:5: segments.thigh.mass_kg: expected a finite number"},
+      {"inf", replaced("length_m: 0.515", "length_m: .inf"), "segments.shank.length_m: expected a finite number"},
+      {"negative mass", replaced("mass_kg: 0.785", "mass_kg: -0.785"), "segments.shank.mass_kg: must be positive (got -0.785)"},
+      {"negative length", replaced("length_m: 0.240", "length_m: -0.24"), "segments.foot.length_m: must be positive (got -0.24)"},
+      {"negative inertia", replaced("inertia_kgm2: 0.0264", "inertia_kgm2: -1"), "segments.thigh.inertia_kgm2: must be positive (got -1)"},
+      {"COM outside segment", replaced("com_from_distal_m: 0.284", "com_from_distal_m: 0.5"), "segments.thigh.com_from_distal_m: the COM must lie on the segment"},
+      {"comma decimal", replaced("height_m: 1.80", "height_m: 1,80"), "height_m: expected a number with a decimal point"},
+      {"duplicate key", kGood + "name: PY\n", "px.yaml:16: name: key appears twice"},
+      {"bad choice", kGood + "com_rule: middle\n", "com_rule: expected one of: fixed_from_proximal, proportional (got 'middle')"},
+      {"non-increasing hip table", replaced("  profile: biphasic_sine\n  flexion_amplitude_Nm: 30\n  flexion_duration_s: 0.2\n  extension_amplitude_Nm: 15\n  extension_duration_s: 0.2\n",
+                                            "  profile: table\n  time_s: [0, 0.1, 0.1, 0.3]\n  moment_Nm: [0, 20, 10, 0]\n"),
+       "hip_moment.time_s: times must strictly increase (got 0.1 after 0.1)"},
+      {"table length mismatch", replaced("  profile: biphasic_sine\n  flexion_amplitude_Nm: 30\n  flexion_duration_s: 0.2\n  extension_amplitude_Nm: 15\n  extension_duration_s: 0.2\n",
+                                         "  profile: table\n  time_s: [0, 0.1, 0.2]\n  moment_Nm: [0, 20]\n"),
+       "hip_moment.moment_Nm: expected one moment per time (3) (got 2 values)"},
+      {"empty file", "", "expected a YAML mapping"},
+      {"binary garbage", std::string("\x01\x02\xff\xfe\x00zz", 7), "px.yaml:"},
+  };
+  for (const auto& c : cases) {
+    EXPECT_THAT(errorFor(c.text), HasSubstr(c.expected)) << c.what;
+  }
+}
+
+TEST(ParticipantLoader, MessagesFollowFileLineKeyFormat) {
+  const std::regex format(R"(^participants/px\.yaml:[0-9]+: [a-z_.\[\]0-9]+: .+ \(got .+\)$)");
+  EXPECT_TRUE(std::regex_match(errorFor(replaced("body_mass_kg: 75", "body_mass_kg: -75")), format))
+      << errorFor(replaced("body_mass_kg: 75", "body_mass_kg: -75"));
+}
+
+TEST(ParticipantLoader, LoweringBeyondTheShankIsAClearError) {
+  Participant p = loadParticipant("participants/p1.yaml");
+  EXPECT_NO_THROW(calcLegGeometry(p, calcMaxLowering(p)));
+  try {
+    calcLegGeometry(p, 0.6);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("leaves no room for the shank of P1"));
+    EXPECT_THAT(e.what(), HasSubstr("(got 0.6)"));
+  }
+}
+
+}  // namespace
+}  // namespace swingsim
