@@ -1,0 +1,114 @@
+// End-to-end checks of `swingsim generate` and `swingsim fit` through the real binary.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int code;
+  std::string output;  // stdout and stderr
+};
+
+RunResult run(const std::string& args) {
+  const std::string cmd = std::string(SWINGSIM_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (pipe && fgets(buf.data(), buf.size(), pipe)) out += buf.data();
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / "swingsim_fit_command_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+const std::string kRoot = SWINGSIM_SOURCE_DIR;
+
+std::string study(const std::string& train) {
+  return "kind: cylinder-fit\nname: t\nmodels:\n  - " + kRoot + "/models/mauch-4phase.yaml\ntrain:\n  - " + train + "\n";
+}
+
+TEST(FitCommand, GenerateIsReproducibleAndFitWritesTheIssueJsonShape) {
+  const auto dir = scratch("good");
+  ASSERT_EQ(run("generate " + kRoot + "/studies/mauch2014-bench.yaml --out " + (dir / "a").string()).code, 0);
+  ASSERT_EQ(run("generate " + kRoot + "/studies/mauch2014-bench.yaml --out " + (dir / "b").string()).code, 0);
+  EXPECT_EQ(slurp(dir / "a" / "normal.csv"), slurp(dir / "b" / "normal.csv"));
+  EXPECT_THAT(slurp(dir / "a" / "normal.csv"), ::testing::StartsWith("time_s,position_m,force_N\n"));
+  // The committed study data are what the committed study generates.
+  EXPECT_EQ(slurp(dir / "a" / "fast.csv"), slurp(kRoot + "/studies/data/mauch2014/fast.csv"));
+
+  std::ofstream(dir / "s.yaml") << study((dir / "a" / "normal.csv").string()) + "validate:\n  - " +
+                                       (dir / "a" / "slow.csv").string() + "\n";
+  const RunResult r = run("fit " + (dir / "s.yaml").string() + " --out " + (dir / "out").string() + " --json " +
+                    (dir / "r.json").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("mauch-4phase"));
+  const std::string json = slurp(dir / "r.json");
+  EXPECT_THAT(json, ::testing::StartsWith(R"({"models":[{"model":"mauch-4phase","coefficients":[{"phase":1,"f_N":)"));
+  EXPECT_THAT(json, HasSubstr(R"("k_N_per_m":)"));
+  EXPECT_THAT(json, HasSubstr(R"("c_Ns_per_m":)"));
+  EXPECT_THAT(json, HasSubstr(R"("metrics":{"normal":{"me_N":)"));
+  EXPECT_THAT(json, HasSubstr(R"("slow":{"me_N":)"));
+  EXPECT_THAT(json, HasSubstr(R"("rmse_N":)"));
+  EXPECT_THAT(json, HasSubstr(R"("r2":)"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "report.md"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "mauch-4phase-slow-force.svg"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "mauch-4phase-normal-loop.svg"));
+}
+
+TEST(FitCommand, BadBenchFilesFailWithLocationAndWriteNothing) {
+  const auto dir = scratch("bad");
+  struct Case {
+    std::string csv, expected;
+  };
+  const std::vector<Case> cases = {
+      {"time_s,position_m\n0,0\n", "bad.csv:1: force_N: required column is missing"},
+      {"time_s,position_m,force_N\n0,0,1\n0,0.01,2\n", "bad.csv:3: time_s: must be strictly increasing"},
+      {"time_s,position_m,force_N\n0,0,1\n0.1,NaN,2\n", "bad.csv:3: position_m: expected a finite number"},
+      {"time_s,position_m,force_N\n0,0,1\n0.1,0.01,2\n0.2,0.02,3\n", "too few data rows (got 3, need at least 13)"},
+  };
+  for (const auto& c : cases) {
+    std::ofstream(dir / "bad.csv") << c.csv;
+    std::ofstream(dir / "s.yaml") << study((dir / "bad.csv").string());
+    const RunResult r = run("fit " + (dir / "s.yaml").string() + " --out " + (dir / "out").string() + " --json " +
+                      (dir / "r.json").string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_THAT(r.output, HasSubstr(c.expected));
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    EXPECT_FALSE(fs::exists(dir / "r.json"));
+  }
+  // A model YAML with a phase missing: the model file and line are named.
+  std::string model = slurp(kRoot + "/models/mauch-4phase.yaml");
+  model.erase(model.find("      - {phase: 3"), model.find("      - {phase: 4") - model.find("      - {phase: 3"));
+  std::ofstream(dir / "m.yaml") << model;
+  std::ofstream(dir / "s.yaml") << "kind: cylinder-fit\nname: t\nmodels:\n  - m.yaml\ntrain:\n  - " +
+                                       kRoot + "/studies/data/mauch2014/normal.csv\n";
+  const RunResult r = run("fit " + (dir / "s.yaml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.output, HasSubstr("m.yaml:"));
+  EXPECT_THAT(r.output, HasSubstr("settings[0].coefficients: phase 3 is missing"));
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_EQ(run("fit").code, 2);
+}
+
+}  // namespace
