@@ -137,8 +137,9 @@ JointStopParams readHyperextensionStop(YamlMap& yaml) {
   return p;
 }
 
-KneeModel loadKneeModel(const std::string& path) {
-  YamlMap yaml = YamlMap::loadFile(path);
+namespace {
+
+KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
   KneeModel model;
   model.path = path;
   model.kind = yaml.getChoice("kind", {"damping_table", "mauch"}, "");
@@ -156,6 +157,18 @@ KneeModel loadKneeModel(const std::string& path) {
   model.law.add(std::make_unique<JointStop>(readHyperextensionStop(yaml)));
   yaml.finish();
   return model;
+}
+
+}  // namespace
+
+KneeModel loadKneeModel(const std::string& path) {
+  YamlMap yaml = YamlMap::loadFile(path);
+  return readKneeModel(yaml, path);
+}
+
+KneeModel parseKneeModel(const std::string& text, const std::string& path) {
+  YamlMap yaml = YamlMap::loadString(text, path);
+  return readKneeModel(yaml, path);
 }
 
 }  // namespace swingsim

@@ -19,6 +19,8 @@ struct KneeModel {
 
 /// Reads a knee model. Throws InputError (`file:line: key: ...`) on any bad input.
 KneeModel loadKneeModel(const std::string& path);
+/// Same, from YAML text (tests, fuzzers); `path` is used in messages and as the name's default.
+KneeModel parseKneeModel(const std::string& text, const std::string& path);
 
 /// Reads the Mauch cylinder of a `kind: mauch` model (phases, geometry, switches and the
 /// coefficient set of the selected dial setting; docs/mauch.md). Throws InputError.
