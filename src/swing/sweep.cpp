@@ -15,8 +15,9 @@
 
 namespace swingsim {
 
-SweepStudy loadSweepStudy(const std::string& path) {
-  YamlMap yaml = YamlMap::loadFile(path);
+namespace {
+
+SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
   SweepStudy s;
   s.path = path;
   yaml.getChoice("kind", {"knee-axis-sweep"}, "");
@@ -52,6 +53,18 @@ SweepStudy loadSweepStudy(const std::string& path) {
   s.outputDir = yaml.getString("output_dir", "");
   yaml.finish();
   return s;
+}
+
+}  // namespace
+
+SweepStudy loadSweepStudy(const std::string& path) {
+  YamlMap yaml = YamlMap::loadFile(path);
+  return readSweepStudy(yaml, path);
+}
+
+SweepStudy parseSweepStudy(const std::string& text, const std::string& path) {
+  YamlMap yaml = YamlMap::loadString(text, path);
+  return readSweepStudy(yaml, path);
 }
 
 std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p) {

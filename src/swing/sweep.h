@@ -58,6 +58,8 @@ struct SweepResults {
 
 /// Reads studies/*.yaml of kind knee-axis-sweep. Throws InputError.
 SweepStudy loadSweepStudy(const std::string& path);
+/// Same, from YAML text (tests, fuzzers); participant paths resolve against `path`'s folder.
+SweepStudy parseSweepStudy(const std::string& text, const std::string& path);
 
 /// Lowerings for a participant: 0, step, 2 step, ... up to min(max, cap), plus the
 /// Table 4 lowerings if requested, sorted.
