@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -145,6 +146,8 @@ TEST(DormandPrince, CompoundPendulumSmallAnglePeriod) {
   const double period = (crossings.back() - crossings.front()) / (crossings.size() - 1);
   const double expected = pendulum.calcSmallAnglePeriod();
   EXPECT_NEAR(period / expected - 1, 0, kPeriodRelTol) << "period " << period << " s, formula " << expected << " s";
+  std::printf("Dormand-Prince compound pendulum: period %.9f s, formula %.9f s, relative error %.1e\n", period,
+              expected, period / expected - 1);
 }
 
 }  // namespace

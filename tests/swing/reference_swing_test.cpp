@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "io/input_error.h"
@@ -102,6 +103,7 @@ TEST(ReferenceSwing, DisagreesWhenTheLegDiffers) {
   heavier.shankMass *= 1.01;
   const Comparison c = compare(p, law, 0.0, &heavier);
   EXPECT_GT(c.maxKneeDiff, 100 * kAngleTol);
+  std::printf("reference with 1 %% heavier shank: max |knee diff| %.2e rad\n", c.maxKneeDiff);
 }
 
 // A knee law with its own state (like the Mauch S2 latch): a lagged viscous damper,
@@ -133,9 +135,9 @@ TEST(ReferenceSwing, IntegratesKneeLawStatesLikeSimbody) {
 }
 
 TEST(ReferenceSwing, ConservesEnergyWithKneeLawsAndHipMomentOff) {
-  // Free double pendulum: the energy error is the integrator's. Over ~400 steps with a
-  // local error <= tol relative to states of order 1 and energies of order 10 J, the
-  // drift stays below 1e3 * tol * 10 J.
+  // Free double pendulum: the energy error is the integrator's. One step's local error
+  // (<= tol relative to states of order 1..10) moves the energy by about tol x the leg's
+  // energy scale (m g L ~ 10 J); 10x that allows the accumulation over ~200 steps.
   constexpr double kTol = 1e-10;
   const Participant p = load("p3");
   HipMomentProfile noHipMoment;
@@ -155,7 +157,7 @@ TEST(ReferenceSwing, ConservesEnergyWithKneeLawsAndHipMomentOff) {
   const double e0 = reference.calcMechanicalEnergy(tr.hipFlexion[0], tr.kneeFlexion[0], tr.hipFlexionRate[0],
                                                    tr.kneeFlexionRate[0]);
   constexpr double kEnergyScale = 10;  // J: m g L of the leg
-  const double energyTol = 1e3 * kTol * kEnergyScale;
+  const double energyTol = 10 * kTol * kEnergyScale;
   double maxDrift = 0, kneeRange = 0;
   for (std::size_t i = 0; i < tr.size(); ++i) {
     const double e = reference.calcMechanicalEnergy(tr.hipFlexion[i], tr.kneeFlexion[i], tr.hipFlexionRate[i],
@@ -164,6 +166,7 @@ TEST(ReferenceSwing, ConservesEnergyWithKneeLawsAndHipMomentOff) {
     kneeRange = std::max(kneeRange, std::abs(tr.kneeFlexion[i] - initial.kneeFlexion));
   }
   EXPECT_LT(maxDrift, energyTol);
+  std::printf("reference free-leg energy drift over 2 s: %.2e J (tolerance %.1e J)\n", maxDrift, energyTol);
   EXPECT_GT(kneeRange, 0.3) << "the knee must actually swing for this to test anything";
 }
 
