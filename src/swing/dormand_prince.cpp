@@ -34,6 +34,11 @@ constexpr double kSafety = 0.9;
 constexpr double kMinShrink = 0.2;
 constexpr double kMaxGrow = 5.0;
 
+[[noreturn]] void throwUnderflow(double t) {
+  throw std::runtime_error("Dormand-Prince: step size underflow at t = " + std::to_string(t) +
+                           " s (the equations are too stiff or singular here)");
+}
+
 }  // namespace
 
 DormandPrince::DormandPrince(const OdeSystem& system, double relTol, double absTol)
@@ -129,10 +134,9 @@ void DormandPrince::step(double tStop) {
       h = tStop - t_;
       clipped = true;
     }
-    if (h < hMin) {
-      throw std::runtime_error("Dormand-Prince: step size underflow at t = " + std::to_string(t_) +
-                               " s (the equations are too stiff or singular here)");
-    }
+    // A clipped step may be shorter than hMin (two stop times closer than round-off): it
+    // is taken as is. An unclipped one that small means the error control has given up.
+    if (h < hMin && !clipped) throwUnderflow(t_);
     const double t = t_;
     for (int i = 0; i < n_; ++i) ys[i] = y[i] + h * a21 * k1_[i];
     system_.calcDerivatives(t + c2 * h, ys, k2_.data());
@@ -172,6 +176,7 @@ void DormandPrince::step(double tStop) {
       return;
     }
     ++numRejected_;
+    if (h < hMin) throwUnderflow(t_);
     h_ = h * std::max(kMinShrink, kSafety * std::pow(err, -0.2));
   }
 }

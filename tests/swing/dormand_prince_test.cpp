@@ -100,7 +100,8 @@ TEST(DormandPrince, LandsExactlyOnStopTimesAndDenseOutputIsAccurate) {
   DormandPrince dp(osc, kTol, kTol);
   const double y0[2] = {1, 0};
   dp.initialize(0, y0);
-  for (double stop : {0.0123, 0.5, 0.5000001, 1.7}) {
+  // Includes two stops one ulp apart, closer than any normal step could be.
+  for (double stop : {0.0123, 0.5, 0.5000001, 0.5000001 + 1e-16, 1.7}) {
     while (dp.getTime() < stop) {
       dp.step(stop);
       // Dense output inside the step against the exact solution.
