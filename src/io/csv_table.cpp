@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <istream>
 #include <sstream>
 
 #include "io/input_error.h"
@@ -46,27 +48,36 @@ std::vector<std::string> splitLine(const std::string& line) {
 
 }  // namespace
 
-CsvTable parseCsv(const std::string& text, const std::string& path, const CsvSpec& spec) {
+namespace {
+
+// Reads lines from a stream (a file or text in memory), one at a time, so a file is never
+// held in memory twice and an oversized file is refused as soon as it passes maxRows.
+CsvTable readCsvStream(std::istream& in, const std::string& path, const CsvSpec& spec, std::size_t sizeHint) {
   CsvTable table;
   table.path = path;
-  std::size_t pos = 0;
-  if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) pos = 3;
-  if (text.find('\0') != std::string::npos) {
-    throw InputError(path + ": not a text CSV file (contains NUL bytes)");
-  }
+  const auto notText = [&] { return InputError(path + ": not a text CSV file (contains NUL bytes)"); };
 
-  auto nextLine = [&](std::string& line) {
-    if (pos >= text.size()) return false;
-    auto nl = text.find('\n', pos);
-    if (nl == std::string::npos) nl = text.size();
-    line.assign(text, pos, nl - pos);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    pos = nl + 1;
+  // Binary files (a spreadsheet's .xlsx, UTF-16 text) show NUL bytes at once: look at the
+  // start before taking the first line for a header.
+  char probe[4096];
+  in.read(probe, sizeof probe);
+  if (std::find(probe, probe + in.gcount(), '\0') != probe + in.gcount()) throw notText();
+  in.clear();
+  in.seekg(0);
+
+  std::string line;
+  bool first = true;
+  auto nextLine = [&](std::string& out) {
+    if (!std::getline(in, out)) return false;
+    if (first && out.size() >= 3 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
+    first = false;
+    if (out.find('\0') != std::string::npos) throw notText();
+    if (!out.empty() && out.back() == '\r') out.pop_back();
     return true;
   };
 
-  std::string line;
   if (!nextLine(line) || line.find_first_not_of(" \t") == std::string::npos) {
+    if (in.bad()) throw InputError(path + ": read error");
     throw InputError(path + ":1: empty file (expected a header row: " +
                      (spec.required.empty() ? std::string("column names") : spec.required.front() + ",...") + ")");
   }
@@ -86,8 +97,8 @@ CsvTable parseCsv(const std::string& text, const std::string& path, const CsvSpe
     auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end()) {
       if (std::find(spec.required.begin(), spec.required.end(), name) != spec.required.end()) {
-        throw InputError(path + ":1: " + name + ": required column is missing (got header '" +
-                         line + "')");
+        throw InputError(path + ":1: " + name + ": required column is missing (got header '" + line + "')" +
+                         (line.find(';') != std::string::npos ? "; is the file separated by semicolons?" : ""));
       }
       continue;
     }
@@ -98,19 +109,20 @@ CsvTable parseCsv(const std::string& text, const std::string& path, const CsvSpe
     if (target[i] < 0) table.ignored.push_back(header[i]);
   }
   table.columns.assign(table.names.size(), {});
-  // Reserve from a cheap estimate of the row count, bounded by maxRows.
-  std::size_t estimate = static_cast<std::size_t>(std::count(text.begin() + static_cast<long>(pos), text.end(), '\n')) + 1;
-  if (estimate > spec.maxRows + 1) {
-    throw InputError(path + ": too many rows (got about " + std::to_string(estimate) +
-                     ", the limit is " + std::to_string(spec.maxRows) +
-                     "; split the file or resample it)");
-  }
+  // Reserve from an upper bound of the row count (a row takes at least 2 bytes a column),
+  // never more than maxRows.
+  const std::size_t estimate = std::min(spec.maxRows, sizeHint / (2 * header.size()) + 1);
   for (auto& c : table.columns) c.reserve(estimate);
 
   int lineNo = 1;
+  std::size_t rows = 0;
   while (nextLine(line)) {
     ++lineNo;
     if (line.find_first_not_of(" \t") == std::string::npos) continue;  // blank line
+    if (++rows > spec.maxRows) {
+      throw InputError(path + ": too many rows (more than " + std::to_string(spec.maxRows) +
+                       ", the limit; split the file or resample it)");
+    }
     auto cells = splitLine(line);
     if (cells.size() != header.size()) {
       throw InputError(path + ":" + std::to_string(lineNo) + ": expected " +
@@ -141,6 +153,7 @@ CsvTable parseCsv(const std::string& text, const std::string& path, const CsvSpe
       col.push_back(v);
     }
   }
+  if (in.bad()) throw InputError(path + ": read error");
   if (table.rows() < spec.minRows) {
     throw InputError(path + ": too few data rows (got " + std::to_string(table.rows()) +
                      ", need at least " + std::to_string(spec.minRows) + ")");
@@ -148,20 +161,20 @@ CsvTable parseCsv(const std::string& text, const std::string& path, const CsvSpe
   return table;
 }
 
+}  // namespace
+
+CsvTable parseCsv(const std::string& text, const std::string& path, const CsvSpec& spec) {
+  std::istringstream in(text);
+  return readCsvStream(in, path, spec, text.size());
+}
+
 CsvTable readCsv(const std::string& path, const CsvSpec& spec) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a CSV file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file");
-  in.seekg(0, std::ios::end);
-  auto size = static_cast<std::size_t>(in.tellg());
-  // 40 bytes a row is generous for three numbers; refuse before reading it all.
-  if (size > spec.maxRows * 200) {
-    throw InputError(path + ": file too large (" + std::to_string(size / 1000000) +
-                     " MB, at most " + std::to_string(spec.maxRows) + " rows are read)");
-  }
-  in.seekg(0);
-  std::string text(size, '\0');
-  in.read(&text[0], static_cast<std::streamsize>(size));
-  return parseCsv(text, path, spec);
+  const auto size = std::filesystem::file_size(path, ec);
+  return readCsvStream(in, path, spec, ec ? 0 : static_cast<std::size_t>(size));
 }
 
 std::string formatCsv(const std::vector<std::string>& names,

@@ -28,7 +28,9 @@ struct CsvSpec {
   std::vector<std::string> optional;  ///< columns read if present
   std::string strictlyIncreasing;     ///< column that must strictly increase ("" = none)
   std::size_t minRows = 1;
-  /// Refuse files with more rows than this: 2,000,000 rows of 3 columns is 48 MB.
+  /// Refuse files with more rows than this: 2,000,000 rows of 3 columns is 48 MB. Files
+  /// are read line by line, so a larger file is refused after maxRows rows, at about that
+  /// memory, never loaded whole.
   std::size_t maxRows = 2000000;
 };
 
