@@ -30,9 +30,18 @@ std::string describe(const YAML::Node& node) {
   return "?";
 }
 
+// No input of ours comes near this many nodes; an alias of an alias of ... ("billion
+// laughs") does, and walking it would take exponential time.
+constexpr long kMaxYamlNodes = 1000000;
+
 // yaml-cpp keeps both entries of a duplicated key; a user who writes a key twice has
 // made a mistake we must not paper over by silently taking one of them.
-void rejectDuplicateKeys(const YAML::Node& node, const std::string& path) {
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, long& budget) {
+  if (--budget < 0) {
+    throw InputError(path + ":" + std::to_string(node.Mark().line + 1) + ": more than " +
+                     std::to_string(kMaxYamlNodes) +
+                     " YAML values (do aliases (*name) refer to lists of aliases?)");
+  }
   if (node.IsMap()) {
     std::set<std::string> seen;
     for (const auto& kv : node) {
@@ -41,10 +50,10 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path) {
         throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) + ": " +
                          key + ": key appears twice in the same mapping");
       }
-      rejectDuplicateKeys(kv.second, path);
+      rejectDuplicateKeys(kv.second, path, budget);
     }
   } else if (node.IsSequence()) {
-    for (const auto& item : node) rejectDuplicateKeys(item, path);
+    for (const auto& item : node) rejectDuplicateKeys(item, path, budget);
   }
 }
 
@@ -63,7 +72,8 @@ YamlMap fromText(const std::string& text, const std::string& path) {
     throw InputError(path + ":1: expected a YAML mapping of keys (got " + describe(root) +
                      ")");
   }
-  rejectDuplicateKeys(root, path);
+  long budget = kMaxYamlNodes;
+  rejectDuplicateKeys(root, path, budget);
   return YamlMap(root, path);
 }
 
