@@ -130,7 +130,11 @@ JointStopParams readHyperextensionStop(YamlMap& yaml) {
   p.lower = 0.0;
   if (!yaml.has("hyperextension_stop")) return p;
   YamlMap s = yaml.getMap("hyperextension_stop");
-  p.lower = s.getDouble("engage_flexion_deg", 0.0) * kDegToRad;
+  // A hyperextension stop engages near full extension; outside this band JointStop would
+  // also reject it (lower limit above its upper one) without naming the file.
+  p.lower = s.getDouble("engage_flexion_deg", 0.0, [](double v) {
+    return v >= -30 && v <= 30 ? "" : "expected an angle near full extension, -30 to 30 deg";
+  }) * kDegToRad;
   p.stiffness = s.getDouble("stiffness_Nm_per_rad1p5", p.stiffness, mustBePositive);
   p.dissipation = s.getDouble("dissipation_s_per_rad", p.dissipation, mustBeNonNegative);
   s.finish();
