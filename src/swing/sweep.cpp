@@ -28,7 +28,12 @@ SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
   if (yaml.has("knee_model")) s.kneeModelOverride = yaml.resolvePath(yaml.getString("knee_model"));
   if (yaml.has("lowering")) {
     YamlMap m = yaml.getMap("lowering");
-    s.loweringStep = m.getDouble("step_m", s.loweringStep, mustBePositive);
+    // The grid is rounded to 1 um (sweepLowerings): a smaller step would never advance. With
+    // lowerings capped by the shank (calcMaxLowering), this also bounds a sweep to a few
+    // thousand swings per participant.
+    s.loweringStep = m.getDouble("step_m", s.loweringStep, [](double v) {
+      return v >= 1e-4 ? "" : "expected a step of at least 0.0001 m";
+    });
     s.loweringMax = m.getDouble("max_m", s.loweringMax, mustBeNonNegative);
     s.includePublishedLowerings = m.getBool("include_published", s.includePublishedLowerings);
     m.finish();
@@ -47,7 +52,9 @@ SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
     s.swing.accuracy = m.getDouble("accuracy", s.swing.accuracy, [](double v) {
       return v > 0 && v <= 1e-2 ? "" : "expected a relative accuracy in (0, 0.01]";
     });
-    s.swing.sampleInterval = m.getDouble("sample_interval_s", s.swing.sampleInterval, mustBePositive);
+    s.swing.sampleInterval = m.getDouble("sample_interval_s", s.swing.sampleInterval, [](double v) {
+      return v >= 1e-5 && v <= 0.1 ? "" : "expected a sample interval from 0.00001 to 0.1 s";
+    });
     m.finish();
   }
   s.outputDir = yaml.getString("output_dir", "");
