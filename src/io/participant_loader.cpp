@@ -101,8 +101,13 @@ Participant readParticipant(YamlMap& yaml) {
     YamlMap m = yaml.getMap("swing_end");
     p.swingEnd.thighTargetFlexion = readAngle(m, "thigh_target_flexion_deg", p.swingEnd.thighTargetFlexion);
     p.swingEnd.zoneOfStability = m.getDouble("zone_of_stability_deg", p.swingEnd.zoneOfStability * kRadToDeg, mustBePositive) * kDegToRad;
-    p.swingEnd.timeLimit = m.getDouble("time_limit_s", p.swingEnd.timeLimit, mustBePositive);
-    p.swingEnd.bounceWindow = m.getDouble("bounce_window_s", p.swingEnd.bounceWindow, mustBeNonNegative);
+    // A swing lasts well under a second; a limit of hours would make a stuck run look hung.
+    p.swingEnd.timeLimit = m.getDouble("time_limit_s", p.swingEnd.timeLimit, [](double v) {
+      return v > 0 && v <= 10 ? "" : "expected a time limit from 0 to 10 s";
+    });
+    p.swingEnd.bounceWindow = m.getDouble("bounce_window_s", p.swingEnd.bounceWindow, [](double v) {
+      return v >= 0 && v <= 2 ? "" : "expected a window from 0 to 2 s";
+    });
     m.finish();
   }
   if (!(p.swingEnd.thighTargetFlexion > p.initial.hipFlexion)) {
