@@ -1,0 +1,33 @@
+// libFuzzer target: the CSV reader with each spec the program uses (bench data, Winter knee
+// angles, swing kinematics). The first byte picks the spec and a small row limit half the
+// time, so the too-many-rows path is exercised too.
+#include "fuzz_common.h"
+#include "io/csv_table.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace swingsim;
+  if (size == 0) return 0;
+  CsvSpec spec;
+  switch (data[0] % 3) {
+    case 0:
+      spec.required = {"time_s", "position_m", "force_N"};
+      spec.strictlyIncreasing = "time_s";
+      spec.minRows = 3;
+      break;
+    case 1:
+      spec.required = {"frame", "knee_deg"};
+      spec.strictlyIncreasing = "frame";
+      break;
+    default:
+      spec.required = {"time_s", "hip_flexion_deg", "knee_flexion_deg"};
+      spec.optional = {"hip_moment_Nm"};
+      spec.strictlyIncreasing = "time_s";
+      break;
+  }
+  if (data[0] & 0x80) spec.maxRows = 8;
+  fuzz::expectOnlyInputErrors([&] {
+    const CsvTable table = parseCsv(fuzz::asText(data + 1, size - 1), "fuzz.csv", spec);
+    for (const auto& name : spec.required) table.column(name);
+  });
+  return 0;
+}

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Fuzzes every input loader with libFuzzer (clang from Debian packages) for a fixed time.
+# Usage: bash scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s, all targets)
+#
+# Builds into build-fuzz/ (library instrumented with ASan + UBSan + coverage), seeds each
+# target's corpus from participants/, models/, studies/ and tests/data/, and runs the
+# targets one after the other (one core; nice -n 10). The corpus grows in
+# build-fuzz/corpus/<target>/ across runs. A crash, leak, hang (> 10 s per input) or an
+# exception other than InputError stops that target; the input is saved as
+# build-fuzz/artifacts/<target>-crash-*, and the script exits 1 after running the rest.
+# Replay one input: build-fuzz/<target> build-fuzz/artifacts/<target>-crash-...
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+shift || true
+all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz csv_fuzz)
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
+
+# clang and its sanitizer/fuzzer runtimes (Debian 12: clang-14, libclang-rt-14-dev).
+packages=(clang libclang-rt-dev build-essential cmake libsimbody-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}" >&2
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSWINGSIM_FUZZ=ON -DSWINGSIM_BUILD_BENCH=OFF \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+nice -n 10 cmake --build build-fuzz -j2 --target "${targets[@]}"
+
+# Seeds: the real files each loader reads. CSV seeds are cut to 40 lines (small inputs
+# mutate faster) and prefixed with the byte csv_fuzz uses to pick the spec.
+seed() {  # seed TARGET FILE...
+  local dir="build-fuzz/seeds/$1"; shift
+  mkdir -p "$dir"
+  for f in "$@"; do [ -f "$f" ] && cp "$f" "$dir/$(echo "$f" | tr '/' '_')"; done
+}
+rm -rf build-fuzz/seeds
+seed participant_fuzz participants/*.yaml
+seed knee_model_fuzz models/*.yaml
+seed sweep_study_fuzz studies/burkett2004.yaml
+seed cylinder_study_fuzz studies/mauch2014.yaml studies/mauch2014-bench.yaml
+mkdir -p build-fuzz/seeds/csv_fuzz
+for f in studies/data/mauch2014/*.csv tests/data/*.csv; do
+  [ -f "$f" ] || continue
+  { printf '\000'; head -n 40 "$f"; } >"build-fuzz/seeds/csv_fuzz/bench_$(basename "$f")"
+done
+{ printf '\001'; head -n 40 studies/data/winter-natural-cadence.csv; } >build-fuzz/seeds/csv_fuzz/winter.csv
+printf '\002time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\r\n0,-10,40,20\r\n0.01,-9,45,21\r\n' \
+  >build-fuzz/seeds/csv_fuzz/kinematics.csv
+
+# A dictionary per YAML target: every key its seeds use, so mutations stay near valid files.
+dictionary() {  # dictionary TARGET -> path
+  local dict="build-fuzz/seeds/$1.dict"
+  cat build-fuzz/seeds/"$1"/* | grep -oE '[A-Za-z_]+:' | sort -u | sed 's/.*/"&"/' >"$dict"
+  echo "$dict"
+}
+
+status=0
+mkdir -p build-fuzz/artifacts
+for t in "${targets[@]}"; do
+  mkdir -p "build-fuzz/corpus/$t"
+  dict_args=()
+  [ "$t" != csv_fuzz ] && dict_args=(-dict="$(dictionary "$t")")
+  echo "== $t: ${seconds} s" >&2
+  log="build-fuzz/$t.log"
+  if ! nice -n 10 "build-fuzz/$t" "build-fuzz/corpus/$t" "build-fuzz/seeds/$t" "${dict_args[@]}" \
+      -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
+      -artifact_prefix="build-fuzz/artifacts/$t-" >"$log" 2>&1; then
+    status=1
+    echo "!! $t found a problem; see $log and build-fuzz/artifacts/" >&2
+    grep -E "ERROR|SUMMARY|terminate|what\(\)" "$log" | head -5 >&2 || true
+  fi
+  grep -E "^stat::number_of_executed_units|^Done [0-9]+ runs" "$log" | sed "s/^/  $t: /" >&2 || true
+done
+exit $status
