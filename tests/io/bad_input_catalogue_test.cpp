@@ -1,0 +1,447 @@
+// A catalogue of the ways users get input files wrong (issue 6), for every loader: each
+// case either gives a clear InputError naming the file (and line and key where there is
+// one) or is a documented, tested acceptance. Acceptances: a UTF-8 byte-order mark and
+// CRLF line ends simply work; YAML numbers that are finite but absurdly large are refused
+// only where a physical bound exists (see README "Robustness").
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "fit/bench_data.h"
+#include "fit/bench_profile.h"
+#include "io/csv_table.h"
+#include "io/cylinder_study.h"
+#include "io/input_error.h"
+#include "io/knee_model_loader.h"
+#include "io/output_files.h"
+#include "io/participant_loader.h"
+#include "io/yaml_reader.h"
+#include "swing/sweep.h"
+
+namespace swingsim {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------
+// YAML loaders
+// ---------------------------------------------------------------------------------------
+
+using YamlParse = std::function<void(const std::string& text, const std::string& path)>;
+
+void parseCylinderStudy(const std::string& text, const std::string& path) {
+  YamlMap yaml = YamlMap::loadString(text, path);
+  if (!yaml.has("kind")) yaml.getString("kind");
+  if (yaml.getChoice("kind", {"cylinder-bench", "cylinder-fit"}, "") == "cylinder-bench")
+    readCylinderBenchStudy(yaml);
+  else
+    readCylinderFitStudy(yaml);
+  yaml.finish();
+}
+
+/// One YAML loader with a real file it accepts and a numeric key in it to corrupt.
+struct YamlLoader {
+  std::string name;
+  std::string file;        ///< bundled file, relative to the source folder
+  std::string numericKey;  ///< a key of that file holding a plain number
+  YamlParse parse;
+};
+
+std::vector<YamlLoader> yamlLoaders() {
+  return {
+      {"participant", "participants/p1.yaml", "knee_friction_Nm",
+       [](const std::string& t, const std::string& p) { parseParticipant(t, p); }},
+      {"knee model (damping table)", "models/damping-table-default.yaml", "extension_factor",
+       [](const std::string& t, const std::string& p) { parseKneeModel(t, p); }},
+      {"knee model (Mauch)", "models/mauch-4phase.yaml", "latch_rate_per_s",
+       [](const std::string& t, const std::string& p) { parseKneeModel(t, p); }},
+      {"sweep study", "studies/burkett2004.yaml", "accuracy",
+       [](const std::string& t, const std::string& p) { parseSweepStudy(t, p); }},
+      {"cylinder-fit study", "studies/mauch2014.yaml", "plot_seconds", parseCylinderStudy},
+      {"cylinder-bench study", "studies/mauch2014-bench.yaml", "noise_N", parseCylinderStudy},
+  };
+}
+
+/// The InputError message, "" if the text loads, or a marker for any other exception.
+std::string errorOf(const YamlLoader& l, const std::string& text) {
+  try {
+    l.parse(text, l.file);
+  } catch (const InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return std::string("(not an InputError) ") + e.what();
+  }
+  return "";
+}
+
+/// The loader's file with `key: VALUE` given a new value.
+std::string withValue(const YamlLoader& l, const std::string& value) {
+  std::string text = readFile(l.file);
+  const auto at = text.find(l.numericKey + ": ");
+  EXPECT_NE(at, std::string::npos) << l.file << " has no " << l.numericKey;
+  const auto begin = at + l.numericKey.size() + 2;
+  const auto end = text.find_first_of(" \r\n#,}", begin);
+  return text.replace(begin, end - begin, value);
+}
+
+TEST(BadInputCatalogue, YamlBundledFilesLoad) {
+  for (const auto& l : yamlLoaders()) EXPECT_EQ(errorOf(l, readFile(l.file)), "") << l.name;
+}
+
+TEST(BadInputCatalogue, YamlEmptyFileOrOnlyCommentsNeedsAMapping) {
+  for (const auto& l : yamlLoaders()) {
+    for (const char* text : {"", "\n\n", "# nothing here\n", "\xEF\xBB\xBF"}) {
+      EXPECT_THAT(errorOf(l, text), StartsWith(l.file + ":1: expected a YAML mapping of keys (got nothing)")) << l.name;
+    }
+  }
+}
+
+TEST(BadInputCatalogue, YamlBinaryGarbageIsAnInputErrorNamingTheFile) {
+  std::string garbage;
+  for (int i = 0; i < 512; ++i) garbage.push_back(static_cast<char>((i * 73 + 11) % 256));
+  const std::string nulls("\0\0\0\x01\x02", 5);
+  for (const auto& l : yamlLoaders()) {
+    for (const std::string& text : {garbage, nulls, std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)}) {
+      EXPECT_THAT(errorOf(l, text), StartsWith(l.file + ":")) << l.name;
+    }
+  }
+}
+
+TEST(BadInputCatalogue, YamlByteOrderMarkAndCrlfSimplyWork) {
+  for (const auto& l : yamlLoaders()) {
+    const std::string text = readFile(l.file);
+    std::string crlf;
+    for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    EXPECT_EQ(errorOf(l, "\xEF\xBB\xBF" + text), "") << l.name << " with a BOM";
+    EXPECT_EQ(errorOf(l, crlf), "") << l.name << " with CRLF";
+    EXPECT_EQ(errorOf(l, "\xEF\xBB\xBF" + crlf), "") << l.name << " with a BOM and CRLF";
+  }
+  // The values are the same, not just accepted.
+  const std::string p1 = readFile("participants/p1.yaml");
+  std::string crlf;
+  for (char c : p1) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const Participant a = parseParticipant(p1, "participants/p1.yaml");
+  const Participant b = parseParticipant("\xEF\xBB\xBF" + crlf, "participants/p1.yaml");
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.kneeModelPath, b.kneeModelPath);
+  EXPECT_EQ(a.thigh.inertia, b.thigh.inertia);
+  EXPECT_EQ(a.hipMoment.timeScale, b.hipMoment.timeScale);
+}
+
+TEST(BadInputCatalogue, YamlCommaDecimalSeparatorIsNamed) {
+  for (const auto& l : yamlLoaders()) {
+    EXPECT_THAT(errorOf(l, withValue(l, "0,5")),
+                HasSubstr(l.numericKey + ": expected a number with a decimal point, not a comma (got '0,5')"))
+        << l.name;
+  }
+}
+
+TEST(BadInputCatalogue, YamlDuplicatedKeyIsNamedWithItsLine) {
+  for (const auto& l : yamlLoaders()) {
+    const std::string text = readFile(l.file) + "name: again\n";
+    const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+    EXPECT_THAT(errorOf(l, text), HasSubstr(l.file + ":" + std::to_string(lines) + ": name: key appears twice"))
+        << l.name;
+  }
+}
+
+TEST(BadInputCatalogue, YamlNanAndInfinityAreRefused) {
+  for (const auto& l : yamlLoaders()) {
+    for (const char* v : {".nan", "NaN", "nan", ".inf", "-.inf", "inf", "1e999", "-1e999"}) {
+      EXPECT_THAT(errorOf(l, withValue(l, v)), HasSubstr(l.numericKey + ": expected a finite number")) << l.name << " " << v;
+    }
+  }
+}
+
+TEST(BadInputCatalogue, YamlNotANumberAndWrongTypes) {
+  for (const auto& l : yamlLoaders()) {
+    EXPECT_THAT(errorOf(l, withValue(l, "ten")), HasSubstr(l.numericKey + ": expected a number (got 'ten')")) << l.name;
+    EXPECT_THAT(errorOf(l, withValue(l, "[1, 2]")), HasSubstr(l.numericKey + ": expected a number (got a list)")) << l.name;
+  }
+}
+
+// Documented acceptance: `key:` with nothing after it is YAML's null, read as "not given":
+// an optional key takes its default, a required key is reported missing.
+TEST(BadInputCatalogue, YamlEmptyValueMeansNotGiven) {
+  for (const auto& l : yamlLoaders()) {
+    const std::string e = errorOf(l, withValue(l, ""));
+    EXPECT_TRUE(e.empty() || e.find(l.numericKey) != std::string::npos) << l.name << ": " << e;
+  }
+  EXPECT_THAT(errorOf(yamlLoaders()[0], withValue(yamlLoaders()[0], "")),
+              HasSubstr("knee_friction_Nm: expected a number (got nothing)"));
+  const Participant p = parseParticipant(readFile("participants/p1.yaml").replace(
+                                             readFile("participants/p1.yaml").find("time_limit_s: 1.5"), 17, "time_limit_s:"),
+                                         "participants/p1.yaml");
+  EXPECT_EQ(p.swingEnd.timeLimit, SwingEndRule{}.timeLimit);
+}
+
+TEST(BadInputCatalogue, YamlSyntaxErrorsNameTheLine) {
+  for (const auto& l : yamlLoaders()) {
+    EXPECT_THAT(errorOf(l, readFile(l.file) + "oops: [1, 2\n"), HasSubstr(": YAML syntax error")) << l.name;
+    EXPECT_THAT(errorOf(l, "name: x\n\tindented: with a tab\n"), StartsWith(l.file + ":")) << l.name;
+  }
+}
+
+TEST(BadInputCatalogue, YamlUnknownKeyIsNamed) {
+  for (const auto& l : yamlLoaders()) {
+    EXPECT_THAT(errorOf(l, readFile(l.file) + "colour: blue\n"), HasSubstr("colour: unknown key")) << l.name;
+  }
+}
+
+// Documented acceptance: huge but finite numbers load wherever no physical bound is
+// known (a viscous coefficient, a noise level); where one is known the loader refuses.
+TEST(BadInputCatalogue, YamlHugeNumbers) {
+  for (const auto& l : yamlLoaders()) {
+    const std::string e = errorOf(l, withValue(l, "1e300"));
+    EXPECT_THAT(e, ::testing::Not(HasSubstr("not an InputError"))) << l.name;
+  }
+  const YamlLoader participant = yamlLoaders()[0];
+  EXPECT_THAT(errorOf(participant, readFile("participants/p1.yaml").replace(
+                                       readFile("participants/p1.yaml").find("height_m: 1.83"), 14, "height_m: 1e300")),
+              HasSubstr("height_m: expected a standing height between 0.5 and 2.6 m (got 1e+300)"));
+  const YamlLoader sweep = yamlLoaders()[3];
+  EXPECT_THAT(errorOf(sweep, withValue(sweep, "1e300")),
+              HasSubstr("accuracy: expected a relative accuracy in (0, 0.01] (got 1e+300)"));
+}
+
+// An alias that refers to an alias ... ("billion laughs") must not take exponential time.
+TEST(BadInputCatalogue, YamlAliasBombIsRefusedQuickly) {
+  std::string text = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i < 12; ++i) {
+    text += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) text += (k ? ", *a" : "*a") + std::to_string(i - 1);
+    text += "]\n";
+  }
+  const auto start = std::chrono::steady_clock::now();
+  for (const auto& l : yamlLoaders()) EXPECT_THAT(errorOf(l, text), StartsWith(l.file + ":")) << l.name;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  constexpr double kQuick = 10.0;  // s, for all loaders under sanitizers; 10^12 nodes would take days
+  EXPECT_LT(seconds, kQuick);
+}
+
+TEST(BadInputCatalogue, YamlDeepNestingIsAnErrorNotAStackOverflow) {
+  for (const auto& l : yamlLoaders()) {
+    EXPECT_THAT(errorOf(l, "name: " + std::string(100000, '[') + "\n"), StartsWith(l.file + ":")) << l.name;
+    EXPECT_THAT(errorOf(l, "name: " + std::string(100000, '{') + "\n"), StartsWith(l.file + ":")) << l.name;
+  }
+}
+
+TEST(BadInputCatalogue, YamlMissingFileSaysSo) {
+  EXPECT_THAT(errorOf(YamlLoader{"missing", "", "", [](const std::string&, const std::string&) {
+                        loadParticipant("participants/nobody.yaml");
+                      }},
+                      ""),
+              HasSubstr("participants/nobody.yaml: cannot open file"));
+  try {
+    loadKneeModel("models");  // a directory
+    ADD_FAILURE() << "a directory loaded as a knee model";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), StartsWith("models"));
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// CSV readers: the bench data (cylinder fit) and the generic reader
+// ---------------------------------------------------------------------------------------
+
+fs::path tempDir() {
+  const fs::path d = fs::temp_directory_path() / ("swingsim_bad_input_catalogue_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const fs::path path = tempDir() / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path.string();
+}
+
+std::string benchError(const std::string& name, const std::string& text) {
+  try {
+    readBenchCsv(writeTemp(name, text), 3);
+  } catch (const InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return std::string("(not an InputError) ") + e.what();
+  }
+  return "";
+}
+
+const std::string kBenchGood = "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,12\n0.02,0.004,15\n0.03,0.003,11\n";
+
+TEST(BadInputCatalogue, CsvGoodBenchFileReads) {
+  const BenchData d = readBenchCsv(writeTemp("good.csv", kBenchGood), 3);
+  EXPECT_EQ(d.time.size(), 4u);
+  EXPECT_EQ(d.force[2], 15);
+}
+
+TEST(BadInputCatalogue, CsvEmptyFile) {
+  EXPECT_THAT(benchError("empty.csv", ""), HasSubstr("empty.csv:1: empty file (expected a header row: time_s,...)"));
+  EXPECT_THAT(benchError("blank.csv", "\n\n"), HasSubstr("blank.csv:1: empty file"));
+  EXPECT_THAT(benchError("header.csv", "time_s,position_m,force_N\n"),
+              HasSubstr("header.csv: too few data rows (got 0, need at least 3)"));
+}
+
+TEST(BadInputCatalogue, CsvBinaryGarbage) {
+  std::string garbage("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16);
+  EXPECT_THAT(benchError("png.csv", garbage), HasSubstr("png.csv: not a text CSV file (contains NUL bytes)"));
+  std::string noNul;
+  for (int i = 0; i < 512; ++i) noNul.push_back(static_cast<char>(1 + (i * 73 + 11) % 255));
+  EXPECT_THAT(benchError("noise.csv", noNul), StartsWith(tempDir().string() + "/noise.csv:"));
+  // UTF-16, as some Windows software exports: NUL bytes between the letters.
+  std::string utf16 = "\xFF\xFE";
+  for (char c : kBenchGood) utf16 += std::string(1, c) + '\0';
+  EXPECT_THAT(benchError("utf16.csv", utf16), HasSubstr("utf16.csv: not a text CSV file (contains NUL bytes)"));
+}
+
+TEST(BadInputCatalogue, CsvByteOrderMarkAndCrlfSimplyWork) {
+  std::string crlf;
+  for (char c : kBenchGood) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"bom.csv", "\xEF\xBB\xBF" + kBenchGood}, {"crlf.csv", crlf}, {"bomcrlf.csv", "\xEF\xBB\xBF" + crlf},
+           {"noeol.csv", kBenchGood.substr(0, kBenchGood.size() - 1)}, {"trailing.csv", kBenchGood + "\n\r\n\n"}}) {
+    const BenchData d = readBenchCsv(writeTemp(name, text), 3);
+    EXPECT_EQ(d.time.size(), 4u) << name;
+    EXPECT_EQ(d.position[3], 0.003) << name;
+  }
+}
+
+TEST(BadInputCatalogue, CsvCommaDecimalSeparator) {
+  // Semicolon-separated with decimal commas (a German or French spreadsheet export).
+  EXPECT_THAT(benchError("semicolon.csv", "time_s;position_m;force_N\n0;0,001;10\n0,01;0,002;12\n0,02;0,004;15\n"),
+              HasSubstr("semicolon.csv:1: time_s: required column is missing"));
+  // Comma-separated with decimal commas: the cell counts disagree with the header.
+  EXPECT_THAT(benchError("comma.csv", "time_s,position_m,force_N\n0,0,001,10\n0,01,0,002,12\n0,02,0,004,15\n"),
+              HasSubstr("comma.csv:2: expected 3 comma-separated values (got 4); is the decimal separator a comma?"));
+  // Quoted decimal commas.
+  EXPECT_THAT(benchError("quoted.csv", "time_s,position_m,force_N\n\"0\",\"0,001\",\"10\"\n"),
+              HasSubstr("quoted.csv:2: expected 3 comma-separated values (got 4)"));
+}
+
+TEST(BadInputCatalogue, CsvDuplicatedAndMissingColumns) {
+  EXPECT_THAT(benchError("dup.csv", "time_s,position_m,force_N,force_N\n0,0,1,1\n"),
+              HasSubstr("dup.csv:1: force_N: column appears twice in the header"));
+  EXPECT_THAT(benchError("dupextra.csv", "time_s,position_m,force_N,note,note\n0,0,1,1,1\n"),
+              HasSubstr("dupextra.csv:1: note: column appears twice in the header"));
+  EXPECT_THAT(benchError("missing.csv", "time_s,force_N\n0,1\n0.1,2\n0.2,3\n"),
+              HasSubstr("missing.csv:1: position_m: required column is missing (got header 'time_s,force_N')"));
+  EXPECT_THAT(benchError("noheader.csv", "0,0.001,10\n0.01,0.002,12\n0.02,0.004,15\n"),
+              HasSubstr("noheader.csv:1: time_s: required column is missing (got header '0,0.001,10')"));
+  EXPECT_THAT(benchError("case.csv", "Time_s,position_m,force_N\n0,0,1\n"), HasSubstr("time_s: required column is missing"));
+  EXPECT_THAT(benchError("ragged.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002\n"),
+              HasSubstr("ragged.csv:3: expected 3 comma-separated values (got 2)"));
+  // Extra columns are read past and listed (documented acceptance).
+  CsvSpec spec;
+  spec.required = {"time_s"};
+  const CsvTable t = parseCsv("time_s,comment\n0,left heel\n1,right heel\n", "extra.csv", spec);
+  EXPECT_EQ(t.ignored, std::vector<std::string>{"comment"});
+}
+
+TEST(BadInputCatalogue, CsvNonMonotonicOrRepeatedTime) {
+  EXPECT_THAT(benchError("back.csv", "time_s,position_m,force_N\n0,0.001,10\n0.02,0.002,12\n0.01,0.004,15\n"),
+              HasSubstr("back.csv:4: time_s: must be strictly increasing (got 0.01 after 0.02)"));
+  EXPECT_THAT(benchError("repeat.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,12\n0.01,0.004,15\n"),
+              HasSubstr("repeat.csv:4: time_s: must be strictly increasing (got 0.01 after 0.01)"));
+}
+
+TEST(BadInputCatalogue, CsvNanInfinityHugeAndGaps) {
+  for (const char* v : {"nan", "NaN", "-nan", "inf", "-Infinity", "1e309", "-1e400"}) {
+    EXPECT_THAT(benchError("nonfinite.csv", std::string("time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,") + v + "\n"),
+                HasSubstr("nonfinite.csv:3: force_N: expected a finite number (got '" + std::string(v) + "')"));
+  }
+  // A gap (empty cell) as lab software writes for a lost marker.
+  EXPECT_THAT(benchError("gap.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,,12\n"),
+              HasSubstr("gap.csv:3: position_m: expected a number (got '')"));
+  EXPECT_THAT(benchError("text.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,n/a,12\n"),
+              HasSubstr("text.csv:3: position_m: expected a number (got 'n/a')"));
+  // Documented acceptance: huge finite numbers are numbers (1e300 N is the user's business).
+  EXPECT_EQ(benchError("huge.csv", "time_s,position_m,force_N\n0,0.001,1e300\n0.01,0.002,-1e300\n0.02,0.004,1\n"), "");
+}
+
+// A file with more rows than CsvSpec::maxRows is refused while reading, before the whole
+// file is in memory (README "Robustness" gives the measured peak memory).
+TEST(BadInputCatalogue, CsvTenMillionRowsAreRefusedQuickly) {
+  const fs::path path = tempDir() / "ten-million.csv";
+  {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fputs("time_s,position_m,force_N\n", f);
+    char line[64];
+    for (long i = 0; i < 10000000; ++i) {
+      const int n = std::snprintf(line, sizeof line, "%ld.%03ld,0.001,%ld\n", i / 1000, i % 1000, i % 97);
+      std::fwrite(line, 1, static_cast<std::size_t>(n), f);
+    }
+    std::fclose(f);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  try {
+    readBenchCsv(path.string(), 3);
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fs::remove(path);
+  EXPECT_THAT(error, HasSubstr("ten-million.csv: too many rows (more than 2000000"));
+  EXPECT_THAT(error, HasSubstr("split the file or resample it"));
+  constexpr double kQuick = 30.0;  // s, under sanitizers on a loaded 2-core machine (plain build: < 1 s)
+  EXPECT_LT(seconds, kQuick);
+}
+
+TEST(BadInputCatalogue, CsvJustUnderTheRowLimitReads) {
+  CsvSpec spec;
+  spec.required = {"t"};
+  spec.maxRows = 5;
+  EXPECT_EQ(parseCsv("t\n1\n2\n3\n4\n5\n", "five.csv", spec).rows(), 5u);
+  try {
+    parseCsv("t\n1\n2\n3\n4\n5\n6\n", "six.csv", spec);
+    ADD_FAILURE() << "six rows read with maxRows = 5";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("six.csv: too many rows"));
+  }
+}
+
+TEST(BadInputCatalogue, CsvMissingFileAndDirectory) {
+  EXPECT_THAT(benchError("../no/such/dir/x.csv", ""), HasSubstr("cannot"));
+  try {
+    readBenchCsv(tempDir().string(), 3);
+    ADD_FAILURE() << "a directory read as CSV";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), StartsWith(tempDir().string()));
+  }
+}
+
+// The Winter knee-angle table used by `swingsim generate`.
+TEST(BadInputCatalogue, KneeAngleStrideMissingFramesAndBadColumns) {
+  std::string text = "frame,knee_deg\n";
+  for (int f = 1; f <= 20; ++f) text += std::to_string(f) + "," + std::to_string(f) + "\n";
+  EXPECT_EQ(readKneeAngleStride(writeTemp("w.csv", text), 2, 12).flexion.size(), 10u);
+  EXPECT_THAT(
+      [&] {
+        try {
+          readKneeAngleStride(writeTemp("w.csv", text), 15, 40);
+        } catch (const InputError& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      }(),
+      HasSubstr("frames 15 to 40 are not all present (found 6)"));
+  try {
+    readKneeAngleStride(writeTemp("w2.csv", "frame,knee\n1,2\n"), 1, 10);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("w2.csv:1: knee_deg: required column is missing"));
+  }
+}
+
+}  // namespace
+}  // namespace swingsim
