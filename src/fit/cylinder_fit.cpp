@@ -1,6 +1,8 @@
 #include "fit/cylinder_fit.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -13,6 +15,13 @@ namespace {
 // Singular values below this fraction of the largest count as zero (rank detection):
 // well above double round-off accumulated over a few thousand rows.
 constexpr double kRankTolerance = 1e-12;
+
+// Three significant digits, for messages.
+std::string fmt3(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
 
 }  // namespace
 
@@ -98,6 +107,39 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   if (rows < p)
     throw InputError("training data: fewer samples (" + std::to_string(rows) + ") than coefficients (" +
                      std::to_string(p) + ") of a " + std::to_string(model.phases) + "-phase model");
+
+  // A phase the training data (almost) never enters has coefficients fixed by round-off:
+  // the column scaling in fitLeastSquares hides it from the rank test, and the "fit" then
+  // returns numbers like 1e16 N. Refuse, and say which phase and why.
+  {
+    constexpr double kMinPhaseSamples = 3.0;  // a phase's gate summed over samples: at least its 3 coefficients
+    std::vector<double> active(static_cast<std::size_t>(model.phases), 0.0);
+    double xMin = 1e300, xMax = -1e300;
+    std::string files;
+    for (const auto& d : train) {
+      const CylinderTrace tr = calcCylinderTrace(MauchCylinder(model), d.time, d.position, d.velocity, 0.0);
+      for (const auto& g : tr.gates)
+        for (std::size_t ph = 0; ph < active.size() && ph < g.size(); ++ph) active[ph] += g[ph];
+      for (double x : d.position) {
+        xMin = std::min(xMin, x);
+        xMax = std::max(xMax, x);
+      }
+      files += (files.empty() ? "" : ", ") + d.path;
+    }
+    std::string idle;
+    for (std::size_t ph = 0; ph < active.size(); ++ph) {
+      if (active[ph] < kMinPhaseSamples)
+        idle += (idle.empty() ? "phase " : ", phase ") + std::to_string(ph + 1) + " in " + fmt3(active[ph]);
+    }
+    if (!idle.empty())
+      throw RunError("cannot fit the " + std::to_string(model.phases) + "-phase model: " + idle + " of " +
+                     std::to_string(rows) + " training samples (" + files + "; piston position " + fmt3(xMin * 1e3) +
+                     " to " + fmt3(xMax * 1e3) + " mm, hyperextension switch at " +
+                     fmt3(model.switches.hyperextensionPosition * 1e3) +
+                     " mm): those coefficients are not identified (singular regression). Likely cause: the training "
+                     "record never enters those phases (no hyperextension in the gait cycle, so no S2 latch either, "
+                     "or a position offset); train on a record that does, or use a model with fewer phases");
+  }
 
   LinearFit best = regress(model, train);
   out.trainRmseAtStart = best.residualRms;

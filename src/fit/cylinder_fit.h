@@ -55,7 +55,8 @@ struct CylinderFit {
 /// Fits `model`'s coefficients (its values are only a start for switches) to the training
 /// files, each starting unlatched (S2 = 0: bench records start at heel strike).
 /// Throws InputError if there are fewer samples than coefficients, or if fitSwitches is
-/// set with a non-positive xhy (no log grid).
+/// set with a non-positive xhy (no log grid). Throws RunError if a phase is active in fewer
+/// than 3 training samples (gate summed over samples): its coefficients are not identified.
 CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<BenchData>& train,
                         const CylinderFitOptions& options = {});
 
