@@ -12,6 +12,8 @@
 #include <limits>
 #include <sstream>
 
+#include "fit/bench_data.h"
+#include "fit/cylinder_fit.h"
 #include "io/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -112,6 +114,58 @@ TEST(FailingRuns, CliExitsOneAndWritesNothing) {
   const int status = pclose(pipe);
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << output;
   EXPECT_THAT(output, HasSubstr("swingsim: P1 at lowering 0 m: the swing did not end"));
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_FALSE(fs::exists(dir / "r.json"));
+}
+
+// A bench record that never comes near full extension (here: the normal-speed record moved
+// 8 mm into flexion) leaves the 4-phase model's hyperextension phase without data. Before
+// issue 6 the column-scaled regression still reported "rank 12" and returned phase
+// coefficients of 1e16 N with exit code 0 and a complete-looking report.
+BenchData recordWithoutHyperextension() {
+  BenchData d = readBenchCsv("studies/data/mauch2014/normal.csv", 3);
+  constexpr double kOffset = 0.008;  // m: the deepest extension becomes x = +8 mm, far above xhy
+  for (double& x : d.position) x += kOffset;
+  return d;
+}
+
+TEST(FailingRuns, SingularRegressionNamesThePhaseTheDataAndTheCause) {
+  try {
+    fitCylinder(loadMauchCylinder("models/mauch-4phase.yaml"), {recordWithoutHyperextension()});
+    ADD_FAILURE() << "a fit with an unidentified phase returned";
+  } catch (const RunError& e) {
+    // Phase 2 follows the S2 latch, which only hyperextension sets: it is idle too.
+    EXPECT_THAT(e.what(), ::testing::ContainsRegex("cannot fit the 4-phase model: phase 2 in [-0-9.e]+, phase 4 in "));
+    EXPECT_THAT(e.what(), HasSubstr(" of 1783 training samples (studies/data/mauch2014/normal.csv; piston position 6.31 to 33.3 mm"));
+    EXPECT_THAT(e.what(), HasSubstr("singular regression"));
+    EXPECT_THAT(e.what(), HasSubstr("Likely cause: the training record never enters those phases (no hyperextension"));
+  }
+  // The 2-phase model has no hyperextension phase: the same record fits.
+  EXPECT_NO_THROW(fitCylinder(loadMauchCylinder("models/mauch-2phase.yaml"), {recordWithoutHyperextension()}));
+}
+
+TEST(FailingRuns, FitCliWithSingularRegressionExitsOneAndWritesNothing) {
+  const fs::path dir = fs::temp_directory_path() / ("swingsim_failing_fit_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const BenchData d = recordWithoutHyperextension();
+  {
+    std::ofstream csv(dir / "far.csv");
+    csv.precision(17);
+    csv << "time_s,position_m,force_N\n";
+    for (std::size_t i = 0; i < d.time.size(); ++i) csv << d.time[i] << "," << d.position[i] << "," << d.force[i] << "\n";
+  }
+  std::ofstream(dir / "study.yaml") << "kind: cylinder-fit\nname: far\nmodels: [" << fs::absolute("models/mauch-4phase.yaml").string()
+                                    << "]\ntrain: [far.csv]\n";
+  const std::string cmd = std::string(SWINGSIM_BINARY) + " fit " + (dir / "study.yaml").string() + " --out " +
+                          (dir / "out").string() + " --json " + (dir / "r.json").string() + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string output;
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, pipe)) output += buf;
+  const int status = pclose(pipe);
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << output;
+  EXPECT_THAT(output, HasSubstr("swingsim: cannot fit the 4-phase model: phase 2 in "));
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));
 }
