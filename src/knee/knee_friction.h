@@ -12,7 +12,7 @@ struct KneeFrictionParams {
   double angleWidth = 0.5 * 3.14159265358979323846 / 180.0;
   /// Velocity smoothing: moment = -Tc tanh(rate / smoothingRate). Chosen by the
   /// convergence study in the README; smaller makes the equations stiff.
-  double smoothingRate = 0.2;  ///< rad/s
+  double smoothingRate = 1.0;  ///< rad/s
 };
 
 /// Coulomb friction, smooth in velocity (tanh) and in angle (tanh step at activeBelow),

@@ -58,4 +58,18 @@ LegGeometry calcLegGeometry(const Participant& p, double lowering, const AddedMa
   return g;
 }
 
+PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion) {
+  const double shank = hipFlexion - kneeFlexion;  // absolute shank angle from the downward vertical
+  PlanarPose p{};
+  p.hip[0] = 0;
+  p.hip[1] = hipHeight;
+  p.knee[0] = g.thighLength * std::sin(hipFlexion);
+  p.knee[1] = hipHeight - g.thighLength * std::cos(hipFlexion);
+  p.ankle[0] = p.knee[0] + g.shankLength * std::sin(shank);
+  p.ankle[1] = p.knee[1] - g.shankLength * std::cos(shank);
+  p.toe[0] = p.ankle[0] + g.footLength * std::cos(shank);
+  p.toe[1] = p.ankle[1] + g.footLength * std::sin(shank);
+  return p;
+}
+
 }  // namespace swingsim

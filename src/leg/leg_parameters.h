@@ -96,6 +96,13 @@ struct LegGeometry {
 LegGeometry calcLegGeometry(const Participant& participant, double lowering,
                             const AddedMass& added = {});
 
+/// Ground-frame landmark positions (m) from the joint angles, by planar kinematics: hip at
+/// (0, hipHeight), x forward, y up; the foot points along +x of the shank.
+struct PlanarPose {
+  double hip[2], knee[2], ankle[2], toe[2];
+};
+PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion);
+
 /// The largest lowering `calcLegGeometry` accepts for this participant, m.
 double calcMaxLowering(const Participant& participant);
 

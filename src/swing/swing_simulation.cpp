@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 
 #include "io/input_error.h"
@@ -79,7 +80,12 @@ class KneePeakHandler : public LegEventHandler {
       : LegEventHandler(leg, log, Stage::Velocity, window), zone_(zone) {
     getTriggerInfo().setTriggerOnRisingSignTransition(false);
   }
-  Real getValue(const State& s) const override { return leg_.getKneeFlexionRate(s); }
+  // Knee rate while the knee is above the zone; a positive constant inside it, so a knee
+  // resting near extension after the swing (rate dithering about zero) does not make the
+  // integrator localize a stream of meaningless sign changes.
+  Real getValue(const State& s) const override {
+    return leg_.getKneeFlexion(s) > zone_ ? leg_.getKneeFlexionRate(s) : 1.0;
+  }
   void handleEvent(State& s, Real, bool&) const override {
     const double knee = leg_.getKneeFlexion(s);
     if (knee <= zone_ || log_.ended) return;  // wiggles inside the zone are not the swing's peak
@@ -135,21 +141,51 @@ std::string describeState(const LegModel& leg, const State& s) {
   return buf;
 }
 
-void recordSample(const LegModel& leg, const State& s, SwingTrajectory& tr) {
-  tr.time.push_back(s.getTime());
-  tr.hipFlexion.push_back(leg.getHipFlexion(s));
-  tr.kneeFlexion.push_back(leg.getKneeFlexion(s));
-  tr.hipFlexionRate.push_back(leg.getHipFlexionRate(s));
-  tr.kneeFlexionRate.push_back(leg.getKneeFlexionRate(s));
-  tr.hipMoment.push_back(leg.calcHipMoment(s));
-  tr.kneeMoment.push_back(leg.calcKneeMoment(s));
-  LegPose pose = leg.calcPose(s);
-  tr.kneeX.push_back(pose.knee[0]);
-  tr.kneeY.push_back(pose.knee[1]);
-  tr.ankleX.push_back(pose.ankle[0]);
-  tr.ankleY.push_back(pose.ankle[1]);
-  tr.toeX.push_back(pose.toe[0]);
-  tr.toeY.push_back(pose.toe[1]);
+// Joint state at the end of an integrator step: angles, rates, accelerations, moments.
+struct StepEnd {
+  double t, hip, knee, hipRate, kneeRate, hipAcc, kneeAcc, hipMoment, kneeMoment;
+};
+
+StepEnd readStepEnd(const LegModel& leg, const State& s) {
+  const MultibodySystem& system = leg.getSystem();
+  system.realize(s, Stage::Acceleration);
+  const Vector& udot = s.getUDot();
+  // Mobility order: thigh (hip) then shank (knee); the welds have none.
+  return {s.getTime(), leg.getHipFlexion(s), leg.getKneeFlexion(s), leg.getHipFlexionRate(s),
+          leg.getKneeFlexionRate(s), udot[0], udot[1], leg.calcHipMoment(s), leg.calcKneeMoment(s)};
+}
+
+// Cubic Hermite on the angle (from angle and rate at both step ends) and on the rate
+// (from rate and acceleration): the samples cost no extra realization, so the integrator
+// chooses its steps by accuracy alone, not by the output interval.
+void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, double interval, const LegGeometry& g,
+                   double hipHeight, SwingTrajectory& tr) {
+  const double h = b.t - a.t;
+  auto hermite = [&](double y0, double d0, double y1, double d1, double s) {
+    const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+    const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+    return h00 * y0 + h10 * h * d0 + h01 * y1 + h11 * h * d1;
+  };
+  while (nextSample <= b.t + 1e-12 && h > 0) {
+    const double s = std::clamp((nextSample - a.t) / h, 0.0, 1.0);
+    const double hip = hermite(a.hip, a.hipRate, b.hip, b.hipRate, s);
+    const double knee = hermite(a.knee, a.kneeRate, b.knee, b.kneeRate, s);
+    tr.time.push_back(nextSample);
+    tr.hipFlexion.push_back(hip);
+    tr.kneeFlexion.push_back(knee);
+    tr.hipFlexionRate.push_back(hermite(a.hipRate, a.hipAcc, b.hipRate, b.hipAcc, s));
+    tr.kneeFlexionRate.push_back(hermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, s));
+    tr.hipMoment.push_back(a.hipMoment + s * (b.hipMoment - a.hipMoment));
+    tr.kneeMoment.push_back(a.kneeMoment + s * (b.kneeMoment - a.kneeMoment));
+    const PlanarPose pose = calcPlanarPoseXY(g, hipHeight, hip, knee);
+    tr.kneeX.push_back(pose.knee[0]);
+    tr.kneeY.push_back(pose.knee[1]);
+    tr.ankleX.push_back(pose.ankle[0]);
+    tr.ankleY.push_back(pose.ankle[1]);
+    tr.toeX.push_back(pose.toe[0]);
+    tr.toeY.push_back(pose.toe[1]);
+    nextSample += interval;
+  }
 }
 
 }  // namespace
@@ -172,44 +208,59 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   State state = leg.makeInitialState(p.initial);
   RungeKuttaMersonIntegrator integrator(system);
   integrator.setAccuracy(options.accuracy);
-  integrator.setAllowInterpolation(true);
+  // Return after every internal step: the loop stops as soon as the swing end plus the
+  // bounce window has passed, and samples the output by interpolation between steps.
+  integrator.setReturnEveryInternalStep(true);
+  integrator.setFinalTime(rule.timeLimit);
   TimeStepper stepper(system, integrator);
-  stepper.setReportAllSignificantStates(false);
+  stepper.setReportAllSignificantStates(true);
   stepper.initialize(state);
 
   SwingResult result;
   log.add("toe_off", 0.0);
-  double minClearance = 1e9;
-  auto observe = [&](const State& s) {
-    if (options.recordTrajectory) recordSample(leg, s, result.trajectory);
-    // Clearance matters from peak knee flexion (mid-swing) to the swing end; before that
-    // the foot is still leaving the ground it pushed off from.
-    if (log.peakSeen && !log.ended) {
-      LegPose pose = leg.calcPose(s);
-      minClearance = std::min({minClearance, pose.ankle[1], pose.toe[1]});
-    }
-  };
-  system.realize(integrator.getState(), Stage::Acceleration);
-  observe(integrator.getState());
+  const double hipHeight = calcHipHeight(p);
+  SwingTrajectory& tr = result.trajectory;
+  StepEnd previous = readStepEnd(leg, integrator.getState());
+  double nextSample = 0;
+  {
+    // The first sample, at toe-off.
+    const PlanarPose pose = calcPlanarPoseXY(geometry, hipHeight, previous.hip, previous.knee);
+    tr.time.push_back(0);
+    tr.hipFlexion.push_back(previous.hip);
+    tr.kneeFlexion.push_back(previous.knee);
+    tr.hipFlexionRate.push_back(previous.hipRate);
+    tr.kneeFlexionRate.push_back(previous.kneeRate);
+    tr.hipMoment.push_back(previous.hipMoment);
+    tr.kneeMoment.push_back(previous.kneeMoment);
+    tr.kneeX.push_back(pose.knee[0]);
+    tr.kneeY.push_back(pose.knee[1]);
+    tr.ankleX.push_back(pose.ankle[0]);
+    tr.ankleY.push_back(pose.ankle[1]);
+    tr.toeX.push_back(pose.toe[0]);
+    tr.toeY.push_back(pose.toe[1]);
+    nextSample = options.sampleInterval;
+  }
 
   const double stopAfterEnd = rule.bounceWindow;
-  double t = 0;
   while (true) {
-    t += options.sampleInterval;
     Integrator::SuccessfulStepStatus status;
     try {
-      status = stepper.stepTo(t);
+      status = stepper.stepTo(rule.timeLimit);
     } catch (const std::exception& e) {
       throw RunError(p.name + ": the integrator failed " + describeState(leg, integrator.getState()) +
                      " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; " +
                      e.what() + ")");
     }
     const State& s = integrator.getState();
-    system.realize(s, Stage::Acceleration);
-    observe(s);
-    if (status == Integrator::EndOfSimulation) break;
+    const StepEnd now = readStepEnd(leg, s);
+    if (now.t > previous.t) appendSamples(previous, now, nextSample, options.sampleInterval, geometry, hipHeight, tr);
+    previous = now;
+    if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) {
+      throw RunError(p.name + ": the simulation diverged " + describeState(leg, s) +
+                     " (likely cause: an unphysical input such as a near-zero inertia)");
+    }
     if (log.ended && s.getTime() >= log.endTime + stopAfterEnd - 1e-12) break;
-    if (!log.ended && s.getTime() >= rule.timeLimit - 1e-12) {
+    if (!log.ended && (s.getTime() >= rule.timeLimit - 1e-12 || status == Integrator::EndOfSimulation)) {
       std::string cause;
       if (!log.thighReached)
         cause = "the thigh never reached its target flexion of " +
@@ -222,7 +273,15 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing did not end within the time limit of " +
                      formatNumber(rule.timeLimit) + " s; " + describeState(leg, s) + "; " + cause);
     }
+    if (status == Integrator::EndOfSimulation) break;
   }
+  // Lowest ankle or toe from peak knee flexion (mid-swing) to the swing end; before the
+  // peak the foot is still leaving the ground it pushed off from.
+  double minClearance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < tr.size(); ++k) {
+    if (tr.time[k] >= log.peakTime && tr.time[k] <= log.endTime) minClearance = std::min({minClearance, tr.ankleY[k], tr.toeY[k]});
+  }
+  if (!options.recordTrajectory) result.trajectory = SwingTrajectory{};
   result.swingTime = log.endTime;
   result.peakKneeFlexion = log.peak;
   result.peakKneeFlexionTime = log.peakTime;
@@ -230,6 +289,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   result.minToeClearance = minClearance;
   result.events = log.events;
   result.steps = integrator.getNumStepsTaken();
+  result.realizations = integrator.getNumRealizations();
   return result;
 }
 

@@ -12,8 +12,8 @@ namespace swingsim {
 /// Integrator settings. The defaults are the converged settings of the README's
 /// convergence study (swing time converged to 0.1 ms).
 struct SwingOptions {
-  double accuracy = 1e-5;           ///< Simbody integrator relative accuracy
-  double sampleInterval = 0.002;    ///< s between trajectory samples (interpolated, free)
+  double accuracy = 1e-4;           ///< Simbody integrator relative accuracy
+  double sampleInterval = 0.002;    ///< s between trajectory samples (Hermite-interpolated between steps: free)
   bool recordTrajectory = true;
   double eventWindow = 1e-5;        ///< s, required event localization window
 };
@@ -39,6 +39,7 @@ struct SwingResult {
   std::vector<SwingEvent> events;
   SwingTrajectory trajectory;
   int steps = 0;                   ///< integrator steps taken
+  int realizations = 0;            ///< system realizations the integrator asked for
 };
 
 /// The participant-level inputs one swing needs, after loading.

@@ -51,9 +51,9 @@ TEST(KneeFriction, SmoothInVelocityNoJumpThroughZero) {
   const double rateStep = 1e-6;
   const double slope = (friction.calcMoment({0, rateStep}, nullptr) - friction.calcMoment({0, -rateStep}, nullptr)) /
                        (2 * rateStep);
-  // tanh(rate / 0.2 rad/s): slope -Tc gate / 0.2 with gate(0 deg) = 0.5 (1 + tanh(8)).
+  // tanh(rate / w): slope -Tc gate / w with gate(0 deg) = 0.5 (1 + tanh(8)).
   const double gate = friction.calcGate(0);
-  EXPECT_NEAR(slope, -10 * gate / 0.2, 1e-4);
+  EXPECT_NEAR(slope, -10 * gate / friction.params().smoothingRate, 1e-4);
 }
 
 TEST(KneeFriction, RejectsNegativeTcAndZeroWidths) {
