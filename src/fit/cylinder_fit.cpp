@@ -76,8 +76,10 @@ LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData
   Eigen::Index r = 0;
   for (const auto& d : train) {
     const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
+    const std::vector<double> accel = params.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
+                                                             : std::vector<double>(d.time.size(), 0.0);
     for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
-      const auto row = cylinder.calcRegressorRow(d.position[i], d.velocity[i], latch[i]);
+      const auto row = cylinder.calcRegressorRow(d.position[i], d.velocity[i], accel[i], latch[i]);
       for (int j = 0; j < p; ++j) X(r, j) = row[static_cast<std::size_t>(j)];
       y(r) = d.force[i];
     }
@@ -85,14 +87,6 @@ LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData
   return fitLeastSquares(X, y);
 }
 
-void setCoefficients(MauchCylinderParams& params, const std::vector<double>& b) {
-  for (int ph = 0; ph < params.phases; ++ph) {
-    auto& c = params.coefficients[static_cast<std::size_t>(ph)];
-    c.f = b[static_cast<std::size_t>(3 * ph)];
-    c.k = b[static_cast<std::size_t>(3 * ph + 1)];
-    c.c = b[static_cast<std::size_t>(3 * ph + 2)];
-  }
-}
 
 }  // namespace
 
@@ -103,7 +97,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   out.startSwitches = model.switches;
   std::size_t rows = 0;
   for (const auto& d : train) rows += d.time.size();
-  const std::size_t p = 3 * static_cast<std::size_t>(model.phases);
+  const std::size_t p = static_cast<std::size_t>(MauchCylinder(model).numCoefficients());
   if (rows < p)
     throw InputError("training data: fewer samples (" + std::to_string(rows) + ") than coefficients (" +
                      std::to_string(p) + ") of a " + std::to_string(model.phases) + "-phase model");
@@ -113,7 +107,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   // returns numbers like 1e16 N. Refuse, and say which phase and why.
   {
     constexpr double kMinPhaseSamples = 3.0;  // a phase's gate summed over samples: at least its 3 coefficients
-    std::vector<double> active(static_cast<std::size_t>(model.phases), 0.0);
+    std::vector<double> active(static_cast<std::size_t>(MauchCylinder(model).numPhaseGates()), 0.0);
     double xMin = 1e300, xMax = -1e300;
     std::string files;
     for (const auto& d : train) {
@@ -182,7 +176,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
       out.warnings.push_back("a fitted switch constant sits at the edge of the search grid; the optimum may lie beyond it");
   }
   out.regression = best;
-  setCoefficients(out.params, best.coefficients);
+  setMauchCoefficientVector(out.params, best.coefficients);
   if (best.rank < static_cast<int>(p))
     out.warnings.push_back("rank-deficient regression (rank " + std::to_string(best.rank) + " of " + std::to_string(p) +
                            "): some phase is (almost) never active in the training data; its coefficients are not identified");

@@ -43,6 +43,48 @@ std::string mustBeDialSetting(double v) {
 
 }  // namespace
 
+MauchAddedEffects readMauchAddedEffects(YamlMap& m, int phases) {
+  MauchAddedEffects e;
+  if (m.has("hyperextension_phase")) {
+    if (phases != 2 && phases != 0)
+      m.fail("hyperextension_phase", "only a 2-phase model can add a hyperextension phase (the 4-phase model has one)",
+             std::to_string(phases) + " phases");
+    YamlMap h = m.getMap("hyperextension_phase");
+    e.hyperextensionPhase = true;
+    e.hyperextension.f = h.getDouble("f_N");
+    e.hyperextension.k = h.getDouble("k_N_per_m");
+    e.hyperextension.c = h.getDouble("c_Ns_per_m");
+    h.finish();
+  }
+  if (m.has("coulomb_friction")) {
+    YamlMap c = m.getMap("coulomb_friction");
+    e.coulombFriction = true;
+    e.coulombForce = c.getDouble("force_N");
+    e.coulombWidth = c.getDouble("width_m_per_s", e.coulombWidth, mustBePositive);
+    c.finish();
+  }
+  if (m.has("orifice_quadratic")) {
+    YamlMap c = m.getMap("orifice_quadratic");
+    e.orificeQuadratic = true;
+    e.orificeCoefficient = c.getDouble("coefficient_Ns2_per_m2");
+    c.finish();
+  }
+  if (m.has("inertia")) {
+    YamlMap c = m.getMap("inertia");
+    e.inertia = true;
+    e.pistonMass = c.getDouble("mass_kg");
+    c.finish();
+  }
+  if (m.has("position_dependent_damping")) {
+    YamlMap c = m.getMap("position_dependent_damping");
+    e.positionDependentDamping = true;
+    e.positionDamping = c.getDouble("coefficient_Ns_per_m2");
+    c.finish();
+  }
+  m.finish();
+  return e;
+}
+
 MauchCylinderParams readMauchCylinder(YamlMap& yaml) {
   MauchCylinderParams p;
   p.phases = yaml.getInt("phases", 0);
@@ -109,6 +151,10 @@ MauchCylinderParams readMauchCylinder(YamlMap& yaml) {
   if (!found)
     yaml.fail("flexion_dial_deg", "no coefficient set in settings for this dial setting",
               "F" + formatNumber(flexionDial) + "E" + formatNumber(extensionDial));
+  if (yaml.has("effects")) {
+    YamlMap effects = yaml.getMap("effects");
+    p.effects = readMauchAddedEffects(effects, p.phases);
+  }
   return p;
 }
 

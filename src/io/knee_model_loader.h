@@ -30,6 +30,13 @@ class YamlMap;
 /// Reads the Mauch part of a `kind: mauch` model already opened as `yaml`.
 MauchCylinderParams readMauchCylinder(YamlMap& yaml);
 
+/// Reads an `effects:` map of an augmented Mauch model (docs/diagnosis.md): optional blocks
+/// hyperextension_phase {f_N, k_N_per_m, c_Ns_per_m} (2-phase models only; `phases` 0 skips
+/// that check), coulomb_friction {force_N, width_m_per_s}, orifice_quadratic
+/// {coefficient_Ns2_per_m2}, inertia {mass_kg}, position_dependent_damping
+/// {coefficient_Ns_per_m2}. Calls finish() on `effects`. Throws InputError.
+MauchAddedEffects readMauchAddedEffects(YamlMap& effects, int phases);
+
 /// Reads a `hyperextension_stop:` block (all keys optional, defaults in JointStopParams
 /// with the stop engaging at full extension).
 JointStopParams readHyperextensionStop(YamlMap& yaml);

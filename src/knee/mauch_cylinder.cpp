@@ -79,20 +79,44 @@ MauchCylinder::MauchCylinder(MauchCylinderParams params) : p_(std::move(params))
   require(std::isfinite(sw.latchRate) && sw.latchRate > 0, "latch rate k must be positive, 1/s");
   require(std::isfinite(p_.initialLatch) && p_.initialLatch >= 0 && p_.initialLatch <= 1,
           "initial latch S2 must be in [0, 1]");
+  const auto& e = p_.effects;
+  require(!e.hyperextensionPhase || p_.phases == 2,
+          "an added hyperextension phase needs a 2-phase model (the 4-phase model has one)");
+  require(std::isfinite(e.hyperextension.f) && std::isfinite(e.hyperextension.k) && std::isfinite(e.hyperextension.c) &&
+              std::isfinite(e.coulombForce) && std::isfinite(e.orificeCoefficient) && std::isfinite(e.pistonMass) &&
+              std::isfinite(e.positionDamping),
+          "added effect parameters must be finite");
+  require(std::isfinite(e.coulombWidth) && e.coulombWidth > 0, "Coulomb friction width must be positive, m/s");
 }
 
-double MauchCylinder::calcForce(double x, double xd, double s2) const {
-  const auto gates = calcPhaseGates(p_.phases, calcMauchSwitches(x, xd, s2, p_.switches));
+std::vector<double> MauchCylinder::calcGates(const MauchSwitches& s) const {
+  auto gates = calcPhaseGates(p_.phases, s);
+  if (p_.effects.hyperextensionPhase) {
+    // Chien 2014 Eq. 11: outside hyperextension the base phases, inside it the new one.
+    for (double& g : gates) g *= s.s8;
+    gates.push_back(s.s7);
+  }
+  return gates;
+}
+
+double MauchCylinder::calcForce(double x, double xd, double xdd, double s2) const {
+  const auto gates = calcGates(calcMauchSwitches(x, xd, s2, p_.switches));
   double force = 0;
   for (int i = 0; i < p_.phases; ++i) {
     const auto& c = p_.coefficients[static_cast<std::size_t>(i)];
     force += gates[static_cast<std::size_t>(i)] * (c.f + c.k * x + c.c * xd);
   }
+  const auto& e = p_.effects;
+  if (e.hyperextensionPhase) force += gates.back() * (e.hyperextension.f + e.hyperextension.k * x + e.hyperextension.c * xd);
+  if (e.coulombFriction) force += e.coulombForce * std::tanh(xd / e.coulombWidth);
+  if (e.orificeQuadratic) force += e.orificeCoefficient * xd * std::fabs(xd);
+  if (e.inertia) force += e.pistonMass * xdd;
+  if (e.positionDependentDamping) force += e.positionDamping * x * xd;
   return force;
 }
 
-std::vector<double> MauchCylinder::calcRegressorRow(double x, double xd, double s2) const {
-  const auto gates = calcPhaseGates(p_.phases, calcMauchSwitches(x, xd, s2, p_.switches));
+std::vector<double> MauchCylinder::calcRegressorRow(double x, double xd, double xdd, double s2) const {
+  const auto gates = calcGates(calcMauchSwitches(x, xd, s2, p_.switches));
   std::vector<double> row;
   row.reserve(static_cast<std::size_t>(numCoefficients()));
   for (double g : gates) {
@@ -100,6 +124,11 @@ std::vector<double> MauchCylinder::calcRegressorRow(double x, double xd, double 
     row.push_back(g * x);
     row.push_back(g * xd);
   }
+  const auto& e = p_.effects;
+  if (e.coulombFriction) row.push_back(std::tanh(xd / e.coulombWidth));
+  if (e.orificeQuadratic) row.push_back(xd * std::fabs(xd));
+  if (e.inertia) row.push_back(xdd);
+  if (e.positionDependentDamping) row.push_back(x * xd);
   return row;
 }
 
@@ -110,7 +139,41 @@ std::vector<double> MauchCylinder::getCoefficientVector() const {
     v.push_back(c.k);
     v.push_back(c.c);
   }
+  const auto& e = p_.effects;
+  if (e.hyperextensionPhase) {
+    v.push_back(e.hyperextension.f);
+    v.push_back(e.hyperextension.k);
+    v.push_back(e.hyperextension.c);
+  }
+  if (e.coulombFriction) v.push_back(e.coulombForce);
+  if (e.orificeQuadratic) v.push_back(e.orificeCoefficient);
+  if (e.inertia) v.push_back(e.pistonMass);
+  if (e.positionDependentDamping) v.push_back(e.positionDamping);
   return v;
+}
+
+void setMauchCoefficientVector(MauchCylinderParams& params, const std::vector<double>& b) {
+  const std::size_t expected = 3 * static_cast<std::size_t>(params.phases) +
+                               static_cast<std::size_t>(params.effects.numCoefficients());
+  if (b.size() != expected || params.coefficients.size() != static_cast<std::size_t>(params.phases))
+    throw std::invalid_argument("setMauchCoefficientVector: expected " + std::to_string(expected) + " coefficients (got " +
+                                std::to_string(b.size()) + ")");
+  std::size_t i = 0;
+  for (auto& c : params.coefficients) {
+    c.f = b[i++];
+    c.k = b[i++];
+    c.c = b[i++];
+  }
+  auto& e = params.effects;
+  if (e.hyperextensionPhase) {
+    e.hyperextension.f = b[i++];
+    e.hyperextension.k = b[i++];
+    e.hyperextension.c = b[i++];
+  }
+  if (e.coulombFriction) e.coulombForce = b[i++];
+  if (e.orificeQuadratic) e.orificeCoefficient = b[i++];
+  if (e.inertia) e.pistonMass = b[i++];
+  if (e.positionDependentDamping) e.positionDamping = b[i++];
 }
 
 std::string MauchCylinder::name() const { return "Mauch cylinder (" + std::to_string(p_.phases) + "-phase)"; }

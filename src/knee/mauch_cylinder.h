@@ -34,6 +34,38 @@ struct MauchPhaseCoefficients {
   double c = 0;  ///< damping, N s/m
 };
 
+/// Physical effects added to Chien 2014's force law, found by `swingsim diagnose`
+/// (docs/diagnosis.md). Each is off unless its flag is set; all add to the cylinder force F
+/// (N, positive resists compression). The S2 latch delay (`switch_delay`) needs no field:
+/// it is a smaller `MauchSwitchParams::latchRate`.
+struct MauchAddedEffects {
+  /// A hyperextension phase for a 2-phase model (Chien 2014 Eq. 11, gate S7 = 1 - S8): the
+  /// two base gates are multiplied by S8 and this law acts where the piston is hyperextended.
+  bool hyperextensionPhase = false;
+  MauchPhaseCoefficients hyperextension;
+  /// Coulomb (seal) friction Fc tanh(xd / width): Fc in N (> 0 resists motion), width m/s.
+  bool coulombFriction = false;
+  double coulombForce = 0;
+  double coulombWidth = 0.01;
+  /// Turbulent orifice flow a xd |xd| (Chien 2014 discussion: non-linear flow), a in N s^2/m^2.
+  bool orificeQuadratic = false;
+  double orificeCoefficient = 0;
+  /// Moving mass m xdd (piston, rod, oil), m in kg. Needs the piston acceleration, which a
+  /// knee law cannot see: in a swing simulation this term is left out (its knee inertia
+  /// m (dx/dtheta)^2 is ~6e-5 kg m^2 per kg, against ~0.1 kg m^2 for the shank).
+  bool inertia = false;
+  double pistonMass = 0;
+  /// Damping that varies along the stroke, cx x xd (cx in N s/m^2): metering grooves.
+  bool positionDependentDamping = false;
+  double positionDamping = 0;
+
+  /// Number of regression coefficients the enabled effects add (3 + 1 + 1 + 1 + 1 at most).
+  int numCoefficients() const {
+    return (hyperextensionPhase ? 3 : 0) + coulombFriction + orificeQuadratic + inertia + positionDependentDamping;
+  }
+  bool any() const { return numCoefficients() > 0; }
+};
+
 struct MauchCylinderParams {
   int phases = 4;  ///< 2 or 4
   std::vector<MauchPhaseCoefficients> coefficients;  ///< one per phase, phase 1 first
@@ -42,6 +74,7 @@ struct MauchCylinderParams {
   /// S2 at the start of a simulation. 1 for a swing that starts at toe-off: the late-stance
   /// hyperextension has released the valve. A bench test starting at heel strike uses 0.
   double initialLatch = 1.0;
+  MauchAddedEffects effects;  ///< none in Chien 2014's models
 };
 
 /// All switch variables at one instant (Chien 2014 Eqs. 3-4, 12-16), each in [0, 1].
@@ -67,6 +100,10 @@ std::vector<double> calcLatchHistory(const std::vector<double>& time, const std:
                                      const std::vector<double>& xd, const MauchSwitchParams& sw,
                                      double s2Start, int substeps = 10);
 
+/// Writes a coefficient vector in MauchCylinder::calcRegressorRow's order back into `params`.
+/// Throws std::invalid_argument if its size differs from the model's coefficient count.
+void setMauchCoefficientVector(MauchCylinderParams& params, const std::vector<double>& b);
+
 /// The Mauch cylinder as a knee law with one state (S2). Throws std::invalid_argument on a
 /// phase count other than 2 or 4, a coefficient count that differs from it, non-finite
 /// coefficients, or non-positive switch widths or latch rate.
@@ -75,14 +112,24 @@ class MauchCylinder final : public KneeLaw {
   explicit MauchCylinder(MauchCylinderParams params);
   const MauchCylinderParams& params() const { return p_; }
   const KneeGeometry& geometry() const { return geometry_; }
-  int numCoefficients() const { return 3 * p_.phases; }
+  /// Linear coefficients: 3 per phase, then those of the added effects.
+  int numCoefficients() const { return 3 * p_.phases + p_.effects.numCoefficients(); }
+  /// Number of phase gates: the model's phases plus an added hyperextension phase.
+  int numPhaseGates() const { return p_.phases + (p_.effects.hyperextensionPhase ? 1 : 0); }
+  /// Phase gates at these switch values (calcPhaseGates, with an added hyperextension phase).
+  std::vector<double> calcGates(const MauchSwitches& s) const;
 
   /// Cylinder force (N, positive resists compression) at piston position x (m), velocity
-  /// xd (m/s) and latch S2: sum over phases of gate * (f + k x + c xd) (Eqs. 2, 7-11).
-  double calcForce(double x, double xd, double s2) const;
-  /// The regression row for one sample: for each phase p, {g_p, g_p x, g_p xd}, so that
-  /// calcForce = row . {f1, k1, c1, f2, k2, c2, ...}. Size numCoefficients().
-  std::vector<double> calcRegressorRow(double x, double xd, double s2) const;
+  /// xd (m/s) and latch S2: sum over phases of gate * (f + k x + c xd) (Eqs. 2, 7-11), plus
+  /// the added effects except inertia (acceleration taken as 0).
+  double calcForce(double x, double xd, double s2) const { return calcForce(x, xd, 0.0, s2); }
+  /// Same with the piston acceleration xdd (m/s^2) for the inertia effect.
+  double calcForce(double x, double xd, double xdd, double s2) const;
+  /// The regression row for one sample: for each phase p, {g_p, g_p x, g_p xd}, then the
+  /// added effects' columns (hyperextension phase {g, g x, g xd}, tanh(xd/width), xd|xd|,
+  /// xdd, x xd), so that calcForce = row . getCoefficientVector(). Size numCoefficients().
+  std::vector<double> calcRegressorRow(double x, double xd, double s2) const { return calcRegressorRow(x, xd, 0.0, s2); }
+  std::vector<double> calcRegressorRow(double x, double xd, double xdd, double s2) const;
   /// Coefficients flattened in the regressor's order.
   std::vector<double> getCoefficientVector() const;
 
