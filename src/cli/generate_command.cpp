@@ -23,11 +23,24 @@ int generateCylinderBench(YamlMap& yaml, const Arguments& args) {
   CylinderBenchStudy study = readCylinderBenchStudy(yaml);
   yaml.finish();
   if (args.has("--out")) study.outputDir = args.get("--out");
-  const MauchCylinder truth(loadMauchCylinder(study.modelPath));
+  MauchCylinderParams truthParams = loadMauchCylinder(study.modelPath);
+  // Hidden effects (issue 5): the truth gets them, the fitted models do not know.
+  truthParams.effects = study.hiddenEffects;
+  if (study.hiddenLatchTimeConstant > 0) truthParams.switches.latchRate = 1.0 / study.hiddenLatchTimeConstant;
+  MauchCylinder truth = [&] {
+    try {
+      return MauchCylinder(truthParams);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(study.path + ": hidden_effects: " + e.what());
+    }
+  }();
   const KneeAngleStride stride = readKneeAngleStride(study.kneeAnglesPath, study.strideFirstFrame, study.strideLastFrame);
 
   std::vector<std::pair<std::string, std::string>> files;
-  std::printf("%-8s %8s %9s %8s %10s %10s %10s\n", "file", "stride_s", "amplitude", "samples", "x_min_mm", "x_max_mm", "F_rms_N");
+  const bool hidden = study.hiddenEffects.any() || study.hiddenLatchTimeConstant > 0;
+  const MauchCylinder plain(loadMauchCylinder(study.modelPath));
+  std::printf("%-8s %8s %9s %8s %10s %10s %10s%s\n", "file", "stride_s", "amplitude", "samples", "x_min_mm", "x_max_mm",
+              "F_rms_N", hidden ? "  hidden_rms_N" : "");
   for (std::size_t i = 0; i < study.conditions.size(); ++i) {
     const auto& c = study.conditions[i];
     BenchProfileParams p = study.profile;
@@ -41,6 +54,11 @@ int generateCylinderBench(YamlMap& yaml, const Arguments& args) {
     }
     const auto velocity = estimatePistonVelocity(profile.time, profile.position);
     auto force = calcCylinderTrace(truth, profile.time, profile.position, velocity, 0.0).force;
+    double hiddenSq = 0;  // force of the hidden effects: truth minus the model without them
+    if (hidden) {
+      const auto plainForce = calcCylinderTrace(plain, profile.time, profile.position, velocity, 0.0).force;
+      for (std::size_t k = 0; k < force.size(); ++k) hiddenSq += (force[k] - plainForce[k]) * (force[k] - plainForce[k]);
+    }
     NormalNoise noise(study.seed + i);
     double sumSq = 0;
     for (double& f : force) {
@@ -54,8 +72,10 @@ int generateCylinderBench(YamlMap& yaml, const Arguments& args) {
       xmin = std::min(xmin, x);
       xmax = std::max(xmax, x);
     }
-    std::printf("%-8s %8.3f %9.3f %8zu %10.3f %10.3f %10.1f\n", c.name.c_str(), c.strideTime, c.amplitudeScale,
+    std::printf("%-8s %8.3f %9.3f %8zu %10.3f %10.3f %10.1f", c.name.c_str(), c.strideTime, c.amplitudeScale,
                 profile.time.size(), 1e3 * xmin, 1e3 * xmax, std::sqrt(sumSq / static_cast<double>(force.size())));
+    if (hidden) std::printf("  %12.1f", std::sqrt(hiddenSq / static_cast<double>(force.size())));
+    std::printf("\n");
   }
   for (const auto& [path, text] : files) writeFileAtomic(path, text);
   std::printf("wrote %zu bench files to %s (truth %s, noise %s N, seed %llu)\n", files.size(), study.outputDir.c_str(),

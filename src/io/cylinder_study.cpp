@@ -2,8 +2,9 @@
 
 #include <cmath>
 
-#include "io/yaml_reader.h"
+#include "io/knee_model_loader.h"
 #include "io/output_files.h"
+#include "io/yaml_reader.h"
 
 namespace swingsim {
 
@@ -46,6 +47,17 @@ CylinderBenchStudy readCylinderBenchStudy(YamlMap& yaml) {
   });
   s.seed = static_cast<std::uint64_t>(seed);
   s.outputDir = yaml.resolvePath(yaml.getString("output_dir"));
+  if (yaml.has("hidden_effects")) {
+    YamlMap h = yaml.getMap("hidden_effects");
+    if (h.has("switch_delay")) {
+      YamlMap d = h.getMap("switch_delay");
+      s.hiddenLatchTimeConstant = d.getDouble("time_constant_s", [](double v) {
+        return v > 0 && v <= 1 ? "" : "must be in (0, 1] s";
+      });
+      d.finish();
+    }
+    s.hiddenEffects = readMauchAddedEffects(h, 0);
+  }
   for (YamlMap& c : yaml.getMapList("conditions")) {
     BenchCondition b;
     b.name = c.getString("name");

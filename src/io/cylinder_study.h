@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fit/bench_profile.h"
+#include "knee/mauch_cylinder.h"
 
 namespace swingsim {
 
@@ -31,6 +32,10 @@ struct CylinderBenchStudy {
   double noise = 0;             ///< force noise standard deviation, N
   std::uint64_t seed = 1;       ///< condition i uses seed + i
   std::string outputDir;        ///< where the CSVs go (absolute, resolved)
+  /// Optional `hidden_effects:` (issue 5): effects added to the truth model, in the model
+  /// YAML's `effects:` format, plus `switch_delay: {time_constant_s}` (the S2 latch 1/k).
+  MauchAddedEffects hiddenEffects;
+  double hiddenLatchTimeConstant = 0;  ///< s; 0 = the model's own latch rate
 };
 
 /// Reads the keys of a cylinder-bench study (`kind` already read). Throws InputError.
