@@ -1,0 +1,50 @@
+#pragma once
+// Residual analysis for `swingsim compare` and `swingsim diagnose`: where and when a model
+// fails. Residual = measured - predicted. Residuals of a smooth model misfit sampled at
+// hundreds of Hz are strongly autocorrelated, so every count of "independent" samples here
+// is an effective sample size, not the number of rows.
+#include <string>
+#include <vector>
+
+namespace swingsim {
+
+/// Residual series of several records kept apart (autocorrelation never spans two files).
+using ResidualSegments = std::vector<std::vector<double>>;
+
+/// Autocorrelation at lags 0..maxLag pooled over segments (lag pairs within one segment,
+/// overall mean removed, normalised by the lag-0 sum). Throws std::invalid_argument if
+/// maxLag < 0 or there is no sample.
+std::vector<double> calcAutocorrelation(const ResidualSegments& residuals, int maxLag);
+
+/// Effective number of independent samples under an AR(1) reading of the residual:
+/// n (1 - rho1) / (1 + rho1), rho1 the pooled lag-1 autocorrelation clamped to [0, 0.999].
+/// Equals n for white residuals; about 1/(1 - rho1)/2 times fewer for a smooth misfit.
+double calcEffectiveSampleSize(const ResidualSegments& residuals);
+
+/// Ljung-Box portmanteau test of whiteness over lags 1..lags: Q = n (n + 2) sum rho_k^2 /
+/// (n - k) and its p-value under chi^2(lags).
+struct WhitenessTest {
+  double q = 0;
+  double pValue = 1;
+  int lags = 0;
+  int lagsOutsideBand = 0;  ///< lags with |rho| above the 99 % band 2.576 / sqrt(n)
+};
+WhitenessTest calcWhitenessTest(const ResidualSegments& residuals, int lags);
+
+/// Upper tail probability of chi^2 with `dof` degrees of freedom at `x` (>= 0).
+double calcChiSquaredSurvival(double x, double dof);
+
+/// Mean residual in equal-count bins of a variable, with a 99 % confidence half-width that
+/// uses the effective sample size (the within-bin spread / sqrt(count * nEff / n)).
+struct BinnedResidual {
+  std::vector<double> center;     ///< mean of the variable in the bin
+  std::vector<double> mean;       ///< mean residual
+  std::vector<double> halfWidth;  ///< 99 % confidence half-width
+  /// Largest |mean| / halfWidth over the bins (> 1: that bin's mean is not zero at 99 %).
+  double maxSignificance = 0;
+  std::size_t maxBin = 0;
+};
+BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std::vector<double>& residual,
+                                  int bins, double nEffOverN);
+
+}  // namespace swingsim

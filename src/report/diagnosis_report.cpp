@@ -1,0 +1,295 @@
+#include "report/diagnosis_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "io/input_error.h"
+#include "io/json_writer.h"
+#include "io/output_files.h"
+#include "report/svg_plot.h"
+
+namespace swingsim {
+
+namespace {
+
+constexpr double kZ99 = 2.5758293035489004;  // two-sided 99 % normal quantile
+constexpr int kResidualBins = 12;            // equal-count bins for the binned residual
+constexpr double kAcfSeconds = 0.5;          // autocorrelation shown up to this lag, s
+
+template <class... A>
+std::string fmt(const char* f, A... a) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, f, a...);
+  return buf;
+}
+
+ErrorMetrics pooled(const CylinderComparison& c, bool training) {
+  std::vector<double> m, p;
+  for (const auto& r : c.records) {
+    if (r.training != training) continue;
+    m.insert(m.end(), r.data->force.begin(), r.data->force.end());
+    p.insert(p.end(), r.predicted.begin(), r.predicted.end());
+  }
+  return m.empty() ? ErrorMetrics{} : calcErrorMetrics(m, p);
+}
+
+void metricsJson(JsonWriter& w, const ErrorMetrics& m) {
+  w.beginObject().field("rmse", m.rmse).field("r2", m.r2).field("me", m.maxError).endObject();
+}
+
+void summaryJson(JsonWriter& w, const CylinderComparison& c) {
+  w.beginObject().key("train");
+  metricsJson(w, pooled(c, true));
+  w.key("validation").beginObject();
+  for (const auto& r : c.records) {
+    if (r.training) continue;
+    w.key(r.data->stem);
+    metricsJson(w, r.overall);
+  }
+  w.endObject().endObject();
+}
+
+const std::string kPhaseColors[] = {"#D55E00", "#009E73", "#56B4E9", "#CC79A7", "#E69F00"};
+
+}  // namespace
+
+std::string formatComparisonTable(const CylinderComparison& c) {
+  std::string out;
+  for (const auto& r : c.records) {
+    out += fmt("%s (%s): ME %.1f N, RMSE %.1f N, R^2 %.1f %%, mean residual %+.1f N, %zu samples\n",
+               r.data->stem.c_str(), r.training ? "train" : "validate", r.overall.maxError, r.overall.rmse,
+               100 * r.overall.r2, r.overall.bias, r.overall.count);
+    out += fmt("  %-28s %8s %8s %8s %10s %10s\n", "phase", "ME N", "RMSE N", "bias N", "sq.err %", "samples %");
+    for (std::size_t ph = 0; ph < c.phaseNames.size(); ++ph) {
+      const auto& m = r.perPhase[ph];
+      if (m.count == 0) {
+        out += fmt("  %-28s %8s %8s %8s %10.1f %10.1f\n", c.phaseNames[ph].c_str(), "-", "-", "-", 0.0, 0.0);
+        continue;
+      }
+      out += fmt("  %-28s %8.1f %8.1f %+8.1f %10.1f %10.1f\n", c.phaseNames[ph].c_str(), m.maxError, m.rmse, m.bias,
+                 100 * r.phaseShare[ph], 100 * r.sampleShare[ph]);
+    }
+  }
+  return out;
+}
+
+std::string renderResidualSvg(const RecordComparison& r, const std::vector<std::string>& phaseNames, double plotSeconds,
+                              const std::string& title) {
+  const BenchData& d = *r.data;
+  std::vector<SvgPlot> panels;
+  const ResidualSegments seg = {r.residual};
+  const double n = static_cast<double>(r.residual.size());
+  const double ratio = calcEffectiveSampleSize(seg) / n;
+  // 1. Residual vs time, phases shaded.
+  {
+    SvgPlot p(800, 300);
+    p.setTitle("residual vs time (first " + formatNumber(plotSeconds) + " s), phases shaded");
+    p.setXLabel("time (s)");
+    p.setYLabel("measured - model (N)");
+    const double t0 = d.time.front(), tEnd = t0 + plotSeconds;
+    std::vector<double> t, e;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < d.time.size() && d.time[i] <= tEnd; ++i) {
+      t.push_back(d.time[i]);
+      e.push_back(r.residual[i]);
+      const bool last = i + 1 == d.time.size() || d.time[i + 1] > tEnd || r.phase[i + 1] != r.phase[i];
+      if (last) {
+        const auto ph = static_cast<std::size_t>(r.phase[i]);
+        p.addBand(d.time[start], d.time[i], phaseNames[ph], kPhaseColors[ph % 5]);
+        start = i + 1;
+      }
+    }
+    p.addLine(t, e, "residual", "#000000", 1.0);
+    p.addHLine(0, "", "#555555");
+    panels.push_back(p);
+  }
+  // 2-4. Binned mean residual with its 99 % band.
+  const std::vector<double> mm = [&] {
+    std::vector<double> v;
+    for (double x : d.position) v.push_back(1e3 * x);
+    return v;
+  }();
+  const std::vector<double> vv = [&] {
+    std::vector<double> v;
+    for (double x : d.velocity) v.push_back(1e3 * x);
+    return v;
+  }();
+  struct Var {
+    const std::vector<double>* values;
+    const char* label;
+  };
+  for (const Var& var : {Var{&mm, "piston position (mm)"}, Var{&vv, "piston velocity (mm/s)"},
+                         Var{&r.acceleration, "piston acceleration (m/s^2)"}}) {
+    const BinnedResidual b = calcBinnedResidual(*var.values, r.residual, kResidualBins, ratio);
+    SvgPlot p(800, 240);
+    p.setTitle(std::string("binned mean residual vs ") + var.label + ", 99 % band (effective sample size)");
+    p.setXLabel(var.label);
+    p.setYLabel("mean residual (N)");
+    std::vector<double> lo, hi;
+    for (std::size_t i = 0; i < b.mean.size(); ++i) {
+      lo.push_back(b.mean[i] - b.halfWidth[i]);
+      hi.push_back(b.mean[i] + b.halfWidth[i]);
+    }
+    p.addLine(b.center, hi, "99 % band", "#0072B2", 1.0, true);
+    p.addLine(b.center, lo, "", "#0072B2", 1.0, true);
+    p.addLine(b.center, b.mean, "mean residual", "#D55E00", 2.0);
+    p.addPoints(b.center, b.mean, "", "#D55E00");
+    p.addHLine(0, "", "#555555", true, true);
+    panels.push_back(p);
+  }
+  // 5. Autocorrelation with the 99 % band of white noise.
+  {
+    const double dt = (d.time.back() - d.time.front()) / std::max(1.0, n - 1);
+    const int lags = std::max(1, std::min(static_cast<int>(kAcfSeconds / dt), static_cast<int>(n) - 2));
+    const auto acf = calcAutocorrelation(seg, lags);
+    std::vector<double> lagT;
+    for (int k = 0; k <= lags; ++k) lagT.push_back(k * dt);
+    SvgPlot p(800, 240);
+    p.setTitle("residual autocorrelation (white noise stays inside the 99 % band)");
+    p.setXLabel("lag (s)");
+    p.setYLabel("autocorrelation (-)");
+    const double band = kZ99 / std::sqrt(n);
+    p.addHBand(-band, band, "99 % band", "#999999", 0.3);
+    p.addLine(lagT, acf, "autocorrelation", "#000000", 1.5);
+    p.setYRange(-1, 1);
+    panels.push_back(p);
+  }
+  return renderStackedSvg(panels, title);
+}
+
+std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix,
+                                            const CylinderComparison& c, double plotSeconds) {
+  std::vector<std::string> paths;
+  for (const auto& r : c.records) {
+    const std::string path = outDir + "/" + prefix + "-" + r.data->stem + "-residual.svg";
+    writeFileAtomic(path, renderResidualSvg(r, c.phaseNames, plotSeconds,
+                                            prefix + ": " + r.data->stem + (r.training ? " (train)" : " (validate)") +
+                                                fmt(", RMSE %.1f N", r.overall.rmse)));
+    paths.push_back(path);
+  }
+  return paths;
+}
+
+std::string formatComparisonJson(const std::string& model, const CylinderComparison& c) {
+  JsonWriter w;
+  w.beginObject().field("model", model).key("files").beginObject();
+  for (const auto& r : c.records) {
+    w.key(r.data->stem).beginObject().field("training", r.training).field("me", r.overall.maxError);
+    w.field("rmse", r.overall.rmse).field("r2", r.overall.r2).key("phases").beginObject();
+    for (std::size_t ph = 0; ph < c.phaseNames.size(); ++ph)
+      w.key(c.phaseNames[ph]).beginObject().field("rmse", r.perPhase[ph].rmse)
+          .field("share_of_squared_error", r.phaseShare[ph]).field("share_of_samples", r.sampleShare[ph]).endObject();
+    w.endObject().endObject();
+  }
+  w.endObject().endObject();
+  return w.str() + "\n";
+}
+
+std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderComparison& before,
+                                const CylinderComparison& after) {
+  std::string out;
+  std::vector<std::string> stems;
+  for (const auto& r : before.records)
+    if (!r.training) stems.push_back(r.data->stem);
+  for (std::size_t s = 0; s < dg.steps.size(); ++s) {
+    const auto& st = dg.steps[s];
+    out += fmt("step %zu: current model train RMSE %.1f N", s + 1, st.currentTrainRmse);
+    for (std::size_t v = 0; v < stems.size(); ++v) out += fmt(", %s %.1f N", stems[v].c_str(), st.currentValidationRmse[v]);
+    out += "\n";
+    out += fmt("  %-27s %8s %7s %9s %9s %9s  %-24s %s\n", "candidate", "train N", "n_eff", "LR", "p (Bonf.)", "dBIC",
+               "validation RMSE N", "verdict");
+    for (const auto& c : st.candidates) {
+      if (!c.notApplicable.empty()) {
+        out += fmt("  %-27s not scored: %s\n", c.effect.c_str(), c.notApplicable.c_str());
+        continue;
+      }
+      std::string val;
+      for (double v : c.validationRmse) val += fmt("%.1f ", v);
+      std::string verdict = c.accepted ? "ACCEPTED" : "rejected:";
+      if (!c.accepted) {
+        if (!c.significant) verdict += " not significant;";
+        if (!c.bicImproves) verdict += " BIC worse;";
+        if (!c.validationImproves) verdict += " validation did not fall enough;";
+        if (!c.physical) verdict += " wrong sign;";
+      }
+      out += fmt("  %-27s %8.1f %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(), c.trainRmse, c.effectiveSamples,
+                 c.likelihoodRatio, c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
+    }
+    if (st.chosen >= 0) {
+      out += "  -> added " + st.candidates[static_cast<std::size_t>(st.chosen)].effect;
+      if (st.group.size() > 1) {
+        out += " (ambiguous with";
+        for (std::size_t g = 1; g < st.group.size(); ++g) out += " " + st.group[g];
+        out += ")";
+      }
+      out += "\n";
+    } else {
+      out += "  -> no candidate passes the acceptance rule; stop\n";
+    }
+  }
+  out += "\naccepted effects, in order:\n";
+  if (dg.accepted.empty()) out += "  none\n";
+  for (const auto& c : dg.acceptedScores) {
+    out += "  " + c.effect + ": " + findCylinderEffect(c.effect).sentence + "\n";
+    for (const auto& p : c.parameters)
+      out += fmt("    %-24s %12.5g  (95 %% CI %.5g .. %.5g)\n", p.name.c_str(), p.value, p.lower, p.upper);
+    out += "    acted most in: " + c.where + "\n    sign: " + c.physicalNote + "\n";
+  }
+  for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
+  out += "\n              |   before: ME N  RMSE N  R^2 %  |   after: ME N  RMSE N  R^2 %\n";
+  for (std::size_t i = 0; i < before.records.size(); ++i) {
+    const auto& b = before.records[i];
+    const auto& a = after.records[i];
+    out += fmt("%-8s %-5s |   %10.1f %7.1f %6.1f  |   %9.1f %7.1f %6.1f\n", b.data->stem.c_str(),
+               b.training ? "train" : "valid", b.overall.maxError, b.overall.rmse, 100 * b.overall.r2, a.overall.maxError,
+               a.overall.rmse, 100 * a.overall.r2);
+  }
+  out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g, %d lags outside the 99 %% band: ",
+             dg.finalWhiteness.q, dg.finalWhiteness.lags, dg.finalWhiteness.pValue, dg.finalWhiteness.lagsOutsideBand);
+  out += dg.finalResidualWhite ? "consistent with white noise\n" : "NOT white\n";
+  if (!dg.finalResidualWhite) {
+    out += std::string(dg.accepted.empty() ? "No candidate effect passes the acceptance rule, but the residual is not white: "
+                                           : "The residual is still not white: ") +
+           "the model misses something the library does not name (or the data cannot support). " + dg.structureNote +
+           ". No effect is claimed for it.\n";
+  }
+  return out;
+}
+
+std::string formatDiagnosisJson(const CylinderDiagnosis& dg, const CylinderComparison& before,
+                                const CylinderComparison& after) {
+  JsonWriter w;
+  std::vector<std::string> stems;
+  for (const auto& r : before.records)
+    if (!r.training) stems.push_back(r.data->stem);
+  w.beginObject().key("baseline");
+  summaryJson(w, before);
+  w.key("candidates").beginArray();
+  for (std::size_t s = 0; s < dg.steps.size(); ++s) {
+    for (const auto& c : dg.steps[s].candidates) {
+      w.beginObject().field("effect", c.effect).field("step", static_cast<int>(s + 1)).field("accepted", c.accepted);
+      if (!c.notApplicable.empty()) {
+        w.field("not_applicable", c.notApplicable).endObject();
+        continue;
+      }
+      w.key("validation_rmse").beginObject();
+      for (std::size_t v = 0; v < stems.size(); ++v) w.field(stems[v], c.validationRmse[v]);
+      w.endObject().field("train_rmse", c.trainRmse).field("delta_bic", c.deltaBic);
+      w.field("likelihood_ratio", c.likelihoodRatio).field("p_adjusted", c.pAdjusted);
+      w.field("effective_samples", c.effectiveSamples).key("parameters").beginObject();
+      for (const auto& p : c.parameters) w.field(p.name, p.value);
+      w.endObject().key("confidence_intervals").beginObject();
+      for (const auto& p : c.parameters) w.field(p.name, std::vector<double>{p.lower, p.upper});
+      w.endObject().field("physical_sign", c.physical).field("where", c.where).endObject();
+    }
+  }
+  w.endArray().field("accepted", dg.accepted).key("ambiguous").beginArray();
+  for (const auto& g : dg.ambiguous) w.value(g);
+  w.endArray().key("final");
+  summaryJson(w, after);
+  w.field("residual_white", dg.finalResidualWhite).field("structure", dg.structureNote).endObject();
+  return w.str() + "\n";
+}
+
+}  // namespace swingsim

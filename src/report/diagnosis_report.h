@@ -1,0 +1,39 @@
+#pragma once
+// Reports of `swingsim compare` and `swingsim diagnose` for the Mauch cylinder: metric
+// tables overall and per phase, residual plots (residual vs time with phases shaded, binned
+// mean residual with its 99 % band against position, velocity and acceleration, residual
+// autocorrelation with its 99 % band), the candidate ranking, and the JSON of issue 5.
+#include <string>
+#include <vector>
+
+#include "fit/cylinder_diagnosis.h"
+
+namespace swingsim {
+
+/// Metrics per file (ME, RMSE, R^2 %) and per phase (RMSE, share of squared error, share
+/// of samples), as printed by `compare`.
+std::string formatComparisonTable(const CylinderComparison& comparison);
+
+/// One SVG with five stacked panels for one record (see the header comment). Residuals in N;
+/// the first `plotSeconds` of the record are shown against time.
+std::string renderResidualSvg(const RecordComparison& record, const std::vector<std::string>& phaseNames,
+                              double plotSeconds, const std::string& title);
+
+/// Writes `<prefix>-<stem>-residual.svg` for every record into `outDir`; returns the paths.
+std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix,
+                                            const CylinderComparison& comparison, double plotSeconds);
+
+/// `{"model", "files": {"<stem>": {"training", "me", "rmse", "r2", "phases": {"<phase>":
+/// {"rmse", "share_of_squared_error", "share_of_samples"}}}}}`.
+std::string formatComparisonJson(const std::string& model, const CylinderComparison& comparison);
+
+/// The ranking of every step, the accepted effects with parameters, and the before/after
+/// table for the training and each validation file.
+std::string formatDiagnosisText(const CylinderDiagnosis& diagnosis, const CylinderComparison& before,
+                                const CylinderComparison& after);
+
+/// The JSON of issue 5: baseline, candidates (every step), accepted, ambiguous, final.
+std::string formatDiagnosisJson(const CylinderDiagnosis& diagnosis, const CylinderComparison& before,
+                                const CylinderComparison& after);
+
+}  // namespace swingsim
