@@ -254,7 +254,10 @@ std::string mdRow(const std::vector<std::string>& cells) {
   return s + "\n";
 }
 
-std::string ms(double seconds) { return fmt("%+.0f ms", seconds * 1000); }
+std::string ms(double seconds) {
+  const double v = std::round(seconds * 1000);
+  return v == 0 ? "0 ms" : fmt("%+.0f ms", v);
+}
 
 }  // namespace
 
