@@ -57,6 +57,30 @@ TEST(Sweep, FastestLoweringPinned) {
   }
 }
 
+// Burkett: the corrective moment "maintained the angle of the knee within 4 deg of full
+// extension". Our Hunt-Crossley stop must do the same at every lowering.
+TEST(Sweep, HyperextensionStopKeepsTheKneeWithinFourDegrees) {
+  for (const auto& ps : sweepOnce().participants) {
+    for (const auto& pt : ps.points) {
+      if (!pt.ok) continue;
+      for (double q : pt.result.trajectory.kneeFlexion) ASSERT_GT(q, -4 * kDegToRad) << ps.name << " at " << pt.lowering;
+    }
+  }
+}
+
+TEST(Sweep, ReportHasEveryFigureAndTheSideBySideTable) {
+  const SweepStudy study = plainStudy();
+  const auto files = makeSweepReport(study, sweepOnce());
+  for (const char* name : {"report.md", "sweep.csv", "figures/P1-swing-time.svg", "figures/P1-knee-flexion.svg",
+                           "figures/P1-filmstrip.svg", "figures/P4-filmstrip.svg"}) {
+    EXPECT_EQ(files.count(name), 1u) << name;
+  }
+  const std::string& md = files.at("report.md");
+  EXPECT_NE(md.find("| P2 | 0.125 | 0.450 | 0.314 |"), std::string::npos) << "Table 4 row with its off-grid lowering";
+  EXPECT_NE(md.find("## Assumptions used in this run"), std::string::npos);
+  EXPECT_NE(md.find("Where we disagree with the paper"), std::string::npos);
+}
+
 TEST(Sweep, StandardLocationMatchesTable3InTheSweep) {
   for (const auto& ps : sweepOnce().participants) {
     ASSERT_TRUE(ps.points.front().ok);
