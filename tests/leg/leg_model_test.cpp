@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "simbody_sampling.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -38,23 +40,7 @@ HipRange makeWideHipRange() {
   return range;
 }
 
-// Integrates `system` from `state` with Simbody's RK-Merson at `accuracy`, calling
-// `observe` at every multiple of `interval` up to `duration` (interpolated states).
-void integrate(const MultibodySystem& system, const State& state, double accuracy, double interval,
-               double duration, const std::function<void(const State&)>& observe) {
-  RungeKuttaMersonIntegrator integrator(system);
-  integrator.setAccuracy(accuracy);
-  integrator.setAllowInterpolation(true);
-  TimeStepper stepper(system, integrator);
-  stepper.initialize(state);
-  system.realize(integrator.getState(), Stage::Acceleration);
-  observe(integrator.getState());
-  for (int k = 1; k * interval <= duration + 1e-12; ++k) {
-    stepper.stepTo(k * interval);
-    system.realize(integrator.getState(), Stage::Acceleration);
-    observe(integrator.getState());
-  }
-}
+using swingsim::testing::integrateAndObserve;
 
 // Mean period from the downward zero crossings of a sampled oscillation (linear
 // interpolation between samples: near a crossing a sinusoid has no curvature, so the
@@ -95,7 +81,7 @@ TEST(LegModel, CompoundPendulumSmallAnglePeriod) {
   thigh.setOneQ(state, 0, kAmplitude);
 
   std::vector<double> time, angle;
-  integrate(system, state, kPeriodAccuracy, kSampleInterval, 5.0, [&](const State& s) {
+  integrateAndObserve(system, state, kPeriodAccuracy, kSampleInterval, 5.0, [&](const State& s) {
     time.push_back(s.getTime());
     angle.push_back(thigh.getOneQ(s, 0));
   });
@@ -140,7 +126,7 @@ TEST(LegModel, SmallOscillationNormalModesOfTheFreeLeg) {
     initial.hipFlexion = scale * v1;
     initial.kneeFlexion = scale * v1 - scale * v2 + gamma;  // theta = phi - beta + gamma
     std::vector<double> time, hip;
-    integrate(leg.getSystem(), leg.makeInitialState(initial), kPeriodAccuracy, kSampleInterval, 3.0,
+    integrateAndObserve(leg.getSystem(), leg.makeInitialState(initial), kPeriodAccuracy, kSampleInterval, 3.0,
               [&](const State& s) {
                 time.push_back(s.getTime());
                 hip.push_back(leg.getHipFlexion(s));
@@ -172,7 +158,7 @@ TEST(LegModel, EnergyConservedWithKneeLawsAndHipMomentOff) {
   initial.kneeFlexion = 0.8;
   initial.hipFlexionRate = 2.0;
   double e0 = NaN, maxDrift = 0, kneeMin = 1e9, kneeMax = -1e9;
-  integrate(leg.getSystem(), leg.makeInitialState(initial), kEnergyAccuracy, 0.005, 2.0, [&](const State& s) {
+  integrateAndObserve(leg.getSystem(), leg.makeInitialState(initial), kEnergyAccuracy, 0.005, 2.0, [&](const State& s) {
     const double e = leg.calcMechanicalEnergy(s);
     if (std::isnan(e0)) e0 = e;
     maxDrift = std::max(maxDrift, std::abs(e - e0));
@@ -196,7 +182,7 @@ TEST(LegModel, EnergyBookkeepingWithDampingFrictionStopsAndHipDrive) {
   narrow.maxFlexion = 22 * kDegToRad;
   LegModel leg(calcLegGeometry(p, 0.0), law, p.hipMoment, narrow, kHipHeight);
   double b0 = NaN, maxDrift = 0, kneeMin = 1e9, hipMax = -1e9, kneeWork = 0, hipWork = 0;
-  integrate(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 1.2, [&](const State& s) {
+  integrateAndObserve(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 1.2, [&](const State& s) {
     kneeWork = leg.getKneeWork(s);
     hipWork = leg.getHipWork(s);
     const double balance = leg.calcMechanicalEnergy(s) - kneeWork - hipWork;

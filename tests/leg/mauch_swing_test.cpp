@@ -3,6 +3,8 @@
 // hyperextension and holds through the following flexion, and the energy balance holds.
 #include <gtest/gtest.h>
 
+#include "simbody_sampling.h"
+
 #include <cmath>
 #include <functional>
 
@@ -44,20 +46,7 @@ KneeModel withInitialLatch(const KneeModel& model, double latch) {
   return out;
 }
 
-void integrate(const MultibodySystem& system, const State& state, double accuracy, double interval, double duration,
-               const std::function<void(const State&)>& observe) {
-  RungeKuttaMersonIntegrator integrator(system);
-  integrator.setAccuracy(accuracy);
-  TimeStepper stepper(system, integrator);
-  stepper.initialize(state);
-  system.realize(integrator.getState(), Stage::Acceleration);
-  observe(integrator.getState());
-  for (int k = 1; k * interval <= duration + 1e-12; ++k) {
-    stepper.stepTo(k * interval);
-    system.realize(integrator.getState(), Stage::Acceleration);
-    observe(integrator.getState());
-  }
-}
+using swingsim::testing::integrateAndObserve;
 
 TEST(MauchSwing, KneeMomentIsCylinderForceTimesMomentArm) {
   const Participant p = loadP1();
@@ -111,7 +100,7 @@ TEST(MauchSwing, LatchSetsInHyperextensionAndHoldsThroughFlexion) {
     ic.kneeFlexionRate = hyperextended ? -0.3 : 0.0;  // still extending, towards the stop
     const State s0 = leg.makeInitialState(ic);
     double latchAt20ms = NaN, minLatchDuringFlexion = 1, peakKnee = -1, latchAtPeak = NaN, maxLatch = 0;
-    integrate(leg.getSystem(), s0, 1e-7, 0.001, 0.25, [&](const State& s) {
+    integrateAndObserve(leg.getSystem(), s0, 1e-7, 0.001, 0.25, [&](const State& s) {
       const double latch = leg.getKneeLawStates(s)[0];
       const double knee = leg.getKneeFlexion(s);
       maxLatch = std::max(maxLatch, latch);
@@ -143,7 +132,7 @@ TEST(MauchSwing, EnergyBookkeepingHoldsWithTheCylinder) {
   const KneeLawSum law = makeKneeLaw(p, model);
   LegModel leg(calcLegGeometry(p, 0.05), law, p.hipMoment, p.hipRange, kHipHeight);
   double b0 = NaN, maxDrift = 0, kneeWork = 0;
-  integrate(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 0.8, [&](const State& s) {
+  integrateAndObserve(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 0.8, [&](const State& s) {
     kneeWork = leg.getKneeWork(s);
     const double balance = leg.calcMechanicalEnergy(s) - kneeWork - leg.getHipWork(s);
     if (std::isnan(b0)) b0 = balance;
