@@ -26,6 +26,11 @@ SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
   for (const auto& p : yaml.getStringList("participants")) s.participants.push_back(loadParticipant(yaml.resolvePath(p)));
   if (s.participants.empty()) yaml.fail("participants", "expected at least one participant file", "an empty list");
   if (yaml.has("knee_model")) s.kneeModelOverride = yaml.resolvePath(yaml.getString("knee_model"));
+  if (yaml.has("com_rule")) {
+    // A sensitivity study: the same participants under the other COM reading.
+    const bool proportional = yaml.getChoice("com_rule", {"fixed_from_proximal", "proportional"}, "") == "proportional";
+    for (auto& p : s.participants) p.comRule = proportional ? ComRule::kProportional : ComRule::kFixedFromProximal;
+  }
   if (yaml.has("lowering")) {
     YamlMap m = yaml.getMap("lowering");
     // The grid is rounded to 1 um (sweepLowerings): a smaller step would never advance. With

@@ -108,6 +108,17 @@ TEST(Sweep, JsonHasTheDocumentedShape) {
   }
 }
 
+TEST(Sweep, StudyComRuleOverridesEveryParticipant) {
+  const SweepStudy s = loadSweepStudy("studies/burkett2004-proportional-com.yaml");
+  ASSERT_EQ(s.participants.size(), 4u);
+  for (const auto& p : s.participants) EXPECT_EQ(p.comRule, ComRule::kProportional) << p.name;
+  // Under the proportional rule the shank COM moves up with the shortened shank: at 0.1 m
+  // lowering it sits (L - c)/L of the new length below the knee.
+  const Participant& p1 = s.participants[0];
+  const LegGeometry g = calcLegGeometry(p1, 0.1);
+  EXPECT_NEAR(g.shankCom, (p1.shank.length - p1.shank.comFromDistal) / p1.shank.length * (p1.shank.length - 0.1), 1e-12);
+}
+
 TEST(Sweep, AddedMassGridReportsBestCombination) {
   SweepStudy s = plainStudy();
   s.participants.resize(1);
