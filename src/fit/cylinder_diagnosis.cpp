@@ -11,8 +11,6 @@ namespace swingsim {
 
 namespace {
 
-// Two-sided 95 % normal quantile, for parameter confidence intervals.
-constexpr double kZ95 = 1.959963984540054;
 // chi^2(1) 95 % quantile, for the profile-likelihood interval of a grid parameter.
 constexpr double kChi2One95 = 3.841458820694124;
 // Latch rate of Chien 2014 (k = 1e4 /s): the no-delay reference for switch_delay.
@@ -190,16 +188,8 @@ Scored fitAndScore(const MauchCylinderParams& params, const std::vector<BenchDat
 }
 
 // Likelihood-ratio statistics of `bigger` against `smaller` (nested, `dof` more parameters).
-struct LrTest {
-  double nEff = 0, lr = 0, p = 1, deltaBic = 0;
-};
 LrTest calcLrTest(const Scored& smaller, const Scored& bigger, int dof) {
-  LrTest t;
-  t.nEff = calcEffectiveSampleSize(bigger.trainResidual);
-  t.lr = t.nEff * std::log(smaller.trainRss / std::max(bigger.trainRss, 1e-300));
-  t.p = calcChiSquaredSurvival(t.lr, dof);
-  t.deltaBic = -t.lr + dof * std::log(t.nEff);
-  return t;
+  return swingsim::calcLrTest(smaller.trainRss, bigger.trainRss, bigger.trainResidual, dof);
 }
 
 std::string physicalCheck(const MauchCylinderParams& p, const std::string& effect, const std::vector<BenchData>& train,
@@ -366,25 +356,19 @@ CandidateScore scoreCandidate(const Scored& current, const std::string& effect, 
   }
   const Scored& s = fits[best];
   const int linear = static_cast<int>(effectColumns(s.params, effect).size());
-  c.dof = linear + (grid.size() > 1 ? 1 : 0);
-  const LrTest t = calcLrTest(current, s, c.dof);
+  const int dof = linear + (grid.size() > 1 ? 1 : 0);
+  const LrTest t = calcLrTest(current, s, dof);
   c.params = s.params;
   c.trainRmse = std::sqrt(s.trainRss / static_cast<double>(s.trainSamples));
   c.validationRmse = s.validationRmse;
-  c.effectiveSamples = t.nEff;
-  c.likelihoodRatio = t.lr;
-  c.pValue = t.p;
-  c.deltaBic = t.deltaBic;
+  applyTestAndValidation(c, t, dof, current.validationRmse, settings);
   // Parameters with 95 % intervals: regression standard errors inflated by sqrt(n / n_eff)
   // for autocorrelated residuals; a grid parameter by its profile likelihood over the grid.
   c.parameters = getCylinderEffectParameters(s.params, effect);
   const auto cols = effectColumns(s.params, effect);
-  const double inflate = std::sqrt(static_cast<double>(s.trainSamples) / std::max(1.0, t.nEff));
-  for (std::size_t k = 0; k < cols.size() && k < c.parameters.size(); ++k) {
-    const double se = s.regression.standardErrors[static_cast<std::size_t>(cols[k])] * inflate;
-    c.parameters[k].lower = c.parameters[k].value - kZ95 * se;
-    c.parameters[k].upper = c.parameters[k].value + kZ95 * se;
-  }
+  const double inflate = calcStandardErrorInflation(static_cast<double>(s.trainSamples), t.nEff);
+  for (std::size_t k = 0; k < cols.size() && k < c.parameters.size(); ++k)
+    setNormalInterval(c.parameters[k], s.regression.standardErrors[static_cast<std::size_t>(cols[k])] * inflate);
   if (grid.size() > 1) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t g = 0; g < grid.size(); ++g) {
@@ -396,12 +380,6 @@ CandidateScore scoreCandidate(const Scored& current, const std::string& effect, 
     auto& gp = c.parameters.back();  // width or time constant: the last named parameter
     gp.lower = lo;
     gp.upper = hi;
-  }
-  c.bicImproves = c.deltaBic < 0;
-  c.validationImproves = !validate.empty();
-  for (std::size_t v = 0; v < validate.size(); ++v) {
-    const double before = current.validationRmse[v], after = c.validationRmse[v];
-    if (!(after <= before * (1.0 - settings.minValidationImprovement))) c.validationImproves = false;
   }
   c.physicalNote = physicalCheck(s.params, effect, train, c.physical);
   c.physicalNote += c.physical ? " (ok)" : " (wrong sign)";
@@ -489,18 +467,9 @@ CylinderDiagnosis diagnoseCylinder(const MauchCylinderParams& base, const std::v
                                    const std::vector<BenchData>& validate, const CylinderDiagnosisSettings& settings) {
   if (validate.empty())
     throw InputError("diagnose: the acceptance rule needs at least one validation file (validate:)");
-  std::vector<std::string> names = settings.candidates;
-  if (names.empty())
-    for (const auto& e : cylinderEffectLibrary()) names.push_back(e.name);
-  for (const auto& n : names) {
-    try {
-      findCylinderEffect(n);
-    } catch (const std::invalid_argument& e) {
-      std::string all;
-      for (const auto& l : cylinderEffectLibrary()) all += (all.empty() ? "" : ", ") + l.name;
-      throw InputError(std::string("candidates: ") + e.what() + " (known: " + all + ")");
-    }
-  }
+  std::vector<std::string> library;
+  for (const auto& e : cylinderEffectLibrary()) library.push_back(e.name);
+  const std::vector<std::string> names = resolveCandidates(settings.candidates, library);
   CylinderDiagnosis out;
   MauchCylinderParams start = base;
   if (settings.fitSwitches) {
@@ -528,17 +497,9 @@ CylinderDiagnosis diagnoseCylinder(const MauchCylinderParams& base, const std::v
       out.steps.push_back(step);
       break;
     }
-    for (auto& c : step.candidates) {
-      if (!c.notApplicable.empty()) continue;
-      c.pAdjusted = std::min(1.0, c.pValue * applicable);  // Bonferroni
-      c.significant = c.pAdjusted < settings.alpha;
-      c.accepted = c.significant && c.bicImproves && c.validationImproves && c.physical;
-    }
-    for (std::size_t i = 0; i < step.candidates.size(); ++i) {
-      const auto& c = step.candidates[i];
-      if (c.accepted && (step.chosen < 0 || c.deltaBic < step.candidates[static_cast<std::size_t>(step.chosen)].deltaBic))
-        step.chosen = static_cast<int>(i);
-    }
+    std::vector<EffectScore*> scores;
+    for (auto& c : step.candidates) scores.push_back(&c);
+    step.chosen = applyAcceptanceRule(scores, settings.alpha);
     if (step.chosen < 0) {
       out.steps.push_back(step);
       break;
@@ -570,12 +531,9 @@ CylinderDiagnosis diagnoseCylinder(const MauchCylinderParams& base, const std::v
     out.acceptedScores.push_back(step.candidates[chosen]);
     if (step.group.size() > 1) {
       out.ambiguous.push_back(step.group);
-      std::string advice = "the data cannot tell ";
-      for (std::size_t g = 0; g < step.group.size(); ++g)
-        advice += (g ? (g + 1 == step.group.size() ? " from " : ", ") : "") + step.group[g];
-      advice += " apart; to separate them add";
-      for (std::size_t g = 0; g < step.group.size(); ++g)
-        advice += std::string(g ? ";" : "") + " for " + step.group[g] + ": " + findCylinderEffect(step.group[g]).separatedBy;
+      std::vector<std::string> separatedBy;
+      for (const auto& g : step.group) separatedBy.push_back(findCylinderEffect(g).separatedBy);
+      const std::string advice = formatAmbiguityAdvice(step.group, separatedBy);
       out.ambiguityAdvice.push_back(advice);
     }
     out.steps.push_back(step);

@@ -8,6 +8,7 @@
 
 #include "fit/bench_data.h"
 #include "fit/cylinder_fit.h"
+#include "fit/effect_selection.h"
 #include "fit/metrics.h"
 #include "fit/residual_analysis.h"
 #include "knee/mauch_cylinder.h"
@@ -66,43 +67,15 @@ struct CylinderComparison {
 CylinderComparison compareCylinder(const MauchCylinderParams& model, const std::vector<BenchData>& train,
                                    const std::vector<BenchData>& validate);
 
-/// Thresholds of the acceptance rule, fixed in the study (or these defaults) before it runs.
-struct CylinderDiagnosisSettings {
-  /// Family-wise error rate of the likelihood-ratio test; Bonferroni over the candidates
-  /// scored in a step.
-  double alpha = 0.01;
-  /// Held-out RMSE must fall by at least this fraction on every validation file.
-  double minValidationImprovement = 0.02;
-  int maxEffects = 4;         ///< forward stepwise stops after this many
+/// Thresholds of the acceptance rule (shared, fit/effect_selection.h) plus the cylinder's
+/// switch refit.
+struct CylinderDiagnosisSettings : EffectSelectionSettings {
   bool fitSwitches = false;   ///< refit switch widths and xhy before the baseline (as `fit`)
-  std::vector<std::string> candidates;  ///< empty: the whole library
-  int whitenessLags = 20;     ///< Ljung-Box lags for the final residual
-};
-
-/// A parameter of an effect with its 95 % confidence interval.
-struct EffectParameter {
-  std::string name;  ///< with unit: "force_N"
-  double value = 0, lower = 0, upper = 0;
 };
 
 /// One candidate scored on top of the current model.
-struct CandidateScore {
-  std::string effect;
-  std::string notApplicable;         ///< non-empty: not scored, and why
+struct CandidateScore : EffectScore {
   MauchCylinderParams params;        ///< current model + effect, all coefficients refitted
-  double trainRmse = 0;              ///< N
-  std::vector<double> validationRmse;  ///< N, per validation file
-  double effectiveSamples = 0;       ///< n_eff of its training residual
-  double likelihoodRatio = 0;        ///< n_eff ln(RSS_current / RSS_candidate)
-  int dof = 0;                       ///< added linear coefficients + profiled parameters
-  double pValue = 1, pAdjusted = 1;  ///< chi^2 tail; times the number of candidates
-  double deltaBic = 0;               ///< -LR + dof ln(n_eff) (< 0: better)
-  std::vector<EffectParameter> parameters;
-  bool significant = false, bicImproves = false, validationImproves = false, physical = false;
-  std::string physicalNote;          ///< the sign rule and whether it held
-  bool accepted = false;
-  std::string where;                 ///< phase where the squared error fell most, with its share
-  std::vector<double> trainResidual; ///< N, concatenated training files
 };
 
 struct DiagnosisStep {

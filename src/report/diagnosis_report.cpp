@@ -186,6 +186,55 @@ std::string formatComparisonJson(const std::string& model, const CylinderCompari
   return w.str() + "\n";
 }
 
+std::string formatCandidateRanking(const std::vector<const EffectScore*>& candidates, const std::string& unit,
+                                   const char* rmseFormat) {
+  std::string out = fmt("  %-27s %8s %7s %9s %9s %9s  %-24s %s\n", "candidate", ("train " + unit).c_str(), "n_eff", "LR",
+                        "p (Bonf.)", "dBIC", ("validation RMSE " + unit).c_str(), "verdict");
+  for (const EffectScore* cp : candidates) {
+    const EffectScore& c = *cp;
+    if (!c.notApplicable.empty()) {
+      out += fmt("  %-27s not scored: %s\n", c.effect.c_str(), c.notApplicable.c_str());
+      continue;
+    }
+    std::string val;
+    for (double v : c.validationRmse) val += fmt(rmseFormat, v) + " ";
+    std::string verdict = c.accepted ? "ACCEPTED" : "rejected:";
+    if (!c.accepted) {
+      if (!c.significant) verdict += " not significant;";
+      if (!c.bicImproves) verdict += " BIC worse;";
+      if (!c.validationImproves) verdict += " validation did not fall enough;";
+      if (!c.physical) verdict += " wrong sign;";
+    }
+    out += fmt("  %-27s %8s %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(), fmt(rmseFormat, c.trainRmse).c_str(),
+               c.effectiveSamples, c.likelihoodRatio, c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
+  }
+  return out;
+}
+
+std::string formatAcceptedEffect(const EffectScore& c, const std::string& sentence) {
+  std::string out = "  " + c.effect + ": " + sentence + "\n";
+  for (const auto& p : c.parameters)
+    out += fmt("    %-24s %12.5g  (95 %% CI %.5g .. %.5g)\n", p.name.c_str(), p.value, p.lower, p.upper);
+  return out + "    acted most in: " + c.where + "\n    sign: " + c.physicalNote + "\n";
+}
+
+void writeCandidateJson(JsonWriter& w, const EffectScore& c, int step, const std::vector<std::string>& stems) {
+  w.beginObject().field("effect", c.effect).field("step", step).field("accepted", c.accepted);
+  if (!c.notApplicable.empty()) {
+    w.field("not_applicable", c.notApplicable).endObject();
+    return;
+  }
+  w.key("validation_rmse").beginObject();
+  for (std::size_t v = 0; v < stems.size() && v < c.validationRmse.size(); ++v) w.field(stems[v], c.validationRmse[v]);
+  w.endObject().field("train_rmse", c.trainRmse).field("delta_bic", c.deltaBic);
+  w.field("likelihood_ratio", c.likelihoodRatio).field("p_adjusted", c.pAdjusted);
+  w.field("effective_samples", c.effectiveSamples).key("parameters").beginObject();
+  for (const auto& p : c.parameters) w.field(p.name, p.value);
+  w.endObject().key("confidence_intervals").beginObject();
+  for (const auto& p : c.parameters) w.field(p.name, std::vector<double>{p.lower, p.upper});
+  w.endObject().field("physical_sign", c.physical).field("where", c.where).endObject();
+}
+
 std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderComparison& before,
                                 const CylinderComparison& after) {
   std::string out;
@@ -197,25 +246,9 @@ std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderCompa
     out += fmt("step %zu: current model train RMSE %.1f N", s + 1, st.currentTrainRmse);
     for (std::size_t v = 0; v < stems.size(); ++v) out += fmt(", %s %.1f N", stems[v].c_str(), st.currentValidationRmse[v]);
     out += "\n";
-    out += fmt("  %-27s %8s %7s %9s %9s %9s  %-24s %s\n", "candidate", "train N", "n_eff", "LR", "p (Bonf.)", "dBIC",
-               "validation RMSE N", "verdict");
-    for (const auto& c : st.candidates) {
-      if (!c.notApplicable.empty()) {
-        out += fmt("  %-27s not scored: %s\n", c.effect.c_str(), c.notApplicable.c_str());
-        continue;
-      }
-      std::string val;
-      for (double v : c.validationRmse) val += fmt("%.1f ", v);
-      std::string verdict = c.accepted ? "ACCEPTED" : "rejected:";
-      if (!c.accepted) {
-        if (!c.significant) verdict += " not significant;";
-        if (!c.bicImproves) verdict += " BIC worse;";
-        if (!c.validationImproves) verdict += " validation did not fall enough;";
-        if (!c.physical) verdict += " wrong sign;";
-      }
-      out += fmt("  %-27s %8.1f %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(), c.trainRmse, c.effectiveSamples,
-                 c.likelihoodRatio, c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
-    }
+    std::vector<const EffectScore*> scores;
+    for (const auto& c : st.candidates) scores.push_back(&c);
+    out += formatCandidateRanking(scores, "N", "%.1f");
     if (st.chosen >= 0) {
       out += "  -> added " + st.candidates[static_cast<std::size_t>(st.chosen)].effect;
       if (st.group.size() > 1) {
@@ -230,12 +263,7 @@ std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderCompa
   }
   out += "\naccepted effects, in order:\n";
   if (dg.accepted.empty()) out += "  none\n";
-  for (const auto& c : dg.acceptedScores) {
-    out += "  " + c.effect + ": " + findCylinderEffect(c.effect).sentence + "\n";
-    for (const auto& p : c.parameters)
-      out += fmt("    %-24s %12.5g  (95 %% CI %.5g .. %.5g)\n", p.name.c_str(), p.value, p.lower, p.upper);
-    out += "    acted most in: " + c.where + "\n    sign: " + c.physicalNote + "\n";
-  }
+  for (const auto& c : dg.acceptedScores) out += formatAcceptedEffect(c, findCylinderEffect(c.effect).sentence);
   for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
   out += "\n              |   before: ME N  RMSE N  R^2 %  |   after: ME N  RMSE N  R^2 %\n";
   for (std::size_t i = 0; i < before.records.size(); ++i) {
@@ -268,20 +296,7 @@ std::string formatDiagnosisJson(const CylinderDiagnosis& dg, const CylinderCompa
   w.key("candidates").beginArray();
   for (std::size_t s = 0; s < dg.steps.size(); ++s) {
     for (const auto& c : dg.steps[s].candidates) {
-      w.beginObject().field("effect", c.effect).field("step", static_cast<int>(s + 1)).field("accepted", c.accepted);
-      if (!c.notApplicable.empty()) {
-        w.field("not_applicable", c.notApplicable).endObject();
-        continue;
-      }
-      w.key("validation_rmse").beginObject();
-      for (std::size_t v = 0; v < stems.size(); ++v) w.field(stems[v], c.validationRmse[v]);
-      w.endObject().field("train_rmse", c.trainRmse).field("delta_bic", c.deltaBic);
-      w.field("likelihood_ratio", c.likelihoodRatio).field("p_adjusted", c.pAdjusted);
-      w.field("effective_samples", c.effectiveSamples).key("parameters").beginObject();
-      for (const auto& p : c.parameters) w.field(p.name, p.value);
-      w.endObject().key("confidence_intervals").beginObject();
-      for (const auto& p : c.parameters) w.field(p.name, std::vector<double>{p.lower, p.upper});
-      w.endObject().field("physical_sign", c.physical).field("where", c.where).endObject();
+      writeCandidateJson(w, c, static_cast<int>(s + 1), stems);
     }
   }
   w.endArray().field("accepted", dg.accepted).key("ambiguous").beginArray();

@@ -27,6 +27,16 @@ std::vector<std::string> writeResidualPlots(const std::string& outDir, const std
 /// {"rmse", "share_of_squared_error", "share_of_samples"}}}}}`.
 std::string formatComparisonJson(const std::string& model, const CylinderComparison& comparison);
 
+class JsonWriter;
+
+/// Shared by every diagnosis kind: the ranking table of one step (RMSE in `unit`, printed
+/// with `rmseFormat`), one accepted effect with its parameters, intervals, where and sign,
+/// and one candidate's JSON object (issue 5 keys).
+std::string formatCandidateRanking(const std::vector<const EffectScore*>& candidates, const std::string& unit,
+                                   const char* rmseFormat);
+std::string formatAcceptedEffect(const EffectScore& score, const std::string& sentence);
+void writeCandidateJson(JsonWriter& w, const EffectScore& score, int step, const std::vector<std::string>& stems);
+
 /// The ranking of every step, the accepted effects with parameters, and the before/after
 /// table for the training and each validation file.
 std::string formatDiagnosisText(const CylinderDiagnosis& diagnosis, const CylinderComparison& before,
