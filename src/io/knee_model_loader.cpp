@@ -5,6 +5,7 @@
 #include "io/output_files.h"
 #include "io/yaml_reader.h"
 #include "knee/damping_table.h"
+#include "knee/knee_added_effects.h"
 #include "knee/mauch_cylinder.h"
 
 namespace swingsim {
@@ -167,7 +168,33 @@ MauchCylinderParams loadMauchCylinder(const std::string& path) {
   yaml.getString("source", "");
   MauchCylinderParams p = readMauchCylinder(yaml);
   readHyperextensionStop(yaml);
+  if (yaml.has("knee_effects")) {
+    YamlMap e = yaml.getMap("knee_effects");
+    readKneeAddedEffects(e);
+  }
   yaml.finish();
+  return p;
+}
+
+KneeAddedEffectsParams readKneeAddedEffects(YamlMap& m) {
+  KneeAddedEffectsParams p;
+  if (m.has("coulomb_friction")) {
+    YamlMap c = m.getMap("coulomb_friction");
+    p.coulombMoment = c.getDouble("moment_Nm", mustBeNonNegative);
+    p.coulombSmoothingRate = c.getDouble("smoothing_deg_s", p.coulombSmoothingRate / kDegToRad, mustBePositive) * kDegToRad;
+    c.finish();
+  }
+  if (m.has("viscous_damping")) {
+    YamlMap c = m.getMap("viscous_damping");
+    p.viscousDamping = c.getDouble("damping_Nm_s_per_rad", mustBeNonNegative);
+    c.finish();
+  }
+  if (m.has("extension_assist_spring")) {
+    YamlMap c = m.getMap("extension_assist_spring");
+    p.assistStiffness = c.getDouble("stiffness_Nm_per_rad", mustBeNonNegative);
+    c.finish();
+  }
+  m.finish();
   return p;
 }
 
@@ -203,6 +230,10 @@ KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
     } catch (const std::invalid_argument& e) {
       throw InputError(yaml.where() + e.what());
     }
+  }
+  if (yaml.has("knee_effects")) {
+    YamlMap e = yaml.getMap("knee_effects");
+    model.law.add(std::make_unique<KneeAddedEffects>(readKneeAddedEffects(e)));
   }
   model.law.add(std::make_unique<JointStop>(readHyperextensionStop(yaml)));
   yaml.finish();

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "knee/joint_stop.h"
+#include "knee/knee_added_effects.h"
 #include "knee/knee_law.h"
 #include "knee/mauch_cylinder.h"
 
@@ -36,6 +37,13 @@ MauchCylinderParams readMauchCylinder(YamlMap& yaml);
 /// {coefficient_Ns2_per_m2}, inertia {mass_kg}, position_dependent_damping
 /// {coefficient_Ns_per_m2}. Calls finish() on `effects`. Throws InputError.
 MauchAddedEffects readMauchAddedEffects(YamlMap& effects, int phases);
+
+/// Reads a `knee_effects:` map (docs/diagnosis.md, the swing diagnosis's augmented model):
+/// optional coulomb_friction {moment_Nm, smoothing_deg_s (57.3)}, viscous_damping
+/// {damping_Nm_s_per_rad}, extension_assist_spring {stiffness_Nm_per_rad}; all >= 0. Any
+/// knee model kind may carry it; the law is added before the hyperextension stop. Calls
+/// finish() on the map. Throws InputError.
+KneeAddedEffectsParams readKneeAddedEffects(YamlMap& effects);
 
 /// Reads a `hyperextension_stop:` block (all keys optional, defaults in JointStopParams
 /// with the stop engaging at full extension).
