@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli/command_registry.h"
+#include "cli/swing_diagnosis_cli.h"
 #include "fit/cylinder_diagnosis.h"
 #include "io/diagnosis_study.h"
 #include "io/knee_model_loader.h"
@@ -21,7 +22,8 @@ int runDiagnose(const std::vector<std::string>& argv) {
   if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
   YamlMap yaml = YamlMap::loadFile(args.positional()[0]);
   if (!yaml.has("kind")) yaml.getString("kind");
-  yaml.getChoice("kind", {"cylinder-diagnosis"}, "");
+  if (yaml.getChoice("kind", {"cylinder-diagnosis", "swing-diagnosis"}, "") == "swing-diagnosis")
+    return runSwingDiagnose(yaml, args, argv);
   const CylinderDiagnosisStudy study = readCylinderDiagnosisStudy(yaml);
   yaml.finish();
   const MauchCylinderParams base = loadMauchCylinder(study.baseModelPath);

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "cli/command_registry.h"
+#include "cli/swing_diagnosis_cli.h"
 #include "fit/bench_data.h"
 #include "fit/bench_profile.h"
 #include "io/csv_table.h"
@@ -86,7 +87,8 @@ int generateCylinderBench(YamlMap& yaml, const Arguments& args) {
 using Generator = std::function<int(YamlMap&, const Arguments&)>;
 
 const std::map<std::string, Generator>& generators() {
-  static const std::map<std::string, Generator> g = {{"cylinder-bench", generateCylinderBench}};
+  static const std::map<std::string, Generator> g = {{"cylinder-bench", generateCylinderBench},
+                                                              {"swing-kinematics", generateSwingKinematics}};
   return g;
 }
 
@@ -102,7 +104,7 @@ int runGenerate(const std::vector<std::string>& argv) {
 }
 
 static Registrar reg("generate", {"generate STUDY.yaml [--out DIR]",
-                                  "synthetic measurement data (cylinder bench records) from a model, noise and seed",
+                                  "synthetic measurement data (cylinder bench records, swing kinematics) from a model, noise and seed",
                                   runGenerate});
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fit/cylinder_diagnosis.h"
+#include "fit/swing_diagnosis.h"
 
 namespace swingsim {
 
@@ -28,5 +29,15 @@ struct CylinderDiagnosisStudy {
 /// Reads a cylinder-diagnosis study (`kind` already read). Throws InputError
 /// (`file:line: key: ...`), e.g. for an unknown candidate or an empty `validate`.
 CylinderDiagnosisStudy readCylinderDiagnosisStudy(YamlMap& yaml);
+
+/// kind: swing-diagnosis (docs/diagnosis.md): name, description, participant (YAML),
+/// base_model (knee model YAML), train, validate (swing kinematics CSVs), candidates
+/// (default: the swing library), acceptance (as above).
+struct SwingDiagnosisStudy {
+  std::string path, name, participantPath, baseModelPath;
+  std::vector<std::string> train, validate;
+  SwingDiagnosisSettings settings;
+};
+SwingDiagnosisStudy readSwingDiagnosisStudy(YamlMap& yaml);
 
 }  // namespace swingsim

@@ -178,6 +178,7 @@ MauchCylinderParams loadMauchCylinder(const std::string& path) {
 
 KneeAddedEffectsParams readKneeAddedEffects(YamlMap& m) {
   KneeAddedEffectsParams p;
+  p.modelScale = m.getDouble("model_scale", 1.0, mustBePositive);
   if (m.has("coulomb_friction")) {
     YamlMap c = m.getMap("coulomb_friction");
     p.coulombMoment = c.getDouble("moment_Nm", mustBeNonNegative);
@@ -233,7 +234,14 @@ KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
   }
   if (yaml.has("knee_effects")) {
     YamlMap e = yaml.getMap("knee_effects");
-    model.law.add(std::make_unique<KneeAddedEffects>(readKneeAddedEffects(e)));
+    const KneeAddedEffectsParams added = readKneeAddedEffects(e);
+    if (added.modelScale != 1.0) {
+      KneeLawSum scaled;
+      for (std::size_t i = 0; i < model.law.size(); ++i)
+        scaled.add(std::make_unique<ScaledKneeLaw>(model.law.part(i), added.modelScale));
+      model.law = scaled;
+    }
+    model.law.add(std::make_unique<KneeAddedEffects>(added));
   }
   model.law.add(std::make_unique<JointStop>(readHyperextensionStop(yaml)));
   yaml.finish();

@@ -39,7 +39,7 @@ MauchCylinderParams readMauchCylinder(YamlMap& yaml);
 MauchAddedEffects readMauchAddedEffects(YamlMap& effects, int phases);
 
 /// Reads a `knee_effects:` map (docs/diagnosis.md, the swing diagnosis's augmented model):
-/// optional coulomb_friction {moment_Nm, smoothing_deg_s (57.3)}, viscous_damping
+/// optional model_scale (> 0, multiplies the model's own law), coulomb_friction {moment_Nm, smoothing_deg_s (57.3)}, viscous_damping
 /// {damping_Nm_s_per_rad}, extension_assist_spring {stiffness_Nm_per_rad}; all >= 0. Any
 /// knee model kind may carry it; the law is added before the hyperextension stop. Calls
 /// finish() on the map. Throws InputError.

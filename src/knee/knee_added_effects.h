@@ -15,6 +15,9 @@ struct KneeAddedEffectsParams {
   double viscousDamping = 0;
   /// Extension-assist spring: -k flexion, N m/rad (>= 0: pulls towards extension).
   double assistStiffness = 0;
+  /// Scale on the knee model's own resisting law (the swing diagnosis refits it); applied
+  /// by the loader (ScaledKneeLaw), not by this law.
+  double modelScale = 1.0;
   bool any() const { return coulombMoment != 0 || viscousDamping != 0 || assistStiffness != 0; }
 };
 
