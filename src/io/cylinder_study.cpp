@@ -32,15 +32,20 @@ CylinderBenchStudy readCylinderBenchStudy(YamlMap& yaml) {
   if (s.strideLastFrame <= s.strideFirstFrame + 8)
     yaml.fail("stride_last_frame", "must be at least 8 frames after stride_first_frame", std::to_string(s.strideLastFrame));
   auto& p = s.profile;
-  p.sampleRate = yaml.getDouble("sample_rate_Hz", p.sampleRate, mustBePositive);
+  // Bounds keep a record's size sane: 1e300 Hz overflowed the sample count (0 samples,
+  // empty files, exit 0) and 1e9 cycles filled memory.
+  p.sampleRate = yaml.getDouble("sample_rate_Hz", p.sampleRate, [](double v) {
+    return v > 0 && v <= 100000 ? "" : "expected a sample rate above 0 and at most 100000 Hz";
+  });
   p.cycles = yaml.getInt("cycles", p.cycles);
-  if (p.cycles < 1) yaml.fail("cycles", "must be at least 1", std::to_string(p.cycles));
+  if (p.cycles < 1 || p.cycles > 1000) yaml.fail("cycles", "must be from 1 to 1000", std::to_string(p.cycles));
   p.terminalSwingMinimum = yaml.getDouble("terminal_swing_min_deg", 3.0) * kDegToRad;
   p.hyperextension = yaml.getDouble("hyperextension_deg", -4.0, [](double v) {
     return v < 0 ? "" : "must be negative (hyperextension)";
   }) * kDegToRad;
   p.holdSamples = yaml.getInt("hold_samples", p.holdSamples);
-  if (p.holdSamples < 0) yaml.fail("hold_samples", "must not be negative", std::to_string(p.holdSamples));
+  if (p.holdSamples < 0 || p.holdSamples > 1000)
+    yaml.fail("hold_samples", "must be from 0 to 1000", std::to_string(p.holdSamples));
   s.noise = yaml.getDouble("noise_N", 0.0, mustBeNonNegative);
   const double seed = yaml.getDouble("seed", 1.0, [](double v) {
     return v >= 0 && v == std::floor(v) && v < 9e15 ? "" : "must be a whole number >= 0";
@@ -66,7 +71,12 @@ CylinderBenchStudy readCylinderBenchStudy(YamlMap& yaml) {
     for (const auto& other : s.conditions) {
       if (other.name == b.name) c.fail("name", "condition name appears twice", b.name);
     }
-    b.strideTime = c.getDouble("stride_s", mustBePositive);
+    b.strideTime = c.getDouble("stride_s", [](double v) { return v > 0 && v <= 10 ? "" : "expected a stride time above 0 and at most 10 s"; });
+    constexpr double kMaxSamples = 1e7;  // per condition: 80 MB a column
+    const double samples = p.cycles * b.strideTime * p.sampleRate;
+    if (samples > kMaxSamples || samples < 16)
+      c.fail("stride_s", "cycles x stride_s x sample_rate_Hz must give 16 to 10 million samples",
+             formatNumber(samples) + " samples");
     b.amplitudeScale = c.getDouble("amplitude_scale", 1.0, mustBePositive);
     c.finish();
     s.conditions.push_back(b);
