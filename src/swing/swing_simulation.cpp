@@ -259,6 +259,15 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       throw RunError(p.name + ": the simulation diverged " + describeState(leg, s) +
                      " (likely cause: an unphysical input such as a near-zero inertia)");
     }
+    // The hip stop is soft (Hunt-Crossley): a thigh far past it means the inputs are wrong,
+    // and a swing "ending" out there would look like a result.
+    constexpr double kHipRangeSlack = 2 * kDegToRad;  // rad; plausible hip moments press the stop far less
+    if (now.hip < p.hipRange.minFlexion - kHipRangeSlack || now.hip > p.hipRange.maxFlexion + kHipRangeSlack) {
+      const auto deg = [](double rad) { return formatNumber(std::round(rad * kRadToDeg * 10) / 10); };
+      throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the hip left its range of " +
+                     deg(p.hipRange.minFlexion) + " to " + deg(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
+                     " (likely cause: a hip moment far too large for this leg, or a hip_range that excludes the swing)");
+    }
     if (log.ended && s.getTime() >= log.endTime + stopAfterEnd - 1e-12) break;
     if (!log.ended && (s.getTime() >= rule.timeLimit - 1e-12 || status == Integrator::EndOfSimulation)) {
       std::string cause;
