@@ -80,5 +80,34 @@ TEST(FuzzRegression, HugeSwingTimeLimitIsAnInputError) {
               HasSubstr("swing_end.time_limit_s: expected a time limit from 0 to 10 s (got 1e+300)"));
 }
 
+std::string cylinderStudyError(const std::string& text) {
+  return inputErrorOf([&] {
+    YamlMap yaml = YamlMap::loadString(text, SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml");
+    yaml.getChoice("kind", {"cylinder-bench"}, "");
+    readCylinderBenchStudy(yaml);
+    yaml.finish();
+  });
+}
+
+const std::string kBenchHead = R"(kind: cylinder-bench
+model: ../models/mauch-4phase.yaml
+knee_angles: data/winter-natural-cadence.csv
+output_dir: /tmp/unused
+conditions: [{name: normal, stride_s: 0.987}]
+)";
+
+// Probe: sample_rate_Hz: 1e300 overflowed the sample count (undefined behaviour, 0 samples):
+// `swingsim generate` wrote three header-only bench files and exited 0. cycles: 9e8 ran
+// the generator out of memory (2.3 GB after 20 s and growing).
+TEST(FuzzRegression, BenchRecordSizeIsBounded) {
+  EXPECT_THAT(cylinderStudyError(kBenchHead + "sample_rate_Hz: 1e300\n"),
+              HasSubstr("sample_rate_Hz: expected a sample rate above 0 and at most 100000 Hz (got 1e+300)"));
+  EXPECT_THAT(cylinderStudyError(kBenchHead + "cycles: 900000000\n"), HasSubstr("cycles: must be from 1 to 1000"));
+  EXPECT_THAT(cylinderStudyError(kBenchHead + "cycles: 1000\nsample_rate_Hz: 100000\n"),
+              HasSubstr("conditions[0].stride_s: cycles x stride_s x sample_rate_Hz must give 16 to 10 million samples"));
+  EXPECT_THAT(cylinderStudyError(kBenchHead + "hold_samples: 1e9\n"), HasSubstr("hold_samples: must be from 0 to 1000"));
+  EXPECT_EQ(cylinderStudyError(kBenchHead), "(no error)");
+}
+
 }  // namespace
 }  // namespace swingsim

@@ -75,10 +75,9 @@ TEST(FailingRuns, SwingThatNeverEndsGivesTimeStateAndCause) {
   EXPECT_THAT(e, HasSubstr("the thigh never reached its target flexion of 20 deg (hip moment too small"));
 }
 
-// DISABLED until simulateSwing checks the hip range (patch handed to the owner of
-// src/swing/swing_simulation.cpp, issue 6 report): today the soft hip stop lets the thigh
-// sail ~23 deg past 90 deg and the swing "ends" there, which looks like a result.
-TEST(FailingRuns, DISABLED_HipDrivenOutOfItsRangeGivesTimeStateAndCause) {
+// Before issue 6 the soft hip stop let the thigh sail ~20 deg past 90 deg and the swing
+// "ended" there, which looked like a result.
+TEST(FailingRuns, HipDrivenOutOfItsRangeGivesTimeStateAndCause) {
   Participant p = loadParticipant("participants/p1.yaml");
   p.hipMoment.flexionAmplitude = 5000;  // N m: far beyond any hip; slams the thigh into its stop
   p.swingEnd.thighTargetFlexion = 89 * kDegToRad;
