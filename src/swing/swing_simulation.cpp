@@ -19,8 +19,10 @@ double calcHipHeight(const Participant& p) { return 0.530 * p.height; }
 
 namespace {
 
-// What the event handlers have seen so far. Handlers are const (Simbody's interface), so
-// they write here through a pointer.
+// What the swing events have shown so far, and what each event means for the swing end.
+// Both ways of finding the events (Simbody's event handlers on the plain path, our own
+// crossing search between step ends on the fast path) report them here, so the rule is
+// written once.
 struct SwingLog {
   std::vector<SwingEvent> events;
   bool thighReached = false;
@@ -40,7 +42,46 @@ struct SwingLog {
       add("swing_end", t);
     }
   }
+  // The thigh rose through its target flexion.
+  void onThighAtTarget(double t) {
+    if (thighReached) return;
+    thighReached = true;
+    add("thigh_at_target", t);
+    checkEnd(t);
+  }
+  // The knee flexion rate fell through zero with the knee at `knee` (rad).
+  void onKneePeak(double t, double knee, double zone) {
+    if (knee <= zone || ended) return;  // wiggles inside the zone are not the swing's peak
+    add("knee_peak_flexion", t);
+    peakSeen = true;
+    if (knee > peak) {
+      peak = knee;
+      peakTime = t;
+    }
+  }
+  // The knee flexion crossed the zone boundary (entering: falling below it).
+  void onKneeZone(double t, bool entering) {
+    if (entering) {
+      if (!peakSeen) return;  // still on the way up from toe-off
+      add("knee_enters_zone", t);
+      kneeInZone = true;
+      enteredOnce = true;
+      checkEnd(t);
+    } else if (enteredOnce) {
+      add("knee_leaves_zone", t);
+      kneeInZone = false;
+      bounce = true;
+    }
+  }
 };
+
+// The event witnesses, shared by both paths. Knee peak: the knee rate while the knee is
+// above the zone; a positive constant inside it, so a knee resting near extension after the
+// swing (rate dithering about zero) does not raise a stream of meaningless sign changes.
+double calcPeakWitness(double knee, double kneeRate, double zone) { return knee > zone ? kneeRate : 1.0; }
+// Simbody's sign transitions (Event::classifyTransition): a value leaving exactly zero is not one.
+bool isRising(double before, double after) { return before < 0 && after >= 0; }
+bool isFalling(double before, double after) { return before > 0 && after <= 0; }
 
 class LegEventHandler : public TriggeredEventHandler {
  public:
@@ -62,12 +103,7 @@ class ThighTargetHandler : public LegEventHandler {
     getTriggerInfo().setTriggerOnFallingSignTransition(false);
   }
   Real getValue(const State& s) const override { return leg_.getHipFlexion(s) - target_; }
-  void handleEvent(State& s, Real, bool&) const override {
-    if (log_.thighReached) return;
-    log_.thighReached = true;
-    log_.add("thigh_at_target", s.getTime());
-    log_.checkEnd(s.getTime());
-  }
+  void handleEvent(State& s, Real, bool&) const override { log_.onThighAtTarget(s.getTime()); }
 
  private:
   double target_;
@@ -80,21 +116,11 @@ class KneePeakHandler : public LegEventHandler {
       : LegEventHandler(leg, log, Stage::Velocity, window), zone_(zone) {
     getTriggerInfo().setTriggerOnRisingSignTransition(false);
   }
-  // Knee rate while the knee is above the zone; a positive constant inside it, so a knee
-  // resting near extension after the swing (rate dithering about zero) does not make the
-  // integrator localize a stream of meaningless sign changes.
   Real getValue(const State& s) const override {
-    return leg_.getKneeFlexion(s) > zone_ ? leg_.getKneeFlexionRate(s) : 1.0;
+    return calcPeakWitness(leg_.getKneeFlexion(s), leg_.getKneeFlexionRate(s), zone_);
   }
   void handleEvent(State& s, Real, bool&) const override {
-    const double knee = leg_.getKneeFlexion(s);
-    if (knee <= zone_ || log_.ended) return;  // wiggles inside the zone are not the swing's peak
-    log_.add("knee_peak_flexion", s.getTime());
-    log_.peakSeen = true;
-    if (knee > log_.peak) {
-      log_.peak = knee;
-      log_.peakTime = s.getTime();
-    }
+    log_.onKneePeak(s.getTime(), leg_.getKneeFlexion(s), zone_);
   }
 
  private:
@@ -113,20 +139,7 @@ class KneeZoneHandler : public LegEventHandler {
     getTriggerInfo().setTriggerOnFallingSignTransition(!entering);
   }
   Real getValue(const State& s) const override { return zone_ - leg_.getKneeFlexion(s); }
-  void handleEvent(State& s, Real, bool&) const override {
-    const double t = s.getTime();
-    if (entering_) {
-      if (!log_.peakSeen) return;  // still on the way up from toe-off
-      log_.add("knee_enters_zone", t);
-      log_.kneeInZone = true;
-      log_.enteredOnce = true;
-      log_.checkEnd(t);
-    } else if (log_.enteredOnce) {
-      log_.add("knee_leaves_zone", t);
-      log_.kneeInZone = false;
-      log_.bounce = true;
-    }
-  }
+  void handleEvent(State& s, Real, bool&) const override { log_.onKneeZone(s.getTime(), entering_); }
 
  private:
   double zone_;
@@ -139,6 +152,14 @@ std::string describeState(const LegModel& leg, const State& s) {
                 s.getTime(), leg.getHipFlexion(s) * kRadToDeg, leg.getHipFlexionRate(s) * kRadToDeg,
                 leg.getKneeFlexion(s) * kRadToDeg, leg.getKneeFlexionRate(s) * kRadToDeg);
   return buf;
+}
+
+// Cubic Hermite on [0, 1] from values y0, y1 and derivatives d0, d1 (per unit time) over
+// a step of length h.
+double calcHermite(double y0, double d0, double y1, double d1, double h, double s) {
+  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+  return h00 * y0 + h10 * h * d0 + h01 * y1 + h11 * h * d1;
 }
 
 // Joint state at the end of an integrator step: angles, rates, accelerations, moments.
@@ -161,11 +182,7 @@ StepEnd readStepEnd(const LegModel& leg, const State& s) {
 void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, double interval, const LegGeometry& g,
                    double hipHeight, SwingTrajectory& tr) {
   const double h = b.t - a.t;
-  auto hermite = [&](double y0, double d0, double y1, double d1, double s) {
-    const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
-    const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
-    return h00 * y0 + h10 * h * d0 + h01 * y1 + h11 * h * d1;
-  };
+  auto hermite = [&](double y0, double d0, double y1, double d1, double s) { return calcHermite(y0, d0, y1, d1, h, s); };
   while (nextSample <= b.t + 1e-12 && h > 0) {
     const double s = std::clamp((nextSample - a.t) / h, 0.0, 1.0);
     const double hip = hermite(a.hip, a.hipRate, b.hip, b.hipRate, s);
@@ -188,6 +205,87 @@ void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, doubl
   }
 }
 
+// Time crossing resolution of the fast path, s: far below the 0.1 ms the swing time is
+// converged to, and far above round-off in t.
+constexpr double kCrossingTimeTol = 1e-12;
+
+// Root of f on [0, 1] (f(0) and f(1) bracket it, not both zero), by the Illinois variant
+// of regula falsi, to kCrossingTimeTol / h in s.
+template <class F>
+double findRoot(const F& f, double h) {
+  double s0 = 0, s1 = 1, f0 = f(0.0), f1 = f(1.0);
+  if (f1 == 0) return 1;
+  int side = 0;
+  for (int it = 0; it < 100 && (s1 - s0) * h > kCrossingTimeTol; ++it) {
+    double s = (s0 * f1 - s1 * f0) / (f1 - f0);
+    if (!(s > s0 && s < s1)) s = 0.5 * (s0 + s1);
+    const double fs = f(s);
+    if (fs == 0) return s;
+    if ((fs < 0) == (f1 < 0)) {
+      s1 = s;
+      f1 = fs;
+      if (side == -1) f0 *= 0.5;
+      side = -1;
+    } else {
+      s0 = s;
+      f0 = fs;
+      if (side == 1) f1 *= 0.5;
+      side = 1;
+    }
+  }
+  return 0.5 * (s0 + s1);
+}
+
+// The fast path's events: sign changes of the witnesses between two step ends, each
+// crossing found on the Hermite interpolant of the step (no realization, no State copy),
+// handled in time order. Events after the bounce window (rule.bounceWindow past the swing
+// end) are left out.
+void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& rule, SwingLog& log) {
+  const double h = b.t - a.t;
+  if (!(h > 0)) return;
+  const double target = rule.thighTargetFlexion, zone = rule.zoneOfStability;
+  auto hipAt = [&](double s) { return calcHermite(a.hip, a.hipRate, b.hip, b.hipRate, h, s); };
+  auto kneeAt = [&](double s) { return calcHermite(a.knee, a.kneeRate, b.knee, b.kneeRate, h, s); };
+  auto kneeRateAt = [&](double s) { return calcHermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, h, s); };
+  enum Kind { kThigh, kPeak, kEnters, kLeaves };
+  struct Crossing {
+    double s;
+    Kind kind;
+  };
+  Crossing crossings[4];
+  int count = 0;
+  if (isRising(a.hip - target, b.hip - target))
+    crossings[count++] = {findRoot([&](double s) { return hipAt(s) - target; }, h), kThigh};
+  if (isFalling(calcPeakWitness(a.knee, a.kneeRate, zone), calcPeakWitness(b.knee, b.kneeRate, zone)))
+    crossings[count++] = {findRoot(kneeRateAt, h), kPeak};
+  if (isRising(zone - a.knee, zone - b.knee))
+    crossings[count++] = {findRoot([&](double s) { return zone - kneeAt(s); }, h), kEnters};
+  if (isFalling(zone - a.knee, zone - b.knee))
+    crossings[count++] = {findRoot([&](double s) { return zone - kneeAt(s); }, h), kLeaves};
+  for (int i = 1; i < count; ++i)
+    for (int j = i; j > 0 && crossings[j].s < crossings[j - 1].s; --j) std::swap(crossings[j], crossings[j - 1]);
+  for (int i = 0; i < count; ++i) {
+    const double t = a.t + crossings[i].s * h;
+    if (log.ended && t > log.endTime + rule.bounceWindow) return;
+    switch (crossings[i].kind) {
+      case kThigh: log.onThighAtTarget(t); break;
+      case kPeak: log.onKneePeak(t, kneeAt(crossings[i].s), zone); break;
+      case kEnters: log.onKneeZone(t, true); break;
+      case kLeaves: log.onKneeZone(t, false); break;
+    }
+  }
+}
+
+std::unique_ptr<Integrator> makeIntegrator(SwingIntegrator kind, const MultibodySystem& system) {
+  switch (kind) {
+    case SwingIntegrator::kRungeKuttaFeldberg: return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
+    case SwingIntegrator::kRungeKutta3: return std::make_unique<RungeKutta3Integrator>(system);
+    case SwingIntegrator::kVerlet: return std::make_unique<VerletIntegrator>(system);
+    case SwingIntegrator::kRungeKuttaMerson: break;
+  }
+  return std::make_unique<RungeKuttaMersonIntegrator>(system);
+}
+
 }  // namespace
 
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) {
@@ -199,22 +297,31 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   SwingLog log;
   const SwingEndRule& rule = p.swingEnd;
   MultibodySystem& system = leg.updSystem();
-  system.addEventHandler(new ThighTargetHandler(leg, log, options.eventWindow, rule.thighTargetFlexion));
-  system.addEventHandler(new KneePeakHandler(leg, log, options.eventWindow, rule.zoneOfStability));
-  system.addEventHandler(new KneeZoneHandler(leg, log, options.eventWindow, rule.zoneOfStability, true));
-  system.addEventHandler(new KneeZoneHandler(leg, log, options.eventWindow, rule.zoneOfStability, false));
-  system.realizeTopology();
+  if (options.simbodyEvents) {
+    system.addEventHandler(new ThighTargetHandler(leg, log, options.eventWindow, rule.thighTargetFlexion));
+    system.addEventHandler(new KneePeakHandler(leg, log, options.eventWindow, rule.zoneOfStability));
+    system.addEventHandler(new KneeZoneHandler(leg, log, options.eventWindow, rule.zoneOfStability, true));
+    system.addEventHandler(new KneeZoneHandler(leg, log, options.eventWindow, rule.zoneOfStability, false));
+    system.realizeTopology();
+  }
 
   State state = leg.makeInitialState(p.initial);
-  RungeKuttaMersonIntegrator integrator(system);
+  const std::unique_ptr<Integrator> integratorOwner = makeIntegrator(options.integrator, system);
+  Integrator& integrator = *integratorOwner;
   integrator.setAccuracy(options.accuracy);
   // Return after every internal step: the loop stops as soon as the swing end plus the
-  // bounce window has passed, and samples the output by interpolation between steps.
+  // bounce window has passed, finds the fast path's events and samples the output by
+  // interpolation between steps.
   integrator.setReturnEveryInternalStep(true);
   integrator.setFinalTime(rule.timeLimit);
-  TimeStepper stepper(system, integrator);
-  stepper.setReportAllSignificantStates(true);
-  stepper.initialize(state);
+  std::unique_ptr<TimeStepper> stepper;
+  if (options.simbodyEvents) {
+    stepper = std::make_unique<TimeStepper>(system, integrator);
+    stepper->setReportAllSignificantStates(true);
+    stepper->initialize(state);
+  } else {
+    integrator.initialize(state);
+  }
 
   SwingResult result;
   log.add("toe_off", 0.0);
@@ -223,6 +330,12 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   StepEnd previous = readStepEnd(leg, integrator.getState());
   double nextSample = 0;
   {
+    // Room for a typical swing plus its bounce window, so samples rarely reallocate.
+    constexpr double kTypicalDuration = 0.8;  // s
+    const std::size_t capacity = static_cast<std::size_t>(std::min(rule.timeLimit, kTypicalDuration) / options.sampleInterval) + 2;
+    for (auto* v : {&tr.time, &tr.hipFlexion, &tr.kneeFlexion, &tr.hipFlexionRate, &tr.kneeFlexionRate, &tr.hipMoment,
+                    &tr.kneeMoment, &tr.kneeX, &tr.kneeY, &tr.ankleX, &tr.ankleY, &tr.toeX, &tr.toeY})
+      v->reserve(capacity);
     // The first sample, at toe-off.
     const PlanarPose pose = calcPlanarPoseXY(geometry, hipHeight, previous.hip, previous.knee);
     tr.time.push_back(0);
@@ -245,7 +358,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   while (true) {
     Integrator::SuccessfulStepStatus status;
     try {
-      status = stepper.stepTo(rule.timeLimit);
+      status = stepper ? stepper->stepTo(rule.timeLimit) : integrator.stepTo(rule.timeLimit);
     } catch (const std::exception& e) {
       throw RunError(p.name + ": the integrator failed " + describeState(leg, integrator.getState()) +
                      " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; " +
@@ -253,12 +366,13 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     }
     const State& s = integrator.getState();
     const StepEnd now = readStepEnd(leg, s);
-    if (now.t > previous.t) appendSamples(previous, now, nextSample, options.sampleInterval, geometry, hipHeight, tr);
-    previous = now;
     if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) {
       throw RunError(p.name + ": the simulation diverged " + describeState(leg, s) +
                      " (likely cause: an unphysical input such as a near-zero inertia)");
     }
+    if (!stepper) handleStepEvents(previous, now, rule, log);
+    if (now.t > previous.t) appendSamples(previous, now, nextSample, options.sampleInterval, geometry, hipHeight, tr);
+    previous = now;
     // The hip stop is soft (Hunt-Crossley): a thigh far past it means the inputs are wrong,
     // and a swing "ending" out there would look like a result.
     constexpr double kHipRangeSlack = 2 * kDegToRad;  // rad; plausible hip moments press the stop far less

@@ -9,13 +9,31 @@
 
 namespace swingsim {
 
+/// Simbody's error-controlled explicit integrators (the convergence study compares them;
+/// CPodes is left out: on this chain it did not finish a swing in 20 s).
+enum class SwingIntegrator {
+  kRungeKuttaMerson,    ///< RK 4(3), 5 stages
+  kRungeKuttaFeldberg,  ///< RK 4(5), 6 stages
+  kRungeKutta3,         ///< RK 3(2), 3 stages
+  kVerlet,              ///< velocity Verlet with error control
+};
+
 /// Integrator settings. The defaults are the converged settings of the README's
 /// convergence study (swing time converged to 0.1 ms).
 struct SwingOptions {
   double accuracy = 1e-4;           ///< Simbody integrator relative accuracy
+  SwingIntegrator integrator = SwingIntegrator::kRungeKuttaMerson;
   double sampleInterval = 0.002;    ///< s between trajectory samples (Hermite-interpolated between steps: free)
   bool recordTrajectory = true;
-  double eventWindow = 1e-5;        ///< s, required event localization window
+  /// How the swing events (thigh at target, knee peak, knee enters/leaves the zone) are
+  /// located. false (the fast path): sign changes of the event witnesses between two
+  /// integrator steps, each crossing found on the cubic Hermite interpolant of the bracketing
+  /// step ends (angle and rate, or rate and acceleration), which costs no realization.
+  /// true (the plain path): Simbody TriggeredEventHandlers, each crossing localized by the
+  /// integrator to eventWindow (extra realizations and State copies) and the step restarted
+  /// there. Both give the same swing times to the converged tolerance (tests/swing/fast_path_test.cpp).
+  bool simbodyEvents = false;
+  double eventWindow = 1e-5;        ///< s, localization window of the plain path
 };
 
 struct SwingEvent {

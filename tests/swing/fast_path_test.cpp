@@ -1,0 +1,87 @@
+// Correctness guard of the fast path (issue 7): swing events found between integrator
+// steps on the Hermite interpolant, at the converged default accuracy, against the plain
+// path (Simbody event handlers localizing every crossing) at a tight accuracy, for every
+// participant and every lowering of the Burkett sweep.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "swing/sweep.h"
+
+namespace swingsim {
+namespace {
+
+constexpr double kConvergedTol = 1e-4;      // s: the swing time the README's convergence study converges to 0.1 ms
+constexpr double kTightAccuracy = 1e-8;     // plain path: integration error far below kConvergedTol
+constexpr double kTightEventWindow = 1e-9;  // s: plain path localization window
+
+SweepStudy burkettStudy(const SwingOptions& swing) {
+  SweepStudy s = loadSweepStudy("studies/burkett2004.yaml");
+  s.addedMasses = {0.0};  // the plain sweep, with Table 4's off-grid lowerings
+  s.addedMassDistances.clear();
+  s.swing = swing;
+  s.swing.recordTrajectory = false;
+  return s;
+}
+
+TEST(FastPath, SameSwingTimesAsThePlainPathForAllParticipantsAndLowerings) {
+  const SweepResults fast = runSweep(burkettStudy(SwingOptions{}), 0);
+  SwingOptions plainOptions;
+  plainOptions.simbodyEvents = true;
+  plainOptions.accuracy = kTightAccuracy;
+  plainOptions.eventWindow = kTightEventWindow;
+  const SweepResults plain = runSweep(burkettStudy(plainOptions), 0);
+
+  ASSERT_EQ(fast.participants.size(), plain.participants.size());
+  double maxDiff = 0;
+  int compared = 0;
+  for (std::size_t i = 0; i < fast.participants.size(); ++i) {
+    const ParticipantSweep& f = fast.participants[i];
+    const ParticipantSweep& p = plain.participants[i];
+    ASSERT_EQ(f.points.size(), p.points.size()) << f.name;
+    for (std::size_t k = 0; k < f.points.size(); ++k) {
+      const SweepPoint& a = f.points[k];
+      const SweepPoint& b = p.points[k];
+      ASSERT_EQ(a.ok, b.ok) << f.name << " at " << a.lowering << " m: " << a.failure << b.failure;
+      if (!a.ok) continue;
+      const double diff = std::fabs(a.result.swingTime - b.result.swingTime);
+      maxDiff = std::max(maxDiff, diff);
+      ++compared;
+      EXPECT_LT(diff, kConvergedTol) << f.name << " at " << a.lowering << " m";
+      EXPECT_EQ(a.result.bounce, b.result.bounce) << f.name << " at " << a.lowering << " m";
+      EXPECT_NEAR(a.result.peakKneeFlexionTime, b.result.peakKneeFlexionTime, kConvergedTol) << f.name << " at " << a.lowering;
+    }
+    EXPECT_EQ(f.best, p.best) << f.name;
+  }
+  std::printf("fast vs plain path: %d swings, largest swing time difference %.2e s (tolerance %.0e s)\n", compared, maxDiff,
+              kConvergedTol);
+}
+
+// At the same tight accuracy the two ways of finding events agree far below the tolerance:
+// the Hermite crossing search is not where the fast path's error comes from.
+TEST(FastPath, EventSearchAgreesWithSimbodyLocalizationAtTightAccuracy) {
+  constexpr double kEventAgreement = 1e-7;  // s: both integrate to 1e-10; what is left is localization
+  SweepStudy study = burkettStudy(SwingOptions{});
+  study.participants.resize(1);
+  study.loweringStep = 0.1;
+  study.includePublishedLowerings = false;
+  SwingOptions fastOptions;
+  fastOptions.accuracy = 1e-10;
+  SwingOptions plainOptions = fastOptions;
+  plainOptions.simbodyEvents = true;
+  plainOptions.eventWindow = kTightEventWindow;
+  study.swing = fastOptions;
+  const SweepResults fast = runSweep(study, 0);
+  study.swing = plainOptions;
+  const SweepResults plain = runSweep(study, 0);
+  for (std::size_t k = 0; k < fast.participants[0].points.size(); ++k) {
+    const SwingResult& a = fast.participants[0].points[k].result;
+    const SwingResult& b = plain.participants[0].points[k].result;
+    EXPECT_NEAR(a.swingTime, b.swingTime, kEventAgreement);
+    EXPECT_NEAR(a.peakKneeFlexion, b.peakKneeFlexion, 1e-7);
+  }
+}
+
+}  // namespace
+}  // namespace swingsim
