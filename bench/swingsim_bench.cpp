@@ -1,0 +1,159 @@
+// Google Benchmark programs of issue 7. Run them with `bash scripts/bench.sh` (build, run
+// with repetitions, report medians and ratios). `swingsim_bench --convergence` runs the
+// convergence study instead (convergence_study.cpp).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <thread>
+
+#include "bench_inputs.h"
+#include "fit/bench_data.h"
+#include "fit/cylinder_diagnosis.h"
+#include "fit/cylinder_fit.h"
+#include "io/cylinder_study.h"
+#include "io/diagnosis_study.h"
+#include "io/yaml_reader.h"
+#include "report/cylinder_fit_report.h"
+#include "swing/reference_swing.h"
+
+namespace swingsim::bench {
+namespace {
+
+// benchmark::DoNotOptimize on a copy: with g++ 12 and Debian's Google Benchmark 1.7 its
+// "+m,r" constraint may pick a register and leave a double it was given clobbered (the
+// reference swing time read back as 1e-310).
+template <class T>
+void keep(T value) {
+  benchmark::DoNotOptimize(value);
+}
+
+const LoadedParticipant& p1() {
+  static const LoadedParticipant p("participants/p1.yaml");
+  return p;
+}
+
+// One P1 swing at the standard location through the full Simbody path (build the leg,
+// integrate, find the swing end, sample the trajectory), at the README's accuracy.
+void BM_SwingSimbody(benchmark::State& state) {
+  const SwingSetup setup = p1().setup();
+  const SwingOptions options;  // the converged defaults the README and the CLI use
+  SwingResult r;
+  for (auto _ : state) {
+    r = simulateSwing(setup, options);
+    keep(r.swingTime);
+  }
+  state.counters["swing_time_ms"] = 1e3 * r.swingTime;
+  state.counters["steps"] = r.steps;
+  state.counters["realizations"] = r.realizations;
+}
+BENCHMARK(BM_SwingSimbody)->Unit(benchmark::kMillisecond);
+
+// The same swing with the hand-derived 2-DOF reference (own Dormand-Prince), same
+// swing-end rule. Argument: -log10 of the Dormand-Prince relative and absolute tolerance;
+// 0 = the Simbody swing's accuracy (SwingOptions{}). At 1e-4 Dormand-Prince is 0.36 ms off
+// the converged swing time (its error control is looser than Simbody's at the same number),
+// so 6 (converged to 0.01 ms) is also run. Building the reference is inside the loop, as
+// building the Simbody system is above.
+void BM_SwingReference(benchmark::State& state) {
+  const LoadedParticipant& p = p1();
+  const double tolerance = state.range(0) == 0 ? SwingOptions{}.accuracy : std::pow(10.0, -static_cast<double>(state.range(0)));
+  const LegGeometry geometry = calcLegGeometry(p.participant, 0.0);
+  ReferenceSwingEnd end;
+  for (auto _ : state) {
+    const ReferenceSwing reference(geometry, p.knee, p.participant.hipMoment, p.participant.hipRange);
+    end = reference.calcSwingEnd(p.participant.initial, p.participant.swingEnd, tolerance, tolerance);
+    keep(end.swingTime);
+  }
+  state.counters["swing_time_ms"] = 1e3 * end.swingTime;
+  state.counters["steps"] = static_cast<double>(end.steps);
+}
+BENCHMARK(BM_SwingReference)->ArgName("tol_exp")->Arg(0)->Arg(6)->Unit(benchmark::kMillisecond);
+
+// The plain Burkett sweep (4 participants x 21 lowerings) on N threads; N = 0 means all
+// cores (std::thread::hardware_concurrency).
+void BM_SweepBurkett(benchmark::State& state) {
+  static const SweepStudy study = plainBurkettSweep();
+  const int jobs = static_cast<int>(state.range(0));
+  int swings = 0;
+  for (auto _ : state) {
+    const SweepResults r = runSweep(study, jobs);
+    swings = 0;
+    for (const auto& ps : r.participants) swings += static_cast<int>(ps.points.size());
+    keep(swings);
+  }
+  state.counters["swings"] = swings;
+  state.counters["threads"] = jobs > 0 ? jobs : static_cast<int>(std::thread::hardware_concurrency());
+}
+BENCHMARK(BM_SweepBurkett)->ArgName("jobs")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Fitting both Mauch models (2- and 4-phase) on the training file and evaluating them on
+// all three bench files of studies/mauch2014.yaml. Files are read once, outside the loop.
+void BM_FitMauch(benchmark::State& state) {
+  YamlMap yaml = YamlMap::loadFile(sourcePath("studies/mauch2014.yaml"));
+  yaml.getChoice("kind", {"cylinder-fit"}, "");
+  const CylinderFitStudy study = readCylinderFitStudy(yaml);
+  std::vector<MauchCylinderParams> models;
+  for (const auto& path : study.models) models.push_back(loadMauchCylinder(path));
+  std::vector<BenchData> train, validate;
+  for (const auto& path : study.train) train.push_back(readBenchCsv(path, 13));
+  for (const auto& path : study.validate) validate.push_back(readBenchCsv(path, 3));
+  for (auto _ : state) {
+    for (const auto& model : models) {
+      CylinderFitOptions options;
+      options.fitSwitches = study.fitSwitches;
+      const CylinderFit fit = fitCylinder(model, train, options);
+      const auto files = evaluateFiles(MauchCylinder(fit.params), train, validate);
+      keep(files.size());
+    }
+  }
+  state.counters["models"] = static_cast<double>(models.size());
+  state.counters["files"] = static_cast<double>(train.size() + validate.size());
+}
+BENCHMARK(BM_FitMauch)->Unit(benchmark::kMillisecond);
+
+// The cylinder diagnosis demo (`swingsim diagnose studies/diagnose-demo-cylinder.yaml`):
+// baseline fit, candidate ranking, refits and the comparison before and after. Files are
+// read once, outside the loop.
+void BM_DiagnoseCylinder(benchmark::State& state) {
+  YamlMap yaml = YamlMap::loadFile(sourcePath("studies/diagnose-demo-cylinder.yaml"));
+  yaml.getChoice("kind", {"cylinder-diagnosis"}, "");
+  const CylinderDiagnosisStudy study = readCylinderDiagnosisStudy(yaml);
+  const MauchCylinderParams base = loadMauchCylinder(study.baseModelPath);
+  std::vector<BenchData> train, validate;
+  for (const auto& path : study.train)
+    train.push_back(readBenchCsv(path, static_cast<std::size_t>(MauchCylinder(base).numCoefficients()) + 8));
+  for (const auto& path : study.validate) validate.push_back(readBenchCsv(path, 3));
+  std::size_t accepted = 0;
+  for (auto _ : state) {
+    const CylinderDiagnosis diagnosis = diagnoseCylinder(base, train, validate, study.settings);
+    const CylinderComparison before = compareCylinder(diagnosis.baseline, train, validate);
+    const CylinderComparison after = compareCylinder(diagnosis.final, train, validate);
+    accepted = diagnosis.accepted.size();
+    keep(before.records.size() + after.records.size());
+  }
+  state.counters["accepted_effects"] = static_cast<double>(accepted);
+}
+BENCHMARK(BM_DiagnoseCylinder)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace swingsim::bench
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--convergence") == 0) {
+      try {
+        return swingsim::bench::runConvergenceStudy(argc, argv);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "swingsim_bench: %s\n", e.what());
+        return 1;
+      }
+    }
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Benchmarks of issue 7: build swingsim_bench (Release, build-perf/), run every benchmark
+# with repetitions, write the JSON to out/bench/bench.json and print medians and the ratios
+# the README reports (Simbody swing / reference swing, sweep on 1 core / all cores).
+#
+#   bash scripts/bench.sh [REPETITIONS]      (default 10; extra benchmark flags via BENCH_ARGS)
+#
+# Ratios come from one run, so machine load cancels; absolute medians depend on the machine
+# and its load, which the summary prints.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+reps="${1:-10}"
+build=build-perf
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+make -C "$build" -j2 swingsim_bench >/dev/null
+mkdir -p out/bench
+json=out/bench/bench.json
+"$build"/swingsim_bench --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
+  --benchmark_out="$json" --benchmark_out_format=json ${BENCH_ARGS:-} >/dev/null
+python3 - "$json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+ctx = d["context"]
+med = {b["run_name"]: b for b in d["benchmarks"] if b.get("aggregate_name") == "median"}
+def ms(name):
+    b = med[name]
+    t = b["real_time"]
+    return {"ns": t * 1e-6, "us": t * 1e-3, "ms": t, "s": t * 1e3}[b["time_unit"]]
+print(f"machine: {ctx['num_cpus']} x {ctx['mhz_per_cpu']} MHz, load average {', '.join(f'{x:.2f}' for x in ctx.get('load_avg', []))}, {ctx['date']}")
+print("| benchmark | median (ms, wall) | counters |")
+print("|---|---|---|")
+skip = {"name", "run_name", "run_type", "repetitions", "threads", "aggregate_name", "aggregate_unit", "real_time",
+        "cpu_time", "time_unit", "iterations", "family_index", "per_family_instance_index", "repetition_index"}
+for name, b in med.items():
+    counters = ", ".join(f"{k}={b[k]:.6g}" for k in b if k not in skip)
+    print(f"| {name} | {ms(name):.3f} | {counters} |")
+swing = ms("BM_SwingSimbody")
+ref = ms(next(k for k in med if k.startswith("BM_SwingReference/tol_exp:0")))
+ref6 = ms(next(k for k in med if k.startswith("BM_SwingReference/tol_exp:6")))
+print(f"\nSimbody swing / reference swing (same accuracy number): {swing / ref:.0f}x; / reference at 1e-6 (converged): {swing / ref6:.0f}x")
+allc = next(k for k in med if k.startswith("BM_SweepBurkett/jobs:0"))
+one = next(k for k in med if k.startswith("BM_SweepBurkett/jobs:1"))
+print(f"sweep (84 swings) on 1 core / all cores: {ms(one) / ms(allc):.2f}x")
+print(f"json: {sys.argv[1]}")
+EOF
