@@ -34,6 +34,12 @@ struct SwingOptions {
   /// there. Both give the same swing times to the converged tolerance (tests/swing/fast_path_test.cpp).
   bool simbodyEvents = false;
   double eventWindow = 1e-5;        ///< s, localization window of the plain path
+  /// Fast path: after the swing end the integrator restarts at accuracy x this factor for
+  /// the bounce window (about half the steps of a swing: the knee meets its hyperextension
+  /// stop there). The swing time, peak and clearance are found before the restart; the
+  /// bounce flag (the knee back above the zone, a margin of degrees) and the trajectory past
+  /// the end are integrated less tightly. 1 = no restart.
+  double bounceWindowAccuracyFactor = 10;
 };
 
 struct SwingEvent {

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/participant_loader.h"
+#include "knee/joint_stop.h"
 #include "swing/sweep.h"
 
 namespace swingsim {
@@ -80,6 +82,41 @@ TEST(FastPath, EventSearchAgreesWithSimbodyLocalizationAtTightAccuracy) {
     const SwingResult& b = plain.participants[0].points[k].result;
     EXPECT_NEAR(a.swingTime, b.swingTime, kEventAgreement);
     EXPECT_NEAR(a.peakKneeFlexion, b.peakKneeFlexion, 1e-7);
+  }
+}
+
+// The bundled knees never bounce, so the bounce flag (integrated at the looser
+// bounce-window accuracy on the fast path) is checked on knees that do: only the
+// hyperextension stop, no damping, for the participants whose hip stays in range.
+TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
+  for (const char* file : {"participants/p2.yaml", "participants/p4.yaml"}) {
+    const Participant p = loadParticipant(file);
+    for (double dissipation : {0.0, 0.2}) {  // s/rad
+      JointStopParams stop;
+      stop.dissipation = dissipation;
+      KneeLawSum knee;
+      knee.add(std::make_unique<JointStop>(stop));
+      SwingSetup setup;
+      setup.participant = p;
+      setup.knee = &knee;
+      SwingOptions plainOptions;
+      plainOptions.simbodyEvents = true;
+      plainOptions.accuracy = kTightAccuracy;
+      plainOptions.eventWindow = kTightEventWindow;
+      const SwingResult fast = simulateSwing(setup);
+      const SwingResult plain = simulateSwing(setup, plainOptions);
+      EXPECT_TRUE(plain.bounce) << file;
+      EXPECT_EQ(fast.bounce, plain.bounce) << file;
+      EXPECT_NEAR(fast.swingTime, plain.swingTime, kConvergedTol) << file;
+      ASSERT_EQ(fast.events.size(), plain.events.size()) << file;
+      // Events after the swing end come from the bounce window, integrated 10x less tightly.
+      constexpr double kWindowEventTol = 1e-3;  // s
+      for (std::size_t i = 0; i < fast.events.size(); ++i) {
+        EXPECT_EQ(fast.events[i].name, plain.events[i].name) << file;
+        const double tol = fast.events[i].time <= fast.swingTime ? kConvergedTol : kWindowEventTol;
+        EXPECT_NEAR(fast.events[i].time, plain.events[i].time, tol) << file << " " << fast.events[i].name;
+      }
+    }
   }
 }
 
