@@ -35,10 +35,18 @@ const LoadedParticipant& p1() {
 }
 
 // One P1 swing at the standard location through the full Simbody path (build the leg,
-// integrate, find the swing end, sample the trajectory), at the README's accuracy.
+// integrate, find the swing end, sample the trajectory). Argument: 0 = the converged
+// defaults the README and the CLI use (fast path, Runge-Kutta-Merson 1e-4); 1 = the plain
+// path (Simbody event handlers, as before issue 7) at the same accuracy; 2 = Runge-Kutta 3
+// at 1e-3, the cheapest converged setting of the convergence study.
 void BM_SwingSimbody(benchmark::State& state) {
   const SwingSetup setup = p1().setup();
-  const SwingOptions options;  // the converged defaults the README and the CLI use
+  SwingOptions options;
+  if (state.range(0) == 1) options.simbodyEvents = true;
+  if (state.range(0) == 2) {
+    options.integrator = SwingIntegrator::kRungeKutta3;
+    options.accuracy = 1e-3;
+  }
   SwingResult r;
   for (auto _ : state) {
     r = simulateSwing(setup, options);
@@ -48,7 +56,7 @@ void BM_SwingSimbody(benchmark::State& state) {
   state.counters["steps"] = r.steps;
   state.counters["realizations"] = r.realizations;
 }
-BENCHMARK(BM_SwingSimbody)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SwingSimbody)->ArgName("variant")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 // The same swing with the hand-derived 2-DOF reference (own Dormand-Prince), same
 // swing-end rule. Argument: -log10 of the Dormand-Prince relative and absolute tolerance;
