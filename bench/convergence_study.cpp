@@ -167,7 +167,7 @@ int runConvergenceStudy(int argc, char** argv) {
       const double n = static_cast<double>(configs.size());
       md << "| " << integratorName(integrator) << " | " << fmt("%.0e", accuracy) << " | "
          << (allOk ? fmt("%.4f", 1e3 * maxError) : std::string("failed")) << (maxError <= kConvergedTol ? " |" : " (not converged) |");
-      for (double e : perParticipant) md << " " << fmt("%.4f", 1e3 * e) << " |";
+      for (double e : perParticipant) md << " " << (std::isfinite(e) ? fmt("%.4f", 1e3 * e) : std::string("failed")) << " |";
       md << " " << fmt("%.0f", steps / n) << " | " << fmt("%.0f", realizations / n) << " | " << fmt("%.2f", 1e3 * seconds / n)
          << " |\n";
     }
@@ -204,7 +204,7 @@ int runConvergenceStudy(int argc, char** argv) {
           bounce = bounce || full.bounce;
         } catch (const std::exception&) {
         }
-        md << " " << (reference.ok ? fmt("%+.4f", 1e3 * (reference.swingTime - baseline[i])) : std::string("failed")) << " |";
+        md << " " << (reference.ok ? fmt("%+.1e", 1e3 * (reference.swingTime - baseline[i])) : std::string("failed")) << " |";
         maxIntegrationError = std::max(maxIntegrationError, std::fabs(fast.swingTime - reference.swingTime));
         realizations += fast.realizations;
       }
