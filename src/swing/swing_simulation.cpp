@@ -209,12 +209,12 @@ void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, doubl
 // converged to, and far above round-off in t.
 constexpr double kCrossingTimeTol = 1e-12;
 
-// Root of f on [0, 1] (f(0) and f(1) bracket it, not both zero), by the Illinois variant
-// of regula falsi, to kCrossingTimeTol / h in s.
+// Root of f on [lo, hi] within [0, 1] (f(lo) and f(hi) bracket it, not both zero), by the
+// Illinois variant of regula falsi, to kCrossingTimeTol / h in s.
 template <class F>
-double findRoot(const F& f, double h) {
-  double s0 = 0, s1 = 1, f0 = f(0.0), f1 = f(1.0);
-  if (f1 == 0) return 1;
+double findRoot(const F& f, double h, double lo = 0, double hi = 1) {
+  double s0 = lo, s1 = hi, f0 = f(lo), f1 = f(hi);
+  if (f1 == 0) return hi;
   int side = 0;
   for (int it = 0; it < 100 && (s1 - s0) * h > kCrossingTimeTol; ++it) {
     double s = (s0 * f1 - s1 * f0) / (f1 - f0);
@@ -239,29 +239,55 @@ double findRoot(const F& f, double h) {
 // The fast path's events: sign changes of the witnesses between two step ends, each
 // crossing found on the Hermite interpolant of the step (no realization, no State copy),
 // handled in time order. Events after the bounce window (rule.bounceWindow past the swing
-// end) are left out.
+// end) are left out. A thigh or knee angle that crosses its threshold and comes back
+// within one step (a thigh grazing its target at peak flexion) has the same witness sign
+// at both step ends; where the interpolated rate changes sign inside the step, the angle
+// at that extremum is checked too, so both crossings are found (Simbody's event handlers
+// see only step ends and miss them: 41 ms on one added-mass swing of P4).
 void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& rule, SwingLog& log) {
   const double h = b.t - a.t;
   if (!(h > 0)) return;
   const double target = rule.thighTargetFlexion, zone = rule.zoneOfStability;
   auto hipAt = [&](double s) { return calcHermite(a.hip, a.hipRate, b.hip, b.hipRate, h, s); };
   auto kneeAt = [&](double s) { return calcHermite(a.knee, a.kneeRate, b.knee, b.kneeRate, h, s); };
+  auto hipRateAt = [&](double s) { return calcHermite(a.hipRate, a.hipAcc, b.hipRate, b.hipAcc, h, s); };
   auto kneeRateAt = [&](double s) { return calcHermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, h, s); };
+  auto thighWitness = [&](double s) { return hipAt(s) - target; };
+  auto zoneWitness = [&](double s) { return zone - kneeAt(s); };
   enum Kind { kThigh, kPeak, kEnters, kLeaves };
   struct Crossing {
     double s;
     Kind kind;
   };
-  Crossing crossings[4];
+  Crossing crossings[5];
   int count = 0;
-  if (isRising(a.hip - target, b.hip - target))
-    crossings[count++] = {findRoot([&](double s) { return hipAt(s) - target; }, h), kThigh};
+  const double thigh0 = a.hip - target, thigh1 = b.hip - target;
+  if (isRising(thigh0, thigh1)) {
+    crossings[count++] = {findRoot(thighWitness, h), kThigh};
+  } else if (thigh0 < 0 && thigh1 < 0 && a.hipRate > 0 && b.hipRate < 0) {
+    const double top = findRoot(hipRateAt, h);  // the thigh's peak flexion inside the step
+    if (thighWitness(top) >= 0) crossings[count++] = {findRoot(thighWitness, h, 0, top), kThigh};
+  }
   if (isFalling(calcPeakWitness(a.knee, a.kneeRate, zone), calcPeakWitness(b.knee, b.kneeRate, zone)))
     crossings[count++] = {findRoot(kneeRateAt, h), kPeak};
-  if (isRising(zone - a.knee, zone - b.knee))
-    crossings[count++] = {findRoot([&](double s) { return zone - kneeAt(s); }, h), kEnters};
-  if (isFalling(zone - a.knee, zone - b.knee))
-    crossings[count++] = {findRoot([&](double s) { return zone - kneeAt(s); }, h), kLeaves};
+  const double zone0 = zone - a.knee, zone1 = zone - b.knee;
+  if (isRising(zone0, zone1)) {
+    crossings[count++] = {findRoot(zoneWitness, h), kEnters};
+  } else if (isFalling(zone0, zone1)) {
+    crossings[count++] = {findRoot(zoneWitness, h), kLeaves};
+  } else if (zone0 < 0 && zone1 < 0 && a.kneeRate < 0 && b.kneeRate > 0) {
+    const double bottom = findRoot(kneeRateAt, h);  // a knee minimum dipping into the zone
+    if (zoneWitness(bottom) > 0) {
+      crossings[count++] = {findRoot(zoneWitness, h, 0, bottom), kEnters};
+      crossings[count++] = {findRoot(zoneWitness, h, bottom, 1), kLeaves};
+    }
+  } else if (zone0 > 0 && zone1 > 0 && a.kneeRate > 0 && b.kneeRate < 0) {
+    const double top = findRoot(kneeRateAt, h);  // a knee maximum rising out of the zone
+    if (zoneWitness(top) < 0) {
+      crossings[count++] = {findRoot(zoneWitness, h, 0, top), kLeaves};
+      crossings[count++] = {findRoot(zoneWitness, h, top, 1), kEnters};
+    }
+  }
   for (int i = 1; i < count; ++i)
     for (int j = i; j > 0 && crossings[j].s < crossings[j - 1].s; --j) std::swap(crossings[j], crossings[j - 1]);
   for (int i = 0; i < count; ++i) {

@@ -9,6 +9,7 @@
 
 #include "io/participant_loader.h"
 #include "knee/joint_stop.h"
+#include "swing/knee_setup.h"
 #include "swing/sweep.h"
 
 namespace swingsim {
@@ -82,6 +83,30 @@ TEST(FastPath, EventSearchAgreesWithSimbodyLocalizationAtTightAccuracy) {
     const SwingResult& b = plain.participants[0].points[k].result;
     EXPECT_NEAR(a.swingTime, b.swingTime, kEventAgreement);
     EXPECT_NEAR(a.peakKneeFlexion, b.peakKneeFlexion, 1e-7);
+  }
+}
+
+// P4 at 0.140 m with 1 kg 0.10 m below the knee: the thigh peaks 0.015 deg above its
+// 20 deg target, up and back down within one integrator step. Sign changes at step ends
+// alone miss that crossing (the swing then "ends" 41 ms later, at the thigh's second
+// rise); the fast path checks the interpolated extremum.
+TEST(FastPath, ThighGrazingItsTargetWithinOneStepIsStillFound) {
+  const Participant p = loadParticipant("participants/p4.yaml");
+  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  SwingSetup setup;
+  setup.participant = p;
+  setup.knee = &knee;
+  setup.lowering = 0.140;
+  setup.added = {1.0, 0.10};
+  SwingOptions plainOptions;
+  plainOptions.simbodyEvents = true;
+  plainOptions.accuracy = kTightAccuracy;
+  plainOptions.eventWindow = kTightEventWindow;
+  const SwingResult plain = simulateSwing(setup, plainOptions);
+  for (double accuracy : {1e-3, 1e-4, 1e-5}) {
+    SwingOptions fastOptions;
+    fastOptions.accuracy = accuracy;
+    EXPECT_NEAR(simulateSwing(setup, fastOptions).swingTime, plain.swingTime, kConvergedTol) << accuracy;
   }
 }
 
