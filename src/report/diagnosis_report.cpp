@@ -235,6 +235,17 @@ void writeCandidateJson(JsonWriter& w, const EffectScore& c, int step, const std
   w.endObject().field("physical_sign", c.physical).field("where", c.where).endObject();
 }
 
+std::string formatStepOutcome(const std::string& chosen, const std::vector<std::string>& group) {
+  if (chosen.empty()) return "  -> no candidate passes the acceptance rule; stop\n";
+  std::string out = "  -> added " + chosen;
+  if (group.size() > 1) {
+    out += " (ambiguous with";
+    for (std::size_t g = 1; g < group.size(); ++g) out += " " + group[g];
+    out += ")";
+  }
+  return out + "\n";
+}
+
 std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderComparison& before,
                                 const CylinderComparison& after) {
   std::string out;
@@ -249,17 +260,7 @@ std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderCompa
     std::vector<const EffectScore*> scores;
     for (const auto& c : st.candidates) scores.push_back(&c);
     out += formatCandidateRanking(scores, "N", "%.1f");
-    if (st.chosen >= 0) {
-      out += "  -> added " + st.candidates[static_cast<std::size_t>(st.chosen)].effect;
-      if (st.group.size() > 1) {
-        out += " (ambiguous with";
-        for (std::size_t g = 1; g < st.group.size(); ++g) out += " " + st.group[g];
-        out += ")";
-      }
-      out += "\n";
-    } else {
-      out += "  -> no candidate passes the acceptance rule; stop\n";
-    }
+    out += formatStepOutcome(st.chosen >= 0 ? st.candidates[static_cast<std::size_t>(st.chosen)].effect : "", st.group);
   }
   out += "\naccepted effects, in order:\n";
   if (dg.accepted.empty()) out += "  none\n";

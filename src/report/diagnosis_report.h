@@ -35,6 +35,10 @@ class JsonWriter;
 std::string formatCandidateRanking(const std::vector<const EffectScore*>& candidates, const std::string& unit,
                                    const char* rmseFormat);
 std::string formatAcceptedEffect(const EffectScore& score, const std::string& sentence);
+/// The outcome line of one stepwise step: "  -> added X (ambiguous with Y Z)" when
+/// `chosen` names an effect, "  -> no candidate passes the acceptance rule; stop" when it
+/// is empty. `group` is the ambiguity group, chosen effect first.
+std::string formatStepOutcome(const std::string& chosen, const std::vector<std::string>& group);
 void writeCandidateJson(JsonWriter& w, const EffectScore& score, int step, const std::vector<std::string>& stems);
 
 /// The ranking of every step, the accepted effects with parameters, and the before/after

@@ -73,17 +73,7 @@ std::string formatSwingDiagnosisText(const SwingDiagnosis& dg, const SwingCompar
     std::vector<const EffectScore*> scores;
     for (const auto& c : st.candidates) scores.push_back(&c);
     out += formatCandidateRanking(scores, "deg", "%.3f");
-    if (st.chosen >= 0) {
-      out += "  -> added " + st.candidates[static_cast<std::size_t>(st.chosen)].effect;
-      if (st.group.size() > 1) {
-        out += " (ambiguous with";
-        for (std::size_t g = 1; g < st.group.size(); ++g) out += " " + st.group[g];
-        out += ")";
-      }
-      out += "\n";
-    } else {
-      out += "  -> no candidate passes the acceptance rule; stop\n";
-    }
+    out += formatStepOutcome(st.chosen >= 0 ? st.candidates[static_cast<std::size_t>(st.chosen)].effect : "", st.group);
   }
   out += "\naccepted effects, in order:\n";
   if (dg.accepted.empty()) out += "  none\n";

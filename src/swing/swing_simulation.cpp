@@ -176,6 +176,25 @@ StepEnd readStepEnd(const LegModel& leg, const State& s) {
           leg.getKneeFlexionRate(s), udot[0], udot[1], leg.calcHipMoment(s), leg.calcKneeMoment(s)};
 }
 
+// One output sample: joint state, moments, and the landmarks by planar kinematics.
+void appendSample(SwingTrajectory& tr, const LegGeometry& g, double hipHeight, double t, double hip, double knee,
+                  double hipRate, double kneeRate, double hipMoment, double kneeMoment) {
+  tr.time.push_back(t);
+  tr.hipFlexion.push_back(hip);
+  tr.kneeFlexion.push_back(knee);
+  tr.hipFlexionRate.push_back(hipRate);
+  tr.kneeFlexionRate.push_back(kneeRate);
+  tr.hipMoment.push_back(hipMoment);
+  tr.kneeMoment.push_back(kneeMoment);
+  const PlanarPose pose = calcPlanarPoseXY(g, hipHeight, hip, knee);
+  tr.kneeX.push_back(pose.knee[0]);
+  tr.kneeY.push_back(pose.knee[1]);
+  tr.ankleX.push_back(pose.ankle[0]);
+  tr.ankleY.push_back(pose.ankle[1]);
+  tr.toeX.push_back(pose.toe[0]);
+  tr.toeY.push_back(pose.toe[1]);
+}
+
 // Cubic Hermite on the angle (from angle and rate at both step ends) and on the rate
 // (from rate and acceleration): the samples cost no extra realization, so the integrator
 // chooses its steps by accuracy alone, not by the output interval.
@@ -187,20 +206,9 @@ void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, doubl
     const double s = std::clamp((nextSample - a.t) / h, 0.0, 1.0);
     const double hip = hermite(a.hip, a.hipRate, b.hip, b.hipRate, s);
     const double knee = hermite(a.knee, a.kneeRate, b.knee, b.kneeRate, s);
-    tr.time.push_back(nextSample);
-    tr.hipFlexion.push_back(hip);
-    tr.kneeFlexion.push_back(knee);
-    tr.hipFlexionRate.push_back(hermite(a.hipRate, a.hipAcc, b.hipRate, b.hipAcc, s));
-    tr.kneeFlexionRate.push_back(hermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, s));
-    tr.hipMoment.push_back(a.hipMoment + s * (b.hipMoment - a.hipMoment));
-    tr.kneeMoment.push_back(a.kneeMoment + s * (b.kneeMoment - a.kneeMoment));
-    const PlanarPose pose = calcPlanarPoseXY(g, hipHeight, hip, knee);
-    tr.kneeX.push_back(pose.knee[0]);
-    tr.kneeY.push_back(pose.knee[1]);
-    tr.ankleX.push_back(pose.ankle[0]);
-    tr.ankleY.push_back(pose.ankle[1]);
-    tr.toeX.push_back(pose.toe[0]);
-    tr.toeY.push_back(pose.toe[1]);
+    appendSample(tr, g, hipHeight, nextSample, hip, knee, hermite(a.hipRate, a.hipAcc, b.hipRate, b.hipAcc, s),
+                 hermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, s), a.hipMoment + s * (b.hipMoment - a.hipMoment),
+                 a.kneeMoment + s * (b.kneeMoment - a.kneeMoment));
     nextSample += interval;
   }
 }
@@ -363,20 +371,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                     &tr.kneeMoment, &tr.kneeX, &tr.kneeY, &tr.ankleX, &tr.ankleY, &tr.toeX, &tr.toeY})
       v->reserve(capacity);
     // The first sample, at toe-off.
-    const PlanarPose pose = calcPlanarPoseXY(geometry, hipHeight, previous.hip, previous.knee);
-    tr.time.push_back(0);
-    tr.hipFlexion.push_back(previous.hip);
-    tr.kneeFlexion.push_back(previous.knee);
-    tr.hipFlexionRate.push_back(previous.hipRate);
-    tr.kneeFlexionRate.push_back(previous.kneeRate);
-    tr.hipMoment.push_back(previous.hipMoment);
-    tr.kneeMoment.push_back(previous.kneeMoment);
-    tr.kneeX.push_back(pose.knee[0]);
-    tr.kneeY.push_back(pose.knee[1]);
-    tr.ankleX.push_back(pose.ankle[0]);
-    tr.ankleY.push_back(pose.ankle[1]);
-    tr.toeX.push_back(pose.toe[0]);
-    tr.toeY.push_back(pose.toe[1]);
+    appendSample(tr, geometry, hipHeight, 0.0, previous.hip, previous.knee, previous.hipRate, previous.kneeRate,
+                 previous.hipMoment, previous.kneeMoment);
     nextSample = options.sampleInterval;
   }
 
