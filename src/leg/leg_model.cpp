@@ -19,8 +19,6 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
                    const HipRange& hipRange, double hipHeight)
     : matter_(system_),
       forces_(system_),
-      thighLength_(g.thighLength),
-      shankLength_(g.shankLength),
       footLength_(g.footLength) {
   Force::UniformGravity(forces_, matter_, Vec3(0, -kGravity, 0));
 

@@ -64,7 +64,7 @@ class LegModel {
   SimTK::MobilizedBody::Weld foot_;
   const KneeForceElement* knee_ = nullptr;    // owned by forces_
   const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_
-  double thighLength_, shankLength_, footLength_;
+  double footLength_;  // m, ankle to toe (for calcPose)
 };
 
 }  // namespace swingsim
