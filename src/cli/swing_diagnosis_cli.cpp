@@ -111,7 +111,8 @@ int runSwingCompare(YamlMap& yaml, const Arguments& args) {
   std::printf("training residual (knee and hip): Ljung-Box Q = %.1f over %d lags (p = %.3g), %d lags outside the 99 %% band: %s\n",
               wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand,
               wt.pValue < s.alpha ? "structure left (not white)" : "consistent with white noise");
-  (void)args;
+  const std::string outDir = args.get("--out", "out/" + l.study.name);
+  for (const auto& p : writeSwingResidualPlots(outDir, "compare", cmp)) std::printf("plot: %s\n", p.c_str());
   return 0;
 }
 
@@ -160,9 +161,19 @@ int runSwingDiagnose(YamlMap& yaml, const Arguments& args, const std::vector<std
   std::string md = "# swingsim diagnose: " + l.study.name + "\n\nCommand: `swingsim diagnose";
   for (const auto& a : argv) md += " " + a;
   md += "`\n\n## Before\n\n```\n" + formatSwingComparisonTable(before) + "```\n\n## Ranking and result\n\n```\n" + report +
-        "```\n\n## After\n\n```\n" + formatSwingComparisonTable(after) + "```\n";
+        "```\n\n## After\n\n```\n" + formatSwingComparisonTable(after) + "```\n\n## Residual plots\n\n";
+  std::vector<std::string> plots;
+  for (const auto& p : writeSwingResidualPlots(outDir, "before", before)) {
+    md += "- before: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
+    plots.push_back(p);
+  }
+  for (const auto& p : writeSwingResidualPlots(outDir, "after", after)) {
+    md += "- after: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
+    plots.push_back(p);
+  }
   writeFileAtomic(outDir + "/report.md", md);
   std::printf("report: %s/report.md\n", outDir.c_str());
+  for (const auto& p : plots) std::printf("plot: %s\n", p.c_str());
   if (args.has("--json")) writeFileAtomic(args.get("--json"), formatSwingDiagnosisJson(dg, before, after));
   if (args.has("--save-model")) {
     std::string accepted;

@@ -74,29 +74,27 @@ std::string formatComparisonTable(const CylinderComparison& c) {
   return out;
 }
 
-std::string renderResidualSvg(const RecordComparison& r, const std::vector<std::string>& phaseNames, double plotSeconds,
-                              const std::string& title) {
-  const BenchData& d = *r.data;
+std::string renderResidualPanels(const ResidualPlotData& in, const std::string& title) {
   std::vector<SvgPlot> panels;
-  const ResidualSegments seg = {r.residual};
-  const double n = static_cast<double>(r.residual.size());
+  const ResidualSegments seg = {in.residual};
+  const double n = static_cast<double>(in.residual.size());
   const double ratio = calcEffectiveSampleSize(seg) / n;
   // 1. Residual vs time, phases shaded.
   {
     SvgPlot p(800, 300);
-    p.setTitle("residual vs time (first " + formatNumber(plotSeconds) + " s), phases shaded");
+    p.setTitle(in.timeTitle);
     p.setXLabel("time (s)");
-    p.setYLabel("measured - model (N)");
-    const double t0 = d.time.front(), tEnd = t0 + plotSeconds;
+    p.setYLabel(in.residualLabel);
+    const double t0 = in.time.front(), tEnd = t0 + in.plotSeconds;
     std::vector<double> t, e;
     std::size_t start = 0;
-    for (std::size_t i = 0; i < d.time.size() && d.time[i] <= tEnd; ++i) {
-      t.push_back(d.time[i]);
-      e.push_back(r.residual[i]);
-      const bool last = i + 1 == d.time.size() || d.time[i + 1] > tEnd || r.phase[i + 1] != r.phase[i];
+    for (std::size_t i = 0; i < in.time.size() && in.time[i] <= tEnd; ++i) {
+      t.push_back(in.time[i]);
+      e.push_back(in.residual[i]);
+      const bool last = i + 1 == in.time.size() || in.time[i + 1] > tEnd || in.phase[i + 1] != in.phase[i];
       if (last) {
-        const auto ph = static_cast<std::size_t>(r.phase[i]);
-        p.addBand(d.time[start], d.time[i], phaseNames[ph], kPhaseColors[ph % 5]);
+        const auto ph = static_cast<std::size_t>(in.phase[i]);
+        p.addBand(in.time[start], in.time[i], in.phaseNames[ph], kPhaseColors[ph % 5]);
         start = i + 1;
       }
     }
@@ -105,27 +103,13 @@ std::string renderResidualSvg(const RecordComparison& r, const std::vector<std::
     panels.push_back(p);
   }
   // 2-4. Binned mean residual with its 99 % band.
-  const std::vector<double> mm = [&] {
-    std::vector<double> v;
-    for (double x : d.position) v.push_back(1e3 * x);
-    return v;
-  }();
-  const std::vector<double> vv = [&] {
-    std::vector<double> v;
-    for (double x : d.velocity) v.push_back(1e3 * x);
-    return v;
-  }();
-  struct Var {
-    const std::vector<double>* values;
-    const char* label;
-  };
-  for (const Var& var : {Var{&mm, "piston position (mm)"}, Var{&vv, "piston velocity (mm/s)"},
-                         Var{&r.acceleration, "piston acceleration (m/s^2)"}}) {
-    const BinnedResidual b = calcBinnedResidual(*var.values, r.residual, kResidualBins, ratio);
+  for (const auto& var : in.variables) {
+    const BinnedResidual b = calcBinnedResidual(var.values, in.residual, kResidualBins, ratio);
     SvgPlot p(800, 240);
-    p.setTitle(std::string("binned mean residual vs ") + var.label + ", 99 % band (effective sample size)");
+    p.setTitle(var.title.empty() ? "binned mean residual vs " + var.label + ", 99 % band (effective sample size)"
+                                 : var.title);
     p.setXLabel(var.label);
-    p.setYLabel("mean residual (N)");
+    p.setYLabel(in.meanLabel);
     std::vector<double> lo, hi;
     for (std::size_t i = 0; i < b.mean.size(); ++i) {
       lo.push_back(b.mean[i] - b.halfWidth[i]);
@@ -140,7 +124,7 @@ std::string renderResidualSvg(const RecordComparison& r, const std::vector<std::
   }
   // 5. Autocorrelation with the 99 % band of white noise.
   {
-    const double dt = (d.time.back() - d.time.front()) / std::max(1.0, n - 1);
+    const double dt = (in.time.back() - in.time.front()) / std::max(1.0, n - 1);
     const int lags = std::max(1, std::min(static_cast<int>(kAcfSeconds / dt), static_cast<int>(n) - 2));
     const auto acf = calcAutocorrelation(seg, lags);
     std::vector<double> lagT;
@@ -156,6 +140,26 @@ std::string renderResidualSvg(const RecordComparison& r, const std::vector<std::
     panels.push_back(p);
   }
   return renderStackedSvg(panels, title);
+}
+
+std::string renderResidualSvg(const RecordComparison& r, const std::vector<std::string>& phaseNames, double plotSeconds,
+                              const std::string& title) {
+  const BenchData& d = *r.data;
+  ResidualPlotData in;
+  in.time = d.time;
+  in.residual = r.residual;
+  in.phase = r.phase;
+  in.phaseNames = phaseNames;
+  in.plotSeconds = plotSeconds;
+  in.timeTitle = "residual vs time (first " + formatNumber(plotSeconds) + " s), phases shaded";
+  in.residualLabel = "measured - model (N)";
+  in.meanLabel = "mean residual (N)";
+  std::vector<double> mm, vv;
+  for (double x : d.position) mm.push_back(1e3 * x);
+  for (double x : d.velocity) vv.push_back(1e3 * x);
+  in.variables = {{mm, "piston position (mm)", ""}, {vv, "piston velocity (mm/s)", ""},
+                  {r.acceleration, "piston acceleration (m/s^2)", ""}};
+  return renderResidualPanels(in, title);
 }
 
 std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix,

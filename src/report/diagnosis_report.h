@@ -3,6 +3,7 @@
 // tables overall and per phase, residual plots (residual vs time with phases shaded, binned
 // mean residual with its 99 % band against position, velocity and acceleration, residual
 // autocorrelation with its 99 % band), the candidate ranking, and the JSON of issue 5.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,28 @@ namespace swingsim {
 /// Metrics per file (ME, RMSE, R^2 %) and per phase (RMSE, share of squared error, share
 /// of samples), as printed by `compare`.
 std::string formatComparisonTable(const CylinderComparison& comparison);
+
+/// The inputs of the residual panels, for any diagnosis kind (cylinder, swing).
+struct ResidualPlotData {
+  std::vector<double> time;              ///< s
+  std::vector<double> residual;          ///< measured - model, in the unit of the labels
+  std::vector<int> phase;                ///< index into phaseNames per sample
+  std::vector<std::string> phaseNames;
+  double plotSeconds = std::numeric_limits<double>::infinity();  ///< span shown against time
+  std::string timeTitle;                 ///< title of the residual-vs-time panel
+  std::string residualLabel;             ///< its y label with unit, e.g. "measured - model (N)"
+  std::string meanLabel;                 ///< y label of the binned panels, e.g. "mean residual (N)"
+  struct Variable {
+    std::vector<double> values;          ///< one per sample
+    std::string label;                   ///< with unit; the x label of its panel
+    std::string title;                   ///< panel title; empty: "binned mean residual vs <label>, 99 % band ..."
+  };
+  std::vector<Variable> variables;       ///< binned against (position, velocity, acceleration)
+};
+
+/// Stacked panels: residual vs time with phases shaded, binned mean residual with its 99 %
+/// band against each variable, residual autocorrelation with the 99 % band 2.576 / sqrt(n).
+std::string renderResidualPanels(const ResidualPlotData& data, const std::string& title);
 
 /// One SVG with five stacked panels for one record (see the header comment). Residuals in N;
 /// the first `plotSeconds` of the record are shown against time.

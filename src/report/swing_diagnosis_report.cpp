@@ -1,8 +1,11 @@
 #include "report/swing_diagnosis_report.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "io/json_writer.h"
+#include "io/output_files.h"
+#include "leg/leg_parameters.h"
 #include "report/diagnosis_report.h"
 
 namespace swingsim {
@@ -56,6 +59,49 @@ std::string formatSwingComparisonTable(const SwingComparison& c) {
     }
   }
   return out;
+}
+
+std::string renderSwingResidualSvg(const SwingRecordComparison& r, const std::vector<std::string>& phaseNames,
+                                   const std::string& title) {
+  const SwingRecord& d = *r.data;
+  ResidualPlotData in;
+  in.time = d.time;
+  in.residual = r.kneeResidual;
+  in.phase = r.phase;
+  in.phaseNames = phaseNames;
+  in.timeTitle = "knee residual vs time from toe-off (whole swing), swing phases shaded";
+  in.residualLabel = "measured - model knee flexion (deg)";
+  in.meanLabel = "mean knee residual (deg)";
+  std::vector<double> knee, accel(r.kneeRate.size(), 0.0);
+  // All three variables are the model's: binning on the measured (noisy) angle would sort the
+  // measurement noise into the end bins near the stop and show a mean residual that is not
+  // there. The acceleration is by central differences of the model rate (one-sided at the
+  // ends); the measured angle is too noisy to differentiate twice.
+  for (double x : r.predictedKnee) knee.push_back(x * kRadToDeg);
+  const std::size_t n = std::min(r.kneeRate.size(), d.time.size());
+  for (std::size_t i = 0; n > 1 && i < n; ++i) {
+    const std::size_t lo = i == 0 ? 0 : i - 1, hi = i + 1 == n ? n - 1 : i + 1;
+    accel[i] = (r.kneeRate[hi] - r.kneeRate[lo]) / (d.time[hi] - d.time[lo]);
+  }
+  const std::string band = ", 99 % band (effective sample size)";
+  in.variables = {{knee, "knee flexion, model (deg)", "mean knee residual vs model knee flexion" + band},
+                  {r.kneeRate, "knee flexion rate, model (deg/s)", "mean knee residual vs model knee flexion rate" + band},
+                  {accel, "knee angular acceleration, model (deg/s^2)",
+                   "mean knee residual vs model knee acceleration" + band}};
+  return renderResidualPanels(in, title);
+}
+
+std::vector<std::string> writeSwingResidualPlots(const std::string& outDir, const std::string& prefix,
+                                                 const SwingComparison& c) {
+  std::vector<std::string> paths;
+  for (const auto& r : c.records) {
+    const std::string path = outDir + "/" + prefix + "-" + r.data->stem + "-residual.svg";
+    writeFileAtomic(path, renderSwingResidualSvg(r, c.phaseNames,
+                                                 prefix + ": " + r.data->stem + (r.training ? " (train)" : " (validate)") +
+                                                     fmt(", knee RMSE %.2f deg", r.knee.rmse)));
+    paths.push_back(path);
+  }
+  return paths;
 }
 
 std::string formatSwingDiagnosisText(const SwingDiagnosis& dg, const SwingComparison& before,

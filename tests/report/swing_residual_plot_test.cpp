@@ -1,0 +1,57 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fit/swing_diagnosis.h"
+#include "fit/synthetic_swing.h"
+#include "io/participant_loader.h"
+#include "report/swing_diagnosis_report.h"
+
+namespace swingsim {
+namespace {
+
+const std::string kRoot = SWINGSIM_SOURCE_DIR;
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + what.size())) ++n;
+  return n;
+}
+
+TEST(SwingResidualPlot, FivePanelsWithTitlesAxisUnitsAndSwingPhaseBands) {
+  SwingBase base;
+  base.participant = loadParticipant(kRoot + "/participants/p1.yaml");
+  base.knee = loadKneeModel(kRoot + "/models/damping-table-default.yaml");
+  // Data with a hidden viscous damper, compared with the plain model: a structured residual.
+  SwingModelParams truth = addSwingEffect({}, "knee_viscous_damping", 0);
+  truth.effects.knee.viscousDamping = 0.3;
+  const std::vector<SwingRecord> train = {makeSyntheticSwing(base, truth, {"normal", 1.0, 1.0}, 0.5, 7)};
+  const SwingComparison cmp = compareSwing(base, SwingModelParams{}, train, {});
+  ASSERT_EQ(cmp.records.size(), 1u);
+  const std::string svg = renderSwingResidualSvg(cmp.records[0], cmp.phaseNames, "compare: normal (train)");
+
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("compare: normal (train)"), std::string::npos);
+  // The five panel titles.
+  EXPECT_NE(svg.find("knee residual vs time from toe-off (whole swing), swing phases shaded"), std::string::npos);
+  EXPECT_NE(svg.find("mean knee residual vs model knee flexion, 99 % band"), std::string::npos);
+  EXPECT_NE(svg.find("mean knee residual vs model knee flexion rate, 99 % band"), std::string::npos);
+  EXPECT_NE(svg.find("mean knee residual vs model knee acceleration, 99 % band"), std::string::npos);
+  // Axis labels with units (x of the binned panels).
+  EXPECT_NE(svg.find("knee flexion, model (deg)"), std::string::npos);
+  EXPECT_NE(svg.find("knee flexion rate, model (deg/s)"), std::string::npos);
+  EXPECT_NE(svg.find("knee angular acceleration, model (deg/s^2)"), std::string::npos);
+  EXPECT_NE(svg.find("residual autocorrelation (white noise stays inside the 99 % band)"), std::string::npos);
+  // Axis labels with units.
+  EXPECT_NE(svg.find("time (s)"), std::string::npos);
+  EXPECT_NE(svg.find("measured - model knee flexion (deg)"), std::string::npos);
+  EXPECT_EQ(count(svg, "mean knee residual (deg)"), 3u);
+  EXPECT_NE(svg.find("lag (s)"), std::string::npos);
+  EXPECT_NE(svg.find("autocorrelation (-)"), std::string::npos);
+  // Every swing phase of the model's knee is shaded and named in the legend.
+  for (const auto& name : swingPhaseNames()) EXPECT_NE(svg.find(name), std::string::npos) << name;
+  EXPECT_NE(svg.find("99 % band"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace swingsim
