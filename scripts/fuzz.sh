@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
-all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz csv_fuzz)
+all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz diagnosis_study_fuzz csv_fuzz)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
 
@@ -46,6 +46,7 @@ seed participant_fuzz participants/*.yaml
 seed knee_model_fuzz models/*.yaml
 seed sweep_study_fuzz studies/burkett2004.yaml
 seed cylinder_study_fuzz studies/mauch2014.yaml studies/mauch2014-bench.yaml
+seed diagnosis_study_fuzz studies/diagnose-demo-cylinder.yaml studies/diagnose-demo-swing.yaml
 mkdir -p build-fuzz/seeds/csv_fuzz
 for f in studies/data/mauch2014/*.csv tests/data/*.csv; do
   [ -f "$f" ] || continue

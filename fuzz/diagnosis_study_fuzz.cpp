@@ -1,0 +1,19 @@
+// libFuzzer target: compare/diagnose study YAML (studies/diagnose-demo-*.yaml), both kinds,
+// read as the CLI reads them (kind first, then the kind's reader, then unknown keys).
+#include "fuzz_common.h"
+#include "io/diagnosis_study.h"
+#include "io/yaml_reader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace swingsim;
+  fuzz::expectOnlyInputErrors([&] {
+    YamlMap yaml = YamlMap::loadString(fuzz::asText(data, size), fuzz::sourcePath("studies/fuzz.yaml"));
+    if (yaml.getChoice("kind", {"cylinder-diagnosis", "swing-diagnosis"}, "") == "swing-diagnosis") {
+      readSwingDiagnosisStudy(yaml);
+    } else {
+      readCylinderDiagnosisStudy(yaml);
+    }
+    yaml.finish();
+  });
+  return 0;
+}
