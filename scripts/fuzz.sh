@@ -19,16 +19,7 @@ targets=("$@")
 
 # clang and its sanitizer/fuzzer runtimes (Debian 12: clang-14, libclang-rt-14-dev).
 packages=(clang libclang-rt-dev build-essential cmake libsimbody-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "installing: ${missing[*]}" >&2
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+bash scripts/install-packages.sh "${packages[@]}"
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSWINGSIM_FUZZ=ON -DSWINGSIM_BUILD_BENCH=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
