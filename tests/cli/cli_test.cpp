@@ -7,26 +7,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "run_swingsim.h"
+
 namespace {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int code;
-  std::string output;  // stdout and stderr together
-};
-
-CliRun run(const std::string& args) {
-  const std::string cmd = std::string(SWINGSIM_BINARY) + " " + args + " 2>&1";
-  CliRun r{0, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) r.output += buf;
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using swingsim::testing::CliRun;
+CliRun run(const std::string& args) { return swingsim::testing::runSwingsim(args); }
 
 fs::path freshDir(const std::string& name) {
   fs::path d = fs::temp_directory_path() / ("swingsim_cli_test_" + name);

@@ -8,25 +8,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "run_swingsim.h"
+
 namespace {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int code;
-  std::string output;  // stdout and stderr
-};
-
-RunResult run(const std::string& args) {
-  const std::string cmd = std::string(SWINGSIM_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (pipe && fgets(buf.data(), buf.size(), pipe)) out += buf.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using RunResult = swingsim::testing::CliRun;
+RunResult run(const std::string& args) { return swingsim::testing::runSwingsim(args); }
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);

@@ -12,6 +12,7 @@
 #include <limits>
 #include <sstream>
 
+#include "../cli/run_swingsim.h"
 #include "fit/bench_data.h"
 #include "fit/cylinder_fit.h"
 #include "io/input_error.h"
@@ -104,14 +105,11 @@ TEST(FailingRuns, CliExitsOneAndWritesNothing) {
   text.replace(text.find("flexion_amplitude_Nm: 30"), 24, "flexion_amplitude_Nm: 0");
   text.replace(text.find("../models"), 9, fs::absolute("models").string());
   std::ofstream(dir / "weak.yaml") << text;
-  const std::string cmd = std::string(SWINGSIM_BINARY) + " simulate " + (dir / "weak.yaml").string() + " --out " +
-                          (dir / "out").string() + " --json " + (dir / "r.json").string() + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string output;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) output += buf;
-  const int status = pclose(pipe);
-  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << output;
+  const swingsim::testing::CliRun run =
+      swingsim::testing::runSwingsim(std::string("simulate ") + (dir / "weak.yaml").string() + " --out " +
+                          (dir / "out").string() + " --json " + (dir / "r.json").string());
+  const std::string& output = run.output;
+  EXPECT_EQ(run.code, 1) << output;
   EXPECT_THAT(output, HasSubstr("swingsim: P1 at lowering 0 m: the swing did not end"));
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));
@@ -156,14 +154,11 @@ TEST(FailingRuns, FitCliWithSingularRegressionExitsOneAndWritesNothing) {
   }
   std::ofstream(dir / "study.yaml") << "kind: cylinder-fit\nname: far\nmodels: [" << fs::absolute("models/mauch-4phase.yaml").string()
                                     << "]\ntrain: [far.csv]\n";
-  const std::string cmd = std::string(SWINGSIM_BINARY) + " fit " + (dir / "study.yaml").string() + " --out " +
-                          (dir / "out").string() + " --json " + (dir / "r.json").string() + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string output;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) output += buf;
-  const int status = pclose(pipe);
-  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << output;
+  const swingsim::testing::CliRun run =
+      swingsim::testing::runSwingsim(std::string("fit ") + (dir / "study.yaml").string() + " --out " +
+                          (dir / "out").string() + " --json " + (dir / "r.json").string());
+  const std::string& output = run.output;
+  EXPECT_EQ(run.code, 1) << output;
   EXPECT_THAT(output, HasSubstr("swingsim: cannot fit the 4-phase model: phase 2 in "));
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));

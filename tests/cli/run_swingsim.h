@@ -1,0 +1,27 @@
+#pragma once
+// Test support: run the real `swingsim` binary and capture what it printed.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace swingsim::testing {
+
+struct CliRun {
+  int code;            ///< exit code, -1 if the process did not exit normally
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `swingsim ARGS` (arguments as one shell string) and waits for it.
+inline CliRun runSwingsim(const std::string& args) {
+  const std::string cmd = std::string(SWINGSIM_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (pipe && std::fgets(buf.data(), buf.size(), pipe)) out += buf.data();
+  const int status = pipe ? pclose(pipe) : -1;
+  return {status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+}  // namespace swingsim::testing
