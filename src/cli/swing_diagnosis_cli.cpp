@@ -142,7 +142,7 @@ int runSwingDiagnose(YamlMap& yaml, const Arguments& args, const std::vector<std
       setup.participant.initial.hipFlexion = rc.hipPose;
       setup.participant.initial.kneeFlexion = rc.kneePose;
       setup.knee = &law;
-      const SwingResult res = simulateSwing(setup);
+      const SwingResult res = simulateSwing(setup, makeSimbodyIntegratorOptions());
       const auto& tr = res.trajectory;
       std::size_t j = 0;
       for (std::size_t i = 0; i < rc.data->time.size(); ++i) {

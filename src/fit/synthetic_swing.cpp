@@ -19,7 +19,9 @@ SwingRecord makeSyntheticSwing(const SwingBase& base, const SwingModelParams& tr
   SwingSetup setup;
   setup.participant = applyParticipantEffects(measured, truth.effects);
   setup.knee = &law;
-  SwingOptions options;
+  // Simbody's own integrator: the diagnosis refits on the reference swing's Dormand-Prince,
+  // so the truth shares neither equations nor integration code with it.
+  SwingOptions options = makeSimbodyIntegratorOptions();
   options.sampleInterval = sampleInterval;
   const SwingResult result = simulateSwing(setup, options);
   const auto& tr = result.trajectory;

@@ -1,5 +1,7 @@
 #include "knee/damping_table.h"
 
+#include "knee/monotone_cubic.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -21,14 +23,7 @@ DampingTable::DampingTable(DampingTableParams params) : p_(std::move(params)) {
 }
 
 double DampingTable::calcTableMoment(double flexion) const {
-  const auto& x = p_.flexion;
-  const auto& y = p_.moment;
-  if (flexion <= x.front()) return y.front();
-  if (flexion >= x.back()) return y.back();
-  auto it = std::upper_bound(x.begin(), x.end(), flexion);
-  std::size_t i = static_cast<std::size_t>(it - x.begin());
-  double s = (flexion - x[i - 1]) / (x[i] - x[i - 1]);
-  return y[i - 1] + s * (y[i] - y[i - 1]);
+  return interpolateMonotoneCubic(p_.flexion, p_.moment, flexion, MonotoneCubicEnds::kFlat);
 }
 
 double DampingTable::calcMoment(const KneeKinematics& knee, const double*) const {

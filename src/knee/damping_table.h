@@ -27,8 +27,11 @@ struct DampingTableParams {
   double smoothingRate = 0.5;  ///< rad/s, kConstant only
 };
 
-/// Resisting moment from a damping table, linearly interpolated in flexion and held
-/// constant outside the measured range. Throws std::invalid_argument on bad parameters.
+/// Resisting moment from a damping table: a monotone cubic in flexion (monotone_cubic.h,
+/// flat ends) held constant outside the measured range. A dynamometer samples a smooth
+/// curve; the C1 interpolant has no kinks at the samples, where a linear one made the
+/// integrator reject steps and the swing time converge erratically with the accuracy (README,
+/// Convergence study). Throws std::invalid_argument on bad parameters.
 class DampingTable final : public KneeLaw {
  public:
   explicit DampingTable(DampingTableParams params);

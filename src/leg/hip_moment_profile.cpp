@@ -1,5 +1,7 @@
 #include "leg/hip_moment_profile.h"
 
+#include "knee/monotone_cubic.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,37 +12,30 @@ namespace swingsim {
 namespace {
 constexpr double kPiLocal = 3.14159265358979323846;
 
-// Fritsch-Carlson monotone cubic: no overshoot between dynamometer samples.
-double interpolateMonotone(const std::vector<double>& x, const std::vector<double>& y, double t) {
-  const std::size_t n = x.size();
-  if (t <= x.front()) return y.front();
-  if (t >= x.back()) return y.back();
-  std::size_t i = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), t) - x.begin()) - 1;
-  auto secant = [&](std::size_t k) { return (y[k + 1] - y[k]) / (x[k + 1] - x[k]); };
-  auto tangent = [&](std::size_t k) {
-    if (k == 0) return secant(0);
-    if (k == n - 1) return secant(n - 2);
-    double a = secant(k - 1), b = secant(k);
-    if (a * b <= 0) return 0.0;
-    return 3 * (a + b) / ((2 * b + a) / a + (b + 2 * a) / b);  // weighted harmonic mean
-  };
-  const double h = x[i + 1] - x[i];
-  const double s = (t - x[i]) / h;
-  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
-  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
-  return h00 * y[i] + h10 * h * tangent(i) + h01 * y[i + 1] + h11 * h * tangent(i + 1);
-}
 }  // namespace
 
 double HipMomentProfile::calcMoment(double time) const {
   const double t = time / timeScale;
   const double gain = 1.0 / (timeScale * timeScale);
-  if (kind == Kind::kTable) return gain * interpolateMonotone(times, moments, t);
+  if (kind == Kind::kTable) return gain * interpolateMonotoneCubic(times, moments, t, MonotoneCubicEnds::kSecant);
   if (t < 0) return 0;
   if (t < flexionDuration) return gain * flexionAmplitude * std::sin(kPiLocal * t / flexionDuration);
   const double te = t - flexionDuration;
   if (te < extensionDuration) return -gain * extensionAmplitude * std::sin(kPiLocal * te / extensionDuration);
   return 0;
+}
+
+std::vector<double> HipMomentProfile::calcBreakpoints() const {
+  std::vector<double> t;
+  if (kind == Kind::kTable) {
+    if (!times.empty()) t = {times.front(), times.back()};
+  } else {
+    t = {flexionDuration, flexionDuration + extensionDuration};
+  }
+  std::vector<double> scaled;
+  for (double v : t)
+    if (v * timeScale > 0) scaled.push_back(v * timeScale);
+  return scaled;
 }
 
 void HipMomentProfile::validate() const {

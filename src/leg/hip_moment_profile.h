@@ -32,6 +32,10 @@ struct HipMomentProfile {
 
   /// Hip moment at time t (s), N m, positive = flexion.
   double calcMoment(double t) const;
+  /// Times (s, increasing, > 0) where the moment's time derivative jumps: the ends of the
+  /// half-sines, or the first and last table samples (the monotone cubic is C1 between).
+  /// An integrator that ends a step there keeps its order (Hairer I, Sec. II.6).
+  std::vector<double> calcBreakpoints() const;
   /// Throws std::invalid_argument with a description if the profile is unusable.
   void validate() const;
   std::string describe() const;

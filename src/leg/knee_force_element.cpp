@@ -1,5 +1,6 @@
 #include "leg/knee_force_element.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace swingsim {
@@ -7,11 +8,12 @@ namespace swingsim {
 using namespace SimTK;
 
 KneeForceElement::KneeForceElement(const GeneralForceSubsystem& forces, const SimbodyMatterSubsystem& matter,
-                                   const MobilizedBody& shank, const KneeLaw& law)
+                                   const MobilizedBody& shank, const KneeLaw& law, bool trackWork)
     : matter_(matter),
       subsystem_(forces.getMySubsystemIndex()),
       shank_(shank.getMobilizedBodyIndex()),
-      law_(law.clone()) {}
+      law_(law.clone()),
+      trackWork_(trackWork) {}
 
 KneeKinematics KneeForceElement::kinematics(const State& s) const {
   const MobilizedBody& shank = matter_.getMobilizedBody(shank_);
@@ -19,12 +21,15 @@ KneeKinematics KneeForceElement::kinematics(const State& s) const {
 }
 
 void KneeForceElement::realizeTopology(State& s) const {
-  Vector z(law_->numStates() + 1, 0.0);
+  const int nz = law_->numStates() + (trackWork_ ? 1 : 0);
+  if (nz == 0) return;
+  Vector z(nz, 0.0);
   if (law_->numStates() > 0) law_->initialStates(&z[0]);
   firstZ_ = s.allocateZ(subsystem_, z);
 }
 
 const double* KneeForceElement::getLawStates(const State& s) const {
+  if (law_->numStates() == 0) return nullptr;  // laws without states do not read z
   return &s.getZ(subsystem_)[firstZ_];
 }
 
@@ -33,6 +38,7 @@ double KneeForceElement::calcKneeMoment(const State& s) const {
 }
 
 double KneeForceElement::getWork(const State& s) const {
+  if (!trackWork_) throw std::logic_error("KneeForceElement: built without work tracking");
   return s.getZ(subsystem_)[firstZ_ + law_->numStates()];
 }
 
@@ -42,30 +48,38 @@ void KneeForceElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<V
 }
 
 void KneeForceElement::realizeDynamics(const State& s) const {
+  if (law_->numStates() == 0 && !trackWork_) return;
   const KneeKinematics knee = kinematics(s);
   const double* z = getLawStates(s);
   Vector& zdot = s.updZDot(subsystem_);
   const int n = law_->numStates();
   if (n > 0) law_->calcStateDerivatives(knee, z, &zdot[firstZ_]);
-  zdot[firstZ_ + n] = law_->calcMoment(knee, z) * knee.flexionRate;  // power, W
+  if (trackWork_) zdot[firstZ_ + n] = law_->calcMoment(knee, z) * knee.flexionRate;  // power, W
 }
 
 HipDriveElement::HipDriveElement(const GeneralForceSubsystem& forces, const SimbodyMatterSubsystem& matter,
-                                 const MobilizedBody& thigh, HipMomentProfile profile, JointStopParams range)
+                                 const MobilizedBody& thigh, HipMomentProfile profile, JointStopParams range,
+                                 bool trackWork)
     : matter_(matter),
       subsystem_(forces.getMySubsystemIndex()),
       thigh_(thigh.getMobilizedBodyIndex()),
       profile_(std::move(profile)),
-      range_(range) {}
+      range_(range),
+      trackWork_(trackWork) {}
 
-void HipDriveElement::realizeTopology(State& s) const { workZ_ = s.allocateZ(subsystem_, Vector(1, 0.0)); }
+void HipDriveElement::realizeTopology(State& s) const {
+  if (trackWork_) workZ_ = s.allocateZ(subsystem_, Vector(1, 0.0));
+}
 
 double HipDriveElement::calcHipMoment(const State& s) const {
   const MobilizedBody& thigh = matter_.getMobilizedBody(thigh_);
   return profile_.calcMoment(s.getTime()) + range_.calcJointMoment(thigh.getOneQ(s, 0), thigh.getOneU(s, 0));
 }
 
-double HipDriveElement::getWork(const State& s) const { return s.getZ(subsystem_)[workZ_]; }
+double HipDriveElement::getWork(const State& s) const {
+  if (!trackWork_) throw std::logic_error("HipDriveElement: built without work tracking");
+  return s.getZ(subsystem_)[workZ_];
+}
 
 void HipDriveElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&,
                                 Vector& mobilityForces) const {
@@ -73,6 +87,7 @@ void HipDriveElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Ve
 }
 
 void HipDriveElement::realizeDynamics(const State& s) const {
+  if (!trackWork_) return;
   s.updZDot(subsystem_)[workZ_] = calcHipMoment(s) * matter_.getMobilizedBody(thigh_).getOneU(s, 0);
 }
 

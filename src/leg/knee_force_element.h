@@ -1,8 +1,9 @@
 #pragma once
 // Simbody adapters: thin Force::Custom implementations over the pure laws of src/knee
 // and the hip drive. Each reads its joint's q and u, calls its law, applies a mobility
-// moment, and integrates the work it does as a Z state (for energy bookkeeping). The
-// knee adapter also integrates the law's own states (the Mauch S2 latch).
+// moment, and optionally integrates the work it does as a Z state (energy bookkeeping;
+// off in swings, where nothing reads it). The knee adapter also integrates the law's own
+// states (the Mauch S2 latch).
 #include <Simbody.h>
 
 #include <memory>
@@ -17,7 +18,7 @@ namespace swingsim {
 class KneeForceElement : public SimTK::Force::Custom::Implementation {
  public:
   KneeForceElement(const SimTK::GeneralForceSubsystem& forces, const SimTK::SimbodyMatterSubsystem& matter,
-                   const SimTK::MobilizedBody& shank, const KneeLaw& law);
+                   const SimTK::MobilizedBody& shank, const KneeLaw& law, bool trackWork = true);
   void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                  SimTK::Vector_<SimTK::Vec3>& particleForces, SimTK::Vector& mobilityForces) const override;
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
@@ -27,6 +28,7 @@ class KneeForceElement : public SimTK::Force::Custom::Implementation {
   /// Knee moment (N m, + = flexion) in state s (realized to Velocity).
   double calcKneeMoment(const SimTK::State& s) const;
   /// Work done by the knee moment on the leg since toe-off, J (negative: dissipated).
+  /// Throws std::logic_error unless built with trackWork.
   double getWork(const SimTK::State& s) const;
   /// The law's own states (e.g. S2), numStates() values.
   const double* getLawStates(const SimTK::State& s) const;
@@ -38,6 +40,7 @@ class KneeForceElement : public SimTK::Force::Custom::Implementation {
   SimTK::SubsystemIndex subsystem_;
   SimTK::MobilizedBodyIndex shank_;
   std::unique_ptr<KneeLaw> law_;
+  bool trackWork_;
   mutable SimTK::ZIndex firstZ_;  // law states, then work; set once at topology
 };
 
@@ -45,7 +48,8 @@ class KneeForceElement : public SimTK::Force::Custom::Implementation {
 class HipDriveElement : public SimTK::Force::Custom::Implementation {
  public:
   HipDriveElement(const SimTK::GeneralForceSubsystem& forces, const SimTK::SimbodyMatterSubsystem& matter,
-                  const SimTK::MobilizedBody& thigh, HipMomentProfile profile, JointStopParams range);
+                  const SimTK::MobilizedBody& thigh, HipMomentProfile profile, JointStopParams range,
+                  bool trackWork = true);
   void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                  SimTK::Vector_<SimTK::Vec3>& particleForces, SimTK::Vector& mobilityForces) const override;
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
@@ -54,7 +58,7 @@ class HipDriveElement : public SimTK::Force::Custom::Implementation {
 
   /// Total hip moment (profile + range stop), N m, + = flexion.
   double calcHipMoment(const SimTK::State& s) const;
-  /// Work done at the hip since toe-off, J.
+  /// Work done at the hip since toe-off, J. Throws std::logic_error unless built with trackWork.
   double getWork(const SimTK::State& s) const;
 
  private:
@@ -63,6 +67,7 @@ class HipDriveElement : public SimTK::Force::Custom::Implementation {
   SimTK::MobilizedBodyIndex thigh_;
   HipMomentProfile profile_;
   JointStop range_;
+  bool trackWork_;
   mutable SimTK::ZIndex workZ_;
 };
 

@@ -16,7 +16,7 @@ MassProperties segmentMassProperties(double m, const Vec3& com, double izz) {
 }  // namespace
 
 LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment,
-                   const HipRange& hipRange, double hipHeight)
+                   const HipRange& hipRange, double hipHeight, bool trackWork)
     : matter_(system_),
       forces_(system_),
       footLength_(g.footLength) {
@@ -51,10 +51,10 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
   JointStopParams range;
   range.lower = hipRange.minFlexion;
   range.upper = hipRange.maxFlexion;
-  auto* kneeImpl = new KneeForceElement(forces_, matter_, shank_, knee);
+  auto* kneeImpl = new KneeForceElement(forces_, matter_, shank_, knee, trackWork);
   knee_ = kneeImpl;
   Force::Custom(forces_, kneeImpl);
-  auto* hipImpl = new HipDriveElement(forces_, matter_, thigh_, hipMoment, range);
+  auto* hipImpl = new HipDriveElement(forces_, matter_, thigh_, hipMoment, range, trackWork);
   hipDrive_ = hipImpl;
   Force::Custom(forces_, hipImpl);
 

@@ -22,9 +22,11 @@ struct LegPose {
 
 class LegModel {
  public:
-  /// Builds the system. `hipHeight` (m) places the hip above the ground.
+  /// Builds the system. `hipHeight` (m) places the hip above the ground. `trackWork`: also
+  /// integrate the work the knee and the hip do (two Z states, for energy bookkeeping);
+  /// off, getKneeWork and getHipWork throw std::logic_error.
   LegModel(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
-           const HipRange& hipRange, double hipHeight);
+           const HipRange& hipRange, double hipHeight, bool trackWork = true);
   LegModel(const LegModel&) = delete;
   LegModel& operator=(const LegModel&) = delete;
 

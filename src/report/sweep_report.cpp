@@ -404,7 +404,8 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     md += "- Toe clearance: hip height = 0.530 x standing height (Winter's anthropometry, greater trochanter); the "
           "lowest of ankle and toe during swing. A negative value means the foot would strike the ground with the "
           "hip at standing height (in running the hip is higher in flight, so this is conservative).\n";
-    md += "- Integrator: Simbody Runge-Kutta-Merson, accuracy " + fmt("%g", study.swing.accuracy) + ".\n";
+    md += std::string("- Integrator: ") + integratorName(study.swing.integrator) + ", accuracy " +
+          fmt("%g", study.swing.accuracy) + " (converged to 0.1 ms of swing time: README, Convergence study).\n";
   }
   files["report.md"] = md;
   return files;

@@ -29,10 +29,17 @@ constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 3270041
                  d4 = -10690763975.0 / 1880347072, d5 = 701980252875.0 / 199316789632,
                  d6 = -1453857185.0 / 822651844, d7 = 69997945.0 / 29380423;
 
-// Step-size controller (Hairer I, Eq. II.4.13): safety factor and limits on the change.
+// Step-size controller (Hairer I, Eq. II.4.13): safety factor and limits on the change;
+// with Lund's PI stabilization (Hairer II, Sec. IV.2, Eq. 2.43c; DOPRI5's BETA = 0.04): the
+// new step is h * 0.9 err^(-(0.2 - 0.75 beta)) errPrev^beta, and a step that follows a
+// rejection may not grow (DOPRI5). Both cut rejections where the solution has kinks (the
+// damping table is piecewise linear in angle, the hip moment piecewise sine in time).
 constexpr double kSafety = 0.9;
 constexpr double kMinShrink = 0.2;
 constexpr double kMaxGrow = 5.0;
+constexpr double kBeta = 0.04;
+constexpr double kExponent = 0.2 - 0.75 * kBeta;
+constexpr double kMinErrPrev = 1e-4;  // DOPRI5's floor on the remembered error
 
 [[noreturn]] void throwUnderflow(double t) {
   throw std::runtime_error("Dormand-Prince: step size underflow at t = " + std::to_string(t) +
@@ -67,6 +74,7 @@ void DormandPrince::initialize(double t0, const double* y0) {
   system_.calcDerivatives(t_, y_.data(), k1_.data());
   numEvaluations_ = 1;
   numSteps_ = numRejected_ = 0;
+  errPrev_ = kMinErrPrev;
   // Dense output over the empty interval returns the initial state.
   for (int i = 0; i < n_; ++i) {
     cont1_[i] = y_[i];
@@ -124,6 +132,7 @@ void DormandPrince::step(double tStop) {
   if (!(tStop > t_)) throw std::invalid_argument("Dormand-Prince: step end must lie after the current time");
   // The smallest step that still changes t in floating point.
   const double hMin = 16 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t_));
+  bool rejected = false;
   while (true) {
     const double* y = y_.data();
     double* ys = yStage_.data();
@@ -162,7 +171,11 @@ void DormandPrince::step(double tStop) {
       throw std::runtime_error("Dormand-Prince: the state became non-finite at t = " + std::to_string(t_) + " s");
     }
     if (err <= 1.0) {
-      const double grow = err == 0 ? kMaxGrow : std::min(kMaxGrow, std::max(kMinShrink, kSafety * std::pow(err, -0.2)));
+      double grow = err == 0 ? kMaxGrow
+                             : std::min(kMaxGrow, std::max(kMinShrink, kSafety * std::pow(err, -kExponent) *
+                                                                           std::pow(errPrev_, kBeta)));
+      if (rejected) grow = std::min(grow, 1.0);
+      errPrev_ = std::max(err, kMinErrPrev);
       // A step clipped to tStop says little about the step the solution allows: keep
       // the longer of the two proposals.
       h_ = clipped ? std::max(h_, h * grow) : h * grow;
@@ -176,8 +189,9 @@ void DormandPrince::step(double tStop) {
       return;
     }
     ++numRejected_;
+    rejected = true;
     if (h < hMin) throwUnderflow(t_);
-    h_ = h * std::max(kMinShrink, kSafety * std::pow(err, -0.2));
+    h_ = h * std::max(kMinShrink, kSafety * std::pow(err, -kExponent));
   }
 }
 

@@ -23,7 +23,8 @@ class OdeSystem {
 ///
 /// Error control (Hairer I, Eq. II.4.11): a step is accepted when
 ///   err = sqrt(mean_i ((y5_i - y4_i) / (absTol + relTol * max(|y_i(t)|, |y_i(t+h)|)))^2) <= 1,
-/// and the next step is h * clamp(0.9 err^(-1/5), 0.2, 5).
+/// and the next step is h * clamp(0.9 err^(-0.17) errPrev^0.04, 0.2, 5) (PI control), not
+/// larger than the last try after a rejection.
 class DormandPrince {
  public:
   /// relTol, absTol > 0 (relative and absolute local error per step, in the states' units).
@@ -73,6 +74,7 @@ class DormandPrince {
   double maxStep_;
   double t_ = 0, tPrev_ = 0;
   double h_ = 0;  // proposed size of the next step
+  double errPrev_ = 1e-4;  // error norm of the last accepted step (PI control)
   std::vector<double> y_, yPrev_, yStage_, yErr_;
   std::vector<double> k1_, k2_, k3_, k4_, k5_, k6_, k7_;
   std::vector<double> cont1_, cont2_, cont3_, cont4_, cont5_;  // dense output coefficients

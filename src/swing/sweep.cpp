@@ -54,6 +54,9 @@ SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
   }
   if (yaml.has("integrator")) {
     YamlMap m = yaml.getMap("integrator");
+    const std::vector<std::string>& keys = integratorKeys();
+    const std::string method = m.getChoice("method", keys, keys[static_cast<int>(s.swing.integrator)]);
+    s.swing.integrator = static_cast<SwingIntegrator>(std::find(keys.begin(), keys.end(), method) - keys.begin());
     s.swing.accuracy = m.getDouble("accuracy", s.swing.accuracy, [](double v) {
       return v > 0 && v <= 1e-2 ? "" : "expected a relative accuracy in (0, 0.01]";
     });

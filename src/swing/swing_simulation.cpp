@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 
 #include "io/input_error.h"
 #include "leg/leg_model.h"
+#include "swing/simbody_ode.h"
 
 namespace swingsim {
 
@@ -315,19 +317,161 @@ std::unique_ptr<Integrator> makeIntegrator(SwingIntegrator kind, const Multibody
     case SwingIntegrator::kRungeKuttaFeldberg: return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
     case SwingIntegrator::kRungeKutta3: return std::make_unique<RungeKutta3Integrator>(system);
     case SwingIntegrator::kVerlet: return std::make_unique<VerletIntegrator>(system);
-    case SwingIntegrator::kRungeKuttaMerson: break;
+    case SwingIntegrator::kRungeKuttaMerson: return std::make_unique<RungeKuttaMersonIntegrator>(system);
+    case SwingIntegrator::kDormandPrince: break;
   }
-  return std::make_unique<RungeKuttaMersonIntegrator>(system);
+  throw std::invalid_argument("makeIntegrator: Dormand-Prince is not one of Simbody's integrators");
 }
 
+// One integrator step at a time, from toe-off to the time limit: Simbody's integrators
+// (with or without its event handlers) or our Dormand-Prince over Simbody realizations.
+class SwingStepper {
+ public:
+  virtual ~SwingStepper() = default;
+  /// Takes one step, not past tLimit; returns false once tLimit has been reached.
+  virtual bool step(double tLimit) = 0;
+  /// The state at the last step end, realized to Acceleration.
+  virtual const State& getState() = 0;
+  /// Restarts at the current state with a new accuracy (the bounce window).
+  virtual void restart(double accuracy) = 0;
+  virtual int getNumSteps() const = 0;
+  virtual int getNumRealizations() const = 0;
+};
+
+class SimbodyStepper final : public SwingStepper {
+ public:
+  SimbodyStepper(const MultibodySystem& system, const State& initial, const SwingOptions& options, double tLimit)
+      : system_(system), integrator_(makeIntegrator(options.integrator, system)) {
+    integrator_->setAccuracy(options.accuracy);
+    // Return after every internal step: the loop stops as soon as the swing end plus the
+    // bounce window has passed, finds the fast path's events and samples the output by
+    // interpolation between steps.
+    integrator_->setReturnEveryInternalStep(true);
+    integrator_->setFinalTime(tLimit);
+    if (options.simbodyEvents) {
+      timeStepper_ = std::make_unique<TimeStepper>(system, *integrator_);
+      timeStepper_->setReportAllSignificantStates(true);
+      timeStepper_->initialize(initial);
+    } else {
+      integrator_->initialize(initial);
+    }
+  }
+  bool step(double tLimit) override {
+    const auto status = timeStepper_ ? timeStepper_->stepTo(tLimit) : integrator_->stepTo(tLimit);
+    return status != Integrator::EndOfSimulation;
+  }
+  const State& getState() override {
+    const State& s = integrator_->getState();
+    system_.realize(s, Stage::Acceleration);
+    return s;
+  }
+  void restart(double accuracy) override {
+    // Simbody reads the accuracy only when it initializes.
+    const int steps = getNumSteps(), realizations = getNumRealizations();
+    integrator_->setAccuracy(accuracy);
+    const State restartState = integrator_->getState();
+    integrator_->initialize(restartState);
+    // Simbody 3.7 resets the step count on initialize but not the realization count.
+    if (integrator_->getNumStepsTaken() < steps) stepsBefore_ = steps;
+    if (integrator_->getNumRealizations() < realizations) realizationsBefore_ = realizations;
+  }
+  int getNumSteps() const override { return stepsBefore_ + integrator_->getNumStepsTaken(); }
+  int getNumRealizations() const override { return realizationsBefore_ + integrator_->getNumRealizations(); }
+
+ private:
+  const MultibodySystem& system_;
+  std::unique_ptr<Integrator> integrator_;
+  std::unique_ptr<TimeStepper> timeStepper_;
+  int stepsBefore_ = 0, realizationsBefore_ = 0;
+};
+
+// Dormand-Prince 5(4) (dormand_prince.h) on the Simbody leg's (q, u, z): six realizations
+// per step, first same as last, and nothing else per step.
+class DormandPrinceStepper final : public SwingStepper {
+ public:
+  DormandPrinceStepper(const MultibodySystem& system, const State& initial, double accuracy,
+                       std::vector<double> breakpoints)
+      : work_(initial), ode_(system, work_), y_(ode_.numStates()), breakpoints_(std::move(breakpoints)) {
+    ode_.readState(initial, y_.data());
+    start(initial.getTime(), accuracy);
+  }
+  bool step(double tLimit) override {
+    const double t = dp_->getTime();
+    if (t >= tLimit) return false;
+    // End steps on the hip moment's kinks: a step across one loses the method's order.
+    double tStop = tLimit;
+    for (double b : breakpoints_)
+      if (b > t && b < tStop) tStop = b;
+    dp_->step(tStop);
+    return dp_->getTime() < tLimit;
+  }
+  const State& getState() override { return ode_.realizeAt(dp_->getTime(), dp_->getState()); }
+  void restart(double accuracy) override {
+    stepsBefore_ += static_cast<int>(dp_->getNumSteps());
+    std::copy(dp_->getState(), dp_->getState() + ode_.numStates(), y_.begin());
+    start(dp_->getTime(), accuracy);
+  }
+  int getNumSteps() const override { return stepsBefore_ + static_cast<int>(dp_->getNumSteps()); }
+  int getNumRealizations() const override { return static_cast<int>(ode_.getNumRealizations()); }
+
+ private:
+  void start(double t, double accuracy) {
+    // One number for the relative and the absolute tolerance, as Simbody's accuracy is
+    // used (angles in rad, rates in rad/s, work in J, law states dimensionless).
+    dp_ = std::make_unique<DormandPrince>(ode_, accuracy, accuracy);
+    dp_->initialize(t, y_.data());
+  }
+  State work_;
+  SimbodyOde ode_;
+  std::vector<double> y_;
+  std::vector<double> breakpoints_;  // s
+  std::unique_ptr<DormandPrince> dp_;
+  int stepsBefore_ = 0;
+};
+
 }  // namespace
+
+const char* integratorName(SwingIntegrator integrator) {
+  switch (integrator) {
+    case SwingIntegrator::kDormandPrince: return "Dormand-Prince 5(4) over Simbody realizations";
+    case SwingIntegrator::kRungeKuttaMerson: return "Simbody Runge-Kutta-Merson";
+    case SwingIntegrator::kRungeKuttaFeldberg: return "Simbody Runge-Kutta-Feldberg";
+    case SwingIntegrator::kRungeKutta3: return "Simbody Runge-Kutta 3";
+    case SwingIntegrator::kVerlet: return "Simbody Verlet";
+  }
+  return "?";
+}
+
+const std::vector<std::string>& integratorKeys() {
+  static const std::vector<std::string> keys = {"dormand-prince", "runge-kutta-merson", "runge-kutta-feldberg",
+                                                "runge-kutta-3", "verlet"};
+  return keys;
+}
+
+SwingOptions makePlainPathOptions(double accuracy, double eventWindow) {
+  SwingOptions o;
+  o.integrator = SwingIntegrator::kRungeKuttaMerson;
+  o.simbodyEvents = true;
+  o.accuracy = accuracy;
+  o.eventWindow = eventWindow;
+  return o;
+}
+
+SwingOptions makeSimbodyIntegratorOptions(double accuracy) {
+  SwingOptions o;
+  o.integrator = SwingIntegrator::kRungeKuttaMerson;
+  o.accuracy = accuracy;
+  return o;
+}
 
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) {
   const Participant& p = setup.participant;
   if (setup.knee == nullptr) throw InputError(p.path + ": no knee model");
   const LegGeometry geometry = calcLegGeometry(p, setup.lowering, setup.added);
-  LegModel leg(geometry, *setup.knee, p.hipMoment, p.hipRange, calcHipHeight(p));
+  LegModel leg(geometry, *setup.knee, p.hipMoment, p.hipRange, calcHipHeight(p), /*trackWork=*/false);
 
+  if (options.simbodyEvents && options.integrator == SwingIntegrator::kDormandPrince)
+    throw std::invalid_argument("simulateSwing: Simbody's event handlers need one of Simbody's integrators");
   SwingLog log;
   const SwingEndRule& rule = p.swingEnd;
   MultibodySystem& system = leg.updSystem();
@@ -339,29 +483,19 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     system.realizeTopology();
   }
 
-  State state = leg.makeInitialState(p.initial);
-  const std::unique_ptr<Integrator> integratorOwner = makeIntegrator(options.integrator, system);
-  Integrator& integrator = *integratorOwner;
-  integrator.setAccuracy(options.accuracy);
-  // Return after every internal step: the loop stops as soon as the swing end plus the
-  // bounce window has passed, finds the fast path's events and samples the output by
-  // interpolation between steps.
-  integrator.setReturnEveryInternalStep(true);
-  integrator.setFinalTime(rule.timeLimit);
-  std::unique_ptr<TimeStepper> stepper;
-  if (options.simbodyEvents) {
-    stepper = std::make_unique<TimeStepper>(system, integrator);
-    stepper->setReportAllSignificantStates(true);
-    stepper->initialize(state);
+  const State initial = leg.makeInitialState(p.initial);
+  std::unique_ptr<SwingStepper> stepper;
+  if (options.integrator == SwingIntegrator::kDormandPrince) {
+    stepper = std::make_unique<DormandPrinceStepper>(system, initial, options.accuracy, p.hipMoment.calcBreakpoints());
   } else {
-    integrator.initialize(state);
+    stepper = std::make_unique<SimbodyStepper>(system, initial, options, rule.timeLimit);
   }
 
   SwingResult result;
   log.add("toe_off", 0.0);
   const double hipHeight = calcHipHeight(p);
   SwingTrajectory& tr = result.trajectory;
-  StepEnd previous = readStepEnd(leg, integrator.getState());
+  StepEnd previous = readStepEnd(leg, stepper->getState());
   double nextSample = 0;
   {
     // Room for a typical swing plus its bounce window, so samples rarely reallocate.
@@ -377,25 +511,25 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   }
 
   const double stopAfterEnd = rule.bounceWindow;
-  constexpr double kLoosestWindowAccuracy = 1e-2;  // the bounce flag needs the knee to a fraction of a degree
+  constexpr double kLoosestWindowAccuracy = 1e-3;  // the bounce flag needs the knee to a fraction of a degree
+  const double windowAccuracy = std::min(options.accuracy * options.bounceWindowAccuracyFactor, kLoosestWindowAccuracy);
   bool windowStarted = false;
-  int stepsBefore = 0, realizationsBefore = 0;  // counts before the bounce-window restart
   while (true) {
-    Integrator::SuccessfulStepStatus status;
+    bool more;
     try {
-      status = stepper ? stepper->stepTo(rule.timeLimit) : integrator.stepTo(rule.timeLimit);
+      more = stepper->step(rule.timeLimit);
     } catch (const std::exception& e) {
-      throw RunError(p.name + ": the integrator failed " + describeState(leg, integrator.getState()) +
+      throw RunError(p.name + ": the integrator failed " + describeState(leg, stepper->getState()) +
                      " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; " +
                      e.what() + ")");
     }
-    const State& s = integrator.getState();
+    const State& s = stepper->getState();
     const StepEnd now = readStepEnd(leg, s);
     if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) {
       throw RunError(p.name + ": the simulation diverged " + describeState(leg, s) +
                      " (likely cause: an unphysical input such as a near-zero inertia)");
     }
-    if (!stepper) handleStepEvents(previous, now, rule, log);
+    if (!options.simbodyEvents) handleStepEvents(previous, now, rule, log);
     if (now.t > previous.t) appendSamples(previous, now, nextSample, options.sampleInterval, geometry, hipHeight, tr);
     previous = now;
     // The hip stop is soft (Hunt-Crossley): a thigh far past it means the inputs are wrong,
@@ -407,20 +541,12 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                      deg(p.hipRange.minFlexion) + " to " + deg(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
                      " (likely cause: a hip moment far too large for this leg, or a hip_range that excludes the swing)");
     }
-    if (log.ended && s.getTime() >= log.endTime + stopAfterEnd - 1e-12) break;
-    if (log.ended && !windowStarted && !stepper && options.bounceWindowAccuracyFactor > 1) {
-      // Restart for the bounce window at the looser accuracy (Simbody reads the accuracy
-      // only when it initializes).
+    if (log.ended && now.t >= log.endTime + stopAfterEnd - 1e-12) break;
+    if (log.ended && !windowStarted && !options.simbodyEvents && windowAccuracy > options.accuracy) {
       windowStarted = true;
-      const int steps = integrator.getNumStepsTaken(), realizations = integrator.getNumRealizations();
-      integrator.setAccuracy(std::min(options.accuracy * options.bounceWindowAccuracyFactor, kLoosestWindowAccuracy));
-      const State restart = s;
-      integrator.initialize(restart);
-      // Simbody 3.7 resets the step count on initialize but not the realization count.
-      if (integrator.getNumStepsTaken() < steps) stepsBefore = steps;
-      if (integrator.getNumRealizations() < realizations) realizationsBefore = realizations;
+      stepper->restart(windowAccuracy);
     }
-    if (!log.ended && (s.getTime() >= rule.timeLimit - 1e-12 || status == Integrator::EndOfSimulation)) {
+    if (!log.ended && (now.t >= rule.timeLimit - 1e-12 || !more)) {
       std::string cause;
       if (!log.thighReached)
         cause = "the thigh never reached its target flexion of " +
@@ -433,7 +559,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing did not end within the time limit of " +
                      formatNumber(rule.timeLimit) + " s; " + describeState(leg, s) + "; " + cause);
     }
-    if (status == Integrator::EndOfSimulation) break;
+    if (!more) break;
   }
   // Lowest ankle or toe from peak knee flexion (mid-swing) to the swing end; before the
   // peak the foot is still leaving the ground it pushed off from.
@@ -448,8 +574,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   result.bounce = log.bounce;
   result.minToeClearance = minClearance;
   result.events = log.events;
-  result.steps = stepsBefore + integrator.getNumStepsTaken();
-  result.realizations = realizationsBefore + integrator.getNumRealizations();
+  result.steps = stepper->getNumSteps();
+  result.realizations = stepper->getNumRealizations();
   return result;
 }
 

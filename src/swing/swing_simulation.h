@@ -9,20 +9,33 @@
 
 namespace swingsim {
 
-/// Simbody's error-controlled explicit integrators (the convergence study compares them;
-/// CPodes is left out: on this chain it did not finish a swing in 20 s).
+/// The error-controlled explicit integrators the convergence study compares: our
+/// Dormand-Prince over Simbody's realizations, and Simbody's own (CPodes is left out: on
+/// this chain it did not finish a swing in 20 s). All of them integrate the same Simbody
+/// system; they differ in how they step it.
 enum class SwingIntegrator {
+  /// Dormand-Prince RK5(4) (dormand_prince.h) stepping the Simbody leg's (q, u, z) through
+  /// SimbodyOde: 6 realizations per step, no State copies (the default; fast path only).
+  kDormandPrince,
   kRungeKuttaMerson,    ///< RK 4(3), 5 stages
   kRungeKuttaFeldberg,  ///< RK 4(5), 6 stages
   kRungeKutta3,         ///< RK 3(2), 3 stages
   kVerlet,              ///< velocity Verlet with error control
 };
 
+/// Display name ("Dormand-Prince 5(4) over Simbody realizations", "Simbody Runge-Kutta-Merson").
+const char* integratorName(SwingIntegrator integrator);
+/// YAML key of each integrator, in enum order: dormand-prince, runge-kutta-merson,
+/// runge-kutta-feldberg, runge-kutta-3, verlet.
+const std::vector<std::string>& integratorKeys();
+
 /// Integrator settings. The defaults are the converged settings of the README's
 /// convergence study (swing time converged to 0.1 ms).
 struct SwingOptions {
-  double accuracy = 1e-4;           ///< Simbody integrator relative accuracy
-  SwingIntegrator integrator = SwingIntegrator::kRungeKuttaMerson;
+  /// Relative accuracy: Simbody's integrator accuracy, or Dormand-Prince's relative and
+  /// absolute tolerance (the same number). Converged values differ by integrator (README).
+  double accuracy = 1e-5;
+  SwingIntegrator integrator = SwingIntegrator::kDormandPrince;
   double sampleInterval = 0.002;    ///< s between trajectory samples (Hermite-interpolated between steps: free)
   bool recordTrajectory = true;
   /// How the swing events (thigh at target, knee peak, knee enters/leaves the zone) are
@@ -31,15 +44,18 @@ struct SwingOptions {
   /// step ends (angle and rate, or rate and acceleration), which costs no realization.
   /// true (the plain path): Simbody TriggeredEventHandlers, each crossing localized by the
   /// integrator to eventWindow (extra realizations and State copies) and the step restarted
-  /// there. Both give the same swing times to the converged tolerance (tests/swing/fast_path_test.cpp).
+  /// there; needs one of Simbody's integrators (simulateSwing throws std::invalid_argument
+  /// with kDormandPrince). Both give the same swing times to the converged tolerance (tests/swing/fast_path_test.cpp).
   bool simbodyEvents = false;
   double eventWindow = 1e-5;        ///< s, localization window of the plain path
-  /// Fast path: after the swing end the integrator restarts at accuracy x this factor for
-  /// the bounce window (about half the steps of a swing: the knee meets its hyperextension
-  /// stop there). The swing time, peak and clearance are found before the restart; the
-  /// bounce flag (the knee back above the zone, a margin of degrees) and the trajectory past
-  /// the end are integrated less tightly. 1 = no restart.
-  double bounceWindowAccuracyFactor = 10;
+  /// Fast path: after the swing end the integrator restarts at accuracy x this factor, but
+  /// no looser than 1e-3, for the bounce window (about half the realizations of a swing: the
+  /// knee meets its hyperextension stop there). The swing time, peak and clearance are
+  /// found before the restart; the bounce flag (the knee back above the zone, a margin of
+  /// degrees) and the trajectory past the end are integrated less tightly (1e-3 by
+  /// default). Events in the window agree with the plain path within 1 ms
+  /// (tests/swing/fast_path_test.cpp). 1 = no restart.
+  double bounceWindowAccuracyFactor = 100;
 };
 
 struct SwingEvent {
@@ -77,6 +93,17 @@ struct SwingSetup {
 /// Standing hip height used for toe clearance: 0.530 x height (Winter 2009, Table 4.1
 /// segment lengths: greater trochanter at 0.530 H).
 double calcHipHeight(const Participant& p);
+
+/// Options of the plain path: Simbody's Runge-Kutta-Merson with its event handlers at
+/// `accuracy`, localizing crossings to `eventWindow` s. Shares no integration code with the
+/// reference swing (reference_swing.h), so checks against the reference stay independent.
+SwingOptions makePlainPathOptions(double accuracy, double eventWindow);
+
+/// The fast path on Simbody's Runge-Kutta-Merson at `accuracy` (converged at 1e-4, README
+/// "Convergence study"): for results that must not share integration code with the
+/// reference swing (the synthetic truth of the swing diagnosis, the Simbody check of a
+/// diagnosed model).
+SwingOptions makeSimbodyIntegratorOptions(double accuracy = 1e-4);
 
 /// Runs one swing. Throws RunError (with the time, the state and the likely cause) if the
 /// integrator fails or the swing does not end within the time limit.

@@ -21,12 +21,40 @@ DampingTableParams makeParams(DampingSpeedRule rule) {
   return p;
 }
 
-TEST(DampingTable, InterpolatesLinearlyAndHoldsOutsideTheTable) {
+TEST(DampingTable, PassesThroughTheSamplesAndHoldsOutsideTheTable) {
   DampingTable table(makeParams(DampingSpeedRule::kLinear));
-  EXPECT_NEAR(table.calcTableMoment(15 * kDeg), 1.3, kRoundOff);
-  EXPECT_NEAR(table.calcTableMoment(50 * kDeg), 1.6 + 0.5 * 2.9, kRoundOff);
+  EXPECT_NEAR(table.calcTableMoment(0), 1.0, kRoundOff);
+  EXPECT_NEAR(table.calcTableMoment(30 * kDeg), 1.6, kRoundOff);
+  EXPECT_NEAR(table.calcTableMoment(70 * kDeg), 4.5, kRoundOff);
   EXPECT_NEAR(table.calcTableMoment(-5 * kDeg), 1.0, kRoundOff);
   EXPECT_NEAR(table.calcTableMoment(90 * kDeg), 4.5, kRoundOff);
+  // Between samples: the cubic Hermite with Fritsch-Carlson slopes, by hand. At 30 deg the
+  // secants are 0.6/30 and 2.9/40 per deg; the slope is their weighted harmonic mean; the
+  // ends are flat. At the interval midpoints the Hermite basis gives (y0 + y1)/2 + h (m0 - m1)/8.
+  const double a = 0.6 / 30, b = 2.9 / 40;                          // N m per deg
+  const double m30 = 3 * (a + b) / ((2 * b + a) / a + (b + 2 * a) / b);  // N m per deg
+  EXPECT_NEAR(table.calcTableMoment(15 * kDeg), 1.3 + 30 * (0 - m30) / 8, kRoundOff);
+  EXPECT_NEAR(table.calcTableMoment(50 * kDeg), 3.05 + 40 * (m30 - 0) / 8, kRoundOff);
+}
+
+TEST(DampingTable, IsMonotoneBetweenMonotoneSamplesAndHasNoKinks) {
+  DampingTable table(makeParams(DampingSpeedRule::kLinear));
+  constexpr double kStep = 0.01 * kDeg;
+  double previous = table.calcTableMoment(-1 * kDeg);
+  for (double x = -1 * kDeg; x <= 71 * kDeg; x += kStep) {
+    const double m = table.calcTableMoment(x);
+    EXPECT_GE(m, previous - kRoundOff) << x / kDeg;  // rising data, rising curve: no overshoot
+    previous = m;
+  }
+  // C1 at every sample (and into the held ends): one-sided slopes agree. A linear table
+  // has slope jumps of 0.05 N m/deg here.
+  constexpr double kH = 1e-6;                          // rad
+  constexpr double kSlopeTol = 1e-3 / kDeg;            // N m/rad, vs jumps of order 3 N m/rad
+  for (double knot : {0.0, 30 * kDeg, 70 * kDeg}) {
+    const double left = (table.calcTableMoment(knot) - table.calcTableMoment(knot - kH)) / kH;
+    const double right = (table.calcTableMoment(knot + kH) - table.calcTableMoment(knot)) / kH;
+    EXPECT_NEAR(left, right, kSlopeTol) << knot / kDeg;
+  }
 }
 
 TEST(DampingTable, ResistsMotionInBothDirections) {

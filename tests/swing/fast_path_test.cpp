@@ -30,10 +30,7 @@ SweepStudy burkettStudy(const SwingOptions& swing) {
 
 TEST(FastPath, SameSwingTimesAsThePlainPathForAllParticipantsAndLowerings) {
   const SweepResults fast = runSweep(burkettStudy(SwingOptions{}), 0);
-  SwingOptions plainOptions;
-  plainOptions.simbodyEvents = true;
-  plainOptions.accuracy = kTightAccuracy;
-  plainOptions.eventWindow = kTightEventWindow;
+  const SwingOptions plainOptions = makePlainPathOptions(kTightAccuracy, kTightEventWindow);
   const SweepResults plain = runSweep(burkettStudy(plainOptions), 0);
 
   ASSERT_EQ(fast.participants.size(), plain.participants.size());
@@ -70,10 +67,9 @@ TEST(FastPath, EventSearchAgreesWithSimbodyLocalizationAtTightAccuracy) {
   study.loweringStep = 0.1;
   study.includePublishedLowerings = false;
   SwingOptions fastOptions;
+  fastOptions.integrator = SwingIntegrator::kRungeKuttaMerson;  // the same integrator: only the event search differs
   fastOptions.accuracy = 1e-10;
-  SwingOptions plainOptions = fastOptions;
-  plainOptions.simbodyEvents = true;
-  plainOptions.eventWindow = kTightEventWindow;
+  const SwingOptions plainOptions = makePlainPathOptions(1e-10, kTightEventWindow);
   study.swing = fastOptions;
   const SweepResults fast = runSweep(study, 0);
   study.swing = plainOptions;
@@ -98,12 +94,10 @@ TEST(FastPath, ThighGrazingItsTargetWithinOneStepIsStillFound) {
   setup.knee = &knee;
   setup.lowering = 0.140;
   setup.added = {1.0, 0.10};
-  SwingOptions plainOptions;
-  plainOptions.simbodyEvents = true;
-  plainOptions.accuracy = kTightAccuracy;
-  plainOptions.eventWindow = kTightEventWindow;
+  const SwingOptions plainOptions = makePlainPathOptions(kTightAccuracy, kTightEventWindow);
   const SwingResult plain = simulateSwing(setup, plainOptions);
-  for (double accuracy : {1e-3, 1e-4, 1e-5}) {
+  // The default accuracy and tighter ones (different step placements, same crossing).
+  for (double accuracy : {SwingOptions{}.accuracy, 3e-6, 1e-6}) {
     SwingOptions fastOptions;
     fastOptions.accuracy = accuracy;
     EXPECT_NEAR(simulateSwing(setup, fastOptions).swingTime, plain.swingTime, kConvergedTol) << accuracy;
@@ -124,10 +118,7 @@ TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
       SwingSetup setup;
       setup.participant = p;
       setup.knee = &knee;
-      SwingOptions plainOptions;
-      plainOptions.simbodyEvents = true;
-      plainOptions.accuracy = kTightAccuracy;
-      plainOptions.eventWindow = kTightEventWindow;
+      const SwingOptions plainOptions = makePlainPathOptions(kTightAccuracy, kTightEventWindow);
       const SwingResult fast = simulateSwing(setup);
       const SwingResult plain = simulateSwing(setup, plainOptions);
       EXPECT_TRUE(plain.bounce) << file;

@@ -45,8 +45,9 @@ Comparison compare(const Participant& p, const KneeLaw& law, double lowering, co
   setup.participant = p;
   setup.knee = &law;
   setup.lowering = lowering;
-  SwingOptions options;
-  options.accuracy = kSimbodyAccuracy;
+  // Simbody's own integrator: the reference runs on our Dormand-Prince, so the two share
+  // neither equations nor integration code.
+  SwingOptions options = makeSimbodyIntegratorOptions(kSimbodyAccuracy);
   options.sampleInterval = 0.002;
   options.eventWindow = kEventWindow;
   const SwingResult sim = simulateSwing(setup, options);

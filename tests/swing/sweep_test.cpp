@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "io/input_error.h"
 #include "report/sweep_report.h"
 #include "swing/burkett_published.h"
 
@@ -117,6 +118,23 @@ TEST(Sweep, StudyComRuleOverridesEveryParticipant) {
   const Participant& p1 = s.participants[0];
   const LegGeometry g = calcLegGeometry(p1, 0.1);
   EXPECT_NEAR(g.shankCom, (p1.shank.length - p1.shank.comFromDistal) / p1.shank.length * (p1.shank.length - 0.1), 1e-12);
+}
+
+TEST(Sweep, IntegratorMethodKeyChoosesTheIntegratorAndRejectsUnknownNames) {
+  const SweepStudy bundled = loadSweepStudy("studies/burkett2004.yaml");
+  EXPECT_EQ(bundled.swing.integrator, SwingIntegrator::kDormandPrince);
+  EXPECT_EQ(bundled.swing.accuracy, 1e-5);
+  const std::string head = "kind: knee-axis-sweep\nname: t\nparticipants: [participants/p1.yaml]\nintegrator:\n";
+  const SweepStudy rkm = parseSweepStudy(head + "  method: runge-kutta-merson\n  accuracy: 1.0e-4\n", "t.yaml");
+  EXPECT_EQ(rkm.swing.integrator, SwingIntegrator::kRungeKuttaMerson);
+  EXPECT_EQ(rkm.swing.accuracy, 1e-4);
+  try {
+    parseSweepStudy(head + "  method: euler\n", "t.yaml");
+    FAIL() << "an unknown method must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("method: expected one of: dormand-prince, runge-kutta-merson"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Sweep, AddedMassGridReportsBestCombination) {

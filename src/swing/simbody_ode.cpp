@@ -1,0 +1,58 @@
+#include "swing/simbody_ode.h"
+
+#include <stdexcept>
+
+namespace swingsim {
+
+using namespace SimTK;
+
+SimbodyOde::SimbodyOde(const MultibodySystem& system, State& state)
+    : system_(system), state_(state), nq_(state.getNQ()), nu_(state.getNU()), nz_(state.getNZ()) {
+  if (system.getMatterSubsystem().getNumConstraints() > 0)
+    throw std::invalid_argument("SimbodyOde: systems with constraints need projection; use a Simbody integrator");
+}
+
+void SimbodyOde::readState(const State& s, double* y) const {
+  const Vector &q = s.getQ(), &u = s.getU(), &z = s.getZ();
+  for (int i = 0; i < nq_; ++i) y[i] = q[i];
+  for (int i = 0; i < nu_; ++i) y[nq_ + i] = u[i];
+  for (int i = 0; i < nz_; ++i) y[nq_ + nu_ + i] = z[i];
+}
+
+bool SimbodyOde::isAt(double t, const double* y) const {
+  if (state_.getSystemStage() < Stage::Acceleration || state_.getTime() != t) return false;
+  const Vector &q = state_.getQ(), &u = state_.getU(), &z = state_.getZ();
+  for (int i = 0; i < nq_; ++i)
+    if (q[i] != y[i]) return false;
+  for (int i = 0; i < nu_; ++i)
+    if (u[i] != y[nq_ + i]) return false;
+  for (int i = 0; i < nz_; ++i)
+    if (z[i] != y[nq_ + nu_ + i]) return false;
+  return true;
+}
+
+const State& SimbodyOde::realizeAt(double t, const double* y) const {
+  if (isAt(t, y)) return state_;
+  state_.updTime() = t;
+  Vector& q = state_.updQ();
+  for (int i = 0; i < nq_; ++i) q[i] = y[i];
+  Vector& u = state_.updU();
+  for (int i = 0; i < nu_; ++i) u[i] = y[nq_ + i];
+  if (nz_ > 0) {
+    Vector& z = state_.updZ();
+    for (int i = 0; i < nz_; ++i) z[i] = y[nq_ + nu_ + i];
+  }
+  system_.realize(state_, Stage::Acceleration);
+  ++realizations_;
+  return state_;
+}
+
+void SimbodyOde::calcDerivatives(double t, const double* y, double* dydt) const {
+  const State& s = realizeAt(t, y);
+  const Vector &qdot = s.getQDot(), &udot = s.getUDot(), &zdot = s.getZDot();
+  for (int i = 0; i < nq_; ++i) dydt[i] = qdot[i];
+  for (int i = 0; i < nu_; ++i) dydt[nq_ + i] = udot[i];
+  for (int i = 0; i < nz_; ++i) dydt[nq_ + nu_ + i] = zdot[i];
+}
+
+}  // namespace swingsim
