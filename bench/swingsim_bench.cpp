@@ -16,7 +16,9 @@
 #include "io/diagnosis_study.h"
 #include "io/yaml_reader.h"
 #include "report/cylinder_fit_report.h"
+#include "leg/leg_model.h"
 #include "swing/reference_swing.h"
+#include "swing/simbody_ode.h"
 
 namespace swingsim::bench {
 namespace {
@@ -66,6 +68,29 @@ void BM_SwingSimbody(benchmark::State& state) {
   state.counters["realizations"] = r.realizations;
 }
 BENCHMARK(BM_SwingSimbody)->ArgName("variant")->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
+
+// One realization of the P1 leg to the Acceleration stage, as the default integrator asks
+// for it (SimbodyOde: write t, q, u, realize, read the derivatives), at a new state each
+// time. Its cost times BM_SwingSimbody's realization count says how much of a swing is
+// Simbody's realization and how much is the rest.
+void BM_RealizeLeg(benchmark::State& state) {
+  const LoadedParticipant& p = p1();
+  const LegModel leg(calcLegGeometry(p.participant, 0.0), p.knee, p.participant.hipMoment, p.participant.hipRange,
+                     calcHipHeight(p.participant), /*trackWork=*/false);
+  const SimTK::State initial = leg.makeInitialState(p.participant.initial);
+  SimTK::State work = initial;
+  const SimbodyOde ode(leg.getSystem(), work);
+  std::vector<double> y(ode.numStates()), dydt(ode.numStates());
+  ode.readState(initial, y.data());
+  double t = 0;
+  for (auto _ : state) {
+    t += 1e-6;
+    y[1] += 1e-7;  // knee flexion: every call is a new state
+    ode.calcDerivatives(t, y.data(), dydt.data());
+    keep(dydt[2]);
+  }
+}
+BENCHMARK(BM_RealizeLeg)->Unit(benchmark::kMicrosecond);
 
 // The same swing with the hand-derived 2-DOF reference (own Dormand-Prince), same
 // swing-end rule. Argument: -log10 of the Dormand-Prince relative and absolute tolerance;

@@ -36,8 +36,14 @@ for name, b in med.items():
     print(f"| {name} | {ms(name):.3f} | {counters} |")
 swing = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:0")))
 plain = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:1")))
-rk3 = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:2")))
-print(f"\nSimbody swing, plain path (Simbody event handlers) / fast path: {plain / swing:.2f}x; fast path RKM 1e-4 / RK3 1e-3: {swing / rk3:.2f}x")
+rkm = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:2")))
+rk3 = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:3")))
+print(f"\nSimbody swing: plain path (RKM 1e-4, Simbody event handlers) / default (Dormand-Prince 1e-5): {plain / swing:.2f}x; "
+      f"fast path on Simbody's RKM 1e-4 / default: {rkm / swing:.2f}x; on Simbody's RK3 1e-3 / default: {rk3 / swing:.2f}x")
+realize = ms("BM_RealizeLeg")
+n = med[next(k for k in med if k.startswith("BM_SwingSimbody/variant:0"))]["realizations"]
+print(f"one realization of the leg: {realize * 1e3:.2f} us; default swing: {n:.0f} realizations = {n * realize:.2f} ms "
+      f"= {100 * n * realize / swing:.0f} % of the swing's {swing:.2f} ms")
 ref = ms(next(k for k in med if k.startswith("BM_SwingReference/tol_exp:0")))
 ref6 = ms(next(k for k in med if k.startswith("BM_SwingReference/tol_exp:6")))
 print(f"Simbody swing / reference swing (same accuracy number): {swing / ref:.0f}x; / reference at 1e-6 (converged): {swing / ref6:.0f}x")
