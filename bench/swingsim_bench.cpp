@@ -66,6 +66,7 @@ void BM_SwingSimbody(benchmark::State& state) {
   state.counters["swing_time_ms"] = 1e3 * r.swingTime;
   state.counters["steps"] = r.steps;
   state.counters["realizations"] = r.realizations;
+  state.counters["realizations_to_end"] = r.realizationsToEnd;  // the rest integrate the bounce window
 }
 BENCHMARK(BM_SwingSimbody)->ArgName("variant")->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
 

@@ -544,6 +544,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     if (log.ended && now.t >= log.endTime + stopAfterEnd - 1e-12) break;
     if (log.ended && !windowStarted && !options.simbodyEvents && windowAccuracy > options.accuracy) {
       windowStarted = true;
+      result.realizationsToEnd = stepper->getNumRealizations();
       stepper->restart(windowAccuracy);
     }
     if (!log.ended && (now.t >= rule.timeLimit - 1e-12 || !more)) {
@@ -576,6 +577,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   result.events = log.events;
   result.steps = stepper->getNumSteps();
   result.realizations = stepper->getNumRealizations();
+  if (!windowStarted) result.realizationsToEnd = result.realizations;
   return result;
 }
 

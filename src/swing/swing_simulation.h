@@ -80,6 +80,7 @@ struct SwingResult {
   SwingTrajectory trajectory;
   int steps = 0;                   ///< integrator steps taken
   int realizations = 0;            ///< system realizations the integrator asked for
+  int realizationsToEnd = 0;       ///< of which before the bounce window (to the swing end)
 };
 
 /// The participant-level inputs one swing needs, after loading.
