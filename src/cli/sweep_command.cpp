@@ -56,9 +56,20 @@ int runSweepCommand(const std::vector<std::string>& args) {
     // Keep what finished, readable, under a name that cannot be mistaken for a result.
     writeFileAtomic(out + "/sweep.partial.csv", formatSweepCsv(results));
     std::string missing;
-    for (const auto& ps : results.participants)
-      for (const auto& pt : ps.points)
-        if (pt.failure == "not run (interrupted)") missing += " " + ps.name + "@" + std::to_string(pt.lowering).substr(0, 5);
+    char point[96];
+    for (const auto& ps : results.participants) {
+      for (const auto* list : {&ps.points, &ps.massPoints}) {
+        for (const auto& pt : *list) {
+          if (pt.ran) continue;
+          if (pt.added.mass > 0)
+            std::snprintf(point, sizeof point, " %s@%.3f+%gkg@%.2fm", ps.name.c_str(), pt.lowering, pt.added.mass,
+                          pt.added.distanceBelowKnee);
+          else
+            std::snprintf(point, sizeof point, " %s@%.3f", ps.name.c_str(), pt.lowering);
+          missing += point;
+        }
+      }
+    }
     std::fprintf(stderr, "swingsim: interrupted; finished rows are in %s/sweep.partial.csv; not run:%s\n", out.c_str(),
                  missing.c_str());
     return 1;

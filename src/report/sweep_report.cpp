@@ -38,7 +38,7 @@ const Participant* participantNamed(const SweepStudy& study, const std::string& 
 std::string shortFailure(const SweepPoint& pt) {
   if (pt.failure.find("thigh never reached") != std::string::npos) return "no end: thigh short of target";
   if (pt.failure.find("never came back") != std::string::npos) return "no end: knee stays flexed";
-  if (pt.failure.find("interrupted") != std::string::npos) return "not run (interrupted)";
+  if (!pt.ran) return "not run (interrupted)";
   return "failed";
 }
 
@@ -143,20 +143,22 @@ std::string formatSweepJson(const SweepResults& results) {
 }
 
 std::string formatSweepCsv(const SweepResults& results) {
+  // status: ended (a swing time), failed (the swing ran and did not end: the report says
+  // why) or not_run (an interrupted sweep never reached the point).
   std::string out = "participant,lowering_m,added_mass_kg,added_mass_below_knee_m,swing_ended,swing_time_s,"
-                    "peak_knee_flexion_deg,peak_knee_flexion_time_s,bounce,min_toe_clearance_m\n";
+                    "peak_knee_flexion_deg,peak_knee_flexion_time_s,bounce,min_toe_clearance_m,status\n";
   char line[256];
   for (const auto& ps : results.participants) {
     for (const auto* list : {&ps.points, &ps.massPoints}) {
       for (const auto& pt : *list) {
         if (pt.ok) {
-          std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,1,%.6f,%.3f,%.6f,%d,%.4f\n", ps.name.c_str(), pt.lowering,
+          std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,1,%.6f,%.3f,%.6f,%d,%.4f,ended\n", ps.name.c_str(), pt.lowering,
                         pt.added.mass, pt.added.distanceBelowKnee, pt.result.swingTime,
                         pt.result.peakKneeFlexion * kRadToDeg, pt.result.peakKneeFlexionTime, pt.result.bounce ? 1 : 0,
                         pt.result.minToeClearance);
         } else {
-          std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,0,,,,,\n", ps.name.c_str(), pt.lowering, pt.added.mass,
-                        pt.added.distanceBelowKnee);
+          std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,0,,,,,,%s\n", ps.name.c_str(), pt.lowering, pt.added.mass,
+                        pt.added.distanceBelowKnee, pt.ran ? "failed" : "not_run");
         }
         out += line;
       }

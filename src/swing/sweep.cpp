@@ -178,6 +178,7 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
     } catch (const RunError& e) {
       pt.failure = e.what();
     }
+    pt.ran = true;
   };
   auto worker = [&] {
     for (;;) {
@@ -205,7 +206,7 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
     auto pickBest = [](std::vector<SweepPoint>& pts) {
       int best = -1;
       for (std::size_t k = 0; k < pts.size(); ++k) {
-        if (!pts[k].ok && pts[k].failure.empty()) pts[k].failure = "not run (interrupted)";
+        if (!pts[k].ran) pts[k].failure = "not run (interrupted)";
         if (pts[k].ok && pts[k].onGrid && (best < 0 || pts[k].result.swingTime < pts[static_cast<std::size_t>(best)].result.swingTime - 1e-12))
           best = static_cast<int>(k);
       }

@@ -36,7 +36,8 @@ struct SweepPoint {
   bool onGrid = true;       ///< a study step (false: an extra Table 4 lowering, never "fastest")
   AddedMass added;
   bool ok = false;          ///< the swing ended
-  std::string failure;      ///< why not, if !ok
+  bool ran = false;         ///< the swing was simulated (false: an interrupted sweep never reached it)
+  std::string failure;      ///< why not, if !ok ("not run (interrupted)" if !ran)
   SwingResult result;
 };
 
@@ -67,7 +68,7 @@ std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p
 
 /// Runs the sweep on `jobs` threads (0 = all cores). `progress(done, total)` is called
 /// from the calling thread only. A stop flag (SIGINT) ends it early: unfinished points
-/// then have ok = false and failure = "not run (interrupted)".
+/// then have ran = ok = false and failure = "not run (interrupted)".
 SweepResults runSweep(const SweepStudy& study, int jobs,
                       const std::function<void(int, int)>& progress = {},
                       const volatile bool* stopFlag = nullptr);

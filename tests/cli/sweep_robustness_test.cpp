@@ -116,16 +116,23 @@ TEST(SweepRobustness, SigintKeepsFinishedRowsReadableNamesTheMissingAndWritesNoR
   ASSERT_TRUE(std::getline(partial, header));
   EXPECT_EQ(header.rfind("participant,lowering_m,", 0), 0u) << header;
   const auto fields = [](const std::string& s) { return std::count(s.begin(), s.end(), ',') + 1; };
-  int rows = 0, finished = 0;
+  // The last column tells a point that never ran from a swing that ran and did not end.
+  EXPECT_EQ(header.substr(header.rfind(',') + 1), "status") << header;
+  int rows = 0, finished = 0, notRun = 0;
   while (std::getline(partial, row)) {
     ++rows;
     EXPECT_EQ(fields(row), fields(header)) << row;
     std::smatch m;
-    if (std::regex_search(row, m, std::regex(R"(^P1,[0-9.]+,0\.000,0\.000,1,(0\.[0-9]+),)"))) {
+    if (std::regex_search(row, m, std::regex(R"(^P1,[0-9.]+,0\.000,0\.000,1,(0\.[0-9]+),.*,ended$)"))) {
       ++finished;
       EXPECT_GT(std::stod(m[1]), 0.2) << row;
+    } else {
+      // Every swing of this study ends (P1, up to 0.2 m): an unfinished row was not run.
+      EXPECT_TRUE(std::regex_search(row, std::regex(R"(^P1,[0-9.]+,0\.000,0\.000,0,,,,,,not_run$)"))) << row;
+      ++notRun;
     }
   }
+  EXPECT_EQ(finished + notRun, rows);
   EXPECT_EQ(rows, 201);
   EXPECT_GT(finished, 0);
   EXPECT_LT(finished, rows) << "the interrupt came too late to test anything";
