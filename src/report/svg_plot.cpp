@@ -353,7 +353,36 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
     for (const auto& e : entries) longest = std::max(longest, e.label.size());
     const double boxW = 34 + kGlyphWidth * static_cast<double>(longest);
     const double boxH = 8 + kLegendRow * static_cast<double>(entries.size());
-    const double bx = left + plotW - boxW - 6, by = top + 6;
+    // The corner where the box covers the least data: series vertices and points along
+    // line segments every few pixels (top right wins ties, then top left, bottom right,
+    // bottom left).
+    constexpr double kInset = 6, kSampleSpacing = 4;  // px
+    const double corners[4][2] = {{left + plotW - boxW - kInset, top + kInset},
+                                  {left + kInset, top + kInset},
+                                  {left + plotW - boxW - kInset, top + plotH - boxH - kInset},
+                                  {left + kInset, top + plotH - boxH - kInset}};
+    int covered[4] = {0, 0, 0, 0};
+    auto mark = [&](double X, double Y) {
+      for (int c = 0; c < 4; ++c)
+        if (X >= corners[c][0] && X <= corners[c][0] + boxW && Y >= corners[c][1] && Y <= corners[c][1] + boxH)
+          ++covered[c];
+    };
+    for (const auto& ser : series_) {
+      for (std::size_t i = 0; i < ser.xs.size(); ++i) {
+        if (!std::isfinite(ser.xs[i]) || !std::isfinite(ser.ys[i])) continue;
+        const double X = mapX(ser.xs[i]), Y = mapY(ser.ys[i]);
+        mark(X, Y);
+        if (ser.points || i + 1 >= ser.xs.size() || !std::isfinite(ser.xs[i + 1]) || !std::isfinite(ser.ys[i + 1]))
+          continue;
+        const double X1 = mapX(ser.xs[i + 1]), Y1 = mapY(ser.ys[i + 1]);
+        const int n = static_cast<int>(std::min(1000.0, std::hypot(X1 - X, Y1 - Y) / kSampleSpacing));
+        for (int k = 1; k < n; ++k) mark(X + (X1 - X) * k / n, Y + (Y1 - Y) * k / n);
+      }
+    }
+    int best = 0;
+    for (int c = 1; c < 4; ++c)
+      if (covered[c] < covered[best]) best = c;
+    const double bx = corners[best][0], by = corners[best][1];
     s += "<g font-size=\"" + px(kFontTick) + "\">\n";
     s += "<rect x=\"" + px(bx) + "\" y=\"" + px(by) + "\" width=\"" + px(boxW) + "\" height=\"" +
          px(boxH) + "\" fill=\"#ffffff\" fill-opacity=\"0.85\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";

@@ -31,7 +31,8 @@ class SvgPlot {
   /// Fix an axis range instead of fitting it to the data (lo < hi, finite).
   void setXRange(double lo, double hi);
   void setYRange(double lo, double hi);
-  /// Show the legend (default true when anything has a label).
+  /// Show the legend (default true when anything has a label). It goes in the corner of
+  /// the plot area where it covers the least data.
   void setLegend(bool show) { legend_ = show; }
 
   /// A polyline; a non-finite x or y breaks the line. Empty label = not in the legend.

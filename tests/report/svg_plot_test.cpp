@@ -81,6 +81,43 @@ TEST(SvgPlot, FixedRangeMapsDataToPixelsLinearly) {
   EXPECT_THAT(svg, HasSubstr("L782.0 "));
 }
 
+// The legend box (white, grey frame) in the corner where it hides the least data.
+TEST(SvgPlot, LegendGoesToTheCornerWithTheLeastData) {
+  auto legendX = [](const std::string& svg) {
+    const auto p = svg.find("fill-opacity=\"0.85\" stroke=\"#999\"");
+    const auto rect = svg.rfind("<rect x=\"", p);
+    return std::stod(svg.substr(rect + 9));
+  };
+  auto legendY = [](const std::string& svg) {
+    const auto p = svg.find("fill-opacity=\"0.85\" stroke=\"#999\"");
+    const auto y = svg.rfind(" y=\"", p);
+    return std::stod(svg.substr(y + 4));
+  };
+  SvgPlot rising(800, 300);  // data from bottom left to top right: the top left is free
+  rising.setXRange(0, 1);
+  rising.setYRange(0, 1);
+  rising.addLine({0, 1}, {0, 1}, "rising", "#000");
+  rising.addLine({0.6, 1}, {1, 0.6}, "", "#000");
+  const std::string a = rising.render();
+  EXPECT_LT(legendX(a), 200) << "left";
+  EXPECT_LT(legendY(a), 100) << "top";
+
+  SvgPlot falling(800, 300);  // a line across the top: the legend goes below it
+  falling.setXRange(0, 1);
+  falling.setYRange(0, 1);
+  falling.addLine({0, 1}, {0.95, 0.95}, "flat top", "#000");
+  const std::string b = falling.render();
+  EXPECT_GT(legendY(b), 150) << "bottom";
+
+  SvgPlot empty(800, 300);  // nothing in the way: top right, as before
+  empty.setXRange(0, 1);
+  empty.setYRange(0, 1);
+  empty.addLine({0.0, 0.1}, {0.0, 0.1}, "corner", "#000");
+  const std::string c = empty.render();
+  EXPECT_GT(legendX(c), 500) << "right";
+  EXPECT_LT(legendY(c), 100) << "top";
+}
+
 TEST(SvgPlot, StacksPanelsVerticallyWithDistinctClipIds) {
   SvgPlot a(800, 300), b(800, 200);
   a.addLine({0, 1}, {0, 1}, "a", "#000");
