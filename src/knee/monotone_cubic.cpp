@@ -14,9 +14,13 @@ double interpolateMonotoneCubic(const std::vector<double>& x, const std::vector<
   auto tangent = [&](std::size_t k) {
     if (k == 0) return ends == MonotoneCubicEnds::kFlat ? 0.0 : secant(0);
     if (k == n - 1) return ends == MonotoneCubicEnds::kFlat ? 0.0 : secant(n - 2);
+    // Weighted harmonic mean of the neighbouring secants (Fritsch & Butland 1984's weights,
+    // the slopes of PCHIP): w1 = 2 h_k + h_(k-1), w2 = h_k + 2 h_(k-1).
     const double a = secant(k - 1), b = secant(k);
     if (a * b <= 0) return 0.0;
-    return 3 * (a + b) / ((2 * b + a) / a + (b + 2 * a) / b);  // weighted harmonic mean
+    const double hPrev = x[k] - x[k - 1], hNext = x[k + 1] - x[k];
+    const double w1 = 2 * hNext + hPrev, w2 = hNext + 2 * hPrev;
+    return (w1 + w2) / (w1 / a + w2 / b);
   };
   const double h = x[i + 1] - x[i];
   const double s = (t - x[i]) / h;

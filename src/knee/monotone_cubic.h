@@ -14,8 +14,11 @@ enum class MonotoneCubicEnds {
 };
 
 /// y(t) through (x[i], y[i]) (x strictly increasing, at least 2 samples), held at y.front()
-/// and y.back() outside [x.front(), x.back()]. Interior slopes are Fritsch-Carlson's weighted
-/// harmonic mean of the neighbouring secants, zero where the data turn.
+/// and y.back() outside [x.front(), x.back()]. Interior slopes are the weighted harmonic mean
+/// of the neighbouring secants (Fritsch & Butland 1984, "A method for constructing local
+/// monotone piecewise cubic interpolants", SIAM J. Sci. Stat. Comput. 5:300-304; the slopes
+/// of PCHIP), zero where the data turn: they satisfy Fritsch & Carlson's monotonicity
+/// conditions, so the curve is monotone wherever the data are.
 double interpolateMonotoneCubic(const std::vector<double>& x, const std::vector<double>& y, double t,
                                 MonotoneCubicEnds ends);
 

@@ -19,7 +19,7 @@ struct HipMomentProfile {
   double extensionDuration = 0.20; ///< s
 
   // kTable: moment (N m, + = flexion) at strictly increasing times (s); monotone cubic
-  // (Fritsch-Carlson) between samples, held at the end values outside.
+  // (PCHIP slopes, knee/monotone_cubic.h) between samples, held at the end values outside.
   std::vector<double> times, moments;
 
   /// Time scale tau, the one calibrated number per participant (`swingsim calibrate`):

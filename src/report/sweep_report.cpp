@@ -406,8 +406,14 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     md += "- Toe clearance: hip height = 0.530 x standing height (Winter's anthropometry, greater trochanter); the "
           "lowest of ankle and toe during swing. A negative value means the foot would strike the ground with the "
           "hip at standing height (in running the hip is higher in flight, so this is conservative).\n";
+    const double converged = calcConvergedAccuracy(study.swing.integrator);
     md += std::string("- Integrator: ") + integratorName(study.swing.integrator) + ", accuracy " +
-          fmt("%g", study.swing.accuracy) + " (converged to 0.1 ms of swing time: README, Convergence study).\n";
+          fmt("%g", study.swing.accuracy) +
+          (study.swing.accuracy <= converged
+               ? " (swing times converged to 0.1 ms: README, Convergence study).\n"
+               : " -- LOOSER than the " + fmt("%g", converged) +
+                     " at which this integrator's swing times converge to 0.1 ms (README, Convergence study): "
+                     "its swing times may be off by more than that.\n");
   }
   files["report.md"] = md;
   return files;

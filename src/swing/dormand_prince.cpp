@@ -33,7 +33,8 @@ constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 3270041
 // with Lund's PI stabilization (Hairer II, Sec. IV.2, Eq. 2.43c; DOPRI5's BETA = 0.04): the
 // new step is h * 0.9 err^(-(0.2 - 0.75 beta)) errPrev^beta, and a step that follows a
 // rejection may not grow (DOPRI5). Both cut rejections where the solution has kinks (the
-// damping table is piecewise linear in angle, the hip moment piecewise sine in time).
+// damping table's cubic pieces meet with a jump in curvature, the hip moment's half-sines
+// with a jump in slope).
 constexpr double kSafety = 0.9;
 constexpr double kMinShrink = 0.2;
 constexpr double kMaxGrow = 5.0;

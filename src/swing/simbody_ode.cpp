@@ -1,6 +1,8 @@
 #include "swing/simbody_ode.h"
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace swingsim {
 
@@ -53,6 +55,17 @@ void SimbodyOde::calcDerivatives(double t, const double* y, double* dydt) const 
   for (int i = 0; i < nq_; ++i) dydt[i] = qdot[i];
   for (int i = 0; i < nu_; ++i) dydt[nq_ + i] = udot[i];
   for (int i = 0; i < nz_; ++i) dydt[nq_ + nu_ + i] = zdot[i];
+  // Say it here, where the cause is: a NaN passed on would next surface in Simbody as
+  // "Inertia matrix contains a NaN", pointing away from the force element that made it.
+  for (int i = 0; i < numStates(); ++i) {
+    if (!std::isfinite(dydt[i])) {
+      const char* kind = i < nq_ ? "q" : i < nq_ + nu_ ? "u" : "z";
+      const int index = i < nq_ ? i : i < nq_ + nu_ ? i - nq_ : i - nq_ - nu_;
+      throw std::runtime_error("the derivative of " + std::string(kind) + "[" + std::to_string(index) +
+                               "] is not finite at t = " + std::to_string(t) +
+                               " s (a force element, e.g. the knee or hip law, returned NaN or infinity)");
+    }
+  }
 }
 
 }  // namespace swingsim

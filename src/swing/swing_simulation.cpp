@@ -442,6 +442,17 @@ const char* integratorName(SwingIntegrator integrator) {
   return "?";
 }
 
+double calcConvergedAccuracy(SwingIntegrator integrator) {
+  switch (integrator) {
+    case SwingIntegrator::kDormandPrince: return 1e-5;
+    case SwingIntegrator::kRungeKuttaMerson: return 1e-4;
+    case SwingIntegrator::kRungeKuttaFeldberg: return 1e-5;
+    case SwingIntegrator::kRungeKutta3: return 1e-3;
+    case SwingIntegrator::kVerlet: return 1e-5;
+  }
+  return 0;
+}
+
 const std::vector<std::string>& integratorKeys() {
   static const std::vector<std::string> keys = {"dormand-prince", "runge-kutta-merson", "runge-kutta-feldberg",
                                                 "runge-kutta-3", "verlet"};
@@ -513,7 +524,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   const double stopAfterEnd = rule.bounceWindow;
   constexpr double kLoosestWindowAccuracy = 1e-3;  // the bounce flag needs the knee to a fraction of a degree
   const double windowAccuracy = std::min(options.accuracy * options.bounceWindowAccuracyFactor, kLoosestWindowAccuracy);
-  bool windowStarted = false;
+  bool windowStarted = false, endCounted = false;
   while (true) {
     bool more;
     try {
@@ -541,10 +552,13 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                      deg(p.hipRange.minFlexion) + " to " + deg(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
                      " (likely cause: a hip moment far too large for this leg, or a hip_range that excludes the swing)");
     }
+    if (log.ended && !endCounted) {
+      endCounted = true;
+      result.realizationsToEnd = stepper->getNumRealizations();
+    }
     if (log.ended && now.t >= log.endTime + stopAfterEnd - 1e-12) break;
     if (log.ended && !windowStarted && !options.simbodyEvents && windowAccuracy > options.accuracy) {
       windowStarted = true;
-      result.realizationsToEnd = stepper->getNumRealizations();
       stepper->restart(windowAccuracy);
     }
     if (!log.ended && (now.t >= rule.timeLimit - 1e-12 || !more)) {
@@ -577,7 +591,6 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   result.events = log.events;
   result.steps = stepper->getNumSteps();
   result.realizations = stepper->getNumRealizations();
-  if (!windowStarted) result.realizationsToEnd = result.realizations;
   return result;
 }
 

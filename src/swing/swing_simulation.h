@@ -80,7 +80,7 @@ struct SwingResult {
   SwingTrajectory trajectory;
   int steps = 0;                   ///< integrator steps taken
   int realizations = 0;            ///< system realizations the integrator asked for
-  int realizationsToEnd = 0;       ///< of which before the bounce window (to the swing end)
+  int realizationsToEnd = 0;       ///< of which up to the step where the swing ended (the rest: bounce window)
 };
 
 /// The participant-level inputs one swing needs, after loading.
@@ -94,6 +94,11 @@ struct SwingSetup {
 /// Standing hip height used for toe clearance: 0.530 x height (Winter 2009, Table 4.1
 /// segment lengths: greater trochanter at 0.530 H).
 double calcHipHeight(const Participant& p);
+
+/// The loosest accuracy at which this integrator's swing time is converged to 0.1 ms in the
+/// README's convergence study (Dormand-Prince 1e-5 also over the whole sweep, by the guard
+/// test; Runge-Kutta-Merson 1e-4, Runge-Kutta-Feldberg 1e-5, Runge-Kutta 3 1e-3, Verlet 1e-5).
+double calcConvergedAccuracy(SwingIntegrator integrator);
 
 /// Options of the plain path: Simbody's Runge-Kutta-Merson with its event handlers at
 /// `accuracy`, localizing crossings to `eventWindow` s. Shares no integration code with the

@@ -28,13 +28,14 @@ TEST(DampingTable, PassesThroughTheSamplesAndHoldsOutsideTheTable) {
   EXPECT_NEAR(table.calcTableMoment(70 * kDeg), 4.5, kRoundOff);
   EXPECT_NEAR(table.calcTableMoment(-5 * kDeg), 1.0, kRoundOff);
   EXPECT_NEAR(table.calcTableMoment(90 * kDeg), 4.5, kRoundOff);
-  // Between samples: the cubic Hermite with Fritsch-Carlson slopes, by hand. At 30 deg the
-  // secants are 0.6/30 and 2.9/40 per deg; the slope is their weighted harmonic mean; the
-  // ends are flat. At the interval midpoints the Hermite basis gives (y0 + y1)/2 + h (m0 - m1)/8.
-  const double a = 0.6 / 30, b = 2.9 / 40;                          // N m per deg
-  const double m30 = 3 * (a + b) / ((2 * b + a) / a + (b + 2 * a) / b);  // N m per deg
-  EXPECT_NEAR(table.calcTableMoment(15 * kDeg), 1.3 + 30 * (0 - m30) / 8, kRoundOff);
-  EXPECT_NEAR(table.calcTableMoment(50 * kDeg), 3.05 + 40 * (m30 - 0) / 8, kRoundOff);
+  // Between samples, worked by hand. The slope at 30 deg is PCHIP's (Fritsch & Butland
+  // 1984): secants 0.02 and 0.0725 N m/deg over intervals of 30 and 40 deg, weights
+  // w1 = 2*40 + 30 = 110 and w2 = 40 + 2*30 = 100, slope 210 / (110/0.02 + 100/0.0725)
+  // = 29/950 N m/deg (0.0305); the ends are flat. At an interval's midpoint the cubic
+  // Hermite is (y0 + y1)/2 + h (m0 - m1)/8.
+  constexpr double m30 = 29.0 / 950;  // N m per deg
+  EXPECT_NEAR(table.calcTableMoment(15 * kDeg), 1.3 - 30 * m30 / 8, kRoundOff);   // 1.18553
+  EXPECT_NEAR(table.calcTableMoment(50 * kDeg), 3.05 + 40 * m30 / 8, kRoundOff);  // 3.20263
 }
 
 TEST(DampingTable, IsMonotoneBetweenMonotoneSamplesAndHasNoKinks) {

@@ -11,6 +11,7 @@
 #include "knee/joint_stop.h"
 #include "swing/knee_setup.h"
 #include "swing/sweep.h"
+#include "swing/swing_simulation.h"
 
 namespace swingsim {
 namespace {
@@ -56,6 +57,26 @@ TEST(FastPath, SameSwingTimesAsThePlainPathForAllParticipantsAndLowerings) {
   }
   std::printf("fast vs plain path: %d swings, largest swing time difference %.2e s (tolerance %.0e s)\n", compared, maxDiff,
               kConvergedTol);
+}
+
+// The counters say where a swing's realizations go: up to the step where the swing ended,
+// then the bounce window (a restart at a looser accuracy on the fast path).
+TEST(FastPath, RealizationCountersSplitTheSwingFromTheBounceWindow) {
+  const Participant p = loadParticipant("participants/p1.yaml");
+  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  SwingSetup setup;
+  setup.participant = p;
+  setup.knee = &knee;
+  for (const SwingOptions& o : {SwingOptions{}, makeSimbodyIntegratorOptions(), makePlainPathOptions(1e-4, 1e-5)}) {
+    const SwingResult r = simulateSwing(setup, o);
+    EXPECT_GT(r.realizationsToEnd, 50) << integratorName(o.integrator);
+    EXPECT_LT(r.realizationsToEnd, r.realizations) << integratorName(o.integrator) << ": the window costs some";
+    EXPECT_GT(r.steps, 10);
+  }
+  // No window at all: everything is to the end.
+  setup.participant.swingEnd.bounceWindow = 0;
+  const SwingResult r = simulateSwing(setup);
+  EXPECT_EQ(r.realizationsToEnd, r.realizations);
 }
 
 // At the same tight accuracy the two ways of finding events agree far below the tolerance:

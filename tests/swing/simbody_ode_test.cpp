@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <vector>
 
 #include "io/knee_model_loader.h"
@@ -49,6 +50,25 @@ TEST(SimbodyOde, DerivativesAreSimbodysAndTheSameStateIsNotRealizedTwice) {
   y[0] += 1e-9;
   ode.realizeAt(t, y.data());
   EXPECT_EQ(ode.getNumRealizations(), 2);
+}
+
+// Swings do not integrate the work (nothing reads it there): no Z states for a law
+// without states, and asking for the work says so instead of reading garbage.
+TEST(SimbodyOde, LegWithoutWorkTrackingHasOnlyTheLawStates) {
+  const Participant p = loadP1();
+  const KneeLawSum damping = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  const LegModel plain(calcLegGeometry(p, 0.0), damping, p.hipMoment, p.hipRange, 1.0, /*trackWork=*/false);
+  const State s = plain.makeInitialState(p.initial);
+  EXPECT_EQ(s.getNZ(), 0);
+  EXPECT_EQ(plain.getKneeLawStates(s), nullptr);
+  EXPECT_THROW(plain.getKneeWork(s), std::logic_error);
+  EXPECT_THROW(plain.getHipWork(s), std::logic_error);
+  const LegModel tracked(calcLegGeometry(p, 0.0), damping, p.hipMoment, p.hipRange, 1.0);
+  EXPECT_EQ(tracked.makeInitialState(p.initial).getNZ(), 2);  // knee work, hip work
+
+  const KneeLawSum mauch = makeKneeLaw(p, loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-4phase.yaml"));
+  const LegModel latch(calcLegGeometry(p, 0.0), mauch, p.hipMoment, p.hipRange, 1.0, /*trackWork=*/false);
+  EXPECT_EQ(latch.makeInitialState(p.initial).getNZ(), mauch.numStates());
 }
 
 // Dormand-Prince over SimbodyOde against Simbody's RK-Merson on the same Mauch leg (S2

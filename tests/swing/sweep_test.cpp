@@ -80,6 +80,13 @@ TEST(Sweep, ReportHasEveryFigureAndTheSideBySideTable) {
   EXPECT_NE(md.find("| P2 | 0.125 | 0.450 | 0.314 |"), std::string::npos) << "Table 4 row with its off-grid lowering";
   EXPECT_NE(md.find("## Assumptions used in this run"), std::string::npos);
   EXPECT_NE(md.find("Where we disagree with the paper"), std::string::npos);
+  EXPECT_NE(md.find("accuracy 1e-05 (swing times converged to 0.1 ms"), std::string::npos);
+  // A study run looser than the convergence study's setting says so.
+  SweepStudy loose = study;
+  loose.swing.accuracy = 1e-3;
+  const std::string looseMd = makeSweepReport(loose, sweepOnce()).at("report.md");
+  EXPECT_NE(looseMd.find("accuracy 0.001 -- LOOSER than the 1e-05"), std::string::npos);
+  EXPECT_EQ(looseMd.find("swing times converged to 0.1 ms"), std::string::npos);
 }
 
 TEST(Sweep, StandardLocationMatchesTable3InTheSweep) {
