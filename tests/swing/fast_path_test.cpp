@@ -20,6 +20,20 @@ constexpr double kConvergedTol = 1e-4;      // s: the swing time the README's co
 constexpr double kTightAccuracy = 1e-8;     // plain path: integration error far below kConvergedTol
 constexpr double kTightEventWindow = 1e-9;  // s: plain path localization window
 
+// A bundled participant with its own knee, and swing setups that point at that knee.
+struct Bundled {
+  Participant participant;
+  KneeLawSum knee;
+  explicit Bundled(const char* file)
+      : participant(loadParticipant(file)), knee(makeKneeLaw(participant, loadKneeModel(participant.kneeModelPath))) {}
+  SwingSetup setup() const {
+    SwingSetup s;
+    s.participant = participant;
+    s.knee = &knee;
+    return s;
+  }
+};
+
 SweepStudy burkettStudy(const SwingOptions& swing) {
   SweepStudy s = loadSweepStudy("studies/burkett2004.yaml");
   s.addedMasses = {0.0};  // the plain sweep, with Table 4's off-grid lowerings
@@ -62,11 +76,8 @@ TEST(FastPath, SameSwingTimesAsThePlainPathForAllParticipantsAndLowerings) {
 // The counters say where a swing's realizations go: up to the step where the swing ended,
 // then the bounce window (a restart at a looser accuracy on the fast path).
 TEST(FastPath, RealizationCountersSplitTheSwingFromTheBounceWindow) {
-  const Participant p = loadParticipant("participants/p1.yaml");
-  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
+  const Bundled p1("participants/p1.yaml");
+  SwingSetup setup = p1.setup();
   for (const SwingOptions& o : {SwingOptions{}, makeSimbodyIntegratorOptions(), makePlainPathOptions(1e-4, 1e-5)}) {
     const SwingResult r = simulateSwing(setup, o);
     EXPECT_GT(r.realizationsToEnd, 50) << integratorName(o.integrator);
@@ -108,11 +119,8 @@ TEST(FastPath, EventSearchAgreesWithSimbodyLocalizationAtTightAccuracy) {
 // alone miss that crossing (the swing then "ends" 41 ms later, at the thigh's second
 // rise); the fast path checks the interpolated extremum.
 TEST(FastPath, ThighGrazingItsTargetWithinOneStepIsStillFound) {
-  const Participant p = loadParticipant("participants/p4.yaml");
-  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
+  const Bundled p4("participants/p4.yaml");
+  SwingSetup setup = p4.setup();
   setup.lowering = 0.140;
   setup.added = {1.0, 0.10};
   const SwingOptions plainOptions = makePlainPathOptions(kTightAccuracy, kTightEventWindow);
