@@ -505,22 +505,17 @@ CylinderDiagnosis diagnoseCylinder(const MauchCylinderParams& base, const std::v
       break;
     }
     const auto chosen = static_cast<std::size_t>(step.chosen);
-    step.group.push_back(names[chosen]);
-    // Ambiguity: another accepted candidate j such that the chosen effect adds nothing
-    // significant on top of j: the data cannot say which of the two is missing.
-    for (std::size_t j = 0; j < names.size(); ++j) {
-      if (j == chosen || !step.candidates[j].accepted) continue;
+    step.group = findAmbiguityGroup(scores, names, chosen, settings.alpha, [&](std::size_t j) -> std::optional<double> {
       Scored joint;
       try {
         joint = fitAndScore(combine(best[j].params, best[chosen].params), train, validate);
       } catch (const RunError&) {
-        continue;
+        return std::nullopt;
       }
       const int dofChosen = static_cast<int>(effectColumns(joint.params, names[chosen]).size()) +
                             (gridOf(names[chosen]).size() > 1 ? 1 : 0);
-      const LrTest t = calcLrTest(best[j], joint, std::max(1, dofChosen));
-      if (t.p >= settings.alpha) step.group.push_back(names[j]);
-    }
+      return calcLrTest(best[j], joint, std::max(1, dofChosen)).p;
+    });
     current = best[chosen];
     {
       // Phases of the new model for the next step's "where".
@@ -529,13 +524,8 @@ CylinderDiagnosis diagnoseCylinder(const MauchCylinderParams& base, const std::v
     }
     out.accepted.push_back(names[chosen]);
     out.acceptedScores.push_back(step.candidates[chosen]);
-    if (step.group.size() > 1) {
-      out.ambiguous.push_back(step.group);
-      std::vector<std::string> separatedBy;
-      for (const auto& g : step.group) separatedBy.push_back(findCylinderEffect(g).separatedBy);
-      const std::string advice = formatAmbiguityAdvice(step.group, separatedBy);
-      out.ambiguityAdvice.push_back(advice);
-    }
+    recordAmbiguity(step.group, [](const std::string& e) { return findCylinderEffect(e).separatedBy; }, out.ambiguous,
+                    out.ambiguityAdvice);
     out.steps.push_back(step);
   }
   out.final = current.params;

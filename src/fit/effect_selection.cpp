@@ -62,6 +62,28 @@ int applyAcceptanceRule(std::vector<EffectScore*> scores, double alpha) {
   return chosen;
 }
 
+std::vector<std::string> findAmbiguityGroup(const std::vector<EffectScore*>& scores,
+                                            const std::vector<std::string>& names, std::size_t chosen, double alpha,
+                                            const std::function<std::optional<double>(std::size_t)>& pAddingChosenTo) {
+  std::vector<std::string> group{names[chosen]};
+  for (std::size_t j = 0; j < names.size(); ++j) {
+    if (j == chosen || !scores[j]->accepted) continue;
+    const std::optional<double> p = pAddingChosenTo(j);
+    if (p && *p >= alpha) group.push_back(names[j]);
+  }
+  return group;
+}
+
+void recordAmbiguity(const std::vector<std::string>& group,
+                     const std::function<std::string(const std::string&)>& separatedBy,
+                     std::vector<std::vector<std::string>>& ambiguous, std::vector<std::string>& advice) {
+  if (group.size() < 2) return;
+  ambiguous.push_back(group);
+  std::vector<std::string> texts;
+  for (const auto& g : group) texts.push_back(separatedBy(g));
+  advice.push_back(formatAmbiguityAdvice(group, texts));
+}
+
 std::string formatAmbiguityAdvice(const std::vector<std::string>& group, const std::vector<std::string>& separatedBy) {
   std::string advice = "the data cannot tell ";
   for (std::size_t g = 0; g < group.size(); ++g)

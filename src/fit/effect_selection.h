@@ -4,6 +4,8 @@
 // Bonferroni-corrected acceptance rule with held-out margin and sign rule, the choice of the
 // best accepted candidate, ambiguity advice and parameter intervals. The cylinder and the
 // swing diagnoses differ only in how a candidate model is fitted and run.
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +71,22 @@ void setNormalInterval(EffectParameter& p, double standardError);
 /// the accepted candidate with the lowest delta BIC (-1 if none). Only scores with an empty
 /// notApplicable take part.
 int applyAcceptanceRule(std::vector<EffectScore*> scores, double alpha);
+
+/// The ambiguity group of the candidate `chosen` in one step: its name, then the name of
+/// every other accepted candidate j on top of which the chosen effect adds nothing
+/// significant, i.e. `pAddingChosenTo(j)` (the LR test's p of the joint refit of j plus the
+/// chosen effect against j's own fit) is at least alpha: the data cannot say which of the
+/// two is missing. A nullopt p (the joint refit failed) leaves j out.
+std::vector<std::string> findAmbiguityGroup(const std::vector<EffectScore*>& scores,
+                                            const std::vector<std::string>& names, std::size_t chosen, double alpha,
+                                            const std::function<std::optional<double>(std::size_t)>& pAddingChosenTo);
+
+/// Appends a group of more than one effect to `ambiguous`, with its advice
+/// (formatAmbiguityAdvice, each effect's `separatedBy` text) to `advice`; a single effect is
+/// not ambiguous and is ignored.
+void recordAmbiguity(const std::vector<std::string>& group,
+                     const std::function<std::string(const std::string&)>& separatedBy,
+                     std::vector<std::vector<std::string>>& ambiguous, std::vector<std::string>& advice);
 
 /// "the data cannot tell a from b apart; to separate them add for a: ...; for b: ...".
 std::string formatAmbiguityAdvice(const std::vector<std::string>& group, const std::vector<std::string>& separatedBy);

@@ -696,30 +696,21 @@ SwingDiagnosis diagnoseSwing(const SwingBase& base, const std::vector<SwingRecor
       break;
     }
     const auto chosen = static_cast<std::size_t>(step.chosen);
-    step.group.push_back(names[chosen]);
-    // Ambiguity: another accepted candidate j such that the chosen effect adds nothing
-    // significant on top of j.
-    for (std::size_t j = 0; j < names.size(); ++j) {
-      if (j == chosen || !step.candidates[j].accepted) continue;
+    step.group = findAmbiguityGroup(scores, names, chosen, settings.alpha, [&](std::size_t j) -> std::optional<double> {
       Scored joint;
       try {
         joint = fitAndScore(base, combine(best[j].params, best[chosen].params, names[chosen]), train, validate, tol);
       } catch (const RunError&) {
-        continue;
+        return std::nullopt;
       }
       const int dofChosen = linearCount(names[chosen]) + (gridOf(names[chosen]).size() > 1 ? 1 : 0);
-      const LrTest t = calcLrTest(best[j].trainRss, joint.trainRss, joint.trainResidual, dofChosen);
-      if (t.p >= settings.alpha) step.group.push_back(names[j]);
-    }
+      return calcLrTest(best[j].trainRss, joint.trainRss, joint.trainResidual, dofChosen).p;
+    });
     current = best[chosen];
     out.accepted.push_back(names[chosen]);
     out.acceptedScores.push_back(step.candidates[chosen]);
-    if (step.group.size() > 1) {
-      out.ambiguous.push_back(step.group);
-      std::vector<std::string> separatedBy;
-      for (const auto& g : step.group) separatedBy.push_back(findSwingEffect(g).separatedBy);
-      out.ambiguityAdvice.push_back(formatAmbiguityAdvice(step.group, separatedBy));
-    }
+    recordAmbiguity(step.group, [](const std::string& e) { return findSwingEffect(e).separatedBy; }, out.ambiguous,
+                    out.ambiguityAdvice);
     out.steps.push_back(step);
   }
   out.final = current.params;
