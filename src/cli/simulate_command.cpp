@@ -1,5 +1,7 @@
-// swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--json FILE] [--out DIR]
+// swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--integrator METHOD] [--accuracy A] [--json FILE] [--out DIR]
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "cli/command_registry.h"
 #include "io/json_writer.h"
@@ -15,7 +17,23 @@ namespace swingsim::cli {
 namespace {
 
 int runSimulate(const std::vector<std::string>& args) {
-  Arguments a(args, {"--lowering", "--knee", "--json", "--out", "--add-mass", "--hip-rate-deg-s", "--knee-rate-deg-s"});
+  Arguments a(args, {"--lowering", "--knee", "--json", "--out", "--add-mass", "--hip-rate-deg-s", "--knee-rate-deg-s",
+                     "--integrator", "--accuracy"});
+  SwingOptions options;
+  if (a.has("--integrator")) {
+    const std::string key = a.get("--integrator");
+    const std::optional<SwingIntegrator> integrator = findIntegrator(key);
+    if (!integrator) {
+      std::string known;
+      for (const auto& k : integratorKeys()) known += (known.empty() ? "" : ", ") + k;
+      throw UsageError("--integrator: expected one of " + known + " (got '" + key + "')");
+    }
+    options.integrator = *integrator;
+    options.accuracy = calcConvergedAccuracy(*integrator);  // its converged setting unless --accuracy says otherwise
+  }
+  options.accuracy = a.getDouble("--accuracy", options.accuracy);
+  if (const std::string bad = checkAccuracy(options.accuracy); !bad.empty())
+    throw UsageError("--accuracy: " + bad + " (got " + a.get("--accuracy") + ")");
   if (a.positional().size() != 1) throw UsageError("expected one participant YAML file");
   SwingSetup setup;
   setup.participant = loadParticipant(a.positional()[0]);
@@ -27,13 +45,15 @@ int runSimulate(const std::vector<std::string>& args) {
   const KneeModel model = loadKneeModel(a.get("--knee", p.kneeModelPath));
   const KneeLawSum knee = makeKneeLaw(p, model);
   setup.knee = &knee;
-  const SwingResult r = simulateSwing(setup);
+  const SwingResult r = simulateSwing(setup, options);
 
   std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
   std::printf("  swing time          %.4f s\n", r.swingTime);
   std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion * kRadToDeg, r.peakKneeFlexionTime);
   std::printf("  bounce              %s\n", r.bounce ? "yes (knee left the zone of stability again)" : "no");
   std::printf("  min toe clearance   %.3f m%s\n", r.minToeClearance, r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
+  std::printf("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
+              options.accuracy, r.realizations);
   std::printf("  events:");
   for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
   std::printf("\n");
@@ -53,7 +73,8 @@ int runSimulate(const std::vector<std::string>& args) {
 }
 
 Registrar reg("simulate", {"simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M] "
-                           "[--hip-rate-deg-s V] [--knee-rate-deg-s V] [--json FILE] [--out DIR]",
+                           "[--hip-rate-deg-s V] [--knee-rate-deg-s V] [--integrator METHOD] [--accuracy A] "
+                           "[--json FILE] [--out DIR]",
                            "simulate one swing: swing time, peak knee flexion, events, trajectory CSV/.sto",
                            runSimulate});
 

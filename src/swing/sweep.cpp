@@ -56,10 +56,8 @@ SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
     YamlMap m = yaml.getMap("integrator");
     const std::vector<std::string>& keys = integratorKeys();
     const std::string method = m.getChoice("method", keys, keys[static_cast<int>(s.swing.integrator)]);
-    s.swing.integrator = static_cast<SwingIntegrator>(std::find(keys.begin(), keys.end(), method) - keys.begin());
-    s.swing.accuracy = m.getDouble("accuracy", s.swing.accuracy, [](double v) {
-      return v > 0 && v <= 1e-2 ? "" : "expected a relative accuracy in (0, 0.01]";
-    });
+    s.swing.integrator = *findIntegrator(method);  // getChoice allowed only known keys
+    s.swing.accuracy = m.getDouble("accuracy", s.swing.accuracy, [](double v) { return checkAccuracy(v); });
     s.swing.sampleInterval = m.getDouble("sample_interval_s", s.swing.sampleInterval, [](double v) {
       return v >= 1e-5 && v <= 0.1 ? "" : "expected a sample interval from 0.00001 to 0.1 s";
     });

@@ -459,6 +459,17 @@ const std::vector<std::string>& integratorKeys() {
   return keys;
 }
 
+std::optional<SwingIntegrator> findIntegrator(const std::string& key) {
+  const auto& keys = integratorKeys();
+  const auto it = std::find(keys.begin(), keys.end(), key);
+  if (it == keys.end()) return std::nullopt;
+  return static_cast<SwingIntegrator>(it - keys.begin());
+}
+
+std::string checkAccuracy(double accuracy) {
+  return accuracy > 0 && accuracy <= 1e-2 ? "" : "expected a relative accuracy in (0, 0.01]";
+}
+
 SwingOptions makePlainPathOptions(double accuracy, double eventWindow) {
   SwingOptions o;
   o.integrator = SwingIntegrator::kRungeKuttaMerson;

@@ -1,6 +1,7 @@
 #pragma once
 // One swing: build the leg for a participant and lowering, integrate from toe-off with
 // Simbody, find the swing end by event handlers, and return times, events and trajectory.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ const char* integratorName(SwingIntegrator integrator);
 /// YAML key of each integrator, in enum order: dormand-prince, runge-kutta-merson,
 /// runge-kutta-feldberg, runge-kutta-3, verlet.
 const std::vector<std::string>& integratorKeys();
+/// The integrator of a YAML/CLI key (integratorKeys), or nullopt.
+std::optional<SwingIntegrator> findIntegrator(const std::string& key);
+/// "" if `accuracy` is usable (in (0, 0.01]), else what was expected.
+std::string checkAccuracy(double accuracy);
 
 /// Integrator settings. The defaults are the converged settings of the README's
 /// convergence study (swing time converged to 0.1 ms).

@@ -56,6 +56,33 @@ TEST(Cli, SimulateWritesTrajectoryStoAndJson) {
   EXPECT_TRUE(fs::exists(out / "P1-lower050mm.csv"));
 }
 
+// --integrator picks Simbody's own integrator at its converged accuracy; the swing time is
+// the same to the converged 0.1 ms; a wrong name or accuracy is a usage error.
+TEST(Cli, SimulateChoosesTheIntegrator) {
+  const fs::path out = freshDir("integrator");
+  auto swingTime = [](const std::string& output) {
+    const auto p = output.find("swing time");
+    return std::stod(output.substr(output.find_first_of("0123456789", p)));
+  };
+  const CliRun dp = run("simulate participants/p1.yaml --out " + out.string());
+  ASSERT_EQ(dp.code, 0) << dp.output;
+  EXPECT_THAT(dp.output, HasSubstr("integrator          Dormand-Prince 5(4) over Simbody realizations, accuracy 1e-05"));
+  const CliRun rkm = run("simulate participants/p1.yaml --integrator runge-kutta-merson --out " + out.string());
+  ASSERT_EQ(rkm.code, 0) << rkm.output;
+  EXPECT_THAT(rkm.output, HasSubstr("integrator          Simbody Runge-Kutta-Merson, accuracy 0.0001"));
+  EXPECT_NEAR(swingTime(rkm.output), swingTime(dp.output), 1e-4);
+  const CliRun tight = run("simulate participants/p1.yaml --accuracy 1e-7 --out " + out.string());
+  EXPECT_THAT(tight.output, HasSubstr("accuracy 1e-07"));
+
+  const CliRun badName = run("simulate participants/p1.yaml --integrator euler --out " + out.string());
+  EXPECT_EQ(badName.code, 2);
+  EXPECT_THAT(badName.output, HasSubstr("--integrator: expected one of dormand-prince, runge-kutta-merson"));
+  EXPECT_THAT(badName.output, HasSubstr("(got 'euler')"));
+  const CliRun badAccuracy = run("simulate participants/p1.yaml --accuracy 0.5 --out " + out.string());
+  EXPECT_EQ(badAccuracy.code, 2);
+  EXPECT_THAT(badAccuracy.output, HasSubstr("--accuracy: expected a relative accuracy in (0, 0.01] (got 0.5)"));
+}
+
 TEST(Cli, BadParticipantExitsOneWithLocatedMessageAndWritesNothing) {
   fs::path out = freshDir("bad");
   std::ifstream in("participants/p1.yaml");
