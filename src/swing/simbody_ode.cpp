@@ -14,12 +14,13 @@ SimbodyOde::SimbodyOde(const MultibodySystem& system, State& state)
     throw std::invalid_argument("SimbodyOde: systems with constraints need projection; use a Simbody integrator");
 }
 
-void SimbodyOde::readState(const State& s, double* y) const {
-  const Vector &q = s.getQ(), &u = s.getU(), &z = s.getZ();
+void SimbodyOde::concatenate(const Vector& q, const Vector& u, const Vector& z, double* y) const {
   for (int i = 0; i < nq_; ++i) y[i] = q[i];
   for (int i = 0; i < nu_; ++i) y[nq_ + i] = u[i];
   for (int i = 0; i < nz_; ++i) y[nq_ + nu_ + i] = z[i];
 }
+
+void SimbodyOde::readState(const State& s, double* y) const { concatenate(s.getQ(), s.getU(), s.getZ(), y); }
 
 bool SimbodyOde::isAt(double t, const double* y) const {
   if (state_.getSystemStage() < Stage::Acceleration || state_.getTime() != t) return false;
@@ -51,10 +52,7 @@ const State& SimbodyOde::realizeAt(double t, const double* y) const {
 
 void SimbodyOde::calcDerivatives(double t, const double* y, double* dydt) const {
   const State& s = realizeAt(t, y);
-  const Vector &qdot = s.getQDot(), &udot = s.getUDot(), &zdot = s.getZDot();
-  for (int i = 0; i < nq_; ++i) dydt[i] = qdot[i];
-  for (int i = 0; i < nu_; ++i) dydt[nq_ + i] = udot[i];
-  for (int i = 0; i < nz_; ++i) dydt[nq_ + nu_ + i] = zdot[i];
+  concatenate(s.getQDot(), s.getUDot(), s.getZDot(), dydt);
   // Say it here, where the cause is: a NaN passed on would next surface in Simbody as
   // "Inertia matrix contains a NaN", pointing away from the force element that made it.
   for (int i = 0; i < numStates(); ++i) {

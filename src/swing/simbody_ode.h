@@ -34,6 +34,8 @@ class SimbodyOde final : public OdeSystem {
 
  private:
   bool isAt(double t, const double* y) const;
+  /// (q, u, z)-shaped vectors laid end to end into y (numStates() values).
+  void concatenate(const SimTK::Vector& q, const SimTK::Vector& u, const SimTK::Vector& z, double* y) const;
   const SimTK::MultibodySystem& system_;
   SimTK::State& state_;
   int nq_, nu_, nz_;
