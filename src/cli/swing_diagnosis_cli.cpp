@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <regex>
 
 #include "fit/synthetic_swing.h"
@@ -224,49 +225,40 @@ int generateSwingKinematics(YamlMap& yaml, const Arguments& args) {
   if (yaml.has("hidden_effects")) {
     YamlMap h = yaml.getMap("hidden_effects");
     auto& e = truth.effects;
-    if (h.has("knee_coulomb_friction")) {
-      YamlMap m = h.getMap("knee_coulomb_friction");
-      truth = addSwingEffect(truth, "knee_coulomb_friction", m.getDouble("smoothing_deg_s", 57.29577951308232, mustBePositive) * kDegToRad);
+    // One hidden effect: its block, read by `read` (which adds the effect to the truth),
+    // then its name kept for the table below.
+    auto hidden = [&](const char* name, const std::function<void(YamlMap&, const char*)>& read) {
+      if (!h.has(name)) return;
+      YamlMap m = h.getMap(name);
+      read(m, name);
+      m.finish();
+      hiddenNames.push_back(name);
+    };
+    hidden("knee_coulomb_friction", [&](YamlMap& m, const char* name) {
+      truth = addSwingEffect(truth, name, m.getDouble("smoothing_deg_s", 57.29577951308232, mustBePositive) * kDegToRad);
       e.knee.coulombMoment = m.getDouble("moment_Nm", mustBeNonNegative);
-      m.finish();
-      hiddenNames.push_back("knee_coulomb_friction");
-    }
-    if (h.has("knee_viscous_damping")) {
-      YamlMap m = h.getMap("knee_viscous_damping");
-      truth = addSwingEffect(truth, "knee_viscous_damping", 0);
+    });
+    hidden("knee_viscous_damping", [&](YamlMap& m, const char* name) {
+      truth = addSwingEffect(truth, name, 0);
       e.knee.viscousDamping = m.getDouble("damping_Nm_s_per_rad", mustBeNonNegative);
-      m.finish();
-      hiddenNames.push_back("knee_viscous_damping");
-    }
-    if (h.has("extension_assist_spring")) {
-      YamlMap m = h.getMap("extension_assist_spring");
-      truth = addSwingEffect(truth, "extension_assist_spring", 0);
+    });
+    hidden("extension_assist_spring", [&](YamlMap& m, const char* name) {
+      truth = addSwingEffect(truth, name, 0);
       e.knee.assistStiffness = m.getDouble("stiffness_Nm_per_rad", mustBeNonNegative);
-      m.finish();
-      hiddenNames.push_back("extension_assist_spring");
-    }
-    if (h.has("toe_off_velocity")) {
-      YamlMap m = h.getMap("toe_off_velocity");
-      truth = addSwingEffect(truth, "toe_off_velocity", 0);
+    });
+    hidden("toe_off_velocity", [&](YamlMap& m, const char* name) {
+      truth = addSwingEffect(truth, name, 0);
       e.toeOffHipRate = m.getDouble("hip_rate_deg_s") * kDegToRad;
       e.toeOffKneeRate = m.getDouble("knee_rate_deg_s") * kDegToRad;
-      m.finish();
-      hiddenNames.push_back("toe_off_velocity");
-    }
-    if (h.has("hip_moment_scale")) {
-      YamlMap m = h.getMap("hip_moment_scale");
-      truth = addSwingEffect(truth, "hip_moment_scale", 0);
+    });
+    hidden("hip_moment_scale", [&](YamlMap& m, const char* name) {
+      truth = addSwingEffect(truth, name, 0);
       e.hipMomentScale = m.getDouble("scale", mustBePositive);
-      m.finish();
-      hiddenNames.push_back("hip_moment_scale");
-    }
-    if (h.has("shank_mass_scale")) {
-      YamlMap m = h.getMap("shank_mass_scale");
-      truth = addSwingEffect(truth, "shank_mass_scale", 0);
+    });
+    hidden("shank_mass_scale", [&](YamlMap& m, const char* name) {
+      truth = addSwingEffect(truth, name, 0);
       e.shankMassScale = m.getDouble("scale", mustBePositive);
-      m.finish();
-      hiddenNames.push_back("shank_mass_scale");
-    }
+    });
     h.finish();
   }
   yaml.finish();

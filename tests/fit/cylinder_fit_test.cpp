@@ -7,6 +7,7 @@
 
 #include "fit/bench_profile.h"
 #include "fit/metrics.h"
+#include "fit/synthetic_bench.h"
 #include "io/input_error.h"
 #include "io/knee_model_loader.h"
 
@@ -28,17 +29,7 @@ BenchData makeBench(const MauchCylinderParams& truth, double stride, double scal
   BenchProfileParams p;
   p.strideTime = stride;
   p.amplitudeScale = scale;
-  const MauchCylinder cyl(truth);
-  const auto prof = makeBenchProfile(knee, p, cyl.geometry());
-  BenchData d;
-  d.stem = stem;
-  d.time = prof.time;
-  d.position = prof.position;
-  d.velocity = estimatePistonVelocity(d.time, d.position);
-  d.force = calcCylinderTrace(cyl, d.time, d.position, d.velocity, 0.0).force;
-  NormalNoise rng(seed);
-  for (double& f : d.force) f += noise * rng.next();
-  return d;
+  return makeSyntheticBench(truth, knee, p, noise, seed, stem);
 }
 
 MauchCylinderParams model(const std::string& file) { return loadMauchCylinder(kRoot + "/models/" + file); }
