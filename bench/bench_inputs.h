@@ -9,6 +9,7 @@
 #include "io/participant_loader.h"
 #include "knee/knee_law.h"
 #include "swing/knee_setup.h"
+#include "study/sweep_study.h"
 #include "swing/sweep.h"
 #include "swing/swing_simulation.h"
 

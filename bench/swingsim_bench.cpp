@@ -8,12 +8,13 @@
 #include <filesystem>
 #include <thread>
 
+#include "io/bench_csv.h"
 #include "bench_inputs.h"
-#include "fit/bench_data.h"
-#include "fit/cylinder_diagnosis.h"
-#include "fit/cylinder_fit.h"
-#include "io/cylinder_study.h"
-#include "io/diagnosis_study.h"
+#include "identify/bench_data.h"
+#include "identify/cylinder_diagnosis.h"
+#include "identify/cylinder_fit.h"
+#include "study/cylinder_study.h"
+#include "study/diagnosis_study.h"
 #include "io/yaml_reader.h"
 #include "report/cylinder_fit_report.h"
 #include "leg/leg_model.h"

@@ -1,7 +1,7 @@
 // libFuzzer target: cylinder study YAML, both kinds (cylinder-bench for `swingsim generate`,
 // cylinder-fit for `swingsim fit`), read the way those commands read them.
 #include "fuzz_common.h"
-#include "io/cylinder_study.h"
+#include "study/cylinder_study.h"
 #include "io/yaml_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,7 +1,7 @@
 // libFuzzer target: compare/diagnose study YAML (studies/diagnose-demo-*.yaml), both kinds,
 // read as the CLI reads them (kind first, then the kind's reader, then unknown keys).
 #include "fuzz_common.h"
-#include "io/diagnosis_study.h"
+#include "study/diagnosis_study.h"
 #include "io/yaml_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

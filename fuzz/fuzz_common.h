@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace swingsim::fuzz {
 

@@ -2,8 +2,8 @@
 // the leg geometry and hip moment built from it, as `swingsim simulate` would.
 #include "fuzz_common.h"
 #include "io/participant_loader.h"
-#include "leg/hip_moment_profile.h"
-#include "leg/leg_parameters.h"
+#include "model/hip_moment_profile.h"
+#include "model/leg_parameters.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace swingsim;

@@ -1,6 +1,7 @@
 // libFuzzer target: knee-axis sweep study YAML (studies/burkett2004.yaml) through
 // parseSweepStudy, then the lowering grid of each participant (what runSweep builds first).
 #include "fuzz_common.h"
+#include "study/sweep_study.h"
 #include "swing/sweep.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

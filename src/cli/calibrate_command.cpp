@@ -2,9 +2,9 @@
 #include <cstdio>
 
 #include "cli/command_registry.h"
-#include "io/input_error.h"
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/participant_loader.h"
 #include "io/yaml_edit.h"
 #include "swing/burkett_published.h"

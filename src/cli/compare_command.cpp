@@ -3,12 +3,13 @@
 // metrics overall and per phase and residual plots show where and when it fails.
 #include <cstdio>
 
+#include "io/bench_csv.h"
 #include "cli/command_registry.h"
 #include "cli/swing_diagnosis_cli.h"
-#include "fit/cylinder_diagnosis.h"
-#include "io/diagnosis_study.h"
+#include "identify/cylinder_diagnosis.h"
+#include "study/diagnosis_study.h"
 #include "io/knee_model_loader.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/yaml_reader.h"
 #include "report/diagnosis_report.h"
 

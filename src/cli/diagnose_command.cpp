@@ -3,13 +3,14 @@
 // before and after (issue 5, docs/diagnosis.md). All inputs are read before any output.
 #include <cstdio>
 
+#include "io/bench_csv.h"
 #include "cli/command_registry.h"
 #include "cli/swing_diagnosis_cli.h"
-#include "fit/cylinder_diagnosis.h"
-#include "io/diagnosis_study.h"
+#include "identify/cylinder_diagnosis.h"
+#include "study/diagnosis_study.h"
 #include "io/knee_model_loader.h"
 #include "io/knee_model_writer.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/yaml_reader.h"
 #include "report/diagnosis_report.h"
 

@@ -3,13 +3,14 @@
 // and checked before anything is written.
 #include <cstdio>
 
+#include "io/bench_csv.h"
 #include "cli/command_registry.h"
-#include "fit/bench_data.h"
-#include "fit/cylinder_fit.h"
-#include "io/cylinder_study.h"
-#include "io/input_error.h"
+#include "identify/bench_data.h"
+#include "identify/cylinder_fit.h"
+#include "study/cylinder_study.h"
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/yaml_reader.h"
 #include "report/cylinder_fit_report.h"
 

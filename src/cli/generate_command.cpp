@@ -4,15 +4,16 @@
 #include <functional>
 #include <map>
 
+#include "io/bench_csv.h"
 #include "cli/command_registry.h"
 #include "cli/swing_diagnosis_cli.h"
-#include "fit/bench_data.h"
-#include "fit/bench_profile.h"
+#include "identify/bench_data.h"
+#include "knee/bench_profile.h"
 #include "io/csv_table.h"
-#include "io/cylinder_study.h"
-#include "io/input_error.h"
+#include "study/cylinder_study.h"
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/yaml_reader.h"
 
 namespace swingsim::cli {

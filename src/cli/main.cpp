@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cli/command_registry.h"
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace {
 

@@ -6,12 +6,12 @@
 #include "cli/command_registry.h"
 #include "io/json_writer.h"
 #include "io/knee_model_loader.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
-#include "swing/swing_json.h"
+#include "report/swing_json.h"
 
 namespace swingsim::cli {
 namespace {

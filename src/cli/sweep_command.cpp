@@ -5,9 +5,10 @@
 #include <cstdio>
 
 #include "cli/command_registry.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "report/sweep_report.h"
-#include "swing/swing_json.h"
+#include "report/swing_json.h"
+#include "study/sweep_study.h"
 #include "swing/sweep.h"
 
 namespace swingsim::cli {

@@ -1,3 +1,5 @@
+#include "io/knee_model_loader.h"
+#include "io/swing_record_csv.h"
 #include "cli/swing_diagnosis_cli.h"
 
 #include <cmath>
@@ -5,10 +7,10 @@
 #include <functional>
 #include <regex>
 
-#include "fit/synthetic_swing.h"
-#include "io/diagnosis_study.h"
-#include "io/input_error.h"
-#include "io/output_files.h"
+#include "identify/synthetic_swing.h"
+#include "study/diagnosis_study.h"
+#include "core/input_error.h"
+#include "core/output_files.h"
 #include "io/participant_loader.h"
 #include "io/yaml_edit.h"
 #include "io/yaml_reader.h"

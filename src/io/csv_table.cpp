@@ -10,7 +10,7 @@
 #include <istream>
 #include <sstream>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace swingsim {
 

@@ -1,8 +1,9 @@
 #include "io/knee_model_loader.h"
+#include "core/units.h"
 
 #include <cmath>
 
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/yaml_reader.h"
 #include "knee/damping_table.h"
 #include "knee/knee_added_effects.h"
@@ -12,7 +13,6 @@ namespace swingsim {
 
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 
 std::unique_ptr<KneeLaw> readDampingTable(YamlMap& yaml) {
   YamlMap t = yaml.getMap("damping_table");

@@ -7,16 +7,11 @@
 #include "knee/joint_stop.h"
 #include "knee/knee_added_effects.h"
 #include "knee/knee_law.h"
+#include "model/knee_model.h"
 #include "knee/mauch_cylinder.h"
 
 namespace swingsim {
 
-struct KneeModel {
-  std::string path;
-  std::string name;   ///< `name:` key, or the file stem
-  std::string kind;   ///< `kind:` key: damping_table, mauch (more may follow)
-  KneeLawSum law;     ///< the model's resisting law(s) followed by the hyperextension stop
-};
 
 /// Reads a knee model. Throws InputError (`file:line: key: ...`) on any bad input.
 KneeModel loadKneeModel(const std::string& path);

@@ -1,14 +1,14 @@
 #include "io/knee_model_writer.h"
+#include "core/units.h"
 
 #include <sstream>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace swingsim {
 
 namespace {
 
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
 std::string quote(const std::string& s) {
   std::string out = "\"";

@@ -2,7 +2,7 @@
 // Loads participants/*.yaml (Burkett 2004 Table 2 plus our documented assumptions).
 #include <string>
 
-#include "leg/leg_parameters.h"
+#include "model/leg_parameters.h"
 
 namespace swingsim {
 

@@ -1,7 +1,7 @@
 #include "io/trajectory_writer.h"
 
 #include "io/csv_table.h"
-#include "leg/leg_parameters.h"
+#include "model/leg_parameters.h"
 
 namespace swingsim {
 

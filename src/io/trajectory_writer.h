@@ -3,7 +3,7 @@
 // nRows, nColumns, inDegrees=yes, endheader) so OpenSim users can open it.
 #include <string>
 
-#include "swing/swing_simulation.h"
+#include "model/swing_trajectory.h"
 
 namespace swingsim {
 

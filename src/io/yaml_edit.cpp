@@ -3,7 +3,7 @@
 #include <sstream>
 #include <vector>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace swingsim {
 

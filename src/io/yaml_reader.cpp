@@ -11,15 +11,6 @@
 
 namespace swingsim {
 
-std::string formatNumber(double value) {
-  char buf[64];
-  for (int precision = 6; precision <= 17; ++precision) {
-    std::snprintf(buf, sizeof buf, "%.*g", precision, value);
-    if (std::strtod(buf, nullptr) == value) break;
-  }
-  return buf;
-}
-
 namespace {
 
 std::string describe(const YAML::Node& node) {

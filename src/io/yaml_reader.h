@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace swingsim {
 

@@ -1,6 +1,6 @@
 #include "knee/damping_table.h"
 
-#include "knee/monotone_cubic.h"
+#include "numerics/monotone_cubic.h"
 
 #include <algorithm>
 #include <cmath>

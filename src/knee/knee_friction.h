@@ -1,15 +1,16 @@
 #pragma once
 // Knee unit friction near extension (Burkett 2004: friction Tc of Table 2 applied when
 // the knee angle is below 4 deg).
+#include "core/units.h"
 #include "knee/knee_law.h"
 
 namespace swingsim {
 
 struct KneeFrictionParams {
   double frictionMoment = 0;  ///< Tc, N m, >= 0 (Burkett Table 2)
-  double activeBelow = 4.0 * 3.14159265358979323846 / 180.0;  ///< flexion, rad
+  double activeBelow = 4.0 * kDegToRad;  ///< flexion, rad
   /// Width of the smooth switch-off around activeBelow, rad.
-  double angleWidth = 0.5 * 3.14159265358979323846 / 180.0;
+  double angleWidth = 0.5 * kDegToRad;
   /// Velocity smoothing: moment = -Tc tanh(rate / smoothingRate). Chosen by the
   /// convergence study in the README; smaller makes the equations stiff.
   double smoothingRate = 1.0;  ///< rad/s

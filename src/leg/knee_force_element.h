@@ -10,7 +10,7 @@
 
 #include "knee/joint_stop.h"
 #include "knee/knee_law.h"
-#include "leg/hip_moment_profile.h"
+#include "model/hip_moment_profile.h"
 
 namespace swingsim {
 

@@ -11,7 +11,7 @@
 #include "knee/joint_stop.h"
 #include "knee/knee_law.h"
 #include "leg/knee_force_element.h"
-#include "leg/leg_parameters.h"
+#include "model/leg_parameters.h"
 
 namespace swingsim {
 

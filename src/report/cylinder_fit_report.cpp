@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "io/json_writer.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "report/svg_plot.h"
 
 namespace swingsim {

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "fit/bench_data.h"
-#include "fit/cylinder_fit.h"
-#include "fit/metrics.h"
+#include "identify/bench_data.h"
+#include "identify/cylinder_fit.h"
+#include "numerics/metrics.h"
 
 namespace swingsim {
 

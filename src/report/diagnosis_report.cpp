@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 #include "io/json_writer.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "report/svg_plot.h"
 
 namespace swingsim {

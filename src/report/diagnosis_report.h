@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "fit/cylinder_diagnosis.h"
+#include "identify/cylinder_diagnosis.h"
 
 namespace swingsim {
 

@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "io/json_writer.h"
-#include "io/output_files.h"
-#include "leg/leg_parameters.h"
+#include "core/output_files.h"
+#include "model/leg_parameters.h"
 #include "report/diagnosis_report.h"
 
 namespace swingsim {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "fit/swing_diagnosis.h"
+#include "identify/swing_diagnosis.h"
 
 namespace swingsim {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace swingsim {
 

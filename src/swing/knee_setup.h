@@ -2,9 +2,9 @@
 // The complete knee law of a participant's prosthesis: the knee model's resisting law and
 // hyperextension stop (models/*.yaml) plus the knee unit's friction Tc near extension
 // (Burkett 2004 Table 2 and Fig. 1 "FRICTION").
-#include "io/knee_model_loader.h"
+#include "model/knee_model.h"
 #include "knee/knee_friction.h"
-#include "leg/leg_parameters.h"
+#include "model/leg_parameters.h"
 
 namespace swingsim {
 

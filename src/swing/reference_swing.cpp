@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/input_error.h"
-#include "swing/dormand_prince.h"
+#include "core/input_error.h"
+#include "numerics/dormand_prince.h"
 
 namespace swingsim {
 

@@ -11,8 +11,8 @@
 
 #include "knee/joint_stop.h"
 #include "knee/knee_law.h"
-#include "leg/hip_moment_profile.h"
-#include "leg/leg_parameters.h"
+#include "model/hip_moment_profile.h"
+#include "model/leg_parameters.h"
 
 namespace swingsim {
 

@@ -8,7 +8,7 @@
 // constraints (the leg has none): nothing is projected.
 #include <Simbody.h>
 
-#include "swing/dormand_prince.h"
+#include "numerics/dormand_prince.h"
 
 namespace swingsim {
 

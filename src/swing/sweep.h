@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "io/knee_model_loader.h"
+#include <map>
+
+#include "model/knee_model.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -17,6 +19,9 @@ struct SweepStudy {
   std::string name;
   std::vector<Participant> participants;
   std::string kneeModelOverride;  ///< resolved path, "" = each participant's own model
+  /// Every knee model the participants or the override name, by resolved path (the study
+  /// reader loads them; runSweep reads no files).
+  std::map<std::string, KneeModel> kneeModels;
   double loweringStep = 0.010;    ///< m
   double loweringMax = 0.200;     ///< m, capped per participant at calcMaxLowering
   /// Added shank masses (kg) and their distances below the knee (m). The sweep always
@@ -57,10 +62,6 @@ struct SweepResults {
   std::vector<ParticipantSweep> participants;
 };
 
-/// Reads studies/*.yaml of kind knee-axis-sweep. Throws InputError.
-SweepStudy loadSweepStudy(const std::string& path);
-/// Same, from YAML text (tests, fuzzers); participant paths resolve against `path`'s folder.
-SweepStudy parseSweepStudy(const std::string& text, const std::string& path);
 
 /// Lowerings for a participant: 0, step, 2 step, ... up to min(max, cap), plus the
 /// Table 4 lowerings if requested, sorted.

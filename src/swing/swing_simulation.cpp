@@ -10,7 +10,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 #include "leg/leg_model.h"
 #include "swing/simbody_ode.h"
 

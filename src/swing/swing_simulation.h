@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "knee/knee_law.h"
-#include "leg/leg_parameters.h"
+#include "model/leg_parameters.h"
+#include "model/swing_trajectory.h"
 
 namespace swingsim {
 
@@ -69,11 +70,6 @@ struct SwingEvent {
 };
 
 /// Sampled trajectory, SI units (rad, rad/s, N m, m).
-struct SwingTrajectory {
-  std::vector<double> time, hipFlexion, kneeFlexion, hipFlexionRate, kneeFlexionRate, hipMoment, kneeMoment;
-  std::vector<double> kneeX, kneeY, ankleX, ankleY, toeX, toeY;  ///< ground frame, hip at (0, hipHeight)
-  std::size_t size() const { return time.size(); }
-};
 
 struct SwingResult {
   double swingTime = 0;            ///< s: thigh at target AND knee back in the zone after its peak

@@ -14,16 +14,18 @@
 #include <fstream>
 #include <functional>
 
-#include "fit/bench_data.h"
-#include "fit/bench_profile.h"
-#include "fit/cylinder_fit.h"
+#include "io/bench_csv.h"
+#include "identify/bench_data.h"
+#include "knee/bench_profile.h"
+#include "identify/cylinder_fit.h"
 #include "io/csv_table.h"
-#include "io/cylinder_study.h"
-#include "io/input_error.h"
+#include "study/cylinder_study.h"
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
+#include "study/sweep_study.h"
 #include "swing/sweep.h"
 
 namespace swingsim {

@@ -8,12 +8,13 @@
 #include <functional>
 
 #include "io/csv_table.h"
-#include "io/cylinder_study.h"
-#include "io/input_error.h"
+#include "study/cylinder_study.h"
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
-#include "io/output_files.h"
+#include "core/output_files.h"
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
+#include "study/sweep_study.h"
 #include "swing/sweep.h"
 
 namespace swingsim {

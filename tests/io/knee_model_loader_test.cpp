@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 namespace swingsim {
 namespace {

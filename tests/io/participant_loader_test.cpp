@@ -6,8 +6,8 @@
 
 #include <regex>
 
-#include "io/input_error.h"
-#include "io/output_files.h"
+#include "core/input_error.h"
+#include "core/output_files.h"
 
 namespace swingsim {
 namespace {

@@ -1,4 +1,5 @@
 #include "knee/damping_table.h"
+#include "core/units.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +9,7 @@
 namespace swingsim {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = kDegToRad;
 // Interpolation and the speed rule are a few floating-point operations.
 constexpr double kRoundOff = 1e-12;
 

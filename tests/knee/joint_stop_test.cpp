@@ -1,4 +1,5 @@
 #include "knee/joint_stop.h"
+#include "core/units.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +9,7 @@
 namespace swingsim {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = kDegToRad;
 constexpr double kRoundOff = 1e-9;
 
 JointStop makeStop() {

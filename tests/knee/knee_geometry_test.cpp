@@ -1,4 +1,5 @@
 #include "knee/knee_geometry.h"
+#include "core/units.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +9,6 @@
 namespace swingsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 // Central-difference step and the truncation error it allows (h^2 times a bounded third
 // derivative of a length of order 0.16 m).

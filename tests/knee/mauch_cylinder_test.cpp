@@ -1,4 +1,5 @@
 #include "knee/mauch_cylinder.h"
+#include "core/units.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +9,6 @@
 namespace swingsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 // tanh(3) = 0.99505: three widths from a switch's centre it is within 0.5 % of its limit.
 constexpr double kSwitchTol = 5e-3;

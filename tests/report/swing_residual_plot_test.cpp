@@ -2,8 +2,9 @@
 
 #include <string>
 
-#include "fit/swing_diagnosis.h"
-#include "fit/synthetic_swing.h"
+#include "io/knee_model_loader.h"
+#include "identify/swing_diagnosis.h"
+#include "identify/synthetic_swing.h"
 #include "io/participant_loader.h"
 #include "report/swing_diagnosis_report.h"
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"

@@ -12,10 +12,11 @@
 #include <limits>
 #include <sstream>
 
+#include "io/bench_csv.h"
 #include "../cli/run_swingsim.h"
-#include "fit/bench_data.h"
-#include "fit/cylinder_fit.h"
-#include "io/input_error.h"
+#include "identify/bench_data.h"
+#include "identify/cylinder_fit.h"
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "swing/knee_setup.h"

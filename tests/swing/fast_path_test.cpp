@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "knee/joint_stop.h"
 #include "swing/knee_setup.h"
+#include "study/sweep_study.h"
 #include "swing/sweep.h"
 #include "swing/swing_simulation.h"
 

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "swing/knee_setup.h"

@@ -1,9 +1,10 @@
 // The knee-axis sweep: published behaviour, pinned optimum, and thread-count invariance.
+#include "study/sweep_study.h"
 #include "swing/sweep.h"
 
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
+#include "core/input_error.h"
 #include "report/sweep_report.h"
 #include "swing/burkett_published.h"
 

@@ -1,0 +1,99 @@
+#pragma once
+// The statistics of `swingsim diagnose` shared by every model kind (issue 5,
+// docs/diagnosis.md): the likelihood-ratio test on an effective sample size, BIC, the
+// Bonferroni-corrected acceptance rule with held-out margin and sign rule, the choice of the
+// best accepted candidate, ambiguity advice and parameter intervals. The cylinder and the
+// swing diagnoses differ only in how a candidate model is fitted and run.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "numerics/residual_analysis.h"
+
+namespace swingsim {
+
+/// Thresholds of the acceptance rule, fixed in the study (or these defaults) before it runs.
+struct EffectSelectionSettings {
+  /// Family-wise error rate of the likelihood-ratio test; Bonferroni over the candidates
+  /// scored in a step.
+  double alpha = 0.01;
+  /// Held-out RMSE must fall by at least this fraction on every validation file.
+  double minValidationImprovement = 0.02;
+  int maxEffects = 4;                   ///< forward stepwise stops after this many
+  std::vector<std::string> candidates;  ///< empty: the whole library
+  int whitenessLags = 20;               ///< Ljung-Box lags for the final residual
+};
+
+/// A parameter of an effect with its 95 % confidence interval.
+struct EffectParameter {
+  std::string name;  ///< with unit: "force_N"
+  double value = 0, lower = 0, upper = 0;
+};
+
+/// One candidate scored on top of the current model (model-kind independent part).
+struct EffectScore {
+  std::string effect;
+  std::string notApplicable;           ///< non-empty: not scored, and why
+  double trainRmse = 0;                ///< units of the data (N, deg)
+  std::vector<double> validationRmse;  ///< per validation file
+  double effectiveSamples = 0;         ///< n_eff of its training residual
+  double likelihoodRatio = 0;          ///< n_eff ln(RSS_current / RSS_candidate)
+  int dof = 0;                         ///< added parameters (a profiled grid parameter counts one)
+  double pValue = 1, pAdjusted = 1;    ///< chi^2 tail; times the number of candidates
+  double deltaBic = 0;                 ///< -LR + dof ln(n_eff) (< 0: better)
+  std::vector<EffectParameter> parameters;
+  bool significant = false, bicImproves = false, validationImproves = false, physical = false;
+  std::string physicalNote;            ///< the sign rule and whether it held
+  bool accepted = false;
+  std::string where;                   ///< phase where the squared error fell most, with its share
+  std::vector<double> trainResidual;   ///< concatenated training files
+};
+
+/// Likelihood-ratio statistics of a bigger model against a nested smaller one (`dof` more
+/// parameters), with n_eff from the bigger model's own residual (docs/diagnosis.md).
+struct LrTest {
+  double nEff = 0, lr = 0, p = 1, deltaBic = 0;
+};
+LrTest calcLrTest(double rssSmaller, double rssBigger, const ResidualSegments& biggerResidual, int dof);
+
+/// Writes the test into `score` (n_eff, LR, dof, p, delta BIC, bicImproves) and whether every
+/// held-out RMSE fell by at least the settings' margin from `currentValidationRmse`.
+void applyTestAndValidation(EffectScore& score, const LrTest& test, int dof,
+                            const std::vector<double>& currentValidationRmse, const EffectSelectionSettings& settings);
+
+/// Standard error inflation for autocorrelated residuals: sqrt(n / n_eff).
+double calcStandardErrorInflation(double samples, double effectiveSamples);
+/// 95 % normal interval value +- 1.96 se.
+void setNormalInterval(EffectParameter& p, double standardError);
+
+/// Bonferroni over the applicable candidates, the four-part acceptance rule, and the index of
+/// the accepted candidate with the lowest delta BIC (-1 if none). Only scores with an empty
+/// notApplicable take part.
+int applyAcceptanceRule(std::vector<EffectScore*> scores, double alpha);
+
+/// The ambiguity group of the candidate `chosen` in one step: its name, then the name of
+/// every other accepted candidate j on top of which the chosen effect adds nothing
+/// significant, i.e. `pAddingChosenTo(j)` (the LR test's p of the joint refit of j plus the
+/// chosen effect against j's own fit) is at least alpha: the data cannot say which of the
+/// two is missing. A nullopt p (the joint refit failed) leaves j out.
+std::vector<std::string> findAmbiguityGroup(const std::vector<EffectScore*>& scores,
+                                            const std::vector<std::string>& names, std::size_t chosen, double alpha,
+                                            const std::function<std::optional<double>(std::size_t)>& pAddingChosenTo);
+
+/// Appends a group of more than one effect to `ambiguous`, with its advice
+/// (formatAmbiguityAdvice, each effect's `separatedBy` text) to `advice`; a single effect is
+/// not ambiguous and is ignored.
+void recordAmbiguity(const std::vector<std::string>& group,
+                     const std::function<std::string(const std::string&)>& separatedBy,
+                     std::vector<std::vector<std::string>>& ambiguous, std::vector<std::string>& advice);
+
+/// "the data cannot tell a from b apart; to separate them add for a: ...; for b: ...".
+std::string formatAmbiguityAdvice(const std::vector<std::string>& group, const std::vector<std::string>& separatedBy);
+
+/// The candidate names to score: `requested`, or the whole `library` if empty. Throws
+/// InputError for a name not in the library (listing the known ones).
+std::vector<std::string> resolveCandidates(const std::vector<std::string>& requested,
+                                           const std::vector<std::string>& library);
+
+}  // namespace swingsim

@@ -1,0 +1,75 @@
+#include "model/leg_parameters.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/input_error.h"
+
+namespace swingsim {
+
+double calcMaxLowering(const Participant& p) {
+  double max = p.shank.length - p.minShankLength;
+  if (p.comRule == ComRule::kFixedFromProximal) {
+    // The shank COM stays at its distance below the knee: it must remain on the shank.
+    max = std::min(max, p.shank.comFromDistal);
+  }
+  return std::max(0.0, max);
+}
+
+LegGeometry calcLegGeometry(const Participant& p, double lowering, const AddedMass& added) {
+  if (!(lowering >= 0) || !std::isfinite(lowering)) {
+    throw InputError(p.path + ": lowering: must be zero or positive (got " + formatNumber(lowering) + " m)");
+  }
+  const double maxLowering = calcMaxLowering(p);
+  if (lowering > maxLowering + 1e-12) {
+    throw InputError(p.path + ": lowering: " + formatNumber(lowering) + " m leaves no room for the shank of " +
+                     p.name + " (shank " + formatNumber(p.shank.length) + " m, at most " +
+                     formatNumber(std::floor(maxLowering * 1000) / 1000) +
+                     " m can be lowered with at least " + formatNumber(p.minShankLength) +
+                     " m of shank and its COM on it) (got " + formatNumber(lowering) + ")");
+  }
+  LegGeometry g{};
+  g.thighLength = p.thigh.length + lowering;
+  g.shankLength = p.shank.length - lowering;
+  g.thighMass = p.thigh.mass;
+  g.shankMass = p.shank.mass;
+  g.thighInertia = p.thigh.inertia;
+  g.shankInertia = p.shank.inertia;
+  const double thighComStd = p.thigh.length - p.thigh.comFromDistal;
+  const double shankComStd = p.shank.length - p.shank.comFromDistal;
+  if (p.comRule == ComRule::kFixedFromProximal) {
+    g.thighCom = thighComStd;
+    g.shankCom = shankComStd;
+  } else {
+    g.thighCom = thighComStd / p.thigh.length * g.thighLength;
+    g.shankCom = shankComStd / p.shank.length * g.shankLength;
+  }
+  g.footLength = p.foot.length;
+  g.footMass = p.foot.mass;
+  g.footInertia = p.foot.inertia;
+  g.footComForward = p.footComFrom == FootComFrom::kToe ? p.foot.length - p.foot.comFromDistal
+                                                         : p.foot.comFromDistal;
+  if (added.mass < 0 || added.distanceBelowKnee < 0 || added.distanceBelowKnee > g.shankLength) {
+    throw InputError(p.path + ": added mass: must be >= 0 kg at 0.." + formatNumber(g.shankLength) +
+                     " m below the knee (got " + formatNumber(added.mass) + " kg at " +
+                     formatNumber(added.distanceBelowKnee) + " m)");
+  }
+  g.added = added;
+  return g;
+}
+
+PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion) {
+  const double shank = hipFlexion - kneeFlexion;  // absolute shank angle from the downward vertical
+  PlanarPose p{};
+  p.hip[0] = 0;
+  p.hip[1] = hipHeight;
+  p.knee[0] = g.thighLength * std::sin(hipFlexion);
+  p.knee[1] = hipHeight - g.thighLength * std::cos(hipFlexion);
+  p.ankle[0] = p.knee[0] + g.shankLength * std::sin(shank);
+  p.ankle[1] = p.knee[1] - g.shankLength * std::cos(shank);
+  p.toe[0] = p.ankle[0] + g.footLength * std::cos(shank);
+  p.toe[1] = p.ankle[1] + g.footLength * std::sin(shank);
+  return p;
+}
+
+}  // namespace swingsim

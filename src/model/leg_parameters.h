@@ -1,0 +1,106 @@
+#pragma once
+// Plain data describing one participant's prosthetic leg (Burkett 2004 Table 2) and how a
+// knee-axis lowering changes it. No Simbody here: the Simbody model and the reference
+// integrator both build from LegGeometry.
+#include <string>
+#include <vector>
+
+#include "core/units.h"
+#include "model/hip_moment_profile.h"
+
+namespace swingsim {
+
+
+/// One link as Burkett Table 2 gives it.
+struct SegmentParams {
+  double length = 0;         ///< m, proximal joint to distal end
+  double mass = 0;           ///< kg
+  double comFromDistal = 0;  ///< m, from the distal end back towards the proximal joint (Table 2's negative "distance to COM", as a magnitude)
+  double inertia = 0;        ///< kg m^2, about the COM (Izz)
+};
+
+/// Where each COM goes when the knee axis is lowered by d (Burkett: "the distance from the
+/// distal point of the link to the center of mass ... was adjusted").
+enum class ComRule {
+  /// Thigh COM stays at its distance from the hip, shank COM at its distance from the knee
+  /// (the mass moves with the proximal joint: socket stays, knee unit moves down with the
+  /// axis; the connecting pipe is < 2 % of mass). Distal-end distances change by +d / -d.
+  kFixedFromProximal,
+  /// Each COM keeps its fraction of the segment length.
+  kProportional,
+};
+
+/// Where the foot's COM distance in Table 2 is measured from.
+enum class FootComFrom { kToe, kAnkle };
+
+/// Initial conditions at toe-off.
+struct InitialConditions {
+  double hipFlexion = -15 * kDegToRad;  ///< rad
+  double kneeFlexion = 10 * kDegToRad;  ///< rad
+  double hipFlexionRate = 0;            ///< rad/s (Burkett assumed zero)
+  double kneeFlexionRate = 0;           ///< rad/s (Burkett assumed zero)
+};
+
+/// The swing-end rule: the thigh has reached its defined flexion position AND the knee,
+/// after its peak flexion, is back inside the zone of stability, in whichever order.
+struct SwingEndRule {
+  double thighTargetFlexion = 20 * kDegToRad;  ///< rad
+  double zoneOfStability = 6 * kDegToRad;      ///< rad (Burkett Fig. 3: < 6 deg)
+  double timeLimit = 1.5;                      ///< s: a swing not ended by then is an error
+  double bounceWindow = 0.15;                  ///< s simulated after the end to see a bounce
+};
+
+/// Physiological hip range of motion (smooth stop outside it).
+struct HipRange {
+  double minFlexion = -30 * kDegToRad;  ///< rad
+  double maxFlexion = 90 * kDegToRad;   ///< rad
+};
+
+/// A point mass added to the shank (Bach 1994), at a distance below the knee axis.
+struct AddedMass {
+  double mass = 0;          ///< kg
+  double distanceBelowKnee = 0;  ///< m, along the shank
+};
+
+struct Participant {
+  std::string path;  ///< file it was loaded from
+  std::string name;
+  double height = 0;    ///< m, standing height
+  double bodyMass = 0;  ///< kg
+  SegmentParams thigh, shank, foot;
+  double kneeFriction = 0;     ///< Tc, N m (Burkett Table 2)
+  std::string kneeModelPath;   ///< resolved path of the knee model YAML
+  ComRule comRule = ComRule::kFixedFromProximal;
+  FootComFrom footComFrom = FootComFrom::kToe;
+  InitialConditions initial;
+  SwingEndRule swingEnd;
+  HipRange hipRange;
+  HipMomentProfile hipMoment;
+  double minShankLength = 0.10;  ///< m: the knee unit and pylon clamp need at least this
+};
+
+/// The leg as the dynamics sees it, after lowering: distances from the proximal joint.
+struct LegGeometry {
+  double thighLength, thighMass, thighCom, thighInertia;  ///< thighCom: m below the hip along the thigh
+  double shankLength, shankMass, shankCom, shankInertia;  ///< shankCom: m below the knee
+  double footLength, footMass, footComForward, footInertia;  ///< footComForward: m ahead of the ankle, foot perpendicular to the shank
+  AddedMass added;
+};
+
+/// Applies a knee-axis lowering `lowering` (m, >= 0): thigh + d, shank - d, inertias about
+/// the COMs unchanged, COMs per `comRule`. Throws InputError if the shank would be shorter
+/// than `minShankLength` or a COM would leave its segment.
+LegGeometry calcLegGeometry(const Participant& participant, double lowering,
+                            const AddedMass& added = {});
+
+/// Ground-frame landmark positions (m) from the joint angles, by planar kinematics: hip at
+/// (0, hipHeight), x forward, y up; the foot points along +x of the shank.
+struct PlanarPose {
+  double hip[2], knee[2], ankle[2], toe[2];
+};
+PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion);
+
+/// The largest lowering `calcLegGeometry` accepts for this participant, m.
+double calcMaxLowering(const Participant& participant);
+
+}  // namespace swingsim

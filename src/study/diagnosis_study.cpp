@@ -1,0 +1,79 @@
+#include "study/diagnosis_study.h"
+
+#include "core/output_files.h"
+#include "io/yaml_reader.h"
+
+namespace swingsim {
+
+namespace {
+
+// The keys both kinds share: name, description, train, validate, candidates, acceptance.
+void readCommon(YamlMap& yaml, const std::vector<std::string>& known, const char* kindName, std::string& name,
+                std::vector<std::string>& train, std::vector<std::string>& validate, EffectSelectionSettings& st) {
+  name = yaml.getString("name", fileStem(yaml.path()));
+  yaml.getString("description", "");
+  for (const auto& p : yaml.getStringList("train")) train.push_back(yaml.resolvePath(p));
+  for (const auto& p : yaml.getStringList("validate")) validate.push_back(yaml.resolvePath(p));
+  if (train.empty()) yaml.fail("train", "expected at least one CSV", "an empty list");
+  if (validate.empty())
+    yaml.fail("validate", "expected at least one CSV (the acceptance rule needs held-out data)", "an empty list");
+  std::vector<std::string> stems;
+  for (const auto& list : {train, validate})
+    for (const auto& p : list) {
+      for (const auto& st2 : stems)
+        if (st2 == fileStem(p)) yaml.fail("validate", "two files share the stem '" + st2 + "' (results are keyed by stem)", p);
+      stems.push_back(fileStem(p));
+    }
+  if (yaml.has("candidates")) {
+    for (const auto& c : yaml.getStringList("candidates")) {
+      bool ok = false;
+      for (const auto& k : known) ok = ok || k == c;
+      if (!ok) {
+        std::string all;
+        for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
+        yaml.fail("candidates", std::string("unknown ") + kindName + " effect (known: " + all + ")", c);
+      }
+      st.candidates.push_back(c);
+    }
+    if (st.candidates.empty()) yaml.fail("candidates", "expected at least one effect", "an empty list");
+  }
+  if (yaml.has("acceptance")) {
+    YamlMap a = yaml.getMap("acceptance");
+    st.alpha = a.getDouble("alpha", st.alpha, [](double v) { return v > 0 && v < 0.5 ? "" : "must be in (0, 0.5)"; });
+    st.minValidationImprovement = a.getDouble("min_validation_improvement", st.minValidationImprovement,
+                                              [](double v) { return v >= 0 && v < 1 ? "" : "must be in [0, 1)"; });
+    st.maxEffects = a.getInt("max_effects", st.maxEffects);
+    if (st.maxEffects < 1 || st.maxEffects > 6) a.fail("max_effects", "must be 1 to 6", std::to_string(st.maxEffects));
+    st.whitenessLags = a.getInt("whiteness_lags", st.whitenessLags);
+    if (st.whitenessLags < 1 || st.whitenessLags > 1000)
+      a.fail("whiteness_lags", "must be 1 to 1000", std::to_string(st.whitenessLags));
+    a.finish();
+  }
+}
+
+}  // namespace
+
+CylinderDiagnosisStudy readCylinderDiagnosisStudy(YamlMap& yaml) {
+  CylinderDiagnosisStudy s;
+  s.path = yaml.path();
+  s.baseModelPath = yaml.resolvePath(yaml.getString("base_model"));
+  std::vector<std::string> known;
+  for (const auto& e : cylinderEffectLibrary()) known.push_back(e.name);
+  readCommon(yaml, known, "cylinder", s.name, s.train, s.validate, s.settings);
+  s.settings.fitSwitches = yaml.getBool("fit_switches", false);
+  s.plotSeconds = yaml.getDouble("plot_seconds", s.plotSeconds, mustBePositive);
+  return s;
+}
+
+SwingDiagnosisStudy readSwingDiagnosisStudy(YamlMap& yaml) {
+  SwingDiagnosisStudy s;
+  s.path = yaml.path();
+  s.participantPath = yaml.resolvePath(yaml.getString("participant"));
+  s.baseModelPath = yaml.resolvePath(yaml.getString("base_model"));
+  std::vector<std::string> known;
+  for (const auto& e : swingEffectLibrary()) known.push_back(e.name);
+  readCommon(yaml, known, "swing", s.name, s.train, s.validate, s.settings);
+  return s;
+}
+
+}  // namespace swingsim

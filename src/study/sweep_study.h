@@ -1,0 +1,15 @@
+#pragma once
+// Study YAML of kind knee-axis-sweep (studies/burkett2004.yaml): the participants, the
+// lowering grid, added masses and integrator settings of a knee-axis sweep.
+#include <string>
+
+#include "swing/sweep.h"
+
+namespace swingsim {
+
+/// Reads studies/*.yaml of kind knee-axis-sweep. Throws InputError.
+SweepStudy loadSweepStudy(const std::string& path);
+/// Same, from YAML text (tests, fuzzers); participant paths resolve against `path`'s folder.
+SweepStudy parseSweepStudy(const std::string& text, const std::string& path);
+
+}  // namespace swingsim

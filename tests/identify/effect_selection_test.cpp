@@ -1,0 +1,56 @@
+// The model-kind independent step of the diagnosis: which accepted candidates form an
+// ambiguity group with the chosen one, and how the group is recorded.
+#include "identify/effect_selection.h"
+
+#include <gtest/gtest.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace swingsim {
+namespace {
+
+TEST(EffectSelection, AmbiguityGroupHoldsTheAcceptedCandidatesTheChosenOneAddsNothingTo) {
+  const std::vector<std::string> names = {"a", "b", "c", "d", "e"};
+  std::vector<EffectScore> s(names.size());
+  s[0].accepted = true;  // chosen
+  s[1].accepted = true;  // chosen adds nothing on top of b: ambiguous
+  s[2].accepted = true;  // chosen adds something significant on top of c: not ambiguous
+  s[3].accepted = false; // not accepted: never asked
+  s[4].accepted = true;  // joint refit failed: left out
+  std::vector<EffectScore*> scores;
+  for (auto& x : s) scores.push_back(&x);
+  std::vector<std::size_t> asked;
+  const auto group = findAmbiguityGroup(scores, names, 0, 0.01, [&](std::size_t j) -> std::optional<double> {
+    asked.push_back(j);
+    if (j == 1) return 0.4;
+    if (j == 2) return 1e-6;
+    return std::nullopt;
+  });
+  EXPECT_EQ(group, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(asked, (std::vector<std::size_t>{1, 2, 4}));
+  // p exactly at alpha: the chosen effect is not significant on top of j.
+  const auto edge = findAmbiguityGroup(scores, names, 0, 0.4, [](std::size_t j) -> std::optional<double> {
+    return j == 1 ? std::optional<double>(0.4) : std::nullopt;
+  });
+  EXPECT_EQ(edge, (std::vector<std::string>{"a", "b"}));
+}
+
+TEST(EffectSelection, RecordAmbiguityKeepsGroupsOfTwoOrMoreWithAdvice) {
+  std::vector<std::vector<std::string>> ambiguous;
+  std::vector<std::string> advice;
+  auto separatedBy = [](const std::string& e) { return "data for " + e; };
+  recordAmbiguity({"a"}, separatedBy, ambiguous, advice);
+  EXPECT_TRUE(ambiguous.empty());
+  EXPECT_TRUE(advice.empty());
+  recordAmbiguity({"a", "b"}, separatedBy, ambiguous, advice);
+  ASSERT_EQ(ambiguous.size(), 1u);
+  EXPECT_EQ(ambiguous[0], (std::vector<std::string>{"a", "b"}));
+  ASSERT_EQ(advice.size(), 1u);
+  EXPECT_EQ(advice[0], formatAmbiguityAdvice({"a", "b"}, {"data for a", "data for b"}));
+  EXPECT_NE(advice[0].find("data for b"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace swingsim
