@@ -11,7 +11,7 @@
 #include "io/bench_csv.h"
 #include "bench_inputs.h"
 #include "identify/bench_data.h"
-#include "identify/cylinder_diagnosis.h"
+#include "identify/cylinder_plant.h"
 #include "identify/cylinder_fit.h"
 #include "study/cylinder_study.h"
 #include "study/diagnosis_study.h"
@@ -160,19 +160,13 @@ BENCHMARK(BM_FitMauch)->Unit(benchmark::kMillisecond);
 // baseline fit, candidate ranking, refits and the comparison before and after. Files are
 // read once, outside the loop.
 void BM_DiagnoseCylinder(benchmark::State& state) {
-  YamlMap yaml = YamlMap::loadFile(sourcePath("studies/diagnose-demo-cylinder.yaml"));
-  yaml.getChoice("kind", {"cylinder-diagnosis"}, "");
-  const CylinderDiagnosisStudy study = readCylinderDiagnosisStudy(yaml);
-  const MauchCylinderParams base = loadMauchCylinder(study.baseModelPath);
-  std::vector<BenchData> train, validate;
-  for (const auto& path : study.train)
-    train.push_back(readBenchCsv(path, static_cast<std::size_t>(MauchCylinder(base).numCoefficients()) + 8));
-  for (const auto& path : study.validate) validate.push_back(readBenchCsv(path, 3));
+  const DiagnosisStudy study = loadDiagnosisStudy(sourcePath("studies/diagnose-demo-cylinder.yaml"));
+  const auto plant = loadDiagnosisPlant(study, 8);
   std::size_t accepted = 0;
   for (auto _ : state) {
-    const CylinderDiagnosis diagnosis = diagnoseCylinder(base, train, validate, study.settings);
-    const CylinderComparison before = compareCylinder(diagnosis.baseline, train, validate);
-    const CylinderComparison after = compareCylinder(diagnosis.final, train, validate);
+    const Diagnosis diagnosis = runDiagnosis(*plant, study.settings);
+    const Comparison before = plant->compare(*diagnosis.baseline.model);
+    const Comparison after = plant->compare(*diagnosis.final.model);
     accepted = diagnosis.accepted.size();
     keep(before.records.size() + after.records.size());
   }

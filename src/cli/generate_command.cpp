@@ -6,7 +6,7 @@
 
 #include "io/bench_csv.h"
 #include "cli/command_registry.h"
-#include "cli/swing_diagnosis_cli.h"
+#include "cli/generate_swing_kinematics.h"
 #include "identify/bench_data.h"
 #include "knee/bench_profile.h"
 #include "io/csv_table.h"

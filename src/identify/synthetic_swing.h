@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "identify/swing_diagnosis.h"
+#include "identify/swing_plant.h"
 
 namespace swingsim {
 

@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "core/input_error.h"
-#include "io/json_writer.h"
 #include "core/output_files.h"
 #include "report/svg_plot.h"
 
@@ -24,51 +23,87 @@ std::string fmt(const char* f, A... a) {
   return buf;
 }
 
-ErrorMetrics pooled(const CylinderComparison& c, bool training) {
+// A number with the comparison's decimals.
+std::string num(double v, int decimals) { return fmt("%.*f", decimals, v); }
+
+ErrorMetrics pooled(const Comparison& c, bool training) {
   std::vector<double> m, p;
   for (const auto& r : c.records) {
     if (r.training != training) continue;
-    m.insert(m.end(), r.data->force.begin(), r.data->force.end());
+    m.insert(m.end(), r.measured.begin(), r.measured.end());
     p.insert(p.end(), r.predicted.begin(), r.predicted.end());
   }
   return m.empty() ? ErrorMetrics{} : calcErrorMetrics(m, p);
 }
 
-void metricsJson(JsonWriter& w, const ErrorMetrics& m) {
-  w.beginObject().field("rmse", m.rmse).field("r2", m.r2).field("me", m.maxError).endObject();
+nlohmann::json metricsJson(const ErrorMetrics& m) { return {{"rmse", m.rmse}, {"r2", m.r2}, {"me", m.maxError}}; }
+
+nlohmann::json summaryJson(const Comparison& c) {
+  nlohmann::json validation = nlohmann::json::object();
+  for (const auto& r : c.records)
+    if (!r.training) validation[r.stem] = metricsJson(r.overall);
+  return {{"train", metricsJson(pooled(c, true))}, {"validation", validation}};
 }
 
-void summaryJson(JsonWriter& w, const CylinderComparison& c) {
-  w.beginObject().key("train");
-  metricsJson(w, pooled(c, true));
-  w.key("validation").beginObject();
-  for (const auto& r : c.records) {
-    if (r.training) continue;
-    w.key(r.data->stem);
-    metricsJson(w, r.overall);
+nlohmann::json parametersJson(const std::vector<EffectParameter>& parameters) {
+  nlohmann::json values = nlohmann::json::object(), intervals = nlohmann::json::object();
+  for (const auto& p : parameters) {
+    values[p.name] = p.value;
+    intervals[p.name] = {p.lower, p.upper};
   }
-  w.endObject().endObject();
+  return {{"values", values}, {"confidence_intervals", intervals}};
+}
+
+nlohmann::json candidateJson(const CandidateScore& c, int step, const std::vector<std::string>& stems) {
+  nlohmann::json j = {{"effect", c.effect}, {"step", step}, {"accepted", c.accepted}};
+  if (!c.notApplicable.empty()) {
+    j["not_applicable"] = c.notApplicable;
+    return j;
+  }
+  nlohmann::json validation = nlohmann::json::object();
+  for (std::size_t v = 0; v < stems.size() && v < c.validationRmse.size(); ++v) validation[stems[v]] = c.validationRmse[v];
+  const nlohmann::json params = parametersJson(c.parameters);
+  j["validation_rmse"] = validation;
+  j["train_rmse"] = c.trainRmse;
+  j["delta_bic"] = c.deltaBic;
+  j["likelihood_ratio"] = c.likelihoodRatio;
+  j["p_adjusted"] = c.pAdjusted;
+  j["effective_samples"] = c.effectiveSamples;
+  j["parameters"] = params["values"];
+  j["confidence_intervals"] = params["confidence_intervals"];
+  j["significant"] = c.significant;
+  j["bic_improves"] = c.bicImproves;
+  j["validation_improves"] = c.validationImproves;
+  j["physical_sign"] = c.physical;
+  j["where"] = c.where;
+  return j;
 }
 
 const std::string kPhaseColors[] = {"#D55E00", "#009E73", "#56B4E9", "#CC79A7", "#E69F00"};
 
 }  // namespace
 
-std::string formatComparisonTable(const CylinderComparison& c) {
+std::string formatComparisonTable(const Comparison& c) {
+  const int d = c.decimals;
+  const std::string u = c.unit;
   std::string out;
   for (const auto& r : c.records) {
-    out += fmt("%s (%s): ME %.1f N, RMSE %.1f N, R^2 %.1f %%, mean residual %+.1f N, %zu samples\n",
-               r.data->stem.c_str(), r.training ? "train" : "validate", r.overall.maxError, r.overall.rmse,
-               100 * r.overall.r2, r.overall.bias, r.overall.count);
-    out += fmt("  %-28s %8s %8s %8s %10s %10s\n", "phase", "ME N", "RMSE N", "bias N", "sq.err %", "samples %");
+    out += fmt("%s (%s): %s ME %s %s, RMSE %s %s, R^2 %.*f %%, mean residual %+.*f %s", r.stem.c_str(),
+               r.training ? "train" : "validate", c.quantity.c_str(), num(r.overall.maxError, d).c_str(), u.c_str(),
+               num(r.overall.rmse, d).c_str(), u.c_str(), d, 100 * r.overall.r2, d, r.overall.bias, u.c_str());
+    if (!c.secondaryQuantity.empty())
+      out += fmt("; %s RMSE %s %s", c.secondaryQuantity.c_str(), num(r.secondary.rmse, d).c_str(), u.c_str());
+    out += fmt("; %zu samples\n", r.overall.count);
+    out += fmt("  %-28s %9s %9s %9s %10s %10s\n", "phase", ("ME " + u).c_str(), ("RMSE " + u).c_str(),
+               ("bias " + u).c_str(), "sq.err %", "samples %");
     for (std::size_t ph = 0; ph < c.phaseNames.size(); ++ph) {
       const auto& m = r.perPhase[ph];
       if (m.count == 0) {
-        out += fmt("  %-28s %8s %8s %8s %10.1f %10.1f\n", c.phaseNames[ph].c_str(), "-", "-", "-", 0.0, 0.0);
+        out += fmt("  %-28s %9s %9s %9s %10.1f %10.1f\n", c.phaseNames[ph].c_str(), "-", "-", "-", 0.0, 0.0);
         continue;
       }
-      out += fmt("  %-28s %8.1f %8.1f %+8.1f %10.1f %10.1f\n", c.phaseNames[ph].c_str(), m.maxError, m.rmse, m.bias,
-                 100 * r.phaseShare[ph], 100 * r.sampleShare[ph]);
+      out += fmt("  %-28s %9.*f %9.*f %+9.*f %10.1f %10.1f\n", c.phaseNames[ph].c_str(), d, m.maxError, d, m.rmse, d,
+                 m.bias, 100 * r.phaseShare[ph], 100 * r.sampleShare[ph]);
     }
   }
   return out;
@@ -106,8 +141,7 @@ std::string renderResidualPanels(const ResidualPlotData& in, const std::string& 
   for (const auto& var : in.variables) {
     const BinnedResidual b = calcBinnedResidual(var.values, in.residual, kResidualBins, ratio);
     SvgPlot p(800, 240);
-    p.setTitle(var.title.empty() ? "binned mean residual vs " + var.label + ", 99 % band (effective sample size)"
-                                 : var.title);
+    p.setTitle(var.title.empty() ? "binned mean residual vs " + var.label + ", 99 % band (effective sample size)" : var.title);
     p.setXLabel(var.label);
     p.setYLabel(in.meanLabel);
     std::vector<double> lo, hi;
@@ -142,56 +176,50 @@ std::string renderResidualPanels(const ResidualPlotData& in, const std::string& 
   return renderStackedSvg(panels, title);
 }
 
-std::string renderResidualSvg(const RecordComparison& r, const std::vector<std::string>& phaseNames, double plotSeconds,
-                              const std::string& title) {
-  const BenchData& d = *r.data;
+std::string renderResidualSvg(const RecordComparison& r, const Comparison& c, const std::string& title) {
   ResidualPlotData in;
-  in.time = d.time;
+  in.time = r.time;
   in.residual = r.residual;
   in.phase = r.phase;
-  in.phaseNames = phaseNames;
-  in.plotSeconds = plotSeconds;
-  in.timeTitle = "residual vs time (first " + formatNumber(plotSeconds) + " s), phases shaded";
-  in.residualLabel = "measured - model (N)";
-  in.meanLabel = "mean residual (N)";
-  std::vector<double> mm, vv;
-  for (double x : d.position) mm.push_back(1e3 * x);
-  for (double x : d.velocity) vv.push_back(1e3 * x);
-  in.variables = {{mm, "piston position (mm)", ""}, {vv, "piston velocity (mm/s)", ""},
-                  {r.acceleration, "piston acceleration (m/s^2)", ""}};
+  in.phaseNames = c.phaseNames;
+  in.plotSeconds = c.plotSeconds;
+  const bool whole = r.time.empty() || r.time.back() - r.time.front() <= c.plotSeconds;
+  in.timeTitle = c.quantity + " residual vs time" + (whole ? " (whole record)" : " (first " + formatNumber(c.plotSeconds) + " s)") +
+                 ", phases shaded";
+  in.residualLabel = "measured - model " + c.quantity + " (" + c.unit + ")";
+  in.meanLabel = "mean residual (" + c.unit + ")";
+  in.variables = r.variables;
   return renderResidualPanels(in, title);
 }
 
-std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix,
-                                            const CylinderComparison& c, double plotSeconds) {
+std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix, const Comparison& c) {
   std::vector<std::string> paths;
   for (const auto& r : c.records) {
-    const std::string path = outDir + "/" + prefix + "-" + r.data->stem + "-residual.svg";
-    writeFileAtomic(path, renderResidualSvg(r, c.phaseNames, plotSeconds,
-                                            prefix + ": " + r.data->stem + (r.training ? " (train)" : " (validate)") +
-                                                fmt(", RMSE %.1f N", r.overall.rmse)));
+    const std::string path = outDir + "/" + prefix + "-" + r.stem + "-residual.svg";
+    writeFileAtomic(path, renderResidualSvg(r, c,
+                                            prefix + ": " + r.stem + (r.training ? " (train)" : " (validate)") + ", " +
+                                                c.quantity + " RMSE " + num(r.overall.rmse, c.decimals) + " " + c.unit));
     paths.push_back(path);
   }
   return paths;
 }
 
-std::string formatComparisonJson(const std::string& model, const CylinderComparison& c) {
-  JsonWriter w;
-  w.beginObject().field("model", model).key("files").beginObject();
+nlohmann::json makeComparisonJson(const std::string& model, const Comparison& c) {
+  nlohmann::json files = nlohmann::json::object();
   for (const auto& r : c.records) {
-    w.key(r.data->stem).beginObject().field("training", r.training).field("me", r.overall.maxError);
-    w.field("rmse", r.overall.rmse).field("r2", r.overall.r2).key("phases").beginObject();
+    nlohmann::json phases = nlohmann::json::object();
     for (std::size_t ph = 0; ph < c.phaseNames.size(); ++ph)
-      w.key(c.phaseNames[ph]).beginObject().field("rmse", r.perPhase[ph].rmse)
-          .field("share_of_squared_error", r.phaseShare[ph]).field("share_of_samples", r.sampleShare[ph]).endObject();
-    w.endObject().endObject();
+      phases[c.phaseNames[ph]] = {{"rmse", r.perPhase[ph].rmse},
+                                  {"share_of_squared_error", r.phaseShare[ph]},
+                                  {"share_of_samples", r.sampleShare[ph]}};
+    files[r.stem] = {{"training", r.training}, {"me", r.overall.maxError}, {"rmse", r.overall.rmse},
+                     {"r2", r.overall.r2}, {"phases", phases}};
   }
-  w.endObject().endObject();
-  return w.str() + "\n";
+  return {{"model", model}, {"quantity", c.quantity}, {"unit", c.unit}, {"files", files}};
 }
 
 std::string formatCandidateRanking(const std::vector<const EffectScore*>& candidates, const std::string& unit,
-                                   const char* rmseFormat) {
+                                   int decimals) {
   std::string out = fmt("  %-27s %8s %7s %9s %9s %9s  %-24s %s\n", "candidate", ("train " + unit).c_str(), "n_eff", "LR",
                         "p (Bonf.)", "dBIC", ("validation RMSE " + unit).c_str(), "verdict");
   for (const EffectScore* cp : candidates) {
@@ -201,7 +229,7 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
       continue;
     }
     std::string val;
-    for (double v : c.validationRmse) val += fmt(rmseFormat, v) + " ";
+    for (double v : c.validationRmse) val += num(v, decimals + 1) + " ";
     std::string verdict = c.accepted ? "ACCEPTED" : "rejected:";
     if (!c.accepted) {
       if (!c.significant) verdict += " not significant;";
@@ -209,7 +237,7 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
       if (!c.validationImproves) verdict += " validation did not fall enough;";
       if (!c.physical) verdict += " wrong sign;";
     }
-    out += fmt("  %-27s %8s %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(), fmt(rmseFormat, c.trainRmse).c_str(),
+    out += fmt("  %-27s %8s %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(), num(c.trainRmse, decimals + 1).c_str(),
                c.effectiveSamples, c.likelihoodRatio, c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
   }
   return out;
@@ -220,23 +248,6 @@ std::string formatAcceptedEffect(const EffectScore& c, const std::string& senten
   for (const auto& p : c.parameters)
     out += fmt("    %-24s %12.5g  (95 %% CI %.5g .. %.5g)\n", p.name.c_str(), p.value, p.lower, p.upper);
   return out + "    acted most in: " + c.where + "\n    sign: " + c.physicalNote + "\n";
-}
-
-void writeCandidateJson(JsonWriter& w, const EffectScore& c, int step, const std::vector<std::string>& stems) {
-  w.beginObject().field("effect", c.effect).field("step", step).field("accepted", c.accepted);
-  if (!c.notApplicable.empty()) {
-    w.field("not_applicable", c.notApplicable).endObject();
-    return;
-  }
-  w.key("validation_rmse").beginObject();
-  for (std::size_t v = 0; v < stems.size() && v < c.validationRmse.size(); ++v) w.field(stems[v], c.validationRmse[v]);
-  w.endObject().field("train_rmse", c.trainRmse).field("delta_bic", c.deltaBic);
-  w.field("likelihood_ratio", c.likelihoodRatio).field("p_adjusted", c.pAdjusted);
-  w.field("effective_samples", c.effectiveSamples).key("parameters").beginObject();
-  for (const auto& p : c.parameters) w.field(p.name, p.value);
-  w.endObject().key("confidence_intervals").beginObject();
-  for (const auto& p : c.parameters) w.field(p.name, std::vector<double>{p.lower, p.upper});
-  w.endObject().field("physical_sign", c.physical).field("where", c.where).endObject();
 }
 
 std::string formatStepOutcome(const std::string& chosen, const std::vector<std::string>& group) {
@@ -250,32 +261,40 @@ std::string formatStepOutcome(const std::string& chosen, const std::vector<std::
   return out + "\n";
 }
 
-std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderComparison& before,
-                                const CylinderComparison& after) {
+std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, const Comparison& after) {
+  const int d = before.decimals;
+  const std::string& u = before.unit;
   std::string out;
+  for (const auto& p : dg.baselineParameters)
+    out += fmt("base model: %s refitted to %.4g (95 %% CI %.4g .. %.4g)\n", p.name.c_str(), p.value, p.lower, p.upper);
   std::vector<std::string> stems;
   for (const auto& r : before.records)
-    if (!r.training) stems.push_back(r.data->stem);
+    if (!r.training) stems.push_back(r.stem);
   for (std::size_t s = 0; s < dg.steps.size(); ++s) {
     const auto& st = dg.steps[s];
-    out += fmt("step %zu: current model train RMSE %.1f N", s + 1, st.currentTrainRmse);
-    for (std::size_t v = 0; v < stems.size(); ++v) out += fmt(", %s %.1f N", stems[v].c_str(), st.currentValidationRmse[v]);
+    out += fmt("step %zu: current model train %s RMSE %s %s", s + 1, before.quantity.c_str(),
+               num(st.currentTrainRmse, d + 1).c_str(), u.c_str());
+    for (std::size_t v = 0; v < stems.size() && v < st.currentValidationRmse.size(); ++v)
+      out += fmt(", %s %s %s", stems[v].c_str(), num(st.currentValidationRmse[v], d + 1).c_str(), u.c_str());
     out += "\n";
     std::vector<const EffectScore*> scores;
     for (const auto& c : st.candidates) scores.push_back(&c);
-    out += formatCandidateRanking(scores, "N", "%.1f");
+    out += formatCandidateRanking(scores, u, d);
     out += formatStepOutcome(st.chosen >= 0 ? st.candidates[static_cast<std::size_t>(st.chosen)].effect : "", st.group);
   }
   out += "\naccepted effects, in order:\n";
   if (dg.accepted.empty()) out += "  none\n";
-  for (const auto& c : dg.acceptedScores) out += formatAcceptedEffect(c, findCylinderEffect(c.effect).sentence);
+  for (const auto& c : dg.acceptedScores) out += formatAcceptedEffect(c, describeEffect(c.id).sentence);
   for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
-  out += "\n              |   before: ME N  RMSE N  R^2 %  |   after: ME N  RMSE N  R^2 %\n";
-  for (std::size_t i = 0; i < before.records.size(); ++i) {
+  for (const auto& p : dg.finalParameters)
+    out += fmt("%s after: %.4g (95 %% CI %.4g .. %.4g)\n", p.name.c_str(), p.value, p.lower, p.upper);
+  out += fmt("\n%-16s | before: ME %-4s RMSE %-4s R^2 %%  | after: ME %-4s RMSE %-4s R^2 %%\n", before.quantity.c_str(),
+             u.c_str(), u.c_str(), u.c_str(), u.c_str());
+  for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
     const auto& b = before.records[i];
     const auto& a = after.records[i];
-    out += fmt("%-8s %-5s |   %10.1f %7.1f %6.1f  |   %9.1f %7.1f %6.1f\n", b.data->stem.c_str(),
-               b.training ? "train" : "valid", b.overall.maxError, b.overall.rmse, 100 * b.overall.r2, a.overall.maxError,
+    out += fmt("%-10s %-5s |   %10.*f %9.*f %6.1f  |   %9.*f %9.*f %6.1f\n", b.stem.c_str(), b.training ? "train" : "valid",
+               d, b.overall.maxError, d + 1, b.overall.rmse, 100 * b.overall.r2, d, a.overall.maxError, d + 1,
                a.overall.rmse, 100 * a.overall.r2);
   }
   out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g, %d lags outside the 99 %% band: ",
@@ -290,26 +309,27 @@ std::string formatDiagnosisText(const CylinderDiagnosis& dg, const CylinderCompa
   return out;
 }
 
-std::string formatDiagnosisJson(const CylinderDiagnosis& dg, const CylinderComparison& before,
-                                const CylinderComparison& after) {
-  JsonWriter w;
+nlohmann::json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comparison& after) {
   std::vector<std::string> stems;
   for (const auto& r : before.records)
-    if (!r.training) stems.push_back(r.data->stem);
-  w.beginObject().key("baseline");
-  summaryJson(w, before);
-  w.key("candidates").beginArray();
-  for (std::size_t s = 0; s < dg.steps.size(); ++s) {
-    for (const auto& c : dg.steps[s].candidates) {
-      writeCandidateJson(w, c, static_cast<int>(s + 1), stems);
-    }
-  }
-  w.endArray().field("accepted", dg.accepted).key("ambiguous").beginArray();
-  for (const auto& g : dg.ambiguous) w.value(g);
-  w.endArray().key("final");
-  summaryJson(w, after);
-  w.field("residual_white", dg.finalResidualWhite).field("structure", dg.structureNote).endObject();
-  return w.str() + "\n";
+    if (!r.training) stems.push_back(r.stem);
+  nlohmann::json candidates = nlohmann::json::array();
+  for (std::size_t s = 0; s < dg.steps.size(); ++s)
+    for (const auto& c : dg.steps[s].candidates) candidates.push_back(candidateJson(c, static_cast<int>(s + 1), stems));
+  return {{"plant", plantName(dg.plant)},
+          {"quantity", before.quantity},
+          {"unit", before.unit},
+          {"baseline", summaryJson(before)},
+          {"baseline_parameters", parametersJson(dg.baselineParameters)},
+          {"candidates", candidates},
+          {"accepted", dg.accepted},
+          {"ambiguous", dg.ambiguous},
+          {"ambiguity_advice", dg.ambiguityAdvice},
+          {"final", summaryJson(after)},
+          {"final_parameters", parametersJson(dg.finalParameters)},
+          {"residual_white", dg.finalResidualWhite},
+          {"structure", dg.structureNote},
+          {"warnings", dg.warnings}};
 }
 
 }  // namespace swingsim

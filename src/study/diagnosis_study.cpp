@@ -1,6 +1,12 @@
 #include "study/diagnosis_study.h"
 
 #include "core/output_files.h"
+#include "identify/cylinder_plant.h"
+#include "identify/swing_plant.h"
+#include "io/bench_csv.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "io/swing_record_csv.h"
 #include "io/yaml_reader.h"
 
 namespace swingsim {
@@ -53,27 +59,46 @@ void readCommon(YamlMap& yaml, const std::vector<std::string>& known, const char
 
 }  // namespace
 
-CylinderDiagnosisStudy readCylinderDiagnosisStudy(YamlMap& yaml) {
-  CylinderDiagnosisStudy s;
+DiagnosisStudy readDiagnosisStudy(YamlMap& yaml) {
+  DiagnosisStudy s;
   s.path = yaml.path();
+  if (!yaml.has("kind")) yaml.getString("kind");  // "required key is missing"
+  s.plant = yaml.getChoice("kind", {"cylinder-diagnosis", "swing-diagnosis"}, "") == "swing-diagnosis" ? PlantKind::kSwing
+                                                                                                      : PlantKind::kCylinder;
+  if (s.plant == PlantKind::kSwing) s.participantPath = yaml.resolvePath(yaml.getString("participant"));
   s.baseModelPath = yaml.resolvePath(yaml.getString("base_model"));
-  std::vector<std::string> known;
-  for (const auto& e : cylinderEffectLibrary()) known.push_back(e.name);
-  readCommon(yaml, known, "cylinder", s.name, s.train, s.validate, s.settings);
-  s.settings.fitSwitches = yaml.getBool("fit_switches", false);
-  s.plotSeconds = yaml.getDouble("plot_seconds", s.plotSeconds, mustBePositive);
+  readCommon(yaml, effectNames(s.plant), plantName(s.plant).c_str(), s.name, s.train, s.validate, s.settings);
+  if (s.plant == PlantKind::kCylinder) {
+    s.fitSwitches = yaml.getBool("fit_switches", false);
+    s.plotSeconds = yaml.getDouble("plot_seconds", s.plotSeconds, mustBePositive);
+  }
   return s;
 }
 
-SwingDiagnosisStudy readSwingDiagnosisStudy(YamlMap& yaml) {
-  SwingDiagnosisStudy s;
-  s.path = yaml.path();
-  s.participantPath = yaml.resolvePath(yaml.getString("participant"));
-  s.baseModelPath = yaml.resolvePath(yaml.getString("base_model"));
-  std::vector<std::string> known;
-  for (const auto& e : swingEffectLibrary()) known.push_back(e.name);
-  readCommon(yaml, known, "swing", s.name, s.train, s.validate, s.settings);
+DiagnosisStudy loadDiagnosisStudy(const std::string& path) {
+  YamlMap yaml = YamlMap::loadFile(path);
+  DiagnosisStudy s = readDiagnosisStudy(yaml);
+  yaml.finish();
   return s;
+}
+
+std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows) {
+  if (study.plant == PlantKind::kCylinder) {
+    const MauchCylinderParams base = loadMauchCylinder(study.baseModelPath);
+    const auto minRows = static_cast<std::size_t>(MauchCylinder(base).numCoefficients()) + extraTrainRows;
+    std::vector<BenchData> train, validate;
+    for (const auto& p : study.train) train.push_back(readBenchCsv(p, minRows));
+    for (const auto& p : study.validate) validate.push_back(readBenchCsv(p, 3));
+    return std::make_unique<CylinderPlant>(base, std::move(train), std::move(validate), study.fitSwitches,
+                                           study.plotSeconds);
+  }
+  SwingBase base;
+  base.participant = loadParticipant(study.participantPath);
+  base.knee = loadKneeModel(study.baseModelPath);
+  std::vector<SwingRecord> train, validate;
+  for (const auto& p : study.train) train.push_back(readSwingRecord(p));
+  for (const auto& p : study.validate) validate.push_back(readSwingRecord(p));
+  return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
 }
 
 }  // namespace swingsim

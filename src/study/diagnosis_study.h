@@ -1,43 +1,45 @@
 #pragma once
-// Study YAML for `swingsim compare` and `swingsim diagnose` (issue 5):
-//   kind: cylinder-diagnosis
-//   name, description (optional), base_model (knee model YAML), train, validate (bench CSV
-//   lists, relative to the study), candidates (optional; default the whole library),
-//   fit_switches (optional, false), plot_seconds (optional, 2),
-//   acceptance: {alpha, min_validation_improvement, max_effects, whiteness_lags} (optional;
-//   the thresholds are frozen here before the run, defaults in CylinderDiagnosisSettings).
+// Study YAML for `swingsim compare` and `swingsim diagnose`, one reader for both plants:
+//   kind: cylinder-diagnosis | swing-diagnosis
+//   name, description (optional), base_model (knee model YAML), train, validate (record CSV
+//   lists, relative to the study), candidates (optional; default the plant's whole library,
+//   model/effect_table.h), acceptance: {alpha, min_validation_improvement, max_effects,
+//   whiteness_lags} (optional; frozen here before the run).
+//   cylinder-diagnosis only: fit_switches (false), plot_seconds (2).
+//   swing-diagnosis only: participant (participant YAML).
+// loadDiagnosisPlant reads the records and models a study names and builds its plant.
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "identify/cylinder_diagnosis.h"
-#include "identify/swing_diagnosis.h"
+#include "identify/diagnosis_engine.h"
 
 namespace swingsim {
 
 class YamlMap;
 
-struct CylinderDiagnosisStudy {
-  std::string path;
-  std::string name;
-  std::string baseModelPath;          ///< resolved
-  std::vector<std::string> train;     ///< resolved bench CSV paths
-  std::vector<std::string> validate;  ///< resolved bench CSV paths
-  CylinderDiagnosisSettings settings;
-  double plotSeconds = 2.0;           ///< s of each record shown in residual-vs-time plots
+struct DiagnosisStudy {
+  PlantKind plant = PlantKind::kCylinder;
+  std::string path, name;
+  std::string baseModelPath;          ///< resolved knee model YAML
+  std::string participantPath;        ///< resolved participant YAML (swing)
+  std::vector<std::string> train;     ///< resolved record CSV paths
+  std::vector<std::string> validate;  ///< resolved record CSV paths
+  EffectSelectionSettings settings;
+  bool fitSwitches = false;           ///< cylinder: refit switch widths and xhy before the baseline
+  double plotSeconds = 2.0;           ///< cylinder: s of each record shown in residual-vs-time plots
+  double integratorTolerance = 1e-8;  ///< swing: reference integrator tolerance in every refit
 };
 
-/// Reads a cylinder-diagnosis study (`kind` already read). Throws InputError
-/// (`file:line: key: ...`), e.g. for an unknown candidate or an empty `validate`.
-CylinderDiagnosisStudy readCylinderDiagnosisStudy(YamlMap& yaml);
+/// Reads a study of either kind (the `kind:` key decides). Throws InputError.
+DiagnosisStudy readDiagnosisStudy(YamlMap& yaml);
+/// Loads and reads a study file, rejecting unknown keys.
+DiagnosisStudy loadDiagnosisStudy(const std::string& path);
 
-/// kind: swing-diagnosis (docs/diagnosis.md): name, description, participant (YAML),
-/// base_model (knee model YAML), train, validate (swing kinematics CSVs), candidates
-/// (default: the swing library), acceptance (as above).
-struct SwingDiagnosisStudy {
-  std::string path, name, participantPath, baseModelPath;
-  std::vector<std::string> train, validate;
-  SwingDiagnosisSettings settings;
-};
-SwingDiagnosisStudy readSwingDiagnosisStudy(YamlMap& yaml);
+/// Reads the study's base model, participant and records and builds its plant. Each
+/// training record needs at least `extraTrainRows` rows more than the model has linear
+/// coefficients (cylinder). Throws InputError.
+std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows);
 
 }  // namespace swingsim

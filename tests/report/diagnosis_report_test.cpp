@@ -3,10 +3,10 @@
 #include <string>
 
 #include "io/knee_model_loader.h"
-#include "identify/swing_diagnosis.h"
+#include "identify/swing_plant.h"
 #include "identify/synthetic_swing.h"
 #include "io/participant_loader.h"
-#include "report/swing_diagnosis_report.h"
+#include "report/diagnosis_report.h"
 
 namespace swingsim {
 namespace {
@@ -24,17 +24,17 @@ TEST(SwingResidualPlot, FivePanelsWithTitlesAxisUnitsAndSwingPhaseBands) {
   base.participant = loadParticipant(kRoot + "/participants/p1.yaml");
   base.knee = loadKneeModel(kRoot + "/models/damping-table-default.yaml");
   // Data with a hidden viscous damper, compared with the plain model: a structured residual.
-  SwingModelParams truth = addSwingEffect({}, "knee_viscous_damping", 0);
+  SwingModelParams truth = addSwingEffect({}, EffectId::kKneeViscousDamping, 0);
   truth.effects.knee.viscousDamping = 0.3;
   const std::vector<SwingRecord> train = {makeSyntheticSwing(base, truth, {"normal", 1.0, 1.0}, 0.5, 7)};
-  const SwingComparison cmp = compareSwing(base, SwingModelParams{}, train, {});
+  const Comparison cmp = SwingPlant(base, train, {}).compare(SwingModel(SwingModelParams{}));
   ASSERT_EQ(cmp.records.size(), 1u);
-  const std::string svg = renderSwingResidualSvg(cmp.records[0], cmp.phaseNames, "compare: normal (train)");
+  const std::string svg = renderResidualSvg(cmp.records[0], cmp, "compare: normal (train)");
 
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("compare: normal (train)"), std::string::npos);
   // The five panel titles.
-  EXPECT_NE(svg.find("knee residual vs time from toe-off (whole swing), swing phases shaded"), std::string::npos);
+  EXPECT_NE(svg.find("knee flexion residual vs time (whole record), phases shaded"), std::string::npos);
   EXPECT_NE(svg.find("mean knee residual vs model knee flexion, 99 % band"), std::string::npos);
   EXPECT_NE(svg.find("mean knee residual vs model knee flexion rate, 99 % band"), std::string::npos);
   EXPECT_NE(svg.find("mean knee residual vs model knee acceleration, 99 % band"), std::string::npos);
@@ -46,7 +46,7 @@ TEST(SwingResidualPlot, FivePanelsWithTitlesAxisUnitsAndSwingPhaseBands) {
   // Axis labels with units.
   EXPECT_NE(svg.find("time (s)"), std::string::npos);
   EXPECT_NE(svg.find("measured - model knee flexion (deg)"), std::string::npos);
-  EXPECT_EQ(count(svg, "mean knee residual (deg)"), 3u);
+  EXPECT_EQ(count(svg, "mean residual (deg)"), 3u);
   EXPECT_NE(svg.find("lag (s)"), std::string::npos);
   EXPECT_NE(svg.find("autocorrelation (-)"), std::string::npos);
   // Every swing phase of the model's knee is shaded and named in the legend.

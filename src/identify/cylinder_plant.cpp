@@ -1,0 +1,316 @@
+#include "identify/cylinder_plant.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/input_error.h"
+
+namespace swingsim {
+
+namespace {
+
+// Latch rate of Chien 2014 (k = 1e4 /s): the no-delay reference for switch_delay.
+constexpr double kPublishedLatchRate = 1e4;
+
+std::string fmt(double v, const char* f = "%.3g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// Regression columns of an added effect, in MauchCylinder::calcRegressorRow's order (after
+// the 3 coefficients of each phase).
+std::vector<int> effectColumns(const MauchCylinderParams& p, EffectId effect) {
+  int col = 3 * p.phases;
+  const auto& e = p.effects;
+  std::vector<int> cols;
+  auto take = [&](bool on, int count, EffectId id) {
+    if (!on) return;
+    if (effect == id)
+      for (int i = 0; i < count; ++i) cols.push_back(col + i);
+    col += count;
+  };
+  take(e.hyperextensionPhase, 3, EffectId::kHyperextensionPhase);
+  take(e.coulombFriction, 1, EffectId::kCoulombFriction);
+  take(e.orificeQuadratic, 1, EffectId::kOrificeQuadratic);
+  take(e.inertia, 1, EffectId::kInertia);
+  take(e.positionDependentDamping, 1, EffectId::kPositionDependentDamping);
+  return cols;
+}
+
+// Whether the model has `effect` on (switch_delay: a latch slower than the fastest grid value).
+bool hasEffect(const MauchCylinderParams& p, EffectId effect) {
+  const auto& e = p.effects;
+  switch (effect) {
+    case EffectId::kCoulombFriction: return e.coulombFriction;
+    case EffectId::kOrificeQuadratic: return e.orificeQuadratic;
+    case EffectId::kInertia: return e.inertia;
+    case EffectId::kPositionDependentDamping: return e.positionDependentDamping;
+    case EffectId::kHyperextensionPhase: return e.hyperextensionPhase;
+    case EffectId::kSwitchDelay: return 1.0 / p.switches.latchRate >= describeEffect(effect).grid.front();
+    default: return false;
+  }
+}
+
+void requireCylinderEffect(EffectId effect) {
+  if (describeEffect(effect).plant != PlantKind::kCylinder)
+    throw std::invalid_argument("not a cylinder effect: " + describeEffect(effect).name);
+}
+
+// Force and dominant gate of a model along one record (S2 = 0 at heel strike).
+std::vector<double> residualOf(const MauchCylinder& cyl, const BenchData& d, std::vector<int>* phase = nullptr) {
+  const CylinderTrace tr = calcCylinderTrace(cyl, d.time, d.position, d.velocity, 0.0);
+  std::vector<double> r(d.force.size());
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = d.force[i] - tr.force[i];
+  if (phase) {
+    phase->resize(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i)
+      (*phase)[i] = static_cast<int>(std::max_element(tr.gates[i].begin(), tr.gates[i].end()) - tr.gates[i].begin());
+  }
+  return r;
+}
+
+double rmsOf(const std::vector<double>& r) {
+  double s = 0;
+  for (double v : r) s += v * v;
+  return r.empty() ? 0.0 : std::sqrt(s / static_cast<double>(r.size()));
+}
+
+}  // namespace
+
+const MauchCylinderParams& cylinderParams(const PlantModel& model) {
+  return dynamic_cast<const CylinderModel&>(model).params;
+}
+
+std::string checkCylinderEffectApplicable(const MauchCylinderParams& p, EffectId effect) {
+  requireCylinderEffect(effect);
+  if (effect == EffectId::kHyperextensionPhase && p.phases != 2)
+    return "the 4-phase model already has a hyperextension phase";
+  if (effect == EffectId::kSwitchDelay && hasEffect(p, effect))
+    return "the model's latch is already slow (k = " + formatNumber(p.switches.latchRate) + " /s)";
+  return hasEffect(p, effect) ? "already in the model" : "";
+}
+
+MauchCylinderParams addCylinderEffect(const MauchCylinderParams& params, EffectId effect, double gridValue) {
+  requireCylinderEffect(effect);
+  MauchCylinderParams p = params;
+  auto& e = p.effects;
+  switch (effect) {
+    case EffectId::kCoulombFriction:
+      e.coulombFriction = true;
+      e.coulombForce = 0;
+      e.coulombWidth = gridValue;
+      break;
+    case EffectId::kOrificeQuadratic:
+      e.orificeQuadratic = true;
+      e.orificeCoefficient = 0;
+      break;
+    case EffectId::kInertia:
+      e.inertia = true;
+      e.pistonMass = 0;
+      break;
+    case EffectId::kPositionDependentDamping:
+      e.positionDependentDamping = true;
+      e.positionDamping = 0;
+      break;
+    case EffectId::kHyperextensionPhase:
+      e.hyperextensionPhase = true;
+      e.hyperextension = {};
+      break;
+    case EffectId::kSwitchDelay:
+      p.switches.latchRate = 1.0 / gridValue;
+      break;
+    default:
+      break;
+  }
+  return p;
+}
+
+std::vector<std::string> cylinderPhaseNames(const MauchCylinderParams& p) {
+  std::vector<std::string> names = p.phases == 4
+                                       ? std::vector<std::string>{"stance flexion", "swing flexion", "extension",
+                                                                  "hyperextension"}
+                                       : std::vector<std::string>{"stance flexion (high force)", "low force"};
+  if (p.effects.hyperextensionPhase) names.push_back("hyperextension");
+  return names;
+}
+
+double calcCylinderEffectRms(const MauchCylinderParams& truth, EffectId effect, const BenchData& record) {
+  requireCylinderEffect(effect);
+  MauchCylinderParams without = truth;
+  auto& e = without.effects;
+  switch (effect) {
+    case EffectId::kCoulombFriction: e.coulombFriction = false; break;
+    case EffectId::kOrificeQuadratic: e.orificeQuadratic = false; break;
+    case EffectId::kInertia: e.inertia = false; break;
+    case EffectId::kPositionDependentDamping: e.positionDependentDamping = false; break;
+    case EffectId::kHyperextensionPhase: e.hyperextensionPhase = false; break;
+    case EffectId::kSwitchDelay: without.switches.latchRate = kPublishedLatchRate; break;
+    default: break;
+  }
+  const auto a = calcCylinderTrace(MauchCylinder(truth), record.time, record.position, record.velocity, 0.0).force;
+  const auto b = calcCylinderTrace(MauchCylinder(without), record.time, record.position, record.velocity, 0.0).force;
+  double s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return a.empty() ? 0.0 : std::sqrt(s / static_cast<double>(a.size()));
+}
+
+CylinderPlant::CylinderPlant(const MauchCylinderParams& base, std::vector<BenchData> train,
+                             std::vector<BenchData> validate, bool fitSwitches, double plotSeconds)
+    : start_(base), train_(std::move(train)), validate_(std::move(validate)), plotSeconds_(plotSeconds) {
+  if (fitSwitches) {
+    CylinderFitOptions o;
+    o.fitSwitches = true;
+    const CylinderFit f = fitCylinder(base, train_, o);
+    start_ = f.params;
+    warnings_ = f.warnings;
+  }
+}
+
+PlantModelPtr CylinderPlant::baseModel() const { return std::make_shared<CylinderModel>(start_); }
+
+PlantFit CylinderPlant::fit(const PlantModel& model) const {
+  const CylinderFit fitted = fitCylinder(cylinderParams(model), train_);
+  PlantFit s;
+  s.model = std::make_shared<CylinderModel>(fitted.params);
+  const MauchCylinder cyl(fitted.params);
+  for (const auto& d : train_) {
+    std::vector<int> phase;
+    s.trainResidual.push_back(residualOf(cyl, d, &phase));
+    s.trainPhase.push_back(phase);
+    for (double r : s.trainResidual.back()) s.rss += r * r;
+    s.samples += d.force.size();
+  }
+  s.likelihoodResidual = s.trainResidual;
+  s.trainRmse = std::sqrt(s.rss / static_cast<double>(s.samples));
+  for (const auto& d : validate_) s.validationRmse.push_back(rmsOf(residualOf(cyl, d)));
+  for (const auto& descriptor : effectTable()) {
+    if (descriptor.plant != PlantKind::kCylinder || !hasEffect(fitted.params, descriptor.id)) continue;
+    std::vector<double> se;
+    for (int col : effectColumns(fitted.params, descriptor.id))
+      se.push_back(fitted.regression.standardErrors[static_cast<std::size_t>(col)]);
+    s.effectErrors.emplace_back(descriptor.id, se);
+  }
+  return s;
+}
+
+std::string CylinderPlant::checkApplicable(const PlantModel& model, EffectId effect) const {
+  return checkCylinderEffectApplicable(cylinderParams(model), effect);
+}
+
+PlantModelPtr CylinderPlant::addEffect(const PlantModel& model, EffectId effect, double gridValue) const {
+  return std::make_shared<CylinderModel>(addCylinderEffect(cylinderParams(model), effect, gridValue));
+}
+
+PlantModelPtr CylinderPlant::combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const {
+  MauchCylinderParams p = cylinderParams(a);
+  const MauchCylinderParams& q = cylinderParams(b);
+  switch (effectOfB) {
+    case EffectId::kSwitchDelay: p.switches.latchRate = std::min(p.switches.latchRate, q.switches.latchRate); break;
+    case EffectId::kCoulombFriction: p = addCylinderEffect(p, effectOfB, q.effects.coulombWidth); break;
+    default: p = addCylinderEffect(p, effectOfB, 0.0); break;
+  }
+  return std::make_shared<CylinderModel>(p);
+}
+
+std::vector<double> CylinderPlant::effectValues(const PlantModel& model, EffectId effect) const {
+  const MauchCylinderParams& p = cylinderParams(model);
+  const auto& e = p.effects;
+  switch (effect) {
+    case EffectId::kCoulombFriction: return {e.coulombForce, e.coulombWidth};
+    case EffectId::kOrificeQuadratic: return {e.orificeCoefficient};
+    case EffectId::kInertia: return {e.pistonMass};
+    case EffectId::kPositionDependentDamping: return {e.positionDamping};
+    case EffectId::kHyperextensionPhase: return {e.hyperextension.f, e.hyperextension.k, e.hyperextension.c};
+    case EffectId::kSwitchDelay: return {1.0 / p.switches.latchRate};
+    default: return {};
+  }
+}
+
+bool CylinderPlant::checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const {
+  const MauchCylinderParams& p = cylinderParams(model);
+  const auto& e = p.effects;
+  switch (effect) {
+    case EffectId::kCoulombFriction:
+      note = "friction force must oppose motion (force_N > 0): " + fmt(e.coulombForce) + " N";
+      return e.coulombForce > 0;
+    case EffectId::kOrificeQuadratic:
+      note = "orifice flow must resist motion (coefficient > 0): " + fmt(e.orificeCoefficient) + " N s^2/m^2";
+      return e.orificeCoefficient > 0;
+    case EffectId::kInertia:
+      note = "moving mass must be positive: " + fmt(e.pistonMass) + " kg";
+      return e.pistonMass > 0;
+    case EffectId::kHyperextensionPhase:
+      note = "hyperextension stiffness must push the piston out of hyperextension (k > 0): " + fmt(e.hyperextension.k) +
+             " N/m";
+      return e.hyperextension.k > 0;
+    case EffectId::kSwitchDelay:
+      note = "latch time constant 1/k > 0: " + fmt(1.0 / p.switches.latchRate) + " s";
+      return true;
+    default:
+      break;
+  }
+  // position_dependent_damping: every flexion/extension phase keeps non-negative damping
+  // c + cx x over the recorded stroke (a negative damper would feed energy in).
+  double xMin = 1e300, xMax = -1e300;
+  for (const auto& d : train_)
+    for (double x : d.position) {
+      xMin = std::max(0.0, std::min(xMin, x));
+      xMax = std::max(xMax, x);
+    }
+  double worst = 1e300;
+  const int flexExtPhases = p.phases == 4 ? 3 : 2;
+  for (int ph = 0; ph < flexExtPhases; ++ph) {
+    const double c = p.coefficients[static_cast<std::size_t>(ph)].c;
+    worst = std::min({worst, c + e.positionDamping * xMin, c + e.positionDamping * xMax});
+  }
+  note = "damping c + cx x must stay >= 0 over the stroke: lowest " + fmt(worst) + " N s/m";
+  return worst >= 0;
+}
+
+std::vector<std::string> CylinderPlant::phaseNames(const PlantModel& model) const {
+  return cylinderPhaseNames(cylinderParams(model));
+}
+
+Comparison CylinderPlant::compare(const PlantModel& model) const {
+  const MauchCylinderParams& params = cylinderParams(model);
+  Comparison out;
+  out.quantity = "force";
+  out.unit = "N";
+  out.phaseNames = cylinderPhaseNames(params);
+  out.plotSeconds = plotSeconds_;
+  const MauchCylinder cyl(params);
+  auto run = [&](const BenchData& d, bool training) {
+    RecordComparison rc;
+    rc.stem = d.stem;
+    rc.training = training;
+    rc.time = d.time;
+    rc.measured = d.force;
+    const CylinderTrace tr = calcCylinderTrace(cyl, d.time, d.position, d.velocity, 0.0);
+    rc.predicted = tr.force;
+    rc.phase.resize(d.force.size());
+    for (std::size_t i = 0; i < d.force.size(); ++i)
+      rc.phase[i] = static_cast<int>(std::max_element(tr.gates[i].begin(), tr.gates[i].end()) - tr.gates[i].begin());
+    std::vector<double> mm, mmPerS;
+    for (double x : d.position) mm.push_back(1e3 * x);
+    for (double x : d.velocity) mmPerS.push_back(1e3 * x);
+    rc.variables = {{"piston position (mm)", "", mm},
+                    {"piston velocity (mm/s)", "", mmPerS},
+                    {"piston acceleration (m/s^2)", "", estimatePistonVelocity(d.time, d.velocity)}};
+    finishRecordComparison(rc, out.phaseNames.size());
+    out.records.push_back(std::move(rc));
+  };
+  for (const auto& d : train_) run(d, true);
+  for (const auto& d : validate_) run(d, false);
+  return out;
+}
+
+std::vector<std::string> CylinderPlant::validationStems() const {
+  std::vector<std::string> stems;
+  for (const auto& d : validate_) stems.push_back(d.stem);
+  return stems;
+}
+
+}  // namespace swingsim

@@ -1,0 +1,208 @@
+#include "identify/diagnosis_engine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/input_error.h"
+
+namespace swingsim {
+
+namespace {
+
+// chi^2(1) 95 % quantile, for the profile-likelihood interval of a grid parameter.
+constexpr double kChi2One95 = 3.841458820694124;
+
+std::string fmtPercent(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f", v);
+  return buf;
+}
+
+const std::vector<double>* findErrors(const PlantFit& fit, EffectId id) {
+  for (const auto& [effect, errors] : fit.effectErrors)
+    if (effect == id) return &errors;
+  return nullptr;
+}
+
+// The effect's parameters at `fit`, with 95 % intervals from the fit's standard errors
+// inflated by `inflate` (sqrt(n / n_eff) for autocorrelated residuals).
+std::vector<EffectParameter> parametersWithIntervals(const DiagnosisPlant& plant, const PlantFit& fit, EffectId id,
+                                                     double inflate) {
+  const EffectDescriptor& d = describeEffect(id);
+  const std::vector<double> values = plant.effectValues(*fit.model, id);
+  std::vector<EffectParameter> out;
+  for (std::size_t k = 0; k < d.parameters.size() && k < values.size(); ++k)
+    out.push_back({d.parameters[k], values[k], values[k], values[k]});
+  if (const auto* se = findErrors(fit, id))
+    for (std::size_t k = 0; k < se->size() && k < out.size() && static_cast<int>(k) < d.fittedParameters; ++k)
+      setNormalInterval(out[k], (*se)[k] * inflate);
+  return out;
+}
+
+std::vector<EffectParameter> baseIntervals(const PlantFit& fit) {
+  const double inflate = calcStandardErrorInflation(static_cast<double>(fit.samples),
+                                                    calcEffectiveSampleSize(fit.likelihoodResidual));
+  std::vector<EffectParameter> out;
+  for (const auto& free : fit.baseParameters) {
+    EffectParameter p{free.name, free.value, free.value, free.value};
+    setNormalInterval(p, free.standardError * inflate);
+    out.push_back(p);
+  }
+  return out;
+}
+
+// Scores one candidate on top of `current`: every parameter refitted with it, its grid
+// parameter (if any) profiled on the descriptor's fixed grid (best training RSS).
+CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& current, EffectId id,
+                              const EffectSelectionSettings& settings, PlantFit* bestOut) {
+  const EffectDescriptor& d = describeEffect(id);
+  CandidateScore c;
+  c.id = id;
+  c.effect = d.name;
+  c.notApplicable = plant.checkApplicable(*current.model, id);
+  if (!c.notApplicable.empty()) return c;
+  const std::vector<double> grid = d.grid.empty() ? std::vector<double>{0.0} : d.grid;
+  std::vector<PlantFit> fits;
+  std::size_t best = 0;
+  for (double g : grid) {
+    try {
+      fits.push_back(plant.fit(*plant.addEffect(*current.model, id, g)));
+    } catch (const RunError& e) {
+      c.notApplicable = e.what();
+      return c;
+    }
+    if (fits.back().rss < fits[best].rss) best = fits.size() - 1;
+  }
+  const PlantFit& s = fits[best];
+  const int dof = d.degreesOfFreedom();
+  const LrTest t = calcLrTest(current.rss, s.rss, s.likelihoodResidual, dof);
+  c.model = s.model;
+  c.trainRmse = s.trainRmse;
+  c.validationRmse = s.validationRmse;
+  applyTestAndValidation(c, t, dof, current.validationRmse, settings);
+  const double inflate = calcStandardErrorInflation(static_cast<double>(s.samples), t.nEff);
+  c.parameters = parametersWithIntervals(plant, s, id, inflate);
+  if (!d.grid.empty()) {
+    // The grid parameter's interval: the grid values inside the profile likelihood's 95 %
+    // region. The fitted parameters' intervals are conditional on the grid value: take their
+    // union over every grid value in that region, so the grid choice cannot narrow them.
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t g = 0; g < grid.size(); ++g) {
+      if (!(t.nEff * std::log(fits[g].rss / s.rss) <= kChi2One95)) continue;
+      lo = std::min(lo, grid[g] * d.gridReportScale);
+      hi = std::max(hi, grid[g] * d.gridReportScale);
+      const auto others = parametersWithIntervals(plant, fits[g], id, inflate);
+      for (std::size_t k = 0; k < others.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
+        c.parameters[k].lower = std::min(c.parameters[k].lower, others[k].lower);
+        c.parameters[k].upper = std::max(c.parameters[k].upper, others[k].upper);
+      }
+    }
+    c.parameters.back().lower = lo;
+    c.parameters.back().upper = hi;
+  }
+  c.physical = plant.checkPhysical(*s.model, id, c.physicalNote);
+  c.physicalNote += c.physical ? " (ok)" : " (wrong sign)";
+  // Where the squared error fell most, by the current model's phases.
+  const auto names = plant.phaseNames(*current.model);
+  std::vector<double> fall(names.size(), 0.0);
+  double totalFall = 0;
+  for (std::size_t f = 0; f < current.trainResidual.size() && f < s.trainResidual.size(); ++f)
+    for (std::size_t i = 0; i < current.trainResidual[f].size() && i < s.trainResidual[f].size(); ++i) {
+      const double drop = current.trainResidual[f][i] * current.trainResidual[f][i] - s.trainResidual[f][i] * s.trainResidual[f][i];
+      fall[static_cast<std::size_t>(current.trainPhase[f][i])] += drop;
+      totalFall += drop;
+    }
+  const auto where = static_cast<std::size_t>(std::max_element(fall.begin(), fall.end()) - fall.begin());
+  c.where = names[where] + (totalFall > 0 ? " (" + fmtPercent(100.0 * fall[where] / totalFall) + " % of the error fall)" : "");
+  for (const auto& r : s.trainResidual) c.trainResidual.insert(c.trainResidual.end(), r.begin(), r.end());
+  if (bestOut) *bestOut = s;
+  return c;
+}
+
+// The candidate effects to score: the study's list, or the plant's whole library.
+std::vector<EffectId> resolveEffects(PlantKind plant, const std::vector<std::string>& requested) {
+  const std::vector<std::string> names = resolveCandidates(requested, effectNames(plant));
+  std::vector<EffectId> ids;
+  for (const auto& n : names) ids.push_back(findEffect(plant, n)->id);
+  return ids;
+}
+
+}  // namespace
+
+Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings) {
+  if (plant.validationStems().empty())
+    throw InputError("diagnose: the acceptance rule needs at least one validation file (validate:)");
+  const std::vector<EffectId> ids = resolveEffects(plant.kind(), settings.candidates);
+  std::vector<std::string> names;
+  for (EffectId id : ids) names.push_back(describeEffect(id).name);
+
+  Diagnosis out;
+  out.plant = plant.kind();
+  out.warnings = plant.warnings();
+  PlantFit current = plant.fit(*plant.baseModel());
+  out.baseline = current;
+  out.baselineParameters = baseIntervals(current);
+  out.baselineWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
+
+  for (int stepNo = 0; stepNo < settings.maxEffects; ++stepNo) {
+    DiagnosisStep step;
+    step.currentTrainRmse = current.trainRmse;
+    step.currentValidationRmse = current.validationRmse;
+    std::vector<PlantFit> best(ids.size());
+    int applicable = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      step.candidates.push_back(scoreCandidate(plant, current, ids[i], settings, &best[i]));
+      if (step.candidates.back().notApplicable.empty()) ++applicable;
+    }
+    std::vector<EffectScore*> scores;
+    for (auto& c : step.candidates) scores.push_back(&c);
+    step.chosen = applicable == 0 ? -1 : applyAcceptanceRule(scores, settings.alpha);
+    if (step.chosen < 0) {
+      out.steps.push_back(step);
+      break;
+    }
+    const auto chosen = static_cast<std::size_t>(step.chosen);
+    step.group = findAmbiguityGroup(scores, names, chosen, settings.alpha, [&](std::size_t j) -> std::optional<double> {
+      PlantFit joint;
+      try {
+        joint = plant.fit(*plant.combine(*best[j].model, *best[chosen].model, ids[chosen]));
+      } catch (const RunError&) {
+        return std::nullopt;
+      }
+      return calcLrTest(best[j].rss, joint.rss, joint.likelihoodResidual,
+                        std::max(1, describeEffect(ids[chosen]).degreesOfFreedom())).p;
+    });
+    current = best[chosen];
+    out.accepted.push_back(names[chosen]);
+    out.acceptedScores.push_back(step.candidates[chosen]);
+    recordAmbiguity(step.group, [&](const std::string& e) { return findEffect(plant.kind(), e)->separatedBy; }, out.ambiguous,
+                    out.ambiguityAdvice);
+    out.steps.push_back(step);
+  }
+  out.final = current;
+  out.finalParameters = baseIntervals(current);
+  out.finalWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
+  out.finalResidualWhite = out.finalWhiteness.pValue >= settings.alpha;
+  if (!out.finalResidualWhite) {
+    const double ratio = calcEffectiveSampleSize(current.likelihoodResidual) / static_cast<double>(current.samples);
+    Comparison training = plant.compare(*current.model);
+    training.records.erase(std::remove_if(training.records.begin(), training.records.end(),
+                                          [](const RecordComparison& r) { return !r.training; }),
+                           training.records.end());
+    out.structureNote = describeResidualStructure(training, ratio);
+  }
+  return out;
+}
+
+BaselineComparison compareBaseline(const DiagnosisPlant& plant, int whitenessLags) {
+  BaselineComparison out;
+  out.fit = plant.fit(*plant.baseModel());
+  out.parameters = baseIntervals(out.fit);
+  out.comparison = plant.compare(*out.fit.model);
+  out.whiteness = calcWhitenessTest(out.fit.likelihoodResidual, whitenessLags);
+  return out;
+}
+
+}  // namespace swingsim

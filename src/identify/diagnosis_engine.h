@@ -1,0 +1,132 @@
+#pragma once
+// The one model-vs-measurement engine of `swingsim compare` and `swingsim diagnose`, for
+// every plant (the Mauch cylinder on a bench, the swing of a leg): fit the base model ->
+// compare (residual per phase and state) -> score every candidate effect of the library on
+// top of the current model -> the acceptance rule (identify/effect_selection.h) -> add the
+// best accepted one -> refit -> validate on held-out records -> repeat. The plants differ only
+// in the DiagnosisPlant they implement; docs/diagnosis.md explains the statistics.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "identify/comparison.h"
+#include "identify/effect_selection.h"
+#include "model/effect_table.h"
+#include "numerics/residual_analysis.h"
+
+namespace swingsim {
+
+/// A model of one plant with its parameter values; only its plant looks inside.
+class PlantModel {
+ public:
+  virtual ~PlantModel() = default;
+};
+using PlantModelPtr = std::shared_ptr<const PlantModel>;
+
+/// A model with all its free parameters fitted to the training records and run along the
+/// held-out ones.
+struct PlantFit {
+  PlantModelPtr model;
+  ResidualSegments likelihoodResidual;  ///< every training residual the likelihood uses
+  double rss = 0;                       ///< sum of squares of likelihoodResidual
+  std::size_t samples = 0;              ///< its length
+  /// Per training record, the residual of the compared quantity (N; knee deg), and the
+  /// phase of each sample under this model.
+  std::vector<std::vector<double>> trainResidual;
+  std::vector<std::vector<int>> trainPhase;
+  double trainRmse = 0;                 ///< of trainResidual
+  std::vector<double> validationRmse;   ///< per held-out record
+  /// Standard errors (unit of the reported parameter, before inflation for autocorrelation)
+  /// of the fitted parameters of every effect in the model, by effect, in the order of the
+  /// descriptor's parameters; and of the base model's own free parameters.
+  std::vector<std::pair<EffectId, std::vector<double>>> effectErrors;
+  /// The base model's own free parameters (the swing's knee model scale), with standard errors.
+  struct FreeParameter {
+    std::string name;  ///< with unit
+    double value = 0, standardError = 0;
+  };
+  std::vector<FreeParameter> baseParameters;
+};
+
+/// What the engine needs from a plant.
+class DiagnosisPlant {
+ public:
+  virtual ~DiagnosisPlant() = default;
+  virtual PlantKind kind() const = 0;
+  /// The base model, before any fit.
+  virtual PlantModelPtr baseModel() const = 0;
+  /// Fits every free parameter of `model` (base and effects; grid parameters as given) to the
+  /// training records and runs it along the held-out ones. Throws RunError if it cannot run.
+  virtual PlantFit fit(const PlantModel& model) const = 0;
+  /// Why `effect` cannot be added to `model` ("" if it can).
+  virtual std::string checkApplicable(const PlantModel& model, EffectId effect) const = 0;
+  /// `model` with `effect` switched on (fitted parameters zero or neutral; the grid
+  /// parameter, if any, at `gridValue`).
+  virtual PlantModelPtr addEffect(const PlantModel& model, EffectId effect, double gridValue) const = 0;
+  /// `a` with the effect `effectOfB` of `b` added at `b`'s values.
+  virtual PlantModelPtr combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const = 0;
+  /// The reported values of an effect's parameters (descriptor order, reported units).
+  virtual std::vector<double> effectValues(const PlantModel& model, EffectId effect) const = 0;
+  /// Whether the fitted effect has its physical sign; `note` says the rule and the value.
+  virtual bool checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const = 0;
+  /// Phase names of `model` (phase indices of PlantFit::trainPhase).
+  virtual std::vector<std::string> phaseNames(const PlantModel& model) const = 0;
+  /// `model` run along every record, training first.
+  virtual Comparison compare(const PlantModel& model) const = 0;
+  /// Stems of the held-out records, in order.
+  virtual std::vector<std::string> validationStems() const = 0;
+  /// Warnings of the base fit (e.g. a switch constant at the edge of its range).
+  virtual std::vector<std::string> warnings() const { return {}; }
+  /// An independent check of a fitted model, one line for the report ("" if the plant has
+  /// none): the swing reruns the model with Simbody, since its refits use the reference
+  /// integrator.
+  virtual std::string verify(const PlantModel&) const { return ""; }
+};
+
+/// One candidate scored on top of the current model.
+struct CandidateScore : EffectScore {
+  EffectId id{};
+  PlantModelPtr model;  ///< current model + the effect, every parameter refitted
+};
+
+struct DiagnosisStep {
+  double currentTrainRmse = 0;
+  std::vector<double> currentValidationRmse;
+  std::vector<CandidateScore> candidates;
+  int chosen = -1;                  ///< index into candidates, -1 if none accepted
+  std::vector<std::string> group;   ///< the chosen effect and those the data cannot tell from it
+};
+
+/// Result of a diagnosis.
+struct Diagnosis {
+  PlantKind plant{};
+  PlantFit baseline;   ///< base model fitted
+  PlantFit final;      ///< with the accepted effects, refitted
+  std::vector<EffectParameter> baselineParameters, finalParameters;  ///< base model's own, 95 % intervals
+  std::vector<DiagnosisStep> steps;
+  std::vector<std::string> accepted;  ///< names, in order of acceptance
+  std::vector<CandidateScore> acceptedScores;
+  std::vector<std::vector<std::string>> ambiguous;
+  std::vector<std::string> ambiguityAdvice;  ///< one per ambiguous group
+  WhitenessTest baselineWhiteness, finalWhiteness;
+  bool finalResidualWhite = true;
+  std::string structureNote;  ///< where the remaining structure is, if not white
+  std::vector<std::string> warnings;
+};
+
+/// Forward stepwise diagnosis with the acceptance rule of `settings`. Throws InputError for
+/// an unknown candidate name (listing the plant's effects) or no held-out record (the rule
+/// needs held-out data), RunError if the base model cannot run.
+Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings);
+
+/// The base model fitted (no candidate): what `swingsim compare` shows. Whiteness of its
+/// likelihood residual with `whitenessLags` lags.
+struct BaselineComparison {
+  PlantFit fit;
+  std::vector<EffectParameter> parameters;  ///< base model's own, 95 % intervals
+  Comparison comparison;
+  WhitenessTest whiteness;
+};
+BaselineComparison compareBaseline(const DiagnosisPlant& plant, int whitenessLags);
+
+}  // namespace swingsim

@@ -1,0 +1,508 @@
+#include "identify/swing_plant.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "core/units.h"
+#include "numerics/levenberg_marquardt.h"
+#include "swing/knee_setup.h"
+#include "swing/reference_swing.h"
+#include "swing/swing_simulation.h"
+
+namespace swingsim {
+
+namespace {
+
+std::string fmt(double v, const char* f = "%.3g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+void requireSwingEffect(EffectId effect) {
+  if (describeEffect(effect).plant != PlantKind::kSwing)
+    throw std::invalid_argument("not a swing effect: " + describeEffect(effect).name);
+}
+
+}  // namespace
+
+bool SwingEffects::has(EffectId effect) const {
+  switch (effect) {
+    case EffectId::kKneeCoulombFriction: return coulomb;
+    case EffectId::kKneeViscousDamping: return viscous;
+    case EffectId::kExtensionAssistSpring: return assist;
+    case EffectId::kToeOffVelocity: return toeOff;
+    case EffectId::kHipMomentScale: return hipScale;
+    case EffectId::kShankMassScale: return shankScale;
+    default: return false;
+  }
+}
+
+const SwingModelParams& swingParams(const PlantModel& model) { return dynamic_cast<const SwingModel&>(model).params; }
+
+SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect, double gridValue) {
+  requireSwingEffect(effect);
+  SwingModelParams p = params;
+  auto& e = p.effects;
+  switch (effect) {
+    case EffectId::kKneeCoulombFriction:
+      e.coulomb = true;
+      e.knee.coulombMoment = 0;
+      e.knee.coulombSmoothingRate = gridValue;
+      break;
+    case EffectId::kKneeViscousDamping:
+      e.viscous = true;
+      e.knee.viscousDamping = 0;
+      break;
+    case EffectId::kExtensionAssistSpring:
+      e.assist = true;
+      e.knee.assistStiffness = 0;
+      break;
+    case EffectId::kToeOffVelocity:
+      e.toeOff = true;
+      e.toeOffHipRate = e.toeOffKneeRate = 0;
+      break;
+    case EffectId::kHipMomentScale:
+      e.hipScale = true;
+      e.hipMomentScale = 1;
+      break;
+    case EffectId::kShankMassScale:
+      e.shankScale = true;
+      e.shankMassScale = 1;
+      break;
+    default:
+      break;
+  }
+  return p;
+}
+
+KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& params) {
+  // The model's law: its resisting parts scaled, then added effects, its stop, then Tc.
+  const KneeLawSum& model = base.knee.law;
+  KneeLawSum law;
+  for (std::size_t i = 0; i + 1 < model.size(); ++i)
+    law.add(std::make_unique<ScaledKneeLaw>(model.part(i), params.kneeModelScale));
+  if (params.effects.knee.any()) law.add(std::make_unique<KneeAddedEffects>(params.effects.knee));
+  if (model.size() > 0) law.add(model.part(model.size() - 1).clone());
+  KneeModel stopless;  // makeKneeLaw adds the participant's Tc
+  stopless.law = law;
+  return makeKneeLaw(base.participant, stopless);
+}
+
+Participant applyParticipantEffects(const Participant& participant, const SwingEffects& e) {
+  Participant p = participant;
+  if (e.shankScale) {
+    p.shank.mass *= e.shankMassScale;
+    p.shank.inertia *= e.shankMassScale;
+  }
+  if (e.toeOff) {
+    p.initial.hipFlexionRate = e.toeOffHipRate;
+    p.initial.kneeFlexionRate = e.toeOffKneeRate;
+  }
+  if (e.hipScale) {
+    p.hipMoment.flexionAmplitude *= e.hipMomentScale;
+    p.hipMoment.extensionAmplitude *= e.hipMomentScale;
+    for (double& m : p.hipMoment.moments) m *= e.hipMomentScale;
+  }
+  return p;
+}
+
+SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
+                             double hipPose, double kneePose, double tolerance) {
+  const auto& e = params.effects;
+  const Participant participant = applyParticipantEffects(base.participant, e);
+  const LegGeometry geometry = calcLegGeometry(participant, 0.0);
+  HipMomentProfile drive;
+  drive.kind = HipMomentProfile::Kind::kTable;
+  drive.times = record.time;
+  drive.moments = record.hipMoment;
+  if (e.hipScale)
+    for (double& m : drive.moments) m *= e.hipMomentScale;
+  InitialConditions initial;
+  initial.hipFlexion = hipPose;
+  initial.kneeFlexion = kneePose;
+  initial.hipFlexionRate = e.toeOff ? e.toeOffHipRate : 0.0;
+  initial.kneeFlexionRate = e.toeOff ? e.toeOffKneeRate : 0.0;
+  const KneeLawSum law = makeSwingKneeLaw(base, params);
+  const ReferenceSwing swing(geometry, law, drive, participant.hipRange);
+  ReferenceTrajectory tr;
+  try {
+    tr = swing.integrate(initial, record.time, tolerance, tolerance);
+  } catch (const std::runtime_error& ex) {
+    throw RunError(std::string("swing model along ") + record.stem + ": " + ex.what());
+  }
+  return {tr.hipFlexion, tr.kneeFlexion, tr.kneeFlexionRate};
+}
+
+std::vector<std::string> swingPhaseNames() { return {"early flexion", "late extension", "terminal/stop contact"}; }
+
+double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, EffectId effect,
+                          const SwingRecord& record) {
+  requireSwingEffect(effect);
+  SwingModelParams without = truth;
+  auto& e = without.effects;
+  switch (effect) {
+    case EffectId::kKneeCoulombFriction: e.coulomb = false, e.knee.coulombMoment = 0; break;
+    case EffectId::kKneeViscousDamping: e.viscous = false, e.knee.viscousDamping = 0; break;
+    case EffectId::kExtensionAssistSpring: e.assist = false, e.knee.assistStiffness = 0; break;
+    case EffectId::kToeOffVelocity: e.toeOff = false; break;
+    case EffectId::kHipMomentScale: e.hipScale = false; break;
+    case EffectId::kShankMassScale: e.shankScale = false; break;
+    default: break;
+  }
+  const auto& init = base.participant.initial;
+  const auto a = predictSwing(base, truth, record, init.hipFlexion, init.kneeFlexion);
+  const auto b = predictSwing(base, without, record, init.hipFlexion, init.kneeFlexion);
+  double s = 0;
+  for (std::size_t i = 0; i < a.kneeFlexion.size(); ++i) s += std::pow((a.kneeFlexion[i] - b.kneeFlexion[i]) * kRadToDeg, 2);
+  return std::sqrt(s / static_cast<double>(a.kneeFlexion.size()));
+}
+
+namespace {
+
+// ---- The free parameters as one vector ------------------------------------------------
+struct Slot {
+  std::optional<EffectId> effect;  // none: the base model's knee scale
+  double typical;                  // scale of the difference step
+  double reportScale;              // slot value times this = reported value (rad/s -> deg/s)
+  std::function<double&(SwingModelParams&)> ref;
+};
+
+std::vector<Slot> slotsOf(const SwingEffects& e) {
+  std::vector<Slot> s;
+  s.push_back({std::nullopt, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
+  if (e.coulomb)
+    s.push_back({EffectId::kKneeCoulombFriction, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.knee.coulombMoment; }});
+  if (e.viscous)
+    s.push_back({EffectId::kKneeViscousDamping, 0.5, 1.0, [](SwingModelParams& p) -> double& { return p.effects.knee.viscousDamping; }});
+  if (e.assist)
+    s.push_back({EffectId::kExtensionAssistSpring, 5.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.knee.assistStiffness; }});
+  if (e.toeOff) {
+    s.push_back({EffectId::kToeOffVelocity, 1.0, kRadToDeg, [](SwingModelParams& p) -> double& { return p.effects.toeOffHipRate; }});
+    s.push_back({EffectId::kToeOffVelocity, 1.0, kRadToDeg, [](SwingModelParams& p) -> double& { return p.effects.toeOffKneeRate; }});
+  }
+  if (e.hipScale)
+    s.push_back({EffectId::kHipMomentScale, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.hipMomentScale; }});
+  if (e.shankScale)
+    s.push_back({EffectId::kShankMassScale, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.shankMassScale; }});
+  return s;
+}
+
+std::vector<int> phasesOf(const std::vector<double>& knee, double zone) {
+  std::vector<int> ph(knee.size(), 0);
+  const std::size_t peak = static_cast<std::size_t>(std::max_element(knee.begin(), knee.end()) - knee.begin());
+  int current = 0;
+  for (std::size_t i = 0; i < knee.size(); ++i) {
+    if (i > peak && current == 0) current = 1;
+    if (current == 1 && knee[i] < zone) current = 2;
+    ph[i] = current;
+  }
+  return ph;
+}
+
+struct PoseFit {
+  double hip = 0, knee = 0;
+  SwingPrediction prediction;
+};
+
+// The toe-off pose of one record with the model frozen (validation, compare).
+PoseFit fitPose(const SwingBase& base, const SwingModelParams& params, const SwingRecord& r, double tol) {
+  ResidualFunction f = [&](const Eigen::VectorXd& x) {
+    const SwingPrediction p = predictSwing(base, params, r, x[0], x[1], tol);
+    Eigen::VectorXd res(2 * static_cast<Eigen::Index>(r.time.size()));
+    for (std::size_t i = 0; i < r.time.size(); ++i) {
+      res[static_cast<Eigen::Index>(2 * i)] = (r.kneeFlexion[i] - p.kneeFlexion[i]) * kRadToDeg;
+      res[static_cast<Eigen::Index>(2 * i + 1)] = (r.hipFlexion[i] - p.hipFlexion[i]) * kRadToDeg;
+    }
+    return res;
+  };
+  Eigen::VectorXd x0(2), typ(2);
+  x0 << r.hipFlexion.front(), r.kneeFlexion.front();
+  typ << 0.1, 0.1;
+  const LeastSquaresResult lm = solveLevenbergMarquardt(f, x0, typ);
+  PoseFit out;
+  out.hip = lm.x[0];
+  out.knee = lm.x[1];
+  out.prediction = predictSwing(base, params, r, out.hip, out.knee, tol);
+  return out;
+}
+
+double kneeRmse(const SwingRecord& r, const SwingPrediction& p) {
+  double s = 0;
+  for (std::size_t i = 0; i < r.time.size(); ++i) s += std::pow((r.kneeFlexion[i] - p.kneeFlexion[i]) * kRadToDeg, 2);
+  return std::sqrt(s / static_cast<double>(r.time.size()));
+}
+
+}  // namespace
+
+SwingPlant::SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vector<SwingRecord> validate,
+                       double tolerance)
+    : base_(std::move(base)), train_(std::move(train)), validate_(std::move(validate)), tolerance_(tolerance) {
+  if (train_.empty()) throw InputError("diagnose: no training file (train:)");
+}
+
+PlantModelPtr SwingPlant::baseModel() const { return std::make_shared<SwingModel>(SwingModelParams{}); }
+
+PlantFit SwingPlant::fit(const PlantModel& model) const {
+  const SwingModelParams& start = swingParams(model);
+  const std::vector<Slot> slots = slotsOf(start.effects);
+  const Eigen::Index g = static_cast<Eigen::Index>(slots.size());
+  const Eigen::Index n = g + 2 * static_cast<Eigen::Index>(train_.size());
+  Eigen::VectorXd x0(n), typ(n);
+  SwingModelParams p0 = start;
+  for (Eigen::Index k = 0; k < g; ++k) {
+    x0[k] = slots[static_cast<std::size_t>(k)].ref(p0);
+    typ[k] = slots[static_cast<std::size_t>(k)].typical;
+  }
+  for (std::size_t f = 0; f < train_.size(); ++f) {
+    x0[g + 2 * static_cast<Eigen::Index>(f)] = train_[f].hipFlexion.front();
+    x0[g + 2 * static_cast<Eigen::Index>(f) + 1] = train_[f].kneeFlexion.front();
+    typ[g + 2 * static_cast<Eigen::Index>(f)] = typ[g + 2 * static_cast<Eigen::Index>(f) + 1] = 0.1;
+  }
+  auto paramsAt = [&](const Eigen::VectorXd& x) {
+    SwingModelParams p = start;
+    for (Eigen::Index k = 0; k < g; ++k) slots[static_cast<std::size_t>(k)].ref(p) = x[k];
+    return p;
+  };
+  std::size_t rows = 0;
+  for (const auto& r : train_) rows += 2 * r.time.size();
+  ResidualFunction fn = [&](const Eigen::VectorXd& x) {
+    const SwingModelParams p = paramsAt(x);
+    Eigen::VectorXd res(static_cast<Eigen::Index>(rows));
+    Eigen::Index row = 0;
+    for (std::size_t f = 0; f < train_.size(); ++f) {
+      const auto& r = train_[f];
+      const SwingPrediction pr = predictSwing(base_, p, r, x[g + 2 * static_cast<Eigen::Index>(f)],
+                                              x[g + 2 * static_cast<Eigen::Index>(f) + 1], tolerance_);
+      for (std::size_t i = 0; i < r.time.size(); ++i) {
+        res[row++] = (r.kneeFlexion[i] - pr.kneeFlexion[i]) * kRadToDeg;
+        res[row++] = (r.hipFlexion[i] - pr.hipFlexion[i]) * kRadToDeg;
+      }
+    }
+    return res;
+  };
+  const LeastSquaresResult lm = solveLevenbergMarquardt(fn, x0, typ);
+  PlantFit s;
+  const SwingModelParams fitted = paramsAt(lm.x);
+  s.model = std::make_shared<SwingModel>(fitted);
+  s.rss = lm.cost;
+  double kneeRss = 0;
+  std::size_t kneeSamples = 0;
+  Eigen::Index row = 0;
+  for (std::size_t f = 0; f < train_.size(); ++f) {
+    std::vector<double> knee, hip;
+    for (std::size_t i = 0; i < train_[f].time.size(); ++i) {
+      knee.push_back(lm.residual[row++]);
+      hip.push_back(lm.residual[row++]);
+      kneeRss += knee.back() * knee.back();
+    }
+    kneeSamples += knee.size();
+    s.samples += knee.size() + hip.size();
+    // Phases from the fitted model's knee (measured minus residual).
+    std::vector<double> modelKnee;
+    for (std::size_t i = 0; i < knee.size(); ++i) modelKnee.push_back(train_[f].kneeFlexion[i] - knee[i] * kDegToRad);
+    s.trainPhase.push_back(phasesOf(modelKnee, base_.participant.swingEnd.zoneOfStability));
+    s.trainResidual.push_back(knee);
+    s.likelihoodResidual.push_back(knee);
+    s.likelihoodResidual.push_back(hip);
+  }
+  s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
+  // Covariance of the parameters from the Jacobian: s^2 (J'J)^+.
+  const double dofResidual = std::max(1.0, static_cast<double>(rows) - static_cast<double>(n));
+  const Eigen::MatrixXd JtJ = lm.jacobian.transpose() * lm.jacobian;
+  const Eigen::MatrixXd covariance = (lm.cost / dofResidual) * JtJ.completeOrthogonalDecomposition().pseudoInverse();
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    const double se =
+        std::sqrt(std::max(0.0, covariance(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)))) * slots[k].reportScale;
+    if (!slots[k].effect) {
+      s.baseParameters.push_back({"knee_model_scale", fitted.kneeModelScale, se});
+      continue;
+    }
+    auto it = std::find_if(s.effectErrors.begin(), s.effectErrors.end(),
+                           [&](const auto& entry) { return entry.first == *slots[k].effect; });
+    if (it == s.effectErrors.end()) it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
+    it->second.push_back(se);
+  }
+  for (const auto& r : validate_) s.validationRmse.push_back(kneeRmse(r, fitPose(base_, fitted, r, tolerance_).prediction));
+  return s;
+}
+
+std::string SwingPlant::checkApplicable(const PlantModel& model, EffectId effect) const {
+  requireSwingEffect(effect);
+  return swingParams(model).effects.has(effect) ? "already in the model" : "";
+}
+
+PlantModelPtr SwingPlant::addEffect(const PlantModel& model, EffectId effect, double gridValue) const {
+  return std::make_shared<SwingModel>(addSwingEffect(swingParams(model), effect, gridValue));
+}
+
+PlantModelPtr SwingPlant::combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const {
+  SwingModelParams p = swingParams(a);
+  const SwingEffects& f = swingParams(b).effects;
+  auto& e = p.effects;
+  switch (effectOfB) {
+    case EffectId::kKneeCoulombFriction:
+      e.coulomb = true;
+      e.knee.coulombMoment = f.knee.coulombMoment;
+      e.knee.coulombSmoothingRate = f.knee.coulombSmoothingRate;
+      break;
+    case EffectId::kKneeViscousDamping:
+      e.viscous = true;
+      e.knee.viscousDamping = f.knee.viscousDamping;
+      break;
+    case EffectId::kExtensionAssistSpring:
+      e.assist = true;
+      e.knee.assistStiffness = f.knee.assistStiffness;
+      break;
+    case EffectId::kToeOffVelocity:
+      e.toeOff = true;
+      e.toeOffHipRate = f.toeOffHipRate;
+      e.toeOffKneeRate = f.toeOffKneeRate;
+      break;
+    case EffectId::kHipMomentScale:
+      e.hipScale = true;
+      e.hipMomentScale = f.hipMomentScale;
+      break;
+    case EffectId::kShankMassScale:
+      e.shankScale = true;
+      e.shankMassScale = f.shankMassScale;
+      break;
+    default:
+      break;
+  }
+  return std::make_shared<SwingModel>(p);
+}
+
+std::vector<double> SwingPlant::effectValues(const PlantModel& model, EffectId effect) const {
+  const auto& e = swingParams(model).effects;
+  switch (effect) {
+    case EffectId::kKneeCoulombFriction: return {e.knee.coulombMoment, e.knee.coulombSmoothingRate * kRadToDeg};
+    case EffectId::kKneeViscousDamping: return {e.knee.viscousDamping};
+    case EffectId::kExtensionAssistSpring: return {e.knee.assistStiffness};
+    case EffectId::kToeOffVelocity: return {e.toeOffHipRate * kRadToDeg, e.toeOffKneeRate * kRadToDeg};
+    case EffectId::kHipMomentScale: return {e.hipMomentScale};
+    case EffectId::kShankMassScale: return {e.shankMassScale};
+    default: return {};
+  }
+}
+
+bool SwingPlant::checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const {
+  const auto& e = swingParams(model).effects;
+  switch (effect) {
+    case EffectId::kKneeCoulombFriction:
+      note = "friction must oppose knee motion (moment_Nm > 0): " + fmt(e.knee.coulombMoment) + " N m";
+      return e.knee.coulombMoment > 0;
+    case EffectId::kKneeViscousDamping:
+      note = "a passive damper must resist knee motion (> 0): " + fmt(e.knee.viscousDamping) + " N m s/rad";
+      return e.knee.viscousDamping > 0;
+    case EffectId::kExtensionAssistSpring:
+      note = "the spring must pull towards extension (stiffness > 0): " + fmt(e.knee.assistStiffness) + " N m/rad";
+      return e.knee.assistStiffness > 0;
+    case EffectId::kToeOffVelocity:
+      note = "energy released by the foot must flex the knee (knee rate > 0): " + fmt(e.toeOffKneeRate * kRadToDeg) +
+             " deg/s";
+      return e.toeOffKneeRate > 0;
+    case EffectId::kHipMomentScale:
+      note = "a gain error cannot reverse the moment (scale > 0): " + fmt(e.hipMomentScale);
+      return e.hipMomentScale > 0;
+    default:
+      note = "mass must stay positive (scale > 0): " + fmt(e.shankMassScale);
+      return e.shankMassScale > 0;
+  }
+}
+
+Comparison SwingPlant::compare(const PlantModel& model) const {
+  const SwingModelParams& params = swingParams(model);
+  Comparison out;
+  out.quantity = "knee flexion";
+  out.unit = "deg";
+  out.secondaryQuantity = "hip flexion";
+  out.decimals = 2;
+  out.phaseNames = swingPhaseNames();
+  auto run = [&](const SwingRecord& r, bool training) {
+    RecordComparison rc;
+    rc.stem = r.stem;
+    rc.training = training;
+    rc.time = r.time;
+    const PoseFit pf = fitPose(base_, params, r, tolerance_);
+    std::vector<double> measuredHip, predictedHip, knee, rate;
+    for (std::size_t i = 0; i < r.time.size(); ++i) {
+      rc.measured.push_back(r.kneeFlexion[i] * kRadToDeg);
+      rc.predicted.push_back(pf.prediction.kneeFlexion[i] * kRadToDeg);
+      measuredHip.push_back(r.hipFlexion[i] * kRadToDeg);
+      predictedHip.push_back(pf.prediction.hipFlexion[i] * kRadToDeg);
+    }
+    rc.phase = phasesOf(pf.prediction.kneeFlexion, base_.participant.swingEnd.zoneOfStability);
+    rc.secondary = calcErrorMetrics(measuredHip, predictedHip);
+    // The variables are the model's: binning on the measured (noisy) angle would sort the
+    // measurement noise into the end bins near the stop and show a mean residual that is not
+    // there. The acceleration is by central differences of the model rate (one-sided at the
+    // ends); the measured angle is too noisy to differentiate twice.
+    for (double v : pf.prediction.kneeFlexionRate) rate.push_back(v * kRadToDeg);
+    std::vector<double> accel(rate.size(), 0.0);
+    const std::size_t n = std::min(rate.size(), r.time.size());
+    for (std::size_t i = 0; n > 1 && i < n; ++i) {
+      const std::size_t lo = i == 0 ? 0 : i - 1, hi = i + 1 == n ? n - 1 : i + 1;
+      accel[i] = (rate[hi] - rate[lo]) / (r.time[hi] - r.time[lo]);
+    }
+    const std::string band = ", 99 % band (effective sample size)";
+    rc.variables = {{"knee flexion, model (deg)", "mean knee residual vs model knee flexion" + band, rc.predicted},
+                    {"knee flexion rate, model (deg/s)", "mean knee residual vs model knee flexion rate" + band, rate},
+                    {"knee angular acceleration, model (deg/s^2)", "mean knee residual vs model knee acceleration" + band,
+                     accel}};
+    finishRecordComparison(rc, out.phaseNames.size());
+    out.records.push_back(std::move(rc));
+  };
+  for (const auto& r : train_) run(r, true);
+  for (const auto& r : validate_) run(r, false);
+  return out;
+}
+
+std::vector<std::string> SwingPlant::validationStems() const {
+  std::vector<std::string> stems;
+  for (const auto& r : validate_) stems.push_back(r.stem);
+  return stems;
+}
+
+std::string SwingPlant::verify(const PlantModel& model) const {
+  const SwingModelParams& params = swingParams(model);
+  const Participant participant = applyParticipantEffects(base_.participant, params.effects);
+  const KneeLawSum law = makeSwingKneeLaw(base_, params);
+  double worst = 0;
+  for (const auto* records : {&train_, &validate_})
+    for (const auto& r : *records) {
+      const PoseFit pose = fitPose(base_, params, r, tolerance_);
+      SwingSetup setup;
+      setup.participant = participant;
+      setup.participant.hipMoment = {};
+      setup.participant.hipMoment.kind = HipMomentProfile::Kind::kTable;
+      setup.participant.hipMoment.times = r.time;
+      setup.participant.hipMoment.moments = r.hipMoment;
+      if (params.effects.hipScale)
+        for (double& m : setup.participant.hipMoment.moments) m *= params.effects.hipMomentScale;
+      setup.participant.initial.hipFlexion = pose.hip;
+      setup.participant.initial.kneeFlexion = pose.knee;
+      setup.knee = &law;
+      const SwingResult res = simulateSwing(setup, makeSimbodyIntegratorOptions());
+      const auto& tr = res.trajectory;
+      std::size_t j = 0;
+      for (std::size_t i = 0; i < r.time.size(); ++i) {
+        const double t = r.time[i];
+        while (j + 1 < tr.size() && tr.time[j + 1] < t) ++j;
+        if (j + 1 >= tr.size()) break;
+        const double a = (t - tr.time[j]) / (tr.time[j + 1] - tr.time[j]);
+        const double knee = tr.kneeFlexion[j] + a * (tr.kneeFlexion[j + 1] - tr.kneeFlexion[j]);
+        worst = std::max(worst, std::abs(knee - pose.prediction.kneeFlexion[i]) * kRadToDeg);
+      }
+    }
+  return "Simbody check of the final model (simulateSwing vs the reference integrator used for the refits): "
+         "max knee difference " + fmt(worst, "%.2g") + " deg";
+}
+
+}  // namespace swingsim

@@ -1,0 +1,113 @@
+#pragma once
+// The swing of a prosthetic leg as a plant of the diagnosis engine
+// (identify/diagnosis_engine.h): measured hip and knee angles after toe-off, driven by the
+// measured hip moment. The model is a SwingModelParams on a fixed SwingBase (participant and
+// knee model); its free parameters are a scale on the knee model's law, every added effect's
+// parameters and the toe-off pose of each training record (a nuisance, measured with noise).
+// Every refit runs the fast independent reference integrator (swing/reference_swing.h);
+// compared quantity: knee flexion (deg); the likelihood uses hip and knee residuals.
+#include <string>
+#include <vector>
+
+#include "identify/diagnosis_engine.h"
+#include "knee/knee_added_effects.h"
+#include "model/knee_model.h"
+#include "model/leg_parameters.h"
+#include "model/swing_record.h"
+
+namespace swingsim {
+
+/// The swing effects of a model (off = absent).
+struct SwingEffects {
+  bool coulomb = false, viscous = false, assist = false, toeOff = false, hipScale = false, shankScale = false;
+  KneeAddedEffectsParams knee;                   ///< friction, damping, spring values
+  double toeOffHipRate = 0, toeOffKneeRate = 0;  ///< rad/s at toe-off
+  double hipMomentScale = 1;                     ///< multiplies the measured hip moment
+  double shankMassScale = 1;                     ///< multiplies shank mass and inertia
+  /// Whether `effect` (a swing effect of the table) is on.
+  bool has(EffectId effect) const;
+};
+
+/// The swing model: participant + knee model, with its free parameters.
+struct SwingModelParams {
+  /// The base model's free parameter: a scale on the knee model's resisting law (the
+  /// damping table or cylinder; not the stop, not Tc). Burkett's damping table is an
+  /// assumption, so a user rarely knows it; refitted with every candidate.
+  double kneeModelScale = 1.0;
+  SwingEffects effects;
+};
+
+/// A swing model as the engine carries it.
+class SwingModel final : public PlantModel {
+ public:
+  explicit SwingModel(SwingModelParams params) : params(std::move(params)) {}
+  SwingModelParams params;
+};
+/// The parameters inside an engine model of the swing plant.
+const SwingModelParams& swingParams(const PlantModel& model);
+
+/// Everything fixed: the participant (geometry, Tc, hip range, zone of stability) and the
+/// knee model.
+struct SwingBase {
+  Participant participant;
+  KneeModel knee;
+};
+
+/// `params` with `effect` switched on (value 0 or scale 1; `gridValue`: the friction
+/// smoothing, rad/s).
+SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect, double gridValue);
+
+/// Knee law of the model: scaled model law + added effects + stop + participant Tc.
+KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& params);
+/// The participant with the participant-level effects applied (shank mass and inertia,
+/// toe-off rates, hip moment profile amplitude).
+Participant applyParticipantEffects(const Participant& participant, const SwingEffects& effects);
+
+/// Model hip and knee flexion (rad) at the record's times from toe-off pose `hipPose`,
+/// `kneePose` (rad), driven by the record's hip moment. `tolerance`: the reference
+/// integrator's relative and absolute tolerance. Throws RunError if the integration fails.
+struct SwingPrediction {
+  std::vector<double> hipFlexion, kneeFlexion, kneeFlexionRate;
+};
+SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
+                             double hipPose, double kneePose, double tolerance = 1e-8);
+
+/// Phases from the swing events of the model's knee: early flexion (toe-off to peak knee
+/// flexion), late extension (peak to entering the zone of stability), terminal/stop contact.
+std::vector<std::string> swingPhaseNames();
+
+/// Knee flexion RMS (deg) of `effect` in `truth` along a record: truth minus truth without
+/// it, same pose. The "effect size" of a hidden effect.
+double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, EffectId effect,
+                          const SwingRecord& record);
+
+class SwingPlant final : public DiagnosisPlant {
+ public:
+  /// `tolerance`: the reference integrator's relative and absolute tolerance in every refit.
+  SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vector<SwingRecord> validate,
+             double tolerance = 1e-8);
+
+  PlantKind kind() const override { return PlantKind::kSwing; }
+  PlantModelPtr baseModel() const override;
+  PlantFit fit(const PlantModel& model) const override;
+  std::string checkApplicable(const PlantModel& model, EffectId effect) const override;
+  PlantModelPtr addEffect(const PlantModel& model, EffectId effect, double gridValue) const override;
+  PlantModelPtr combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const override;
+  std::vector<double> effectValues(const PlantModel& model, EffectId effect) const override;
+  bool checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const override;
+  std::vector<std::string> phaseNames(const PlantModel&) const override { return swingPhaseNames(); }
+  Comparison compare(const PlantModel& model) const override;
+  std::vector<std::string> validationStems() const override;
+  /// The model once more with Simbody (simulateSwing) along every record at its fitted pose:
+  /// the largest knee difference to the reference integrator the refits used.
+  std::string verify(const PlantModel& model) const override;
+
+  const SwingBase& base() const { return base_; }
+
+ private:
+  SwingBase base_;
+  std::vector<SwingRecord> train_, validate_;
+  double tolerance_;
+};
+
+}  // namespace swingsim

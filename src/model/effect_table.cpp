@@ -1,0 +1,105 @@
+#include "model/effect_table.h"
+
+#include <stdexcept>
+
+#include "core/units.h"
+
+namespace swingsim {
+
+const std::vector<EffectDescriptor>& effectTable() {
+  using P = PlantKind;
+  static const std::vector<EffectDescriptor> table = {
+      // ---- Cylinder bench --------------------------------------------------------------
+      {EffectId::kCoulombFriction, P::kCylinder, "coulomb_friction",
+       "a seal friction force of constant size that always opposes the piston's motion",
+       "Chien 2014 tried a Coulomb term opposing motion (it made their fit worse)",
+       "records at several speeds (its size does not grow with speed)",
+       {"force_N", "width_m_per_s"}, 1,
+       // tanh width Fc tanh(xd / w), m/s
+       {0.002, 0.005, 0.01, 0.02, 0.05}, 1.0, false},
+      {EffectId::kOrificeQuadratic, P::kCylinder, "orifice_quadratic",
+       "extra resistance growing with the square of piston speed: turbulent flow through the orifices",
+       "Chien 2014: slow gait fits worst, likely non-linear flow through cylinder, orifices and valve",
+       "records at clearly different speeds (slow and fast walking)",
+       {"coefficient_Ns2_per_m2"}, 1, {}, 1.0, false},
+      {EffectId::kInertia, P::kCylinder, "inertia",
+       "a force proportional to piston acceleration: the moving mass of piston, rod and oil",
+       "Chien 2014 tried an acceleration term (it did not help on their data)",
+       "records with different frequency content (another cadence or a sine sweep)",
+       {"mass_kg"}, 1, {}, 1.0, false},
+      {EffectId::kPositionDependentDamping, P::kCylinder, "position_dependent_damping",
+       "damping that changes along the stroke (metering grooves, valve opening with position)",
+       "Chien 2014's phases have constant damping; the valve geometry varies along the stroke",
+       "records with different knee-angle amplitudes",
+       {"coefficient_Ns_per_m2"}, 1, {}, 1.0, false},
+      {EffectId::kHyperextensionPhase, P::kCylinder, "hyperextension_phase",
+       "a separate force law while the piston is hyperextended (Chien's 4th phase)",
+       "Chien 2014 Eq. 11: the 4-phase model adds hyperextension to the 2-phase model",
+       "records with longer or deeper hyperextension",
+       {"f_N", "k_N_per_m", "c_Ns_per_m"}, 3, {}, 1.0, false},
+      {EffectId::kSwitchDelay, P::kCylinder, "switch_delay",
+       "the valve latch (balance wheel) needs time to turn: swing flexion starts partly with stance resistance",
+       "Chien 2014 discussion: the balance-wheel release timing (about 0.1 s) is not reproduced by fast switches",
+       "records with longer hyperextension holds (a slow latch completes given time)",
+       {"time_constant_s"}, 0,
+       // latch time constant 1/k, s (Chien 2014: the balance-wheel delay is "about 0.1 s")
+       {0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1}, 1.0, false},
+      // ---- Swing -------------------------------------------------------------------------
+      {EffectId::kKneeCoulombFriction, P::kSwing, "knee_coulomb_friction",
+       "a friction moment of constant size that opposes knee motion over the whole range (not only below 4 deg like Tc)",
+       "Burkett 2004 applies friction Tc only near extension; bearings and seals rub everywhere",
+       "swings at several speeds (friction does not grow with knee speed)",
+       {"moment_Nm", "smoothing_deg_s"}, 1,
+       // tanh smoothing rate of the friction, rad/s (reported in deg/s)
+       {0.5, 1.0, 2.0, 5.0}, kRadToDeg, false},
+      {EffectId::kKneeViscousDamping, P::kSwing, "knee_viscous_damping",
+       "extra knee damping proportional to knee speed (a stiffer hydraulic setting than the model's)",
+       "swing-phase control knees resist in proportion to speed; the damping table is an assumption",
+       "swings at several speeds (damping grows with knee speed)",
+       {"damping_Nm_s_per_rad"}, 1, {}, 1.0, false},
+      {EffectId::kExtensionAssistSpring, P::kSwing, "extension_assist_spring",
+       "a spring that pulls the knee towards extension, as many prosthetic knees have",
+       "extension assist springs are a common prosthetic knee feature, absent from the model",
+       "swings with different peak knee flexion (the spring grows with the angle)",
+       {"stiffness_Nm_per_rad"}, 1, {}, 1.0, false},
+      {EffectId::kToeOffVelocity, P::kSwing, "toe_off_velocity",
+       "the hip and knee already move at toe-off: energy released by the prosthetic foot",
+       "Burkett 2004 assumed zero velocities at toe-off and names the foot's energy as future work",
+       "swings with different initial conditions, or a measured toe-off velocity",
+       {"hip_rate_deg_s", "knee_rate_deg_s"}, 2, {}, 1.0, true},
+      {EffectId::kHipMomentScale, P::kSwing, "hip_moment_scale",
+       "the hip moment that really drives the swing is larger or smaller than the measured one (calibration)",
+       "the hip moment comes from a dynamometer or inverse dynamics, both with gain errors",
+       "a measured hip moment with independent calibration, or swings with different hip effort",
+       {"scale"}, 1, {}, 1.0, true},
+      {EffectId::kShankMassScale, P::kSwing, "shank_mass_scale",
+       "the shank is heavier or lighter than the model's (mass and inertia scaled together)",
+       "segment masses come from a table (Burkett 2004 Table 2) and change with the prosthesis build",
+       "weighing the shank, or swings with an added mass (Bach 1994)",
+       {"scale"}, 1, {}, 1.0, true},
+  };
+  return table;
+}
+
+const EffectDescriptor& describeEffect(EffectId id) {
+  for (const auto& e : effectTable())
+    if (e.id == id) return e;
+  throw std::logic_error("effect missing from the effect table");
+}
+
+std::vector<std::string> effectNames(PlantKind plant) {
+  std::vector<std::string> names;
+  for (const auto& e : effectTable())
+    if (e.plant == plant) names.push_back(e.name);
+  return names;
+}
+
+const EffectDescriptor* findEffect(PlantKind plant, const std::string& name) {
+  for (const auto& e : effectTable())
+    if (e.plant == plant && e.name == name) return &e;
+  return nullptr;
+}
+
+std::string plantName(PlantKind plant) { return plant == PlantKind::kCylinder ? "cylinder" : "swing"; }
+
+}  // namespace swingsim

@@ -1,0 +1,69 @@
+#pragma once
+// The library of candidate physical effects that `swingsim diagnose` can add to a model:
+// one descriptor per effect, in one table (effect_table.cpp). A descriptor says which plant
+// the effect belongs to, its parameters with units, the profiled grid of its non-linear
+// parameter, and the sentences the report prints. The law an effect adds lives with its plant
+// (identify/cylinder_plant.cpp, identify/swing_plant.cpp); everything else (CLI, report,
+// JSON, study YAML) reads this table. Adding an effect: one entry here, its law, its test.
+#include <string>
+#include <vector>
+
+namespace swingsim {
+
+/// The kinds of model the diagnosis runs on.
+enum class PlantKind {
+  kCylinder,  ///< the Mauch hydraulic cylinder on a bench (force vs piston motion)
+  kSwing,     ///< the swing of a prosthetic leg (knee and hip angles vs time)
+};
+
+/// Every effect of the library.
+enum class EffectId {
+  // Cylinder bench (Chien 2014 and its discussion).
+  kCoulombFriction,
+  kOrificeQuadratic,
+  kInertia,
+  kPositionDependentDamping,
+  kHyperextensionPhase,
+  kSwitchDelay,
+  // Swing (Burkett 2004 and its assumptions).
+  kKneeCoulombFriction,
+  kKneeViscousDamping,
+  kExtensionAssistSpring,
+  kToeOffVelocity,
+  kHipMomentScale,
+  kShankMassScale,
+};
+
+/// One candidate effect.
+struct EffectDescriptor {
+  EffectId id;
+  PlantKind plant;
+  std::string name;         ///< key in study YAML, reports and JSON: "coulomb_friction"
+  std::string sentence;     ///< what it is, for a user
+  std::string mechanism;    ///< where it comes from (paper, or the assumption it relaxes)
+  std::string separatedBy;  ///< data that tell it apart from the others
+  /// Reported parameters, each name with its unit ("force_N"): the continuously fitted ones
+  /// first, then the profiled grid parameter if the effect has one.
+  std::vector<std::string> parameters;
+  int fittedParameters = 0;  ///< continuously fitted parameters (the first ones above)
+  /// Values of the non-linear parameter, fixed before any data are seen and profiled (best
+  /// training fit); SI units. Empty: no grid parameter.
+  std::vector<double> grid;
+  double gridReportScale = 1.0;  ///< a grid value times this is its reported value
+  bool participantLevel = false;  ///< saved into the participant, not the knee model
+  /// Parameters the likelihood-ratio test counts: the fitted ones, plus one for a grid.
+  int degreesOfFreedom() const { return fittedParameters + (grid.empty() ? 0 : 1); }
+};
+
+/// The whole library, cylinder effects first, in a fixed order.
+const std::vector<EffectDescriptor>& effectTable();
+/// The descriptor of an effect.
+const EffectDescriptor& describeEffect(EffectId id);
+/// Names of the effects of one plant, in table order.
+std::vector<std::string> effectNames(PlantKind plant);
+/// The effect of `plant` called `name`; nullptr if there is none.
+const EffectDescriptor* findEffect(PlantKind plant, const std::string& name);
+/// Short name of a plant for messages and JSON: "cylinder", "swing".
+std::string plantName(PlantKind plant);
+
+}  // namespace swingsim
