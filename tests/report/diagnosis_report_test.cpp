@@ -7,6 +7,7 @@
 #include "identify/synthetic_swing.h"
 #include "io/participant_loader.h"
 #include "report/diagnosis_report.h"
+#include "study/diagnosis_study.h"
 
 namespace swingsim {
 namespace {
@@ -52,6 +53,40 @@ TEST(SwingResidualPlot, FivePanelsWithTitlesAxisUnitsAndSwingPhaseBands) {
   // Every swing phase of the model's knee is shaded and named in the legend.
   for (const auto& name : swingPhaseNames()) EXPECT_NE(svg.find(name), std::string::npos) << name;
   EXPECT_NE(svg.find("99 % band"), std::string::npos);
+}
+
+// One schema for both plants: the cylinder and the swing demo diagnoses write the same
+// top-level keys, each candidate the same keys, and the plant and unit say which is which.
+TEST(DiagnosisJson, CylinderAndSwingShareOneSchema) {
+  std::vector<nlohmann::json> docs;
+  for (const char* file : {"/studies/diagnose-demo-cylinder.yaml", "/studies/diagnose-demo-swing.yaml"}) {
+    const DiagnosisStudy study = loadDiagnosisStudy(kRoot + file);
+    const auto plant = loadDiagnosisPlant(study, 8);
+    const Diagnosis dg = runDiagnosis(*plant, study.settings);
+    docs.push_back(makeDiagnosisJson(dg, plant->compare(*dg.baseline.model), plant->compare(*dg.final.model)));
+  }
+  auto keys = [](const nlohmann::json& j) {
+    std::vector<std::string> k;
+    for (const auto& item : j.items()) k.push_back(item.key());
+    return k;
+  };
+  EXPECT_EQ(keys(docs[0]), keys(docs[1]));
+  EXPECT_EQ(docs[0]["plant"], "cylinder");
+  EXPECT_EQ(docs[0]["unit"], "N");
+  EXPECT_EQ(docs[1]["plant"], "swing");
+  EXPECT_EQ(docs[1]["unit"], "deg");
+  // A scored candidate carries the same keys in both (the first applicable one of step 1).
+  auto firstScored = [](const nlohmann::json& j) {
+    for (const auto& c : j["candidates"])
+      if (!c.contains("not_applicable")) return c;
+    return nlohmann::json();
+  };
+  EXPECT_EQ(keys(firstScored(docs[0])), keys(firstScored(docs[1])));
+  // The demos' hidden effects (docs/diagnosis.md): named, and the base scale of the swing reported.
+  EXPECT_EQ(docs[0]["accepted"], nlohmann::json({"orifice_quadratic"}));
+  EXPECT_EQ(docs[1]["accepted"], nlohmann::json({"extension_assist_spring"}));
+  EXPECT_TRUE(docs[1]["final_parameters"]["values"].contains("knee_model_scale"));
+  EXPECT_TRUE(docs[0]["final_parameters"]["values"].empty());
 }
 
 }  // namespace
