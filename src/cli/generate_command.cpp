@@ -1,5 +1,5 @@
 // swingsim generate STUDY.yaml: synthetic measurement data from a model. The study's
-// `kind:` selects the generator; each kind has one function here (issue 5 adds more).
+// `kind:` selects the generator; each kind has one function here.
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -26,7 +26,7 @@ int generateCylinderBench(YamlMap& yaml, const Arguments& args) {
   yaml.finish();
   if (args.has("--out")) study.outputDir = args.get("--out");
   MauchCylinderParams truthParams = loadMauchCylinder(study.modelPath);
-  // Hidden effects (issue 5): the truth gets them, the fitted models do not know.
+  // Hidden effects: the truth gets them, the fitted models do not know.
   truthParams.effects = study.hiddenEffects;
   if (study.hiddenLatchTimeConstant > 0) truthParams.switches.latchRate = 1.0 / study.hiddenLatchTimeConstant;
   MauchCylinder truth = [&] {

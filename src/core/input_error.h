@@ -1,6 +1,6 @@
 #pragma once
 // The one error type for anything a user can get wrong in a file or on the command line.
-// Messages follow `file:line: key: what is wrong (got VALUE)` (design.md conventions).
+// Messages follow `file:line: key: what is wrong (got VALUE)`.
 #include <stdexcept>
 #include <string>
 

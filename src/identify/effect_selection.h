@@ -1,6 +1,6 @@
 #pragma once
-// The statistics of `swingsim diagnose` shared by every model kind (issue 5,
-// docs/diagnosis.md): the likelihood-ratio test on an effective sample size, BIC, the
+// The statistics of `swingsim diagnose` shared by every plant
+// (docs/diagnosis.md): the likelihood-ratio test on an effective sample size, BIC, the
 // Bonferroni-corrected acceptance rule with held-out margin and sign rule, the choice of the
 // best accepted candidate, ambiguity advice and parameter intervals. The cylinder and the
 // swing diagnoses differ only in how a candidate model is fitted and run.

@@ -1,7 +1,7 @@
 #pragma once
 // Synthetic cylinder bench records, exactly as `swingsim generate` (kind: cylinder-bench)
 // makes them: bench profile (docs/mauch.md), the shared velocity estimate, the truth
-// model's force (which may carry hidden effects, issue 5) and seeded white noise.
+// model's force (which may carry hidden effects) and seeded white noise.
 #include <cstdint>
 #include <string>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Synthetic measured swings, exactly as `swingsim generate` (kind: swing-kinematics) makes
-// them (issue 5): the Simbody swing (simulateSwing) of a truth model that may carry hidden
+// them: the Simbody swing (simulateSwing) of a truth model that may carry hidden
 // effects, sampled from toe-off to the swing end plus the bounce window, with seeded white
 // noise on the hip and knee angles. The recorded hip moment is the participant's profile
 // WITHOUT the hidden hip_moment_scale (that is what "measured" means for that effect).

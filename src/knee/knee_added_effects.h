@@ -1,5 +1,5 @@
 #pragma once
-// Knee moments the swing diagnosis (issue 5, docs/diagnosis.md) can add to a knee model:
+// Knee moments the swing diagnosis (docs/diagnosis.md) can add to a knee model:
 // Coulomb friction over the whole range (beyond the knee unit's Tc below 4 deg), extra
 // viscous damping, and an extension-assist spring. Read from a knee model's
 // `knee_effects:` block, so an augmented model runs in `swingsim simulate --knee`.

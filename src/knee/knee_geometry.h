@@ -2,7 +2,7 @@
 // Mauch knee geometry (Chien 2014 Eq. 1): how the hydraulic cylinder's length bc follows
 // the knee flexion angle, and the piston position x the cylinder laws use.
 //
-// Conventions (design.md): knee flexion theta in rad, positive in flexion, negative in
+// Conventions: knee flexion theta in rad, positive in flexion, negative in
 // hyperextension. Piston position x = bc(0) - bc(theta) in m: x = 0 at full extension,
 // x > 0 in flexion (the cylinder shortens), x < 0 in hyperextension; xd > 0 while flexing.
 //

@@ -1,7 +1,7 @@
 #pragma once
 // The one interface every knee law implements: the damping table, knee friction, the
 // hyperextension stop and the Mauch hydraulic cylinder. Pure C++: no Simbody here, so
-// every law can be unit-tested and fitted on its own (design.md, layer knee/).
+// every law can be unit-tested and fitted on its own (docs/architecture.md, layer knee/).
 #include <memory>
 #include <string>
 #include <vector>

@@ -32,7 +32,7 @@ struct CylinderBenchStudy {
   double noise = 0;             ///< force noise standard deviation, N
   std::uint64_t seed = 1;       ///< condition i uses seed + i
   std::string outputDir;        ///< where the CSVs go (absolute, resolved)
-  /// Optional `hidden_effects:` (issue 5): effects added to the truth model, in the model
+  /// Optional `hidden_effects:`: effects added to the truth model, in the model
   /// YAML's `effects:` format, plus `switch_delay: {time_constant_s}` (the S2 latch 1/k).
   MauchAddedEffects hiddenEffects;
   double hiddenLatchTimeConstant = 0;  ///< s; 0 = the model's own latch rate

@@ -3,7 +3,7 @@
 namespace swingsim {
 
 const std::vector<PublishedParticipant>& publishedParticipants() {
-  // Burkett 2004 Table 3 and Table 4 (papers.md section 1).
+  // Burkett 2004 Table 3 and Table 4.
   static const std::vector<PublishedParticipant> rows = {
       {"P1", 0.420, 0.463, 0.031, 0.100,
        {{0.000, 0.463, 0.420, 0.499}, {0.050, 0.423, 0.405, 0.462}, {0.100, 0.410, 0.375, 0.419}, {0.150, 0.418, 0.465, 0.452}}},

@@ -1,5 +1,5 @@
 #pragma once
-// Calibration of the one free hip-moment parameter per participant (design.md,
+// Calibration of the one free hip-moment parameter per participant (README "Assumptions",
 // "Calibration"): the profile's time scale, chosen so the standard-location swing time equals a
 // target (Burkett Table 3's model prediction).
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// An independent reference for the Simbody swing (issue 2, Verification 4): the thigh and
+// An independent reference for the Simbody swing: the thigh and
 // the rigid shank+foot(+added mass) as a 2-DOF planar double pendulum whose equations of
 // motion are derived by hand (Lagrange, see reference_swing.cpp), integrated by our own
 // Dormand-Prince RK5(4) (dormand_prince.h). No Simbody anywhere in this unit: it shares

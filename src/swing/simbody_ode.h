@@ -3,7 +3,7 @@
 // each derivative evaluation writes t and y into one State, realizes it to Acceleration
 // and reads (qdot, udot, zdot) back. This lets our Dormand-Prince 5(4) step the Simbody
 // leg with no State copies and no per-step bookkeeping beyond its six realizations
-// (issue 7: Simbody's own integrators spend about as much again per step on State copies,
+// (Simbody's own integrators spend about as much again per step on State copies,
 // projection and error norms as they spend realizing). Valid for systems without
 // constraints (the leg has none): nothing is projected.
 #include <Simbody.h>
