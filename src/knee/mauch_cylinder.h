@@ -6,7 +6,7 @@
 // Readings of the paper's ambiguous lines (docs/mauch.md says why):
 // - x0 is split: a velocity width (m/s) in S1 and a position width (m) in Eq. 6 and S8.
 //   Defaults read the published x0 = 0.05 in the unit of xhy (0.005 cm): 0.05 cm(/s).
-// - x > 0 in flexion (README, conventions), so S1 = 1 while flexing and S4 selects stance flexion.
+// - x > 0 in flexion (docs/mauch.md), so S1 = 1 while flexing and S4 selects stance flexion.
 // - Phase gates follow the paper's phase descriptions and Table 1 (not Eqs. 9-10 as
 //   printed): phase 2 "flexion at end stance and early swing" is gated by S1 S2 S8, and
 //   phase 3 "extension" by (1 - S1) S8.
