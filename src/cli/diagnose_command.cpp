@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli/command_registry.h"
+#include "core/input_error.h"
 #include "core/output_files.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosed_model_writer.h"
@@ -44,6 +45,8 @@ int runDiagnose(const std::vector<std::string>& argv) {
   writeFileAtomic(outDir + "/report.md", md);
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
   if (args.has("--json")) writeFileAtomic(args.get("--json"), makeDiagnosisJson(dg, before, after).dump(2) + "\n");
+  if (args.has("--save-model") && !dg.explained)
+    throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict + ")");
   if (args.has("--save-model")) {
     const auto written = saveDiagnosedModel(study, *plant, dg, args.get("--save-model"), command);
     for (const auto& p : written) std::printf("model: %s\n", p.c_str());

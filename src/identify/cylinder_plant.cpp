@@ -313,4 +313,11 @@ std::vector<std::string> CylinderPlant::validationStems() const {
   return stems;
 }
 
+std::vector<NoiseEstimate> CylinderPlant::estimateRecordNoise() const {
+  std::vector<NoiseEstimate> out;
+  for (const auto* records : {&train_, &validate_})
+    for (const auto& d : *records) out.push_back(estimateNoise(d.time, d.force));
+  return out;
+}
+
 }  // namespace swingsim

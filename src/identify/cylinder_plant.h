@@ -52,6 +52,8 @@ class CylinderPlant final : public DiagnosisPlant {
   std::vector<std::string> phaseNames(const PlantModel& model) const override;
   Comparison compare(const PlantModel& model) const override;
   std::vector<std::string> validationStems() const override;
+  /// Noise of the measured force of every record (N).
+  std::vector<NoiseEstimate> estimateRecordNoise() const override;
   std::vector<std::string> warnings() const override { return warnings_; }
 
  private:

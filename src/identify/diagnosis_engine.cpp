@@ -14,6 +14,12 @@ namespace {
 // chi^2(1) 95 % quantile, for the profile-likelihood interval of a grid parameter.
 constexpr double kChi2One95 = 3.841458820694124;
 
+std::string fmtRatio(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
 std::string fmtPercent(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.0f", v);
@@ -129,6 +135,68 @@ std::vector<EffectId> resolveEffects(PlantKind plant, const std::vector<std::str
   return ids;
 }
 
+// The verdict: is what remains measurement noise? Noise per record from the study or the
+// data; every held-out RMSE within the ratio of its record's noise, and a white residual.
+void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& settings, Diagnosis& out) {
+  const std::vector<NoiseEstimate> estimates = plant.estimateRecordNoise();
+  out.pooledNoise = poolNoise(estimates);
+  out.noiseSource = settings.measurementNoise > 0 ? "set in the study" : "estimated from the data";
+  for (const auto& e : estimates) out.recordNoise.push_back(settings.measurementNoise > 0 ? settings.measurementNoise : e.sigma);
+  const std::vector<std::string> stems = plant.validationStems();
+  const std::size_t firstValidation = out.recordNoise.size() - stems.size();
+  std::string worstStem;
+  double worstRatio = 0;
+  for (std::size_t v = 0; v < stems.size() && v < out.final.validationRmse.size(); ++v) {
+    const double noise = out.recordNoise[firstValidation + v];
+    const double ratio = noise > 0 ? out.final.validationRmse[v] / noise : std::numeric_limits<double>::infinity();
+    if (ratio > worstRatio) {
+      worstRatio = ratio;
+      worstStem = stems[v];
+    }
+  }
+  const bool atNoise = worstRatio <= settings.explainedNoiseRatio;
+  out.explained = atNoise && out.finalResidualWhite;
+  if (out.explained) {
+    out.verdict = "explained: every held-out error is within " + fmtRatio(settings.explainedNoiseRatio) +
+                  " x the measurement noise (worst " + worstStem + ", " + fmtRatio(worstRatio) +
+                  " x) and the final residual is white";
+    return;
+  }
+  // Where the remaining error sits, in phases and in the state space.
+  const double nEffRatio = calcEffectiveSampleSize(out.final.likelihoodResidual) / static_cast<double>(out.final.samples);
+  Comparison training = plant.compare(*out.final.model);
+  training.records.erase(std::remove_if(training.records.begin(), training.records.end(),
+                                        [](const RecordComparison& r) { return !r.training; }),
+                         training.records.end());
+  out.structureNote = describeResidualStructure(training, nEffRatio);
+  std::string tried, closest;
+  double closestRmse = std::numeric_limits<double>::infinity();
+  if (!out.steps.empty()) {
+    for (const auto& c : out.steps.back().candidates) {
+      if (!c.notApplicable.empty()) continue;
+      tried += (tried.empty() ? "" : ", ") + c.effect;
+      double worst = 0;
+      for (double v : c.validationRmse) worst = std::max(worst, v);
+      if (worst < closestRmse) {
+        closestRmse = worst;
+        closest = c.effect;
+      }
+    }
+  }
+  out.verdict = "NOT explained: ";
+  if (!atNoise)
+    out.verdict += "the held-out error on " + worstStem + " is " + fmtRatio(worstRatio) + " x the measurement noise (" +
+                   std::string(settings.measurementNoise > 0 ? "set in the study" : "estimated from the data") +
+                   "; limit " + fmtRatio(settings.explainedNoiseRatio) + " x)";
+  if (!atNoise && !out.finalResidualWhite) out.verdict += ", and ";
+  if (!out.finalResidualWhite) out.verdict += "the final residual is not white";
+  out.verdict += ". What remains: " + out.structureNote + ".";
+  if (!tried.empty())
+    out.verdict += " Tried on top of the final model: " + tried + "; the closest, " + closest +
+                   ", left a held-out error of " + fmtRatio(closestRmse) + " (largest over the held-out records).";
+  out.verdict += " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";
+}
+
 }  // namespace
 
 Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings) {
@@ -164,6 +232,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
       break;
     }
     const auto chosen = static_cast<std::size_t>(step.chosen);
+    step.candidates[chosen].added = true;
     step.group = findAmbiguityGroup(scores, names, chosen, settings.alpha, [&](std::size_t j) -> std::optional<double> {
       PlantFit joint;
       try {
@@ -185,14 +254,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
   out.finalParameters = baseIntervals(current);
   out.finalWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
   out.finalResidualWhite = out.finalWhiteness.pValue >= settings.alpha;
-  if (!out.finalResidualWhite) {
-    const double ratio = calcEffectiveSampleSize(current.likelihoodResidual) / static_cast<double>(current.samples);
-    Comparison training = plant.compare(*current.model);
-    training.records.erase(std::remove_if(training.records.begin(), training.records.end(),
-                                          [](const RecordComparison& r) { return !r.training; }),
-                           training.records.end());
-    out.structureNote = describeResidualStructure(training, ratio);
-  }
+  judgeExplained(plant, settings, out);
   return out;
 }
 

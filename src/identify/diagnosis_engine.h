@@ -12,6 +12,7 @@
 #include "identify/comparison.h"
 #include "identify/effect_selection.h"
 #include "model/effect_table.h"
+#include "numerics/noise_estimate.h"
 #include "numerics/residual_analysis.h"
 
 namespace swingsim {
@@ -75,6 +76,9 @@ class DiagnosisPlant {
   virtual Comparison compare(const PlantModel& model) const = 0;
   /// Stems of the held-out records, in order.
   virtual std::vector<std::string> validationStems() const = 0;
+  /// Measurement noise of the compared quantity in every record (training first),
+  /// estimated from the measured signal alone.
+  virtual std::vector<NoiseEstimate> estimateRecordNoise() const = 0;
   /// Warnings of the base fit (e.g. a switch constant at the edge of its range).
   virtual std::vector<std::string> warnings() const { return {}; }
   /// An independent check of a fitted model, one line for the report ("" if the plant has
@@ -86,6 +90,7 @@ class DiagnosisPlant {
 /// One candidate scored on top of the current model.
 struct CandidateScore : EffectScore {
   EffectId id{};
+  bool added = false;   ///< passed the rule and was the one added to the model in its step
   PlantModelPtr model;  ///< current model + the effect, every parameter refitted
 };
 
@@ -110,8 +115,18 @@ struct Diagnosis {
   std::vector<std::string> ambiguityAdvice;  ///< one per ambiguous group
   WhitenessTest baselineWhiteness, finalWhiteness;
   bool finalResidualWhite = true;
-  std::string structureNote;  ///< where the remaining structure is, if not white
+  std::string structureNote;  ///< where the remaining structure is, if not explained
   std::vector<std::string> warnings;
+  /// The noise each record's held-out error is judged against (unit of the data), and where
+  /// it comes from ("estimated from the data" or "set in the study").
+  std::vector<double> recordNoise;
+  NoiseEstimate pooledNoise;
+  std::string noiseSource;
+  /// Whether the final model explains the data: every held-out RMSE within
+  /// explainedNoiseRatio x its record's noise and a white final residual. If not, `verdict`
+  /// says in words what remains, what was tried and how close the best candidate came.
+  bool explained = false;
+  std::string verdict;
 };
 
 /// Forward stepwise diagnosis with the acceptance rule of `settings`. Throws InputError for

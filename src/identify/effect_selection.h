@@ -23,6 +23,12 @@ struct EffectSelectionSettings {
   int maxEffects = 4;                   ///< forward stepwise stops after this many
   std::vector<std::string> candidates;  ///< empty: the whole library
   int whitenessLags = 20;               ///< Ljung-Box lags for the final residual
+  /// Measurement noise standard deviation in the unit of the compared quantity (N, deg);
+  /// 0: estimated from each record (numerics/noise_estimate.h).
+  double measurementNoise = 0;
+  /// The data count as explained when every held-out RMSE is at most this many times the
+  /// noise and the final residual is white.
+  double explainedNoiseRatio = 1.2;
 };
 
 /// A parameter of an effect with its 95 % confidence interval.

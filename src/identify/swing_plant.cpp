@@ -505,4 +505,15 @@ std::string SwingPlant::verify(const PlantModel& model) const {
          "max knee difference " + fmt(worst, "%.2g") + " deg";
 }
 
+std::vector<NoiseEstimate> SwingPlant::estimateRecordNoise() const {
+  std::vector<NoiseEstimate> out;
+  for (const auto* records : {&train_, &validate_})
+    for (const auto& r : *records) {
+      std::vector<double> kneeDeg;
+      for (double v : r.kneeFlexion) kneeDeg.push_back(v * kRadToDeg);
+      out.push_back(estimateNoise(r.time, kneeDeg));
+    }
+  return out;
+}
+
 }  // namespace swingsim

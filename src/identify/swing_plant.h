@@ -98,6 +98,8 @@ class SwingPlant final : public DiagnosisPlant {
   std::vector<std::string> phaseNames(const PlantModel&) const override { return swingPhaseNames(); }
   Comparison compare(const PlantModel& model) const override;
   std::vector<std::string> validationStems() const override;
+  /// Noise of the measured knee flexion of every record (deg).
+  std::vector<NoiseEstimate> estimateRecordNoise() const override;
   /// The model once more with Simbody (simulateSwing) along every record at its fitted pose:
   /// the largest knee difference to the reference integrator the refits used.
   std::string verify(const PlantModel& model) const override;

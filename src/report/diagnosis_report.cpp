@@ -55,7 +55,9 @@ nlohmann::json parametersJson(const std::vector<EffectParameter>& parameters) {
 }
 
 nlohmann::json candidateJson(const CandidateScore& c, int step, const std::vector<std::string>& stems) {
-  nlohmann::json j = {{"effect", c.effect}, {"step", step}, {"accepted", c.accepted}};
+  // "passes_rule": the candidate met every part of the acceptance rule; "added": it was the
+  // one added to the model in its step (the best of those that passed).
+  nlohmann::json j = {{"effect", c.effect}, {"step", step}, {"passes_rule", c.accepted}, {"added", c.added}};
   if (!c.notApplicable.empty()) {
     j["not_applicable"] = c.notApplicable;
     return j;
@@ -77,6 +79,13 @@ nlohmann::json candidateJson(const CandidateScore& c, int step, const std::vecto
   j["physical_sign"] = c.physical;
   j["where"] = c.where;
   return j;
+}
+
+nlohmann::json noiseJson(const Diagnosis& dg, const Comparison& before) {
+  nlohmann::json records = nlohmann::json::object();
+  for (std::size_t i = 0; i < before.records.size() && i < dg.recordNoise.size(); ++i)
+    records[before.records[i].stem] = dg.recordNoise[i];
+  return {{"source", dg.noiseSource}, {"pooled_estimate", dg.pooledNoise.sigma}, {"records", records}};
 }
 
 const std::string kPhaseColors[] = {"#D55E00", "#009E73", "#56B4E9", "#CC79A7", "#E69F00"};
@@ -300,12 +309,10 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g, %d lags outside the 99 %% band: ",
              dg.finalWhiteness.q, dg.finalWhiteness.lags, dg.finalWhiteness.pValue, dg.finalWhiteness.lagsOutsideBand);
   out += dg.finalResidualWhite ? "consistent with white noise\n" : "NOT white\n";
-  if (!dg.finalResidualWhite) {
-    out += std::string(dg.accepted.empty() ? "No candidate effect passes the acceptance rule, but the residual is not white: "
-                                           : "The residual is still not white: ") +
-           "the model misses something the library does not name (or the data cannot support). " + dg.structureNote +
-           ". No effect is claimed for it.\n";
-  }
+  out += "measurement noise (" + dg.noiseSource + "):";
+  for (std::size_t i = 0; i < before.records.size() && i < dg.recordNoise.size(); ++i)
+    out += fmt(" %s %.*f %s", before.records[i].stem.c_str(), d + 1, dg.recordNoise[i], u.c_str());
+  out += "\nverdict: " + dg.verdict + "\n";
   return out;
 }
 
@@ -328,6 +335,9 @@ nlohmann::json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, 
           {"final", summaryJson(after)},
           {"final_parameters", parametersJson(dg.finalParameters)},
           {"residual_white", dg.finalResidualWhite},
+          {"noise", noiseJson(dg, before)},
+          {"explained", dg.explained},
+          {"verdict", dg.verdict},
           {"structure", dg.structureNote},
           {"warnings", dg.warnings}};
 }

@@ -50,6 +50,10 @@ void readCommon(YamlMap& yaml, const std::vector<std::string>& known, const char
                                               [](double v) { return v >= 0 && v < 1 ? "" : "must be in [0, 1)"; });
     st.maxEffects = a.getInt("max_effects", st.maxEffects);
     if (st.maxEffects < 1 || st.maxEffects > 6) a.fail("max_effects", "must be 1 to 6", std::to_string(st.maxEffects));
+    st.measurementNoise = a.getDouble("measurement_noise", st.measurementNoise, mustBeNonNegative);
+    st.explainedNoiseRatio = a.getDouble("explained_noise_ratio", st.explainedNoiseRatio, [](double v) {
+      return v >= 1 && v <= 10 ? "" : "must be in [1, 10]";
+    });
     st.whitenessLags = a.getInt("whiteness_lags", st.whitenessLags);
     if (st.whitenessLags < 1 || st.whitenessLags > 1000)
       a.fail("whiteness_lags", "must be 1 to 1000", std::to_string(st.whitenessLags));

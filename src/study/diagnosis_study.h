@@ -4,7 +4,8 @@
 //   name, description (optional), base_model (knee model YAML), train, validate (record CSV
 //   lists, relative to the study), candidates (optional; default the plant's whole library,
 //   model/effect_table.h), acceptance: {alpha, min_validation_improvement, max_effects,
-//   whiteness_lags} (optional; frozen here before the run).
+//   whiteness_lags, measurement_noise (unit of the data; default: estimated from each
+//   record), explained_noise_ratio (1.2)} (optional; frozen here before the run).
 //   cylinder-diagnosis only: fit_switches (false), plot_seconds (2).
 //   swing-diagnosis only: participant (participant YAML).
 // loadDiagnosisPlant reads the records and models a study names and builds its plant.
