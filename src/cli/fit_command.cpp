@@ -5,6 +5,7 @@
 
 #include "io/bench_csv.h"
 #include "cli/command_registry.h"
+#include "cli/progress_reporter.h"
 #include "identify/bench_data.h"
 #include "identify/cylinder_fit.h"
 #include "study/cylinder_study.h"
@@ -45,15 +46,8 @@ int runFit(const std::vector<std::string>& argv) {
   for (std::size_t i = 0; i < models.size(); ++i) {
     CylinderFitOptions options;
     options.fitSwitches = study.fitSwitches;
-    int lastPercent = -1;
-    options.progress = [&](int done, int total) {
-      const int percent = 100 * done / total;
-      if (percent / 10 != lastPercent / 10) {
-        std::fprintf(stderr, "\r%s: profiling switches %3d %%", names[i].c_str(), percent);
-        if (done == total) std::fprintf(stderr, "\n");
-        lastPercent = percent;
-      }
-    };
+    ProgressReporter progress(names[i] + ": profiling switches", "switch settings");
+    options.progress = [&](int done, int total) { progress.update(done, total); };
     ModelEvaluation e;
     e.name = names[i];
     e.fit = fitCylinder(models[i], train, options);

@@ -1,10 +1,10 @@
 // swingsim sweep STUDY.yaml [--out DIR] [--json FILE] [--jobs N] [--add-mass KG@METRES]
-#include <unistd.h>
 
 #include <csignal>
 #include <cstdio>
 
 #include "cli/command_registry.h"
+#include "cli/progress_reporter.h"
 #include "core/output_files.h"
 #include "report/sweep_report.h"
 #include "report/swing_json.h"
@@ -16,23 +16,6 @@ namespace {
 
 volatile bool gInterrupted = false;
 extern "C" void onInterrupt(int) { gInterrupted = true; }
-
-void drawProgress(int done, int total) {
-  // A bar that redraws on a terminal; a line every 10 % into a log file.
-  static int lastTenth = -1;
-  if (!isatty(STDERR_FILENO)) {
-    const int tenth = total > 0 ? 10 * done / total : 10;
-    if (tenth != lastTenth) std::fprintf(stderr, "  %d/%d swings\n", done, total);
-    lastTenth = tenth;
-    return;
-  }
-  const int width = 40;
-  const int filled = total > 0 ? width * done / total : width;
-  std::fprintf(stderr, "\r  [%.*s%*s] %d/%d swings", filled, "########################################", width - filled, "",
-               done, total);
-  if (done == total) std::fprintf(stderr, "\n");
-  std::fflush(stderr);
-}
 
 int runSweepCommand(const std::vector<std::string>& args) {
   Arguments a(args, {"--out", "--json", "--jobs", "--add-mass"});
@@ -49,7 +32,9 @@ int runSweepCommand(const std::vector<std::string>& args) {
 
   std::signal(SIGINT, onInterrupt);
   std::fprintf(stderr, "sweeping %zu participants (%s)...\n", study.participants.size(), study.path.c_str());
-  const SweepResults results = runSweep(study, jobs, drawProgress, &gInterrupted);
+  ProgressReporter progress("sweep " + study.name, "swings");
+  const SweepResults results =
+      runSweep(study, jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
   std::signal(SIGINT, SIG_DFL);
 
   std::printf("%s", formatSweepTables(study, results).c_str());
