@@ -12,7 +12,7 @@ namespace swingsim {
 namespace {
 
 // chi^2(1) 95 % quantile, for the profile-likelihood interval of a grid parameter.
-constexpr double kChi2One95 = 3.841458820694124;
+const double kChi2One95 = calcChiSquaredQuantile(0.95, 1);
 
 std::string fmtRatio(double v) {
   char buf[32];

@@ -9,7 +9,7 @@ namespace swingsim {
 
 namespace {
 // Two-sided 95 % normal quantile, for parameter confidence intervals.
-constexpr double kZ95 = 1.959963984540054;
+const double kZ95 = calcNormalQuantile(0.975);  // two-sided 95 % normal quantile
 }  // namespace
 
 LrTest calcLrTest(double rssSmaller, double rssBigger, const ResidualSegments& biggerResidual, int dof) {

@@ -1,5 +1,9 @@
 #include "numerics/residual_analysis.h"
 
+#include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/special_functions/gamma.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -10,7 +14,7 @@ namespace swingsim {
 namespace {
 
 // Two-sided 99 % normal quantile.
-constexpr double kZ99 = 2.5758293035489004;
+const double kZ99 = calcNormalQuantile(0.995);
 
 }  // namespace
 
@@ -46,36 +50,16 @@ double calcEffectiveSampleSize(const ResidualSegments& residuals) {
   return static_cast<double>(n) * (1.0 - rho1) / (1.0 + rho1);
 }
 
+double calcNormalQuantile(double p) { return boost::math::quantile(boost::math::normal(), p); }
+
+double calcChiSquaredQuantile(double p, double dof) {
+  return boost::math::quantile(boost::math::chi_squared(dof), p);
+}
+
 double calcChiSquaredSurvival(double x, double dof) {
   if (!(x > 0)) return 1.0;
-  // Regularised upper incomplete gamma Q(dof/2, x/2) (Numerical Recipes: series below a+1,
-  // continued fraction above).
-  const double a = 0.5 * dof, z = 0.5 * x;
-  const double lnPrefix = -z + a * std::log(z) - std::lgamma(a);
-  if (z < a + 1) {
-    double term = 1.0 / a, sum = term;
-    for (int k = 1; k < 1000; ++k) {
-      term *= z / (a + k);
-      sum += term;
-      if (term < sum * 1e-15) break;
-    }
-    return std::max(0.0, 1.0 - sum * std::exp(lnPrefix));
-  }
-  const double tiny = 1e-300;
-  double b = z + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-  for (int i = 1; i < 1000; ++i) {
-    const double an = -i * (i - a);
-    b += 2;
-    d = an * d + b;
-    if (std::fabs(d) < tiny) d = tiny;
-    c = b + an / c;
-    if (std::fabs(c) < tiny) c = tiny;
-    d = 1 / d;
-    const double del = d * c;
-    h *= del;
-    if (std::fabs(del - 1) < 1e-15) break;
-  }
-  return std::min(1.0, std::exp(lnPrefix) * h);
+  // Q(dof/2, x/2), the regularised upper incomplete gamma function (Boost.Math).
+  return boost::math::gamma_q(0.5 * dof, 0.5 * x);
 }
 
 WhitenessTest calcWhitenessTest(const ResidualSegments& residuals, int lags) {

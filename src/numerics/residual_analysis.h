@@ -33,6 +33,10 @@ WhitenessTest calcWhitenessTest(const ResidualSegments& residuals, int lags);
 
 /// Upper tail probability of chi^2 with `dof` degrees of freedom at `x` (>= 0).
 double calcChiSquaredSurvival(double x, double dof);
+/// The `p` quantile of the standard normal distribution (0 < p < 1).
+double calcNormalQuantile(double p);
+/// The `p` quantile of chi^2 with `dof` degrees of freedom (0 < p < 1).
+double calcChiSquaredQuantile(double p, double dof);
 
 /// Mean residual in equal-count bins of a variable, with a 99 % confidence half-width that
 /// uses the effective sample size (the within-bin spread / sqrt(count * nEff / n)).

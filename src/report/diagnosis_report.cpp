@@ -12,7 +12,7 @@ namespace swingsim {
 
 namespace {
 
-constexpr double kZ99 = 2.5758293035489004;  // two-sided 99 % normal quantile
+const double kZ99 = calcNormalQuantile(0.995);  // two-sided 99 % normal quantile
 constexpr int kResidualBins = 12;            // equal-count bins for the binned residual
 constexpr double kAcfSeconds = 0.5;          // autocorrelation shown up to this lag, s
 
