@@ -32,7 +32,7 @@ int runCompare(const std::vector<std::string>& argv) {
   const std::string outDir = args.get("--out", "out/" + study.name);
   for (const auto& p : writeResidualPlots(outDir, "compare", b.comparison)) std::printf("plot: %s\n", p.c_str());
   if (args.has("--json"))
-    writeFileAtomic(args.get("--json"), makeComparisonJson(fileStem(study.baseModelPath), b.comparison).dump(2) + "\n");
+    writeJsonFile(args.get("--json"), makeComparisonJson(fileStem(study.baseModelPath), b.comparison));
   return 0;
 }
 

@@ -44,7 +44,7 @@ int runDiagnose(const std::vector<std::string>& argv) {
     md += "- after: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
   writeFileAtomic(outDir + "/report.md", md);
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
-  if (args.has("--json")) writeFileAtomic(args.get("--json"), makeDiagnosisJson(dg, before, after).dump(2) + "\n");
+  if (args.has("--json")) writeJsonFile(args.get("--json"), makeDiagnosisJson(dg, before, after));
   if (args.has("--save-model") && !dg.explained)
     throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict + ")");
   if (args.has("--save-model")) {

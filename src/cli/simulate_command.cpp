@@ -4,7 +4,6 @@
 #include <string>
 
 #include "cli/command_registry.h"
-#include "io/json_writer.h"
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
 #include "io/participant_loader.h"
@@ -65,9 +64,7 @@ int runSimulate(const std::vector<std::string>& args) {
   writeFileAtomic(out + "/" + tag + ".sto", formatTrajectorySto(r.trajectory, tag));
   std::printf("  trajectory          %s/%s.csv and .sto\n", out.c_str(), tag);
   if (a.has("--json")) {
-    JsonWriter j;
-    writeSwingResultJson(j, p.name, setup.lowering, r);
-    writeFileAtomic(a.get("--json"), j.str() + "\n");
+    writeJsonFile(a.get("--json"), makeSwingResultJson(p.name, setup.lowering, r));
   }
   return 0;
 }

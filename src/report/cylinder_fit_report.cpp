@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/json_writer.h"
+#include "io/json_file.h"
 #include "core/output_files.h"
 #include "report/svg_plot.h"
 
@@ -95,23 +95,19 @@ std::string formatFitTable(const std::vector<ModelEvaluation>& models) {
 }
 
 std::string formatFitJson(const std::vector<ModelEvaluation>& models) {
-  JsonWriter w;
-  w.beginObject().key("models").beginArray();
+  Json list = Json::array();
   for (const auto& m : models) {
-    w.beginObject().field("model", m.name).key("coefficients").beginArray();
+    Json coefficients = Json::array();
     for (int i = 0; i < m.fit.params.phases; ++i) {
       const auto& c = m.fit.params.coefficients[static_cast<std::size_t>(i)];
-      w.beginObject().field("phase", i + 1).field("f_N", c.f).field("k_N_per_m", c.k).field("c_Ns_per_m", c.c).endObject();
+      coefficients.push_back({{"phase", i + 1}, {"f_N", c.f}, {"k_N_per_m", c.k}, {"c_Ns_per_m", c.c}});
     }
-    w.endArray().key("metrics").beginObject();
-    for (const auto& f : m.files) {
-      w.key(f.data->stem).beginObject().field("me_N", f.metrics.maxError).field("rmse_N", f.metrics.rmse)
-          .field("r2", f.metrics.r2).endObject();
-    }
-    w.endObject().endObject();
+    Json metrics = Json::object();
+    for (const auto& f : m.files)
+      metrics[f.data->stem] = {{"me_N", f.metrics.maxError}, {"rmse_N", f.metrics.rmse}, {"r2", f.metrics.r2}};
+    list.push_back({{"model", m.name}, {"coefficients", coefficients}, {"metrics", metrics}});
   }
-  w.endArray().endObject();
-  return w.str() + "\n";
+  return formatJson({{"models", list}});
 }
 
 namespace {

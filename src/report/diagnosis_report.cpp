@@ -36,17 +36,17 @@ ErrorMetrics pooled(const Comparison& c, bool training) {
   return m.empty() ? ErrorMetrics{} : calcErrorMetrics(m, p);
 }
 
-nlohmann::json metricsJson(const ErrorMetrics& m) { return {{"rmse", m.rmse}, {"r2", m.r2}, {"me", m.maxError}}; }
+Json metricsJson(const ErrorMetrics& m) { return {{"rmse", m.rmse}, {"r2", m.r2}, {"me", m.maxError}}; }
 
-nlohmann::json summaryJson(const Comparison& c) {
-  nlohmann::json validation = nlohmann::json::object();
+Json summaryJson(const Comparison& c) {
+  Json validation = Json::object();
   for (const auto& r : c.records)
     if (!r.training) validation[r.stem] = metricsJson(r.overall);
   return {{"train", metricsJson(pooled(c, true))}, {"validation", validation}};
 }
 
-nlohmann::json parametersJson(const std::vector<EffectParameter>& parameters) {
-  nlohmann::json values = nlohmann::json::object(), intervals = nlohmann::json::object();
+Json parametersJson(const std::vector<EffectParameter>& parameters) {
+  Json values = Json::object(), intervals = Json::object();
   for (const auto& p : parameters) {
     values[p.name] = p.value;
     intervals[p.name] = {p.lower, p.upper};
@@ -54,17 +54,17 @@ nlohmann::json parametersJson(const std::vector<EffectParameter>& parameters) {
   return {{"values", values}, {"confidence_intervals", intervals}};
 }
 
-nlohmann::json candidateJson(const CandidateScore& c, int step, const std::vector<std::string>& stems) {
+Json candidateJson(const CandidateScore& c, int step, const std::vector<std::string>& stems) {
   // "passes_rule": the candidate met every part of the acceptance rule; "added": it was the
   // one added to the model in its step (the best of those that passed).
-  nlohmann::json j = {{"effect", c.effect}, {"step", step}, {"passes_rule", c.accepted}, {"added", c.added}};
+  Json j = {{"effect", c.effect}, {"step", step}, {"passes_rule", c.accepted}, {"added", c.added}};
   if (!c.notApplicable.empty()) {
     j["not_applicable"] = c.notApplicable;
     return j;
   }
-  nlohmann::json validation = nlohmann::json::object();
+  Json validation = Json::object();
   for (std::size_t v = 0; v < stems.size() && v < c.validationRmse.size(); ++v) validation[stems[v]] = c.validationRmse[v];
-  const nlohmann::json params = parametersJson(c.parameters);
+  const Json params = parametersJson(c.parameters);
   j["validation_rmse"] = validation;
   j["train_rmse"] = c.trainRmse;
   j["delta_bic"] = c.deltaBic;
@@ -81,8 +81,8 @@ nlohmann::json candidateJson(const CandidateScore& c, int step, const std::vecto
   return j;
 }
 
-nlohmann::json noiseJson(const Diagnosis& dg, const Comparison& before) {
-  nlohmann::json records = nlohmann::json::object();
+Json noiseJson(const Diagnosis& dg, const Comparison& before) {
+  Json records = Json::object();
   for (std::size_t i = 0; i < before.records.size() && i < dg.recordNoise.size(); ++i)
     records[before.records[i].stem] = dg.recordNoise[i];
   return {{"source", dg.noiseSource}, {"pooled_estimate", dg.pooledNoise.sigma}, {"records", records}};
@@ -213,10 +213,10 @@ std::vector<std::string> writeResidualPlots(const std::string& outDir, const std
   return paths;
 }
 
-nlohmann::json makeComparisonJson(const std::string& model, const Comparison& c) {
-  nlohmann::json files = nlohmann::json::object();
+Json makeComparisonJson(const std::string& model, const Comparison& c) {
+  Json files = Json::object();
   for (const auto& r : c.records) {
-    nlohmann::json phases = nlohmann::json::object();
+    Json phases = Json::object();
     for (std::size_t ph = 0; ph < c.phaseNames.size(); ++ph)
       phases[c.phaseNames[ph]] = {{"rmse", r.perPhase[ph].rmse},
                                   {"share_of_squared_error", r.phaseShare[ph]},
@@ -316,11 +316,11 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   return out;
 }
 
-nlohmann::json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comparison& after) {
+Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comparison& after) {
   std::vector<std::string> stems;
   for (const auto& r : before.records)
     if (!r.training) stems.push_back(r.stem);
-  nlohmann::json candidates = nlohmann::json::array();
+  Json candidates = Json::array();
   for (std::size_t s = 0; s < dg.steps.size(); ++s)
     for (const auto& c : dg.steps[s].candidates) candidates.push_back(candidateJson(c, static_cast<int>(s + 1), stems));
   return {{"plant", plantName(dg.plant)},

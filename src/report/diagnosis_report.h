@@ -5,12 +5,12 @@
 // with its 99 % band), the candidate ranking of every step, the accepted effects with their
 // intervals, the before/after table, and one JSON schema (docs/diagnosis.md, "JSON").
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "identify/comparison.h"
 #include "identify/diagnosis_engine.h"
+#include "io/json_file.h"
 
 namespace swingsim {
 
@@ -44,7 +44,7 @@ std::vector<std::string> writeResidualPlots(const std::string& outDir, const std
 
 /// `{"model", "quantity", "unit", "files": {"<stem>": {"training", "me", "rmse", "r2",
 /// "phases": {"<phase>": {"rmse", "share_of_squared_error", "share_of_samples"}}}}}`.
-nlohmann::json makeComparisonJson(const std::string& model, const Comparison& comparison);
+Json makeComparisonJson(const std::string& model, const Comparison& comparison);
 
 /// The ranking table of one step (RMSE in `unit` with `decimals`).
 std::string formatCandidateRanking(const std::vector<const EffectScore*>& candidates, const std::string& unit,
@@ -62,6 +62,6 @@ std::string formatDiagnosisText(const Diagnosis& diagnosis, const Comparison& be
 
 /// The diagnosis JSON (docs/diagnosis.md, "JSON"): plant, unit, baseline, candidates (every
 /// step), accepted, ambiguous, final, base_parameters, residual_white, structure.
-nlohmann::json makeDiagnosisJson(const Diagnosis& diagnosis, const Comparison& before, const Comparison& after);
+Json makeDiagnosisJson(const Diagnosis& diagnosis, const Comparison& before, const Comparison& after);
 
 }  // namespace swingsim

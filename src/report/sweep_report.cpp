@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "io/csv_table.h"
-#include "io/json_writer.h"
+#include "io/json_file.h"
 #include "report/svg_plot.h"
 #include "swing/burkett_published.h"
 
@@ -91,8 +91,7 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
 }
 
 std::string formatSweepJson(const SweepResults& results) {
-  JsonWriter j;
-  j.beginObject().field("study", results.study).key("participants").beginArray();
+  Json participants = Json::array();
   for (const auto& ps : results.participants) {
     std::vector<double> lowering, swing, peak, clearance;
     std::vector<bool> bounce, ok;
@@ -104,42 +103,41 @@ std::string formatSweepJson(const SweepResults& results) {
       bounce.push_back(pt.ok && pt.result.bounce);
       ok.push_back(pt.ok);
     }
-    j.beginObject().field("name", ps.name);
-    j.field("lowering_m", lowering).field("swing_time_s", swing).field("peak_knee_flexion_deg", peak);
-    j.field("bounce", bounce).field("swing_ended", ok).field("min_toe_clearance_m", clearance);
+    Json j = {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing}, {"peak_knee_flexion_deg", peak},
+              {"bounce", bounce}, {"swing_ended", ok}, {"min_toe_clearance_m", clearance}};
     if (ps.best >= 0) {
       const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
-      j.field("best_lowering_m", b.lowering).field("best_swing_time_s", b.result.swingTime);
+      j["best_lowering_m"] = b.lowering;
+      j["best_swing_time_s"] = b.result.swingTime;
     } else {
-      j.key("best_lowering_m").null().key("best_swing_time_s").null();
+      j["best_lowering_m"] = nullptr;
+      j["best_swing_time_s"] = nullptr;
     }
-    if (!ps.capNote.empty()) j.field("note", ps.capNote);
+    if (!ps.capNote.empty()) j["note"] = ps.capNote;
     if (ps.bestWithMass >= 0) {
       const auto& b = ps.massPoints[static_cast<std::size_t>(ps.bestWithMass)];
-      j.key("best_with_added_mass").beginObject().field("lowering_m", b.lowering).field("mass_kg", b.added.mass)
-          .field("distance_below_knee_m", b.added.distanceBelowKnee).field("swing_time_s", b.result.swingTime).endObject();
+      j["best_with_added_mass"] = {{"lowering_m", b.lowering}, {"mass_kg", b.added.mass},
+                                   {"distance_below_knee_m", b.added.distanceBelowKnee},
+                                   {"swing_time_s", b.result.swingTime}};
     }
-    j.key("published");
     if (const PublishedParticipant* pub = findPublished(ps.name)) {
-      j.beginObject().field("source", "Burkett et al. 2004 Tables 3 and 4");
-      j.field("table3_model_s", pub->table3Model).field("table3_measured_s", pub->table3Measured);
-      j.field("best_lowering_m", pub->predictedBestLowering);
-      j.key("table4").beginArray();
+      Json table4 = Json::array();
       for (const auto& row : pub->table4) {
         const SweepPoint* ours = pointAt(ps, row.lowering);
-        j.beginObject().field("lowering_m", row.lowering).field("model_s", row.model)
-            .field("measured_prosthetic_s", row.measuredProsthetic).field("measured_anatomical_s", row.measuredAnatomical);
-        j.field("ours_s", ours && ours->ok ? ours->result.swingTime : kNaN);
-        j.endObject();
+        table4.push_back({{"lowering_m", row.lowering}, {"model_s", row.model},
+                          {"measured_prosthetic_s", row.measuredProsthetic},
+                          {"measured_anatomical_s", row.measuredAnatomical},
+                          {"ours_s", ours && ours->ok ? ours->result.swingTime : kNaN}});
       }
-      j.endArray().endObject();
+      j["published"] = {{"source", "Burkett et al. 2004 Tables 3 and 4"}, {"table3_model_s", pub->table3Model},
+                        {"table3_measured_s", pub->table3Measured}, {"best_lowering_m", pub->predictedBestLowering},
+                        {"table4", table4}};
     } else {
-      j.null();
+      j["published"] = nullptr;
     }
-    j.endObject();
+    participants.push_back(j);
   }
-  j.endArray().endObject();
-  return j.str() + "\n";
+  return formatJson({{"study", results.study}, {"participants", participants}});
 }
 
 std::string formatSweepCsv(const SweepResults& results) {

@@ -7,21 +7,17 @@
 
 namespace swingsim {
 
-void writeSwingResultJson(JsonWriter& j, const std::string& participant, double lowering, const SwingResult& r) {
-  j.beginObject();
-  j.field("participant", participant);
-  j.field("lowering_m", lowering);
-  j.field("swing_time_s", r.swingTime);
-  j.field("peak_knee_flexion_deg", r.peakKneeFlexion * kRadToDeg);
-  j.field("peak_knee_flexion_time_s", r.peakKneeFlexionTime);
-  j.field("bounce", r.bounce);
-  j.field("min_toe_clearance_m", r.minToeClearance);
-  j.key("events").beginArray();
-  for (const auto& e : r.events) {
-    j.beginObject().field("name", e.name).field("time_s", e.time).endObject();
-  }
-  j.endArray();
-  j.endObject();
+Json makeSwingResultJson(const std::string& participant, double lowering, const SwingResult& r) {
+  Json events = Json::array();
+  for (const auto& e : r.events) events.push_back({{"name", e.name}, {"time_s", e.time}});
+  return {{"participant", participant},
+          {"lowering_m", lowering},
+          {"swing_time_s", r.swingTime},
+          {"peak_knee_flexion_deg", r.peakKneeFlexion * kRadToDeg},
+          {"peak_knee_flexion_time_s", r.peakKneeFlexionTime},
+          {"bounce", r.bounce},
+          {"min_toe_clearance_m", r.minToeClearance},
+          {"events", events}};
 }
 
 AddedMass parseAddedMass(const std::string& text) {

@@ -8,10 +8,12 @@
 #include <sstream>
 
 #include "run_swingsim.h"
+#include "io/json_file.h"
 
 namespace {
 
 using ::testing::HasSubstr;
+using swingsim::Json;
 namespace fs = std::filesystem;
 
 using swingsim::testing::CliRun;
@@ -48,11 +50,12 @@ TEST(Cli, SimulateWritesTrajectoryStoAndJson) {
   EXPECT_THAT(s.str(), HasSubstr("version=1\nnRows="));
   EXPECT_THAT(s.str(), HasSubstr("inDegrees=yes\nendheader\ntime\t"));
   std::ifstream js(out / "r.json");
-  std::stringstream j;
-  j << js.rdbuf();
-  for (const char* key : {"\"swing_time_s\"", "\"peak_knee_flexion_deg\"", "\"peak_knee_flexion_time_s\"", "\"bounce\"",
-                          "\"events\":[{\"name\":\"toe_off\""})
-    EXPECT_THAT(j.str(), HasSubstr(key));
+  const Json j = Json::parse(js);
+  for (const char* key : {"participant", "lowering_m", "swing_time_s", "peak_knee_flexion_deg", "peak_knee_flexion_time_s",
+                          "bounce", "min_toe_clearance_m", "events"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["events"][0]["name"], "toe_off");
+  EXPECT_DOUBLE_EQ(j["lowering_m"].get<double>(), 0.05);
   EXPECT_TRUE(fs::exists(out / "P1-lower050mm.csv"));
 }
 

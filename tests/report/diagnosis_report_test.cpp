@@ -58,14 +58,14 @@ TEST(SwingResidualPlot, FivePanelsWithTitlesAxisUnitsAndSwingPhaseBands) {
 // One schema for both plants: the cylinder and the swing demo diagnoses write the same
 // top-level keys, each candidate the same keys, and the plant and unit say which is which.
 TEST(DiagnosisJson, CylinderAndSwingShareOneSchema) {
-  std::vector<nlohmann::json> docs;
+  std::vector<Json> docs;
   for (const char* file : {"/studies/diagnose-demo-cylinder.yaml", "/studies/diagnose-demo-swing.yaml"}) {
     const DiagnosisStudy study = loadDiagnosisStudy(kRoot + file);
     const auto plant = loadDiagnosisPlant(study, 8);
     const Diagnosis dg = runDiagnosis(*plant, study.settings);
     docs.push_back(makeDiagnosisJson(dg, plant->compare(*dg.baseline.model), plant->compare(*dg.final.model)));
   }
-  auto keys = [](const nlohmann::json& j) {
+  auto keys = [](const Json& j) {
     std::vector<std::string> k;
     for (const auto& item : j.items()) k.push_back(item.key());
     return k;
@@ -76,15 +76,15 @@ TEST(DiagnosisJson, CylinderAndSwingShareOneSchema) {
   EXPECT_EQ(docs[1]["plant"], "swing");
   EXPECT_EQ(docs[1]["unit"], "deg");
   // A scored candidate carries the same keys in both (the first applicable one of step 1).
-  auto firstScored = [](const nlohmann::json& j) {
+  auto firstScored = [](const Json& j) {
     for (const auto& c : j["candidates"])
       if (!c.contains("not_applicable")) return c;
-    return nlohmann::json();
+    return Json();
   };
   EXPECT_EQ(keys(firstScored(docs[0])), keys(firstScored(docs[1])));
   // The demos' hidden effects (docs/diagnosis.md): named, and the base scale of the swing reported.
-  EXPECT_EQ(docs[0]["accepted"], nlohmann::json({"orifice_quadratic"}));
-  EXPECT_EQ(docs[1]["accepted"], nlohmann::json({"extension_assist_spring"}));
+  EXPECT_EQ(docs[0]["accepted"], Json({"orifice_quadratic"}));
+  EXPECT_EQ(docs[1]["accepted"], Json({"extension_assist_spring"}));
   EXPECT_TRUE(docs[1]["final_parameters"]["values"].contains("knee_model_scale"));
   EXPECT_TRUE(docs[0]["final_parameters"]["values"].empty());
 }
