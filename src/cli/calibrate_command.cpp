@@ -14,8 +14,7 @@
 namespace swingsim::cli {
 namespace {
 
-int runCalibrate(const std::vector<std::string>& args) {
-  Arguments a(args, {"--target"}, {"--dry-run"});
+int runCalibrate(const Arguments& a) {
   if (a.positional().empty()) throw UsageError("expected one or more participant YAML files");
   if (a.has("--target") && a.positional().size() != 1) throw UsageError("--target applies to one participant file");
   for (const std::string& path : a.positional()) {
@@ -51,8 +50,10 @@ int runCalibrate(const std::vector<std::string>& args) {
   return 0;
 }
 
-Registrar reg("calibrate", {"calibrate PARTICIPANT.yaml... [--target SECONDS] [--dry-run]",
-                            "fit each participant's hip-moment time scale to Burkett Table 3 and store it in the YAML",
+Registrar reg("calibrate", {"fit each participant's hip-moment time scale to Burkett Table 3 and store it in the YAML",
+                            "PARTICIPANT.yaml", "participant files (one or more)",
+                            {{"--target", "target standard-location swing time, s (default: Burkett 2004 Table 3 model column; one file only)"},
+                             {"--dry-run", "calibrate and print, but do not change the file", true}},
                             runCalibrate});
 
 }  // namespace

@@ -13,8 +13,7 @@ namespace swingsim::cli {
 
 namespace {
 
-int runCompare(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"--out", "--json"});
+int runCompare(const Arguments& args) {
   if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
   const DiagnosisStudy study = loadDiagnosisStudy(args.positional()[0]);
   const auto plant = loadDiagnosisPlant(study, 1);
@@ -36,8 +35,9 @@ int runCompare(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registrar reg("compare", {"compare STUDY.yaml [--out DIR] [--json FILE]",
-                                 "model vs measurement: metrics overall and per phase, residual plots",
+static Registrar reg("compare", {"model vs measurement: metrics overall and per phase, residual plots",
+                                 "STUDY.yaml", "study of kind cylinder-diagnosis or swing-diagnosis",
+                                 {{"--out", "output folder (default out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"}},
                                  runCompare});
 
 }  // namespace

@@ -14,8 +14,7 @@ namespace swingsim::cli {
 
 namespace {
 
-int runDiagnose(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"--out", "--json", "--save-model"});
+int runDiagnose(const Arguments& args) {
   if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
   const DiagnosisStudy study = loadDiagnosisStudy(args.positional()[0]);
   const auto plant = loadDiagnosisPlant(study, 8);
@@ -31,8 +30,7 @@ int runDiagnose(const std::vector<std::string>& argv) {
   std::printf("where the base model fails (before):\n%s\n%s", formatComparisonTable(before).c_str(), report.c_str());
   if (!check.empty()) std::printf("%s\n", check.c_str());
 
-  std::string command = "swingsim diagnose";
-  for (const auto& a : argv) command += " " + a;
+  const std::string command = args.commandLine("diagnose");
   const std::string outDir = args.get("--out", "out/" + study.name);
   std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n## Before\n\n```\n" +
                    formatComparisonTable(before) + "```\n\n## Ranking and result\n\n```\n" + report +
@@ -54,8 +52,11 @@ int runDiagnose(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registrar reg("diagnose", {"diagnose STUDY.yaml [--out DIR] [--json FILE] [--save-model FILE]",
-                                  "rank candidate missing physical effects, add the accepted ones, report the error before and after",
+static Registrar reg("diagnose", {"rank candidate missing physical effects, add the accepted ones, report the error before and after",
+                                  "STUDY.yaml", "study of kind cylinder-diagnosis or swing-diagnosis",
+                                  {{"--out", "output folder (default out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"},
+                                   {"--save-model", "write the diagnosed model here (knee model YAML; the swing also writes "
+                                                    "FILE-participant.yaml); only when the data are explained"}},
                                   runDiagnose});
 
 }  // namespace

@@ -19,8 +19,7 @@ namespace swingsim::cli {
 
 namespace {
 
-int runFit(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"--out", "--json"});
+int runFit(const Arguments& args) {
   if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
   YamlMap yaml = YamlMap::loadFile(args.positional()[0]);
   if (!yaml.has("kind")) yaml.getString("kind");
@@ -59,8 +58,7 @@ int runFit(const std::vector<std::string>& argv) {
   for (const auto& r : results)
     for (const auto& w : r.fit.warnings) std::fprintf(stderr, "swingsim fit: warning: %s: %s\n", r.name.c_str(), w.c_str());
 
-  std::string command = "swingsim fit";
-  for (const auto& a : argv) command += " " + a;
+  const std::string command = args.commandLine("fit");
   const std::string outDir = args.get("--out", "out/" + study.name);
   writeFitReport(outDir, study.name, command, results, study.plotSeconds);
   if (args.has("--json")) writeFileAtomic(args.get("--json"), formatFitJson(results));
@@ -68,8 +66,9 @@ int runFit(const std::vector<std::string>& argv) {
   return 0;
 }
 
-static Registrar reg("fit", {"fit STUDY.yaml [--out DIR] [--json FILE]",
-                             "fit Mauch cylinder models to bench data and validate them on held-out files",
+static Registrar reg("fit", {"fit Mauch cylinder models to bench data and validate them on held-out files",
+                             "STUDY.yaml", "study of kind cylinder-fit",
+                             {{"--out", "output folder (default out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"}},
                              runFit});
 
 }  // namespace

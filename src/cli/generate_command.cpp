@@ -93,8 +93,7 @@ const std::map<std::string, Generator>& generators() {
   return g;
 }
 
-int runGenerate(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"--out"});
+int runGenerate(const Arguments& args) {
   if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
   YamlMap yaml = YamlMap::loadFile(args.positional()[0]);
   std::vector<std::string> kinds;
@@ -104,8 +103,9 @@ int runGenerate(const std::vector<std::string>& argv) {
   return generators().at(kind)(yaml, args);
 }
 
-static Registrar reg("generate", {"generate STUDY.yaml [--out DIR]",
-                                  "synthetic measurement data (cylinder bench records, swing kinematics) from a model, noise and seed",
+static Registrar reg("generate", {"synthetic measurement data (cylinder bench records, swing kinematics) from a model, noise and seed",
+                                  "STUDY.yaml", "study of kind cylinder-bench or swing-kinematics",
+                                  {{"--out", "output folder for the CSV files (default: the study's output_dir)"}},
                                   runGenerate});
 
 }  // namespace

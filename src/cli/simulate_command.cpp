@@ -15,9 +15,7 @@
 namespace swingsim::cli {
 namespace {
 
-int runSimulate(const std::vector<std::string>& args) {
-  Arguments a(args, {"--lowering", "--knee", "--json", "--out", "--add-mass", "--hip-rate-deg-s", "--knee-rate-deg-s",
-                     "--integrator", "--accuracy"});
+int runSimulate(const Arguments& a) {
   SwingOptions options;
   if (a.has("--integrator")) {
     const std::string key = a.get("--integrator");
@@ -69,10 +67,22 @@ int runSimulate(const std::vector<std::string>& args) {
   return 0;
 }
 
-Registrar reg("simulate", {"simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M] "
-                           "[--hip-rate-deg-s V] [--knee-rate-deg-s V] [--integrator METHOD] [--accuracy A] "
-                           "[--json FILE] [--out DIR]",
-                           "simulate one swing: swing time, peak knee flexion, events, trajectory CSV/.sto",
+Registrar reg("simulate", {"simulate one swing: swing time, peak knee flexion, events, trajectory CSV/.sto",
+                           "PARTICIPANT.yaml", "participant file",
+                           {{"--lowering", "knee-axis lowering below the standard location, m (default 0)"},
+                            {"--knee", "knee model YAML (default: the participant's knee_model)"},
+                            {"--add-mass", "added shank mass as KG@METRES below the knee, e.g. 0.5@0.2 (default none)"},
+                            {"--hip-rate-deg-s", "hip flexion rate at toe-off, deg/s (default: the participant's, 0)"},
+                            {"--knee-rate-deg-s", "knee flexion rate at toe-off, deg/s (default: the participant's, 0)"},
+                            {"--integrator", [] {
+                               std::string keys;
+                               for (const auto& k : integratorKeys()) keys += (keys.empty() ? "" : ", ") + k;
+                               return "integration method, one of " + keys + " (default " + integratorKeys().front() +
+                                      "), at its converged accuracy";
+                             }()},
+                            {"--accuracy", "integrator relative accuracy, (0, 0.01] (default: the integrator's converged one)"},
+                            {"--json", "also write the machine-readable result to this JSON file"},
+                            {"--out", "output folder for the trajectory (default out/simulate-<participant>/)"}},
                            runSimulate});
 
 }  // namespace

@@ -17,8 +17,7 @@ namespace {
 volatile bool gInterrupted = false;
 extern "C" void onInterrupt(int) { gInterrupted = true; }
 
-int runSweepCommand(const std::vector<std::string>& args) {
-  Arguments a(args, {"--out", "--json", "--jobs", "--add-mass"});
+int runSweepCommand(const Arguments& a) {
   if (a.positional().size() != 1) throw UsageError("expected one study YAML file");
   SweepStudy study = loadSweepStudy(a.positional()[0]);
   if (a.has("--add-mass")) {
@@ -66,8 +65,11 @@ int runSweepCommand(const std::vector<std::string>& args) {
   return 0;
 }
 
-Registrar reg("sweep", {"sweep STUDY.yaml [--out DIR] [--json FILE] [--jobs N] [--add-mass KG@METRES]",
-                        "knee-axis lowering sweep per participant: tables, report with figures, JSON",
+Registrar reg("sweep", {"knee-axis lowering sweep per participant: tables, report with figures, JSON",
+                        "STUDY.yaml", "study of kind knee-axis-sweep",
+                        {{"--out", "output folder (default: the study's output_dir, else out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"},
+                         {"--jobs", "worker threads, 0 = all cores (default 0)"},
+                         {"--add-mass", "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)"}},
                         runSweepCommand});
 
 }  // namespace
