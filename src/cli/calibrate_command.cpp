@@ -1,12 +1,13 @@
 // swingsim calibrate PARTICIPANT.yaml... [--target S] [--dry-run]
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "cli/command_registry.h"
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
 #include "io/participant_loader.h"
-#include "io/yaml_edit.h"
 #include "swing/burkett_published.h"
 #include "swing/calibration.h"
 #include "swing/knee_setup.h"
@@ -17,6 +18,9 @@ namespace {
 int runCalibrate(const Arguments& a) {
   if (a.positional().empty()) throw UsageError("expected one or more participant YAML files");
   if (a.has("--target") && a.positional().size() != 1) throw UsageError("--target applies to one participant file");
+  // Every file is loaded and calibrated before any is written; storeParticipants then checks
+  // each rewritten file loads back before replacing any.
+  std::vector<ParticipantEdit> edits;
   for (const std::string& path : a.positional()) {
     SwingSetup setup;
     setup.participant = loadParticipant(path);
@@ -40,12 +44,14 @@ int runCalibrate(const Arguments& a) {
     for (std::size_t i = 0; i < r.scanScales.size(); ++i)
       std::printf(" %.3f:%.4f", r.scanScales[i], r.scanSwingTimes[i]);
     std::printf("\n");
-    if (!a.has("--dry-run")) {
-      char value[64];
-      std::snprintf(value, sizeof value, "%.6f", r.timeScale);
-      writeFileAtomic(path, setNestedScalar(readFile(path), path, "hip_moment", "time_scale", value));
-      std::printf("  stored in %s (hip_moment.time_scale)\n", path.c_str());
-    }
+    ParticipantEdit edit{path, p};
+    // Six decimals: the calibration's own tolerance is far below 1e-6 in time scale.
+    edit.participant.hipMoment.timeScale = std::round(r.timeScale * 1e6) / 1e6;
+    edits.push_back(edit);
+  }
+  if (!a.has("--dry-run")) {
+    storeParticipants(edits);
+    for (const auto& e : edits) std::printf("  stored in %s (hip_moment.time_scale)\n", e.path.c_str());
   }
   return 0;
 }

@@ -1,122 +1,142 @@
 #include "io/participant_loader.h"
 
-#include "io/yaml_reader.h"
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/output_files.h"
+#include "io/yaml_archive.h"
 
 namespace swingsim {
 
-namespace {
+// ---- The participant file format, described once ----------------------------------------
 
-SegmentParams readSegment(YamlMap& segments, const std::string& key) {
-  YamlMap m = segments.getMap(key);
-  SegmentParams s;
-  s.length = m.getDouble("length_m", mustBePositive);
-  s.mass = m.getDouble("mass_kg", mustBePositive);
-  s.comFromDistal = m.getDouble("com_from_distal_m", mustBeNonNegative);
-  s.inertia = m.getDouble("inertia_kgm2", mustBePositive);
-  if (s.comFromDistal > s.length) {
-    m.fail("com_from_distal_m", "the COM must lie on the segment (0.." + formatNumber(s.length) + " m from its distal end)",
-           formatNumber(s.comFromDistal));
-  }
-  m.finish();
-  return s;
+struct SegmentsOf {};  // context: the `segments:` map of a participant
+
+template <class A>
+void serialize(A& a, SegmentParams& s) {
+  a.number("length_m", s.length, mustBePositive);
+  a.number("mass_kg", s.mass, mustBePositive);
+  a.number("com_from_distal_m", s.comFromDistal, mustBeNonNegative);
+  a.number("inertia_kgm2", s.inertia, mustBePositive);
+  a.require(s.comFromDistal <= s.length, "com_from_distal_m",
+            "the COM must lie on the segment (0.." + formatNumber(s.length) + " m from its distal end)",
+            [&] { return formatNumber(s.comFromDistal); });
 }
 
-double readAngle(YamlMap& m, const std::string& key, double defaultRad) {
-  return m.getDouble(key, defaultRad * kRadToDeg) * kDegToRad;
+template <class A>
+void serialize(A& a, Participant& p, SegmentsOf) {
+  a.flowMap("thigh", p.thigh);
+  a.flowMap("shank", p.shank);
+  a.flowMap("foot", p.foot);
 }
 
-HipMomentProfile readHipMoment(YamlMap& yaml) {
-  YamlMap m = yaml.getMap("hip_moment");
-  HipMomentProfile h;
-  const std::string kind = m.getChoice("profile", {"biphasic_sine", "table"}, "");
-  if (kind == "table") {
-    h.kind = HipMomentProfile::Kind::kTable;
-    h.times = m.getDoubleList("time_s");
-    h.moments = m.getDoubleList("moment_Nm");
-    if (h.times.size() < 2) m.fail("time_s", "expected at least 2 times", std::to_string(h.times.size()) + " values");
-    if (h.moments.size() != h.times.size())
-      m.fail("moment_Nm", "expected one moment per time (" + std::to_string(h.times.size()) + ")",
-             std::to_string(h.moments.size()) + " values");
-    for (std::size_t i = 1; i < h.times.size(); ++i) {
-      if (!(h.times[i] > h.times[i - 1]))
-        m.fail("time_s", "times must strictly increase", formatNumber(h.times[i]) + " after " + formatNumber(h.times[i - 1]));
-    }
+template <class A>
+void serialize(A& a, InitialConditions& c) {
+  a.optionalAngle("hip_flexion_deg", c.hipFlexion);
+  a.optionalAngle("knee_flexion_deg", c.kneeFlexion);
+  a.optionalAngle("hip_flexion_rate_deg_s", c.hipFlexionRate);
+  a.optionalAngle("knee_flexion_rate_deg_s", c.kneeFlexionRate);
+}
+
+template <class A>
+void serialize(A& a, HipRange& r) {
+  a.optionalAngle("min_flexion_deg", r.minFlexion);
+  a.optionalAngle("max_flexion_deg", r.maxFlexion);
+  a.require(r.maxFlexion > r.minFlexion, "max_flexion_deg", "must exceed min_flexion_deg",
+            [&] { return formatNumber(r.maxFlexion * kRadToDeg); });
+}
+
+template <class A>
+void serialize(A& a, SwingEndRule& e) {
+  a.optionalAngle("thigh_target_flexion_deg", e.thighTargetFlexion);
+  a.optionalAngle("zone_of_stability_deg", e.zoneOfStability, mustBePositive);
+  // A swing lasts well under a second; a limit of hours would make a stuck run look hung.
+  a.optionalNumber("time_limit_s", e.timeLimit,
+                   [](double v) { return v > 0 && v <= 10 ? "" : "expected a time limit from 0 to 10 s"; });
+  a.optionalNumber("bounce_window_s", e.bounceWindow,
+                   [](double v) { return v >= 0 && v <= 2 ? "" : "expected a window from 0 to 2 s"; });
+}
+
+template <class A>
+void serialize(A& a, HipMomentProfile& h) {
+  using K = HipMomentProfile::Kind;
+  a.choice("profile", h.kind, {{"biphasic_sine", K::kBiphasicSine}, {"table", K::kTable}});
+  if (h.kind == K::kTable) {
+    a.numbers("time_s", h.times);
+    a.numbers("moment_Nm", h.moments);
+    a.require(h.times.size() >= 2, "time_s", "expected at least 2 times",
+              [&] { return std::to_string(h.times.size()) + " values"; });
+    a.require(h.moments.size() == h.times.size(), "moment_Nm",
+              "expected one moment per time (" + std::to_string(h.times.size()) + ")",
+              [&] { return std::to_string(h.moments.size()) + " values"; });
+    for (std::size_t i = 1; i < h.times.size(); ++i)
+      a.require(h.times[i] > h.times[i - 1], "time_s", "times must strictly increase",
+                [&] { return formatNumber(h.times[i]) + " after " + formatNumber(h.times[i - 1]); });
   } else {
-    h.flexionAmplitude = m.getDouble("flexion_amplitude_Nm", mustBeNonNegative);
-    h.flexionDuration = m.getDouble("flexion_duration_s", mustBePositive);
-    h.extensionAmplitude = m.getDouble("extension_amplitude_Nm", mustBeNonNegative);
-    h.extensionDuration = m.getDouble("extension_duration_s", mustBePositive);
+    a.number("flexion_amplitude_Nm", h.flexionAmplitude, mustBeNonNegative);
+    a.number("flexion_duration_s", h.flexionDuration, mustBePositive);
+    a.number("extension_amplitude_Nm", h.extensionAmplitude, mustBeNonNegative);
+    a.number("extension_duration_s", h.extensionDuration, mustBePositive);
   }
-  h.timeScale = m.getDouble("time_scale", 1.0, mustBePositive);
-  m.finish();
-  return h;
+  a.optionalNumber("time_scale", h.timeScale, mustBePositive);
 }
+
+template <class A>
+void serialize(A& a, Participant& p) {
+  a.text("name", p.name);
+  a.optionalText("source", p.source);
+  a.number("height_m", p.height,
+           [](double v) { return v > 0.5 && v < 2.6 ? "" : "expected a standing height between 0.5 and 2.6 m"; });
+  a.number("body_mass_kg", p.bodyMass, mustBePositive);
+  a.map("segments", p, SegmentsOf{});
+  a.number("knee_friction_Nm", p.kneeFriction, mustBeNonNegative);
+  a.path("knee_model", p.kneeModelPath);
+  a.choice("com_rule", p.comRule, {{"fixed_from_proximal", ComRule::kFixedFromProximal}, {"proportional", ComRule::kProportional}},
+           true);
+  a.choice("foot_com_from", p.footComFrom, {{"toe", FootComFrom::kToe}, {"ankle", FootComFrom::kAnkle}}, true);
+  a.optionalNumber("min_shank_length_m", p.minShankLength, mustBePositive);
+  a.require(p.minShankLength < p.shank.length, "min_shank_length_m",
+            "must be shorter than the shank (" + formatNumber(p.shank.length) + " m)",
+            [&] { return formatNumber(p.minShankLength); });
+  bool present = true;
+  a.optionalMap("initial", p.initial, present);
+  a.optionalMap("hip_range", p.hipRange, present = true);
+  a.require(p.initial.hipFlexion >= p.hipRange.minFlexion && p.initial.hipFlexion <= p.hipRange.maxFlexion, "initial",
+            "the initial hip flexion must lie inside hip_range",
+            [&] { return formatNumber(p.initial.hipFlexion * kRadToDeg) + " deg"; });
+  a.optionalMap("swing_end", p.swingEnd, present = true);
+  a.require(p.swingEnd.thighTargetFlexion > p.initial.hipFlexion, "swing_end",
+            "thigh_target_flexion_deg must be above the initial hip flexion",
+            [&] { return formatNumber(p.swingEnd.thighTargetFlexion * kRadToDeg) + " deg"; });
+  a.map("hip_moment", p.hipMoment);
+}
+
+// ---- Reading and writing ------------------------------------------------------------------
+
+namespace {
 
 Participant readParticipant(YamlMap& yaml) {
   Participant p;
   p.path = yaml.path();
-  p.name = yaml.getString("name");
-  yaml.getString("source", "");
-  p.height = yaml.getDouble("height_m", [](double v) { return v > 0.5 && v < 2.6 ? "" : "expected a standing height between 0.5 and 2.6 m"; });
-  p.bodyMass = yaml.getDouble("body_mass_kg", mustBePositive);
-  {
-    YamlMap segments = yaml.getMap("segments");
-    p.thigh = readSegment(segments, "thigh");
-    p.shank = readSegment(segments, "shank");
-    p.foot = readSegment(segments, "foot");
-    segments.finish();
-  }
-  p.kneeFriction = yaml.getDouble("knee_friction_Nm", mustBeNonNegative);
-  p.kneeModelPath = yaml.resolvePath(yaml.getString("knee_model"));
-  p.comRule = yaml.getChoice("com_rule", {"fixed_from_proximal", "proportional"}, "fixed_from_proximal") == "proportional"
-                  ? ComRule::kProportional
-                  : ComRule::kFixedFromProximal;
-  p.footComFrom = yaml.getChoice("foot_com_from", {"toe", "ankle"}, "toe") == "ankle" ? FootComFrom::kAnkle : FootComFrom::kToe;
-  p.minShankLength = yaml.getDouble("min_shank_length_m", p.minShankLength, mustBePositive);
-  if (p.minShankLength >= p.shank.length) {
-    yaml.fail("min_shank_length_m", "must be shorter than the shank (" + formatNumber(p.shank.length) + " m)",
-              formatNumber(p.minShankLength));
-  }
-  if (yaml.has("initial")) {
-    YamlMap m = yaml.getMap("initial");
-    p.initial.hipFlexion = readAngle(m, "hip_flexion_deg", p.initial.hipFlexion);
-    p.initial.kneeFlexion = readAngle(m, "knee_flexion_deg", p.initial.kneeFlexion);
-    p.initial.hipFlexionRate = readAngle(m, "hip_flexion_rate_deg_s", p.initial.hipFlexionRate);
-    p.initial.kneeFlexionRate = readAngle(m, "knee_flexion_rate_deg_s", p.initial.kneeFlexionRate);
-    m.finish();
-  }
-  if (yaml.has("hip_range")) {
-    YamlMap m = yaml.getMap("hip_range");
-    p.hipRange.minFlexion = readAngle(m, "min_flexion_deg", p.hipRange.minFlexion);
-    p.hipRange.maxFlexion = readAngle(m, "max_flexion_deg", p.hipRange.maxFlexion);
-    if (!(p.hipRange.maxFlexion > p.hipRange.minFlexion))
-      m.fail("max_flexion_deg", "must exceed min_flexion_deg", formatNumber(p.hipRange.maxFlexion * kRadToDeg));
-    m.finish();
-  }
-  if (p.initial.hipFlexion < p.hipRange.minFlexion || p.initial.hipFlexion > p.hipRange.maxFlexion) {
-    yaml.fail("initial", "the initial hip flexion must lie inside hip_range",
-              formatNumber(p.initial.hipFlexion * kRadToDeg) + " deg");
-  }
-  if (yaml.has("swing_end")) {
-    YamlMap m = yaml.getMap("swing_end");
-    p.swingEnd.thighTargetFlexion = readAngle(m, "thigh_target_flexion_deg", p.swingEnd.thighTargetFlexion);
-    p.swingEnd.zoneOfStability = m.getDouble("zone_of_stability_deg", p.swingEnd.zoneOfStability * kRadToDeg, mustBePositive) * kDegToRad;
-    // A swing lasts well under a second; a limit of hours would make a stuck run look hung.
-    p.swingEnd.timeLimit = m.getDouble("time_limit_s", p.swingEnd.timeLimit, [](double v) {
-      return v > 0 && v <= 10 ? "" : "expected a time limit from 0 to 10 s";
-    });
-    p.swingEnd.bounceWindow = m.getDouble("bounce_window_s", p.swingEnd.bounceWindow, [](double v) {
-      return v >= 0 && v <= 2 ? "" : "expected a window from 0 to 2 s";
-    });
-    m.finish();
-  }
-  if (!(p.swingEnd.thighTargetFlexion > p.initial.hipFlexion)) {
-    yaml.fail("swing_end", "thigh_target_flexion_deg must be above the initial hip flexion",
-              formatNumber(p.swingEnd.thighTargetFlexion * kRadToDeg) + " deg");
-  }
-  p.hipMoment = readHipMoment(yaml);
+  YamlReadArchive a(yaml);
+  serialize(a, p);
   yaml.finish();
   return p;
+}
+
+// The comment lines (and blank lines) a file starts with: its provenance, kept on rewrite.
+std::string leadingComments(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first != std::string::npos && line[first] != '#') break;
+    out += line + "\n";
+  }
+  return out;
 }
 
 }  // namespace
@@ -129,6 +149,58 @@ Participant loadParticipant(const std::string& path) {
 Participant parseParticipant(const std::string& text, const std::string& path) {
   YamlMap yaml = YamlMap::loadString(text, path);
   return readParticipant(yaml);
+}
+
+std::string formatParticipantYaml(const Participant& participant, const std::string& baseDir, const std::string& header) {
+  return writeYamlDocument(participant, baseDir, header);
+}
+
+void storeParticipants(const std::vector<ParticipantEdit>& edits) {
+  namespace fs = std::filesystem;
+  struct Staged {
+    fs::path target, temp;
+  };
+  std::vector<Staged> staged;
+  auto discard = [&] {
+    std::error_code ec;
+    for (const auto& s : staged) fs::remove(s.temp, ec);
+  };
+  try {
+    for (const auto& e : edits) {
+      std::error_code ec;
+      // Write through a symlink: replace what it points to, keep the link.
+      const fs::path target = fs::is_symlink(e.path, ec) ? fs::canonical(e.path, ec) : fs::path(e.path);
+      if (ec) throw RunError(e.path + ": cannot resolve the symlink: " + ec.message());
+      const std::string dir = target.parent_path().empty() ? "." : target.parent_path().string();
+      const std::string text = leadingComments(readFile(target.string())) +
+                               formatParticipantYaml(e.participant, dir);
+      // Loads back to what was meant, or nothing is written.
+      const Participant back = parseParticipant(text, target.string());
+      if (formatParticipantYaml(back, dir) != formatParticipantYaml(e.participant, dir))
+        throw RunError(e.path + ": the rewritten file does not load back to the intended participant; not written");
+      const fs::path temp = target.string() + ".tmp-" + std::to_string(::getpid());
+      staged.push_back({target, temp});
+      {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out << text;
+        out.flush();
+        if (!out) throw RunError(temp.string() + ": cannot write (disk full or no permission?)");
+      }
+      fs::permissions(temp, fs::status(target).permissions(), fs::perm_options::replace, ec);
+      if (ec) throw RunError(temp.string() + ": cannot set permissions: " + ec.message());
+    }
+  } catch (...) {
+    discard();
+    throw;
+  }
+  for (const auto& s : staged) {
+    std::error_code ec;
+    fs::rename(s.temp, s.target, ec);
+    if (ec) {
+      discard();
+      throw RunError(s.target.string() + ": cannot replace the file: " + ec.message());
+    }
+  }
 }
 
 }  // namespace swingsim

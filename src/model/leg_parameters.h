@@ -65,6 +65,7 @@ struct AddedMass {
 struct Participant {
   std::string path;  ///< file it was loaded from
   std::string name;
+  std::string source;  ///< where the numbers come from (free text)
   double height = 0;    ///< m, standing height
   double bodyMass = 0;  ///< kg
   SegmentParams thigh, shank, foot;
