@@ -1,250 +1,224 @@
 #include "io/knee_model_loader.h"
-#include "core/units.h"
 
-#include <cmath>
+#include <stdexcept>
 
 #include "core/output_files.h"
-#include "io/yaml_reader.h"
-#include "knee/damping_table.h"
-#include "knee/knee_added_effects.h"
-#include "knee/mauch_cylinder.h"
+#include "io/yaml_archive.h"
 
 namespace swingsim {
 
+// ---- The knee model file format, described once -------------------------------------------
+
 namespace {
 
+std::string mustBeDialSetting(double v) { return (v == 0 || v == 90 || v == 180) ? "" : "must be a dial setting: 0, 90 or 180"; }
 
-std::unique_ptr<KneeLaw> readDampingTable(YamlMap& yaml) {
-  YamlMap t = yaml.getMap("damping_table");
-  DampingTableParams p;
-  p.referenceRate = t.getDouble("reference_speed_deg_s", 150.0, mustBePositive) * kDegToRad;
-  std::string rule = t.getChoice("speed_rule", {"linear", "constant"}, "linear");
-  p.speedRule = rule == "linear" ? DampingSpeedRule::kLinear : DampingSpeedRule::kConstant;
-  p.extensionFactor = t.getDouble("extension_factor", 1.0, mustBeNonNegative);
-  p.smoothingRate = t.getDouble("smoothing_speed_deg_s", 30.0, mustBePositive) * kDegToRad;
-  std::vector<double> angles = t.getDoubleList("flexion_deg");
-  p.moment = t.getDoubleList("moment_Nm");
-  if (angles.size() < 2) t.fail("flexion_deg", "expected at least 2 angles", std::to_string(angles.size()));
-  if (p.moment.size() != angles.size())
-    t.fail("moment_Nm", "expected one moment per angle in flexion_deg (" + std::to_string(angles.size()) + ")",
-           std::to_string(p.moment.size()) + " values");
-  for (std::size_t i = 0; i < angles.size(); ++i) {
-    if (i > 0 && !(angles[i] > angles[i - 1]))
-      t.fail("flexion_deg", "angles must strictly increase", formatNumber(angles[i]) + " after " + formatNumber(angles[i - 1]));
-    if (p.moment[i] < 0) t.fail("moment_Nm", "resisting moments must not be negative", formatNumber(p.moment[i]));
-    p.flexion.push_back(angles[i] * kDegToRad);
-  }
-  t.finish();
-  return std::make_unique<DampingTable>(p);
-}
-
-std::string mustBeDialSetting(double v) {
-  return (v == 0 || v == 90 || v == 180) ? "" : "must be a dial setting: 0, 90 or 180";
-}
+// Contexts that pick which fields of a struct a map holds.
+struct SwitchesOf {};
+struct CoulombOf {};
+struct OrificeOf {};
+struct InertiaOf {};
+struct PositionDampingOf {};
+struct KneeCoulombOf {};
+struct ViscousOf {};
+struct AssistOf {};
+// Reading a dial setting's coefficient rows: the model's phase count and the phases seen.
+struct RowContext {
+  int phases;
+  std::vector<bool>* seen;
+};
+// Reading the list of dial settings: the model's phase count and the settings seen.
+struct SettingContext {
+  int phases;
+  std::vector<std::pair<double, double>>* seen;
+};
 
 }  // namespace
 
-MauchAddedEffects readMauchAddedEffects(YamlMap& m, int phases) {
-  MauchAddedEffects e;
-  if (m.has("hyperextension_phase")) {
-    if (phases != 2 && phases != 0)
-      m.fail("hyperextension_phase", "only a 2-phase model can add a hyperextension phase (the 4-phase model has one)",
-             std::to_string(phases) + " phases");
-    YamlMap h = m.getMap("hyperextension_phase");
-    e.hyperextensionPhase = true;
-    e.hyperextension.f = h.getDouble("f_N");
-    e.hyperextension.k = h.getDouble("k_N_per_m");
-    e.hyperextension.c = h.getDouble("c_Ns_per_m");
-    h.finish();
+template <class A>
+void serialize(A& a, DampingTableParams& p) {
+  a.optionalAngle("reference_speed_deg_s", p.referenceRate, mustBePositive);
+  a.choice("speed_rule", p.speedRule, {{"linear", DampingSpeedRule::kLinear}, {"constant", DampingSpeedRule::kConstant}},
+           true);
+  a.optionalNumber("extension_factor", p.extensionFactor, mustBeNonNegative);
+  a.optionalAngle("smoothing_speed_deg_s", p.smoothingRate, mustBePositive);
+  a.angles("flexion_deg", p.flexion);
+  a.numbers("moment_Nm", p.moment);
+  a.require(p.flexion.size() >= 2, "flexion_deg", "expected at least 2 angles", [&] { return std::to_string(p.flexion.size()); });
+  a.require(p.moment.size() == p.flexion.size(), "moment_Nm",
+            "expected one moment per angle in flexion_deg (" + std::to_string(p.flexion.size()) + ")",
+            [&] { return std::to_string(p.moment.size()) + " values"; });
+  for (std::size_t i = 0; i < p.flexion.size(); ++i) {
+    if (i > 0)
+      a.require(p.flexion[i] > p.flexion[i - 1], "flexion_deg", "angles must strictly increase",
+                [&] { return formatDegrees(p.flexion[i]) + " after " + formatDegrees(p.flexion[i - 1]); });
+    a.require(p.moment[i] >= 0, "moment_Nm", "resisting moments must not be negative", [&] { return formatNumber(p.moment[i]); });
   }
-  if (m.has("coulomb_friction")) {
-    YamlMap c = m.getMap("coulomb_friction");
-    e.coulombFriction = true;
-    e.coulombForce = c.getDouble("force_N");
-    e.coulombWidth = c.getDouble("width_m_per_s", e.coulombWidth, mustBePositive);
-    c.finish();
-  }
-  if (m.has("orifice_quadratic")) {
-    YamlMap c = m.getMap("orifice_quadratic");
-    e.orificeQuadratic = true;
-    e.orificeCoefficient = c.getDouble("coefficient_Ns2_per_m2");
-    c.finish();
-  }
-  if (m.has("inertia")) {
-    YamlMap c = m.getMap("inertia");
-    e.inertia = true;
-    e.pistonMass = c.getDouble("mass_kg");
-    c.finish();
-  }
-  if (m.has("position_dependent_damping")) {
-    YamlMap c = m.getMap("position_dependent_damping");
-    e.positionDependentDamping = true;
-    e.positionDamping = c.getDouble("coefficient_Ns_per_m2");
-    c.finish();
-  }
-  m.finish();
-  return e;
 }
 
-MauchCylinderParams readMauchCylinder(YamlMap& yaml) {
-  MauchCylinderParams p;
-  p.phases = yaml.getInt("phases", 0);
-  if (p.phases != 2 && p.phases != 4) {
-    if (!yaml.has("phases")) yaml.getDouble("phases");  // throws "required key is missing"
-    yaml.fail("phases", "must be 2 or 4 (Chien 2014 2-phase or 4-phase model)", std::to_string(p.phases));
-  }
-  if (yaml.has("geometry")) {
-    YamlMap g = yaml.getMap("geometry");
-    p.geometry.ab = g.getDouble("ab_m", p.geometry.ab, mustBePositive);
-    p.geometry.ac = g.getDouble("ac_m", p.geometry.ac, mustBePositive);
-    if (p.geometry.ab == p.geometry.ac) g.fail("ac_m", "must differ from ab_m", formatNumber(p.geometry.ac));
-    g.finish();
-  }
-  YamlMap sw = yaml.getMap("switches");
-  p.switches.velocityWidth = sw.getDouble("velocity_width_m_per_s", mustBePositive);
-  p.switches.positionWidth = sw.getDouble("position_width_m", mustBePositive);
-  p.switches.hyperextensionPosition = sw.getDouble("hyperextension_position_m");
-  p.switches.latchRate = sw.getDouble("latch_rate_per_s", mustBePositive);
-  p.initialLatch = sw.getDouble("initial_latch", 1.0, [](double v) {
-    return v >= 0 && v <= 1 ? "" : "must be in [0, 1]";
-  });
-  sw.finish();
+template <class A>
+void serialize(A& a, KneeGeometryParams& g) {
+  a.optionalNumber("ab_m", g.ab, mustBePositive);
+  a.optionalNumber("ac_m", g.ac, mustBePositive);
+  a.require(g.ab != g.ac, "ac_m", "must differ from ab_m", [&] { return formatNumber(g.ac); });
+}
 
-  const double flexionDial = yaml.getDouble("flexion_dial_deg", mustBeDialSetting);
-  const double extensionDial = yaml.getDouble("extension_dial_deg", mustBeDialSetting);
-  bool found = false;
-  std::vector<std::pair<double, double>> seen;
-  for (YamlMap& setting : yaml.getMapList("settings")) {
-    const double f = setting.getDouble("flexion_dial_deg", mustBeDialSetting);
-    const double e = setting.getDouble("extension_dial_deg", mustBeDialSetting);
-    for (const auto& fe : seen) {
-      if (fe.first == f && fe.second == e)
-        setting.fail("flexion_dial_deg", "dial setting appears twice", "F" + formatNumber(f) + "E" + formatNumber(e));
+template <class A>
+void serialize(A& a, MauchCylinderParams& p, SwitchesOf) {
+  a.number("velocity_width_m_per_s", p.switches.velocityWidth, mustBePositive);
+  a.number("position_width_m", p.switches.positionWidth, mustBePositive);
+  a.number("hyperextension_position_m", p.switches.hyperextensionPosition);
+  a.number("latch_rate_per_s", p.switches.latchRate, mustBePositive);
+  a.optionalNumber("initial_latch", p.initialLatch, [](double v) { return v >= 0 && v <= 1 ? "" : "must be in [0, 1]"; });
+}
+
+template <class A>
+void serialize(A& a, MauchCoefficientRow& r, RowContext context) {
+  a.integer("phase", r.phase);
+  a.require(r.phase >= 1 && r.phase <= context.phases, "phase",
+            "must be a phase number from 1 to " + std::to_string(context.phases), [&] { return std::to_string(r.phase); });
+  if (A::kReading) {
+    std::vector<bool>& seen = *context.seen;
+    const auto index = static_cast<std::size_t>(r.phase - 1);
+    a.require(!seen[index], "phase", "phase appears twice", [&] { return std::to_string(r.phase); });
+    seen[index] = true;
+  }
+  a.number("f_N", r.coefficients.f);
+  a.number("k_N_per_m", r.coefficients.k);
+  a.number("c_Ns_per_m", r.coefficients.c);
+}
+
+template <class A>
+void serialize(A& a, MauchDialSetting& s, SettingContext context) {
+  a.number("flexion_dial_deg", s.flexionDial, mustBeDialSetting);
+  a.number("extension_dial_deg", s.extensionDial, mustBeDialSetting);
+  if (A::kReading) {
+    for (const auto& fe : *context.seen)
+      a.require(!(fe.first == s.flexionDial && fe.second == s.extensionDial), "flexion_dial_deg", "dial setting appears twice",
+                [&] { return "F" + formatNumber(s.flexionDial) + "E" + formatNumber(s.extensionDial); });
+    context.seen->emplace_back(s.flexionDial, s.extensionDial);
+  }
+  std::vector<bool> seen(static_cast<std::size_t>(context.phases), false);
+  a.mapList("coefficients", s.rows, RowContext{context.phases, &seen});
+  if (A::kReading)
+    for (int i = 0; i < context.phases; ++i)
+      a.require(seen[static_cast<std::size_t>(i)], "coefficients",
+                "phase " + std::to_string(i + 1) + " is missing; a " + std::to_string(context.phases) +
+                    "-phase model needs phases 1 to " + std::to_string(context.phases),
+                [&] { return std::to_string(s.rows.size()) + " phases"; });
+}
+
+template <class A>
+void serialize(A& a, MauchAddedEffects& e, CoulombOf) {
+  a.number("force_N", e.coulombForce);
+  a.optionalNumber("width_m_per_s", e.coulombWidth, mustBePositive);
+}
+template <class A>
+void serialize(A& a, MauchAddedEffects& e, OrificeOf) { a.number("coefficient_Ns2_per_m2", e.orificeCoefficient); }
+template <class A>
+void serialize(A& a, MauchAddedEffects& e, InertiaOf) { a.number("mass_kg", e.pistonMass); }
+template <class A>
+void serialize(A& a, MauchAddedEffects& e, PositionDampingOf) { a.number("coefficient_Ns_per_m2", e.positionDamping); }
+template <class A>
+void serialize(A& a, MauchPhaseCoefficients& c) {
+  a.number("f_N", c.f);
+  a.number("k_N_per_m", c.k);
+  a.number("c_Ns_per_m", c.c);
+}
+
+template <class A>
+void serialize(A& a, MauchAddedEffects& e, int phases) {
+  a.optionalMap("hyperextension_phase", e.hyperextension, e.hyperextensionPhase);
+  a.require(!e.hyperextensionPhase || phases == 2 || phases == 0, "hyperextension_phase",
+            "only a 2-phase model can add a hyperextension phase (the 4-phase model has one)",
+            [&] { return std::to_string(phases) + " phases"; });
+  a.optionalMap("coulomb_friction", e, e.coulombFriction, CoulombOf{});
+  a.optionalMap("orifice_quadratic", e, e.orificeQuadratic, OrificeOf{});
+  a.optionalMap("inertia", e, e.inertia, InertiaOf{});
+  a.optionalMap("position_dependent_damping", e, e.positionDependentDamping, PositionDampingOf{});
+}
+
+template <class A>
+void serialize(A& a, KneeAddedEffectsParams& p, KneeCoulombOf) {
+  a.number("moment_Nm", p.coulombMoment, mustBeNonNegative);
+  a.optionalAngle("smoothing_deg_s", p.coulombSmoothingRate, mustBePositive);
+}
+template <class A>
+void serialize(A& a, KneeAddedEffectsParams& p, ViscousOf) { a.number("damping_Nm_s_per_rad", p.viscousDamping, mustBeNonNegative); }
+template <class A>
+void serialize(A& a, KneeAddedEffectsParams& p, AssistOf) { a.number("stiffness_Nm_per_rad", p.assistStiffness, mustBeNonNegative); }
+
+template <class A>
+void serialize(A& a, KneeAddedEffectsParams& p) {
+  a.optionalNumber("model_scale", p.modelScale, mustBePositive);
+  // The writer writes a law only where it acts; the reader learns from the file.
+  bool coulomb = p.coulombMoment != 0, viscous = p.viscousDamping != 0, assist = p.assistStiffness != 0;
+  a.optionalMap("coulomb_friction", p, coulomb, KneeCoulombOf{});
+  a.optionalMap("viscous_damping", p, viscous, ViscousOf{});
+  a.optionalMap("extension_assist_spring", p, assist, AssistOf{});
+}
+
+template <class A>
+void serialize(A& a, JointStopParams& s) {
+  a.optionalAngle("engage_flexion_deg", s.lower,
+                  [](double v) { return v >= -30 && v <= 30 ? "" : "expected an angle near full extension, -30 to 30 deg"; });
+  a.optionalNumber("stiffness_Nm_per_rad1p5", s.stiffness, mustBePositive);
+  a.optionalNumber("dissipation_s_per_rad", s.dissipation, mustBeNonNegative);
+}
+
+template <class A>
+void serialize(A& a, KneeModelSpec& k) {
+  a.choice("kind", k.kind, {{"damping_table", KneeModelKind::kDampingTable}, {"mauch", KneeModelKind::kMauch}});
+  a.optionalText("name", k.name);
+  a.optionalText("description", k.description);
+  a.optionalText("source", k.source);
+  if (k.kind == KneeModelKind::kDampingTable) {
+    a.map("damping_table", k.table);
+  } else {
+    MauchCylinderParams& c = k.cylinder;
+    a.integer("phases", c.phases);
+    a.require(c.phases == 2 || c.phases == 4, "phases", "must be 2 or 4 (Chien 2014 2-phase or 4-phase model)",
+              [&] { return std::to_string(c.phases); });
+    a.optionalMap("geometry", c.geometry, k.hasGeometry);
+    a.map("switches", c, SwitchesOf{});
+    a.number("flexion_dial_deg", k.flexionDial, mustBeDialSetting);
+    a.number("extension_dial_deg", k.extensionDial, mustBeDialSetting);
+    std::vector<std::pair<double, double>> seen;
+    a.mapList("settings", k.settings, SettingContext{c.phases, &seen});
+    if (A::kReading) {
+      bool found = false;
+      for (const auto& s : k.settings) {
+        if (s.flexionDial != k.flexionDial || s.extensionDial != k.extensionDial) continue;
+        c.coefficients.assign(static_cast<std::size_t>(c.phases), {});
+        for (const auto& r : s.rows) c.coefficients[static_cast<std::size_t>(r.phase - 1)] = r.coefficients;
+        found = true;
+      }
+      a.require(found, "flexion_dial_deg", "no coefficient set in settings for this dial setting",
+                [&] { return "F" + formatNumber(k.flexionDial) + "E" + formatNumber(k.extensionDial); });
     }
-    seen.emplace_back(f, e);
-    std::vector<YamlMap> rows = setting.getMapList("coefficients");
-    std::vector<MauchPhaseCoefficients> coefficients(static_cast<std::size_t>(p.phases));
-    std::vector<bool> have(static_cast<std::size_t>(p.phases), false);
-    for (YamlMap& row : rows) {
-      const int phase = row.getInt("phase", 0);
-      if (phase < 1 || phase > p.phases)
-        row.fail("phase", "must be a phase number from 1 to " + std::to_string(p.phases), std::to_string(phase));
-      if (have[static_cast<std::size_t>(phase - 1)]) row.fail("phase", "phase appears twice", std::to_string(phase));
-      have[static_cast<std::size_t>(phase - 1)] = true;
-      auto& c = coefficients[static_cast<std::size_t>(phase - 1)];
-      c.f = row.getDouble("f_N");
-      c.k = row.getDouble("k_N_per_m");
-      c.c = row.getDouble("c_Ns_per_m");
-      row.finish();
-    }
-    for (int i = 0; i < p.phases; ++i) {
-      if (!have[static_cast<std::size_t>(i)])
-        setting.fail("coefficients", "phase " + std::to_string(i + 1) + " is missing; a " +
-                     std::to_string(p.phases) + "-phase model needs phases 1 to " + std::to_string(p.phases),
-                     std::to_string(rows.size()) + " phases");
-    }
-    setting.finish();
-    if (f == flexionDial && e == extensionDial) {
-      p.coefficients = coefficients;
-      found = true;
-    }
+    a.optionalMap("effects", c.effects, k.hasCylinderEffects, c.phases);
   }
-  if (!found)
-    yaml.fail("flexion_dial_deg", "no coefficient set in settings for this dial setting",
-              "F" + formatNumber(flexionDial) + "E" + formatNumber(extensionDial));
-  if (yaml.has("effects")) {
-    YamlMap effects = yaml.getMap("effects");
-    p.effects = readMauchAddedEffects(effects, p.phases);
-  }
-  return p;
+  a.optionalMap("knee_effects", k.kneeEffects, k.hasKneeEffects);
+  a.optionalMap("hyperextension_stop", k.stop, k.hasStop);
 }
 
-MauchCylinderParams loadMauchCylinder(const std::string& path) {
-  YamlMap yaml = YamlMap::loadFile(path);
-  const std::string kind = yaml.getChoice("kind", {"damping_table", "mauch"}, "");
-  if (kind != "mauch") yaml.fail("kind", "expected a Mauch cylinder model (kind: mauch)", kind);
-  yaml.getString("name", "");
-  yaml.getString("description", "");
-  yaml.getString("source", "");
-  MauchCylinderParams p = readMauchCylinder(yaml);
-  readHyperextensionStop(yaml);
-  if (yaml.has("knee_effects")) {
-    YamlMap e = yaml.getMap("knee_effects");
-    readKneeAddedEffects(e);
-  }
-  yaml.finish();
-  return p;
-}
-
-KneeAddedEffectsParams readKneeAddedEffects(YamlMap& m) {
-  KneeAddedEffectsParams p;
-  p.modelScale = m.getDouble("model_scale", 1.0, mustBePositive);
-  if (m.has("coulomb_friction")) {
-    YamlMap c = m.getMap("coulomb_friction");
-    p.coulombMoment = c.getDouble("moment_Nm", mustBeNonNegative);
-    p.coulombSmoothingRate = c.getDouble("smoothing_deg_s", p.coulombSmoothingRate / kDegToRad, mustBePositive) * kDegToRad;
-    c.finish();
-  }
-  if (m.has("viscous_damping")) {
-    YamlMap c = m.getMap("viscous_damping");
-    p.viscousDamping = c.getDouble("damping_Nm_s_per_rad", mustBeNonNegative);
-    c.finish();
-  }
-  if (m.has("extension_assist_spring")) {
-    YamlMap c = m.getMap("extension_assist_spring");
-    p.assistStiffness = c.getDouble("stiffness_Nm_per_rad", mustBeNonNegative);
-    c.finish();
-  }
-  m.finish();
-  return p;
-}
-
-JointStopParams readHyperextensionStop(YamlMap& yaml) {
-  JointStopParams p;
-  p.lower = 0.0;
-  if (!yaml.has("hyperextension_stop")) return p;
-  YamlMap s = yaml.getMap("hyperextension_stop");
-  // A hyperextension stop engages near full extension; outside this band JointStop would
-  // also reject it (lower limit above its upper one) without naming the file.
-  p.lower = s.getDouble("engage_flexion_deg", 0.0, [](double v) {
-    return v >= -30 && v <= 30 ? "" : "expected an angle near full extension, -30 to 30 deg";
-  }) * kDegToRad;
-  p.stiffness = s.getDouble("stiffness_Nm_per_rad1p5", p.stiffness, mustBePositive);
-  p.dissipation = s.getDouble("dissipation_s_per_rad", p.dissipation, mustBeNonNegative);
-  s.finish();
-  return p;
-}
+// ---- Reading and writing ------------------------------------------------------------------
 
 namespace {
 
 KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
   KneeModel model;
   model.path = path;
-  model.kind = yaml.getChoice("kind", {"damping_table", "mauch"}, "");
-  model.name = yaml.getString("name", fileStem(path));
-  yaml.getString("description", "");
-  yaml.getString("source", "");
-  if (model.kind == "damping_table") model.law.add(readDampingTable(yaml));
-  if (model.kind == "mauch") {
-    try {
-      model.law.add(std::make_unique<MauchCylinder>(readMauchCylinder(yaml)));
-    } catch (const std::invalid_argument& e) {
-      throw InputError(yaml.where() + e.what());
-    }
-  }
-  if (yaml.has("knee_effects")) {
-    YamlMap e = yaml.getMap("knee_effects");
-    const KneeAddedEffectsParams added = readKneeAddedEffects(e);
-    if (added.modelScale != 1.0) {
-      KneeLawSum scaled;
-      for (std::size_t i = 0; i < model.law.size(); ++i)
-        scaled.add(std::make_unique<ScaledKneeLaw>(model.law.part(i), added.modelScale));
-      model.law = scaled;
-    }
-    model.law.add(std::make_unique<KneeAddedEffects>(added));
-  }
-  model.law.add(std::make_unique<JointStop>(readHyperextensionStop(yaml)));
+  YamlReadArchive a(yaml);
+  serialize(a, model.spec);
   yaml.finish();
+  model.name = model.spec.name.empty() ? fileStem(path) : model.spec.name;
+  model.kind = model.spec.kind == KneeModelKind::kMauch ? "mauch" : "damping_table";
+  try {
+    model.law = makeKneeModelLaw(model.spec);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(yaml.where() + e.what());
+  }
   return model;
 }
 
@@ -258,6 +232,26 @@ KneeModel loadKneeModel(const std::string& path) {
 KneeModel parseKneeModel(const std::string& text, const std::string& path) {
   YamlMap yaml = YamlMap::loadString(text, path);
   return readKneeModel(yaml, path);
+}
+
+MauchCylinderParams loadMauchCylinder(const std::string& path) {
+  YamlMap yaml = YamlMap::loadFile(path);
+  const KneeModel model = readKneeModel(yaml, path);
+  if (model.spec.kind != KneeModelKind::kMauch)
+    yaml.fail("kind", "expected a Mauch cylinder model (kind: mauch)", model.kind);
+  return model.spec.cylinder;
+}
+
+MauchAddedEffects readMauchAddedEffects(YamlMap& effects, int phases) {
+  MauchAddedEffects e;
+  YamlReadArchive a(effects);
+  serialize(a, e, phases);
+  effects.finish();
+  return e;
+}
+
+std::string formatKneeModelYaml(const KneeModelSpec& spec, const std::string& header) {
+  return writeYamlDocument(spec, "", header);
 }
 
 }  // namespace swingsim

@@ -14,7 +14,7 @@ std::string YamlWriteArchive::relative(const std::string& path) const {
   return ec || rel.empty() ? fs::absolute(path, ec).string() : rel.generic_string();
 }
 
-std::string YamlWriteArchive::formatDegrees(double radians) {
+std::string formatDegrees(double radians) {
   char buf[64];
   for (int precision = 1; precision <= 17; ++precision) {
     std::snprintf(buf, sizeof buf, "%.*g", precision, radians * kRadToDeg);

@@ -25,6 +25,9 @@ namespace swingsim {
 
 using ValueCheck = std::function<std::string(double)>;
 
+/// The shortest decimal degrees that read back (times kDegToRad) to exactly `radians`.
+std::string formatDegrees(double radians);
+
 class YamlReadArchive {
  public:
   static constexpr bool kReading = true;
@@ -53,6 +56,11 @@ class YamlReadArchive {
   /// A path in the file, relative to the file's folder; resolved on reading.
   void path(const char* key, std::string& v) { v = map_.resolvePath(map_.getString(key)); }
   void numbers(const char* key, std::vector<double>& v) { v = map_.getDoubleList(key); }
+  /// A list of angles: radians in `v`, degrees in the file.
+  void angles(const char* key, std::vector<double>& v) {
+    v = map_.getDoubleList(key);
+    for (double& x : v) x *= kDegToRad;
+  }
   void texts(const char* key, std::vector<std::string>& v) { v = map_.getStringList(key); }
   /// A list of paths, each resolved against the file's folder.
   void paths(const char* key, std::vector<std::string>& v) {
@@ -135,6 +143,11 @@ class YamlWriteArchive {
     for (double x : v) out_ << formatNumber(x);
     out_ << YAML::EndSeq;
   }
+  void angles(const char* key, std::vector<double>& v) {
+    out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (double x : v) out_ << formatDegrees(x);
+    out_ << YAML::EndSeq;
+  }
   void texts(const char* key, std::vector<std::string>& v) {
     out_ << YAML::Key << key << YAML::Value << YAML::BeginSeq;
     for (const auto& x : v) out_ << x;
@@ -181,8 +194,6 @@ class YamlWriteArchive {
  private:
   void scalar(const char* key, const std::string& v) { out_ << YAML::Key << key << YAML::Value << v; }
   std::string relative(const std::string& path) const;
-  /// The shortest decimal degrees that read back (times kDegToRad) to exactly `radians`.
-  static std::string formatDegrees(double radians);
   YAML::Emitter& out_;
   std::string baseDir_;
 };

@@ -11,7 +11,6 @@
 #include "identify/synthetic_bench.h"
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
-#include "io/knee_model_writer.h"
 
 namespace swingsim {
 namespace {
@@ -223,9 +222,14 @@ TEST(CylinderDiagnosis, AugmentedModelRoundTripsThroughTheModelYamlAndActsAsAKne
   h.truth.effects.coulombForce = 12.5;
   h.truth.effects.positionDamping = 3e4;
   h.truth.effects.positionDependentDamping = true;
-  MauchModelText text;
-  text.name = "roundtrip";
-  const std::string yaml = formatMauchModelYaml(h.truth, text);
+  KneeModelSpec spec = loadKneeModel(kRoot + "/models/mauch-4phase.yaml").spec;
+  spec.name = "roundtrip";
+  spec.cylinder = h.truth;
+  spec.hasCylinderEffects = true;
+  MauchDialSetting setting{spec.flexionDial, spec.extensionDial, {}};
+  for (int i = 0; i < h.truth.phases; ++i) setting.rows.push_back({i + 1, h.truth.coefficients[static_cast<std::size_t>(i)]});
+  spec.settings = {setting};
+  const std::string yaml = formatKneeModelYaml(spec);
   const KneeModel km = parseKneeModel(yaml, "roundtrip.yaml");
   ASSERT_EQ(km.law.size(), 2u);  // cylinder, then the hyperextension stop
   const auto* cyl = dynamic_cast<const MauchCylinder*>(&km.law.part(0));
