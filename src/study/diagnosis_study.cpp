@@ -7,76 +7,86 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
+#include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
+
+#include <cmath>
 
 namespace swingsim {
 
+// ---- The diagnosis study format, described once -------------------------------------------
+
 namespace {
 
-// The keys both kinds share: name, description, train, validate, candidates, acceptance.
-void readCommon(YamlMap& yaml, const std::vector<std::string>& known, const char* kindName, std::string& name,
-                std::vector<std::string>& train, std::vector<std::string>& validate, EffectSelectionSettings& st) {
-  name = yaml.getString("name", fileStem(yaml.path()));
-  yaml.getString("description", "");
-  for (const auto& p : yaml.getStringList("train")) train.push_back(yaml.resolvePath(p));
-  for (const auto& p : yaml.getStringList("validate")) validate.push_back(yaml.resolvePath(p));
-  if (train.empty()) yaml.fail("train", "expected at least one CSV", "an empty list");
-  if (validate.empty())
-    yaml.fail("validate", "expected at least one CSV (the acceptance rule needs held-out data)", "an empty list");
-  std::vector<std::string> stems;
-  for (const auto& list : {train, validate})
-    for (const auto& p : list) {
-      for (const auto& st2 : stems)
-        if (st2 == fileStem(p)) yaml.fail("validate", "two files share the stem '" + st2 + "' (results are keyed by stem)", p);
-      stems.push_back(fileStem(p));
-    }
-  if (yaml.has("candidates")) {
-    for (const auto& c : yaml.getStringList("candidates")) {
-      bool ok = false;
-      for (const auto& k : known) ok = ok || k == c;
-      if (!ok) {
-        std::string all;
-        for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
-        yaml.fail("candidates", std::string("unknown ") + kindName + " effect (known: " + all + ")", c);
-      }
-      st.candidates.push_back(c);
-    }
-    if (st.candidates.empty()) yaml.fail("candidates", "expected at least one effect", "an empty list");
-  }
-  if (yaml.has("acceptance")) {
-    YamlMap a = yaml.getMap("acceptance");
-    st.alpha = a.getDouble("alpha", st.alpha, [](double v) { return v > 0 && v < 0.5 ? "" : "must be in (0, 0.5)"; });
-    st.minValidationImprovement = a.getDouble("min_validation_improvement", st.minValidationImprovement,
-                                              [](double v) { return v >= 0 && v < 1 ? "" : "must be in [0, 1)"; });
-    st.maxEffects = a.getInt("max_effects", st.maxEffects);
-    if (st.maxEffects < 1 || st.maxEffects > 6) a.fail("max_effects", "must be 1 to 6", std::to_string(st.maxEffects));
-    st.measurementNoise = a.getDouble("measurement_noise", st.measurementNoise, mustBeNonNegative);
-    st.explainedNoiseRatio = a.getDouble("explained_noise_ratio", st.explainedNoiseRatio, [](double v) {
-      return v >= 1 && v <= 10 ? "" : "must be in [1, 10]";
-    });
-    st.whitenessLags = a.getInt("whiteness_lags", st.whitenessLags);
-    if (st.whitenessLags < 1 || st.whitenessLags > 1000)
-      a.fail("whiteness_lags", "must be 1 to 1000", std::to_string(st.whitenessLags));
-    a.finish();
-  }
-}
+std::string inRange(double v, double lo, double hi, const char* what) { return v >= lo && v <= hi ? "" : what; }
 
 }  // namespace
+
+template <class A>
+void serialize(A& a, EffectSelectionSettings& st) {
+  a.optionalNumber("alpha", st.alpha, [](double v) { return v > 0 && v < 0.5 ? "" : "must be in (0, 0.5)"; });
+  a.optionalNumber("min_validation_improvement", st.minValidationImprovement,
+                   [](double v) { return v >= 0 && v < 1 ? "" : "must be in [0, 1)"; });
+  double maxEffects = st.maxEffects, lags = st.whitenessLags;
+  a.optionalNumber("max_effects", maxEffects, [](double v) { return v == std::floor(v) ? inRange(v, 1, 6, "must be 1 to 6") : "must be 1 to 6"; });
+  a.optionalNumber("whiteness_lags", lags, [](double v) { return v == std::floor(v) ? inRange(v, 1, 1000, "must be 1 to 1000") : "must be 1 to 1000"; });
+  st.maxEffects = static_cast<int>(maxEffects);
+  st.whitenessLags = static_cast<int>(lags);
+  a.optionalNumber("measurement_noise", st.measurementNoise, mustBeNonNegative);
+  a.optionalNumber("explained_noise_ratio", st.explainedNoiseRatio, [](double v) { return inRange(v, 1, 10, "must be in [1, 10]"); });
+}
+
+template <class A>
+void serialize(A& a, DiagnosisStudy& s) {
+  a.choice("kind", s.plant, {{"cylinder-diagnosis", PlantKind::kCylinder}, {"swing-diagnosis", PlantKind::kSwing}});
+  if (s.plant == PlantKind::kSwing) a.path("participant", s.participantPath);
+  a.path("base_model", s.baseModelPath);
+  a.optionalText("name", s.name);
+  a.optionalText("description", s.description);
+  a.paths("train", s.train);
+  a.paths("validate", s.validate);
+  a.require(!s.train.empty(), "train", "expected at least one CSV", [] { return std::string("an empty list"); });
+  a.require(!s.validate.empty(), "validate", "expected at least one CSV (the acceptance rule needs held-out data)",
+            [] { return std::string("an empty list"); });
+  std::vector<std::string> stems;
+  for (const auto* list : {&s.train, &s.validate})
+    for (const auto& p : *list) {
+      for (const auto& other : stems)
+        a.require(other != fileStem(p), "validate", "two files share the stem '" + other + "' (results are keyed by stem)",
+                  [&] { return p; });
+      stems.push_back(fileStem(p));
+    }
+  // Candidates: all of the plant's effects unless the study names some.
+  bool namesCandidates = !s.settings.candidates.empty();
+  if constexpr (A::kReading) namesCandidates = a.has("candidates");
+  if (namesCandidates) {
+    a.texts("candidates", s.settings.candidates);
+    a.require(!s.settings.candidates.empty(), "candidates", "expected at least one effect", [] { return std::string("an empty list"); });
+    std::string all;
+    for (const auto& k : effectNames(s.plant)) all += (all.empty() ? "" : ", ") + k;
+    for (const auto& c : s.settings.candidates)
+      a.require(findEffect(s.plant, c) != nullptr, "candidates", "unknown " + plantName(s.plant) + " effect (known: " + all + ")",
+                [&] { return c; });
+  }
+  bool acceptance = true;
+  a.optionalMap("acceptance", s.settings, acceptance);
+  if (s.plant == PlantKind::kCylinder) {
+    a.optionalFlag("fit_switches", s.fitSwitches);
+    a.optionalNumber("plot_seconds", s.plotSeconds, mustBePositive);
+  }
+}
 
 DiagnosisStudy readDiagnosisStudy(YamlMap& yaml) {
   DiagnosisStudy s;
   s.path = yaml.path();
-  if (!yaml.has("kind")) yaml.getString("kind");  // "required key is missing"
-  s.plant = yaml.getChoice("kind", {"cylinder-diagnosis", "swing-diagnosis"}, "") == "swing-diagnosis" ? PlantKind::kSwing
-                                                                                                      : PlantKind::kCylinder;
-  if (s.plant == PlantKind::kSwing) s.participantPath = yaml.resolvePath(yaml.getString("participant"));
-  s.baseModelPath = yaml.resolvePath(yaml.getString("base_model"));
-  readCommon(yaml, effectNames(s.plant), plantName(s.plant).c_str(), s.name, s.train, s.validate, s.settings);
-  if (s.plant == PlantKind::kCylinder) {
-    s.fitSwitches = yaml.getBool("fit_switches", false);
-    s.plotSeconds = yaml.getDouble("plot_seconds", s.plotSeconds, mustBePositive);
-  }
+  YamlReadArchive a(yaml);
+  serialize(a, s);
+  if (s.name.empty()) s.name = fileStem(yaml.path());
   return s;
+}
+
+std::string formatDiagnosisStudyYaml(const DiagnosisStudy& study, const std::string& baseDir) {
+  return writeYamlDocument(study, baseDir, "");
 }
 
 DiagnosisStudy loadDiagnosisStudy(const std::string& path) {

@@ -22,7 +22,7 @@ class YamlMap;
 
 struct DiagnosisStudy {
   PlantKind plant = PlantKind::kCylinder;
-  std::string path, name;
+  std::string path, name, description;
   std::string baseModelPath;          ///< resolved knee model YAML
   std::string participantPath;        ///< resolved participant YAML (swing)
   std::vector<std::string> train;     ///< resolved record CSV paths
@@ -37,6 +37,8 @@ struct DiagnosisStudy {
 DiagnosisStudy readDiagnosisStudy(YamlMap& yaml);
 /// Loads and reads a study file, rejecting unknown keys.
 DiagnosisStudy loadDiagnosisStudy(const std::string& path);
+/// The YAML text of a study as a file in folder `baseDir` (paths written relative to it).
+std::string formatDiagnosisStudyYaml(const DiagnosisStudy& study, const std::string& baseDir);
 
 /// Reads the study's base model, participant and records and builds its plant. Each
 /// training record needs at least `extraTrainRows` rows more than the model has linear
