@@ -1,5 +1,5 @@
 // libFuzzer target: compare/diagnose study YAML (studies/diagnose-demo-*.yaml), both kinds,
-// read as the CLI reads them (kind first, then the kind's reader, then unknown keys).
+// read as the CLI reads them (one reader for both kinds, then unknown keys).
 #include "fuzz_common.h"
 #include "study/diagnosis_study.h"
 #include "io/yaml_reader.h"
@@ -8,11 +8,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace swingsim;
   fuzz::expectOnlyInputErrors([&] {
     YamlMap yaml = YamlMap::loadString(fuzz::asText(data, size), fuzz::sourcePath("studies/fuzz.yaml"));
-    if (yaml.getChoice("kind", {"cylinder-diagnosis", "swing-diagnosis"}, "") == "swing-diagnosis") {
-      readSwingDiagnosisStudy(yaml);
-    } else {
-      readCylinderDiagnosisStudy(yaml);
-    }
+    readDiagnosisStudy(yaml);
     yaml.finish();
   });
   return 0;
