@@ -19,19 +19,9 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::slurp;
 
-fs::path freshDir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("swingsim_calibrate_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path freshDir(const std::string& name) { return testing::freshTempDir("swingsim_calibrate_test", name); }
 
 // P1 with the knee model path made absolute, so the file can live anywhere.
 std::string p1Text() {

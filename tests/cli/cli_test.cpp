@@ -22,12 +22,7 @@ namespace fs = std::filesystem;
 using swingsim::testing::CliRun;
 CliRun run(const std::string& args) { return swingsim::testing::runSwingsim(args); }
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("swingsim_cli_test_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path freshDir(const std::string& name) { return swingsim::testing::freshTempDir("swingsim_cli_test", name); }
 
 TEST(Cli, NoArgumentsPrintsUsageListingEveryCommand) {
   CliRun r = run("");

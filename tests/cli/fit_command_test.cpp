@@ -20,19 +20,9 @@ namespace fs = std::filesystem;
 using RunResult = swingsim::testing::CliRun;
 RunResult run(const std::string& args) { return swingsim::testing::runSwingsim(args); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using swingsim::testing::slurp;
 
-fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / "swingsim_fit_command_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return swingsim::testing::freshTempDir("swingsim_fit_command_test", name); }
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 

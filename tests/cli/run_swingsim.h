@@ -1,9 +1,13 @@
 #pragma once
-// Test support: run the real `swingsim` binary and capture what it printed.
+// Test support: run the real `swingsim` binary and capture what it printed; scratch folders
+// and file contents for the tests that check what it wrote.
 #include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace swingsim::testing {
@@ -22,6 +26,22 @@ inline CliRun runSwingsim(const std::string& args) {
   while (pipe && std::fgets(buf.data(), buf.size(), pipe)) out += buf.data();
   const int status = pipe ? pclose(pipe) : -1;
   return {status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+/// The whole content of a file ("" if it cannot be read).
+inline std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// An empty folder `<temp>/<suite>/<name>`, created anew.
+inline std::filesystem::path freshTempDir(const std::string& suite, const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / suite / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 
 }  // namespace swingsim::testing
