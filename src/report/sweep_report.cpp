@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "io/csv_table.h"
+#include "core/input_error.h"
 #include "io/json_file.h"
 #include "report/svg_plot.h"
 #include "swing/burkett_published.h"
@@ -140,25 +141,46 @@ std::string formatSweepJson(const SweepResults& results) {
   return formatJson({{"study", results.study}, {"participants", participants}});
 }
 
+namespace {
+
+// A CSV field per RFC 4180: quoted when it holds a comma, a quote or a line break, with
+// quotes doubled.
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+// A number with `decimals` decimals; one too large for fixed notation in exponent form.
+std::string csvNumber(double v, int decimals) {
+  char buf[64];
+  if (std::isfinite(v) && std::fabs(v) < 1e15)
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  else
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
 std::string formatSweepCsv(const SweepResults& results) {
   // status: ended (a swing time), failed (the swing ran and did not end: the report says
   // why) or not_run (an interrupted sweep never reached the point).
   std::string out = "participant,lowering_m,added_mass_kg,added_mass_below_knee_m,swing_ended,swing_time_s,"
                     "peak_knee_flexion_deg,peak_knee_flexion_time_s,bounce,min_toe_clearance_m,status\n";
-  char line[256];
   for (const auto& ps : results.participants) {
     for (const auto* list : {&ps.points, &ps.massPoints}) {
       for (const auto& pt : *list) {
+        out += csvField(ps.name) + "," + csvNumber(pt.lowering, 3) + "," + csvNumber(pt.added.mass, 3) + "," +
+               csvNumber(pt.added.distanceBelowKnee, 3) + ",";
         if (pt.ok) {
-          std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,1,%.6f,%.3f,%.6f,%d,%.4f,ended\n", ps.name.c_str(), pt.lowering,
-                        pt.added.mass, pt.added.distanceBelowKnee, pt.result.swingTime,
-                        pt.result.peakKneeFlexion * kRadToDeg, pt.result.peakKneeFlexionTime, pt.result.bounce ? 1 : 0,
-                        pt.result.minToeClearance);
+          out += "1," + csvNumber(pt.result.swingTime, 6) + "," + csvNumber(pt.result.peakKneeFlexion * kRadToDeg, 3) + "," +
+                 csvNumber(pt.result.peakKneeFlexionTime, 6) + "," + (pt.result.bounce ? "1" : "0") + "," +
+                 csvNumber(pt.result.minToeClearance, 4) + ",ended\n";
         } else {
-          std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,0,,,,,,%s\n", ps.name.c_str(), pt.lowering, pt.added.mass,
-                        pt.added.distanceBelowKnee, pt.ran ? "failed" : "not_run");
+          out += std::string("0,,,,,,") + (pt.ran ? "failed" : "not_run") + "\n";
         }
-        out += line;
       }
     }
   }
@@ -381,6 +403,20 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     }
     md += "```\n" + formatSweepTables(study, SweepResults{results.study, {ps}}) + "```\n\n";
   }
+
+  // Every point that ran and failed, with its full message (the tables give the short form).
+  std::string failures;
+  for (const auto& ps : results.participants)
+    for (const auto* list : {&ps.points, &ps.massPoints})
+      for (const auto& pt : *list) {
+        if (!pt.ran || pt.ok) continue;
+        failures += "- ";
+        if (list == &ps.massPoints)
+          failures += "with " + formatNumber(pt.added.mass) + " kg added " + formatNumber(pt.added.distanceBelowKnee) +
+                      " m below the knee: ";
+        failures += pt.failure + "\n";
+      }
+  if (!failures.empty()) md += "## Points that failed\n\n" + failures + "\n";
 
   md += "## Assumptions used in this run\n\n";
   if (!study.participants.empty()) {

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <thread>
 
@@ -111,6 +112,12 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
       pt.ok = true;
     } catch (const RunError& e) {
       pt.failure = e.what();
+    } catch (const std::exception& e) {
+      // Anything else (Simbody's own exceptions, a bad_alloc) is this point's failure with
+      // the participant and lowering that caused it, never the end of the whole sweep.
+      char where[96];
+      std::snprintf(where, sizeof where, " at lowering %.4g m", pt.lowering);
+      pt.failure = p.name + where + ": the simulation failed: " + e.what();
     }
     pt.ran = true;
   };

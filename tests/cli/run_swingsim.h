@@ -2,6 +2,7 @@
 // Test support: run the real `swingsim` binary and capture what it printed; scratch folders
 // and file contents for the tests that check what it wrote.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -36,9 +37,10 @@ inline std::string slurp(const std::filesystem::path& path) {
   return s.str();
 }
 
-/// An empty folder `<temp>/<suite>/<name>`, created anew.
+/// An empty folder `<temp>/<suite>-<pid>/<name>`, created anew (the pid keeps two test runs
+/// on one machine out of each other's files).
 inline std::filesystem::path freshTempDir(const std::string& suite, const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / suite / name;
+  const auto dir = std::filesystem::temp_directory_path() / (suite + "-" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

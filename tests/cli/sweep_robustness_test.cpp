@@ -162,4 +162,20 @@ TEST(SweepRobustness, SameStudyTwiceGivesByteIdenticalFiles) {
   }
 }
 
+// A Simbody exception inside a worker thread (an added mass of 1e300 kg: "Inertia matrix
+// contains a NaN") is that point's failure, with the participant and lowering that caused
+// it, never an abort of the whole sweep.
+TEST(SweepRobustness, AnExceptionInAWorkerIsAFailedPointNotAnAbort) {
+  const fs::path dir = freshDir("worker_exception");
+  const fs::path study = writeStudy(dir, "heavy", 0.1, 0.1);
+  const fs::path out = dir / "out";
+  const Finished r = runToEnd({"sweep", study.string(), "--out", out.string(), "--add-mass", "1e300@0.1"}, dir / "log.txt");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string csv = slurp(out / "sweep.csv");
+  // The plain points ran; every added-mass point failed and says so.
+  EXPECT_THAT(csv, HasSubstr(",ended\n"));
+  EXPECT_THAT(csv, HasSubstr(",failed\n"));
+  EXPECT_THAT(slurp(out / "report.md"), HasSubstr("P1 at lowering 0 m: the simulation failed:"));
+}
+
 }  // namespace
