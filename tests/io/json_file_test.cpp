@@ -3,7 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <iterator>
 #include <limits>
+#include <unistd.h>
+
+#include "core/output_files.h"
 
 namespace swingsim {
 namespace {
@@ -27,6 +32,23 @@ TEST(JsonFile, InvalidUtf8InAStringIsReplacedSoTheFileStaysValid) {
   const std::string text = formatJson(doc);
   const Json back = Json::parse(text);  // throws on invalid UTF-8
   EXPECT_EQ(back["name"].get<std::string>(), "Jos\xEF\xBF\xBD");
+}
+
+// writeJsonFile itself: the file on disk (parent folders created, no temporary left beside
+// it) parses back to the document that was written, and holds exactly formatJson's text.
+TEST(JsonFile, WrittenFileParsesBackToTheSameDocument) {
+  const auto dir = std::filesystem::temp_directory_path() / ("swingsim_json_file_test_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  const std::string path = (dir / "nested" / "swing.json").string();
+  const Json doc = {{"participant", "P1"},
+                    {"swing_time_s", 0.42},
+                    {"bounce", false},
+                    {"events", Json::array({{{"name", "toe_off"}, {"time_s", 0.0}}})}};
+  writeJsonFile(path, doc);
+  EXPECT_EQ(Json::parse(readFile(path)), doc);
+  EXPECT_EQ(readFile(path), formatJson(doc));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir / "nested"), {}), 1);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
