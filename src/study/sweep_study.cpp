@@ -3,59 +3,95 @@
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
 
 namespace swingsim {
+
+// ---- The knee-axis sweep study format, described once ------------------------------------
+
+namespace {
+
+struct LoweringOf {};
+struct AddedMassOf {};
+
+std::vector<std::pair<std::string, SwingIntegrator>> integratorChoices() {
+  std::vector<std::pair<std::string, SwingIntegrator>> choices;
+  for (const auto& key : integratorKeys()) choices.emplace_back(key, *findIntegrator(key));
+  return choices;
+}
+
+}  // namespace
+
+template <class A>
+void serialize(A& a, SweepStudy& s, LoweringOf) {
+  // The grid is rounded to 1 um (sweepLowerings): a smaller step would never advance. With
+  // lowerings capped by the shank (calcMaxLowering), this also bounds a sweep to a few
+  // thousand swings per participant.
+  a.optionalNumber("step_m", s.loweringStep, [](double v) { return v >= 1e-4 ? "" : "expected a step of at least 0.0001 m"; });
+  a.optionalNumber("max_m", s.loweringMax, mustBeNonNegative);
+  a.optionalFlag("include_published", s.includePublishedLowerings);
+}
+
+template <class A>
+void serialize(A& a, SweepStudy& s, AddedMassOf) {
+  a.numbers("mass_kg", s.addedMasses);
+  a.numbers("distance_below_knee_m", s.addedMassDistances);
+  for (double v : s.addedMasses)
+    a.require(v >= 0, "mass_kg", "masses must not be negative", [&] { return formatNumber(v); });
+  for (double v : s.addedMassDistances)
+    a.require(v >= 0, "distance_below_knee_m", "distances must not be negative", [&] { return formatNumber(v); });
+  a.require(!s.addedMassDistances.empty(), "distance_below_knee_m", "expected at least one distance",
+            [] { return std::string("an empty list"); });
+}
+
+template <class A>
+void serialize(A& a, SwingOptions& o) {
+  a.choice("method", o.integrator, integratorChoices(), true);
+  a.optionalNumber("accuracy", o.accuracy, [](double v) { return checkAccuracy(v); });
+  a.optionalNumber("sample_interval_s", o.sampleInterval,
+                   [](double v) { return v >= 1e-5 && v <= 0.1 ? "" : "expected a sample interval from 0.00001 to 0.1 s"; });
+}
+
+template <class A>
+void serialize(A& a, SweepStudy& s) {
+  std::string kind = "knee-axis-sweep";
+  a.choice("kind", kind, {{"knee-axis-sweep", std::string("knee-axis-sweep")}});
+  a.text("name", s.name);
+  a.optionalText("description", s.description);
+  // The reader loads each participant file it lists (their errors come first, as they are met).
+  std::vector<std::string> files;
+  for (const auto& p : s.participants) files.push_back(p.path);
+  a.paths("participants", files);
+  if constexpr (A::kReading)
+    for (const auto& f : files) s.participants.push_back(loadParticipant(f));
+  a.require(!s.participants.empty(), "participants", "expected at least one participant file",
+            [] { return std::string("an empty list"); });
+  bool overridesKnee = !s.kneeModelOverride.empty();
+  if constexpr (A::kReading) overridesKnee = a.has("knee_model");
+  if (overridesKnee) a.path("knee_model", s.kneeModelOverride);
+  // A sensitivity study: the same participants under the other COM reading.
+  if constexpr (A::kReading) s.overridesComRule = a.has("com_rule");
+  if (s.overridesComRule) {
+    a.choice("com_rule", s.comRule,
+             {{"fixed_from_proximal", ComRule::kFixedFromProximal}, {"proportional", ComRule::kProportional}});
+    for (auto& p : s.participants) p.comRule = s.comRule;
+  }
+  bool present = true;
+  a.optionalMap("lowering", s, present, LoweringOf{});
+  bool addedMass = !s.addedMassDistances.empty();
+  a.optionalMap("added_mass", s, addedMass, AddedMassOf{});
+  a.optionalMap("integrator", s.swing, present = true);
+  a.optionalText("output_dir", s.outputDir);
+}
 
 namespace {
 
 SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
   SweepStudy s;
   s.path = path;
-  yaml.getChoice("kind", {"knee-axis-sweep"}, "");
-  s.name = yaml.getString("name");
-  yaml.getString("description", "");
-  for (const auto& p : yaml.getStringList("participants")) s.participants.push_back(loadParticipant(yaml.resolvePath(p)));
-  if (s.participants.empty()) yaml.fail("participants", "expected at least one participant file", "an empty list");
-  if (yaml.has("knee_model")) s.kneeModelOverride = yaml.resolvePath(yaml.getString("knee_model"));
-  if (yaml.has("com_rule")) {
-    // A sensitivity study: the same participants under the other COM reading.
-    const bool proportional = yaml.getChoice("com_rule", {"fixed_from_proximal", "proportional"}, "") == "proportional";
-    for (auto& p : s.participants) p.comRule = proportional ? ComRule::kProportional : ComRule::kFixedFromProximal;
-  }
-  if (yaml.has("lowering")) {
-    YamlMap m = yaml.getMap("lowering");
-    // The grid is rounded to 1 um (sweepLowerings): a smaller step would never advance. With
-    // lowerings capped by the shank (calcMaxLowering), this also bounds a sweep to a few
-    // thousand swings per participant.
-    s.loweringStep = m.getDouble("step_m", s.loweringStep, [](double v) {
-      return v >= 1e-4 ? "" : "expected a step of at least 0.0001 m";
-    });
-    s.loweringMax = m.getDouble("max_m", s.loweringMax, mustBeNonNegative);
-    s.includePublishedLowerings = m.getBool("include_published", s.includePublishedLowerings);
-    m.finish();
-  }
-  if (yaml.has("added_mass")) {
-    YamlMap m = yaml.getMap("added_mass");
-    s.addedMasses = m.getDoubleList("mass_kg");
-    s.addedMassDistances = m.getDoubleList("distance_below_knee_m");
-    for (double v : s.addedMasses) if (v < 0) m.fail("mass_kg", "masses must not be negative", formatNumber(v));
-    for (double v : s.addedMassDistances) if (v < 0) m.fail("distance_below_knee_m", "distances must not be negative", formatNumber(v));
-    if (s.addedMassDistances.empty()) m.fail("distance_below_knee_m", "expected at least one distance", "an empty list");
-    m.finish();
-  }
-  if (yaml.has("integrator")) {
-    YamlMap m = yaml.getMap("integrator");
-    const std::vector<std::string>& keys = integratorKeys();
-    const std::string method = m.getChoice("method", keys, keys[static_cast<int>(s.swing.integrator)]);
-    s.swing.integrator = *findIntegrator(method);  // getChoice allowed only known keys
-    s.swing.accuracy = m.getDouble("accuracy", s.swing.accuracy, [](double v) { return checkAccuracy(v); });
-    s.swing.sampleInterval = m.getDouble("sample_interval_s", s.swing.sampleInterval, [](double v) {
-      return v >= 1e-5 && v <= 0.1 ? "" : "expected a sample interval from 0.00001 to 0.1 s";
-    });
-    m.finish();
-  }
-  s.outputDir = yaml.getString("output_dir", "");
+  YamlReadArchive a(yaml);
+  serialize(a, s);
   yaml.finish();
   for (const auto& p : s.participants) {
     const std::string modelPath = s.kneeModelOverride.empty() ? p.kneeModelPath : s.kneeModelOverride;
@@ -65,6 +101,10 @@ SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
 }
 
 }  // namespace
+
+std::string formatSweepStudyYaml(const SweepStudy& study, const std::string& baseDir) {
+  return writeYamlDocument(study, baseDir, "");
+}
 
 SweepStudy loadSweepStudy(const std::string& path) {
   YamlMap yaml = YamlMap::loadFile(path);

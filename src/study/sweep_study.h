@@ -11,5 +11,7 @@ namespace swingsim {
 SweepStudy loadSweepStudy(const std::string& path);
 /// Same, from YAML text (tests, fuzzers); participant paths resolve against `path`'s folder.
 SweepStudy parseSweepStudy(const std::string& text, const std::string& path);
+/// The YAML text of a sweep study as a file in folder `baseDir` (paths relative to it).
+std::string formatSweepStudyYaml(const SweepStudy& study, const std::string& baseDir);
 
 }  // namespace swingsim

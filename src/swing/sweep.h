@@ -18,7 +18,11 @@ struct SweepStudy {
   std::string path;
   std::string name;
   std::vector<Participant> participants;
+  std::string description;
   std::string kneeModelOverride;  ///< resolved path, "" = each participant's own model
+  /// A sensitivity study's COM rule for every participant (else each participant's own).
+  bool overridesComRule = false;
+  ComRule comRule = ComRule::kFixedFromProximal;
   /// Every knee model the participants or the override name, by resolved path (the study
   /// reader loads them; runSweep reads no files).
   std::map<std::string, KneeModel> kneeModels;
