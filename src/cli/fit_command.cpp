@@ -5,13 +5,13 @@
 
 #include "io/bench_csv.h"
 #include "cli/command_registry.h"
-#include "cli/progress_reporter.h"
 #include "identify/bench_data.h"
 #include "identify/cylinder_fit.h"
 #include "study/cylinder_study.h"
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
+#include "core/progress_reporter.h"
 #include "io/yaml_reader.h"
 #include "report/cylinder_fit_report.h"
 

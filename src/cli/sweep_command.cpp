@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "cli/command_registry.h"
-#include "cli/progress_reporter.h"
 #include "core/output_files.h"
+#include "core/progress_reporter.h"
 #include "report/sweep_report.h"
 #include "report/swing_json.h"
 #include "study/sweep_study.h"
@@ -30,10 +30,12 @@ int runSweepCommand(const Arguments& a) {
   const std::string out = a.get("--out", study.outputDir.empty() ? "out/" + study.name : study.outputDir);
 
   std::signal(SIGINT, onInterrupt);
-  std::fprintf(stderr, "sweeping %zu participants (%s)...\n", study.participants.size(), study.path.c_str());
-  ProgressReporter progress("sweep " + study.name, "swings");
-  const SweepResults results =
-      runSweep(study, jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
+  const SweepResults results = [&] {
+    // Scoped: an interrupted run's bar is ended before the message below.
+    ProgressReporter progress("sweep " + study.name, "swings");
+    progress.note(std::to_string(study.participants.size()) + " participants (" + study.path + ")");
+    return runSweep(study, jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
+  }();
   std::signal(SIGINT, SIG_DFL);
 
   std::printf("%s", formatSweepTables(study, results).c_str());
