@@ -1,9 +1,12 @@
 // swingsim calibrate PARTICIPANT.yaml... [--target S] [--dry-run]
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 #include <vector>
 
-#include "cli/command_registry.h"
+#include "cli/command.h"
+#include "cli/option_checks.h"
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
@@ -15,19 +18,25 @@
 namespace swingsim::cli {
 namespace {
 
-int runCalibrate(const Arguments& a) {
-  if (a.positional().empty()) throw UsageError("expected one or more participant YAML files");
-  if (a.has("--target") && a.positional().size() != 1) throw UsageError("--target applies to one participant file");
+/// What `swingsim calibrate` was given.
+struct CalibrateArguments {
+  std::vector<std::string> participants;
+  std::optional<double> target;  ///< s; nullopt: Burkett 2004 Table 3
+  bool dryRun = false;
+};
+
+int runCalibrate(const CalibrateArguments& a) {
+  if (a.target && a.participants.size() != 1) throw CLI::ValidationError("--target", "applies to one participant file");
   // Every file is loaded and calibrated before any is written; storeParticipants then checks
   // each rewritten file loads back before replacing any.
   std::vector<ParticipantEdit> edits;
-  for (const std::string& path : a.positional()) {
+  for (const std::string& path : a.participants) {
     SwingSetup setup;
     setup.participant = loadParticipant(path);
     const Participant& p = setup.participant;
     double target = 0;
-    if (a.has("--target")) {
-      target = a.getDouble("--target", 0);
+    if (a.target) {
+      target = *a.target;
     } else if (const PublishedParticipant* pub = findPublished(p.name)) {
       target = pub->table3Model;
     } else {
@@ -49,18 +58,27 @@ int runCalibrate(const Arguments& a) {
     edit.participant.hipMoment.timeScale = std::round(r.timeScale * 1e6) / 1e6;
     edits.push_back(edit);
   }
-  if (!a.has("--dry-run")) {
+  if (!a.dryRun) {
     storeParticipants(edits);
     for (const auto& e : edits) std::printf("  stored in %s (hip_moment.time_scale)\n", e.path.c_str());
   }
   return 0;
 }
 
-Registrar reg("calibrate", {"fit each participant's hip-moment time scale to Burkett Table 3 and store it in the YAML",
-                            "PARTICIPANT.yaml", "participant files (one or more)",
-                            {{"--target", "target standard-location swing time, s (default: Burkett 2004 Table 3 model column; one file only)"},
-                             {"--dry-run", "calibrate and print, but do not change the file", true}},
-                            runCalibrate});
-
 }  // namespace
+
+Command addCalibrateCommand(CLI::App& app) {
+  CLI::App* sub =
+      app.add_subcommand("calibrate", "fit each participant's hip-moment time scale to Burkett Table 3 and store it in the YAML");
+  auto a = std::make_shared<CalibrateArguments>();
+  sub->add_option("PARTICIPANT.yaml", a->participants, "participant files (one or more)")->required()->type_name("");
+  sub->add_option_function<double>(
+         "--target", [a](double v) { a->target = v; },
+         "target standard-location swing time, s (default: Burkett 2004 Table 3 model column; one file only)")
+      ->type_name("S")
+      ->check(finiteNumber());
+  sub->add_flag("--dry-run", a->dryRun, "calibrate and print, but do not change the file (default: store)");
+  return {sub, [a] { return runCalibrate(*a); }};
+}
+
 }  // namespace swingsim::cli

@@ -3,8 +3,10 @@
 // on the training files (as diagnose's baseline), then metrics overall and per phase and
 // residual plots show where and when it fails.
 #include <cstdio>
+#include <optional>
+#include <string>
 
-#include "cli/command_registry.h"
+#include "cli/command.h"
 #include "core/output_files.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosis_study.h"
@@ -13,9 +15,15 @@ namespace swingsim::cli {
 
 namespace {
 
-int runCompare(const Arguments& args) {
-  if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
-  const DiagnosisStudy study = loadDiagnosisStudy(args.positional()[0]);
+/// What `swingsim compare` was given; nullopt: not given (the default applies).
+struct CompareArguments {
+  std::string study;
+  std::optional<std::string> out, json;
+};
+
+// The work: read the study, refit the base model, print and write the comparison.
+int runCompare(const CompareArguments& args) {
+  const DiagnosisStudy study = loadDiagnosisStudy(args.study);
   const auto plant = loadDiagnosisPlant(study, 1);
   const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);
   for (const auto& w : plant->warnings()) std::fprintf(stderr, "swingsim compare: warning: %s\n", w.c_str());
@@ -28,18 +36,27 @@ int runCompare(const Arguments& args) {
   std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g), %d lags outside the 99 %% band: %s\n",
               wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand,
               wt.pValue < study.settings.alpha ? "structure left (not white)" : "consistent with white noise");
-  const std::string outDir = args.get("--out", "out/" + study.name);
+  const std::string outDir = args.out.value_or("out/" + study.name);
   for (const auto& p : writeResidualPlots(outDir, "compare", b.comparison)) std::printf("plot: %s\n", p.c_str());
-  if (args.has("--json"))
-    writeJsonFile(args.get("--json"), makeComparisonJson(fileStem(study.baseModelPath), b.comparison));
+  if (args.json)
+    writeJsonFile(*args.json, makeComparisonJson(fileStem(study.baseModelPath), b.comparison));
   return 0;
 }
 
-static Registrar reg("compare", {"model vs measurement: metrics overall and per phase, residual plots",
-                                 "STUDY.yaml", "study of kind cylinder-diagnosis or swing-diagnosis",
-                                 {{"--out", "output folder (default out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"}},
-                                 runCompare});
-
 }  // namespace
+
+// The command line (CLI11): the positional and the options, bound to CompareArguments.
+Command addCompareCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("compare", "model vs measurement: metrics overall and per phase, residual plots");
+  auto a = std::make_shared<CompareArguments>();
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis or swing-diagnosis")->required()->type_name("");
+  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
+                                        "output folder (default out/<study name>/)")
+      ->type_name("DIR");
+  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
+                                        "also write the machine-readable result to this JSON file")
+      ->type_name("FILE");
+  return {sub, [a] { return runCompare(*a); }};
+}
 
 }  // namespace swingsim::cli

@@ -2,8 +2,10 @@
 // candidate missing physical effects, add the accepted ones, refit, and report the error
 // before and after, for either plant (docs/diagnosis.md). All inputs are read before any output.
 #include <cstdio>
+#include <optional>
+#include <string>
 
-#include "cli/command_registry.h"
+#include "cli/command.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "report/diagnosis_report.h"
@@ -14,9 +16,16 @@ namespace swingsim::cli {
 
 namespace {
 
-int runDiagnose(const Arguments& args) {
-  if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
-  const DiagnosisStudy study = loadDiagnosisStudy(args.positional()[0]);
+/// What `swingsim diagnose` was given; nullopt: not given (the default applies).
+struct DiagnoseArguments {
+  std::string study;
+  std::optional<std::string> out, json, saveModel;
+};
+
+// The work: read the study, diagnose, print, write the report, the JSON and the model.
+// `command`: the command line, for the report and the saved model.
+int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
+  const DiagnosisStudy study = loadDiagnosisStudy(args.study);
   const auto plant = loadDiagnosisPlant(study, 8);
 
   const Diagnosis dg = runDiagnosis(*plant, study.settings);
@@ -30,8 +39,7 @@ int runDiagnose(const Arguments& args) {
   std::printf("where the base model fails (before):\n%s\n%s", formatComparisonTable(before).c_str(), report.c_str());
   if (!check.empty()) std::printf("%s\n", check.c_str());
 
-  const std::string command = args.commandLine("diagnose");
-  const std::string outDir = args.get("--out", "out/" + study.name);
+  const std::string outDir = args.out.value_or("out/" + study.name);
   std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n## Before\n\n```\n" +
                    formatComparisonTable(before) + "```\n\n## Ranking and result\n\n```\n" + report +
                    (check.empty() ? "" : check + "\n") + "```\n\n## After\n\n```\n" + formatComparisonTable(after) +
@@ -42,23 +50,35 @@ int runDiagnose(const Arguments& args) {
     md += "- after: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
   writeFileAtomic(outDir + "/report.md", md);
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
-  if (args.has("--json")) writeJsonFile(args.get("--json"), makeDiagnosisJson(dg, before, after));
-  if (args.has("--save-model") && !dg.explained)
+  if (args.json) writeJsonFile(*args.json, makeDiagnosisJson(dg, before, after));
+  if (args.saveModel && !dg.explained)
     throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict + ")");
-  if (args.has("--save-model")) {
-    const auto written = saveDiagnosedModel(study, *plant, dg, args.get("--save-model"), command);
+  if (args.saveModel) {
+    const auto written = saveDiagnosedModel(study, *plant, dg, *args.saveModel, command);
     for (const auto& p : written) std::printf("model: %s\n", p.c_str());
   }
   return 0;
 }
 
-static Registrar reg("diagnose", {"rank candidate missing physical effects, add the accepted ones, report the error before and after",
-                                  "STUDY.yaml", "study of kind cylinder-diagnosis or swing-diagnosis",
-                                  {{"--out", "output folder (default out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"},
-                                   {"--save-model", "write the diagnosed model here (knee model YAML; the swing also writes "
-                                                    "FILE-participant.yaml); only when the data are explained"}},
-                                  runDiagnose});
-
 }  // namespace
+
+// The command line (CLI11): the positional and the options, bound to DiagnoseArguments.
+Command addDiagnoseCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "diagnose", "rank candidate missing physical effects, add the accepted ones, report the error before and after");
+  auto a = std::make_shared<DiagnoseArguments>();
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis or swing-diagnosis")->required()->type_name("");
+  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
+                                        "output folder (default out/<study name>/)")
+      ->type_name("DIR");
+  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
+                                        "also write the machine-readable result to this JSON file")
+      ->type_name("FILE");
+  sub->add_option_function<std::string>("--save-model", [a](const std::string& v) { a->saveModel = v; },
+                                        "write the diagnosed model here (knee model YAML; the swing also writes "
+                                        "FILE-participant.yaml); only when the data are explained (default: not saved)")
+      ->type_name("FILE");
+  return {sub, [a, sub] { return runDiagnose(*a, formatCommandLine(*sub)); }};
+}
 
 }  // namespace swingsim::cli

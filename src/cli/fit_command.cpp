@@ -2,16 +2,18 @@
 // data and validate them on held-out conditions (Chien 2014 procedure). All inputs are read
 // and checked before anything is written.
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "io/bench_csv.h"
-#include "cli/command_registry.h"
-#include "cli/progress_reporter.h"
+#include "cli/command.h"
 #include "identify/bench_data.h"
 #include "identify/cylinder_fit.h"
 #include "study/cylinder_study.h"
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
+#include "core/progress_reporter.h"
 #include "io/yaml_reader.h"
 #include "report/cylinder_fit_report.h"
 
@@ -19,9 +21,14 @@ namespace swingsim::cli {
 
 namespace {
 
-int runFit(const Arguments& args) {
-  if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
-  YamlMap yaml = YamlMap::loadFile(args.positional()[0]);
+/// What `swingsim fit` was given; nullopt: not given (the default applies).
+struct FitArguments {
+  std::string study;
+  std::optional<std::string> out, json;
+};
+
+int runFit(const FitArguments& args, const std::string& command) {
+  YamlMap yaml = YamlMap::loadFile(args.study);
   if (!yaml.has("kind")) yaml.getString("kind");
   yaml.getChoice("kind", {"cylinder-fit"}, "");
   const CylinderFitStudy study = readCylinderFitStudy(yaml);
@@ -58,19 +65,26 @@ int runFit(const Arguments& args) {
   for (const auto& r : results)
     for (const auto& w : r.fit.warnings) std::fprintf(stderr, "swingsim fit: warning: %s: %s\n", r.name.c_str(), w.c_str());
 
-  const std::string command = args.commandLine("fit");
-  const std::string outDir = args.get("--out", "out/" + study.name);
+  const std::string outDir = args.out.value_or("out/" + study.name);
   writeFitReport(outDir, study.name, command, results, study.plotSeconds);
-  if (args.has("--json")) writeFileAtomic(args.get("--json"), formatFitJson(results));
+  if (args.json) writeFileAtomic(*args.json, formatFitJson(results));
   std::printf("report: %s/report.md\n", outDir.c_str());
   return 0;
 }
 
-static Registrar reg("fit", {"fit Mauch cylinder models to bench data and validate them on held-out files",
-                             "STUDY.yaml", "study of kind cylinder-fit",
-                             {{"--out", "output folder (default out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"}},
-                             runFit});
-
 }  // namespace
+
+Command addFitCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("fit", "fit Mauch cylinder models to bench data and validate them on held-out files");
+  auto a = std::make_shared<FitArguments>();
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-fit")->required()->type_name("");
+  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
+                                        "output folder (default out/<study name>/)")
+      ->type_name("DIR");
+  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
+                                        "also write the machine-readable result to this JSON file")
+      ->type_name("FILE");
+  return {sub, [a, sub] { return runFit(*a, formatCommandLine(*sub)); }};
+}
 
 }  // namespace swingsim::cli

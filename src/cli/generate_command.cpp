@@ -3,9 +3,11 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <optional>
+#include <string>
 
 #include "io/bench_csv.h"
-#include "cli/command_registry.h"
+#include "cli/command.h"
 #include "cli/generate_swing_kinematics.h"
 #include "identify/bench_data.h"
 #include "knee/bench_profile.h"
@@ -20,11 +22,12 @@ namespace swingsim::cli {
 
 namespace {
 
-// kind: cylinder-bench. Everything is computed before the first file is written.
-int generateCylinderBench(YamlMap& yaml, const Arguments& args) {
+// kind: cylinder-bench. Everything is computed before the first file is written. `outDir`:
+// --out, if given.
+int generateCylinderBench(YamlMap& yaml, const std::optional<std::string>& outDir) {
   CylinderBenchStudy study = readCylinderBenchStudy(yaml);
   yaml.finish();
-  if (args.has("--out")) study.outputDir = args.get("--out");
+  if (outDir) study.outputDir = *outDir;
   MauchCylinderParams truthParams = loadMauchCylinder(study.modelPath);
   // Hidden effects: the truth gets them, the fitted models do not know.
   truthParams.effects = study.hiddenEffects;
@@ -85,7 +88,7 @@ int generateCylinderBench(YamlMap& yaml, const Arguments& args) {
   return 0;
 }
 
-using Generator = std::function<int(YamlMap&, const Arguments&)>;
+using Generator = std::function<int(YamlMap&, const std::optional<std::string>& outDir)>;
 
 const std::map<std::string, Generator>& generators() {
   static const std::map<std::string, Generator> g = {{"cylinder-bench", generateCylinderBench},
@@ -93,21 +96,32 @@ const std::map<std::string, Generator>& generators() {
   return g;
 }
 
-int runGenerate(const Arguments& args) {
-  if (args.positional().size() != 1) throw UsageError("expected one STUDY.yaml");
-  YamlMap yaml = YamlMap::loadFile(args.positional()[0]);
+/// What `swingsim generate` was given; nullopt: not given (the default applies).
+struct GenerateArguments {
+  std::string study;
+  std::optional<std::string> out;
+};
+
+int runGenerate(const GenerateArguments& args) {
+  YamlMap yaml = YamlMap::loadFile(args.study);
   std::vector<std::string> kinds;
   for (const auto& kv : generators()) kinds.push_back(kv.first);
   if (!yaml.has("kind")) yaml.getString("kind");  // "required key is missing"
   const std::string kind = yaml.getChoice("kind", kinds, "");
-  return generators().at(kind)(yaml, args);
+  return generators().at(kind)(yaml, args.out);
 }
 
-static Registrar reg("generate", {"synthetic measurement data (cylinder bench records, swing kinematics) from a model, noise and seed",
-                                  "STUDY.yaml", "study of kind cylinder-bench or swing-kinematics",
-                                  {{"--out", "output folder for the CSV files (default: the study's output_dir)"}},
-                                  runGenerate});
-
 }  // namespace
+
+Command addGenerateCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "generate", "synthetic measurement data (cylinder bench records, swing kinematics) from a model, noise and seed");
+  auto a = std::make_shared<GenerateArguments>();
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-bench or swing-kinematics")->required()->type_name("");
+  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
+                                        "output folder for the CSV files (default: the study's output_dir)")
+      ->type_name("DIR");
+  return {sub, [a] { return runGenerate(*a); }};
+}
 
 }  // namespace swingsim::cli

@@ -17,7 +17,7 @@
 
 namespace swingsim::cli {
 
-int generateSwingKinematics(YamlMap& yaml, const Arguments& args) {
+int generateSwingKinematics(YamlMap& yaml, const std::optional<std::string>& outDirGiven) {
   SwingBase base;
   base.participant = loadParticipant(yaml.resolvePath(yaml.getString("participant")));
   base.knee = loadKneeModel(yaml.resolvePath(yaml.getString("model")));
@@ -31,7 +31,7 @@ int generateSwingKinematics(YamlMap& yaml, const Arguments& args) {
     return v >= 1e-4 && v <= 0.02 ? "" : "must be in [0.0001, 0.02] s";
   });
   std::string outDir = yaml.resolvePath(yaml.getString("output_dir"));
-  if (args.has("--out")) outDir = args.get("--out");
+  if (outDirGiven) outDir = *outDirGiven;
   std::vector<SwingCondition> conditions;
   for (YamlMap& c : yaml.getMapList("conditions")) {
     SwingCondition sc;

@@ -1,45 +1,50 @@
-// swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--integrator METHOD] [--accuracy A] [--json FILE] [--out DIR]
+// swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M]
+//   [--hip-rate-deg-s DEG/S] [--knee-rate-deg-s DEG/S] [--integrator METHOD] [--accuracy A]
+//   [--json FILE] [--out DIR]
 #include <cstdio>
 #include <optional>
 #include <string>
 
-#include "cli/command_registry.h"
-#include "io/knee_model_loader.h"
+#include "cli/command.h"
+#include "cli/option_checks.h"
 #include "core/output_files.h"
+#include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
+#include "report/swing_json.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
-#include "report/swing_json.h"
 
 namespace swingsim::cli {
 namespace {
 
-int runSimulate(const Arguments& a) {
+/// What `swingsim simulate` was given; nullopt: not given (the default applies).
+struct SimulateArguments {
+  std::string participant;
+  double lowering = 0;  ///< m
+  std::optional<std::string> knee;
+  std::optional<AddedMass> added;
+  std::optional<double> hipRateDegS, kneeRateDegS;  ///< deg/s
+  std::optional<std::string> integrator;
+  std::optional<double> accuracy;
+  std::optional<std::string> json, out;
+};
+
+int runSimulate(const SimulateArguments& a) {
   SwingOptions options;
-  if (a.has("--integrator")) {
-    const std::string key = a.get("--integrator");
-    const std::optional<SwingIntegrator> integrator = findIntegrator(key);
-    if (!integrator) {
-      std::string known;
-      for (const auto& k : integratorKeys()) known += (known.empty() ? "" : ", ") + k;
-      throw UsageError("--integrator: expected one of " + known + " (got '" + key + "')");
-    }
-    options.integrator = *integrator;
-    options.accuracy = calcConvergedAccuracy(*integrator);  // its converged setting unless --accuracy says otherwise
+  if (a.integrator) {
+    options.integrator = *findIntegrator(*a.integrator);  // checked while parsing
+    options.accuracy = calcConvergedAccuracy(options.integrator);  // its converged setting unless --accuracy says otherwise
   }
-  options.accuracy = a.getDouble("--accuracy", options.accuracy);
-  if (const std::string bad = checkAccuracy(options.accuracy); !bad.empty())
-    throw UsageError("--accuracy: " + bad + " (got " + a.get("--accuracy") + ")");
-  if (a.positional().size() != 1) throw UsageError("expected one participant YAML file");
+  if (a.accuracy) options.accuracy = *a.accuracy;
   SwingSetup setup;
-  setup.participant = loadParticipant(a.positional()[0]);
+  setup.participant = loadParticipant(a.participant);
   Participant& p = setup.participant;
-  setup.lowering = a.getDouble("--lowering", 0.0);
-  if (a.has("--add-mass")) setup.added = parseAddedMass(a.get("--add-mass"));
-  p.initial.hipFlexionRate = a.getDouble("--hip-rate-deg-s", p.initial.hipFlexionRate * kRadToDeg) * kDegToRad;
-  p.initial.kneeFlexionRate = a.getDouble("--knee-rate-deg-s", p.initial.kneeFlexionRate * kRadToDeg) * kDegToRad;
-  const KneeModel model = loadKneeModel(a.get("--knee", p.kneeModelPath));
+  setup.lowering = a.lowering;
+  if (a.added) setup.added = *a.added;
+  if (a.hipRateDegS) p.initial.hipFlexionRate = *a.hipRateDegS * kDegToRad;
+  if (a.kneeRateDegS) p.initial.kneeFlexionRate = *a.kneeRateDegS * kDegToRad;
+  const KneeModel model = loadKneeModel(a.knee.value_or(p.kneeModelPath));
   const KneeLawSum knee = makeKneeLaw(p, model);
   setup.knee = &knee;
   const SwingResult r = simulateSwing(setup, options);
@@ -55,35 +60,58 @@ int runSimulate(const Arguments& a) {
   for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
   std::printf("\n");
 
-  const std::string out = a.get("--out", "out/simulate-" + p.name);
+  const std::string out = a.out.value_or("out/simulate-" + p.name);
   char tag[64];
   std::snprintf(tag, sizeof tag, "%s-lower%03.0fmm", p.name.c_str(), setup.lowering * 1000);
   writeFileAtomic(out + "/" + tag + ".csv", formatTrajectoryCsv(r.trajectory));
   writeFileAtomic(out + "/" + tag + ".sto", formatTrajectorySto(r.trajectory, tag));
   std::printf("  trajectory          %s/%s.csv and .sto\n", out.c_str(), tag);
-  if (a.has("--json")) {
-    writeJsonFile(a.get("--json"), makeSwingResultJson(p.name, setup.lowering, r));
-  }
+  if (a.json) writeJsonFile(*a.json, makeSwingResultJson(p.name, setup.lowering, r));
   return 0;
 }
 
-Registrar reg("simulate", {"simulate one swing: swing time, peak knee flexion, events, trajectory CSV/.sto",
-                           "PARTICIPANT.yaml", "participant file",
-                           {{"--lowering", "knee-axis lowering below the standard location, m (default 0)"},
-                            {"--knee", "knee model YAML (default: the participant's knee_model)"},
-                            {"--add-mass", "added shank mass as KG@METRES below the knee, e.g. 0.5@0.2 (default none)"},
-                            {"--hip-rate-deg-s", "hip flexion rate at toe-off, deg/s (default: the participant's, 0)"},
-                            {"--knee-rate-deg-s", "knee flexion rate at toe-off, deg/s (default: the participant's, 0)"},
-                            {"--integrator", [] {
-                               std::string keys;
-                               for (const auto& k : integratorKeys()) keys += (keys.empty() ? "" : ", ") + k;
-                               return "integration method, one of " + keys + " (default " + integratorKeys().front() +
-                                      "), at its converged accuracy";
-                             }()},
-                            {"--accuracy", "integrator relative accuracy, (0, 0.01] (default: the integrator's converged one)"},
-                            {"--json", "also write the machine-readable result to this JSON file"},
-                            {"--out", "output folder for the trajectory (default out/simulate-<participant>/)"}},
-                           runSimulate});
-
 }  // namespace
+
+Command addSimulateCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("simulate", "simulate one swing: swing time, peak knee flexion, events, trajectory CSV/.sto");
+  auto a = std::make_shared<SimulateArguments>();
+  std::string integrators;
+  for (const auto& k : integratorKeys()) integrators += (integrators.empty() ? "" : ", ") + k;
+  sub->add_option("PARTICIPANT.yaml", a->participant, "participant file")->required()->type_name("");
+  sub->add_option("--lowering", a->lowering, "knee-axis lowering below the standard location, m (default 0)")
+      ->type_name("M")
+      ->check(finiteNumber());
+  sub->add_option_function<std::string>("--knee", [a](const std::string& v) { a->knee = v; },
+                                        "knee model YAML (default: the participant's knee_model)")
+      ->type_name("MODEL.yaml");
+  sub->add_option_function<std::string>("--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
+                                        "added shank mass as KG@METRES below the knee, e.g. 0.5@0.2 (default none)")
+      ->type_name("KG@M")
+      ->check(addedMassSpec());
+  sub->add_option_function<double>("--hip-rate-deg-s", [a](double v) { a->hipRateDegS = v; },
+                                   "hip flexion rate at toe-off, deg/s (default: the participant's, 0)")
+      ->type_name("DEG/S")
+      ->check(finiteNumber());
+  sub->add_option_function<double>("--knee-rate-deg-s", [a](double v) { a->kneeRateDegS = v; },
+                                   "knee flexion rate at toe-off, deg/s (default: the participant's, 0)")
+      ->type_name("DEG/S")
+      ->check(finiteNumber());
+  sub->add_option_function<std::string>("--integrator", [a](const std::string& v) { a->integrator = v; },
+                                        "integration method, one of " + integrators + " (default " +
+                                            integratorKeys().front() + "), at its converged accuracy")
+      ->type_name("METHOD")
+      ->check(oneOf(integratorKeys()));
+  sub->add_option_function<double>("--accuracy", [a](double v) { a->accuracy = v; },
+                                   "integrator relative accuracy, (0, 0.01] (default: the integrator's converged one)")
+      ->type_name("A")
+      ->check(finiteNumber(checkAccuracy));
+  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
+                                        "also write the machine-readable result to this JSON file")
+      ->type_name("FILE");
+  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
+                                        "output folder for the trajectory (default out/simulate-<participant>/)")
+      ->type_name("DIR");
+  return {sub, [a] { return runSimulate(*a); }};
+}
+
 }  // namespace swingsim::cli

@@ -2,12 +2,14 @@
 
 #include <csignal>
 #include <cstdio>
+#include <optional>
+#include <string>
 
-#include "cli/command_registry.h"
-#include "cli/progress_reporter.h"
+#include "cli/command.h"
+#include "cli/option_checks.h"
 #include "core/output_files.h"
+#include "core/progress_reporter.h"
 #include "report/sweep_report.h"
-#include "report/swing_json.h"
 #include "study/sweep_study.h"
 #include "swing/sweep.h"
 
@@ -17,23 +19,29 @@ namespace {
 volatile bool gInterrupted = false;
 extern "C" void onInterrupt(int) { gInterrupted = true; }
 
-int runSweepCommand(const Arguments& a) {
-  if (a.positional().size() != 1) throw UsageError("expected one study YAML file");
-  SweepStudy study = loadSweepStudy(a.positional()[0]);
-  if (a.has("--add-mass")) {
-    const AddedMass m = parseAddedMass(a.get("--add-mass"));
-    study.addedMasses = {0.0, m.mass};
-    study.addedMassDistances = {m.distanceBelowKnee};
+/// What `swingsim sweep` was given; nullopt: not given (the default applies).
+struct SweepArguments {
+  std::string study;
+  std::optional<std::string> out, json;
+  int jobs = 0;  ///< worker threads, 0 = all cores
+  std::optional<AddedMass> added;
+};
+
+int runSweepCommand(const SweepArguments& a) {
+  SweepStudy study = loadSweepStudy(a.study);
+  if (a.added) {
+    study.addedMasses = {0.0, a.added->mass};
+    study.addedMassDistances = {a.added->distanceBelowKnee};
   }
-  const int jobs = a.getInt("--jobs", 0);
-  if (jobs < 0) throw UsageError("--jobs: expected 0 (all cores) or a positive number");
-  const std::string out = a.get("--out", study.outputDir.empty() ? "out/" + study.name : study.outputDir);
+  const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + study.name : study.outputDir);
 
   std::signal(SIGINT, onInterrupt);
-  std::fprintf(stderr, "sweeping %zu participants (%s)...\n", study.participants.size(), study.path.c_str());
-  ProgressReporter progress("sweep " + study.name, "swings");
-  const SweepResults results =
-      runSweep(study, jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
+  const SweepResults results = [&] {
+    // Scoped: an interrupted run's bar is ended before the message below.
+    ProgressReporter progress("sweep " + study.name, "swings");
+    progress.note(std::to_string(study.participants.size()) + " participants (" + study.path + ")");
+    return runSweep(study, a.jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
+  }();
   std::signal(SIGINT, SIG_DFL);
 
   std::printf("%s", formatSweepTables(study, results).c_str());
@@ -60,17 +68,31 @@ int runSweepCommand(const Arguments& a) {
     return 1;
   }
   for (const auto& [name, contents] : makeSweepReport(study, results)) writeFileAtomic(out + "/" + name, contents);
-  if (a.has("--json")) writeFileAtomic(a.get("--json"), formatSweepJson(results));
+  if (a.json) writeFileAtomic(*a.json, formatSweepJson(results));
   std::printf("\nreport: %s/report.md\n", out.c_str());
   return 0;
 }
 
-Registrar reg("sweep", {"knee-axis lowering sweep per participant: tables, report with figures, JSON",
-                        "STUDY.yaml", "study of kind knee-axis-sweep",
-                        {{"--out", "output folder (default: the study's output_dir, else out/<study name>/)"}, {"--json", "also write the machine-readable result to this JSON file"},
-                         {"--jobs", "worker threads, 0 = all cores (default 0)"},
-                         {"--add-mass", "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)"}},
-                        runSweepCommand});
-
 }  // namespace
+
+Command addSweepCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("sweep", "knee-axis lowering sweep per participant: tables, report with figures, JSON");
+  auto a = std::make_shared<SweepArguments>();
+  sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep")->required()->type_name("");
+  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
+                                        "output folder (default: the study's output_dir, else out/<study name>/)")
+      ->type_name("DIR");
+  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
+                                        "also write the machine-readable result to this JSON file")
+      ->type_name("FILE");
+  sub->add_option("--jobs", a->jobs, "worker threads, 0 = all cores (default 0)")
+      ->type_name("N")
+      ->check(wholeNumberFrom(0, "expected 0 (all cores) or a positive whole number"));
+  sub->add_option_function<std::string>("--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
+                                        "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)")
+      ->type_name("KG@M")
+      ->check(addedMassSpec());
+  return {sub, [a] { return runSweepCommand(*a); }};
+}
+
 }  // namespace swingsim::cli

@@ -1,0 +1,35 @@
+#pragma once
+// The subcommands of `swingsim`. Each src/cli/*_command.cpp declares its subcommand on the
+// CLI11 app: the positional argument and every option, with help that gives the unit and
+// the default, and checks that make a bad value a usage error while parsing. It returns the
+// work to run once the whole command line has parsed. main() adds every command, parses, runs
+// the one given and turns exceptions into messages and exit codes.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace swingsim::cli {
+
+/// A declared subcommand and its work. `run` returns the exit code; it throws InputError,
+/// RunError or another std::exception for a bad input or a failed run (exit 1), and
+/// CLI::ParseError for a usage error that needs more than one option to see (exit 2).
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+Command addSimulateCommand(CLI::App& app);
+Command addSweepCommand(CLI::App& app);
+Command addCalibrateCommand(CLI::App& app);
+Command addFitCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
+Command addDiagnoseCommand(CLI::App& app);
+Command addGenerateCommand(CLI::App& app);
+
+/// The command line as parsed, for reports: "swingsim fit STUDY.yaml --out DIR --json FILE"
+/// (the positionals, then each option given, in the order the command declares them).
+std::string formatCommandLine(const CLI::App& command);
+
+}  // namespace swingsim::cli

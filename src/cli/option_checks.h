@@ -1,0 +1,28 @@
+#pragma once
+// Checks of option values, run by CLI11 while parsing: a value that fails one is a usage
+// error (exit 2) with the message `--flag: expected ... (got 'VALUE')`.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/leg_parameters.h"
+
+namespace swingsim::cli {
+
+/// A finite number; `check(value)` returns "" if it is usable, else what was expected
+/// ("expected a relative accuracy in (0, 0.01]").
+CLI::Validator finiteNumber(std::function<std::string(double)> check = {});
+/// A whole number of at least `min`; `expected` says what is wanted.
+CLI::Validator wholeNumberFrom(int min, const std::string& expected);
+/// One of `keys`.
+CLI::Validator oneOf(const std::vector<std::string>& keys);
+
+/// "0.5@0.2": 0.5 kg at 0.2 m below the knee (both finite, >= 0); nullopt if malformed.
+std::optional<AddedMass> readAddedMass(const std::string& text);
+/// An added mass as readAddedMass reads it.
+CLI::Validator addedMassSpec();
+
+}  // namespace swingsim::cli
