@@ -36,7 +36,7 @@ int runCompare(const CompareArguments& args) {
   std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g), %d lags outside the 99 %% band: %s\n",
               wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand,
               wt.pValue < study.settings.alpha ? "structure left (not white)" : "consistent with white noise");
-  const std::string outDir = args.out.value_or("out/" + study.name);
+  const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   for (const auto& p : writeResidualPlots(outDir, "compare", b.comparison)) std::printf("plot: %s\n", p.c_str());
   if (args.json)
     writeJsonFile(*args.json, makeComparisonJson(fileStem(study.baseModelPath), b.comparison));

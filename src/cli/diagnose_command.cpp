@@ -39,7 +39,7 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   std::printf("where the base model fails (before):\n%s\n%s", formatComparisonTable(before).c_str(), report.c_str());
   if (!check.empty()) std::printf("%s\n", check.c_str());
 
-  const std::string outDir = args.out.value_or("out/" + study.name);
+  const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n## Before\n\n```\n" +
                    formatComparisonTable(before) + "```\n\n## Ranking and result\n\n```\n" + report +
                    (check.empty() ? "" : check + "\n") + "```\n\n## After\n\n```\n" + formatComparisonTable(after) +

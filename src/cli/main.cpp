@@ -40,6 +40,11 @@ int main(int argc, char** argv) {
   }
   for (const Command& command : commands) {
     if (!command.app->parsed()) continue;
+    // An empty value is never meant (`--out ""` would write into the root folder).
+    for (const CLI::Option* option : command.app->get_options())
+      for (const std::string& value : option->results())
+        if (option->get_expected_min() > 0 && value.empty())
+          return usageExit(CLI::ValidationError(option->get_name(), "expected a value, got an empty string"));
     try {
       return command.run();
     } catch (const CLI::ParseError& e) {

@@ -1,12 +1,14 @@
 // swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M]
 //   [--hip-rate-deg-s DEG/S] [--knee-rate-deg-s DEG/S] [--integrator METHOD] [--accuracy A]
 //   [--json FILE] [--out DIR]
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
+#include "core/input_error.h"
 #include "core/output_files.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -60,12 +62,20 @@ int runSimulate(const SimulateArguments& a) {
   for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
   std::printf("\n");
 
-  const std::string out = a.out.value_or("out/simulate-" + p.name);
-  char tag[64];
-  std::snprintf(tag, sizeof tag, "%s-lower%03.0fmm", p.name.c_str(), setup.lowering * 1000);
+  const std::string stem = makeSafeFileStem(p.name);
+  const std::string out = a.out.value_or("out/simulate-" + stem);
+  // Whole millimetres as lower050mm; any other lowering in full, so two lowerings never
+  // share a file (0.4 mm is lower0.4mm, not lower000mm).
+  const double mm = setup.lowering * 1000;
+  char lowering[64];
+  if (std::fabs(mm - std::round(mm)) < 1e-9 && mm < 1e6)
+    std::snprintf(lowering, sizeof lowering, "lower%03.0fmm", mm);
+  else
+    std::snprintf(lowering, sizeof lowering, "lower%smm", formatNumber(mm).c_str());
+  const std::string tag = stem + "-" + lowering;
   writeFileAtomic(out + "/" + tag + ".csv", formatTrajectoryCsv(r.trajectory));
   writeFileAtomic(out + "/" + tag + ".sto", formatTrajectorySto(r.trajectory, tag));
-  std::printf("  trajectory          %s/%s.csv and .sto\n", out.c_str(), tag);
+  std::printf("  trajectory          %s/%s.csv and .sto\n", out.c_str(), tag.c_str());
   if (a.json) writeJsonFile(*a.json, makeSwingResultJson(p.name, setup.lowering, r));
   return 0;
 }

@@ -33,7 +33,7 @@ int runSweepCommand(const SweepArguments& a) {
     study.addedMasses = {0.0, a.added->mass};
     study.addedMassDistances = {a.added->distanceBelowKnee};
   }
-  const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + study.name : study.outputDir);
+  const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + makeSafeFileStem(study.name) : study.outputDir);
 
   std::signal(SIGINT, onInterrupt);
   const SweepResults results = [&] {

@@ -1,5 +1,8 @@
 #include "core/output_files.h"
 
+#include <cstdint>
+#include <cstdio>
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -48,6 +51,25 @@ std::string readFile(const std::string& path) {
 
 std::string fileStem(const std::string& path) {
   return std::filesystem::path(path).stem().string();
+}
+
+std::string makeSafeFileStem(const std::string& name) {
+  constexpr std::size_t kMaxStem = 64;
+  std::string stem;
+  for (char c : name) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-' ||
+                      c == '_';
+    stem += keep ? c : '_';
+  }
+  while (!stem.empty() && stem.front() == '.') stem.front() = '_';
+  if (stem.empty()) stem = "_";
+  if (stem == name && stem.size() <= kMaxStem) return stem;
+  // FNV-1a of the original name: different names keep different stems.
+  std::uint32_t hash = 2166136261u;
+  for (unsigned char c : name) hash = (hash ^ c) * 16777619u;
+  char suffix[16];
+  std::snprintf(suffix, sizeof suffix, "-%08x", hash);
+  return stem.substr(0, kMaxStem - 9) + suffix;
 }
 
 }  // namespace swingsim

@@ -15,6 +15,12 @@ void makeDirectories(const std::string& path);
 /// Reads a whole file; throws InputError if it cannot be opened.
 std::string readFile(const std::string& path);
 
+/// `name` (a participant or study name) as a file stem that stays inside its folder: letters,
+/// digits, '.', '-' and '_' kept, anything else (separators, spaces) becomes '_', no leading
+/// dot, at most 64 bytes. When the name had to change, 8 hex digits of its hash are appended,
+/// so two different names never share a stem.
+std::string makeSafeFileStem(const std::string& name);
+
 /// The file name without directory and extension ("data/slow.csv" -> "slow").
 std::string fileStem(const std::string& path);
 

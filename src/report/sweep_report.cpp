@@ -7,6 +7,7 @@
 
 #include "io/csv_table.h"
 #include "core/input_error.h"
+#include "core/output_files.h"
 #include "io/json_file.h"
 #include "report/svg_plot.h"
 #include "swing/burkett_published.h"
@@ -384,7 +385,7 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     const Participant* p = participantNamed(study, ps.name);
     md += "## " + ps.name + "\n\n";
     if (!ps.capNote.empty()) md += "Note: " + ps.capNote + ".\n\n";
-    const std::string base = "figures/" + ps.name;
+    const std::string base = "figures/" + makeSafeFileStem(ps.name);
     files[base + "-swing-time.svg"] = makeSwingTimeFigure(ps).render();
     md += "![swing time vs lowering](" + base + "-swing-time.svg)\n\n";
     files[base + "-knee-flexion.svg"] =

@@ -67,6 +67,12 @@ void serialize(A& a, SweepStudy& s) {
     for (const auto& f : files) s.participants.push_back(loadParticipant(f));
   a.require(!s.participants.empty(), "participants", "expected at least one participant file",
             [] { return std::string("an empty list"); });
+  // Results, figures and table rows are keyed by participant name.
+  for (std::size_t i = 0; i < s.participants.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      a.require(s.participants[i].name != s.participants[j].name, "participants",
+                "two participant files have the same name '" + s.participants[i].name + "' (results are keyed by name)",
+                [&] { return s.participants[i].path; });
   bool overridesKnee = !s.kneeModelOverride.empty();
   if constexpr (A::kReading) overridesKnee = a.has("knee_model");
   if (overridesKnee) a.path("knee_model", s.kneeModelOverride);
