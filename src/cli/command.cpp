@@ -2,6 +2,20 @@
 
 namespace swingsim::cli {
 
+CLI::Option* addTextOption(CLI::App* sub, const std::string& flag, std::optional<std::string>& value,
+                           const std::string& help, const std::string& typeName) {
+  return sub->add_option_function<std::string>(flag, [&value](const std::string& v) { value = v; }, help)
+      ->type_name(typeName);
+}
+
+CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json) {
+  return addTextOption(sub, "--json", json, "also write the machine-readable result to this JSON file", "FILE");
+}
+
+CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out) {
+  return addTextOption(sub, "--out", out, "output folder (default out/<study name>/)", "DIR");
+}
+
 std::string formatCommandLine(const CLI::App& command) {
   std::string positionals, options;
   for (const CLI::Option* o : command.get_options()) {

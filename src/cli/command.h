@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace swingsim::cli {
@@ -27,6 +28,15 @@ Command addFitCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addDiagnoseCommand(CLI::App& app);
 Command addGenerateCommand(CLI::App& app);
+
+/// Declares `--flag VALUE` stored in `value` (left unset unless given), shown as `typeName`
+/// in --help. `value` must outlive the parse (a member of the command's argument struct).
+CLI::Option* addTextOption(CLI::App* sub, const std::string& flag, std::optional<std::string>& value,
+                           const std::string& help, const std::string& typeName);
+/// `--json FILE`, the same for every command that writes its result as JSON.
+CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json);
+/// `--out DIR` of the study commands: default out/<study name>/.
+CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out);
 
 /// The command line as parsed, for reports: "swingsim fit STUDY.yaml --out DIR --json FILE"
 /// (the positionals, then each option given, in the order the command declares them).

@@ -50,12 +50,8 @@ Command addCompareCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("compare", "model vs measurement: metrics overall and per phase, residual plots");
   auto a = std::make_shared<CompareArguments>();
   sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis or swing-diagnosis")->required()->type_name("");
-  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
-                                        "output folder (default out/<study name>/)")
-      ->type_name("DIR");
-  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
-                                        "also write the machine-readable result to this JSON file")
-      ->type_name("FILE");
+  addStudyOutOption(sub, a->out);
+  addJsonOption(sub, a->json);
   return {sub, [a] { return runCompare(*a); }};
 }
 

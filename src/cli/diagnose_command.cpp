@@ -68,16 +68,12 @@ Command addDiagnoseCommand(CLI::App& app) {
       "diagnose", "rank candidate missing physical effects, add the accepted ones, report the error before and after");
   auto a = std::make_shared<DiagnoseArguments>();
   sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis or swing-diagnosis")->required()->type_name("");
-  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
-                                        "output folder (default out/<study name>/)")
-      ->type_name("DIR");
-  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
-                                        "also write the machine-readable result to this JSON file")
-      ->type_name("FILE");
-  sub->add_option_function<std::string>("--save-model", [a](const std::string& v) { a->saveModel = v; },
-                                        "write the diagnosed model here (knee model YAML; the swing also writes "
-                                        "FILE-participant.yaml); only when the data are explained (default: not saved)")
-      ->type_name("FILE");
+  addStudyOutOption(sub, a->out);
+  addJsonOption(sub, a->json);
+  addTextOption(sub, "--save-model", a->saveModel,
+                "write the diagnosed model here (knee model YAML; the swing also writes "
+                "FILE-participant.yaml); only when the data are explained (default: not saved)",
+                "FILE");
   return {sub, [a, sub] { return runDiagnose(*a, formatCommandLine(*sub)); }};
 }
 

@@ -78,12 +78,8 @@ Command addFitCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("fit", "fit Mauch cylinder models to bench data and validate them on held-out files");
   auto a = std::make_shared<FitArguments>();
   sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-fit")->required()->type_name("");
-  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
-                                        "output folder (default out/<study name>/)")
-      ->type_name("DIR");
-  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
-                                        "also write the machine-readable result to this JSON file")
-      ->type_name("FILE");
+  addStudyOutOption(sub, a->out);
+  addJsonOption(sub, a->json);
   return {sub, [a, sub] { return runFit(*a, formatCommandLine(*sub)); }};
 }
 

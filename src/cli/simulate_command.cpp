@@ -115,12 +115,8 @@ Command addSimulateCommand(CLI::App& app) {
                                    "integrator relative accuracy, (0, 0.01] (default: the integrator's converged one)")
       ->type_name("A")
       ->check(finiteNumber(checkAccuracy));
-  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
-                                        "also write the machine-readable result to this JSON file")
-      ->type_name("FILE");
-  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
-                                        "output folder for the trajectory (default out/simulate-<participant>/)")
-      ->type_name("DIR");
+  addJsonOption(sub, a->json);
+  addTextOption(sub, "--out", a->out, "output folder for the trajectory (default out/simulate-<participant>/)", "DIR");
   return {sub, [a] { return runSimulate(*a); }};
 }
 

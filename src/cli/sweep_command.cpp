@@ -79,12 +79,8 @@ Command addSweepCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("sweep", "knee-axis lowering sweep per participant: tables, report with figures, JSON");
   auto a = std::make_shared<SweepArguments>();
   sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep")->required()->type_name("");
-  sub->add_option_function<std::string>("--out", [a](const std::string& v) { a->out = v; },
-                                        "output folder (default: the study's output_dir, else out/<study name>/)")
-      ->type_name("DIR");
-  sub->add_option_function<std::string>("--json", [a](const std::string& v) { a->json = v; },
-                                        "also write the machine-readable result to this JSON file")
-      ->type_name("FILE");
+  addTextOption(sub, "--out", a->out, "output folder (default: the study's output_dir, else out/<study name>/)", "DIR");
+  addJsonOption(sub, a->json);
   sub->add_option("--jobs", a->jobs, "worker threads, 0 = all cores (default 0)")
       ->type_name("N")
       ->check(wholeNumberFrom(0, "expected 0 (all cores) or a positive whole number"));
