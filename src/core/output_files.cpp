@@ -1,10 +1,8 @@
 #include "core/output_files.h"
 
-#include <cstdint>
-#include <cstdio>
-
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -21,20 +19,24 @@ void makeDirectories(const std::string& path) {
   if (ec) throw RunError(path + ": cannot create directory: " + ec.message());
 }
 
+std::string writeTemporaryBeside(const std::string& path, const std::string& contents) {
+  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) throw RunError(path + ": cannot write file");
+  out << contents;
+  out.flush();
+  if (!out) {
+    out.close();
+    std::remove(tmp.c_str());
+    throw RunError(path + ": write failed (disk full?)");
+  }
+  return tmp;
+}
+
 void writeFileAtomic(const std::string& path, const std::string& contents) {
   std::filesystem::path p(path);
   if (p.has_parent_path()) makeDirectories(p.parent_path().string());
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw RunError(path + ": cannot write file");
-    out << contents;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw RunError(path + ": write failed (disk full?)");
-    }
-  }
+  const std::string tmp = writeTemporaryBeside(path, contents);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
     throw RunError(path + ": cannot rename temporary file into place");

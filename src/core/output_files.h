@@ -9,6 +9,10 @@ namespace swingsim {
 /// RunError if the file cannot be written.
 void writeFileAtomic(const std::string& path, const std::string& contents);
 
+/// Writes `contents` to `path.tmp-PID` (the folder must exist) and returns that name; the
+/// caller renames it into place. Throws RunError, leaving no temporary file, if it cannot.
+std::string writeTemporaryBeside(const std::string& path, const std::string& contents);
+
 /// Creates a directory and its parents (like `mkdir -p`).
 void makeDirectories(const std::string& path);
 

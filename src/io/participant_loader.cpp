@@ -1,9 +1,6 @@
 #include "io/participant_loader.h"
 
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "core/output_files.h"
@@ -178,14 +175,8 @@ void storeParticipants(const std::vector<ParticipantEdit>& edits) {
       const Participant back = parseParticipant(text, target.string());
       if (formatParticipantYaml(back, dir) != formatParticipantYaml(e.participant, dir))
         throw RunError(e.path + ": the rewritten file does not load back to the intended participant; not written");
-      const fs::path temp = target.string() + ".tmp-" + std::to_string(::getpid());
+      const fs::path temp = writeTemporaryBeside(target.string(), text);
       staged.push_back({target, temp});
-      {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.flush();
-        if (!out) throw RunError(temp.string() + ": cannot write (disk full or no permission?)");
-      }
       fs::permissions(temp, fs::status(target).permissions(), fs::perm_options::replace, ec);
       if (ec) throw RunError(temp.string() + ": cannot set permissions: " + ec.message());
     }
