@@ -36,8 +36,9 @@ KneeModelSpec diagnosedCylinder(const DiagnosisStudy& study, const MauchCylinder
 }
 
 // The base knee model with the diagnosed knee effects and the refitted scale on its law.
-KneeModelSpec diagnosedKnee(const DiagnosisStudy& study, const SwingModelParams& final, const std::string& accepted) {
-  KneeModelSpec spec = loadKneeModel(study.baseModelPath).spec;
+KneeModelSpec diagnosedKnee(const DiagnosisStudy& study, const KneeModelSpec& base, const SwingModelParams& final,
+                            const std::string& accepted) {
+  KneeModelSpec spec = base;
   if (spec.hasKneeEffects)
     throw InputError(study.baseModelPath + ": knee_effects: the base model already has added knee effects; --save-model "
                      "would stack the diagnosed ones on them (diagnose a model without knee_effects)");
@@ -62,7 +63,7 @@ std::vector<std::string> saveDiagnosedModel(const DiagnosisStudy& study, const D
   }
   const SwingModelParams& final = swingParams(*dg.final.model);
   const SwingBase& base = dynamic_cast<const SwingPlant&>(plant).base();
-  const std::string kneeText = formatKneeModelYaml(diagnosedKnee(study, final, accepted), header);
+  const std::string kneeText = formatKneeModelYaml(diagnosedKnee(study, base.knee.spec, final, accepted), header);
   // The participant with the participant-level effects (toe-off rates, hip moment, shank),
   // running on the diagnosed knee model.
   std::string partPath = path;
