@@ -5,6 +5,8 @@
 // top of the current model -> the acceptance rule (identify/effect_selection.h) -> add the
 // best accepted one -> refit -> validate on held-out records -> repeat. The plants differ only
 // in the DiagnosisPlant they implement; docs/diagnosis.md explains the statistics.
+#include <Eigen/Dense>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,6 +49,12 @@ struct PlantFit {
     double value = 0, standardError = 0;
   };
   std::vector<FreeParameter> baseParameters;
+  /// Notes on the fit itself: stopped at its budget, a parameter on a physical bound.
+  std::vector<std::string> notes;
+  /// Every fitted parameter (name with unit; per-record nuisance parameters left out) and
+  /// their correlation matrix from the fit's covariance: confounds show as |r| near 1.
+  std::vector<std::string> parameterNames;
+  Eigen::MatrixXd correlation;
 };
 
 /// What the engine needs from a plant.

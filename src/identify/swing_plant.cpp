@@ -10,7 +10,7 @@
 
 #include "core/input_error.h"
 #include "core/units.h"
-#include "numerics/levenberg_marquardt.h"
+#include "numerics/bounded_least_squares.h"
 #include "swing/knee_setup.h"
 #include "swing/reference_swing.h"
 #include "swing/swing_simulation.h"
@@ -167,32 +167,48 @@ double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, 
 namespace {
 
 // ---- The free parameters as one vector ------------------------------------------------
+// Bounds are physics, not data: a friction, damper or assist spring cannot push the wrong
+// way (lower bound 0); scales of a gain or a mass stay positive and within 10x (log-scaled);
+// toe-off rates within 20 rad/s (about 3x the peak swing knee rate). docs/diagnosis.md.
 struct Slot {
   std::optional<EffectId> effect;  // none: the base model's knee scale
-  double typical;                  // scale of the difference step
+  BoundedParameter bounds;         // start value filled in by the fit
   double reportScale;              // slot value times this = reported value (rad/s -> deg/s)
   std::function<double&(SwingModelParams&)> ref;
 };
 
+BoundedParameter linear(double lower, double upper, double typical) { return {"", 0.0, lower, upper, false, typical}; }
+BoundedParameter logScaled(double lower, double upper) { return {"", 1.0, lower, upper, true, 1.0}; }
+
 std::vector<Slot> slotsOf(const SwingEffects& e) {
   std::vector<Slot> s;
-  s.push_back({std::nullopt, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
+  s.push_back({std::nullopt, logScaled(0.05, 20.0), 1.0, [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
   if (e.coulomb)
-    s.push_back({EffectId::kKneeCoulombFriction, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.knee.coulombMoment; }});
+    s.push_back({EffectId::kKneeCoulombFriction, linear(0.0, 50.0, 1.0), 1.0,
+                 [](SwingModelParams& p) -> double& { return p.effects.knee.coulombMoment; }});
   if (e.viscous)
-    s.push_back({EffectId::kKneeViscousDamping, 0.5, 1.0, [](SwingModelParams& p) -> double& { return p.effects.knee.viscousDamping; }});
+    s.push_back({EffectId::kKneeViscousDamping, linear(0.0, 50.0, 0.5), 1.0,
+                 [](SwingModelParams& p) -> double& { return p.effects.knee.viscousDamping; }});
   if (e.assist)
-    s.push_back({EffectId::kExtensionAssistSpring, 5.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.knee.assistStiffness; }});
+    s.push_back({EffectId::kExtensionAssistSpring, linear(0.0, 500.0, 5.0), 1.0,
+                 [](SwingModelParams& p) -> double& { return p.effects.knee.assistStiffness; }});
   if (e.toeOff) {
-    s.push_back({EffectId::kToeOffVelocity, 1.0, kRadToDeg, [](SwingModelParams& p) -> double& { return p.effects.toeOffHipRate; }});
-    s.push_back({EffectId::kToeOffVelocity, 1.0, kRadToDeg, [](SwingModelParams& p) -> double& { return p.effects.toeOffKneeRate; }});
+    s.push_back({EffectId::kToeOffVelocity, linear(-20.0, 20.0, 1.0), kRadToDeg,
+                 [](SwingModelParams& p) -> double& { return p.effects.toeOffHipRate; }});
+    s.push_back({EffectId::kToeOffVelocity, linear(-20.0, 20.0, 1.0), kRadToDeg,
+                 [](SwingModelParams& p) -> double& { return p.effects.toeOffKneeRate; }});
   }
   if (e.hipScale)
-    s.push_back({EffectId::kHipMomentScale, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.hipMomentScale; }});
+    s.push_back({EffectId::kHipMomentScale, logScaled(0.1, 10.0), 1.0,
+                 [](SwingModelParams& p) -> double& { return p.effects.hipMomentScale; }});
   if (e.shankScale)
-    s.push_back({EffectId::kShankMassScale, 1.0, 1.0, [](SwingModelParams& p) -> double& { return p.effects.shankMassScale; }});
+    s.push_back({EffectId::kShankMassScale, logScaled(0.1, 10.0), 1.0,
+                 [](SwingModelParams& p) -> double& { return p.effects.shankMassScale; }});
   return s;
 }
+
+// The toe-off pose of a record: within 0.5 rad of its first measured sample.
+BoundedParameter poseParameter(double measured) { return {"", measured, measured - 0.5, measured + 0.5, false, 0.1}; }
 
 std::vector<int> phasesOf(const std::vector<double>& knee, double zone) {
   std::vector<int> ph(knee.size(), 0);
@@ -211,6 +227,22 @@ struct PoseFit {
   SwingPrediction prediction;
 };
 
+// Budgets of the swing refits: generous against the 5-15 iterations a fit takes here, so a
+// model that cannot run or a record in the wrong unit stops with a message, not never.
+BoundedFitSettings poseFitSettings() {
+  BoundedFitSettings s;
+  s.maxIterations = 40;
+  s.maxSeconds = 60.0;
+  s.computeCovariance = false;
+  return s;
+}
+BoundedFitSettings modelFitSettings() {
+  BoundedFitSettings s;
+  s.maxIterations = 60;
+  s.maxSeconds = 300.0;
+  return s;
+}
+
 // The toe-off pose of one record with the model frozen (validation, compare).
 PoseFit fitPose(const SwingBase& base, const SwingModelParams& params, const SwingRecord& r, double tol) {
   ResidualFunction f = [&](const Eigen::VectorXd& x) {
@@ -222,10 +254,9 @@ PoseFit fitPose(const SwingBase& base, const SwingModelParams& params, const Swi
     }
     return res;
   };
-  Eigen::VectorXd x0(2), typ(2);
-  x0 << r.hipFlexion.front(), r.kneeFlexion.front();
-  typ << 0.1, 0.1;
-  const LeastSquaresResult lm = solveLevenbergMarquardt(f, x0, typ);
+  const BoundedFitResult lm =
+      solveBoundedLeastSquares(f, {poseParameter(r.hipFlexion.front()), poseParameter(r.kneeFlexion.front())},
+                               poseFitSettings());
   PoseFit out;
   out.hip = lm.x[0];
   out.knee = lm.x[1];
@@ -253,17 +284,16 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
   const SwingModelParams& start = swingParams(model);
   const std::vector<Slot> slots = slotsOf(start.effects);
   const Eigen::Index g = static_cast<Eigen::Index>(slots.size());
-  const Eigen::Index n = g + 2 * static_cast<Eigen::Index>(train_.size());
-  Eigen::VectorXd x0(n), typ(n);
+  std::vector<BoundedParameter> free;
   SwingModelParams p0 = start;
-  for (Eigen::Index k = 0; k < g; ++k) {
-    x0[k] = slots[static_cast<std::size_t>(k)].ref(p0);
-    typ[k] = slots[static_cast<std::size_t>(k)].typical;
+  for (const Slot& slot : slots) {
+    BoundedParameter b = slot.bounds;
+    b.start = slot.ref(p0);
+    free.push_back(b);
   }
-  for (std::size_t f = 0; f < train_.size(); ++f) {
-    x0[g + 2 * static_cast<Eigen::Index>(f)] = train_[f].hipFlexion.front();
-    x0[g + 2 * static_cast<Eigen::Index>(f) + 1] = train_[f].kneeFlexion.front();
-    typ[g + 2 * static_cast<Eigen::Index>(f)] = typ[g + 2 * static_cast<Eigen::Index>(f) + 1] = 0.1;
+  for (const auto& r : train_) {
+    free.push_back(poseParameter(r.hipFlexion.front()));
+    free.push_back(poseParameter(r.kneeFlexion.front()));
   }
   auto paramsAt = [&](const Eigen::VectorXd& x) {
     SwingModelParams p = start;
@@ -287,8 +317,11 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
     }
     return res;
   };
-  const LeastSquaresResult lm = solveLevenbergMarquardt(fn, x0, typ);
+  const BoundedFitResult lm = solveBoundedLeastSquares(fn, free, modelFitSettings());
   PlantFit s;
+  if (!lm.converged)
+    s.notes.push_back("the swing fit stopped before converging after " + std::to_string(lm.iterations) +
+                      " iterations (" + lm.stopReason + ")");
   const SwingModelParams fitted = paramsAt(lm.x);
   s.model = std::make_shared<SwingModel>(fitted);
   s.rss = lm.cost;
@@ -313,13 +346,9 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
     s.likelihoodResidual.push_back(hip);
   }
   s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
-  // Covariance of the parameters from the Jacobian: s^2 (J'J)^+.
-  const double dofResidual = std::max(1.0, static_cast<double>(rows) - static_cast<double>(n));
-  const Eigen::MatrixXd JtJ = lm.jacobian.transpose() * lm.jacobian;
-  const Eigen::MatrixXd covariance = (lm.cost / dofResidual) * JtJ.completeOrthogonalDecomposition().pseudoInverse();
+  // Covariance of the parameters from the Jacobian at the solution (Ceres), s^2 (J'J)^+.
   for (std::size_t k = 0; k < slots.size(); ++k) {
-    const double se =
-        std::sqrt(std::max(0.0, covariance(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)))) * slots[k].reportScale;
+    const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
     if (!slots[k].effect) {
       s.baseParameters.push_back({"knee_model_scale", fitted.kneeModelScale, se});
       continue;
@@ -328,6 +357,23 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
                            [&](const auto& entry) { return entry.first == *slots[k].effect; });
     if (it == s.effectErrors.end()) it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
     it->second.push_back(se);
+  }
+  const Eigen::MatrixXd correlation = lm.correlation();
+  const Eigen::Index gi = static_cast<Eigen::Index>(slots.size());
+  s.correlation = correlation.topLeftCorner(gi, gi);
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    if (!slots[k].effect) {
+      s.parameterNames.push_back("knee_model_scale");
+      continue;
+    }
+    const auto& d = describeEffect(*slots[k].effect);
+    const std::size_t within = static_cast<std::size_t>(
+        std::count_if(slots.begin(), slots.begin() + static_cast<std::ptrdiff_t>(k),
+                      [&](const Slot& o) { return o.effect == slots[k].effect; }));
+    s.parameterNames.push_back(d.name + "." + d.parameters[within]);
+    if (lm.atBound[k])
+      s.notes.push_back(d.name + "." + d.parameters[within] + " sits on its physical bound (" +
+                        fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) + ")");
   }
   for (const auto& r : validate_) s.validationRmse.push_back(kneeRmse(r, fitPose(base_, fitted, r, tolerance_).prediction));
   return s;

@@ -1,0 +1,169 @@
+#include "numerics/bounded_least_squares.h"
+
+#include <ceres/ceres.h>
+#include <ceres/covariance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/input_error.h"
+
+namespace swingsim {
+
+namespace {
+
+// The scaled coordinate u of a parameter: log(value) or value / typical.
+double toScaled(const BoundedParameter& p, double value) {
+  return p.logScale ? std::log(value) : value / p.typical;
+}
+double fromScaled(const BoundedParameter& p, double u) { return p.logScale ? std::exp(u) : u * p.typical; }
+// d value / d u at u.
+double scaledDerivative(const BoundedParameter& p, double u) { return p.logScale ? std::exp(u) : p.typical; }
+
+Eigen::VectorXd toValues(const std::vector<BoundedParameter>& ps, const double* u) {
+  Eigen::VectorXd x(static_cast<Eigen::Index>(ps.size()));
+  for (std::size_t k = 0; k < ps.size(); ++k) x[static_cast<Eigen::Index>(k)] = fromScaled(ps[k], u[k]);
+  return x;
+}
+
+// Residuals for Ceres at scaled coordinates. An exception (the model cannot run there)
+// rejects the step: Ceres treats `false` as an infeasible point.
+class ScaledResiduals {
+ public:
+  ScaledResiduals(const ResidualFunction& f, const std::vector<BoundedParameter>& ps, Eigen::Index m)
+      : f_(f), ps_(ps), m_(m) {}
+  bool operator()(double const* const* u, double* r) const {
+    try {
+      const Eigen::VectorXd res = f_(toValues(ps_, u[0]));
+      if (res.size() != m_) return false;
+      for (Eigen::Index i = 0; i < m_; ++i) {
+        if (!std::isfinite(res[i])) return false;
+        r[i] = res[i];
+      }
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+
+ private:
+  const ResidualFunction& f_;
+  const std::vector<BoundedParameter>& ps_;
+  Eigen::Index m_;
+};
+
+}  // namespace
+
+Eigen::MatrixXd BoundedFitResult::correlation() const {
+  Eigen::MatrixXd c = covariance;
+  for (Eigen::Index i = 0; i < c.rows(); ++i)
+    for (Eigen::Index j = 0; j < c.cols(); ++j) c(i, j) = covariance(i, j) / (standardErrors[i] * standardErrors[j]);
+  return c;
+}
+
+BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::vector<BoundedParameter>& parameters,
+                                          const BoundedFitSettings& settings) {
+  const std::size_t n = parameters.size();
+  std::vector<double> u(n), lo(n), hi(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const BoundedParameter& p = parameters[k];
+    if (p.logScale && !(p.lower > 0))
+      throw std::invalid_argument("solveBoundedLeastSquares: log-scaled parameter " + p.name + " needs a positive lower bound");
+    if (!(p.lower <= p.upper)) throw std::invalid_argument("solveBoundedLeastSquares: empty range for " + p.name);
+    lo[k] = toScaled(p, p.lower);
+    hi[k] = p.upper >= 1e300 ? std::numeric_limits<double>::infinity() : toScaled(p, p.upper);
+    if (p.lower <= -1e300) lo[k] = -std::numeric_limits<double>::infinity();
+    u[k] = toScaled(p, std::clamp(p.start, p.lower, p.upper));
+  }
+  BoundedFitResult out;
+  const Eigen::VectorXd r0 = f(toValues(parameters, u.data()));  // throws if the start cannot run
+  const Eigen::Index m = r0.size();
+
+  ceres::Problem::Options problemOptions;
+  ceres::Problem problem(problemOptions);
+  ceres::NumericDiffOptions diff;
+  diff.relative_step_size = settings.differenceStep;
+  ceres::CostFunction* cost = nullptr;
+  if (settings.centralDifferences) {
+    auto* c = new ceres::DynamicNumericDiffCostFunction<ScaledResiduals, ceres::CENTRAL>(
+        new ScaledResiduals(f, parameters, m), ceres::TAKE_OWNERSHIP, diff);
+    c->AddParameterBlock(static_cast<int>(n));
+    c->SetNumResiduals(static_cast<int>(m));
+    cost = c;
+  } else {
+    auto* c = new ceres::DynamicNumericDiffCostFunction<ScaledResiduals, ceres::FORWARD>(
+        new ScaledResiduals(f, parameters, m), ceres::TAKE_OWNERSHIP, diff);
+    c->AddParameterBlock(static_cast<int>(n));
+    c->SetNumResiduals(static_cast<int>(m));
+    cost = c;
+  }
+  problem.AddResidualBlock(cost, nullptr, u.data());
+  for (std::size_t k = 0; k < n; ++k) {
+    if (std::isfinite(lo[k])) problem.SetParameterLowerBound(u.data(), static_cast<int>(k), lo[k]);
+    if (std::isfinite(hi[k])) problem.SetParameterUpperBound(u.data(), static_cast<int>(k), hi[k]);
+  }
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = settings.maxIterations;
+  options.max_solver_time_in_seconds = settings.maxSeconds;
+  options.function_tolerance = settings.functionTolerance;
+  options.parameter_tolerance = settings.parameterTolerance;
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  options.num_threads = 1;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+
+  out.x = toValues(parameters, u.data());
+  out.residual = f(out.x);
+  out.cost = out.residual.squaredNorm();
+  out.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  out.converged = summary.termination_type == ceres::CONVERGENCE;
+  if (!out.converged) out.stopReason = summary.message;
+  out.atBound.assign(n, false);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double tol = 1e-6 * std::max(1.0, std::abs(u[k]));
+    out.atBound[k] = (std::isfinite(lo[k]) && u[k] - lo[k] < tol) || (std::isfinite(hi[k]) && hi[k] - u[k] < tol);
+  }
+
+  const Eigen::Index ni = static_cast<Eigen::Index>(n);
+  out.covariance = Eigen::MatrixXd::Constant(ni, ni, std::numeric_limits<double>::quiet_NaN());
+  out.standardErrors = Eigen::VectorXd::Constant(ni, std::numeric_limits<double>::quiet_NaN());
+  if (settings.computeCovariance && m > ni) {
+    ceres::Covariance::Options co;
+    co.algorithm_type = ceres::DENSE_SVD;
+    co.null_space_rank = -1;  // pseudo-inverse: a rank-deficient direction gets a huge variance, not a failure
+    co.min_reciprocal_condition_number = 1e-14;
+    co.num_threads = 1;
+    ceres::Covariance covariance(co);
+    std::vector<std::pair<const double*, const double*>> blocks = {{u.data(), u.data()}};
+    if (covariance.Compute(blocks, &problem)) {
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cu(ni, ni);
+      covariance.GetCovarianceBlock(u.data(), u.data(), cu.data());
+      const double s2 = out.cost / static_cast<double>(m - ni);
+      for (Eigen::Index i = 0; i < ni; ++i) {
+        const double di = scaledDerivative(parameters[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
+        for (Eigen::Index j = 0; j < ni; ++j) {
+          const double dj = scaledDerivative(parameters[static_cast<std::size_t>(j)], u[static_cast<std::size_t>(j)]);
+          out.covariance(i, j) = s2 * di * dj * cu(i, j);
+        }
+      }
+      for (Eigen::Index i = 0; i < ni; ++i) out.standardErrors[i] = std::sqrt(std::max(0.0, out.covariance(i, i)));
+    }
+  }
+  return out;
+}
+
+std::vector<std::pair<int, int>> findCollinearPairs(const Eigen::MatrixXd& correlation, double limit) {
+  std::vector<std::pair<int, int>> pairs;
+  for (Eigen::Index i = 0; i < correlation.rows(); ++i)
+    for (Eigen::Index j = i + 1; j < correlation.cols(); ++j)
+      if (std::abs(correlation(i, j)) > limit) pairs.push_back({static_cast<int>(i), static_cast<int>(j)});
+  std::sort(pairs.begin(), pairs.end(), [&](const auto& a, const auto& b) {
+    return std::abs(correlation(a.first, a.second)) > std::abs(correlation(b.first, b.second));
+  });
+  return pairs;
+}
+
+}  // namespace swingsim
