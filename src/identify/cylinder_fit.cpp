@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "numerics/bounded_least_squares.h"
 
 namespace swingsim {
 
@@ -59,20 +60,35 @@ LinearFit fitLeastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
   return fit;
 }
 
+std::vector<std::string> mauchCoefficientNames(const MauchCylinderParams& params) {
+  std::vector<std::string> n;
+  for (int i = 1; i <= params.phases; ++i)
+    for (const char* c : {"f_N", "k_N_per_m", "c_Ns_per_m"}) n.push_back("phase " + std::to_string(i) + " " + c);
+  const MauchAddedEffects& e = params.effects;
+  if (e.hyperextensionPhase)
+    for (const char* c : {"f_N", "k_N_per_m", "c_Ns_per_m"}) n.push_back(std::string("hyperextension_phase ") + c);
+  if (e.coulombFriction) n.push_back("coulomb_friction force_N");
+  if (e.orificeQuadratic) n.push_back("orifice_quadratic coefficient_Ns2_per_m2");
+  if (e.inertia) n.push_back("inertia mass_kg");
+  if (e.positionDependentDamping) n.push_back("position_dependent_damping coefficient_Ns_per_m2");
+  return n;
+}
+
 CylinderTrace predictBench(const MauchCylinder& cylinder, const BenchData& data) {
   return calcCylinderTrace(cylinder, data.time, data.position, data.velocity, 0.0);
 }
 
 namespace {
 
-// Regression at fixed switch constants.
-LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
+// The regression problem y ~ X b at fixed switch constants.
+void buildRegression(const MauchCylinderParams& params, const std::vector<BenchData>& train, Eigen::MatrixXd& X,
+                     Eigen::VectorXd& y) {
   const MauchCylinder cylinder(params);
   std::size_t rows = 0;
   for (const auto& d : train) rows += d.time.size();
   const int p = cylinder.numCoefficients();
-  Eigen::MatrixXd X(static_cast<Eigen::Index>(rows), p);
-  Eigen::VectorXd y(static_cast<Eigen::Index>(rows));
+  X.resize(static_cast<Eigen::Index>(rows), p);
+  y.resize(static_cast<Eigen::Index>(rows));
   Eigen::Index r = 0;
   for (const auto& d : train) {
     const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
@@ -84,9 +100,92 @@ LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData
       y(r) = d.force[i];
     }
   }
+}
+
+// Regression at fixed switch constants.
+LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
+  Eigen::MatrixXd X;
+  Eigen::VectorXd y;
+  buildRegression(params, train, X, y);
   return fitLeastSquares(X, y);
 }
 
+// Residual of the regression at fixed switch constants (the variable projection functional),
+// by column-pivoting QR of the column-scaled X: the SVD of fitLeastSquares is kept for the
+// final fit, where its rank and condition number are reported.
+Eigen::VectorXd projectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
+  Eigen::MatrixXd X;
+  Eigen::VectorXd y;
+  buildRegression(params, train, X, y);
+  Eigen::VectorXd scale = X.colwise().norm().transpose();
+  for (Eigen::Index j = 0; j < scale.size(); ++j)
+    if (!(scale(j) > 0)) scale(j) = 1.0;
+  const Eigen::MatrixXd Xs = X * scale.cwiseInverse().asDiagonal();
+  const Eigen::VectorXd b = Xs.colPivHouseholderQr().solve(y);
+  return y - Xs * b;
+}
+
+// Training residual y - X b of a model (its coefficients as given) along every record.
+Eigen::VectorXd predictionResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
+  const MauchCylinder cylinder(params);
+  std::size_t rows = 0;
+  for (const auto& d : train) rows += d.time.size();
+  Eigen::VectorXd r(static_cast<Eigen::Index>(rows));
+  Eigen::Index i = 0;
+  for (const auto& d : train) {
+    const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
+    const std::vector<double> accel = params.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
+                                                             : std::vector<double>(d.time.size(), 0.0);
+    for (std::size_t k = 0; k < d.time.size(); ++k, ++i)
+      r[i] = d.force[k] - cylinder.calcForce(d.position[k], d.velocity[k], accel[k], latch[k]);
+  }
+  return r;
+}
+
+// The switch constants as bounded parameters, in the order of switchesFrom.
+std::vector<BoundedParameter> switchParameters(const MauchSwitchParams& start, const SwitchConstantRanges& r,
+                                               bool latch) {
+  std::vector<BoundedParameter> ps = {
+      {"velocity_width_m_per_s", start.velocityWidth, r.velocityWidth[0], r.velocityWidth[1], true, 1.0},
+      {"position_width_m", start.positionWidth, r.positionWidth[0], r.positionWidth[1], true, 1.0},
+      {"hyperextension_position_m", start.hyperextensionPosition, r.hyperextension[0], r.hyperextension[1], false, 1e-4},
+  };
+  if (latch) ps.push_back({"latch_rate_per_s", start.latchRate, r.latchRate[0], r.latchRate[1], true, 1.0});
+  return ps;
+}
+
+MauchSwitchParams switchesFrom(MauchSwitchParams s, const double* x, bool latch) {
+  s.velocityWidth = x[0];
+  s.positionWidth = x[1];
+  s.hyperextensionPosition = x[2];
+  if (latch) s.latchRate = x[3];
+  return s;
+}
+
+// Physical bounds of the linear coefficients: a hydraulic cylinder dissipates, so every
+// damping (c, orifice a) is >= 0; seal friction opposes motion (Fc >= 0); a moving mass is
+// >= 0. Offsets, stiffnesses and the stroke-dependent damping change are free.
+std::vector<std::pair<double, double>> coefficientBounds(const MauchCylinderParams& params) {
+  const std::vector<std::string> names = mauchCoefficientNames(params);
+  std::vector<std::pair<double, double>> b;
+  for (const auto& n : names) {
+    const bool nonNegative = n.find("c_Ns_per_m") != std::string::npos || n.find("force_N") != std::string::npos ||
+                             n.find("Ns2_per_m2") != std::string::npos || n.find("mass_kg") != std::string::npos;
+    b.push_back({nonNegative ? 0.0 : -1e300, 1e300});
+  }
+  return b;
+}
+
+// Best multi-start points polished by Ceres: the switch-width surface has flat regions (a
+// width far below the data's resolution makes a step) where a polish started there stalls.
+constexpr std::size_t kPolishedStarts = 3;
+
+// Geometric points spread over [lo, hi]: lo (hi/lo)^((i + 1/2) / n).
+std::vector<double> spreadLog(const double range[2], int n) {
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(range[0] * std::pow(range[1] / range[0], (i + 0.5) / n));
+  return v;
+}
 
 }  // namespace
 
@@ -137,46 +236,142 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
 
   LinearFit best = regress(model, train);
   out.trainRmseAtStart = best.residualRms;
+  MauchCylinderParams current = model;
+  const bool latch = options.fitLatchRate;
   if (options.fitSwitches) {
-    const MauchSwitchParams s0 = model.switches;
-    if (!(s0.hyperextensionPosition > 0))
-      throw InputError("fit_switches: the model's hyperextension_position_m must be positive for a log grid (got " +
-                       formatNumber(s0.hyperextensionPosition) + ")");
-    const int g = std::max(2, options.gridPoints);
-    std::vector<double> factors;
-    for (int i = 0; i < g; ++i)
-      factors.push_back(std::pow(options.gridFactor, -1.0 + 2.0 * i / (g - 1)));
-    const int total = g * g * g;
-    int done = 0;
-    MauchSwitchParams bestSwitches = s0;
-    for (double fv : factors) {
-      for (double fp : factors) {
-        for (double fh : factors) {
-          MauchCylinderParams trial = model;
-          trial.switches.velocityWidth = s0.velocityWidth * fv;
-          trial.switches.positionWidth = s0.positionWidth * fp;
-          trial.switches.hyperextensionPosition = s0.hyperextensionPosition * fh;
-          const LinearFit fit = regress(trial, train);
-          if (fit.rank == static_cast<int>(p) && fit.residualRms < best.residualRms) {
-            best = fit;
-            bestSwitches = trial.switches;
-          }
-          if (options.progress) options.progress(++done, total);
-        }
-      }
+    // Multi-start: widths and latch rate spread over their physical ranges, xhy at low
+    // quantiles of the training positions (hyperextension is where the piston is lowest).
+    std::vector<double> positions;
+    for (const auto& d : train) positions.insert(positions.end(), d.position.begin(), d.position.end());
+    std::sort(positions.begin(), positions.end());
+    const SwitchConstantRanges& R = options.ranges;
+    std::vector<double> xhyStarts;
+    for (double q : {0.02, 0.05, 0.1, 0.2, 0.3}) {
+      const double v = positions[static_cast<std::size_t>(q * static_cast<double>(positions.size() - 1))];
+      xhyStarts.push_back(std::clamp(v, R.hyperextension[0], R.hyperextension[1]));
     }
-    out.params.switches = bestSwitches;
-    out.switchesFitted = true;
-    auto atEdge = [&](double value, double start) {
-      const double r = value / start;
-      return std::fabs(std::log(r)) > 0.999 * std::log(options.gridFactor);
+    const std::vector<double> vws = spreadLog(R.velocityWidth, 3), pws = spreadLog(R.positionWidth, 4);
+    const std::vector<double> ks = latch ? spreadLog(R.latchRate, 2) : std::vector<double>{model.switches.latchRate};
+    struct Start {
+      double cost;
+      MauchSwitchParams switches;
     };
-    if (atEdge(bestSwitches.velocityWidth, s0.velocityWidth) || atEdge(bestSwitches.positionWidth, s0.positionWidth) ||
-        atEdge(bestSwitches.hyperextensionPosition, s0.hyperextensionPosition))
-      out.warnings.push_back("a fitted switch constant sits at the edge of the search grid; the optimum may lie beyond it");
+    std::vector<Start> starts;
+    const int total = static_cast<int>(vws.size() * pws.size() * xhyStarts.size() * ks.size());
+    for (double vw : vws)
+      for (double pw : pws)
+        for (double xh : xhyStarts)
+          for (double k : ks) {
+            MauchCylinderParams trial = model;
+            trial.switches = {vw, pw, xh, k};
+            starts.push_back({projectedResidual(trial, train).squaredNorm(), trial.switches});
+            if (options.progress) options.progress(static_cast<int>(starts.size()), total + static_cast<int>(kPolishedStarts));
+          }
+    std::sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
+    out.switchStarts = static_cast<int>(starts.size());
+    // Polish the best starts by Ceres over the switch constants (linear part projected out).
+    double bestCost = std::numeric_limits<double>::infinity();
+    MauchSwitchParams bestSwitches = model.switches;
+    for (std::size_t s = 0; s < std::min<std::size_t>(kPolishedStarts, starts.size()); ++s) {
+      ResidualFunction f = [&](const Eigen::VectorXd& x) {
+        MauchCylinderParams trial = model;
+        trial.switches = switchesFrom(model.switches, x.data(), latch);
+        return projectedResidual(trial, train);
+      };
+      BoundedFitSettings settings;
+      settings.maxIterations = 50;
+      settings.maxSeconds = 30.0;
+      settings.functionTolerance = 1e-7;
+      settings.computeCovariance = false;
+      settings.differenceStep = 1e-6;
+      const BoundedFitResult r = solveBoundedLeastSquares(f, switchParameters(starts[s].switches, R, latch), settings);
+      if (!r.converged && r.iterations >= settings.maxIterations)
+        out.warnings.push_back("the switch-constant fit stopped at its budget of " + std::to_string(settings.maxIterations) +
+                               " iterations without converging");
+      if (r.cost < bestCost) {
+        bestCost = r.cost;
+        bestSwitches = switchesFrom(model.switches, r.x.data(), latch);
+      }
+      if (options.progress) options.progress(total + static_cast<int>(s) + 1, total + static_cast<int>(kPolishedStarts));
+    }
+    current.switches = bestSwitches;
+    out.switchesFitted = true;
+    best = regress(current, train);
   }
+  setMauchCoefficientVector(current, best.coefficients);
+
+  // Joint refinement of every constant (linear coefficients within their physical bounds,
+  // and the fitted switch constants) by Ceres, which also gives the covariance of them all.
+  // Needed when switch constants were fitted (their uncertainty) or a coefficient left its
+  // physical range; otherwise the regression is the answer and its standard errors exact.
+  const std::vector<std::string> names = mauchCoefficientNames(current);
+  const auto bounds = coefficientBounds(current);
+  bool outside = false;
+  for (std::size_t j = 0; j < bounds.size(); ++j)
+    outside = outside || best.coefficients[j] < bounds[j].first || best.coefficients[j] > bounds[j].second;
+  std::vector<double> values = best.coefficients, errors = best.standardErrors;
+  std::vector<bool> atBound(names.size(), false);
+  Eigen::MatrixXd correlation;
+  std::vector<BoundedParameter> all;
+  for (std::size_t j = 0; j < names.size(); ++j) {
+    const double se = std::isfinite(best.standardErrors[j]) ? best.standardErrors[j] : 0.0;
+    all.push_back({names[j], best.coefficients[j], bounds[j].first, bounds[j].second, false,
+                   std::max({std::abs(best.coefficients[j]), se, 1e-6})});
+  }
+  const std::size_t nLinear = all.size();
+  if (out.switchesFitted)
+    for (const auto& b : switchParameters(current.switches, options.ranges, latch)) all.push_back(b);
+  if ((out.switchesFitted || outside) && best.rank == static_cast<int>(p)) {
+    ResidualFunction f = [&](const Eigen::VectorXd& x) {
+      MauchCylinderParams trial = current;
+      setMauchCoefficientVector(trial, std::vector<double>(x.data(), x.data() + nLinear));
+      if (out.switchesFitted) trial.switches = switchesFrom(current.switches, x.data() + nLinear, latch);
+      return predictionResidual(trial, train);
+    };
+    BoundedFitSettings settings;
+    // Variable projection already found the joint optimum unless a bound is violated: then
+    // only the covariance at that point is needed.
+    settings.maxIterations = outside ? 30 : 0;
+    settings.maxSeconds = 30.0;
+    settings.differenceStep = 1e-6;
+    const BoundedFitResult r = solveBoundedLeastSquares(f, all, settings);
+    values.assign(r.x.data(), r.x.data() + r.x.size());
+    errors.assign(r.standardErrors.data(), r.standardErrors.data() + r.standardErrors.size());
+    atBound = r.atBound;
+    correlation = r.correlation();
+    setMauchCoefficientVector(current, std::vector<double>(values.begin(), values.begin() + static_cast<long>(nLinear)));
+    if (out.switchesFitted) current.switches = switchesFrom(current.switches, values.data() + nLinear, latch);
+    best.coefficients.assign(values.begin(), values.begin() + static_cast<long>(nLinear));
+    best.standardErrors.assign(errors.begin(), errors.begin() + static_cast<long>(nLinear));
+    best.residualRms = std::sqrt(r.cost / static_cast<double>(rows));
+  }
+  out.params = current;
   out.regression = best;
-  setMauchCoefficientVector(out.params, best.coefficients);
+  for (std::size_t j = 0; j < all.size(); ++j) {
+    FittedConstant c;
+    c.name = all[j].name;
+    c.value = values[j];
+    c.standardError = errors[j];
+    c.lower = all[j].lower;
+    c.upper = all[j].upper;
+    c.atBound = j < atBound.size() && atBound[j];
+    c.includesZero = std::isfinite(c.standardError) && j < nLinear && std::abs(c.value) < 1.96 * c.standardError;
+    out.constants.push_back(c);
+    if (c.atBound && j < nLinear)
+      out.warnings.push_back(c.name + " = " + fmt3(c.value) + " sits on its physical bound: the data ask for a value " +
+                             (c.value <= c.lower ? "below " + fmt3(c.lower) : "above " + fmt3(c.upper)) +
+                             " (a non-physical sign); the model may be missing an effect");
+    else if (j >= nLinear && (c.atBound || !(c.standardError < std::abs(c.value))))
+      out.warnings.push_back(c.name + " = " + fmt3(c.value) + " is not determined by the training data (" +
+                             (c.atBound ? "at the edge of its range " + fmt3(c.lower) + ".." + fmt3(c.upper)
+                                        : "standard error " + fmt3(c.standardError) + " larger than the value") +
+                             "): records that differ from the training one there (another speed, another "
+                             "hyperextension hold) may fit worse; train on more than one speed to pin it down");
+  }
+  if (correlation.size() > 0) {
+    for (const auto& [i, j] : findCollinearPairs(correlation, kCollinearLimit))
+      out.collinear.push_back({all[static_cast<std::size_t>(i)].name, all[static_cast<std::size_t>(j)].name, correlation(i, j)});
+  }
   if (best.rank < static_cast<int>(p))
     out.warnings.push_back("rank-deficient regression (rank " + std::to_string(best.rank) + " of " + std::to_string(p) +
                            "): some phase is (almost) never active in the training data; its coefficients are not identified");

@@ -35,27 +35,66 @@ LinearFit fitLeastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y);
 /// few percent makes individual coefficients meaningless (only their sum is determined).
 constexpr double kIllConditionedLimit = 1e8;
 
+/// Physical ranges of the switch constants searched by the fit (docs/mauch.md, "Fitting the
+/// switch constants", says where each comes from).
+struct SwitchConstantRanges {
+  double velocityWidth[2] = {1e-5, 2e-2};     ///< m/s: sensor resolution .. 10 % of peak piston speed
+  double positionWidth[2] = {1e-6, 2e-3};     ///< m: sensor resolution .. 5 % of the stroke
+  double hyperextension[2] = {-2e-3, 2e-3};   ///< xhy, m: within 2 mm of full extension
+  double latchRate[2] = {5.0, 1e5};           ///< 1/s: time constant 0.2 s .. far below a sample
+};
+
 struct CylinderFitOptions {
-  bool fitSwitches = false;  ///< also profile velocity width, position width and xhy
-  int gridPoints = 9;        ///< per switch constant, log-spaced
-  double gridFactor = 10.0;  ///< grid spans value / factor .. value * factor
-  /// Called as progress(done, total) while profiling.
+  /// Also fit the switch constants (velocity and position widths, xhy and, if fitLatchRate,
+  /// the latch rate) by bounded nonlinear least squares (Ceres) with the linear coefficients
+  /// projected out (variable projection), from a multi-start grid spread over the physical
+  /// ranges and the training positions: the model file's switch values are not used.
+  bool fitSwitches = false;
+  bool fitLatchRate = true;
+  SwitchConstantRanges ranges;
+  /// Called as progress(done, total) while fitting switch constants.
   std::function<void(int, int)> progress;
 };
 
+/// One fitted constant with its uncertainty and what is wrong with it, if anything.
+struct FittedConstant {
+  std::string name;          ///< "phase 2 c_Ns_per_m", "velocity_width_m_per_s"
+  double value = 0;
+  double standardError = 0;  ///< NaN if not identified
+  double lower = -1e300, upper = 1e300;  ///< physical bounds
+  bool atBound = false;      ///< the data pushed it onto a physical bound
+  bool includesZero = false;  ///< its 95 % confidence interval includes 0
+};
+
+/// A correlated pair of fitted constants (|r| above the collinearity limit).
+struct CollinearPair {
+  std::string a, b;
+  double correlation = 0;
+};
+
+/// Correlation magnitude above which two fitted constants are reported as collinear.
+constexpr double kCollinearLimit = 0.95;
+
 struct CylinderFit {
   MauchCylinderParams params;   ///< the model with fitted coefficients (and switches)
-  LinearFit regression;         ///< at the final switches
+  LinearFit regression;         ///< at the final switches (coefficients, standard errors final)
   MauchSwitchParams startSwitches;
   double trainRmseAtStart = 0;  ///< N, coefficients fitted at the YAML switches
   bool switchesFitted = false;
+  int switchStarts = 0;         ///< multi-start points tried
+  /// Every fitted constant (linear coefficients in regressor order, then fitted switch
+  /// constants), with standard errors from the Jacobian at the solution.
+  std::vector<FittedConstant> constants;
+  std::vector<CollinearPair> collinear;  ///< |r| > kCollinearLimit, strongest first
   std::vector<std::string> warnings;
 };
 
+/// Names (with units) of a model's linear coefficients in regressor order.
+std::vector<std::string> mauchCoefficientNames(const MauchCylinderParams& params);
+
 /// Fits `model`'s coefficients (its values are only a start for switches) to the training
 /// files, each starting unlatched (S2 = 0: bench records start at heel strike).
-/// Throws InputError if there are fewer samples than coefficients, or if fitSwitches is
-/// set with a non-positive xhy (no log grid). Throws RunError if a phase is active in fewer
+/// Throws InputError if there are fewer samples than coefficients. Throws RunError if a phase is active in fewer
 /// than 3 training samples (gate summed over samples): its coefficients are not identified.
 CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<BenchData>& train,
                         const CylinderFitOptions& options = {});
