@@ -52,7 +52,7 @@ int runFit(const FitArguments& args, const std::string& command) {
   for (std::size_t i = 0; i < models.size(); ++i) {
     CylinderFitOptions options;
     options.fitSwitches = study.fitSwitches;
-    ProgressReporter progress(names[i] + ": profiling switches", "switch settings");
+    ProgressReporter progress(names[i] + ": fitting switch constants", "starts");
     options.progress = [&](int done, int total) { progress.update(done, total); };
     ModelEvaluation e;
     e.name = names[i];

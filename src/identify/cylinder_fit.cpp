@@ -250,13 +250,19 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
       const double v = positions[static_cast<std::size_t>(q * static_cast<double>(positions.size() - 1))];
       xhyStarts.push_back(std::clamp(v, R.hyperextension[0], R.hyperextension[1]));
     }
-    const std::vector<double> vws = spreadLog(R.velocityWidth, 3), pws = spreadLog(R.positionWidth, 4);
-    const std::vector<double> ks = latch ? spreadLog(R.latchRate, 2) : std::vector<double>{model.switches.latchRate};
+    std::vector<double> vws = spreadLog(R.velocityWidth, 3), pws = spreadLog(R.positionWidth, 4);
+    std::vector<double> ks = latch ? spreadLog(R.latchRate, 2) : std::vector<double>{model.switches.latchRate};
     struct Start {
       double cost;
       MauchSwitchParams switches;
     };
     std::vector<Start> starts;
+    if (!options.multiStart) {
+      vws.assign(1, model.switches.velocityWidth);
+      pws.assign(1, model.switches.positionWidth);
+      xhyStarts.assign(1, model.switches.hyperextensionPosition);
+      ks.assign(1, model.switches.latchRate);
+    }
     const int total = static_cast<int>(vws.size() * pws.size() * xhyStarts.size() * ks.size());
     for (double vw : vws)
       for (double pw : pws)
@@ -279,13 +285,14 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
         return projectedResidual(trial, train);
       };
       BoundedFitSettings settings;
-      settings.maxIterations = 50;
+      // A polish near a known fit (no multi-start) needs a few steps; its budget says so.
+      settings.maxIterations = options.multiStart ? 50 : 12;
       settings.maxSeconds = 30.0;
-      settings.functionTolerance = 1e-7;
+      settings.functionTolerance = options.multiStart ? 1e-7 : 1e-5;
       settings.computeCovariance = false;
       settings.differenceStep = 1e-6;
       const BoundedFitResult r = solveBoundedLeastSquares(f, switchParameters(starts[s].switches, R, latch), settings);
-      if (!r.converged && r.iterations >= settings.maxIterations)
+      if (options.multiStart && !r.converged && r.iterations >= settings.maxIterations)
         out.warnings.push_back("the switch-constant fit stopped at its budget of " + std::to_string(settings.maxIterations) +
                                " iterations without converging");
       if (r.cost < bestCost) {

@@ -51,6 +51,8 @@ struct CylinderFitOptions {
   /// ranges and the training positions: the model file's switch values are not used.
   bool fitSwitches = false;
   bool fitLatchRate = true;
+  /// false: polish from the model's own switch constants only (a refit near a known fit).
+  bool multiStart = true;
   SwitchConstantRanges ranges;
   /// Called as progress(done, total) while fitting switch constants.
   std::function<void(int, int)> progress;

@@ -159,10 +159,15 @@ double calcCylinderEffectRms(const MauchCylinderParams& truth, EffectId effect, 
 
 CylinderPlant::CylinderPlant(const MauchCylinderParams& base, std::vector<BenchData> train,
                              std::vector<BenchData> validate, bool fitSwitches, double plotSeconds)
-    : start_(base), train_(std::move(train)), validate_(std::move(validate)), plotSeconds_(plotSeconds) {
+    : start_(base), train_(std::move(train)), validate_(std::move(validate)), plotSeconds_(plotSeconds),
+      fitSwitches_(fitSwitches) {
   if (fitSwitches) {
     CylinderFitOptions o;
     o.fitSwitches = true;
+    // The latch rate stays the switch_delay candidate's: a normal-speed record alone rarely
+    // determines it (its hyperextension hold suits a slow and a fast latch alike), and the
+    // candidate is judged on held-out records, which do.
+    o.fitLatchRate = false;
     const CylinderFit f = fitCylinder(base, train_, o);
     start_ = f.params;
     warnings_ = f.warnings;
@@ -172,7 +177,14 @@ CylinderPlant::CylinderPlant(const MauchCylinderParams& base, std::vector<BenchD
 PlantModelPtr CylinderPlant::baseModel() const { return std::make_shared<CylinderModel>(start_); }
 
 PlantFit CylinderPlant::fit(const PlantModel& model) const {
-  const CylinderFit fitted = fitCylinder(cylinderParams(model), train_);
+  // With fit_switches, every candidate refits the switch widths and xhy too (a polish from
+  // the baseline's multi-start fit): a hidden effect bends them, and the candidate that
+  // explains it should get them back.
+  CylinderFitOptions options;
+  options.fitSwitches = fitSwitches_;
+  options.fitLatchRate = false;
+  options.multiStart = false;
+  const CylinderFit fitted = fitCylinder(cylinderParams(model), train_, options);
   PlantFit s;
   s.model = std::make_shared<CylinderModel>(fitted.params);
   const MauchCylinder cyl(fitted.params);
@@ -185,6 +197,7 @@ PlantFit CylinderPlant::fit(const PlantModel& model) const {
   }
   s.likelihoodResidual = s.trainResidual;
   s.trainRmse = std::sqrt(s.rss / static_cast<double>(s.samples));
+  s.notes = fitted.warnings;
   for (const auto& d : validate_) s.validationRmse.push_back(rmsOf(residualOf(cyl, d)));
   for (const auto& descriptor : effectTable()) {
     if (descriptor.plant != PlantKind::kCylinder || !hasEffect(fitted.params, descriptor.id)) continue;

@@ -60,6 +60,7 @@ class CylinderPlant final : public DiagnosisPlant {
   MauchCylinderParams start_;
   std::vector<BenchData> train_, validate_;
   double plotSeconds_;
+  bool fitSwitches_ = false;
   std::vector<std::string> warnings_;
 };
 

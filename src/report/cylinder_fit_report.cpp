@@ -52,12 +52,12 @@ std::string formatFitTable(const std::vector<ModelEvaluation>& models) {
     s += m.name + ": " + std::to_string(r.samples) + " training samples, rank " + std::to_string(r.rank) +
          ", condition number " + fmt("%.3g", r.conditionNumber) + " (columns scaled)";
     if (m.fit.switchesFitted) {
-      const auto& a = m.fit.startSwitches;
       const auto& b = m.fit.params.switches;
-      s += "\n  switches fitted: velocity width " + fmt("%.3g", a.velocityWidth) + " -> " + fmt("%.3g", b.velocityWidth) +
-           " m/s, position width " + fmt("%.3g", a.positionWidth) + " -> " + fmt("%.3g", b.positionWidth) +
-           " m, xhy " + fmt("%.3g", a.hyperextensionPosition) + " -> " + fmt("%.3g", b.hyperextensionPosition) +
-           " m; training RMSE " + fmt("%.1f", m.fit.trainRmseAtStart) + " -> " + fmt("%.1f", r.residualRms) + " N";
+      s += "\n  switch constants fitted (Ceres, " + std::to_string(m.fit.switchStarts) +
+           " starts over the physical ranges): velocity width " + fmt("%.3g", b.velocityWidth) + " m/s, position width " +
+           fmt("%.3g", b.positionWidth) + " m, xhy " + fmt("%.3g", b.hyperextensionPosition) + " m, latch rate " +
+           fmt("%.3g", b.latchRate) + " /s; training RMSE " + fmt("%.1f", m.fit.trainRmseAtStart) +
+           " N at the model file's switches -> " + fmt("%.1f", r.residualRms) + " N";
     }
     s += "\n  phase          f (N)            k (N/m)              c (N s/m)\n";
     for (int i = 0; i < m.fit.params.phases; ++i) {
@@ -66,6 +66,14 @@ std::string formatFitTable(const std::vector<ModelEvaluation>& models) {
       s += "  " + std::to_string(i + 1) + fmt("  %10.2f", c.f) + fmt(" +- %-7.2g", se(0)) + fmt(" %11.1f", c.k) +
            fmt(" +- %-7.2g", se(1)) + fmt(" %10.2f", c.c) + fmt(" +- %-7.2g", se(2)) + "\n";
     }
+    std::string flagged;
+    for (const auto& k : m.fit.constants) {
+      if (k.includesZero) flagged += (flagged.empty() ? "" : ", ") + k.name;
+    }
+    if (!flagged.empty()) s += "  95 % confidence interval includes 0 (not distinguishable from no term): " + flagged + "\n";
+    for (const auto& c : m.fit.collinear)
+      s += "  collinear: " + c.a + " and " + c.b + " (correlation " + fmt("%.3f", c.correlation) +
+           "): the data fix a combination of them, not each\n";
     for (const auto& w : m.fit.warnings) s += "  warning: " + w + "\n";
   }
   // Table 2 layout: one row per model, ME / RMSE / R^2 per file.
@@ -105,7 +113,31 @@ std::string formatFitJson(const std::vector<ModelEvaluation>& models) {
     Json metrics = Json::object();
     for (const auto& f : m.files)
       metrics[f.data->stem] = {{"me_N", f.metrics.maxError}, {"rmse_N", f.metrics.rmse}, {"r2", f.metrics.r2}};
-    list.push_back({{"model", m.name}, {"coefficients", coefficients}, {"metrics", metrics}});
+    auto bound = [](double v) { return std::abs(v) >= 1e300 ? Json() : Json(v); };  // null: unbounded
+    Json constants = Json::array();
+    for (const auto& k : m.fit.constants)
+      constants.push_back({{"name", k.name},
+                           {"value", k.value},
+                           {"standard_error", k.standardError},
+                           {"lower_bound", bound(k.lower)},
+                           {"upper_bound", bound(k.upper)},
+                           {"at_bound", k.atBound},
+                           {"ci95_includes_zero", k.includesZero}});
+    Json collinear = Json::array();
+    for (const auto& c : m.fit.collinear) collinear.push_back({{"a", c.a}, {"b", c.b}, {"correlation", c.correlation}});
+    const auto& sw = m.fit.params.switches;
+    list.push_back({{"model", m.name},
+                    {"coefficients", coefficients},
+                    {"switches",
+                     {{"fitted", m.fit.switchesFitted},
+                      {"velocity_width_m_per_s", sw.velocityWidth},
+                      {"position_width_m", sw.positionWidth},
+                      {"hyperextension_position_m", sw.hyperextensionPosition},
+                      {"latch_rate_per_s", sw.latchRate}}},
+                    {"constants", constants},
+                    {"collinear", collinear},
+                    {"warnings", m.fit.warnings},
+                    {"metrics", metrics}});
   }
   return formatJson({{"models", list}});
 }
