@@ -213,7 +213,7 @@ TEST(BadInputCatalogue, YamlHugeNumbers) {
               HasSubstr("height_m: expected a standing height between 0.5 and 2.6 m (got 1e+300)"));
   const YamlLoader sweep = yamlLoaders()[3];
   EXPECT_THAT(errorOf(sweep, withValue(sweep, "1e300")),
-              HasSubstr("accuracy: expected a relative accuracy in (0, 0.01] (got 1e+300)"));
+              HasSubstr("accuracy: expected a relative accuracy in [1e-14, 0.01] (got 1e+300)"));
 }
 
 // An alias that refers to an alias ... ("billion laughs") must not take exponential time.
