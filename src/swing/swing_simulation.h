@@ -65,12 +65,12 @@ struct SwingOptions {
   double bounceWindowAccuracyFactor = 100;
   /// Budgets of one swing, far above what any study needs (a swing of the bundled
   /// participants takes a few hundred realizations, 15000 at accuracy 1e-12, and
-  /// milliseconds; the budget is about 3 s of computing): a knee law far too
+  /// milliseconds; the budget is 1 to 2 s of computing): a knee law far too
   /// stiff for an explicit integrator at this accuracy (a damping table in N m s/rad
   /// written 1e6 too large, an accuracy of 1e-18) would otherwise run for hours. Past
   /// either, simulateSwing throws RunError naming the participant, the lowering and what
   /// to change.
-  long maxRealizations = 300000;
+  long maxRealizations = 150000;
   double maxWallSeconds = 60;  ///< s of wall-clock time for one swing
 };
 
