@@ -567,7 +567,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     const State& s = stepper->getState();
     if (stepper->getNumRealizations() > options.maxRealizations)
       throw overBudget(std::to_string(stepper->getNumRealizations()) + " realizations (the budget of one swing is " +
-                           std::to_string(options.maxRealizations) + "; a normal swing takes a few thousand)",
+                           std::to_string(options.maxRealizations) + "; a normal swing takes a few hundred)",
                        s);
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count() > options.maxWallSeconds)
       throw overBudget(formatNumber(options.maxWallSeconds) + " s of computing (the limit for one swing; a normal swing takes milliseconds)", s);
