@@ -1,11 +1,18 @@
 #include "cli/command.h"
 
+#include "cli/option_checks.h"
+
 namespace swingsim::cli {
 
 CLI::Option* addTextOption(CLI::App* sub, const std::string& flag, std::optional<std::string>& value,
                            const std::string& help, const std::string& typeName) {
-  return sub->add_option_function<std::string>(flag, [&value](const std::string& v) { value = v; }, help)
-      ->type_name(typeName);
+  CLI::Option* option =
+      sub->add_option_function<std::string>(flag, [&value](const std::string& v) { value = v; }, help)->type_name(typeName);
+  // Where output goes is checked while parsing: a directory given for a file, or a place we
+  // cannot write, fails before any computation.
+  if (typeName == "FILE") option->check(writableFilePath());
+  if (typeName == "DIR") option->check(writableFolderPath());
+  return option;
 }
 
 CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json) {

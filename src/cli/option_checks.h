@@ -13,12 +13,20 @@
 namespace swingsim::cli {
 
 /// A finite number; `check(value)` returns "" if it is usable, else what was expected
-/// ("expected a relative accuracy in (0, 0.01]").
+/// ("expected a relative accuracy in [1e-14, 0.01]").
 CLI::Validator finiteNumber(std::function<std::string(double)> check = {});
 /// A whole number of at least `min`; `expected` says what is wanted.
 CLI::Validator wholeNumberFrom(int min, const std::string& expected);
 /// One of `keys`.
 CLI::Validator oneOf(const std::vector<std::string>& keys);
+
+/// A file the command will write (--json, --save-model): not a directory, and inside a
+/// folder that exists or can be made (the nearest existing one is a folder we may write
+/// in). Checked while parsing, so a bad place fails before any computation or output.
+CLI::Validator writableFilePath();
+/// A folder the command will write into (--out): not an existing file, and either a
+/// writable folder or one that can be made.
+CLI::Validator writableFolderPath();
 
 /// "0.5@0.2": 0.5 kg at 0.2 m below the knee (both finite, >= 0); nullopt if malformed.
 std::optional<AddedMass> readAddedMass(const std::string& text);

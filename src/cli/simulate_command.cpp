@@ -112,7 +112,7 @@ Command addSimulateCommand(CLI::App& app) {
       ->type_name("METHOD")
       ->check(oneOf(integratorKeys()));
   sub->add_option_function<double>("--accuracy", [a](double v) { a->accuracy = v; },
-                                   "integrator relative accuracy, (0, 0.01] (default: the integrator's converged one)")
+                                   "integrator relative accuracy, [1e-14, 0.01] (default: the integrator's converged one)")
       ->type_name("A")
       ->check(finiteNumber(checkAccuracy));
   addJsonOption(sub, a->json);

@@ -7,6 +7,7 @@
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
+#include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
@@ -16,8 +17,20 @@
 namespace swingsim::cli {
 namespace {
 
+// Set by SIGINT or SIGTERM: the sweep stops starting swings; in the write phase the staged
+// files are discarded rather than left half-written.
 volatile bool gInterrupted = false;
 extern "C" void onInterrupt(int) { gInterrupted = true; }
+
+void catchInterrupts() {
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
+}
+
+void restoreInterrupts() {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
 
 /// What `swingsim sweep` was given; nullopt: not given (the default applies).
 struct SweepArguments {
@@ -35,14 +48,13 @@ int runSweepCommand(const SweepArguments& a) {
   }
   const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + makeSafeFileStem(study.name) : study.outputDir);
 
-  std::signal(SIGINT, onInterrupt);
+  catchInterrupts();
   const SweepResults results = [&] {
     // Scoped: an interrupted run's bar is ended before the message below.
     ProgressReporter progress("sweep " + study.name, "swings");
     progress.note(std::to_string(study.participants.size()) + " participants (" + study.path + ")");
     return runSweep(study, a.jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
   }();
-  std::signal(SIGINT, SIG_DFL);
 
   std::printf("%s", formatSweepTables(study, results).c_str());
   if (gInterrupted) {
@@ -65,10 +77,33 @@ int runSweepCommand(const SweepArguments& a) {
     }
     std::fprintf(stderr, "swingsim: interrupted; finished rows are in %s/sweep.partial.csv; not run:%s\n", out.c_str(),
                  missing.c_str());
+    restoreInterrupts();
     return 1;
   }
-  for (const auto& [name, contents] : makeSweepReport(study, results)) writeFileAtomic(out + "/" + name, contents);
-  if (a.json) writeFileAtomic(*a.json, formatSweepJson(results));
+  // The write phase: every file is staged inside --out and moved into place at the end, so a
+  // run stopped here (or failing) leaves the folder as it was, with no temporary files.
+  {
+    StagedOutput staged(out);
+    for (const auto& [name, contents] : makeSweepReport(study, results)) {
+      if (gInterrupted) break;
+      staged.add(name, contents);
+    }
+    if (a.json && !gInterrupted) writeFileAtomic(*a.json + ".staged", formatSweepJson(results));
+    if (gInterrupted) {
+      staged.discard();
+      if (a.json) std::remove((*a.json + ".staged").c_str());
+      std::fprintf(stderr, "swingsim: interrupted while writing the report; nothing in %s was changed\n", out.c_str());
+      restoreInterrupts();
+      return 1;
+    }
+    // A partial CSV of an earlier, interrupted run is out of date now.
+    staged.commit({"sweep.partial.csv"});
+    if (a.json && std::rename((*a.json + ".staged").c_str(), a.json->c_str()) != 0) {
+      std::remove((*a.json + ".staged").c_str());
+      throw RunError(*a.json + ": cannot move the finished file into place");
+    }
+  }
+  restoreInterrupts();
   std::printf("\nreport: %s/report.md\n", out.c_str());
   return 0;
 }

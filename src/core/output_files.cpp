@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -43,12 +44,80 @@ void writeFileAtomic(const std::string& path, const std::string& contents) {
   }
 }
 
-std::string readFile(const std::string& path) {
+StagedOutput::StagedOutput(std::string folder)
+    : folder_(std::move(folder)), staging_(folder_ + "/.staging-" + std::to_string(::getpid())) {
+  std::error_code ec;
+  std::filesystem::remove_all(staging_, ec);  // left by a killed run with our pid
+  makeDirectories(staging_);
+}
+
+StagedOutput::~StagedOutput() { discard(); }
+
+void StagedOutput::add(const std::string& name, const std::string& contents) {
+  writeFileAtomic(staging_ + "/" + name, contents);
+  names_.push_back(name);
+}
+
+void StagedOutput::commit(const std::vector<std::string>& stale) {
+  for (const auto& name : names_) {
+    const std::filesystem::path target = std::filesystem::path(folder_) / name;
+    if (target.has_parent_path()) makeDirectories(target.parent_path().string());
+    const std::string from = staging_ + "/" + name;
+    if (std::rename(from.c_str(), target.c_str()) != 0)
+      throw RunError(target.string() + ": cannot move the finished file into place from " + from);
+  }
+  names_.clear();
+  discard();
+  for (const auto& name : stale) {
+    std::error_code ec;
+    std::filesystem::remove(std::filesystem::path(folder_) / name, ec);
+  }
+}
+
+void StagedOutput::discard() {
+  if (staging_.empty()) return;
+  std::error_code ec;
+  std::filesystem::remove_all(staging_, ec);
+  names_.clear();
+}
+
+std::string formatByteCount(std::uintmax_t bytes) {
+  char buf[64];
+  if (bytes < 1024) {
+    std::snprintf(buf, sizeof buf, "%ju bytes", bytes);
+  } else if (bytes < (std::uintmax_t{1} << 20)) {
+    std::snprintf(buf, sizeof buf, "%.4g kB", static_cast<double>(bytes) / 1024);
+  } else if (bytes < (std::uintmax_t{1} << 30)) {
+    std::snprintf(buf, sizeof buf, "%.4g MiB", static_cast<double>(bytes) / (1 << 20));
+  } else {
+    std::snprintf(buf, sizeof buf, "%.4g GiB", static_cast<double>(bytes) / (1 << 30));
+  }
+  return buf;
+}
+
+std::string readFile(const std::string& path, std::size_t maxBytes) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::is_directory(status)) throw InputError(path + ": is a directory (expected a file)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  // Read in chunks up to one byte past the limit: a file's stated size can lie (a device, a
+  // pipe, /proc) and reading the whole of /dev/zero would never end.
+  std::string text;
+  char chunk[1 << 16];
+  while (in && text.size() <= maxBytes) {
+    in.read(chunk, static_cast<std::streamsize>(std::min<std::size_t>(sizeof chunk, maxBytes + 1 - text.size())));
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw InputError(path + ": read error");
+  if (text.size() > maxBytes) {
+    const bool regular = !ec && std::filesystem::is_regular_file(status);
+    const std::string size = regular ? formatByteCount(std::filesystem::file_size(path, ec))
+                                     : "more than " + formatByteCount(maxBytes) + " read and not at its end (a device or a pipe?)";
+    throw InputError(path + ": file too large for an input file (" + size + "; the limit is " + formatByteCount(maxBytes) +
+                     "): is this the right file?");
+  }
+  return text;
 }
 
 std::string fileStem(const std::string& path) {

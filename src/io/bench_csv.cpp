@@ -1,6 +1,7 @@
 #include "io/bench_csv.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/input_error.h"
 #include "core/output_files.h"
@@ -28,6 +29,13 @@ BenchData readBenchCsv(const std::string& path, std::size_t minRows) {
   if (*hi - *lo < kMinStroke)
     throw InputError(path + ": position_m: the piston never moves (all " + std::to_string(d.position.size()) +
                      " rows are " + formatNumber(*lo) + " m); a fit needs a varying position");
+  // A knee cylinder's stroke is a few centimetres: metres of travel are millimetres.
+  constexpr double kMaxPistonPosition = 1.0;  // m
+  if (std::max(std::fabs(*lo), std::fabs(*hi)) > kMaxPistonPosition)
+    throw InputError(path + ": position_m: the piston reaches " +
+                     formatNumber(std::fabs(*lo) > std::fabs(*hi) ? *lo : *hi) + " m (a knee cylinder's stroke is a few "
+                     "centimetres; more than " + formatNumber(kMaxPistonPosition) +
+                     " m): the column looks like millimetres, expected metres");
   d.velocity = estimatePistonVelocity(d.time, d.position);
   return d;
 }

@@ -58,8 +58,16 @@ void serialize(A& a, DampingTableParams& p) {
 
 template <class A>
 void serialize(A& a, KneeGeometryParams& g) {
-  a.optionalNumber("ab_m", g.ab, mustBePositive);
-  a.optionalNumber("ac_m", g.ac, mustBePositive);
+  // The mechanism's links are centimetres long: half a metre is a length in millimetres.
+  constexpr double kMaxLinkLength = 0.5;  // m
+  const ValueCheck link = [](double v) {
+    if (!(v > 0)) return std::string("must be positive");
+    return v <= kMaxLinkLength ? std::string()
+                               : "expected a link length of at most " + formatNumber(kMaxLinkLength) +
+                                     " m (is it in millimetres? the key is in metres)";
+  };
+  a.optionalNumber("ab_m", g.ab, link);
+  a.optionalNumber("ac_m", g.ac, link);
   a.require(g.ab != g.ac, "ac_m", "must differ from ab_m", [&] { return formatNumber(g.ac); });
 }
 

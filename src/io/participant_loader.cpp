@@ -12,10 +12,28 @@ namespace swingsim {
 
 struct SegmentsOf {};  // context: the `segments:` map of a participant
 
+// Plausibility bounds that catch a unit mistake (millimetres for metres, grams for
+// kilograms) where it was made, rather than as a strange swing.
+constexpr double kMaxSegmentLength = 1.5;  // m: longer than any thigh, shank or foot
+constexpr double kMaxSegmentMass = 150;    // kg: heavier than a plausible whole body
+constexpr double kMaxBodyMass = 500;       // kg
+
+std::string checkSegmentLength(double v) {
+  if (!(v > 0)) return "must be positive";
+  return v <= kMaxSegmentLength ? "" : "expected a segment length of at most " + formatNumber(kMaxSegmentLength) +
+                                           " m (is it in millimetres? the key is in metres)";
+}
+
+std::string checkSegmentMass(double v) {
+  if (!(v > 0)) return "must be positive";
+  return v <= kMaxSegmentMass ? "" : "expected a segment mass of at most " + formatNumber(kMaxSegmentMass) +
+                                         " kg (heavier than a whole body: is it in grams? the key is in kg)";
+}
+
 template <class A>
 void serialize(A& a, SegmentParams& s) {
-  a.number("length_m", s.length, mustBePositive);
-  a.number("mass_kg", s.mass, mustBePositive);
+  a.number("length_m", s.length, checkSegmentLength);
+  a.number("mass_kg", s.mass, checkSegmentMass);
   a.number("com_from_distal_m", s.comFromDistal, mustBeNonNegative);
   a.number("inertia_kgm2", s.inertia, mustBePositive);
   a.require(s.comFromDistal <= s.length, "com_from_distal_m",
@@ -87,7 +105,10 @@ void serialize(A& a, Participant& p) {
   a.optionalText("source", p.source);
   a.number("height_m", p.height,
            [](double v) { return v > 0.5 && v < 2.6 ? "" : "expected a standing height between 0.5 and 2.6 m"; });
-  a.number("body_mass_kg", p.bodyMass, mustBePositive);
+  a.number("body_mass_kg", p.bodyMass, [](double v) {
+    if (!(v > 0)) return std::string("must be positive");
+    return v <= kMaxBodyMass ? std::string() : "expected a body mass of at most " + formatNumber(kMaxBodyMass) + " kg (is it in grams?)";
+  });
   a.map("segments", p, SegmentsOf{});
   a.number("knee_friction_Nm", p.kneeFriction, mustBeNonNegative);
   a.path("knee_model", p.kneeModelPath);

@@ -1,5 +1,7 @@
 #include "io/swing_record_csv.h"
 
+#include <algorithm>
+
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/units.h"
@@ -16,6 +18,15 @@ SwingRecord readSwingRecord(const std::string& path) {
   SwingRecord r;
   r.path = path;
   r.stem = fileStem(path);
+  // A swing flexes the knee by some 60 deg; a whole record within a few "degrees" is one
+  // written in radians (1.1 rad = 63 deg), which read as degrees would be a knee that
+  // hardly moves.
+  constexpr double kMinKneeRangeDeg = 3;
+  const auto [kneeMin, kneeMax] = std::minmax_element(t.column("knee_flexion_deg").begin(), t.column("knee_flexion_deg").end());
+  if (*kneeMax - *kneeMin < kMinKneeRangeDeg)
+    throw InputError(path + ": knee_flexion_deg: the knee moves through only " + formatNumber(*kneeMax - *kneeMin) +
+                     " deg over the whole record (from " + formatNumber(*kneeMin) + " to " + formatNumber(*kneeMax) +
+                     "; a swing flexes it by tens of degrees): the column looks like radians, expected degrees");
   const auto& time = t.column("time_s");
   const double t0 = time.front();
   for (double v : time) r.time.push_back(v - t0);

@@ -1,5 +1,8 @@
 #include "io/yaml_reader.h"
 
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -8,6 +11,8 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "core/output_files.h"
 
 namespace swingsim {
 
@@ -24,6 +29,44 @@ std::string describe(const YAML::Node& node) {
 // No input of ours comes near this many nodes; an alias of an alias of ... ("billion
 // laughs") does, and walking it would take exponential time.
 constexpr long kMaxYamlNodes = 1000000;
+
+// Values written in the file (aliases counted once): our largest file has a few hundred.
+// Counted on the parser's events before any node is built, so a long list under any key
+// (known or not) is refused after reading this many values, not after building all of
+// them (yaml-cpp spends a few hundred bytes a node: 16 MiB of "[0,0,..." would be GBs).
+constexpr long kMaxYamlSourceNodes = 100000;
+
+// Counts the parser's values and stops the parse at the limit.
+class NodeCounter final : public YAML::EventHandler {
+ public:
+  explicit NodeCounter(const std::string& path) : path_(path) {}
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { count(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { count(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t, const std::string&) override {
+    count(mark);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    count(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    count(mark);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void count(const YAML::Mark& mark) {
+    if (++count_ > kMaxYamlSourceNodes) {
+      throw InputError(path_ + ":" + std::to_string(mark.line + 1) + ": more than " + std::to_string(kMaxYamlSourceNodes) +
+                       " YAML values in one file (the limit; no participant, model or study file needs as many: "
+                       "is a long list, perhaps under a misspelt key, pasted in by mistake?)");
+    }
+  }
+  const std::string& path_;
+  long count_ = 0;
+};
 
 // yaml-cpp keeps both entries of a duplicated key; a user who writes a key twice has
 // made a mistake we must not paper over by silently taking one of them.
@@ -54,6 +97,13 @@ YamlMap fromText(const std::string& text, const std::string& path) {
     // A UTF-8 byte-order mark is what spreadsheet and Windows editors write; accept it.
     std::string body = text;
     if (body.size() >= 3 && body.compare(0, 3, "\xEF\xBB\xBF") == 0) body.erase(0, 3);
+    {
+      std::istringstream in(body);
+      YAML::Parser parser(in);
+      NodeCounter counter(path);
+      while (parser.HandleNextDocument(counter)) {
+      }
+    }
     root = YAML::Load(body);
   } catch (const YAML::Exception& e) {
     throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " +
@@ -70,13 +120,7 @@ YamlMap fromText(const std::string& text, const std::string& path) {
 
 }  // namespace
 
-YamlMap YamlMap::loadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return fromText(text.str(), path);
-}
+YamlMap YamlMap::loadFile(const std::string& path) { return fromText(readFile(path), path); }
 
 YamlMap YamlMap::loadString(const std::string& text, const std::string& path) {
   return fromText(text, path);

@@ -54,6 +54,13 @@ LegGeometry calcLegGeometry(const Participant& p, double lowering, const AddedMa
                      " m below the knee (got " + formatNumber(added.mass) + " kg at " +
                      formatNumber(added.distanceBelowKnee) + " m)");
   }
+  // A weight strapped to a shank is a few kilograms; more than a whole body is a unit
+  // mistake (grams) or a typo, and would reach Simbody as a NaN inertia.
+  constexpr double kMaxAddedMass = 150;  // kg
+  if (added.mass > kMaxAddedMass) {
+    throw InputError(p.path + ": added mass: expected at most " + formatNumber(kMaxAddedMass) +
+                     " kg (heavier than a whole body: is it in grams?) (got " + formatNumber(added.mass) + " kg)");
+  }
   g.added = added;
   return g;
 }

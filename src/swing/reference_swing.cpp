@@ -147,6 +147,16 @@ ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee,
 
 namespace {
 
+// The step budget: a law far too stiff for an explicit method at this tolerance.
+void checkStepBudget(const DormandPrince& dp, double relTol) {
+  if (dp.getNumSteps() <= ReferenceSwing::kMaxSteps) return;
+  throw RunError("reference swing: stopped after " + std::to_string(ReferenceSwing::kMaxSteps) +
+                 " integrator steps (the budget; a swing takes a few thousand) at t = " + formatNumber(dp.getTime()) +
+                 " s with relative tolerance " + formatNumber(relTol) +
+                 ": the knee law is too stiff for this tolerance (loosen it, or check the knee model for a value far "
+                 "too large, a unit mistake?)");
+}
+
 int signOf(double v) { return (v > 0) - (v < 0); }
 
 // Simbody's Event::classifyTransition: leaving zero is not an event; reaching zero is.
@@ -188,7 +198,10 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
   for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate})
     v->reserve(sampleTimes.size());
   for (double t : sampleTimes) {
-    while (dp.getTime() < t) dp.step(t);
+    while (dp.getTime() < t) {
+      dp.step(t);
+      checkStepBudget(dp, relTol);
+    }
     const double* y = dp.getState();
     out.time.push_back(t);
     out.hipFlexion.push_back(y[0]);
@@ -235,6 +248,7 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
                      formatNumber(rule.timeLimit) + " s");
     }
     dp.step(rule.timeLimit);
+    checkStepBudget(dp, relTol);
     double thigh1, rate1, zone1;
     signals(dp.getState(), thigh1, rate1, zone1);
 

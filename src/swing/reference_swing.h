@@ -44,7 +44,7 @@ class ReferenceSwing {
   /// non-decreasing); steps are shortened to land exactly on each sample time. relTol and
   /// absTol are the Dormand-Prince local error tolerances (rad, rad/s and the knee law's
   /// state units). Throws std::invalid_argument on bad sample times, std::runtime_error if
-  /// the integration fails.
+  /// the integration fails, RunError past kMaxSteps.
   ReferenceTrajectory integrate(const InitialConditions& initial, const std::vector<double>& sampleTimes,
                                 double relTol, double absTol) const;
 
@@ -54,7 +54,7 @@ class ReferenceSwing {
   /// thigh has reached its target and the knee is inside the zone, in whichever order.
   /// Sign transitions follow Simbody's Event::classifyTransition (a value leaving exactly
   /// zero is not an event). Crossings are located on the dense output to kEventTimeTol.
-  /// Throws RunError if the swing has not ended by rule.timeLimit.
+  /// Throws RunError if the swing has not ended by rule.timeLimit or takes more than kMaxSteps.
   ReferenceSwingEnd calcSwingEnd(const InitialConditions& initial, const SwingEndRule& rule, double relTol,
                                  double absTol) const;
   /// calcSwingEnd(initial, rule, tol, tol).swingTime, s.
@@ -67,6 +67,10 @@ class ReferenceSwing {
 
   /// Time tolerance of the crossing search on the dense output, s.
   static constexpr double kEventTimeTol = 1e-12;
+  /// Accepted steps one integration may take (a swing at 1e-10 takes a few thousand): past
+  /// it, integrate and calcSwingEnd throw RunError saying the knee law is too stiff for the
+  /// tolerance, instead of running for hours.
+  static constexpr long kMaxSteps = 1000000;
 
  private:
   class Equations;

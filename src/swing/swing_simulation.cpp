@@ -3,6 +3,7 @@
 #include <Simbody.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -473,7 +474,10 @@ std::optional<SwingIntegrator> findIntegrator(const std::string& key) {
 }
 
 std::string checkAccuracy(double accuracy) {
-  return accuracy > 0 && accuracy <= 1e-2 ? "" : "expected a relative accuracy in (0, 0.01]";
+  // Below about 1e-14 a relative accuracy asks for less than double round-off: the step-size
+  // control breaks down (1e-300 made a NaN inertia) instead of converging further.
+  constexpr double kTightestAccuracy = 1e-14;
+  return accuracy >= kTightestAccuracy && accuracy <= 1e-2 ? "" : "expected a relative accuracy in [1e-14, 0.01]";
 }
 
 SwingOptions makeSimbodyIntegratorOptions(double accuracy) {
@@ -540,6 +544,17 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   constexpr double kLoosestWindowAccuracy = 1e-3;  // the bounce flag needs the knee to a fraction of a degree
   const double windowAccuracy = std::min(options.accuracy * options.bounceWindowAccuracyFactor, kLoosestWindowAccuracy);
   bool windowStarted = false, endCounted = false;
+  const auto wallStart = std::chrono::steady_clock::now();
+  // What to change when a budget runs out: the same advice for both budgets.
+  const auto overBudget = [&](const std::string& what, const State& s) {
+    return RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing was stopped after " + what +
+                    " " + describeState(leg, s) + ", with " + integratorName(options.integrator) + " at accuracy " +
+                    formatNumber(options.accuracy) +
+                    "; the knee or hip law is too stiff for this integrator at this accuracy: loosen the accuracy "
+                    "(--accuracy, or accuracy: in the study; converged: " +
+                    formatNumber(calcConvergedAccuracy(options.integrator)) + "), or check the knee model " +
+                    p.kneeModelPath + " for a value far too large (a unit mistake?)");
+  };
   while (true) {
     bool more;
     try {
@@ -550,6 +565,12 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                      e.what() + ")");
     }
     const State& s = stepper->getState();
+    if (stepper->getNumRealizations() > options.maxRealizations)
+      throw overBudget(std::to_string(stepper->getNumRealizations()) + " realizations (the budget of one swing is " +
+                           std::to_string(options.maxRealizations) + "; a normal swing takes a few hundred)",
+                       s);
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count() > options.maxWallSeconds)
+      throw overBudget(formatNumber(options.maxWallSeconds) + " s of computing (the limit for one swing; a normal swing takes milliseconds)", s);
     const StepEnd now = readStepEnd(leg, s);
     if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) {
       throw RunError(p.name + ": the simulation diverged " + describeState(leg, s) +

@@ -32,7 +32,8 @@ const char* integratorName(SwingIntegrator integrator);
 const std::vector<std::string>& integratorKeys();
 /// The integrator of a YAML/CLI key (integratorKeys), or nullopt.
 std::optional<SwingIntegrator> findIntegrator(const std::string& key);
-/// "" if `accuracy` is usable (in (0, 0.01]), else what was expected.
+/// "" if `accuracy` is usable (in [1e-14, 0.01]: tighter is below double round-off), else
+/// what was expected.
 std::string checkAccuracy(double accuracy);
 
 /// Integrator settings. The defaults are the converged settings of the README's
@@ -62,6 +63,15 @@ struct SwingOptions {
   /// default). Events in the window agree with the plain path within 1 ms
   /// (tests/swing/fast_path_test.cpp). 1 = no restart.
   double bounceWindowAccuracyFactor = 100;
+  /// Budgets of one swing, far above what any study needs (a swing of the bundled
+  /// participants takes a few hundred realizations, 15000 at accuracy 1e-12, and
+  /// milliseconds; the budget is 1 to 2 s of computing): a knee law far too
+  /// stiff for an explicit integrator at this accuracy (a damping table in N m s/rad
+  /// written 1e6 too large, an accuracy of 1e-18) would otherwise run for hours. Past
+  /// either, simulateSwing throws RunError naming the participant, the lowering and what
+  /// to change.
+  long maxRealizations = 150000;
+  double maxWallSeconds = 60;  ///< s of wall-clock time for one swing
 };
 
 struct SwingEvent {
@@ -113,7 +123,8 @@ SwingOptions makePlainPathOptions(double accuracy, double eventWindow);
 SwingOptions makeSimbodyIntegratorOptions(double accuracy = 1e-4);
 
 /// Runs one swing. Throws RunError (with the time, the state and the likely cause) if the
-/// integrator fails or the swing does not end within the time limit.
+/// integrator fails, the swing does not end within the time limit, or it exceeds
+/// options.maxRealizations or options.maxWallSeconds.
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options = {});
 
 }  // namespace swingsim

@@ -106,7 +106,7 @@ TEST(Cli, SimulateChoosesTheIntegrator) {
   EXPECT_THAT(badName.output, HasSubstr("(got 'euler')"));
   const CliRun badAccuracy = run("simulate participants/p1.yaml --accuracy 0.5 --out " + out.string());
   EXPECT_EQ(badAccuracy.code, 2);
-  EXPECT_THAT(badAccuracy.output, HasSubstr("--accuracy: expected a relative accuracy in (0, 0.01] (got 0.5)"));
+  EXPECT_THAT(badAccuracy.output, HasSubstr("--accuracy: expected a relative accuracy in [1e-14, 0.01] (got 0.5)"));
 }
 
 TEST(Cli, BadParticipantExitsOneWithLocatedMessageAndWritesNothing) {

@@ -5,6 +5,8 @@
 // only where a physical bound exists (see README "Robustness").
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -13,6 +15,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <csignal>
+#include <thread>
 
 #include "io/bench_csv.h"
 #include "identify/bench_data.h"
@@ -24,6 +28,8 @@
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
 #include "io/participant_loader.h"
+#include "io/swing_record_csv.h"
+#include "core/units.h"
 #include "io/yaml_reader.h"
 #include "study/sweep_study.h"
 #include "swing/sweep.h"
@@ -213,7 +219,7 @@ TEST(BadInputCatalogue, YamlHugeNumbers) {
               HasSubstr("height_m: expected a standing height between 0.5 and 2.6 m (got 1e+300)"));
   const YamlLoader sweep = yamlLoaders()[3];
   EXPECT_THAT(errorOf(sweep, withValue(sweep, "1e300")),
-              HasSubstr("accuracy: expected a relative accuracy in (0, 0.01] (got 1e+300)"));
+              HasSubstr("accuracy: expected a relative accuracy in [1e-14, 0.01] (got 1e+300)"));
 }
 
 // An alias that refers to an alias ... ("billion laughs") must not take exponential time.
@@ -461,6 +467,196 @@ TEST(BadInputCatalogue, KneeAngleStrideMissingFramesAndBadColumns) {
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("w2.csv:1: knee_deg: required column is missing"));
   }
+}
+
+
+// ---------------------------------------------------------------------------------------
+// Size limits before parsing (issue 17): a bounded reader, a YAML value count taken on the
+// parser's events, and a directory named as one.
+// ---------------------------------------------------------------------------------------
+
+std::string loadError(const std::function<void()>& load) {
+  try {
+    load();
+  } catch (const InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return std::string("(not an InputError) ") + e.what();
+  }
+  return "";
+}
+
+double secondsOf(const std::function<void()>& f) {
+  const auto start = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+constexpr double kQuickRefusal = 2.0;  // s: a refusal reads at most 16 MiB, never the whole input
+
+TEST(BadInputCatalogue, YamlFileOverTheSizeLimitIsRefusedNamingItsSizeAndTheLimit) {
+  const fs::path path = tempDir() / "huge.yaml";
+  {
+    std::ofstream out(path, std::ios::binary);
+    const std::string line(1023, '#');
+    for (int i = 0; i < 17 * 1024; ++i) out << line << '\n';  // 17 MiB of comments
+  }
+  std::string e;
+  EXPECT_LT(secondsOf([&] { e = loadError([&] { loadParticipant(path.string()); }); }), kQuickRefusal);
+  fs::remove(path);
+  EXPECT_THAT(e, StartsWith(path.string() + ": file too large"));
+  EXPECT_THAT(e, HasSubstr("(17 MiB; the limit is 16 MiB"));
+}
+
+TEST(BadInputCatalogue, DevZeroIsRefusedByTheBoundedReaderNotReadForever) {
+  std::string e;
+  EXPECT_LT(secondsOf([&] { e = loadError([] { loadParticipant("/dev/zero"); }); }), kQuickRefusal);
+  EXPECT_THAT(e, StartsWith("/dev/zero: file too large"));
+  EXPECT_THAT(e, HasSubstr("not at its end (a device or a pipe?)"));
+  EXPECT_THAT(e, HasSubstr("the limit is 16 MiB"));
+}
+
+TEST(BadInputCatalogue, AFifoThatNeverEndsIsRefusedAtTheLimit) {
+  const fs::path fifo = tempDir() / "endless.yaml";
+  fs::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::signal(SIGPIPE, SIG_IGN);  // the writer learns of the closed pipe from write()
+  std::thread writer([&] {
+    const int fd = ::open(fifo.c_str(), O_WRONLY);
+    const std::string chunk(65536, 'a');
+    while (fd >= 0 && ::write(fd, chunk.data(), chunk.size()) > 0) {
+    }
+    if (fd >= 0) ::close(fd);
+  });
+  const std::string e = loadError([&] { readFile(fifo.string()); });
+  writer.join();
+  fs::remove(fifo);
+  EXPECT_THAT(e, StartsWith(fifo.string() + ": file too large"));
+  EXPECT_THAT(e, HasSubstr("a device or a pipe?"));
+}
+
+TEST(BadInputCatalogue, ReadFileLimitIsExactToTheByte) {
+  const std::string path = writeTemp("ten.txt", "0123456789");
+  EXPECT_EQ(readFile(path, 10), "0123456789");
+  EXPECT_THAT(loadError([&] { readFile(path, 9); }), HasSubstr("ten.txt: file too large for an input file (10 bytes; the limit is 9 bytes)"));
+}
+
+TEST(BadInputCatalogue, LongFlowListUnderAnUnknownKeyIsRefusedQuickly) {
+  std::string text = readFile("participants/p1.yaml") + "junk: [0";
+  text.reserve(text.size() + 10'000'000);
+  for (int i = 0; i < 5'000'000; ++i) text += ",0";  // 5 million values, 10 MB
+  text += "]\n";
+  std::string e;
+  EXPECT_LT(secondsOf([&] { e = loadError([&] { parseParticipant(text, "participants/p1.yaml"); }); }), kQuickRefusal);
+  EXPECT_THAT(e, StartsWith("participants/p1.yaml:"));
+  EXPECT_THAT(e, HasSubstr("more than 100000 YAML values in one file"));
+}
+
+TEST(BadInputCatalogue, LongBlockListIsRefusedQuicklyWithItsLine) {
+  std::string text = "kind: knee-axis-sweep\nname: bomb\njunk:\n";
+  for (int i = 0; i < 2'000'000; ++i) text += "- 0\n";
+  std::string e;
+  EXPECT_LT(secondsOf([&] { e = loadError([&] { parseSweepStudy(text, "bomb.yaml"); }); }), kQuickRefusal);
+  // Keys count as values: the top map, three keys, two values and the list are 7, so the
+  // 100001st value is list item 99994, on line 3 + 99994.
+  EXPECT_THAT(e, StartsWith("bomb.yaml:99997: more than 100000 YAML values"));
+}
+
+TEST(BadInputCatalogue, ListUnderTheValueLimitReachesTheUnknownKeyCheck) {
+  std::string text = readFile("participants/p1.yaml") + "junk: [0";
+  for (int i = 0; i < 50'000; ++i) text += ",0";
+  text += "]\n";
+  EXPECT_THAT(loadError([&] { parseParticipant(text, "participants/p1.yaml"); }), HasSubstr("junk: unknown key"));
+}
+
+TEST(BadInputCatalogue, DirectoryGivenForAYamlFileIsNamedAsADirectory) {
+  EXPECT_EQ(loadError([] { loadParticipant("participants"); }), "participants: is a directory (expected a file)");
+  EXPECT_EQ(loadError([] { loadSweepStudy("studies"); }), "studies: is a directory (expected a file)");
+  EXPECT_EQ(loadError([] { readFile("models"); }), "models: is a directory (expected a file)");
+}
+
+// ---------------------------------------------------------------------------------------
+// Unit mistakes (issue 17): values that only make sense in another unit are named so.
+// ---------------------------------------------------------------------------------------
+
+std::string participantWith(const std::string& from, const std::string& to) {
+  std::string text = readFile("participants/p1.yaml");
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return loadError([&] { parseParticipant(text.replace(at, from.size(), to), "participants/p1.yaml"); });
+}
+
+TEST(BadInputCatalogue, SegmentMassOf1e300IsRefusedAsHeavierThanABody) {
+  EXPECT_THAT(participantWith("mass_kg: 3.350", "mass_kg: 1e300"),
+              HasSubstr("participants/p1.yaml:10: segments.thigh.mass_kg: expected a segment mass of at most 150 kg "
+                        "(heavier than a whole body: is it in grams? the key is in kg) (got 1e+300)"));
+}
+
+TEST(BadInputCatalogue, SegmentMassInGramsIsNamed) {
+  EXPECT_THAT(participantWith("mass_kg: 0.785", "mass_kg: 785"),
+              HasSubstr("participants/p1.yaml:11: segments.shank.mass_kg: expected a segment mass of at most 150 kg "
+                        "(heavier than a whole body: is it in grams?"));
+}
+
+TEST(BadInputCatalogue, SegmentLengthInMillimetresIsNamed) {
+  EXPECT_THAT(participantWith("length_m: 0.515", "length_m: 515"),
+              HasSubstr("participants/p1.yaml:11: segments.shank.length_m: expected a segment length of at most 1.5 m "
+                        "(is it in millimetres? the key is in metres) (got 515)"));
+}
+
+TEST(BadInputCatalogue, BodyMassInGramsIsNamed) {
+  EXPECT_THAT(participantWith("body_mass_kg: 70", "body_mass_kg: 70000"),
+              HasSubstr("participants/p1.yaml:8: body_mass_kg: expected a body mass of at most 500 kg (is it in grams?) (got 70000)"));
+}
+
+TEST(BadInputCatalogue, PlausibleMassesAndLengthsAtTheBoundsStillLoad) {
+  EXPECT_EQ(participantWith("mass_kg: 3.350", "mass_kg: 150"), "");
+  EXPECT_EQ(participantWith("length_m: 0.240", "length_m: 0.3"), "");
+}
+
+TEST(BadInputCatalogue, KneeLinkLengthInMillimetresIsNamed) {
+  std::string text = readFile("models/mauch-4phase.yaml");
+  text.replace(text.find("ab_m: 0.1603"), 12, "ab_m: 160.3");
+  EXPECT_THAT(loadError([&] { parseKneeModel(text, "models/mauch-4phase.yaml"); }),
+              HasSubstr("models/mauch-4phase.yaml:11: geometry.ab_m: expected a link length of at most 0.5 m (is it in millimetres?"));
+}
+
+std::string swingRecordText(double kneeScale) {
+  std::string text = "time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\n";
+  for (int i = 0; i < 20; ++i) {
+    const double knee = 60 * std::sin(kPi * i / 19);  // deg
+    text += std::to_string(0.02 * i) + "," + std::to_string(-15 + 2 * i) + "," + std::to_string(knee * kneeScale) + ",1\n";
+  }
+  return text;
+}
+
+TEST(BadInputCatalogue, SwingRecordAnglesInRadiansAreNamed) {
+  const std::string path = writeTemp("radians.csv", swingRecordText(kDegToRad));
+  EXPECT_THAT(loadError([&] { readSwingRecord(path); }),
+              HasSubstr("radians.csv: knee_flexion_deg: the knee moves through only 1.04"));
+  EXPECT_THAT(loadError([&] { readSwingRecord(path); }), HasSubstr("the column looks like radians, expected degrees"));
+}
+
+TEST(BadInputCatalogue, SwingRecordInDegreesReads) {
+  const SwingRecord r = readSwingRecord(writeTemp("degrees.csv", swingRecordText(1)));
+  ASSERT_EQ(r.kneeFlexion.size(), 20u);
+  constexpr double kRoundTrip = 1e-5;  // rad: six decimals written by std::to_string
+  EXPECT_NEAR(*std::max_element(r.kneeFlexion.begin(), r.kneeFlexion.end()), 60 * std::sin(kPi * 9 / 19) * kDegToRad, kRoundTrip);
+}
+
+TEST(BadInputCatalogue, BenchPositionsInMillimetresAreNamed) {
+  EXPECT_THAT(benchError("mm.csv", "time_s,position_m,force_N\n0,1,10\n0.01,2,12\n0.02,4,15\n0.03,3,11\n"),
+              HasSubstr("mm.csv: position_m: the piston reaches 4 m (a knee cylinder's stroke is a few centimetres; more "
+                        "than 1 m): the column looks like millimetres, expected metres"));
+  EXPECT_THAT(benchError("negmm.csv", "time_s,position_m,force_N\n0,-12,10\n0.01,2,12\n0.02,4,15\n"),
+              HasSubstr("the piston reaches -12 m"));
+}
+
+TEST(BadInputCatalogue, SweepStudyAccuracyBelowRoundOffIsRefused) {
+  const YamlLoader sweep = yamlLoaders()[3];
+  EXPECT_THAT(errorOf(sweep, withValue(sweep, "1e-300")),
+              HasSubstr("accuracy: expected a relative accuracy in [1e-14, 0.01] (got 1e-300)"));
+  EXPECT_EQ(errorOf(sweep, withValue(sweep, "1e-14")), "");
 }
 
 }  // namespace

@@ -169,5 +169,52 @@ TEST(FailingRuns, FitCliWithSingularRegressionExitsOneAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "r.json"));
 }
 
+
+// Budgets (issue 17): a swing past its realization or wall-clock budget stops with a
+// RunError naming the participant, the lowering, the integrator and what to change.
+SwingSetup p1Setup(const KneeModel& model, KneeLawSum& law) {
+  SwingSetup setup;
+  setup.participant = loadParticipant("participants/p1.yaml");
+  law = makeKneeLaw(setup.participant, model);
+  setup.knee = &law;
+  setup.lowering = 0.05;
+  return setup;
+}
+
+TEST(FailingRuns, RealizationBudgetStopsTheSwingAndSaysWhatToChange) {
+  const KneeModel model = loadKneeModel("models/damping-table-default.yaml");
+  KneeLawSum law;
+  const SwingSetup setup = p1Setup(model, law);
+  SwingOptions options;
+  options.maxRealizations = 100;  // a normal swing takes about 300
+  try {
+    simulateSwing(setup, options);
+    ADD_FAILURE() << "no RunError";
+  } catch (const RunError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("P1 at lowering 0.05 m: the swing was stopped after "));
+    EXPECT_THAT(e.what(), HasSubstr("realizations (the budget of one swing is 100;"));
+    EXPECT_THAT(e.what(), HasSubstr("with Dormand-Prince 5(4) over Simbody realizations at accuracy 1e-05"));
+    EXPECT_THAT(e.what(), HasSubstr("loosen the accuracy"));
+    EXPECT_THAT(e.what(), HasSubstr("damping-table-default.yaml for a value far too large"));
+  }
+  options.maxRealizations = SwingOptions{}.maxRealizations;
+  EXPECT_NO_THROW(simulateSwing(setup, options));  // the default is far above a normal swing
+}
+
+TEST(FailingRuns, WallClockBudgetStopsTheSwing) {
+  const KneeModel model = loadKneeModel("models/damping-table-default.yaml");
+  KneeLawSum law;
+  const SwingSetup setup = p1Setup(model, law);
+  SwingOptions options = makeSimbodyIntegratorOptions();
+  options.maxWallSeconds = 0;
+  try {
+    simulateSwing(setup, options);
+    ADD_FAILURE() << "no RunError";
+  } catch (const RunError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("P1 at lowering 0.05 m: the swing was stopped after 0 s of computing (the limit for one swing"));
+    EXPECT_THAT(e.what(), HasSubstr("with Simbody Runge-Kutta-Merson at accuracy 0.0001"));
+  }
+}
+
 }  // namespace
 }  // namespace swingsim
