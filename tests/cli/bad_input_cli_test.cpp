@@ -241,7 +241,7 @@ TEST(BadInputCli, EveryCommandChecksItsOutputPlacesWhileParsing) {
   std::ofstream(dir / "plain.txt") << "x";
   const std::string file = (dir / "plain.txt").string();
   // The study need not exist: the output place is refused first.
-  for (const std::string& command : {"fit", "compare", "diagnose", "sweep"}) {
+  for (const std::string command : {"fit", "compare", "diagnose", "sweep"}) {
     const auto json = runSwingsim(command + " no-such-study.yaml --json " + dir.string());
     EXPECT_EQ(json.code, 2) << command << ": " << json.output;
     EXPECT_THAT(json.output, HasSubstr("--json: expected a file to write, got the directory")) << command;
