@@ -17,24 +17,15 @@
 #include <sstream>
 #include <thread>
 
+#include "run_swingsim.h"
+
 namespace {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("swingsim_sweep_robustness_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+fs::path freshDir(const std::string& name) { return swingsim::testing::freshTempDir("swingsim_sweep_robustness", name); }
+using swingsim::testing::slurp;
 
 // A one-participant study; `step` sets how many swings it runs.
 fs::path writeStudy(const fs::path& dir, const std::string& name, double step, double max) {

@@ -2,6 +2,8 @@
 // all; nothing of the staging is left behind either way.
 #include "core/output_files.h"
 
+#include "../cli/run_swingsim.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -15,19 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("swingsim_output_files_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+fs::path freshDir(const std::string& name) { return testing::freshTempDir("swingsim_output_files_test", name); }
+using testing::slurp;
 
 TEST(StagedOutput, CommitMovesEveryFileInReplacesOldOnesAndRemovesStaleOnes) {
   const fs::path dir = freshDir("commit");
