@@ -81,6 +81,10 @@ int generateSwingKinematics(YamlMap& yaml, const std::optional<std::string>& out
       truth = addSwingEffect(truth, findEffect(PlantKind::kSwing, name)->id, 0);
       e.shankMassScale = m.getDouble("scale", mustBePositive);
     });
+    hidden("below_knee_mass_scale", [&](YamlMap& m, const char* name) {
+      truth = addSwingEffect(truth, findEffect(PlantKind::kSwing, name)->id, 0);
+      e.belowKneeMassScale = m.getDouble("scale", mustBePositive);
+    });
     h.finish();
   }
   yaml.finish();

@@ -199,6 +199,40 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
 
 }  // namespace
 
+namespace {
+
+// "" unless a parameter of `added` correlates beyond kConfoundLimit with a parameter of
+// another effect in `fit` (withBase: or of the base model's own, such as the swing's knee
+// model scale); else a sentence naming both and what would separate them.
+std::string describeConfound(const PlantFit& fit, EffectId added, bool withBase) {
+  const EffectDescriptor& a = describeEffect(added);
+  const auto& names = fit.parameterNames;
+  auto effectOf = [](const std::string& parameter) { return parameter.substr(0, parameter.find('.')); };
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (effectOf(names[i]) != a.name) continue;
+    for (std::size_t j = 0; j < names.size(); ++j) {
+      const bool base = names[j].find('.') == std::string::npos;
+      if (effectOf(names[j]) == a.name || base != withBase) continue;
+      const double r = fit.correlation(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+      if (!(std::abs(r) > kConfoundLimit)) continue;
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.3f", r);
+      if (base)
+        return a.name + ": its " + names[i] + " moves with the base model's " + names[j] + " (correlation " + buf +
+               " of the fitted parameters): the split between them is uncertain. What would separate them: " +
+               a.separatedBy + ".";
+      const EffectDescriptor* b = findEffect(a.plant, effectOf(names[j]));
+      return a.name + " was not added: its " + names[i] + " moves with " + names[j] + " (correlation " + buf +
+             " of the fitted parameters), so these data cannot tell " + a.name + " from " +
+             (b ? b->name : effectOf(names[j])) + ". What would separate them: " + a.separatedBy +
+             (b ? "; for " + b->name + ": " + b->separatedBy : std::string()) + ".";
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
 Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings) {
   if (plant.validationStems().empty())
     throw InputError("diagnose: the acceptance rule needs at least one validation file (validate:)");
@@ -243,6 +277,18 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
       return calcLrTest(best[j].rss, joint.rss, joint.likelihoodResidual,
                         std::max(1, describeEffect(ids[chosen]).degreesOfFreedom())).p;
     });
+    // A confound: the chosen effect's parameter moves in lockstep (|r| > kConfoundLimit) with
+    // one already in the model. The data cannot tell them apart, so it is not stacked on top;
+    // the report names the pair and the measurement that would separate them.
+    if (const std::string withBase = describeConfound(best[chosen], ids[chosen], true); !withBase.empty())
+      out.warnings.push_back(withBase);
+    if (const std::string confound = describeConfound(best[chosen], ids[chosen], false); !confound.empty()) {
+      step.candidates[chosen].added = false;
+      step.chosen = -1;
+      out.confounds.push_back(confound);
+      out.steps.push_back(step);
+      break;
+    }
     current = best[chosen];
     out.accepted.push_back(names[chosen]);
     out.acceptedScores.push_back(step.candidates[chosen]);
@@ -251,6 +297,11 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     out.steps.push_back(step);
   }
   out.final = current;
+  // What the final fit says of itself (stopped at its budget, a parameter on its physical
+  // bound, a constant the training data do not determine) is part of the result.
+  for (const std::string& note : current.notes)
+    if (std::find(out.warnings.begin(), out.warnings.end(), note) == out.warnings.end())
+      out.warnings.push_back("final fit: " + note);
   out.finalParameters = baseIntervals(current);
   out.finalWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
   out.finalResidualWhite = out.finalWhiteness.pValue >= settings.alpha;

@@ -110,6 +110,9 @@ struct DiagnosisStep {
   std::vector<std::string> group;   ///< the chosen effect and those the data cannot tell from it
 };
 
+/// Correlation of two fitted parameters above which they count as one confounded group.
+constexpr double kConfoundLimit = 0.95;
+
 /// Result of a diagnosis.
 struct Diagnosis {
   PlantKind plant{};
@@ -121,6 +124,10 @@ struct Diagnosis {
   std::vector<CandidateScore> acceptedScores;
   std::vector<std::vector<std::string>> ambiguous;
   std::vector<std::string> ambiguityAdvice;  ///< one per ambiguous group
+  /// Effects not stacked because their parameter moves with one already in the model (a
+  /// confound: |correlation| > kConfoundLimit), each a sentence naming the pair and the
+  /// measurement that would separate them.
+  std::vector<std::string> confounds;
   WhitenessTest baselineWhiteness, finalWhiteness;
   bool finalResidualWhite = true;
   std::string structureNote;  ///< where the remaining structure is, if not explained

@@ -40,6 +40,7 @@ bool SwingEffects::has(EffectId effect) const {
     case EffectId::kToeOffVelocity: return toeOff;
     case EffectId::kHipMomentScale: return hipScale;
     case EffectId::kShankMassScale: return shankScale;
+    case EffectId::kBelowKneeMassScale: return belowKneeScale;
     default: return false;
   }
 }
@@ -76,6 +77,10 @@ SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect,
       e.shankScale = true;
       e.shankMassScale = 1;
       break;
+    case EffectId::kBelowKneeMassScale:
+      e.belowKneeScale = true;
+      e.belowKneeMassScale = 1;
+      break;
     default:
       break;
   }
@@ -100,6 +105,12 @@ Participant applyParticipantEffects(const Participant& participant, const SwingE
   if (e.shankScale) {
     p.shank.mass *= e.shankMassScale;
     p.shank.inertia *= e.shankMassScale;
+  }
+  if (e.belowKneeScale) {
+    p.shank.mass *= e.belowKneeMassScale;
+    p.shank.inertia *= e.belowKneeMassScale;
+    p.foot.mass *= e.belowKneeMassScale;
+    p.foot.inertia *= e.belowKneeMassScale;
   }
   if (e.toeOff) {
     p.initial.hipFlexionRate = e.toeOffHipRate;
@@ -154,6 +165,7 @@ double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, 
     case EffectId::kToeOffVelocity: e.toeOff = false; break;
     case EffectId::kHipMomentScale: e.hipScale = false; break;
     case EffectId::kShankMassScale: e.shankScale = false; break;
+    case EffectId::kBelowKneeMassScale: e.belowKneeScale = false; break;
     default: break;
   }
   const auto& init = base.participant.initial;
@@ -204,6 +216,9 @@ std::vector<Slot> slotsOf(const SwingEffects& e) {
   if (e.shankScale)
     s.push_back({EffectId::kShankMassScale, logScaled(0.1, 10.0), 1.0,
                  [](SwingModelParams& p) -> double& { return p.effects.shankMassScale; }});
+  if (e.belowKneeScale)
+    s.push_back({EffectId::kBelowKneeMassScale, logScaled(0.1, 10.0), 1.0,
+                 [](SwingModelParams& p) -> double& { return p.effects.belowKneeMassScale; }});
   return s;
 }
 
@@ -419,6 +434,10 @@ PlantModelPtr SwingPlant::combine(const PlantModel& a, const PlantModel& b, Effe
       e.shankScale = true;
       e.shankMassScale = f.shankMassScale;
       break;
+    case EffectId::kBelowKneeMassScale:
+      e.belowKneeScale = true;
+      e.belowKneeMassScale = f.belowKneeMassScale;
+      break;
     default:
       break;
   }
@@ -434,6 +453,7 @@ std::vector<double> SwingPlant::effectValues(const PlantModel& model, EffectId e
     case EffectId::kToeOffVelocity: return {e.toeOffHipRate * kRadToDeg, e.toeOffKneeRate * kRadToDeg};
     case EffectId::kHipMomentScale: return {e.hipMomentScale};
     case EffectId::kShankMassScale: return {e.shankMassScale};
+    case EffectId::kBelowKneeMassScale: return {e.belowKneeMassScale};
     default: return {};
   }
 }
@@ -457,6 +477,9 @@ bool SwingPlant::checkPhysical(const PlantModel& model, EffectId effect, std::st
     case EffectId::kHipMomentScale:
       note = "a gain error cannot reverse the moment (scale > 0): " + fmt(e.hipMomentScale);
       return e.hipMomentScale > 0;
+    case EffectId::kBelowKneeMassScale:
+      note = "mass must stay positive (scale > 0): " + fmt(e.belowKneeMassScale);
+      return e.belowKneeMassScale > 0;
     default:
       note = "mass must stay positive (scale > 0): " + fmt(e.shankMassScale);
       return e.shankMassScale > 0;

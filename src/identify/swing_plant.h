@@ -19,11 +19,13 @@ namespace swingsim {
 
 /// The swing effects of a model (off = absent).
 struct SwingEffects {
-  bool coulomb = false, viscous = false, assist = false, toeOff = false, hipScale = false, shankScale = false;
+  bool coulomb = false, viscous = false, assist = false, toeOff = false, hipScale = false, shankScale = false,
+       belowKneeScale = false;
   KneeAddedEffectsParams knee;                   ///< friction, damping, spring values
   double toeOffHipRate = 0, toeOffKneeRate = 0;  ///< rad/s at toe-off
   double hipMomentScale = 1;                     ///< multiplies the measured hip moment
   double shankMassScale = 1;                     ///< multiplies shank mass and inertia
+  double belowKneeMassScale = 1;                 ///< multiplies shank and foot masses and inertias
   /// Whether `effect` (a swing effect of the table) is on.
   bool has(EffectId effect) const;
 };

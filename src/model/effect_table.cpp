@@ -77,6 +77,11 @@ const std::vector<EffectDescriptor>& effectTable() {
        "segment masses come from a table (Burkett 2004 Table 2) and change with the prosthesis build",
        "weighing the shank, or swings with an added mass (Bach 1994)",
        {"scale"}, 1, {}, 1.0, true},
+      {EffectId::kBelowKneeMassScale, P::kSwing, "below_knee_mass_scale",
+       "everything below the knee (shank, foot, shoe) is heavier or lighter than the model's (masses and inertias scaled together)",
+       "a prosthesis is weighed whole below the knee more often than by segment; the shoe is rarely in the table",
+       "weighing the prosthesis below the knee with its shoe, or swings with an added mass (Bach 1994)",
+       {"scale"}, 1, {}, 1.0, true},
   };
   return table;
 }

@@ -32,6 +32,7 @@ enum class EffectId {
   kToeOffVelocity,
   kHipMomentScale,
   kShankMassScale,
+  kBelowKneeMassScale,
 };
 
 /// One candidate effect.

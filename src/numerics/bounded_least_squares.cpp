@@ -1,7 +1,6 @@
 #include "numerics/bounded_least_squares.h"
 
 #include <ceres/ceres.h>
-#include <ceres/covariance.h>
 
 #include <algorithm>
 #include <cmath>
@@ -131,25 +130,36 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
   out.covariance = Eigen::MatrixXd::Constant(ni, ni, std::numeric_limits<double>::quiet_NaN());
   out.standardErrors = Eigen::VectorXd::Constant(ni, std::numeric_limits<double>::quiet_NaN());
   if (settings.computeCovariance && m > ni) {
-    ceres::Covariance::Options co;
-    co.algorithm_type = ceres::DENSE_SVD;
-    co.null_space_rank = -1;  // pseudo-inverse: a rank-deficient direction gets a huge variance, not a failure
-    co.min_reciprocal_condition_number = 1e-14;
-    co.num_threads = 1;
-    ceres::Covariance covariance(co);
-    std::vector<std::pair<const double*, const double*>> blocks = {{u.data(), u.data()}};
-    if (covariance.Compute(blocks, &problem)) {
-      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cu(ni, ni);
-      covariance.GetCovarianceBlock(u.data(), u.data(), cu.data());
-      const double s2 = out.cost / static_cast<double>(m - ni);
-      for (Eigen::Index i = 0; i < ni; ++i) {
-        const double di = scaledDerivative(parameters[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
-        for (Eigen::Index j = 0; j < ni; ++j) {
-          const double dj = scaledDerivative(parameters[static_cast<std::size_t>(j)], u[static_cast<std::size_t>(j)]);
-          out.covariance(i, j) = s2 * di * dj * cu(i, j);
+    // The Jacobian at the solution from Ceres (the same numeric differences as the fit),
+    // then s^2 (J'J)^+ by SVD here (pseudo-inverse: a direction the data do not fix drops out). (ceres::Covariance's DENSE_SVD was
+    // not used: Debian's libceres and our Eigen instantiate its BDCSVD differently, which
+    // AddressSanitizer reports as a mismatched free.)
+    ceres::CRSMatrix crs;
+    double costHalf = 0;
+    ceres::Problem::EvaluateOptions eo;
+    eo.num_threads = 1;
+    if (problem.Evaluate(eo, &costHalf, nullptr, nullptr, &crs)) {
+      Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, ni);
+      for (int r = 0; r < crs.num_rows; ++r)
+        for (int k = crs.rows[static_cast<std::size_t>(r)]; k < crs.rows[static_cast<std::size_t>(r) + 1]; ++k)
+          J(r, crs.cols[static_cast<std::size_t>(k)]) = crs.values[static_cast<std::size_t>(k)];
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
+      const Eigen::VectorXd sv = svd.singularValues();
+      const double cutoff = 1e-12 * (sv.size() > 0 ? sv(0) : 0.0);
+      Eigen::MatrixXd cu = Eigen::MatrixXd::Zero(ni, ni);
+      for (Eigen::Index k = 0; k < sv.size(); ++k)
+        if (sv(k) > cutoff) cu += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
+      {
+        const double s2 = out.cost / static_cast<double>(m - ni);
+        for (Eigen::Index i = 0; i < ni; ++i) {
+          const double di = scaledDerivative(parameters[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
+          for (Eigen::Index j = 0; j < ni; ++j) {
+            const double dj = scaledDerivative(parameters[static_cast<std::size_t>(j)], u[static_cast<std::size_t>(j)]);
+            out.covariance(i, j) = s2 * di * dj * cu(i, j);
+          }
         }
+        for (Eigen::Index i = 0; i < ni; ++i) out.standardErrors[i] = std::sqrt(std::max(0.0, out.covariance(i, i)));
       }
-      for (Eigen::Index i = 0; i < ni; ++i) out.standardErrors[i] = std::sqrt(std::max(0.0, out.covariance(i, i)));
     }
   }
   return out;

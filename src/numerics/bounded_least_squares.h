@@ -3,7 +3,7 @@
 // Levenberg-Marquardt strategy, numeric Jacobian): for residual functions that run a
 // simulation or a regression (the swing plant's refits, the Mauch switch constants), with
 // bounds from physics, an iteration and wall-clock budget, and the parameter covariance
-// from the Jacobian at the solution (ceres::Covariance).
+// from the Jacobian at the solution (Ceres' Jacobian, pseudo-inverse by SVD).
 #include <Eigen/Dense>
 
 #include <functional>
@@ -50,7 +50,7 @@ struct BoundedFitResult {
   std::string stopReason;    ///< Ceres' message when it did not converge
   std::vector<bool> atBound;  ///< a parameter within 1e-6 (scaled) of a bound
   /// s^2 (J'J)^+ in the parameters' units, s^2 = cost / (residuals - parameters); NaN if
-  /// not computed or the Jacobian is rank-deficient.
+  /// not computed.
   Eigen::MatrixXd covariance;
   Eigen::VectorXd standardErrors;  ///< sqrt(diag(covariance))
   /// The covariance as correlations (1 on the diagonal).

@@ -295,6 +295,7 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   if (dg.accepted.empty()) out += "  none\n";
   for (const auto& c : dg.acceptedScores) out += formatAcceptedEffect(c, describeEffect(c.id).sentence);
   for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
+  for (const auto& c : dg.confounds) out += "confound: " + c + "\n";
   for (const auto& p : dg.finalParameters)
     out += fmt("%s after: %.4g (95 %% CI %.4g .. %.4g)\n", p.name.c_str(), p.value, p.lower, p.upper);
   out += fmt("\n%-16s | before: ME %-4s RMSE %-4s R^2 %%  | after: ME %-4s RMSE %-4s R^2 %%\n", before.quantity.c_str(),
@@ -332,6 +333,7 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"accepted", dg.accepted},
           {"ambiguous", dg.ambiguous},
           {"ambiguity_advice", dg.ambiguityAdvice},
+          {"confounds", dg.confounds},
           {"final", summaryJson(after)},
           {"final_parameters", parametersJson(dg.finalParameters)},
           {"residual_white", dg.finalResidualWhite},

@@ -82,6 +82,9 @@ Hidden hidden(const std::string& effect, double size) {
   } else if (effect == "hip_moment_scale") {
     e.hipMomentScale = 1.0 + 0.1 * size;
     h.parameters = {{"scale", e.hipMomentScale}};
+  } else if (effect == "below_knee_mass_scale") {
+    e.belowKneeMassScale = 1.0 + 0.3 * size;
+    h.parameters = {{"scale", e.belowKneeMassScale}};
   } else {
     e.shankMassScale = 1.0 + 0.5 * size;
     h.parameters = {{"scale", e.shankMassScale}};

@@ -1,0 +1,212 @@
+#pragma once
+// An independent swing generator for tests. It shares no code with src/: its own equations
+// of motion (Kane's method in absolute segment angles, not the Lagrangian in (phi, beta) of
+// src/swing/reference_swing.cpp), its own fixed-step RK4, its own knee and hip laws, its own
+// noise. It writes the measured-file format a user has (time_s, hip_flexion_deg,
+// knee_flexion_deg, hip_moment_Nm) and the participant and knee-model YAML a user writes,
+// so what swingsim reads from it is what it would read from a lab.
+//
+// The leg: thigh about a fixed hip; shank and foot as one rigid body about the knee, the
+// foot welded at 90 deg to the shank, pointing forward (the participant format's meaning:
+// README, Participant YAML). Angles: hip flexion phi (thigh from hanging straight down,
+// forward positive), knee flexion theta = phi - psi (psi the shank's absolute angle).
+// The swing runs from toe-off until the knee, after its peak, is back below `endKneeDeg`,
+// before the extension stop and the friction near extension act (they are not modelled).
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace independent {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kG = 9.80665;  // standard gravity, m/s^2
+
+struct Segment {
+  double length, mass, comFromDistal, inertia;  // m, kg, m, kg m^2 about the COM
+};
+
+struct SwingTruth {
+  // Burkett 2004 participant P1 (Tables 1 and 2), as in participants/p1.yaml.
+  Segment thigh{0.410, 3.350, 0.284, 0.0264};
+  Segment shank{0.515, 0.785, 0.260, 0.0161};
+  Segment foot{0.240, 1.030, 0.140, 0.0059};  // COM measured from the toe
+  /// Knee damping: a constant dynamometer table `tableMoment` N m at `referenceDegS` deg/s,
+  /// linear in speed (moment = -table * rate / reference).
+  double tableMoment = 2.0;
+  double referenceDegS = 150.0;
+  // Hidden effects (0 = off).
+  double extraViscous = 0;       // N m s/rad (library: knee_viscous_damping)
+  double coulomb = 0;            // N m, tanh smoothing `coulombRate` rad/s (library: knee_coulomb_friction)
+  double coulombRate = 1.0;
+  double assistStiffness = 0;    // N m/rad towards extension (library: extension_assist_spring)
+  /// Outside the library: an elastic strap across hip and knee (biarticular), moment
+  /// k (theta - phi - offset) flexing the hip and extending the knee. N m/rad.
+  double strapStiffness = 0;
+  double strapOffset = 0.0;      // rad
+};
+
+/// A hip drive: flexion half-sine then extension half-sine, then nothing.
+struct HipDrive {
+  std::string name;
+  double flexion, flexionTime, extension, extensionTime;  // N m, s
+};
+
+inline double hipMoment(const HipDrive& d, double t) {
+  if (t < d.flexionTime) return d.flexion * std::sin(kPi * t / d.flexionTime);
+  const double u = t - d.flexionTime;
+  if (u < d.extensionTime) return -d.extension * std::sin(kPi * u / d.extensionTime);
+  return 0.0;
+}
+
+/// Slow, normal and fast swings: a weaker and longer, or stronger and shorter, hip drive.
+inline std::vector<HipDrive> threeDrives() {
+  return {{"slow", 24.0, 0.24, 12.0, 0.24}, {"normal", 30.0, 0.20, 15.0, 0.20}, {"fast", 38.0, 0.17, 19.0, 0.17}};
+}
+
+struct Vec2 {
+  double x, y;
+};
+inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+inline Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+
+/// Knee moment (N m, positive flexes) from the knee law and the hidden knee effects.
+inline double kneeMoment(const SwingTruth& m, double theta, double thetaDot, double phi) {
+  const double c = m.tableMoment / (m.referenceDegS * kPi / 180.0);
+  double M = -c * thetaDot;
+  M += -m.extraViscous * thetaDot - m.coulomb * std::tanh(thetaDot / m.coulombRate) - m.assistStiffness * theta;
+  M += -m.strapStiffness * (theta - phi - m.strapOffset);
+  return M;
+}
+
+/// The strap's moment on the hip (N m, positive flexes the hip).
+inline double strapHipMoment(const SwingTruth& m, double theta, double phi) {
+  return m.strapStiffness * (theta - phi - m.strapOffset);
+}
+
+/// Accelerations (phi'', psi'') by Kane's method: for each generalized speed u_j, the sum
+/// over bodies of m a . dv/du_j + I alpha dw/du_j equals the generalized active force.
+inline void accelerations(const SwingTruth& m, const HipDrive& d, double t, const double* y, double* acc) {
+  const double phi = y[0], psi = y[1], phiDot = y[2], psiDot = y[3];
+  // Thigh: COM a1 below the hip along the thigh.
+  const double a1 = m.thigh.length - m.thigh.comFromDistal, L1 = m.thigh.length;
+  // Shank + foot, in the shank frame (x forward along the foot, y up along the shank).
+  const double as = m.shank.length - m.shank.comFromDistal, L2 = m.shank.length;
+  const double cf = m.foot.length - m.foot.comFromDistal;
+  const double m2 = m.shank.mass + m.foot.mass;
+  const Vec2 c{m.foot.mass * cf / m2, -(m.shank.mass * as + m.foot.mass * L2) / m2};
+  const double jKnee = m.shank.inertia + m.shank.mass * as * as + m.foot.inertia + m.foot.mass * (cf * cf + L2 * L2);
+  const double i2 = jKnee - m2 * dot(c, c);
+  // Unit vectors.
+  const Vec2 e1{std::sin(phi), -std::cos(phi)}, n1{std::cos(phi), std::sin(phi)};
+  const Vec2 rc{c.x * std::cos(psi) - c.y * std::sin(psi), c.x * std::sin(psi) + c.y * std::cos(psi)};  // R(psi) c
+  const Vec2 rcPerp{-rc.y, rc.x};  // d(R c)/dpsi
+  // Partial velocities of the COMs: thigh v1 = a1 n1 phi'; shank v2 = L1 n1 phi' + rcPerp psi'.
+  const Vec2 v1phi = a1 * n1, v2phi = L1 * n1, v2psi = rcPerp;
+  // Velocity-product accelerations (centripetal).
+  const Vec2 a1rest = (-a1 * phiDot * phiDot) * e1;
+  const Vec2 a2rest = (-L1 * phiDot * phiDot) * e1 + (-psiDot * psiDot) * rc;
+  // Generalized inertia.
+  const double M11 = m.thigh.mass * dot(v1phi, v1phi) + m.thigh.inertia + m2 * dot(v2phi, v2phi);
+  const double M12 = m2 * dot(v2phi, v2psi);
+  const double M22 = m2 * dot(v2psi, v2psi) + i2;
+  // Generalized active forces: gravity, hip moment, knee moment, strap.
+  const double theta = phi - psi, thetaDot = phiDot - psiDot;
+  const double Mk = kneeMoment(m, theta, thetaDot, phi);
+  const double Mh = hipMoment(d, t) + strapHipMoment(m, theta, phi);
+  const Vec2 g1{0, -m.thigh.mass * kG}, g2{0, -m2 * kG};
+  const double Q1 = dot(g1, v1phi) + dot(g2, v2phi) + Mh + Mk - m.thigh.mass * dot(a1rest, v1phi) - m2 * dot(a2rest, v2phi);
+  const double Q2 = dot(g2, v2psi) - Mk - m2 * dot(a2rest, v2psi);
+  const double det = M11 * M22 - M12 * M12;
+  acc[0] = (M22 * Q1 - M12 * Q2) / det;
+  acc[1] = (M11 * Q2 - M12 * Q1) / det;
+}
+
+struct SwingSamples {
+  std::vector<double> time, hipDeg, kneeDeg, hipMomentNm;
+  std::vector<double> cleanKneeDeg;
+};
+
+/// From toe-off (hip `hip0Deg`, knee `knee0Deg`, at rest) with RK4 at `step` s, sampled at
+/// `rate` Hz; angle noise `noiseDeg` (white, Gaussian) on both angles.
+inline SwingSamples generateSwing(const SwingTruth& m, const HipDrive& d, double noiseDeg, std::uint64_t seed,
+                                  double hip0Deg = -15.0, double knee0Deg = 10.0, double endKneeDeg = 8.0,
+                                  double rate = 500.0, double step = 1e-4) {
+  const double deg = kPi / 180.0;
+  double y[4] = {hip0Deg * deg, (hip0Deg - knee0Deg) * deg, 0.0, 0.0};
+  std::mt19937_64 engine(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  SwingSamples s;
+  const int perSample = static_cast<int>(std::lround(1.0 / (rate * step)));
+  double peak = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const double t = i / rate;
+    const double knee = (y[0] - y[1]) / deg;
+    peak = std::max(peak, knee);
+    if (i > 10 && peak > knee0Deg + 20.0 && knee < endKneeDeg) break;
+    if (t > 1.5) throw std::runtime_error("independent swing did not return within 1.5 s");
+    s.time.push_back(t);
+    s.hipDeg.push_back(y[0] / deg + noiseDeg * normal(engine));
+    s.kneeDeg.push_back(knee + noiseDeg * normal(engine));
+    s.cleanKneeDeg.push_back(knee);
+    s.hipMomentNm.push_back(hipMoment(d, t));
+    for (int k = 0; k < perSample; ++k) {
+      const double tk = t + k * step;
+      double k1[4], k2[4], k3[4], k4[4], tmp[4];
+      auto f = [&](double tt, const double* yy, double* out) {
+        out[0] = yy[2];
+        out[1] = yy[3];
+        accelerations(m, d, tt, yy, out + 2);
+      };
+      f(tk, y, k1);
+      for (int j = 0; j < 4; ++j) tmp[j] = y[j] + step / 2 * k1[j];
+      f(tk + step / 2, tmp, k2);
+      for (int j = 0; j < 4; ++j) tmp[j] = y[j] + step / 2 * k2[j];
+      f(tk + step / 2, tmp, k3);
+      for (int j = 0; j < 4; ++j) tmp[j] = y[j] + step * k3[j];
+      f(tk + step, tmp, k4);
+      for (int j = 0; j < 4; ++j) y[j] += step / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+    }
+  }
+  return s;
+}
+
+inline void writeSwingCsv(const SwingSamples& s, const std::string& path) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f.precision(10);
+  f << "time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\n";
+  for (std::size_t i = 0; i < s.time.size(); ++i)
+    f << s.time[i] << "," << s.hipDeg[i] << "," << s.kneeDeg[i] << "," << s.hipMomentNm[i] << "\n";
+}
+
+/// The participant and knee-model YAML of the truth (a user's files), into `dir`.
+inline void writeSwingModelFiles(const SwingTruth& m, const std::string& dir) {
+  std::ofstream knee(dir + "/knee.yaml");
+  knee << "kind: damping_table\nname: constant-damping\nsource: independent test generator\n"
+       << "damping_table:\n  reference_speed_deg_s: " << m.referenceDegS << "\n  speed_rule: linear\n"
+       << "  extension_factor: 1.0\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m.tableMoment << ", "
+       << m.tableMoment << ", " << m.tableMoment << "]\n"
+       << "hyperextension_stop: {engage_flexion_deg: 0, stiffness_Nm_per_rad1p5: 20000, dissipation_s_per_rad: 0.3}\n";
+  std::ofstream p(dir + "/participant.yaml");
+  auto seg = [&](const char* name, const Segment& s) {
+    p << "  " << name << ": {length_m: " << s.length << ", mass_kg: " << s.mass << ", com_from_distal_m: " << s.comFromDistal
+      << ", inertia_kgm2: " << s.inertia << "}\n";
+  };
+  p << "name: INDEP\nsource: independent test generator\nheight_m: 1.83\nbody_mass_kg: 70\nsegments:\n";
+  seg("thigh", m.thigh);
+  seg("shank", m.shank);
+  seg("foot", m.foot);
+  p << "knee_friction_Nm: 0\nknee_model: knee.yaml\ncom_rule: fixed_from_proximal\nfoot_com_from: toe\n"
+    << "initial: {hip_flexion_deg: -15, knee_flexion_deg: 10, hip_flexion_rate_deg_s: 0, knee_flexion_rate_deg_s: 0}\n"
+    << "hip_range: {min_flexion_deg: -30, max_flexion_deg: 90}\n"
+    << "swing_end: {thigh_target_flexion_deg: 20, zone_of_stability_deg: 6, time_limit_s: 1.5, bounce_window_s: 0.15}\n"
+    << "hip_moment: {profile: biphasic_sine, flexion_amplitude_Nm: 30, flexion_duration_s: 0.20, "
+       "extension_amplitude_Nm: 15, extension_duration_s: 0.20, time_scale: 1.0}\n";
+}
+
+}  // namespace independent
