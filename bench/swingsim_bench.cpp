@@ -142,10 +142,11 @@ void BM_FitMauch(benchmark::State& state) {
   std::vector<BenchData> train, validate;
   for (const auto& path : study.train) train.push_back(readBenchCsv(path, 13));
   for (const auto& path : study.validate) validate.push_back(readBenchCsv(path, 3));
+  const bool fitSwitches = state.range(0) != 0;
   for (auto _ : state) {
     for (const auto& model : models) {
       CylinderFitOptions options;
-      options.fitSwitches = study.fitSwitches;
+      options.fitSwitches = fitSwitches;
       const CylinderFit fit = fitCylinder(model, train, options);
       const auto files = evaluateFiles(MauchCylinder(fit.params), train, validate);
       keep(files.size());
@@ -154,7 +155,9 @@ void BM_FitMauch(benchmark::State& state) {
   state.counters["models"] = static_cast<double>(models.size());
   state.counters["files"] = static_cast<double>(train.size() + validate.size());
 }
-BENCHMARK(BM_FitMauch)->Unit(benchmark::kMillisecond);
+// fit_switches 0: the linear regression at the model file's switch constants (Chien's
+// procedure); 1: switch constants too (multi-start variable projection with Ceres).
+BENCHMARK(BM_FitMauch)->ArgName("fit_switches")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // The cylinder diagnosis demo (`swingsim diagnose studies/diagnose-demo-cylinder.yaml`):
 // baseline fit, candidate ranking, refits and the comparison before and after. Files are
@@ -173,6 +176,20 @@ void BM_DiagnoseCylinder(benchmark::State& state) {
   state.counters["accepted_effects"] = static_cast<double>(accepted);
 }
 BENCHMARK(BM_DiagnoseCylinder)->Unit(benchmark::kMillisecond);
+
+// The swing diagnosis demo (`swingsim diagnose studies/diagnose-demo-swing.yaml`, three
+// trials: train on one, hold out two), files read once outside the loop.
+void BM_DiagnoseSwing(benchmark::State& state) {
+  const DiagnosisStudy study = loadDiagnosisStudy(sourcePath("studies/diagnose-demo-swing.yaml"));
+  const auto plant = loadDiagnosisPlant(study, 8);
+  std::size_t accepted = 0;
+  for (auto _ : state) {
+    const Diagnosis diagnosis = runDiagnosis(*plant, study.settings);
+    accepted = diagnosis.accepted.size();
+  }
+  state.counters["accepted"] = static_cast<double>(accepted);
+}
+BENCHMARK(BM_DiagnoseSwing)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 }  // namespace swingsim::bench

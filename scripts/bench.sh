@@ -50,5 +50,13 @@ print(f"Simbody swing / reference swing (same accuracy number): {swing / ref:.0f
 allc = next(k for k in med if k.startswith("BM_SweepBurkett/jobs:0"))
 one = next(k for k in med if k.startswith("BM_SweepBurkett/jobs:1"))
 print(f"sweep (84 swings) on 1 core / all cores: {ms(one) / ms(allc):.2f}x")
+fit0 = ms(next(k for k in med if k.startswith("BM_FitMauch/fit_switches:0")))
+fit1 = ms(next(k for k in med if k.startswith("BM_FitMauch/fit_switches:1")))
+print(f"fitting both Mauch models on three files: {fit0:.1f} ms at fixed switches, {fit1:.1f} ms with the switch "
+      f"constants fitted ({fit1 / fit0:.0f}x)")
+dgc = ms(next(k for k in med if k.startswith("BM_DiagnoseCylinder")))
+dgs = ms(next(k for k in med if k.startswith("BM_DiagnoseSwing")))
+print(f"one cylinder diagnosis: {dgc / 1e3:.2f} s; one swing diagnosis (three trials): {dgs / 1e3:.2f} s; "
+      f"swing diagnosis / Simbody swing: {dgs / swing:.0f}x")
 print(f"json: {sys.argv[1]}")
 EOF
