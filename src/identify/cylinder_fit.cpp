@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <limits>
 #include <stdexcept>
 
@@ -180,6 +181,55 @@ std::vector<std::pair<double, double>> coefficientBounds(const MauchCylinderPara
 // width far below the data's resolution makes a step) where a polish started there stalls.
 constexpr std::size_t kPolishedStarts = 3;
 
+// Regression with coefficients kept within physical bounds, by an active set: solve, fix
+// every coefficient outside its bound on that bound, solve for the others, repeat. Fixed
+// coefficients get a NaN standard error and `fixed` set.
+LinearFit regressWithinBounds(const MauchCylinderParams& params, const std::vector<BenchData>& train,
+                              const std::vector<std::pair<double, double>>& bounds, std::vector<bool>& fixed) {
+  Eigen::MatrixXd X;
+  Eigen::VectorXd y;
+  buildRegression(params, train, X, y);
+  const Eigen::Index p = X.cols();
+  fixed.assign(static_cast<std::size_t>(p), false);
+  std::vector<double> value(static_cast<std::size_t>(p), 0.0);
+  LinearFit fit;
+  for (Eigen::Index pass = 0; pass <= p; ++pass) {
+    std::vector<Eigen::Index> freeCols;
+    Eigen::VectorXd target = y;
+    for (Eigen::Index j = 0; j < p; ++j) {
+      if (fixed[static_cast<std::size_t>(j)])
+        target -= X.col(j) * value[static_cast<std::size_t>(j)];
+      else
+        freeCols.push_back(j);
+    }
+    Eigen::MatrixXd Xf(X.rows(), static_cast<Eigen::Index>(freeCols.size()));
+    for (std::size_t k = 0; k < freeCols.size(); ++k) Xf.col(static_cast<Eigen::Index>(k)) = X.col(freeCols[k]);
+    fit = fitLeastSquares(Xf, target);
+    bool violated = false;
+    for (std::size_t k = 0; k < freeCols.size(); ++k) {
+      const auto j = static_cast<std::size_t>(freeCols[k]);
+      const double v = fit.coefficients[k];
+      if (v < bounds[j].first || v > bounds[j].second) {
+        fixed[j] = true;
+        value[j] = v < bounds[j].first ? bounds[j].first : bounds[j].second;
+        violated = true;
+      } else {
+        value[j] = v;
+      }
+    }
+    if (!violated) {
+      LinearFit out = fit;
+      out.coefficients = value;
+      out.standardErrors.assign(static_cast<std::size_t>(p), std::numeric_limits<double>::quiet_NaN());
+      for (std::size_t k = 0; k < freeCols.size(); ++k)
+        out.standardErrors[static_cast<std::size_t>(freeCols[k])] = fit.standardErrors[k];
+      out.rank += static_cast<int>(p - static_cast<Eigen::Index>(freeCols.size()));
+      return out;
+    }
+  }
+  return fit;  // unreachable: each pass fixes at least one more coefficient
+}
+
 // Geometric points spread over [lo, hi]: lo (hi/lo)^((i + 1/2) / n).
 std::vector<double> spreadLog(const double range[2], int n) {
   std::vector<double> v;
@@ -264,34 +314,59 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
       ks.assign(1, model.switches.latchRate);
     }
     const int total = static_cast<int>(vws.size() * pws.size() * xhyStarts.size() * ks.size());
+    std::vector<MauchSwitchParams> grid;
     for (double vw : vws)
       for (double pw : pws)
         for (double xh : xhyStarts)
-          for (double k : ks) {
-            MauchCylinderParams trial = model;
-            trial.switches = {vw, pw, xh, k};
-            starts.push_back({projectedResidual(trial, train).squaredNorm(), trial.switches});
-            if (options.progress) options.progress(static_cast<int>(starts.size()), total + static_cast<int>(kPolishedStarts));
-          }
-    std::sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
+          for (double k : ks) grid.push_back({vw, pw, xh, k});
+    // The starts are independent: evaluated on two threads (results in grid order, so the
+    // fit is the same on any machine).
+    std::vector<double> costs(grid.size());
+    auto evaluate = [&](std::size_t first, std::size_t step) {
+      for (std::size_t i = first; i < grid.size(); i += step) {
+        MauchCylinderParams trial = model;
+        trial.switches = grid[i];
+        costs[i] = projectedResidual(trial, train).squaredNorm();
+      }
+    };
+    if (grid.size() > 1) {
+      auto other = std::async(std::launch::async, evaluate, 1, 2);
+      evaluate(0, 2);
+      other.get();
+    } else {
+      evaluate(0, 1);
+    }
+    for (std::size_t i = 0; i < grid.size(); ++i) starts.push_back({costs[i], grid[i]});
+    if (options.progress) options.progress(total, total + static_cast<int>(kPolishedStarts));
+    std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
     out.switchStarts = static_cast<int>(starts.size());
-    // Polish the best starts by Ceres over the switch constants (linear part projected out).
-    double bestCost = std::numeric_limits<double>::infinity();
-    MauchSwitchParams bestSwitches = model.switches;
-    for (std::size_t s = 0; s < std::min<std::size_t>(kPolishedStarts, starts.size()); ++s) {
+    // Polish the best starts by Ceres over the switch constants (linear part projected out),
+    // each on its own thread.
+    BoundedFitSettings settings;
+    // A polish near a known fit (no multi-start) needs a few steps; its budget says so.
+    settings.maxIterations = options.multiStart ? 50 : 12;
+    settings.maxSeconds = 30.0;
+    settings.functionTolerance = options.multiStart ? 1e-6 : 1e-5;
+    settings.computeCovariance = false;
+    settings.differenceStep = 1e-6;
+    auto polish = [&](const MauchSwitchParams& from) {
       ResidualFunction f = [&](const Eigen::VectorXd& x) {
         MauchCylinderParams trial = model;
         trial.switches = switchesFrom(model.switches, x.data(), latch);
         return projectedResidual(trial, train);
       };
-      BoundedFitSettings settings;
-      // A polish near a known fit (no multi-start) needs a few steps; its budget says so.
-      settings.maxIterations = options.multiStart ? 50 : 12;
-      settings.maxSeconds = 30.0;
-      settings.functionTolerance = options.multiStart ? 1e-7 : 1e-5;
-      settings.computeCovariance = false;
-      settings.differenceStep = 1e-6;
-      const BoundedFitResult r = solveBoundedLeastSquares(f, switchParameters(starts[s].switches, R, latch), settings);
+      return solveBoundedLeastSquares(f, switchParameters(from, R, latch), settings);
+    };
+    const std::size_t polished = std::min<std::size_t>(kPolishedStarts, starts.size());
+    std::vector<std::future<BoundedFitResult>> runs;
+    for (std::size_t s = 1; s < polished; ++s) runs.push_back(std::async(std::launch::async, polish, starts[s].switches));
+    std::vector<BoundedFitResult> results;
+    results.push_back(polish(starts[0].switches));
+    for (auto& r : runs) results.push_back(r.get());
+    double bestCost = std::numeric_limits<double>::infinity();
+    MauchSwitchParams bestSwitches = model.switches;
+    for (std::size_t s = 0; s < results.size(); ++s) {
+      const BoundedFitResult& r = results[s];
       if (options.multiStart && !r.converged && r.iterations >= settings.maxIterations)
         out.warnings.push_back("the switch-constant fit stopped at its budget of " + std::to_string(settings.maxIterations) +
                                " iterations without converging");
@@ -316,8 +391,14 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   bool outside = false;
   for (std::size_t j = 0; j < bounds.size(); ++j)
     outside = outside || best.coefficients[j] < bounds[j].first || best.coefficients[j] > bounds[j].second;
-  std::vector<double> values = best.coefficients, errors = best.standardErrors;
   std::vector<bool> atBound(names.size(), false);
+  if (outside && best.rank == static_cast<int>(p)) {
+    const double conditionNumber = best.conditionNumber;
+    best = regressWithinBounds(current, train, bounds, atBound);
+    best.conditionNumber = conditionNumber;  // of the whole regression, as reported before
+    setMauchCoefficientVector(current, best.coefficients);
+  }
+  std::vector<double> values = best.coefficients, errors = best.standardErrors;
   Eigen::MatrixXd correlation;
   std::vector<BoundedParameter> all;
   for (std::size_t j = 0; j < names.size(); ++j) {
@@ -328,7 +409,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   const std::size_t nLinear = all.size();
   if (out.switchesFitted)
     for (const auto& b : switchParameters(current.switches, options.ranges, latch)) all.push_back(b);
-  if ((out.switchesFitted || outside) && best.rank == static_cast<int>(p)) {
+  if (out.switchesFitted && best.rank == static_cast<int>(p)) {
     ResidualFunction f = [&](const Eigen::VectorXd& x) {
       MauchCylinderParams trial = current;
       setMauchCoefficientVector(trial, std::vector<double>(x.data(), x.data() + nLinear));
@@ -336,15 +417,17 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
       return predictionResidual(trial, train);
     };
     BoundedFitSettings settings;
-    // Variable projection already found the joint optimum unless a bound is violated: then
-    // only the covariance at that point is needed.
-    settings.maxIterations = outside ? 30 : 0;
+    // Variable projection (with the active set) already found the joint optimum: only the
+    // covariance of every constant at that point is needed.
+    settings.maxIterations = 0;
     settings.maxSeconds = 30.0;
     settings.differenceStep = 1e-6;
     const BoundedFitResult r = solveBoundedLeastSquares(f, all, settings);
     values.assign(r.x.data(), r.x.data() + r.x.size());
     errors.assign(r.standardErrors.data(), r.standardErrors.data() + r.standardErrors.size());
-    atBound = r.atBound;
+    for (std::size_t j = nLinear; j < r.atBound.size(); ++j) atBound.push_back(r.atBound[j]);
+    for (std::size_t j = 0; j < nLinear; ++j)
+      if (atBound[j]) errors[j] = std::numeric_limits<double>::quiet_NaN();
     correlation = r.correlation();
     setMauchCoefficientVector(current, std::vector<double>(values.begin(), values.begin() + static_cast<long>(nLinear)));
     if (out.switchesFitted) current.switches = switchesFrom(current.switches, values.data() + nLinear, latch);
