@@ -11,6 +11,7 @@
 #include "../independent/mauch_bench_generator.h"
 #include "identify/cylinder_plant.h"
 #include "identify/diagnosis_engine.h"
+#include "diagnosis_outcome.h"
 #include "io/bench_csv.h"
 
 namespace swingsim {
@@ -50,19 +51,11 @@ Diagnosis diagnose(const independent::MauchTruth& truth, std::uint64_t seed, con
   const Files f = makeFiles(truth, seed, tag);
   const CylinderPlant plant(startModel(), f.train, f.validate, /*fitSwitches=*/true);
   const Diagnosis dg = runDiagnosis(plant, {});
-  std::printf("  %s: accepted", tag.c_str());
-  for (const auto& a : dg.accepted) std::printf(" %s", a.c_str());
-  std::printf("; held-out");
-  for (double r : dg.final.validationRmse) std::printf(" %.1f", r);
-  std::printf(" N (noise %.0f); %s\n", kNoise, dg.explained ? "explained" : dg.verdict.c_str());
+  testing::printOutcome(tag, dg, "N", kNoise);
   return dg;
 }
 
-double worstHeldOut(const Diagnosis& dg) {
-  double w = 0;
-  for (double r : dg.final.validationRmse) w = std::max(w, r);
-  return w;
-}
+using testing::worstHeldOut;
 
 TEST(IndependentCylinderDiagnosis, OrificeFlowHiddenIsNamedAndExplained) {
   for (std::uint64_t seed : {11, 12}) {

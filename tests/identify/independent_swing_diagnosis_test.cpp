@@ -13,6 +13,7 @@
 
 #include "../independent/swing_generator.h"
 #include "identify/diagnosis_engine.h"
+#include "diagnosis_outcome.h"
 #include "study/diagnosis_study.h"
 
 namespace swingsim {
@@ -41,21 +42,11 @@ Diagnosis diagnoseIndependent(const independent::SwingTruth& truth, std::uint64_
   const auto plant = loadDiagnosisPlant(study, 8);
   const Diagnosis dg = runDiagnosis(*plant, study.settings);
   fs::remove_all(dir);
-  std::printf("  %s: accepted", tag.c_str());
-  for (const auto& a : dg.accepted) std::printf(" %s", a.c_str());
-  std::printf("; knee held-out");
-  for (double r : dg.final.validationRmse) std::printf(" %.3f", r);
-  std::printf(" deg (noise %.1f); %s\n", kNoiseDeg, dg.explained ? "explained" : dg.verdict.c_str());
-  for (const auto& c : dg.confounds) std::printf("    confound: %s\n", c.c_str());
-  for (const auto& w : dg.warnings) std::printf("    warning: %s\n", w.c_str());
+  testing::printOutcome(tag, dg, "deg", kNoiseDeg);
   return dg;
 }
 
-double worstHeldOut(const Diagnosis& dg) {
-  double w = 0;
-  for (double r : dg.final.validationRmse) w = std::max(w, r);
-  return w;
-}
+using testing::worstHeldOut;
 
 TEST(IndependentSwingDiagnosis, NullAcceptsNothingAndReachesTheNoise) {
   const Diagnosis dg = diagnoseIndependent(independent::SwingTruth{}, 41, "null");
