@@ -7,7 +7,6 @@
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
-#include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
@@ -88,20 +87,15 @@ int runSweepCommand(const SweepArguments& a) {
       if (gInterrupted) break;
       staged.add(name, contents);
     }
-    if (a.json && !gInterrupted) writeFileAtomic(*a.json + ".staged", formatSweepJson(results));
+    if (a.json && !gInterrupted) staged.addBeside(*a.json, formatSweepJson(results));
     if (gInterrupted) {
       staged.discard();
-      if (a.json) std::remove((*a.json + ".staged").c_str());
       std::fprintf(stderr, "swingsim: interrupted while writing the report; nothing in %s was changed\n", out.c_str());
       restoreInterrupts();
       return 1;
     }
     // A partial CSV of an earlier, interrupted run is out of date now.
     staged.commit({"sweep.partial.csv"});
-    if (a.json && std::rename((*a.json + ".staged").c_str(), a.json->c_str()) != 0) {
-      std::remove((*a.json + ".staged").c_str());
-      throw RunError(*a.json + ": cannot move the finished file into place");
-    }
   }
   restoreInterrupts();
   std::printf("\nreport: %s/report.md\n", out.c_str());

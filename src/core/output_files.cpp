@@ -58,6 +58,12 @@ void StagedOutput::add(const std::string& name, const std::string& contents) {
   names_.push_back(name);
 }
 
+void StagedOutput::addBeside(const std::string& path, const std::string& contents) {
+  const std::filesystem::path p(path);
+  if (p.has_parent_path()) makeDirectories(p.parent_path().string());
+  beside_.push_back({writeTemporaryBeside(path, contents), path});
+}
+
 void StagedOutput::commit(const std::vector<std::string>& stale) {
   for (const auto& name : names_) {
     const std::filesystem::path target = std::filesystem::path(folder_) / name;
@@ -66,7 +72,11 @@ void StagedOutput::commit(const std::vector<std::string>& stale) {
     if (std::rename(from.c_str(), target.c_str()) != 0)
       throw RunError(target.string() + ": cannot move the finished file into place from " + from);
   }
+  for (const auto& [tmp, target] : beside_)
+    if (std::rename(tmp.c_str(), target.c_str()) != 0)
+      throw RunError(target + ": cannot move the finished file into place from " + tmp);
   names_.clear();
+  beside_.clear();
   discard();
   for (const auto& name : stale) {
     std::error_code ec;
@@ -79,6 +89,8 @@ void StagedOutput::discard() {
   std::error_code ec;
   std::filesystem::remove_all(staging_, ec);
   names_.clear();
+  for (const auto& [tmp, target] : beside_) std::remove(tmp.c_str());
+  beside_.clear();
 }
 
 std::string formatByteCount(std::uintmax_t bytes) {

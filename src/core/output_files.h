@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace swingsim {
@@ -31,16 +32,21 @@ class StagedOutput {
 
   /// Writes `name` (relative to the folder; may contain subfolders) into the staging folder.
   void add(const std::string& name, const std::string& contents);
+  /// Stages a file outside the folder (a `--json` path) beside its target, as
+  /// `path.tmp-PID` (parent folders created); commit() moves it into place with the others.
+  void addBeside(const std::string& path, const std::string& contents);
   /// Moves every added file into the folder, replacing older ones, and removes the staging
   /// folder; `stale` files (relative names) are removed from the folder afterwards.
   void commit(const std::vector<std::string>& stale = {});
-  /// Removes the staging folder and what was added (also done by the destructor).
+  /// Removes the staging folder, the files staged beside their targets and what was added
+  /// (also done by the destructor).
   void discard();
   const std::string& getStagingFolder() const { return staging_; }
 
  private:
   std::string folder_, staging_;
   std::vector<std::string> names_;
+  std::vector<std::pair<std::string, std::string>> beside_;  ///< (temporary, target)
 };
 
 /// Creates a directory and its parents (like `mkdir -p`).
