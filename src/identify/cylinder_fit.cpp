@@ -25,6 +25,15 @@ std::string fmt3(double v) {
   return buf;
 }
 
+// Euclidean norm of each column of X (1 for an all-zero column): dividing by it makes the
+// conditioning a measure of collinearity, not of the choice of units.
+Eigen::VectorXd calcColumnScale(const Eigen::MatrixXd& X) {
+  Eigen::VectorXd scale = X.colwise().norm().transpose();
+  for (Eigen::Index j = 0; j < scale.size(); ++j)
+    if (!(scale(j) > 0)) scale(j) = 1.0;
+  return scale;
+}
+
 }  // namespace
 
 LinearFit fitLeastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
@@ -32,10 +41,7 @@ LinearFit fitLeastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
   const Eigen::Index n = X.rows(), p = X.cols();
   LinearFit fit;
   fit.samples = static_cast<std::size_t>(n);
-  Eigen::VectorXd scale = X.colwise().norm().transpose();
-  for (Eigen::Index j = 0; j < p; ++j) {
-    if (!(scale(j) > 0)) scale(j) = 1.0;
-  }
+  const Eigen::VectorXd scale = calcColumnScale(X);
   const Eigen::MatrixXd Xs = X * scale.cwiseInverse().asDiagonal();
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(Xs, Eigen::ComputeThinU | Eigen::ComputeThinV);
   svd.setThreshold(kRankTolerance);
@@ -61,17 +67,40 @@ LinearFit fitLeastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
   return fit;
 }
 
+namespace {
+
+// One linear coefficient: its name with unit, and whether physics keeps it >= 0. A hydraulic
+// cylinder dissipates, so every damping (c, orifice a) is >= 0; seal friction opposes motion
+// (Fc >= 0); a moving mass is >= 0. Offsets, stiffnesses and the stroke-dependent damping
+// change are free.
+struct CoefficientSpec {
+  std::string name;
+  bool nonNegative;
+};
+
+// The coefficients of a model in regressor order (MauchCylinder::calcRegressorRow).
+std::vector<CoefficientSpec> mauchCoefficients(const MauchCylinderParams& params) {
+  std::vector<CoefficientSpec> c;
+  auto phase = [&](const std::string& prefix) {
+    c.push_back({prefix + " f_N", false});
+    c.push_back({prefix + " k_N_per_m", false});
+    c.push_back({prefix + " c_Ns_per_m", true});
+  };
+  for (int i = 1; i <= params.phases; ++i) phase("phase " + std::to_string(i));
+  const MauchAddedEffects& e = params.effects;
+  if (e.hyperextensionPhase) phase("hyperextension_phase");
+  if (e.coulombFriction) c.push_back({"coulomb_friction force_N", true});
+  if (e.orificeQuadratic) c.push_back({"orifice_quadratic coefficient_Ns2_per_m2", true});
+  if (e.inertia) c.push_back({"inertia mass_kg", true});
+  if (e.positionDependentDamping) c.push_back({"position_dependent_damping coefficient_Ns_per_m2", false});
+  return c;
+}
+
+}  // namespace
+
 std::vector<std::string> mauchCoefficientNames(const MauchCylinderParams& params) {
   std::vector<std::string> n;
-  for (int i = 1; i <= params.phases; ++i)
-    for (const char* c : {"f_N", "k_N_per_m", "c_Ns_per_m"}) n.push_back("phase " + std::to_string(i) + " " + c);
-  const MauchAddedEffects& e = params.effects;
-  if (e.hyperextensionPhase)
-    for (const char* c : {"f_N", "k_N_per_m", "c_Ns_per_m"}) n.push_back(std::string("hyperextension_phase ") + c);
-  if (e.coulombFriction) n.push_back("coulomb_friction force_N");
-  if (e.orificeQuadratic) n.push_back("orifice_quadratic coefficient_Ns2_per_m2");
-  if (e.inertia) n.push_back("inertia mass_kg");
-  if (e.positionDependentDamping) n.push_back("position_dependent_damping coefficient_Ns_per_m2");
+  for (const auto& c : mauchCoefficients(params)) n.push_back(c.name);
   return n;
 }
 
@@ -118,29 +147,18 @@ Eigen::VectorXd projectedResidual(const MauchCylinderParams& params, const std::
   Eigen::MatrixXd X;
   Eigen::VectorXd y;
   buildRegression(params, train, X, y);
-  Eigen::VectorXd scale = X.colwise().norm().transpose();
-  for (Eigen::Index j = 0; j < scale.size(); ++j)
-    if (!(scale(j) > 0)) scale(j) = 1.0;
-  const Eigen::MatrixXd Xs = X * scale.cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd Xs = X * calcColumnScale(X).cwiseInverse().asDiagonal();
   const Eigen::VectorXd b = Xs.colPivHouseholderQr().solve(y);
   return y - Xs * b;
 }
 
 // Training residual y - X b of a model (its coefficients as given) along every record.
 Eigen::VectorXd predictionResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
-  const MauchCylinder cylinder(params);
-  std::size_t rows = 0;
-  for (const auto& d : train) rows += d.time.size();
-  Eigen::VectorXd r(static_cast<Eigen::Index>(rows));
-  Eigen::Index i = 0;
-  for (const auto& d : train) {
-    const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
-    const std::vector<double> accel = params.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
-                                                             : std::vector<double>(d.time.size(), 0.0);
-    for (std::size_t k = 0; k < d.time.size(); ++k, ++i)
-      r[i] = d.force[k] - cylinder.calcForce(d.position[k], d.velocity[k], accel[k], latch[k]);
-  }
-  return r;
+  Eigen::MatrixXd X;
+  Eigen::VectorXd y;
+  buildRegression(params, train, X, y);
+  const std::vector<double> b = MauchCylinder(params).getCoefficientVector();
+  return y - X * Eigen::Map<const Eigen::VectorXd>(b.data(), static_cast<Eigen::Index>(b.size()));
 }
 
 // The switch constants as bounded parameters, in the order of switchesFrom.
@@ -163,17 +181,10 @@ MauchSwitchParams switchesFrom(MauchSwitchParams s, const double* x, bool latch)
   return s;
 }
 
-// Physical bounds of the linear coefficients: a hydraulic cylinder dissipates, so every
-// damping (c, orifice a) is >= 0; seal friction opposes motion (Fc >= 0); a moving mass is
-// >= 0. Offsets, stiffnesses and the stroke-dependent damping change are free.
+// Physical bounds of the linear coefficients (mauchCoefficients says which are >= 0).
 std::vector<std::pair<double, double>> coefficientBounds(const MauchCylinderParams& params) {
-  const std::vector<std::string> names = mauchCoefficientNames(params);
   std::vector<std::pair<double, double>> b;
-  for (const auto& n : names) {
-    const bool nonNegative = n.find("c_Ns_per_m") != std::string::npos || n.find("force_N") != std::string::npos ||
-                             n.find("Ns2_per_m2") != std::string::npos || n.find("mass_kg") != std::string::npos;
-    b.push_back({nonNegative ? 0.0 : -1e300, 1e300});
-  }
+  for (const auto& c : mauchCoefficients(params)) b.push_back({c.nonNegative ? 0.0 : -1e300, 1e300});
   return b;
 }
 
@@ -243,7 +254,6 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
                         const CylinderFitOptions& options) {
   CylinderFit out;
   out.params = model;
-  out.startSwitches = model.switches;
   std::size_t rows = 0;
   for (const auto& d : train) rows += d.time.size();
   const std::size_t p = static_cast<std::size_t>(MauchCylinder(model).numCoefficients());
@@ -382,10 +392,10 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   }
   setMauchCoefficientVector(current, best.coefficients);
 
-  // Joint refinement of every constant (linear coefficients within their physical bounds,
-  // and the fitted switch constants) by Ceres, which also gives the covariance of them all.
-  // Needed when switch constants were fitted (their uncertainty) or a coefficient left its
-  // physical range; otherwise the regression is the answer and its standard errors exact.
+  // Coefficients that left their physical range are put on their bound (active set). With
+  // fitted switch constants, the covariance of every constant (coefficients and switches) at
+  // that point comes from Ceres' Jacobian; otherwise the regression's standard errors are
+  // exact.
   const std::vector<std::string> names = mauchCoefficientNames(current);
   const auto bounds = coefficientBounds(current);
   bool outside = false;
@@ -413,7 +423,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
     ResidualFunction f = [&](const Eigen::VectorXd& x) {
       MauchCylinderParams trial = current;
       setMauchCoefficientVector(trial, std::vector<double>(x.data(), x.data() + nLinear));
-      if (out.switchesFitted) trial.switches = switchesFrom(current.switches, x.data() + nLinear, latch);
+      trial.switches = switchesFrom(current.switches, x.data() + nLinear, latch);
       return predictionResidual(trial, train);
     };
     BoundedFitSettings settings;
@@ -430,7 +440,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
       if (atBound[j]) errors[j] = std::numeric_limits<double>::quiet_NaN();
     correlation = r.correlation();
     setMauchCoefficientVector(current, std::vector<double>(values.begin(), values.begin() + static_cast<long>(nLinear)));
-    if (out.switchesFitted) current.switches = switchesFrom(current.switches, values.data() + nLinear, latch);
+    current.switches = switchesFrom(current.switches, values.data() + nLinear, latch);
     best.coefficients.assign(values.begin(), values.begin() + static_cast<long>(nLinear));
     best.standardErrors.assign(errors.begin(), errors.begin() + static_cast<long>(nLinear));
     best.residualRms = std::sqrt(r.cost / static_cast<double>(rows));

@@ -80,7 +80,6 @@ constexpr double kCollinearLimit = 0.95;
 struct CylinderFit {
   MauchCylinderParams params;   ///< the model with fitted coefficients (and switches)
   LinearFit regression;         ///< at the final switches (coefficients, standard errors final)
-  MauchSwitchParams startSwitches;
   double trainRmseAtStart = 0;  ///< N, coefficients fitted at the YAML switches
   bool switchesFitted = false;
   int switchStarts = 0;         ///< multi-start points tried

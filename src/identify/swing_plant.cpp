@@ -361,34 +361,27 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
     s.likelihoodResidual.push_back(hip);
   }
   s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
-  // Covariance of the parameters from the Jacobian at the solution (Ceres), s^2 (J'J)^+.
+  // Every free parameter: its standard error (from the fit's covariance, s^2 (J'J)^+), its
+  // name for the confound check, and a note if it sits on its physical bound. The
+  // per-record poses after the slots are nuisance parameters and left out.
+  s.correlation = lm.correlation().topLeftCorner(g, g);
   for (std::size_t k = 0; k < slots.size(); ++k) {
     const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
     if (!slots[k].effect) {
       s.baseParameters.push_back({"knee_model_scale", fitted.kneeModelScale, se});
+      s.parameterNames.push_back("knee_model_scale");
       continue;
     }
     auto it = std::find_if(s.effectErrors.begin(), s.effectErrors.end(),
                            [&](const auto& entry) { return entry.first == *slots[k].effect; });
     if (it == s.effectErrors.end()) it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
-    it->second.push_back(se);
-  }
-  const Eigen::MatrixXd correlation = lm.correlation();
-  const Eigen::Index gi = static_cast<Eigen::Index>(slots.size());
-  s.correlation = correlation.topLeftCorner(gi, gi);
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    if (!slots[k].effect) {
-      s.parameterNames.push_back("knee_model_scale");
-      continue;
-    }
     const auto& d = describeEffect(*slots[k].effect);
-    const std::size_t within = static_cast<std::size_t>(
-        std::count_if(slots.begin(), slots.begin() + static_cast<std::ptrdiff_t>(k),
-                      [&](const Slot& o) { return o.effect == slots[k].effect; }));
-    s.parameterNames.push_back(d.name + "." + d.parameters[within]);
+    const std::string name = d.name + "." + d.parameters[it->second.size()];  // the effect's parameters in order
+    it->second.push_back(se);
+    s.parameterNames.push_back(name);
     if (lm.atBound[k])
-      s.notes.push_back(d.name + "." + d.parameters[within] + " sits on its physical bound (" +
-                        fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) + ")");
+      s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
+                        ")");
   }
   for (const auto& r : validate_) s.validationRmse.push_back(kneeRmse(r, fitPose(base_, fitted, r, tolerance_).prediction));
   return s;

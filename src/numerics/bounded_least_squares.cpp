@@ -52,6 +52,17 @@ class ScaledResiduals {
   Eigen::Index m_;
 };
 
+// The residuals as a Ceres cost with a numeric Jacobian by `Method` (forward or central).
+template <ceres::NumericDiffMethodType Method>
+ceres::CostFunction* makeNumericCost(const ResidualFunction& f, const std::vector<BoundedParameter>& ps, Eigen::Index m,
+                                     const ceres::NumericDiffOptions& diff) {
+  auto* c = new ceres::DynamicNumericDiffCostFunction<ScaledResiduals, Method>(new ScaledResiduals(f, ps, m),
+                                                                               ceres::TAKE_OWNERSHIP, diff);
+  c->AddParameterBlock(static_cast<int>(ps.size()));
+  c->SetNumResiduals(static_cast<int>(m));
+  return c;
+}
+
 }  // namespace
 
 Eigen::MatrixXd BoundedFitResult::correlation() const {
@@ -83,20 +94,8 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
   ceres::Problem problem(problemOptions);
   ceres::NumericDiffOptions diff;
   diff.relative_step_size = settings.differenceStep;
-  ceres::CostFunction* cost = nullptr;
-  if (settings.centralDifferences) {
-    auto* c = new ceres::DynamicNumericDiffCostFunction<ScaledResiduals, ceres::CENTRAL>(
-        new ScaledResiduals(f, parameters, m), ceres::TAKE_OWNERSHIP, diff);
-    c->AddParameterBlock(static_cast<int>(n));
-    c->SetNumResiduals(static_cast<int>(m));
-    cost = c;
-  } else {
-    auto* c = new ceres::DynamicNumericDiffCostFunction<ScaledResiduals, ceres::FORWARD>(
-        new ScaledResiduals(f, parameters, m), ceres::TAKE_OWNERSHIP, diff);
-    c->AddParameterBlock(static_cast<int>(n));
-    c->SetNumResiduals(static_cast<int>(m));
-    cost = c;
-  }
+  ceres::CostFunction* cost = settings.centralDifferences ? makeNumericCost<ceres::CENTRAL>(f, parameters, m, diff)
+                                                          : makeNumericCost<ceres::FORWARD>(f, parameters, m, diff);
   problem.AddResidualBlock(cost, nullptr, u.data());
   for (std::size_t k = 0; k < n; ++k) {
     if (std::isfinite(lo[k])) problem.SetParameterLowerBound(u.data(), static_cast<int>(k), lo[k]);
@@ -115,8 +114,6 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
   ceres::Solve(options, &problem, &summary);
 
   out.x = toValues(parameters, u.data());
-  out.residual = f(out.x);
-  out.cost = out.residual.squaredNorm();
   out.iterations = static_cast<int>(summary.iterations.size()) - 1;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   if (!out.converged) out.stopReason = summary.message;
@@ -129,38 +126,42 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   out.covariance = Eigen::MatrixXd::Constant(ni, ni, std::numeric_limits<double>::quiet_NaN());
   out.standardErrors = Eigen::VectorXd::Constant(ni, std::numeric_limits<double>::quiet_NaN());
-  if (settings.computeCovariance && m > ni) {
-    // The Jacobian at the solution from Ceres (the same numeric differences as the fit),
-    // then s^2 (J'J)^+ by SVD here (pseudo-inverse: a direction the data do not fix drops out). (ceres::Covariance's DENSE_SVD was
-    // not used: Debian's libceres and our Eigen instantiate its BDCSVD differently, which
-    // AddressSanitizer reports as a mismatched free.)
-    ceres::CRSMatrix crs;
-    double costHalf = 0;
-    ceres::Problem::EvaluateOptions eo;
-    eo.num_threads = 1;
-    if (problem.Evaluate(eo, &costHalf, nullptr, nullptr, &crs)) {
-      Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, ni);
-      for (int r = 0; r < crs.num_rows; ++r)
-        for (int k = crs.rows[static_cast<std::size_t>(r)]; k < crs.rows[static_cast<std::size_t>(r) + 1]; ++k)
-          J(r, crs.cols[static_cast<std::size_t>(k)]) = crs.values[static_cast<std::size_t>(k)];
-      Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
-      const Eigen::VectorXd sv = svd.singularValues();
-      const double cutoff = 1e-12 * (sv.size() > 0 ? sv(0) : 0.0);
-      Eigen::MatrixXd cu = Eigen::MatrixXd::Zero(ni, ni);
-      for (Eigen::Index k = 0; k < sv.size(); ++k)
-        if (sv(k) > cutoff) cu += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
-      {
-        const double s2 = out.cost / static_cast<double>(m - ni);
-        for (Eigen::Index i = 0; i < ni; ++i) {
-          const double di = scaledDerivative(parameters[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
-          for (Eigen::Index j = 0; j < ni; ++j) {
-            const double dj = scaledDerivative(parameters[static_cast<std::size_t>(j)], u[static_cast<std::size_t>(j)]);
-            out.covariance(i, j) = s2 * di * dj * cu(i, j);
-          }
-        }
-        for (Eigen::Index i = 0; i < ni; ++i) out.standardErrors[i] = std::sqrt(std::max(0.0, out.covariance(i, i)));
+  // The residual at the solution and, for the covariance, the Jacobian there: one Ceres
+  // evaluation gives both (the same numeric differences as the fit). s^2 (J'J)^+ is then
+  // formed by SVD here (pseudo-inverse: a direction the data do not fix drops out), not by
+  // ceres::Covariance, whose DENSE_SVD Debian's libceres and our Eigen instantiate
+  // differently (AddressSanitizer reports a mismatched free).
+  std::vector<double> residual;
+  ceres::CRSMatrix crs;
+  ceres::Problem::EvaluateOptions eo;
+  eo.num_threads = 1;
+  const bool withJacobian = settings.computeCovariance && m > ni;
+  if (problem.Evaluate(eo, nullptr, &residual, nullptr, withJacobian ? &crs : nullptr)) {
+    out.residual = Eigen::Map<const Eigen::VectorXd>(residual.data(), static_cast<Eigen::Index>(residual.size()));
+  } else {
+    out.residual = f(out.x);  // throws the model's own reason it cannot run there
+  }
+  out.cost = out.residual.squaredNorm();
+  if (withJacobian && crs.num_rows == m) {
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, ni);
+    for (int r = 0; r < crs.num_rows; ++r)
+      for (int k = crs.rows[static_cast<std::size_t>(r)]; k < crs.rows[static_cast<std::size_t>(r) + 1]; ++k)
+        J(r, crs.cols[static_cast<std::size_t>(k)]) = crs.values[static_cast<std::size_t>(k)];
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
+    const Eigen::VectorXd sv = svd.singularValues();
+    const double cutoff = 1e-12 * (sv.size() > 0 ? sv(0) : 0.0);
+    Eigen::MatrixXd cu = Eigen::MatrixXd::Zero(ni, ni);
+    for (Eigen::Index k = 0; k < sv.size(); ++k)
+      if (sv(k) > cutoff) cu += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
+    const double s2 = out.cost / static_cast<double>(m - ni);
+    for (Eigen::Index i = 0; i < ni; ++i) {
+      const double di = scaledDerivative(parameters[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
+      for (Eigen::Index j = 0; j < ni; ++j) {
+        const double dj = scaledDerivative(parameters[static_cast<std::size_t>(j)], u[static_cast<std::size_t>(j)]);
+        out.covariance(i, j) = s2 * di * dj * cu(i, j);
       }
     }
+    for (Eigen::Index i = 0; i < ni; ++i) out.standardErrors[i] = std::sqrt(std::max(0.0, out.covariance(i, i)));
   }
   return out;
 }
