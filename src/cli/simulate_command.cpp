@@ -49,12 +49,28 @@ int runSimulate(const SimulateArguments& a) {
   const KneeModel model = loadKneeModel(a.knee.value_or(p.kneeModelPath));
   const KneeLawSum knee = makeKneeLaw(p, model);
   setup.knee = &knee;
+  options.trackImpactEnergy = true;  // one swing: the bookkeeping is cheap here
   const SwingResult r = simulateSwing(setup, options);
 
   std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
   std::printf("  swing time          %.4f s\n", r.swingTime);
   std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion * kRadToDeg, r.peakKneeFlexionTime);
-  std::printf("  bounce              %s\n", r.bounce ? "yes (knee left the zone of stability again)" : "no");
+  if (r.bounce)
+    std::printf("  bounce              yes: the knee left the zone of stability %d time%s, up to %.1f deg\n", r.bounces,
+                r.bounces == 1 ? "" : "s", r.bounceHeight * kRadToDeg);
+  else
+    std::printf("  bounce              no\n");
+  for (std::size_t i = 0; i < r.impacts.size(); ++i) {
+    const StopImpact& im = r.impacts[i];
+    std::printf("  stop impact %-2zu     at %.4f s: %.2f rad/s in, %.2f rad/s out (restitution %.2f), %.2f deg past the stop, "
+                "rebound to %.1f deg\n",
+                i + 1, im.time, im.impactRate, im.reboundRate, im.restitution, im.maxPenetration * kRadToDeg,
+                im.reboundHeight * kRadToDeg);
+    if (im.work.empty()) continue;
+    std::printf("                      kinetic energy at contact %.3f J; work to the top of the rebound:", im.kineticEnergy);
+    for (const auto& w : im.work) std::printf(" %s %+.3f J;", w.cause.c_str(), w.work);
+    std::printf("\n");
+  }
   std::printf("  min toe clearance   %.3f m%s\n", r.minToeClearance, r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
   std::printf("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
               options.accuracy, r.realizations);

@@ -171,7 +171,8 @@ void serialize(A& a, JointStopParams& s) {
   a.optionalAngle("engage_flexion_deg", s.lower,
                   [](double v) { return v >= -30 && v <= 30 ? "" : "expected an angle near full extension, -30 to 30 deg"; });
   a.optionalNumber("stiffness_Nm_per_rad1p5", s.stiffness, mustBePositive);
-  a.optionalNumber("dissipation_s_per_rad", s.dissipation, mustBeNonNegative);
+  a.optionalNumber("restitution", s.restitution,
+                   [](double v) { return v >= 0 && v <= 1 ? "" : "expected a coefficient of restitution from 0 to 1"; });
 }
 
 template <class A>

@@ -71,8 +71,8 @@ void serialize(A& a, SwingEndRule& e) {
   // A swing lasts well under a second; a limit of hours would make a stuck run look hung.
   a.optionalNumber("time_limit_s", e.timeLimit,
                    [](double v) { return v > 0 && v <= 10 ? "" : "expected a time limit from 0 to 10 s"; });
-  a.optionalNumber("bounce_window_s", e.bounceWindow,
-                   [](double v) { return v >= 0 && v <= 2 ? "" : "expected a window from 0 to 2 s"; });
+  a.optionalNumber("settle_dwell_s", e.settleDwell,
+                   [](double v) { return v >= 0 && v <= 2 ? "" : "expected a dwell from 0 to 2 s"; });
 }
 
 template <class A>

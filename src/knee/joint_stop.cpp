@@ -9,20 +9,20 @@ namespace swingsim {
 JointStop::JointStop(JointStopParams params) : p_(params) {
   if (!(p_.upper > p_.lower)) throw std::invalid_argument("joint stop: upper limit must exceed lower limit");
   if (!(p_.stiffness > 0)) throw std::invalid_argument("joint stop: stiffness must be positive");
-  if (!(p_.dissipation >= 0)) throw std::invalid_argument("joint stop: dissipation must not be negative");
+  if (!(p_.restitution >= 0 && p_.restitution <= 1))
+    throw std::invalid_argument("joint stop: restitution must be in [0, 1]");
+  if (!(p_.switchRate > 0)) throw std::invalid_argument("joint stop: switch rate must be positive");
+}
+
+double JointStop::calcPushingMoment(double p, double pdot) const {
+  const double unloading = 0.5 * (1.0 - std::tanh(pdot / p_.switchRate));
+  const double e2 = p_.restitution * p_.restitution;
+  return p_.stiffness * p * std::sqrt(p) * (1.0 - (1.0 - e2) * unloading);
 }
 
 double JointStop::calcJointMoment(double angle, double rate) const {
-  if (angle < p_.lower) {
-    const double p = p_.lower - angle;
-    const double pdot = -rate;
-    return std::max(0.0, p_.stiffness * p * std::sqrt(p) * (1.0 + 1.5 * p_.dissipation * pdot));
-  }
-  if (angle > p_.upper) {
-    const double p = angle - p_.upper;
-    const double pdot = rate;
-    return -std::max(0.0, p_.stiffness * p * std::sqrt(p) * (1.0 + 1.5 * p_.dissipation * pdot));
-  }
+  if (angle < p_.lower) return calcPushingMoment(p_.lower - angle, -rate);
+  if (angle > p_.upper) return -calcPushingMoment(angle - p_.upper, rate);
   return 0.0;
 }
 

@@ -13,7 +13,14 @@ KneeForceElement::KneeForceElement(const GeneralForceSubsystem& forces, const Si
       subsystem_(forces.getMySubsystemIndex()),
       shank_(shank.getMobilizedBodyIndex()),
       law_(law.clone()),
+      sum_(dynamic_cast<const KneeLawSum*>(law_.get())),
       trackWork_(trackWork) {}
+
+int KneeForceElement::numWorkParts() const { return sum_ ? static_cast<int>(sum_->size()) : 1; }
+
+std::string KneeForceElement::getWorkPartName(int i) const {
+  return sum_ ? sum_->part(static_cast<std::size_t>(i)).name() : law_->name();
+}
 
 KneeKinematics KneeForceElement::kinematics(const State& s) const {
   const MobilizedBody& shank = matter_.getMobilizedBody(shank_);
@@ -21,7 +28,7 @@ KneeKinematics KneeForceElement::kinematics(const State& s) const {
 }
 
 void KneeForceElement::realizeTopology(State& s) const {
-  const int nz = law_->numStates() + (trackWork_ ? 1 : 0);
+  const int nz = law_->numStates() + (trackWork_ ? numWorkParts() : 0);
   if (nz == 0) return;
   Vector z(nz, 0.0);
   if (law_->numStates() > 0) law_->initialStates(&z[0]);
@@ -37,9 +44,15 @@ double KneeForceElement::calcKneeMoment(const State& s) const {
   return law_->calcMoment(kinematics(s), getLawStates(s));
 }
 
-double KneeForceElement::getWork(const State& s) const {
+double KneeForceElement::getPartWork(const State& s, int i) const {
   if (!trackWork_) throw std::logic_error("KneeForceElement: built without work tracking");
-  return s.getZ(subsystem_)[firstZ_ + law_->numStates()];
+  return s.getZ(subsystem_)[firstZ_ + law_->numStates() + i];
+}
+
+double KneeForceElement::getWork(const State& s) const {
+  double work = 0;
+  for (int i = 0; i < numWorkParts(); ++i) work += getPartWork(s, i);
+  return work;
 }
 
 void KneeForceElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&,
@@ -54,7 +67,14 @@ void KneeForceElement::realizeDynamics(const State& s) const {
   Vector& zdot = s.updZDot(subsystem_);
   const int n = law_->numStates();
   if (n > 0) law_->calcStateDerivatives(knee, z, &zdot[firstZ_]);
-  if (trackWork_) zdot[firstZ_ + n] = law_->calcMoment(knee, z) * knee.flexionRate;  // power, W
+  if (!trackWork_) return;
+  // Power of each part, W.
+  if (sum_ == nullptr) {
+    zdot[firstZ_ + n] = law_->calcMoment(knee, z) * knee.flexionRate;
+    return;
+  }
+  for (std::size_t i = 0; i < sum_->size(); ++i)
+    zdot[firstZ_ + n + static_cast<int>(i)] = sum_->calcPartMoment(i, knee, z) * knee.flexionRate;
 }
 
 HipDriveElement::HipDriveElement(const GeneralForceSubsystem& forces, const SimbodyMatterSubsystem& matter,

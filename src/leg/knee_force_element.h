@@ -30,6 +30,13 @@ class KneeForceElement : public SimTK::Force::Custom::Implementation {
   /// Work done by the knee moment on the leg since toe-off, J (negative: dissipated).
   /// Throws std::logic_error unless built with trackWork.
   double getWork(const SimTK::State& s) const;
+  /// Parts whose work is integrated separately: the parts of a KneeLawSum (resisting law,
+  /// friction, stop, ...), else 1 (the whole law).
+  int numWorkParts() const;
+  /// Name of work part i (the law's name()).
+  std::string getWorkPartName(int i) const;
+  /// Work done by part i since toe-off, J. Throws std::logic_error unless built with trackWork.
+  double getPartWork(const SimTK::State& s, int i) const;
   /// The law's own states (e.g. S2), numStates() values.
   const double* getLawStates(const SimTK::State& s) const;
   const KneeLaw& law() const { return *law_; }
@@ -40,8 +47,9 @@ class KneeForceElement : public SimTK::Force::Custom::Implementation {
   SimTK::SubsystemIndex subsystem_;
   SimTK::MobilizedBodyIndex shank_;
   std::unique_ptr<KneeLaw> law_;
+  const KneeLawSum* sum_ = nullptr;  // law_ as a sum of parts, or null
   bool trackWork_;
-  mutable SimTK::ZIndex firstZ_;  // law states, then work; set once at topology
+  mutable SimTK::ZIndex firstZ_;  // law states, then the work of each part; set once at topology
 };
 
 /// Hip moment on the hip pin: the time profile plus the smooth range-of-motion stop.

@@ -52,6 +52,11 @@ class LegModel {
   /// Work done on the leg by the knee moment and by the hip moment since toe-off, J.
   double getKneeWork(const SimTK::State& s) const { return knee_->getWork(s); }
   double getHipWork(const SimTK::State& s) const { return hipDrive_->getWork(s); }
+  /// The knee's work split by law part (resisting law, friction, stop, ...): how many parts,
+  /// each part's name and its work since toe-off, J. Need trackWork.
+  int numKneeWorkParts() const { return knee_->numWorkParts(); }
+  std::string getKneeWorkPartName(int i) const { return knee_->getWorkPartName(i); }
+  double getKneePartWork(const SimTK::State& s, int i) const { return knee_->getPartWork(s, i); }
 
   /// Landmark positions (needs Position stage).
   LegPose calcPose(const SimTK::State& s) const;

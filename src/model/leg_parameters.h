@@ -47,7 +47,12 @@ struct SwingEndRule {
   double thighTargetFlexion = 20 * kDegToRad;  ///< rad
   double zoneOfStability = 6 * kDegToRad;      ///< rad (Burkett Fig. 3: < 6 deg)
   double timeLimit = 1.5;                      ///< s: a swing not ended by then is an error
-  double bounceWindow = 0.15;                  ///< s simulated after the end to see a bounce
+  /// s the knee must stay inside the zone for the swing to have ended (the settle rule):
+  /// the swing ends at the last entry into the zone that is followed by this long inside it,
+  /// so a bounce out of the zone lengthens the swing. An assumption (no source defines it):
+  /// longer than a rebound off the stop and back out of the zone takes (about 0.1 s at
+  /// 2-3 rad/s), plausible range 0.10-0.20 s (docs/uncertainty.md).
+  double settleDwell = 0.15;
 };
 
 /// Physiological hip range of motion (smooth stop outside it).

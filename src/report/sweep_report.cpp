@@ -433,8 +433,8 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
           (p.footComFrom == FootComFrom::kToe ? "toe" : "ankle") + ".\n";
     md += "- Swing-end rule: thigh at " + fmt("%.0f", p.swingEnd.thighTargetFlexion * kRadToDeg) +
           " deg flexion AND knee back below " + fmt("%.0f", p.swingEnd.zoneOfStability * kRadToDeg) +
-          " deg after its peak, in whichever order; a bounce is the knee leaving the zone within " +
-          fmt("%.2f", p.swingEnd.bounceWindow) + " s after entering it.\n";
+          " deg after its peak, in whichever order, and staying there for " + fmt("%.2f", p.swingEnd.settleDwell) +
+          " s (the settle rule: a bounce out of the zone lengthens the swing to the next entry).\n";
     md += "- Toe-off: hip " + fmt("%.0f", p.initial.hipFlexion * kRadToDeg) + " deg, knee " +
           fmt("%.0f", p.initial.kneeFlexion * kRadToDeg) + " deg, zero velocities (Burkett). Knee friction Tc below 4 deg; "
           "Hunt-Crossley hyperextension stop at full extension.\n";

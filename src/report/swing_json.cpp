@@ -5,12 +5,28 @@ namespace swingsim {
 Json makeSwingResultJson(const std::string& participant, double lowering, const SwingResult& r) {
   Json events = Json::array();
   for (const auto& e : r.events) events.push_back({{"name", e.name}, {"time_s", e.time}});
+  Json impacts = Json::array();
+  for (const auto& im : r.impacts) {
+    Json work = Json::object();
+    for (const auto& w : im.work) work[w.cause] = w.work;
+    impacts.push_back({{"time_s", im.time},
+                       {"impact_rate_rad_s", im.impactRate},
+                       {"rebound_rate_rad_s", im.reboundRate},
+                       {"restitution", im.restitution},
+                       {"max_penetration_deg", im.maxPenetration * kRadToDeg},
+                       {"rebound_height_deg", im.reboundHeight * kRadToDeg},
+                       {"kinetic_energy_at_contact_J", im.kineticEnergy},
+                       {"work_to_rebound_top_J", work}});
+  }
   return {{"participant", participant},
           {"lowering_m", lowering},
           {"swing_time_s", r.swingTime},
           {"peak_knee_flexion_deg", r.peakKneeFlexion * kRadToDeg},
           {"peak_knee_flexion_time_s", r.peakKneeFlexionTime},
           {"bounce", r.bounce},
+          {"bounces", r.bounces},
+          {"bounce_height_deg", r.bounceHeight * kRadToDeg},
+          {"stop_impacts", impacts},
           {"min_toe_clearance_m", r.minToeClearance},
           {"events", events}};
 }

@@ -8,7 +8,10 @@
 namespace swingsim {
 
 /// Writes {"participant", "lowering_m", "swing_time_s", "peak_knee_flexion_deg",
-/// "peak_knee_flexion_time_s", "bounce", "min_toe_clearance_m", "events": [{name, time_s}]}.
+/// "peak_knee_flexion_time_s", "bounce", "bounces", "bounce_height_deg", "stop_impacts":
+/// [{time_s, impact_rate_rad_s, rebound_rate_rad_s, restitution, max_penetration_deg,
+/// rebound_height_deg, kinetic_energy_at_contact_J, work_to_rebound_top_J: {cause: J}}],
+/// "min_toe_clearance_m", "events": [{name, time_s}]}.
 Json makeSwingResultJson(const std::string& participant, double lowering, const SwingResult& r);
 
 }  // namespace swingsim

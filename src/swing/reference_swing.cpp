@@ -128,7 +128,7 @@ class ReferenceSwing::Equations final : public OdeSystem {
 
  private:
   static JointStop makeHipStop(const HipRange& range) {
-    JointStopParams p;  // stiffness and dissipation: the defaults, as in LegModel
+    JointStopParams p;  // stiffness and restitution: the defaults, as in LegModel
     p.lower = range.minFlexion;
     p.upper = range.maxFlexion;
     return JointStop(p);

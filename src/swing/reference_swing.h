@@ -35,7 +35,7 @@ struct ReferenceSwingEnd {
 class ReferenceSwing {
  public:
   /// Copies everything it needs (the knee law is cloned). The hip range becomes the same
-  /// Hunt-Crossley stop LegModel applies (JointStopParams defaults, lower = minFlexion,
+  /// hip stop LegModel applies (JointStopParams defaults, lower = minFlexion,
   /// upper = maxFlexion).
   ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
                  const HipRange& hipRange);

@@ -3,6 +3,7 @@
 #include <Simbody.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -26,37 +27,55 @@ namespace {
 // What the swing events have shown so far, and what each event means for the swing end.
 // Both ways of finding the events (Simbody's event handlers on the plain path, our own
 // crossing search between step ends on the fast path) report them here, so the rule is
-// written once.
+// written once. The settle rule: the swing ends at the last entry into the zone (with the
+// thigh at its target) that is followed by `dwell` s inside it; the knee leaving the zone
+// before then is a bounce, and the end waits for the next entry.
 struct SwingLog {
+  explicit SwingLog(double settleDwell) : dwell(settleDwell) {}
+  double dwell;
   std::vector<SwingEvent> events;
   bool thighReached = false;
   bool peakSeen = false;
   bool kneeInZone = false;   // inside the zone after the peak
   bool enteredOnce = false;
+  bool candidate = false;    // in the zone with the thigh at target: the end, if the knee stays
+  double candidateTime = 0;
   bool ended = false;
-  bool bounce = false;
+  int bounces = 0;
+  double bounceHeight = 0;   // rad: highest knee flexion after leaving the zone
   double endTime = 0;
   double peak = -1e9, peakTime = 0;
 
   void add(const std::string& name, double t) { events.push_back({name, t}); }
-  void checkEnd(double t) {
-    if (!ended && thighReached && kneeInZone) {
+  // The end is decided once the knee has stayed in the zone for the dwell; every handler
+  // first settles what time t has already decided.
+  void confirmUntil(double t) {
+    if (!ended && candidate && t >= candidateTime + dwell) {
       ended = true;
-      endTime = t;
-      add("swing_end", t);
+      endTime = candidateTime;
+      add("swing_end", candidateTime);
+    }
+  }
+  void checkCandidate(double t) {
+    if (!ended && !candidate && thighReached && kneeInZone) {
+      candidate = true;
+      candidateTime = t;
     }
   }
   // The thigh rose through its target flexion.
   void onThighAtTarget(double t) {
+    confirmUntil(t);
     if (thighReached) return;
     thighReached = true;
     add("thigh_at_target", t);
-    checkEnd(t);
+    checkCandidate(t);
   }
   // The knee flexion rate fell through zero with the knee at `knee` (rad).
   void onKneePeak(double t, double knee, double zone) {
+    confirmUntil(t);
     if (knee <= zone || ended) return;  // wiggles inside the zone are not the swing's peak
-    add("knee_peak_flexion", t);
+    add(enteredOnce ? "knee_bounce_peak" : "knee_peak_flexion", t);
+    if (enteredOnce) bounceHeight = std::max(bounceHeight, knee);
     peakSeen = true;
     if (knee > peak) {
       peak = knee;
@@ -65,16 +84,19 @@ struct SwingLog {
   }
   // The knee flexion crossed the zone boundary (entering: falling below it).
   void onKneeZone(double t, bool entering) {
+    confirmUntil(t);
+    if (ended) return;
     if (entering) {
       if (!peakSeen) return;  // still on the way up from toe-off
       add("knee_enters_zone", t);
       kneeInZone = true;
       enteredOnce = true;
-      checkEnd(t);
+      checkCandidate(t);
     } else if (enteredOnce) {
       add("knee_leaves_zone", t);
       kneeInZone = false;
-      bounce = true;
+      candidate = false;
+      ++bounces;
     }
   }
 };
@@ -166,18 +188,33 @@ double calcHermite(double y0, double d0, double y1, double d1, double h, double 
   return h00 * y0 + h10 * h * d0 + h01 * y1 + h11 * h * d1;
 }
 
-// Joint state at the end of an integrator step: angles, rates, accelerations, moments.
+// Work bookkeeping at a step end: each knee law part's work, then the hip's, J.
+constexpr int kMaxWorkCauses = 12;
+
+// Joint state at the end of an integrator step: angles, rates, accelerations, moments, and
+// with energy tracking the kinetic energy and the work done so far.
 struct StepEnd {
   double t, hip, knee, hipRate, kneeRate, hipAcc, kneeAcc, hipMoment, kneeMoment;
+  double kinetic = 0;
+  int numWork = 0;
+  std::array<double, kMaxWorkCauses> work{};
 };
 
-StepEnd readStepEnd(const LegModel& leg, const State& s) {
+StepEnd readStepEnd(const LegModel& leg, const State& s, bool trackEnergy) {
   const MultibodySystem& system = leg.getSystem();
   system.realize(s, Stage::Acceleration);
   const Vector& udot = s.getUDot();
   // Mobility order: thigh (hip) then shank (knee); the welds have none.
-  return {s.getTime(), leg.getHipFlexion(s), leg.getKneeFlexion(s), leg.getHipFlexionRate(s),
-          leg.getKneeFlexionRate(s), udot[0], udot[1], leg.calcHipMoment(s), leg.calcKneeMoment(s)};
+  StepEnd e{s.getTime(), leg.getHipFlexion(s), leg.getKneeFlexion(s), leg.getHipFlexionRate(s),
+            leg.getKneeFlexionRate(s), udot[0], udot[1], leg.calcHipMoment(s), leg.calcKneeMoment(s)};
+  if (trackEnergy) {
+    e.kinetic = system.calcKineticEnergy(s);
+    const int parts = std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1);
+    for (int i = 0; i < parts; ++i) e.work[static_cast<std::size_t>(i)] = leg.getKneePartWork(s, i);
+    e.work[static_cast<std::size_t>(parts)] = leg.getHipWork(s);
+    e.numWork = parts + 1;
+  }
+  return e;
 }
 
 // One output sample: joint state, moments, and the landmarks by planar kinematics.
@@ -250,8 +287,8 @@ double findRoot(const F& f, double h, double lo = 0, double hi = 1) {
 
 // The fast path's events: sign changes of the witnesses between two step ends, each
 // crossing found on the Hermite interpolant of the step (no realization, no State copy),
-// handled in time order. Events after the bounce window (rule.bounceWindow past the swing
-// end) are left out. A thigh or knee angle that crosses its threshold and comes back
+// handled in time order. Events after the swing end is decided (the settle dwell passed) are
+// left out. A thigh or knee angle that crosses its threshold and comes back
 // within one step (a thigh grazing its target at peak flexion) has the same witness sign
 // at both step ends; where the interpolated rate changes sign inside the step, the angle
 // at that extremum is checked too, so both crossings are found (Simbody's event handlers
@@ -304,7 +341,8 @@ void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& ru
     for (int j = i; j > 0 && crossings[j].s < crossings[j - 1].s; --j) std::swap(crossings[j], crossings[j - 1]);
   for (int i = 0; i < count; ++i) {
     const double t = a.t + crossings[i].s * h;
-    if (log.ended && t > log.endTime + rule.bounceWindow) return;
+    log.confirmUntil(t);
+    if (log.ended) return;
     switch (crossings[i].kind) {
       case kThigh: log.onThighAtTarget(t); break;
       case kPeak: log.onKneePeak(t, kneeAt(crossings[i].s), zone); break;
@@ -313,6 +351,92 @@ void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& ru
     }
   }
 }
+
+// The knee's hyperextension stop inside a knee law (a part of a sum, or the law), or null.
+const JointStop* findKneeStop(const KneeLaw& law) {
+  if (const auto* stop = dynamic_cast<const JointStop*>(&law)) return stop;
+  if (const auto* sum = dynamic_cast<const KneeLawSum*>(&law)) {
+    for (std::size_t i = 0; i < sum->size(); ++i)
+      if (const JointStop* stop = findKneeStop(sum->part(i))) return stop;
+  }
+  return nullptr;
+}
+
+// Contacts of the knee with its hyperextension stop, from the step ends and their Hermite
+// interpolants (as the fast path's events). It only reports; the swing end does not use it.
+class StopImpactTracker {
+ public:
+  static constexpr std::size_t kMaxImpacts = 20;  // a knee resting on its stop could chatter
+
+  StopImpactTracker(double engage, std::vector<std::string> causes) : engage_(engage), causes_(std::move(causes)) {}
+
+  void onStep(const StepEnd& a, const StepEnd& b) {
+    const double h = b.t - a.t;
+    if (!(h > 0)) return;
+    auto kneeAt = [&](double s) { return calcHermite(a.knee, a.kneeRate, b.knee, b.kneeRate, h, s); };
+    auto rateAt = [&](double s) { return calcHermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, h, s); };
+    auto witness = [&](double s) { return kneeAt(s) - engage_; };
+    if (phase_ == kRebound && a.kneeRate > 0 && b.kneeRate <= 0) {
+      const double top = findRoot(rateAt, h);
+      closeRebound(a, b, top, kneeAt(top));
+    }
+    if (phase_ != kContact && a.knee >= engage_ && b.knee < engage_) {
+      if (phase_ == kRebound) closeRebound(a, a, 0, a.knee);  // back on the stop before a top
+      if (impacts_.size() >= kMaxImpacts) return;
+      const double s0 = findRoot(witness, h);
+      StopImpact impact;
+      impact.time = a.t + s0 * h;
+      impact.impactRate = -rateAt(s0);
+      impact.kineticEnergy = lerp(a.kinetic, b.kinetic, s0);
+      impacts_.push_back(impact);
+      start_ = snapshot(a, b, s0);
+      phase_ = kContact;
+    }
+    if (phase_ == kContact) {
+      StopImpact& impact = impacts_.back();
+      impact.maxPenetration = std::max(impact.maxPenetration, engage_ - b.knee);
+      if (a.kneeRate < 0 && b.kneeRate > 0) impact.maxPenetration = std::max(impact.maxPenetration, engage_ - kneeAt(findRoot(rateAt, h)));
+      if (a.knee < engage_ && b.knee >= engage_) {
+        const double s1 = findRoot(witness, h);
+        impact.reboundRate = std::max(0.0, rateAt(s1));
+        impact.restitution = impact.impactRate > 0 ? impact.reboundRate / impact.impactRate : 0;
+        phase_ = kRebound;
+      }
+    }
+  }
+
+  // The impacts, the last one closed at the final step end `last`.
+  std::vector<StopImpact> finish(const StepEnd& last) {
+    if (phase_ == kContact || phase_ == kRebound) closeRebound(last, last, 0, phase_ == kRebound ? last.knee : engage_);
+    return impacts_;
+  }
+
+ private:
+  enum Phase { kFree, kContact, kRebound };
+  using Snapshot = std::array<double, kMaxWorkCauses>;
+  static double lerp(double x0, double x1, double s) { return x0 + s * (x1 - x0); }
+  static Snapshot snapshot(const StepEnd& a, const StepEnd& b, double s) {
+    Snapshot w{};
+    for (int i = 0; i < b.numWork; ++i) w[static_cast<std::size_t>(i)] = lerp(a.work[static_cast<std::size_t>(i)], b.work[static_cast<std::size_t>(i)], s);
+    return w;
+  }
+  void closeRebound(const StepEnd& a, const StepEnd& b, double s, double height) {
+    StopImpact& impact = impacts_.back();
+    impact.reboundHeight = std::max(height, engage_);
+    if (b.numWork > 0) {
+      const Snapshot end = snapshot(a, b, s);
+      for (int i = 0; i < b.numWork && static_cast<std::size_t>(i) < causes_.size(); ++i)
+        impact.work.push_back({causes_[static_cast<std::size_t>(i)], end[static_cast<std::size_t>(i)] - start_[static_cast<std::size_t>(i)]});
+    }
+    phase_ = kFree;
+  }
+
+  double engage_;
+  std::vector<std::string> causes_;
+  Phase phase_ = kFree;
+  Snapshot start_{};
+  std::vector<StopImpact> impacts_;
+};
 
 std::unique_ptr<Integrator> makeIntegrator(SwingIntegrator kind, const MultibodySystem& system) {
   switch (kind) {
@@ -334,8 +458,6 @@ class SwingStepper {
   virtual bool step(double tLimit) = 0;
   /// The state at the last step end, realized to Acceleration.
   virtual const State& getState() = 0;
-  /// Restarts at the current state with a new accuracy (the bounce window).
-  virtual void restart(double accuracy) = 0;
   virtual int getNumSteps() const = 0;
   virtual int getNumRealizations() const = 0;
 };
@@ -346,7 +468,7 @@ class SimbodyStepper final : public SwingStepper {
       : system_(system), integrator_(makeIntegrator(options.integrator, system)) {
     integrator_->setAccuracy(options.accuracy);
     // Return after every internal step: the loop stops as soon as the swing end plus the
-    // bounce window has passed, finds the fast path's events and samples the output by
+    // settle dwell has passed, finds the fast path's events and samples the output by
     // interpolation between steps.
     integrator_->setReturnEveryInternalStep(true);
     integrator_->setFinalTime(tLimit);
@@ -367,24 +489,13 @@ class SimbodyStepper final : public SwingStepper {
     system_.realize(s, Stage::Acceleration);
     return s;
   }
-  void restart(double accuracy) override {
-    // Simbody reads the accuracy only when it initializes.
-    const int steps = getNumSteps(), realizations = getNumRealizations();
-    integrator_->setAccuracy(accuracy);
-    const State restartState = integrator_->getState();
-    integrator_->initialize(restartState);
-    // Simbody 3.7 resets the step count on initialize but not the realization count.
-    if (integrator_->getNumStepsTaken() < steps) stepsBefore_ = steps;
-    if (integrator_->getNumRealizations() < realizations) realizationsBefore_ = realizations;
-  }
-  int getNumSteps() const override { return stepsBefore_ + integrator_->getNumStepsTaken(); }
-  int getNumRealizations() const override { return realizationsBefore_ + integrator_->getNumRealizations(); }
+  int getNumSteps() const override { return integrator_->getNumStepsTaken(); }
+  int getNumRealizations() const override { return integrator_->getNumRealizations(); }
 
  private:
   const MultibodySystem& system_;
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<TimeStepper> timeStepper_;
-  int stepsBefore_ = 0, realizationsBefore_ = 0;
 };
 
 // Dormand-Prince 5(4) (dormand_prince.h) on the Simbody leg's (q, u, z): six realizations
@@ -408,12 +519,7 @@ class DormandPrinceStepper final : public SwingStepper {
     return dp_->getTime() < tLimit;
   }
   const State& getState() override { return ode_.realizeAt(dp_->getTime(), dp_->getState()); }
-  void restart(double accuracy) override {
-    stepsBefore_ += static_cast<int>(dp_->getNumSteps());
-    std::copy(dp_->getState(), dp_->getState() + ode_.numStates(), y_.begin());
-    start(dp_->getTime(), accuracy);
-  }
-  int getNumSteps() const override { return stepsBefore_ + static_cast<int>(dp_->getNumSteps()); }
+  int getNumSteps() const override { return static_cast<int>(dp_->getNumSteps()); }
   int getNumRealizations() const override { return static_cast<int>(ode_.getNumRealizations()); }
 
  private:
@@ -428,7 +534,6 @@ class DormandPrinceStepper final : public SwingStepper {
   std::vector<double> y_;
   std::vector<double> breakpoints_;  // s
   std::unique_ptr<DormandPrince> dp_;
-  int stepsBefore_ = 0;
 };
 
 }  // namespace
@@ -498,12 +603,13 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   const Participant& p = setup.participant;
   if (setup.knee == nullptr) throw InputError(p.path + ": no knee model");
   const LegGeometry geometry = calcLegGeometry(p, setup.lowering, setup.added);
-  LegModel leg(geometry, *setup.knee, p.hipMoment, p.hipRange, calcHipHeight(p), /*trackWork=*/false);
+  const bool trackEnergy = options.trackImpactEnergy;
+  LegModel leg(geometry, *setup.knee, p.hipMoment, p.hipRange, calcHipHeight(p), trackEnergy);
 
   if (options.simbodyEvents && options.integrator == SwingIntegrator::kDormandPrince)
     throw std::invalid_argument("simulateSwing: Simbody's event handlers need one of Simbody's integrators");
-  SwingLog log;
   const SwingEndRule& rule = p.swingEnd;
+  SwingLog log(rule.settleDwell);
   MultibodySystem& system = leg.updSystem();
   if (options.simbodyEvents) {
     system.addEventHandler(new ThighTargetHandler(leg, log, options.eventWindow, rule.thighTargetFlexion));
@@ -525,10 +631,19 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   log.add("toe_off", 0.0);
   const double hipHeight = calcHipHeight(p);
   SwingTrajectory& tr = result.trajectory;
-  StepEnd previous = readStepEnd(leg, stepper->getState());
+  StepEnd previous = readStepEnd(leg, stepper->getState(), trackEnergy);
+  std::optional<StopImpactTracker> impacts;
+  if (const JointStop* stop = findKneeStop(*setup.knee)) {
+    std::vector<std::string> causes;
+    if (trackEnergy) {
+      for (int i = 0; i < std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1); ++i) causes.push_back(leg.getKneeWorkPartName(i));
+      causes.push_back("hip drive");
+    }
+    impacts.emplace(stop->params().lower, std::move(causes));
+  }
   double nextSample = 0;
   {
-    // Room for a typical swing plus its bounce window, so samples rarely reallocate.
+    // Room for a typical swing plus its settle dwell, so samples rarely reallocate.
     constexpr double kTypicalDuration = 0.8;  // s
     const std::size_t capacity = static_cast<std::size_t>(std::min(rule.timeLimit, kTypicalDuration) / options.sampleInterval) + 2;
     for (auto* v : {&tr.time, &tr.hipFlexion, &tr.kneeFlexion, &tr.hipFlexionRate, &tr.kneeFlexionRate, &tr.hipMoment,
@@ -540,10 +655,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     nextSample = options.sampleInterval;
   }
 
-  const double stopAfterEnd = rule.bounceWindow;
-  constexpr double kLoosestWindowAccuracy = 1e-3;  // the bounce flag needs the knee to a fraction of a degree
-  const double windowAccuracy = std::min(options.accuracy * options.bounceWindowAccuracyFactor, kLoosestWindowAccuracy);
-  bool windowStarted = false, endCounted = false;
+  double candidateTime = -1;  // the swing end candidate whose realizations were counted
   const auto wallStart = std::chrono::steady_clock::now();
   // What to change when a budget runs out: the same advice for both budgets.
   const auto overBudget = [&](const std::string& what, const State& s) {
@@ -571,12 +683,14 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                        s);
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count() > options.maxWallSeconds)
       throw overBudget(formatNumber(options.maxWallSeconds) + " s of computing (the limit for one swing; a normal swing takes milliseconds)", s);
-    const StepEnd now = readStepEnd(leg, s);
+    const StepEnd now = readStepEnd(leg, s, trackEnergy);
     if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) {
       throw RunError(p.name + ": the simulation diverged " + describeState(leg, s) +
                      " (likely cause: an unphysical input such as a near-zero inertia)");
     }
     if (!options.simbodyEvents) handleStepEvents(previous, now, rule, log);
+    log.confirmUntil(now.t);
+    if (impacts) impacts->onStep(previous, now);
     if (now.t > previous.t) appendSamples(previous, now, nextSample, options.sampleInterval, geometry, hipHeight, tr);
     previous = now;
     // The hip stop is soft (Hunt-Crossley): a thigh far past it means the inputs are wrong,
@@ -588,15 +702,12 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                      deg(p.hipRange.minFlexion) + " to " + deg(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
                      " (likely cause: a hip moment far too large for this leg, or a hip_range that excludes the swing)");
     }
-    if (log.ended && !endCounted) {
-      endCounted = true;
+    if (log.candidate && log.candidateTime != candidateTime) {
+      // The realizations up to the step of the (latest) entry into the zone.
+      candidateTime = log.candidateTime;
       result.realizationsToEnd = stepper->getNumRealizations();
     }
-    if (log.ended && now.t >= log.endTime + stopAfterEnd - 1e-12) break;
-    if (log.ended && !windowStarted && !options.simbodyEvents && windowAccuracy > options.accuracy) {
-      windowStarted = true;
-      stepper->restart(windowAccuracy);
-    }
+    if (log.ended) break;
     if (!log.ended && (now.t >= rule.timeLimit - 1e-12 || !more)) {
       std::string cause;
       if (!log.thighReached)
@@ -604,6 +715,10 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                 formatNumber(rule.thighTargetFlexion * kRadToDeg) + " deg (hip moment too small for this leg?)";
       else if (!log.peakSeen)
         cause = "the knee never reached a flexion peak above the zone of stability";
+      else if (log.enteredOnce)
+        cause = "the knee did not settle: it left the zone of stability (< " + formatNumber(rule.zoneOfStability * kRadToDeg) +
+                " deg) " + std::to_string(log.bounces) + " times and never stayed inside it for the settle dwell of " +
+                formatNumber(rule.settleDwell) + " s (a stop that returns too much of the impact, restitution near 1?)";
       else
         cause = "the knee never came back inside the zone of stability (< " +
                 formatNumber(rule.zoneOfStability * kRadToDeg) + " deg) after its peak (knee resistance too high, or the hip extension moment too weak?)";
@@ -622,7 +737,11 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   result.swingTime = log.endTime;
   result.peakKneeFlexion = log.peak;
   result.peakKneeFlexionTime = log.peakTime;
-  result.bounce = log.bounce;
+  result.bounces = log.bounces;
+  result.bounce = log.bounces > 0;
+  result.bounceHeight = log.bounceHeight;
+  if (impacts) result.impacts = impacts->finish(previous);
+  std::stable_sort(log.events.begin(), log.events.end(), [](const SwingEvent& x, const SwingEvent& y) { return x.time < y.time; });
   result.minToeClearance = minClearance;
   result.events = log.events;
   result.steps = stepper->getNumSteps();

@@ -55,14 +55,9 @@ struct SwingOptions {
   /// with kDormandPrince). Both give the same swing times to the converged tolerance (tests/swing/fast_path_test.cpp).
   bool simbodyEvents = false;
   double eventWindow = 1e-5;        ///< s, localization window of the plain path
-  /// Fast path: after the swing end the integrator restarts at accuracy x this factor, but
-  /// no looser than 1e-3, for the bounce window (about half the realizations of a swing: the
-  /// knee meets its hyperextension stop there). The swing time, peak and clearance are
-  /// found before the restart; the bounce flag (the knee back above the zone, a margin of
-  /// degrees) and the trajectory past the end are integrated less tightly (1e-3 by
-  /// default). Events in the window agree with the plain path within 1 ms
-  /// (tests/swing/fast_path_test.cpp). 1 = no restart.
-  double bounceWindowAccuracyFactor = 100;
+  /// Energy bookkeeping of each stop impact (StopImpact::work): integrates the work of every
+  /// knee law part and of the hip as extra states (a little slower; off in sweeps).
+  bool trackImpactEnergy = false;
   /// Budgets of one swing, far above what any study needs (a swing of the bundled
   /// participants takes a few hundred realizations, 15000 at accuracy 1e-12, and
   /// milliseconds; the budget is 1 to 2 s of computing): a knee law far too
@@ -75,23 +70,52 @@ struct SwingOptions {
 };
 
 struct SwingEvent {
-  std::string name;  ///< thigh_at_target, knee_peak_flexion, knee_enters_zone, knee_leaves_zone, swing_end
+  /// toe_off, thigh_at_target, knee_peak_flexion, knee_enters_zone, knee_leaves_zone,
+  /// knee_bounce_peak (a flexion peak above the zone after a bounce), swing_end
+  std::string name;
   double time;       ///< s since toe-off
 };
 
-/// Sampled trajectory, SI units (rad, rad/s, N m, m).
+/// Work done on the leg by one cause over an impact, J (negative: taken out of the leg).
+struct ImpactWork {
+  std::string cause;  ///< a knee law part's name ("hyperextension stop", "knee friction", ...) or "hip drive"
+  double work = 0;
+};
+
+/// One contact of the knee with its hyperextension stop (flexion below the stop's engage
+/// angle), found on the integrator's step ends and their Hermite interpolants.
+struct StopImpact {
+  double time = 0;            ///< s since toe-off, contact begins
+  double impactRate = 0;      ///< rad/s, knee extension speed at contact (> 0)
+  double reboundRate = 0;     ///< rad/s, knee flexion speed at separation (0: no separation)
+  double restitution = 0;     ///< reboundRate / impactRate
+  double maxPenetration = 0;  ///< rad past the engage angle (hyperextension)
+  /// rad, knee flexion at the top of the rebound after separation (the engage angle if none
+  /// was reached before the simulation ended)
+  double reboundHeight = 0;
+  /// SwingOptions::trackImpactEnergy only: the leg's kinetic energy at contact, J, and the
+  /// work of each knee law part and of the hip from contact to the top of the rebound (to
+  /// the end of the simulation if there was none): where the impact's energy went.
+  double kineticEnergy = 0;
+  std::vector<ImpactWork> work;
+};
 
 struct SwingResult {
-  double swingTime = 0;            ///< s: thigh at target AND knee back in the zone after its peak
+  /// s: thigh at target AND knee back in the zone after its peak, staying there for the
+  /// settle dwell (SwingEndRule::settleDwell)
+  double swingTime = 0;
   double peakKneeFlexion = 0;      ///< rad
   double peakKneeFlexionTime = 0;  ///< s
-  bool bounce = false;             ///< knee left the zone again after entering it
+  bool bounce = false;             ///< knee left the zone after entering it (bounces > 0)
+  int bounces = 0;                 ///< times the knee left the zone after entering it
+  double bounceHeight = 0;         ///< rad, highest knee flexion after leaving the zone (0: no bounce)
+  std::vector<StopImpact> impacts; ///< contacts with the hyperextension stop, in time order (at most 20)
   double minToeClearance = 0;      ///< m, lowest ankle or toe height above ground from peak knee flexion to the swing end
   std::vector<SwingEvent> events;
   SwingTrajectory trajectory;
   int steps = 0;                   ///< integrator steps taken
   int realizations = 0;            ///< system realizations the integrator asked for
-  int realizationsToEnd = 0;       ///< of which up to the step where the swing ended (the rest: bounce window)
+  int realizationsToEnd = 0;       ///< of which up to the step where the swing ended (the rest: the settle dwell)
 };
 
 /// The participant-level inputs one swing needs, after loading.

@@ -194,7 +194,7 @@ inline void writeSwingModelFiles(const SwingTruth& m, const std::string& dir) {
        << "damping_table:\n  reference_speed_deg_s: " << m.referenceDegS << "\n  speed_rule: linear\n"
        << "  extension_factor: 1.0\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m.tableMoment << ", "
        << m.tableMoment << ", " << m.tableMoment << "]\n"
-       << "hyperextension_stop: {engage_flexion_deg: 0, stiffness_Nm_per_rad1p5: 20000, dissipation_s_per_rad: 0.3}\n";
+       << "hyperextension_stop: {engage_flexion_deg: 0, stiffness_Nm_per_rad1p5: 20000, restitution: 0.4}\n";
   std::ofstream p(dir + "/participant.yaml");
   auto seg = [&](const char* name, const Segment& s) {
     p << "  " << name << ": {length_m: " << s.length << ", mass_kg: " << s.mass << ", com_from_distal_m: " << s.comFromDistal
@@ -207,7 +207,7 @@ inline void writeSwingModelFiles(const SwingTruth& m, const std::string& dir) {
   p << "knee_friction_Nm: 0\nknee_model: knee.yaml\ncom_rule: fixed_from_proximal\nfoot_com_from: toe\n"
     << "initial: {hip_flexion_deg: -15, knee_flexion_deg: 10, hip_flexion_rate_deg_s: 0, knee_flexion_rate_deg_s: 0}\n"
     << "hip_range: {min_flexion_deg: -30, max_flexion_deg: 90}\n"
-    << "swing_end: {thigh_target_flexion_deg: 20, zone_of_stability_deg: 6, time_limit_s: 1.5, bounce_window_s: 0.15}\n"
+    << "swing_end: {thigh_target_flexion_deg: 20, zone_of_stability_deg: 6, time_limit_s: 1.5, settle_dwell_s: 0.15}\n"
     << "hip_moment: {profile: biphasic_sine, flexion_amplitude_Nm: 30, flexion_duration_s: 0.20, "
        "extension_amplitude_Nm: 15, extension_duration_s: 0.20, time_scale: 1.0}\n";
 }

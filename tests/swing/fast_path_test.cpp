@@ -75,19 +75,19 @@ TEST(FastPath, SameSwingTimesAsThePlainPathForAllParticipantsAndLowerings) {
               kConvergedTol);
 }
 
-// The counters say where a swing's realizations go: up to the step where the swing ended,
-// then the bounce window (a restart at a looser accuracy on the fast path).
-TEST(FastPath, RealizationCountersSplitTheSwingFromTheBounceWindow) {
+// The counters say where a swing's realizations go: up to the step where the knee entered
+// the zone for the last time, then the settle dwell that confirms the end.
+TEST(FastPath, RealizationCountersSplitTheSwingFromTheSettleDwell) {
   const Bundled p1("participants/p1.yaml");
   SwingSetup setup = p1.setup();
   for (const SwingOptions& o : {SwingOptions{}, makeSimbodyIntegratorOptions(), makePlainPathOptions(1e-4, 1e-5)}) {
     const SwingResult r = simulateSwing(setup, o);
     EXPECT_GT(r.realizationsToEnd, 50) << integratorName(o.integrator);
-    EXPECT_LT(r.realizationsToEnd, r.realizations) << integratorName(o.integrator) << ": the window costs some";
+    EXPECT_LT(r.realizationsToEnd, r.realizations) << integratorName(o.integrator) << ": the dwell costs some";
     EXPECT_GT(r.steps, 10);
   }
-  // No window at all: everything is to the end.
-  setup.participant.swingEnd.bounceWindow = 0;
+  // No dwell at all: everything is to the end.
+  setup.participant.swingEnd.settleDwell = 0;
   const SwingResult r = simulateSwing(setup);
   EXPECT_EQ(r.realizationsToEnd, r.realizations);
 }
@@ -135,17 +135,17 @@ TEST(FastPath, ThighGrazingItsTargetWithinOneStepIsStillFound) {
   }
 }
 
-// The bundled knees never bounce, so the bounce flag (integrated at the looser
-// bounce-window accuracy on the fast path) is checked on knees that do: only the
-// hyperextension stop, no damping, for the participants whose hip stays in range.
+// The bounce flag, the bounce count and the settle rule are checked on knees that bounce:
+// the participant's knee model without the knee friction near extension (which takes the
+// rebound's energy: README "Terminal impact"), at two restitutions.
 TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
-  for (const char* file : {"participants/p2.yaml", "participants/p4.yaml"}) {
-    const Participant p = loadParticipant(file);
-    for (double dissipation : {0.0, 0.2}) {  // s/rad
-      JointStopParams stop;
-      stop.dissipation = dissipation;
-      KneeLawSum knee;
-      knee.add(std::make_unique<JointStop>(stop));
+  for (const char* file : {"participants/p1.yaml", "participants/p3.yaml"}) {
+    Participant p = loadParticipant(file);
+    p.kneeFriction = 0;
+    for (double restitution : {0.4, 0.6}) {
+      KneeModel model = loadKneeModel(p.kneeModelPath);
+      model.spec.stop.restitution = restitution;
+      const KneeLawSum knee = makeKneeLaw(p, KneeModel{model.path, model.name, model.kind, makeKneeModelLaw(model.spec), model.spec});
       SwingSetup setup;
       setup.participant = p;
       setup.knee = &knee;
@@ -154,14 +154,12 @@ TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
       const SwingResult plain = simulateSwing(setup, plainOptions);
       EXPECT_TRUE(plain.bounce) << file;
       EXPECT_EQ(fast.bounce, plain.bounce) << file;
+      EXPECT_EQ(fast.bounces, plain.bounces) << file;
       EXPECT_NEAR(fast.swingTime, plain.swingTime, kConvergedTol) << file;
       ASSERT_EQ(fast.events.size(), plain.events.size()) << file;
-      // Events after the swing end come from the bounce window, integrated 10x less tightly.
-      constexpr double kWindowEventTol = 1e-3;  // s
       for (std::size_t i = 0; i < fast.events.size(); ++i) {
         EXPECT_EQ(fast.events[i].name, plain.events[i].name) << file;
-        const double tol = fast.events[i].time <= fast.swingTime ? kConvergedTol : kWindowEventTol;
-        EXPECT_NEAR(fast.events[i].time, plain.events[i].time, tol) << file << " " << fast.events[i].name;
+        EXPECT_NEAR(fast.events[i].time, plain.events[i].time, kConvergedTol) << file << " " << fast.events[i].name;
       }
     }
   }

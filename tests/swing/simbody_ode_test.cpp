@@ -64,7 +64,9 @@ TEST(SimbodyOde, LegWithoutWorkTrackingHasOnlyTheLawStates) {
   EXPECT_THROW(plain.getKneeWork(s), std::logic_error);
   EXPECT_THROW(plain.getHipWork(s), std::logic_error);
   const LegModel tracked(calcLegGeometry(p, 0.0), damping, p.hipMoment, p.hipRange, 1.0);
-  EXPECT_EQ(tracked.makeInitialState(p.initial).getNZ(), 2);  // knee work, hip work
+  // The work of each knee law part (damping table, stop, friction), then the hip's.
+  ASSERT_EQ(tracked.numKneeWorkParts(), 3);
+  EXPECT_EQ(tracked.makeInitialState(p.initial).getNZ(), 4);
 
   const KneeLawSum mauch = makeKneeLaw(p, loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-4phase.yaml"));
   const LegModel latch(calcLegGeometry(p, 0.0), mauch, p.hipMoment, p.hipRange, 1.0, /*trackWork=*/false);
