@@ -12,6 +12,7 @@
 #include "report/sweep_report.h"
 #include "study/sweep_study.h"
 #include "swing/sweep.h"
+#include "swing/terminal_impact.h"
 
 namespace swingsim::cli {
 namespace {
@@ -48,13 +49,18 @@ int runSweepCommand(const SweepArguments& a) {
   const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + makeSafeFileStem(study.name) : study.outputDir);
 
   catchInterrupts();
-  const SweepResults results = [&] {
+  SweepResults results = [&] {
     // Scoped: an interrupted run's bar is ended before the message below.
     ProgressReporter progress("sweep " + study.name, "swings");
     progress.note(std::to_string(study.participants.size()) + " participants (" + study.path + ")");
     return runSweep(study, a.jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
   }();
 
+  if (!gInterrupted) {
+    // Burkett's bounce and interior optimum, checked (report section "Terminal impact").
+    std::fprintf(stderr, "terminal impact check: impact bookkeeping and a friction-free sweep per participant\n");
+    checkTerminalImpact(study, results, a.jobs);
+  }
   std::printf("%s", formatSweepTables(study, results).c_str());
   if (gInterrupted) {
     // Keep what finished, readable, under a name that cannot be mistaken for a result.

@@ -1,5 +1,7 @@
 #include "report/sweep_report.h"
 
+#include "report/swing_json.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -95,18 +97,40 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
 std::string formatSweepJson(const SweepResults& results) {
   Json participants = Json::array();
   for (const auto& ps : results.participants) {
-    std::vector<double> lowering, swing, peak, clearance;
+    std::vector<double> lowering, swing, peak, clearance, bounceHeight;
     std::vector<bool> bounce, ok;
+    std::vector<int> bounces;
     for (const auto& pt : ps.points) {
       lowering.push_back(pt.lowering);
       swing.push_back(pt.ok ? pt.result.swingTime : kNaN);
       peak.push_back(pt.ok ? pt.result.peakKneeFlexion * kRadToDeg : kNaN);
       clearance.push_back(pt.ok ? pt.result.minToeClearance : kNaN);
       bounce.push_back(pt.ok && pt.result.bounce);
+      bounces.push_back(pt.ok ? pt.result.bounces : 0);
+      bounceHeight.push_back(pt.ok && pt.result.bounce ? pt.result.bounceHeight * kRadToDeg : kNaN);
       ok.push_back(pt.ok);
     }
     Json j = {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing}, {"peak_knee_flexion_deg", peak},
-              {"bounce", bounce}, {"swing_ended", ok}, {"min_toe_clearance_m", clearance}};
+              {"bounce", bounce}, {"bounces", bounces}, {"bounce_height_deg", bounceHeight}, {"swing_ended", ok},
+              {"min_toe_clearance_m", clearance}};
+    for (const auto& c : results.terminalImpact) {
+      if (c.participant != ps.name) continue;
+      Json tracked = Json::array();
+      for (const auto& t : c.tracked) {
+        Json row = {{"lowering_m", t.lowering}, {"swing_ended", t.ok}};
+        if (t.ok && !t.result.impacts.empty()) row["first_stop_impact"] = makeStopImpactJson(t.result.impacts.front());
+        tracked.push_back(row);
+      }
+      j["terminal_impact"] = {{"knee_friction_Nm", c.frictionMoment},
+                              {"bounce_lowerings_m", c.bounceLowerings},
+                              {"interior_optimum", c.interiorOptimum},
+                              {"without_friction", {{"bounce_lowerings_m", c.bounceLoweringsWithoutFriction},
+                                                    {"fastest_lowering_m", c.fastestWithoutFriction},
+                                                    {"fastest_swing_time_s", c.fastestTimeWithoutFriction},
+                                                    {"interior_optimum", c.interiorOptimumWithoutFriction}}},
+                              {"impacts", tracked},
+                              {"findings", c.findings}};
+    }
     if (ps.best >= 0) {
       const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
       j["best_lowering_m"] = b.lowering;
@@ -284,6 +308,42 @@ std::string ms(double seconds) {
 
 }  // namespace
 
+namespace {
+
+// Burkett's terminal-impact findings, per participant (swing/terminal_impact.h); "" if the
+// check did not run.
+std::string formatTerminalImpactSection(const SweepResults& results) {
+  if (results.terminalImpact.empty()) return "";
+  std::string md = "## Terminal impact: bounce and the interior optimum (Burkett's findings)\n\n";
+  md += "Burkett et al. saw the knee bounce out of extension at large lowerings for every participant, and their "
+        "model's swing time rise again past an interior optimum. The hyperextension stop here is a Hertz contact with a "
+        "coefficient of restitution (README \"Terminal impact\"); the swing ends when the knee has settled in the zone "
+        "of stability, so a bounce lengthens it. Each participant's first stop impact is booked by cause (work from "
+        "contact to the top of the rebound), and the sweep is repeated without the knee friction near extension.\n\n";
+  md += mdRow({"participant", "Tc (N m)", "bounces at", "interior optimum", "without friction: bounces at", "without friction: fastest (m)"});
+  md += mdRow({"---", "---", "---", "---", "---", "---"});
+  auto list = [](const std::vector<double>& v) {
+    if (v.empty()) return std::string("none");
+    std::string s;
+    for (double d : v) s += (s.empty() ? "" : " ") + fmt("%.2f", d);
+    return s;
+  };
+  for (const auto& c : results.terminalImpact) {
+    md += mdRow({c.participant, fmt("%.1f", c.frictionMoment), list(c.bounceLowerings), c.interiorOptimum ? "yes" : "no",
+                 list(c.bounceLoweringsWithoutFriction),
+                 std::isnan(c.fastestWithoutFriction) ? "none ended" : fmt("%.3f", c.fastestWithoutFriction)});
+  }
+  md += "\n";
+  for (const auto& c : results.terminalImpact) {
+    md += "**" + c.participant + "**\n\n";
+    for (const auto& f : c.findings) md += "- " + f + "\n";
+    md += "\n";
+  }
+  return md;
+}
+
+}  // namespace
+
 std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, const SweepResults& results) {
   std::map<std::string, std::string> files;
   files["sweep.csv"] = formatSweepCsv(results);
@@ -365,6 +425,7 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
                  b.result.minToeClearance < 0 ? "yes" : "no"});
   }
   md += "\n";
+  md += formatTerminalImpactSection(results);
   bool anyMass = false;
   for (const auto& ps : results.participants) anyMass = anyMass || ps.bestWithMass >= 0;
   if (anyMass) {
@@ -402,7 +463,7 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
       files[base + "-filmstrip.svg"] = renderStackedSvg(strips);
       md += "![stick-figure filmstrip](" + base + "-filmstrip.svg)\n\n";
     }
-    md += "```\n" + formatSweepTables(study, SweepResults{results.study, {ps}}) + "```\n\n";
+    md += "```\n" + formatSweepTables(study, SweepResults{results.study, {ps}, {}}) + "```\n\n";
   }
 
   // Every point that ran and failed, with its full message (the tables give the short form).

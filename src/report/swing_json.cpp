@@ -2,22 +2,24 @@
 
 namespace swingsim {
 
+Json makeStopImpactJson(const StopImpact& im) {
+  Json work = Json::object();
+  for (const auto& w : im.work) work[w.cause] = w.work;
+  return {{"time_s", im.time},
+          {"impact_rate_rad_s", im.impactRate},
+          {"rebound_rate_rad_s", im.reboundRate},
+          {"restitution", im.restitution},
+          {"max_penetration_deg", im.maxPenetration * kRadToDeg},
+          {"rebound_height_deg", im.reboundHeight * kRadToDeg},
+          {"kinetic_energy_at_contact_J", im.kineticEnergy},
+          {"work_to_rebound_top_J", work}};
+}
+
 Json makeSwingResultJson(const std::string& participant, double lowering, const SwingResult& r) {
   Json events = Json::array();
   for (const auto& e : r.events) events.push_back({{"name", e.name}, {"time_s", e.time}});
   Json impacts = Json::array();
-  for (const auto& im : r.impacts) {
-    Json work = Json::object();
-    for (const auto& w : im.work) work[w.cause] = w.work;
-    impacts.push_back({{"time_s", im.time},
-                       {"impact_rate_rad_s", im.impactRate},
-                       {"rebound_rate_rad_s", im.reboundRate},
-                       {"restitution", im.restitution},
-                       {"max_penetration_deg", im.maxPenetration * kRadToDeg},
-                       {"rebound_height_deg", im.reboundHeight * kRadToDeg},
-                       {"kinetic_energy_at_contact_J", im.kineticEnergy},
-                       {"work_to_rebound_top_J", work}});
-  }
+  for (const auto& im : r.impacts) impacts.push_back(makeStopImpactJson(im));
   return {{"participant", participant},
           {"lowering_m", lowering},
           {"swing_time_s", r.swingTime},

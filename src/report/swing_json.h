@@ -12,6 +12,10 @@ namespace swingsim {
 /// [{time_s, impact_rate_rad_s, rebound_rate_rad_s, restitution, max_penetration_deg,
 /// rebound_height_deg, kinetic_energy_at_contact_J, work_to_rebound_top_J: {cause: J}}],
 /// "min_toe_clearance_m", "events": [{name, time_s}]}.
+/// {time_s, impact_rate_rad_s, rebound_rate_rad_s, restitution, max_penetration_deg,
+/// rebound_height_deg, kinetic_energy_at_contact_J, work_to_rebound_top_J: {cause: J}}.
+Json makeStopImpactJson(const StopImpact& im);
+
 Json makeSwingResultJson(const std::string& participant, double lowering, const SwingResult& r);
 
 }  // namespace swingsim

@@ -61,9 +61,35 @@ struct ParticipantSweep {
   int bestWithMass = -1;  ///< index into massPoints, -1 if none
 };
 
+// Burkett 2004's terminal-impact findings on a sweep (swing/terminal_impact.h).
+/// One swing with its impact bookkeeping (SwingOptions::trackImpactEnergy).
+struct TrackedImpactSwing {
+  double lowering = 0;  ///< m
+  bool ok = false;
+  std::string failure;
+  SwingResult result;
+};
+
+struct TerminalImpactCheck {
+  std::string participant;
+  double frictionMoment = 0;  ///< N m, the participant's Tc
+  /// At the standard location and at the largest lowering simulated.
+  std::vector<TrackedImpactSwing> tracked;
+  /// The grid lowerings (m) where the knee bounces, as simulated and without friction.
+  std::vector<double> bounceLowerings, bounceLoweringsWithoutFriction;
+  /// Fastest grid lowering (m) and its swing time (s) without friction; NaN if none ended.
+  double fastestWithoutFriction = 0, fastestTimeWithoutFriction = 0;
+  bool interiorOptimum = false;               ///< the fastest lowering is below the largest
+  bool interiorOptimumWithoutFriction = false;
+  /// One sentence per finding: reproduced or not, and which assumption stops it.
+  std::vector<std::string> findings;
+};
+
 struct SweepResults {
   std::string study;
   std::vector<ParticipantSweep> participants;
+  /// checkTerminalImpact's findings, by participant (empty unless it ran).
+  std::vector<TerminalImpactCheck> terminalImpact;
 };
 
 
