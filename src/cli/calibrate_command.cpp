@@ -21,7 +21,8 @@ namespace {
 /// What `swingsim calibrate` was given.
 struct CalibrateArguments {
   std::vector<std::string> participants;
-  std::optional<double> target;  ///< s; nullopt: Burkett 2004 Table 3
+  std::optional<double> target;  ///< s; nullopt: Burkett 2004 Table 3, column `column`
+  CalibrationTarget column = CalibrationTarget::kModel;
   bool dryRun = false;
 };
 
@@ -38,7 +39,7 @@ int runCalibrate(const CalibrateArguments& a) {
     if (a.target) {
       target = *a.target;
     } else if (const PublishedParticipant* pub = findPublished(p.name)) {
-      target = pub->table3Model;
+      target = a.column == CalibrationTarget::kMeasured ? pub->table3Measured : pub->table3Model;
     } else {
       throw InputError(path + ": name: '" + p.name + "' is not a Burkett 2004 participant; give --target SECONDS");
     }
@@ -72,11 +73,30 @@ Command addCalibrateCommand(CLI::App& app) {
       app.add_subcommand("calibrate", "fit each participant's hip-moment time scale to Burkett Table 3 and store it in the YAML");
   auto a = std::make_shared<CalibrateArguments>();
   sub->add_option("PARTICIPANT.yaml", a->participants, "participant files (one or more)")->required()->type_name("");
-  sub->add_option_function<double>(
-         "--target", [a](double v) { a->target = v; },
-         "target standard-location swing time, s (default: Burkett 2004 Table 3 model column; one file only)")
-      ->type_name("S")
-      ->check(finiteNumber());
+  sub->add_option_function<std::string>(
+         "--target",
+         [a](const std::string& v) {
+           if (v == "model" || v == "measured") {
+             a->column = v == "model" ? CalibrationTarget::kModel : CalibrationTarget::kMeasured;
+           } else {
+             a->target = std::stod(v);  // checked below
+           }
+         },
+         "model | measured | SECONDS: Burkett 2004 Table 3's model column (default) or measured column, or a "
+         "standard-location swing time in s (one file only)")
+      ->type_name("model|measured|S")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            if (v == "model" || v == "measured") return "";
+            try {
+              std::size_t used = 0;
+              const double x = std::stod(v, &used);
+              if (used == v.size() && std::isfinite(x) && x > 0) return "";
+            } catch (const std::exception&) {
+            }
+            return "expected model, measured or a positive swing time in seconds, found '" + v + "'";
+          },
+          "", ""));
   sub->add_flag("--dry-run", a->dryRun, "calibrate and print, but do not change the file (default: store)");
   return {sub, [a] { return runCalibrate(*a); }};
 }

@@ -7,11 +7,13 @@
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
+#include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
 #include "study/sweep_study.h"
 #include "swing/sweep.h"
+#include "swing/measured_validation.h"
 #include "swing/terminal_impact.h"
 
 namespace swingsim::cli {
@@ -48,6 +50,17 @@ int runSweepCommand(const SweepArguments& a) {
   }
   const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + makeSafeFileStem(study.name) : study.outputDir);
 
+  std::vector<ParticipantCalibration> calibrations;
+  if (study.calibrateTo != CalibrationTarget::kStored) {
+    std::fprintf(stderr, "sweep %s: calibrating the hip time scales to Burkett Table 3 (%s)\n", study.name.c_str(),
+                 calibrationTargetKey(study.calibrateTo));
+    calibrations = calibrateSweepParticipants(study);
+    for (const auto& c : calibrations)
+      std::fprintf(stderr, "sweep %s: %s: %s\n", study.name.c_str(), c.participant.c_str(),
+                   c.ok ? ("time scale " + formatNumber(c.timeScale) + " for " + formatNumber(c.targetTime) + " s").c_str()
+                        : c.failure.c_str());
+  }
+
   catchInterrupts();
   SweepResults results = [&] {
     // Scoped: an interrupted run's bar is ended before the message below.
@@ -58,8 +71,12 @@ int runSweepCommand(const SweepArguments& a) {
 
   if (!gInterrupted) {
     // Burkett's bounce and interior optimum, checked (report section "Terminal impact").
-    std::fprintf(stderr, "terminal impact check: impact bookkeeping and a friction-free sweep per participant\n");
+    std::fprintf(stderr, "sweep %s: terminal impact check: impact bookkeeping and a friction-free sweep per participant\n",
+                 study.name.c_str());
     checkTerminalImpact(study, results, a.jobs);
+    results.calibratedTo = study.calibrateTo;
+    results.calibrations = calibrations;
+    validateOnTable4(study, results);
   }
   std::printf("%s", formatSweepTables(study, results).c_str());
   if (gInterrupted) {

@@ -113,6 +113,26 @@ std::string formatSweepJson(const SweepResults& results) {
     Json j = {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing}, {"peak_knee_flexion_deg", peak},
               {"bounce", bounce}, {"bounces", bounces}, {"bounce_height_deg", bounceHeight}, {"swing_ended", ok},
               {"min_toe_clearance_m", clearance}};
+    for (const auto& v : results.table4) {
+      if (v.participant != ps.name) continue;
+      Json rows = Json::array();
+      for (const auto& r : v.rows)
+        rows.push_back({{"lowering_m", r.lowering}, {"measured_s", r.measured}, {"burkett_model_s", r.model},
+                        {"ours_s", r.ours}, {"ours_leave_one_out_s", r.oursLeaveOneOut}});
+      j["table4_validation"] = {{"calibrated_to", calibrationTargetKey(results.calibratedTo)},
+                                {"calibrated", v.calibrated},
+                                {"rows", rows},
+                                {"rmse_ours_s", v.rmseOurs},
+                                {"rmse_burkett_model_s", v.rmseModel},
+                                {"rmse_leave_one_out_s", v.rmseLeaveOneOut},
+                                {"shortening_measured_s", v.shorteningMeasured},
+                                {"shortening_ours_s", v.shorteningOurs},
+                                {"shortening_burkett_model_s", v.shorteningModel}};
+      for (const auto& c : results.calibrations)
+        if (c.participant == ps.name)
+          j["table4_validation"]["calibration"] = {{"target_s", c.targetTime}, {"time_scale", c.timeScale}, {"ok", c.ok},
+                                                   {"failure", c.failure}};
+    }
     for (const auto& c : results.terminalImpact) {
       if (c.participant != ps.name) continue;
       Json tracked = Json::array();
@@ -344,6 +364,82 @@ std::string formatTerminalImpactSection(const SweepResults& results) {
 
 }  // namespace
 
+namespace {
+
+// Table 4 as a validation set (swing/measured_validation.h); "" if it did not run.
+std::string formatTable4ValidationSection(const SweepResults& results) {
+  if (results.table4.empty()) return "";
+  std::string md = "## Table 4 as validation: errors against the measured swing times\n\n";
+  if (results.calibratedTo == CalibrationTarget::kStored) {
+    md += "The hip time scales are the participant files' (calibrated to Table 3's model column: `swingsim calibrate`). ";
+  } else {
+    md += std::string("This run calibrated each participant's hip time scale to Table 3's **") +
+          calibrationTargetKey(results.calibratedTo) + "** column before sweeping (`calibrate_to:` in the study):\n\n";
+    for (const auto& c : results.calibrations)
+      md += "- " + c.participant + ": " +
+            (c.ok ? "time scale " + fmt("%.4f", c.timeScale) + " gives " + fmt("%.3f", c.targetTime) + " s at the standard location"
+                  : c.failure) +
+            "\n";
+    md += "\n";
+  }
+  md += "Fitted to Burkett's numbers: one hip time scale per participant, to his Table 3; nothing else (the hip moment "
+        "shape, the damping table, the stop and the swing-end rule were chosen before any comparison with Table 4). "
+        "Errors below are over Table 4's lowered rows (the standard-location row is Table 3, the calibration target).";
+  const bool loo = results.calibratedTo != CalibrationTarget::kStored;
+  if (loo)
+    md += " Leave-one-out: each participant's time scale replaced by the mean of the other calibrated participants' "
+          "scales, as a new runner without his own Table 3 time would be predicted.";
+  md += "\n\n";
+  std::vector<std::string> head = {"participant", "lowering (m)", "measured (s)", "ours (s)", "Burkett model (s)", "ours - measured",
+                                   "model - measured"};
+  if (loo) head.push_back("leave-one-out (s)");
+  md += mdRow(head);
+  md += mdRow(std::vector<std::string>(head.size(), "---"));
+  auto num = [](double v) { return std::isnan(v) ? std::string("-") : fmt("%.3f", v); };
+  auto diff = [](double a, double b) { return std::isnan(a) ? std::string("-") : ms(a - b); };
+  std::vector<double> pooledOurs, pooledModel, pooledLoo;
+  for (const auto& v : results.table4) {
+    for (const auto& r : v.rows) {
+      std::vector<std::string> row = {v.participant, fmt("%.3f", r.lowering), fmt("%.3f", r.measured), num(r.ours),
+                                      fmt("%.3f", r.model), diff(r.ours, r.measured), diff(r.model, r.measured)};
+      if (loo) row.push_back(num(r.oursLeaveOneOut));
+      md += mdRow(row);
+      if (r.lowering <= 0) continue;
+      if (!std::isnan(r.ours)) pooledOurs.push_back(r.ours - r.measured);
+      pooledModel.push_back(r.model - r.measured);
+      if (!std::isnan(r.oursLeaveOneOut)) pooledLoo.push_back(r.oursLeaveOneOut - r.measured);
+    }
+  }
+  md += "\n";
+  std::vector<std::string> sumHead = {"participant", "RMSE ours (ms)", "RMSE Burkett model (ms)"};
+  if (loo) sumHead.push_back("RMSE leave-one-out (ms)");
+  for (const char* h : {"shortening measured (ms)", "shortening ours (ms)", "shortening Burkett model (ms)"}) sumHead.push_back(h);
+  md += mdRow(sumHead);
+  md += mdRow(std::vector<std::string>(sumHead.size(), "---"));
+  auto msOrDash = [](double v) { return std::isnan(v) ? std::string("-") : fmt("%.0f", v * 1000); };
+  for (const auto& v : results.table4) {
+    std::vector<std::string> row = {v.participant + (v.calibrated || !loo ? "" : " (not calibrated)"), msOrDash(v.rmseOurs),
+                                    msOrDash(v.rmseModel)};
+    if (loo) row.push_back(msOrDash(v.rmseLeaveOneOut));
+    for (double x : {v.shorteningMeasured, v.shorteningOurs, v.shorteningModel}) row.push_back(msOrDash(x));
+    md += mdRow(row);
+  }
+  auto rmsOf = [](const std::vector<double>& e) {
+    double sum = 0;
+    for (double x : e) sum += x * x;
+    return e.empty() ? std::numeric_limits<double>::quiet_NaN() : std::sqrt(sum / static_cast<double>(e.size()));
+  };
+  std::vector<std::string> all = {"all", msOrDash(rmsOf(pooledOurs)), msOrDash(rmsOf(pooledModel))};
+  if (loo) all.push_back(msOrDash(rmsOf(pooledLoo)));
+  for (int k = 0; k < 3; ++k) all.push_back("");
+  md += mdRow(all);
+  md += "\nShortening: standard location minus the largest Table 4 lowering simulated here (positive = faster when "
+        "lowered).\n\n";
+  return md;
+}
+
+}  // namespace
+
 std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, const SweepResults& results) {
   std::map<std::string, std::string> files;
   files["sweep.csv"] = formatSweepCsv(results);
@@ -408,6 +504,8 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
         std::string(study.participants.front().comRule == ComRule::kFixedFromProximal ? "COMs fixed from the proximal joint" : "COMs proportional") +
         "): it sets how much shank-and-foot inertia about the hip grows as the knee is lowered.\n\n";
 
+  md += formatTable4ValidationSection(results);
+
   // Fastest lowering.
   md += "## Fastest lowering per participant\n\n";
   md += mdRow({"participant", "ours (m)", "ours swing time (s)", "Burkett model (m)", "difference (m)", "bounce at ours", "toe strikes at ours"});
@@ -463,7 +561,10 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
       files[base + "-filmstrip.svg"] = renderStackedSvg(strips);
       md += "![stick-figure filmstrip](" + base + "-filmstrip.svg)\n\n";
     }
-    md += "```\n" + formatSweepTables(study, SweepResults{results.study, {ps}, {}}) + "```\n\n";
+    SweepResults one;
+    one.study = results.study;
+    one.participants = {ps};
+    md += "```\n" + formatSweepTables(study, one) + "```\n\n";
   }
 
   // Every point that ran and failed, with its full message (the tables give the short form).

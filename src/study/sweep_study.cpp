@@ -88,6 +88,10 @@ void serialize(A& a, SweepStudy& s) {
   bool addedMass = !s.addedMassDistances.empty();
   a.optionalMap("added_mass", s, addedMass, AddedMassOf{});
   a.optionalMap("integrator", s.swing, present = true);
+  // Calibrate the hip time scales to Burkett Table 3 before sweeping (measured_validation.h).
+  a.choice("calibrate_to", s.calibrateTo,
+           {{"stored", CalibrationTarget::kStored}, {"model", CalibrationTarget::kModel}, {"measured", CalibrationTarget::kMeasured}},
+           true);
   a.optionalText("output_dir", s.outputDir);
 }
 

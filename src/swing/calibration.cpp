@@ -21,6 +21,15 @@ double swingTimeAt(SwingSetup setup, double scale, const SwingOptions& options) 
 
 }  // namespace
 
+const char* calibrationTargetKey(CalibrationTarget target) {
+  switch (target) {
+    case CalibrationTarget::kModel: return "model";
+    case CalibrationTarget::kMeasured: return "measured";
+    case CalibrationTarget::kStored: break;
+  }
+  return "stored";
+}
+
 CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, const SwingOptions& swingOptions,
                                     const CalibrationOptions& options) {
   SwingOptions fast = swingOptions;

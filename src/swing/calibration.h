@@ -8,6 +8,16 @@
 
 namespace swingsim {
 
+/// Which standard-location swing time a participant's hip time scale is calibrated to.
+enum class CalibrationTarget {
+  kStored,    ///< none: keep the time scale in the participant file
+  kModel,     ///< Burkett 2004 Table 3, model prediction (the default participants' calibration)
+  kMeasured,  ///< Burkett 2004 Table 3, measured mean (then Table 4 measured is the validation)
+};
+
+/// "stored", "model", "measured".
+const char* calibrationTargetKey(CalibrationTarget target);
+
 struct CalibrationResult {
   double timeScale = 0;   ///< calibrated hip-moment time scale
   double swingTime = 0;   ///< s, swing time at that scale (lowering 0)

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "model/knee_model.h"
+#include "swing/calibration.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -37,6 +38,10 @@ struct SweepStudy {
   bool includePublishedLowerings = true;
   SwingOptions swing;
   std::string outputDir;  ///< "" = out/<name>
+  /// `calibrate_to:` calibrate every Burkett participant's hip time scale before the sweep
+  /// (calibrateSweepParticipants), to Table 3's model or measured column; kStored = keep
+  /// the files' time scales.
+  CalibrationTarget calibrateTo = CalibrationTarget::kStored;
 };
 
 /// One simulated (participant, lowering, added mass) point.
@@ -85,11 +90,45 @@ struct TerminalImpactCheck {
   std::vector<std::string> findings;
 };
 
+/// One participant's calibration before a sweep (SweepStudy::calibrateTo).
+struct ParticipantCalibration {
+  std::string participant;
+  double targetTime = 0;  ///< s
+  double timeScale = 0;   ///< the calibrated scale (the stored one if !ok)
+  bool ok = false;
+  std::string failure;    ///< why not (a target no time scale reaches)
+};
+
+/// Burkett Table 4 as a validation set for one participant: measured prosthetic swing
+/// times beside ours and Burkett's model (measured_validation.h).
+struct Table4Row {
+  double lowering = 0;              ///< m
+  double measured = 0, model = 0;   ///< s, Burkett's measured mean and model prediction
+  double ours = 0;                  ///< s, this sweep (NaN: not simulated or no swing end)
+  double oursLeaveOneOut = 0;       ///< s, with the other participants' mean time scale (NaN: not run)
+};
+
+struct Table4Validation {
+  std::string participant;
+  bool calibrated = false;  ///< the time scale came from this run's calibration to the target
+  std::vector<Table4Row> rows;
+  /// RMS of (prediction - measured) over the rows with a prediction, s (NaN: none).
+  double rmseOurs = 0, rmseModel = 0, rmseLeaveOneOut = 0;
+  /// Shortening from the standard location to the largest Table 4 lowering both have, s
+  /// (positive: faster when lowered).
+  double shorteningMeasured = 0, shorteningOurs = 0, shorteningModel = 0;
+};
+
 struct SweepResults {
   std::string study;
   std::vector<ParticipantSweep> participants;
   /// checkTerminalImpact's findings, by participant (empty unless it ran).
   std::vector<TerminalImpactCheck> terminalImpact;
+  /// The calibration done before the sweep (empty: the stored time scales were used).
+  CalibrationTarget calibratedTo = CalibrationTarget::kStored;
+  std::vector<ParticipantCalibration> calibrations;
+  /// Table 4 as validation, per Burkett participant (empty unless validateOnTable4 ran).
+  std::vector<Table4Validation> table4;
 };
 
 

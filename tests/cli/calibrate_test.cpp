@@ -92,3 +92,25 @@ TEST(Calibrate, AFailingFileLeavesEveryFileUnchanged) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// --target measured calibrates to Burkett Table 3's measured column; a word that is neither
+// column nor a number is refused before anything runs.
+TEST(Calibrate, TargetMeasuredUsesTable3MeasuredAndBadTargetsAreRefused) {
+  const fs::path dir = freshDir("measured");
+  const fs::path file = dir / "p.yaml";
+  std::ofstream(file) << p1Text();
+  const auto r = testing::runSwingsim("calibrate " + file.string() + " --target measured --dry-run");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, ::testing::HasSubstr("(target 0.4630 s)"));  // Table 3, P1 measured
+  for (const char* bad : {"fast", "-0.4", "0", "nan", "0.4s"}) {
+    const auto b = testing::runSwingsim("calibrate " + file.string() + " --target " + bad + " --dry-run");
+    EXPECT_NE(b.code, 0) << bad;
+    EXPECT_THAT(b.output, ::testing::HasSubstr("expected model, measured or a positive swing time")) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace swingsim

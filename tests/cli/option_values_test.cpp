@@ -27,7 +27,7 @@ TEST(OptionValues, BadValuesAreUsageErrorsNamingTheOption) {
       {"sweep studies/burkett2004.yaml --jobs -1", "--jobs: expected 0 (all cores) or a positive whole number (got '-1')"},
       {"sweep studies/burkett2004.yaml --jobs 1.5", "--jobs: expected 0 (all cores) or a positive whole number (got '1.5')"},
       {"sweep studies/burkett2004.yaml --add-mass 1@x", "--add-mass: expected KG@METRES"},
-      {"calibrate participants/p1.yaml --target soon --dry-run", "--target: expected a number (got 'soon')"},
+      {"calibrate participants/p1.yaml --target soon --dry-run", "--target: expected model, measured or a positive swing time in seconds, found 'soon'"},
       {"calibrate participants/p1.yaml participants/p2.yaml --target 0.4 --dry-run",
        "--target: applies to one participant file"},
       {"simulate participants/p1.yaml --lowering", "--lowering"},  // no value
