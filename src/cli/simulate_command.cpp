@@ -71,7 +71,12 @@ int runSimulate(const SimulateArguments& a) {
     for (const auto& w : im.work) std::printf(" %s %+.3f J;", w.cause.c_str(), w.work);
     std::printf("\n");
   }
-  std::printf("  min toe clearance   %.3f m%s\n", r.minToeClearance, r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
+  if (p.toeClearance.alarmHolds())
+    std::printf("  min toe clearance   %.3f m%s\n", r.minToeClearance, r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
+  else
+    std::printf("  min toe clearance   %.3f m relative to standing hip height (running: no strike alarm without "
+                "toe_clearance.hip_rise_m)\n",
+                r.minToeClearance);
   std::printf("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
               options.accuracy, r.realizations);
   std::printf("  events:");

@@ -76,6 +76,16 @@ void serialize(A& a, SwingEndRule& e) {
 }
 
 template <class A>
+void serialize(A& a, ToeClearanceRule& t) {
+  using G = ToeClearanceRule::Gait;
+  a.choice("gait", t.gait, {{"walking", G::kWalking}, {"running", G::kRunning}}, true);
+  if constexpr (A::kReading) t.hipRiseGiven = a.has("hip_rise_m");
+  if (t.hipRiseGiven)
+    a.number("hip_rise_m", t.hipRise,
+             [](double v) { return v >= -0.2 && v <= 0.5 ? "" : "expected the hip's rise above standing height, -0.2 to 0.5 m"; });
+}
+
+template <class A>
 void serialize(A& a, HipMomentProfile& h) {
   using K = HipMomentProfile::Kind;
   a.choice("profile", h.kind, {{"biphasic_sine", K::kBiphasicSine}, {"table", K::kTable}});
@@ -122,6 +132,7 @@ void serialize(A& a, Participant& p) {
   bool present = true;
   a.optionalMap("initial", p.initial, present);
   a.optionalMap("hip_range", p.hipRange, present = true);
+  a.optionalMap("toe_clearance", p.toeClearance, present = true);
   a.require(p.initial.hipFlexion >= p.hipRange.minFlexion && p.initial.hipFlexion <= p.hipRange.maxFlexion, "initial",
             "the initial hip flexion must lie inside hip_range",
             [&] { return formatNumber(p.initial.hipFlexion * kRadToDeg) + " deg"; });

@@ -55,6 +55,22 @@ struct SwingEndRule {
   double settleDwell = 0.15;
 };
 
+/// What the toe clearance is measured against. The foot's height is computed with the hip at
+/// standing hip height (0.530 x height) plus `hipRise`; whether a negative clearance means
+/// the foot strikes the ground depends on the gait: in walking the swing happens over the
+/// stance leg with the hip near standing height, in running the body is in flight for much
+/// of the swing and the hip is higher by an amount nobody here measured.
+struct ToeClearanceRule {
+  enum class Gait { kWalking, kRunning };
+  Gait gait = Gait::kWalking;
+  /// m, the hip's height above standing hip height during the swing (a user's measured
+  /// pelvis, e.g. from motion capture); applied as a constant offset.
+  double hipRise = 0;
+  bool hipRiseGiven = false;  ///< `hip_rise_m:` was written
+  /// The strike alarm holds: walking, or running with a stated hip rise.
+  bool alarmHolds() const { return gait == Gait::kWalking || hipRiseGiven; }
+};
+
 /// Physiological hip range of motion (smooth stop outside it).
 struct HipRange {
   double minFlexion = -30 * kDegToRad;  ///< rad
@@ -80,6 +96,7 @@ struct Participant {
   FootComFrom footComFrom = FootComFrom::kToe;
   InitialConditions initial;
   SwingEndRule swingEnd;
+  ToeClearanceRule toeClearance;
   HipRange hipRange;
   HipMomentProfile hipMoment;
   double minShankLength = 0.10;  ///< m: the knee unit and pylon clamp need at least this

@@ -52,8 +52,12 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
   std::string out;
   for (const auto& ps : results.participants) {
     const PublishedParticipant* pub = findPublished(ps.name);
+    const Participant* participant = participantNamed(study, ps.name);
+    const bool strikeAlarm = participant == nullptr || participant->toeClearance.alarmHolds();
     out += "\n" + ps.name + " — swing time vs knee-axis lowering (study " + study.name + ")\n";
     if (!ps.capNote.empty()) out += "  note: " + ps.capNote + "\n";
+    if (!strikeAlarm)
+      out += "  toe clearance relative to standing hip height (running, hip rise not given: no strike alarm)\n";
     out += "  lowering_m  swing_time_s  peak_knee_deg  bounce  toe_clearance_m  paper_model_s  paper_measured_s\n";
     for (std::size_t k = 0; k < ps.points.size(); ++k) {
       const SweepPoint& pt = ps.points[k];
@@ -71,7 +75,7 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
                       pt.result.swingTime, pt.result.peakKneeFlexion * kRadToDeg, pt.result.bounce ? "yes" : "no",
                       pt.result.minToeClearance, paperModel.c_str(), paperMeasured.c_str(),
                       static_cast<int>(k) == ps.best ? "  <- fastest" : "",
-                      pt.result.minToeClearance < 0 ? "  (toe strikes)" : "");
+                      pt.result.minToeClearance < 0 && strikeAlarm ? "  (toe strikes)" : "");
       } else {
         std::snprintf(line, sizeof line, "  %10.3f  %-44s  %13s  %16s\n", pt.lowering, shortFailure(pt).c_str(),
                       paperModel.c_str(), paperMeasured.c_str());
@@ -330,6 +334,12 @@ std::string ms(double seconds) {
 
 namespace {
 
+// The fastest-lowering table's strike cell: only where the clearance's assumption holds.
+std::string toeStrikeCell(const Participant* p, double clearance) {
+  if (p != nullptr && !p->toeClearance.alarmHolds()) return "n/a (running; clearance " + fmt("%+.3f", clearance) + " m vs standing hip)";
+  return clearance < 0 ? "yes" : "no";
+}
+
 // Burkett's terminal-impact findings, per participant (swing/terminal_impact.h); "" if the
 // check did not run.
 std::string formatTerminalImpactSection(const SweepResults& results) {
@@ -520,7 +530,7 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     md += mdRow({ps.name, fmt("%.3f", b.lowering), fmt("%.4f", b.result.swingTime),
                  pub ? fmt("%.3f", pub->predictedBestLowering) : "-",
                  pub ? fmt("%+.3f", b.lowering - pub->predictedBestLowering) : "-", b.result.bounce ? "yes" : "no",
-                 b.result.minToeClearance < 0 ? "yes" : "no"});
+                 toeStrikeCell(participantNamed(study, ps.name), b.result.minToeClearance)});
   }
   md += "\n";
   md += formatTerminalImpactSection(results);
@@ -600,9 +610,14 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     md += "- Toe-off: hip " + fmt("%.0f", p.initial.hipFlexion * kRadToDeg) + " deg, knee " +
           fmt("%.0f", p.initial.kneeFlexion * kRadToDeg) + " deg, zero velocities (Burkett). Knee friction Tc below 4 deg; "
           "Hunt-Crossley hyperextension stop at full extension.\n";
-    md += "- Toe clearance: hip height = 0.530 x standing height (Winter's anthropometry, greater trochanter); the "
-          "lowest of ankle and toe during swing. A negative value means the foot would strike the ground with the "
-          "hip at standing height (in running the hip is higher in flight, so this is conservative).\n";
+    md += "- Toe clearance: the lowest of ankle and toe from peak knee flexion to the swing end, with the hip at 0.530 x "
+          "standing height (Winter's anthropometry, greater trochanter)" +
+          (p.toeClearance.hipRiseGiven ? " + " + fmt("%.3f", p.toeClearance.hipRise) + " m (the stated hip rise)" : std::string()) +
+          (p.toeClearance.alarmHolds()
+               ? ". A negative value means the toe strikes the ground.\n"
+               : ". Running: the body is in flight during much of the swing and the hip is higher by an amount not given "
+                 "(toe_clearance.hip_rise_m), so the clearance is relative to standing hip height and no strike is "
+                 "flagged.\n");
     const double converged = calcConvergedAccuracy(study.swing.integrator);
     md += std::string("- Integrator: ") + integratorName(study.swing.integrator) + ", accuracy " +
           fmt("%g", study.swing.accuracy) +

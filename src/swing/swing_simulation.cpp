@@ -20,7 +20,9 @@ namespace swingsim {
 
 using namespace SimTK;
 
-double calcHipHeight(const Participant& p) { return 0.530 * p.height; }
+double calcHipHeight(const Participant& p) {
+  return 0.530 * p.height + (p.toeClearance.hipRiseGiven ? p.toeClearance.hipRise : 0.0);
+}
 
 namespace {
 

@@ -126,8 +126,9 @@ struct SwingSetup {
   AddedMass added;
 };
 
-/// Standing hip height used for toe clearance: 0.530 x height (Winter 2009, Table 4.1
-/// segment lengths: greater trochanter at 0.530 H).
+/// Hip height used for toe clearance: 0.530 x height (Winter 2009, Table 4.1 segment
+/// lengths: greater trochanter at 0.530 H), plus the participant's stated hip rise
+/// (ToeClearanceRule::hipRise) if any.
 double calcHipHeight(const Participant& p);
 
 /// The loosest accuracy at which this integrator's swing time is converged to 0.1 ms in the

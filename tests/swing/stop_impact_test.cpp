@@ -83,7 +83,9 @@ TEST(StopImpact, RestitutionOnTheWholeChainIsNearlyTheConfiguredOne) {
     for (double e : {0.1, 0.3, 0.6, 0.9}) {
       const double ratio = integrateChainImpact(e, v).exitRate / v;
       std::printf("chain impact: e %.2f at %4.1f rad/s: knee leaves at %.3f x the impact rate\n", e, v, ratio);
-      if (e >= 0.6) EXPECT_NEAR(ratio, e, 0.05 * e) << "e " << e << ", " << v << " rad/s";
+      if (e >= 0.6) {
+        EXPECT_NEAR(ratio, e, 0.05 * e) << "e " << e << ", " << v << " rad/s";
+      }
       EXPECT_GT(ratio, previous) << "a livelier stop returns more, e " << e << ", " << v << " rad/s";
       previous = ratio;
     }
