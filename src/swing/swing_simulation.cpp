@@ -256,6 +256,12 @@ void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, doubl
   }
 }
 
+// The loose settle dwell (SwingOptions::dwellAccuracyFactor): never looser than this, and
+// redone tightly if the knee rises to within this margin of the zone's edge (rad; the loose
+// integration's angle error is about the accuracy, 1e-3 rad, eight times smaller).
+constexpr double kLoosestDwellAccuracy = 1e-3;
+constexpr double kLooseDwellMargin = 0.5 * kDegToRad;
+
 // Time crossing resolution of the fast path, s: far below the 0.1 ms the swing time is
 // converged to, and far above round-off in t.
 constexpr double kCrossingTimeTol = 1e-12;
@@ -521,8 +527,26 @@ class DormandPrinceStepper final : public SwingStepper {
     return dp_->getTime() < tLimit;
   }
   const State& getState() override { return ode_.realizeAt(dp_->getTime(), dp_->getState()); }
-  int getNumSteps() const override { return static_cast<int>(dp_->getNumSteps()); }
+  int getNumSteps() const override { return stepsBefore_ + static_cast<int>(dp_->getNumSteps()); }
   int getNumRealizations() const override { return static_cast<int>(ode_.getNumRealizations()); }
+
+  /// Remembers the current step end (time and state).
+  void saveCheckpoint() {
+    checkpointTime_ = dp_->getTime();
+    checkpoint_.assign(dp_->getState(), dp_->getState() + ode_.numStates());
+  }
+  /// Goes on from the current step end at a new accuracy.
+  void changeAccuracy(double accuracy) {
+    stepsBefore_ += static_cast<int>(dp_->getNumSteps());
+    std::copy(dp_->getState(), dp_->getState() + ode_.numStates(), y_.begin());
+    start(dp_->getTime(), accuracy);
+  }
+  /// Goes back to the checkpoint and on from there at `accuracy`.
+  void restoreCheckpoint(double accuracy) {
+    stepsBefore_ += static_cast<int>(dp_->getNumSteps());
+    y_ = checkpoint_;
+    start(checkpointTime_, accuracy);
+  }
 
  private:
   void start(double t, double accuracy) {
@@ -536,6 +560,9 @@ class DormandPrinceStepper final : public SwingStepper {
   std::vector<double> y_;
   std::vector<double> breakpoints_;  // s
   std::unique_ptr<DormandPrince> dp_;
+  int stepsBefore_ = 0;
+  double checkpointTime_ = 0;
+  std::vector<double> checkpoint_;
 };
 
 }  // namespace
@@ -623,8 +650,11 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
 
   const State initial = leg.makeInitialState(p.initial);
   std::unique_ptr<SwingStepper> stepper;
+  DormandPrinceStepper* dormandPrince = nullptr;
   if (options.integrator == SwingIntegrator::kDormandPrince) {
-    stepper = std::make_unique<DormandPrinceStepper>(system, initial, options.accuracy, p.hipMoment.calcBreakpoints());
+    auto dp = std::make_unique<DormandPrinceStepper>(system, initial, options.accuracy, p.hipMoment.calcBreakpoints());
+    dormandPrince = dp.get();
+    stepper = std::move(dp);
   } else {
     stepper = std::make_unique<SimbodyStepper>(system, initial, options, rule.timeLimit);
   }
@@ -658,6 +688,21 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   }
 
   double candidateTime = -1;  // the swing end candidate whose realizations were counted
+  // The loose settle dwell (SwingOptions::looseDwellAccuracy): what to go back to if the
+  // knee comes near the zone's edge while the dwell is integrated loosely.
+  struct DwellCheckpoint {
+    double candidateTime = -1;  // the candidate it was taken for (-1: none)
+    SwingLog log{0};
+    std::optional<StopImpactTracker> impacts;
+    StepEnd previous{};
+    std::size_t samples = 0;
+    double nextSample = 0;
+  } checkpoint;
+  bool loose = false;
+  double tightenedFor = -1;  // a candidate already redone tightly: no second loose try
+  const double looseAccuracy = std::min(options.accuracy * options.dwellAccuracyFactor, kLoosestDwellAccuracy);
+  const bool looseDwellAllowed = dormandPrince != nullptr && !trackEnergy && looseAccuracy > options.accuracy;
+  const double zone = rule.zoneOfStability;
   const auto wallStart = std::chrono::steady_clock::now();
   // What to change when a budget runs out: the same advice for both budgets.
   const auto overBudget = [&](const std::string& what, const State& s) {
@@ -685,7 +730,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                        s);
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count() > options.maxWallSeconds)
       throw overBudget(formatNumber(options.maxWallSeconds) + " s of computing (the limit for one swing; a normal swing takes milliseconds)", s);
-    const StepEnd now = readStepEnd(leg, s, trackEnergy);
+    StepEnd now = readStepEnd(leg, s, trackEnergy);
     if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) {
       throw RunError(p.name + ": the simulation diverged " + describeState(leg, s) +
                      " (likely cause: an unphysical input such as a near-zero inertia)");
@@ -694,7 +739,6 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     log.confirmUntil(now.t);
     if (impacts) impacts->onStep(previous, now);
     if (now.t > previous.t) appendSamples(previous, now, nextSample, options.sampleInterval, geometry, hipHeight, tr);
-    previous = now;
     // The hip stop is soft (Hunt-Crossley): a thigh far past it means the inputs are wrong,
     // and a swing "ending" out there would look like a result.
     constexpr double kHipRangeSlack = 2 * kDegToRad;  // rad; plausible hip moments press the stop far less
@@ -704,12 +748,51 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                      deg(p.hipRange.minFlexion) + " to " + deg(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
                      " (likely cause: a hip moment far too large for this leg, or a hip_range that excludes the swing)");
     }
+    if (loose) {
+      // The knee back near the zone's edge (or out of it) during the loose dwell: a bounce may
+      // decide the swing end, so go back to the entry and integrate the dwell tightly.
+      // (The knee enters the zone falling: only where it rises again does the edge matter.)
+      double highest = now.kneeRate > 0 ? now.knee : -1e9;
+      if (previous.kneeRate > 0 && now.kneeRate < 0) {
+        const double h = now.t - previous.t;
+        const double top = findRoot([&](double x) { return calcHermite(previous.kneeRate, previous.kneeAcc, now.kneeRate, now.kneeAcc, h, x); }, h);
+        highest = std::max(highest, calcHermite(previous.knee, previous.kneeRate, now.knee, now.kneeRate, h, top));
+      }
+      if (highest > zone - kLooseDwellMargin || !log.candidate) {
+        log = checkpoint.log;
+        impacts = checkpoint.impacts;
+        now = checkpoint.previous;
+        for (auto* v : {&tr.time, &tr.hipFlexion, &tr.kneeFlexion, &tr.hipFlexionRate, &tr.kneeFlexionRate, &tr.hipMoment,
+                        &tr.kneeMoment, &tr.kneeX, &tr.kneeY, &tr.ankleX, &tr.ankleY, &tr.toeX, &tr.toeY})
+          v->resize(checkpoint.samples);
+        nextSample = checkpoint.nextSample;
+        dormandPrince->restoreCheckpoint(options.accuracy);
+        tightenedFor = checkpoint.candidateTime;
+        loose = false;
+        ++result.looseDwellRetries;
+      }
+    }
+    previous = now;
     if (log.candidate && log.candidateTime != candidateTime) {
       // The realizations up to the step of the (latest) entry into the zone.
       candidateTime = log.candidateTime;
       result.realizationsToEnd = stepper->getNumRealizations();
     }
     if (log.ended) break;
+    if (looseDwellAllowed && !loose && log.candidate && log.candidateTime != tightenedFor &&
+        log.candidateTime != checkpoint.candidateTime) {
+      // The knee has entered the zone: integrate the dwell loosely from here, keeping what is
+      // needed to come back.
+      checkpoint.candidateTime = log.candidateTime;
+      checkpoint.log = log;
+      checkpoint.impacts = impacts;
+      checkpoint.previous = now;
+      checkpoint.samples = tr.size();
+      checkpoint.nextSample = nextSample;
+      dormandPrince->saveCheckpoint();
+      dormandPrince->changeAccuracy(looseAccuracy);
+      loose = true;
+    }
     if (!log.ended && (now.t >= rule.timeLimit - 1e-12 || !more)) {
       std::string cause;
       if (!log.thighReached)

@@ -55,6 +55,15 @@ struct SwingOptions {
   /// with kDormandPrince). Both give the same swing times to the converged tolerance (tests/swing/fast_path_test.cpp).
   bool simbodyEvents = false;
   double eventWindow = 1e-5;        ///< s, localization window of the plain path
+  /// Fast path (Dormand-Prince) only: once the knee has entered the zone, the settle dwell
+  /// that confirms the end (SwingEndRule::settleDwell; the knee meets its stop there, about
+  /// two thirds of a swing's realizations at full accuracy) is integrated at accuracy x this
+  /// factor, no looser than 1e-3. The swing time, peak and clearance are found before it. If
+  /// the knee rises to within 0.5 deg of the zone's edge during the loose dwell (a bounce
+  /// may decide the end), the swing goes back to the entry and integrates the dwell at full
+  /// accuracy (SwingResult::looseDwellRetries). Off with trackImpactEnergy (the impact
+  /// bookkeeping wants full accuracy). 1 = no loose dwell.
+  double dwellAccuracyFactor = 100;
   /// Energy bookkeeping of each stop impact (StopImpact::work): integrates the work of every
   /// knee law part and of the hip as extra states (a little slower; off in sweeps).
   bool trackImpactEnergy = false;
@@ -116,6 +125,7 @@ struct SwingResult {
   int steps = 0;                   ///< integrator steps taken
   int realizations = 0;            ///< system realizations the integrator asked for
   int realizationsToEnd = 0;       ///< of which up to the step where the swing ended (the rest: the settle dwell)
+  int looseDwellRetries = 0;       ///< loose settle dwells redone at full accuracy (SwingOptions::dwellAccuracyFactor)
 };
 
 /// The participant-level inputs one swing needs, after loading.

@@ -85,6 +85,7 @@ TEST(FastPath, RealizationCountersSplitTheSwingFromTheSettleDwell) {
     EXPECT_GT(r.realizationsToEnd, 50) << integratorName(o.integrator);
     EXPECT_LT(r.realizationsToEnd, r.realizations) << integratorName(o.integrator) << ": the dwell costs some";
     EXPECT_GT(r.steps, 10);
+    EXPECT_EQ(r.looseDwellRetries, 0) << "P1 does not bounce";
   }
   // No dwell at all: everything is to the end.
   setup.participant.swingEnd.settleDwell = 0;
@@ -155,6 +156,8 @@ TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
       EXPECT_TRUE(plain.bounce) << file;
       EXPECT_EQ(fast.bounce, plain.bounce) << file;
       EXPECT_EQ(fast.bounces, plain.bounces) << file;
+      // The fast path began the settle dwell loosely and went back for the bounce.
+      EXPECT_GE(fast.looseDwellRetries, 1) << file;
       EXPECT_NEAR(fast.swingTime, plain.swingTime, kConvergedTol) << file;
       ASSERT_EQ(fast.events.size(), plain.events.size()) << file;
       for (std::size_t i = 0; i < fast.events.size(); ++i) {
