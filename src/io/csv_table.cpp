@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/output_files.h"
 
 namespace swingsim {
 
@@ -67,8 +68,27 @@ CsvTable readCsvStream(std::istream& in, const std::string& path, const CsvSpec&
 
   std::string line;
   bool first = true;
+  std::size_t bytesRead = 0;
+  int linesRead = 0;
   auto nextLine = [&](std::string& out) {
-    if (!std::getline(in, out)) return false;
+    // std::getline would read an endless line (a file with no newline) whole: read at most
+    // spec.maxLineBytes, and at most spec.maxBytes in all.
+    out.clear();
+    std::streambuf* buffer = in.rdbuf();
+    bool any = false;
+    for (int c = buffer->sbumpc(); c != std::char_traits<char>::eof(); c = buffer->sbumpc()) {
+      any = true;
+      if (c == '\n') break;
+      out.push_back(static_cast<char>(c));
+      if (out.size() > spec.maxLineBytes)
+        throw InputError(path + ":" + std::to_string(linesRead + 1) + ": line longer than " + formatByteCount(spec.maxLineBytes) +
+                         " (the limit; is this a CSV file with line breaks?)");
+    }
+    if (!any) return false;
+    ++linesRead;
+    bytesRead += out.size() + 1;
+    if (bytesRead > spec.maxBytes)
+      throw InputError(path + ": larger than " + formatByteCount(spec.maxBytes) + " (the limit; split the file or resample it)");
     if (first && out.size() >= 3 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
     first = false;
     if (out.find('\0') != std::string::npos) throw notText();

@@ -32,6 +32,10 @@ struct CsvSpec {
   /// are read line by line, so a larger file is refused after maxRows rows, at about that
   /// memory, never loaded whole.
   std::size_t maxRows = 2000000;
+  /// Refuse a line longer than this (a file without line breaks is read no further).
+  std::size_t maxLineBytes = std::size_t{1} << 20;
+  /// Refuse a file larger than this (2,000,000 rows of 3 numbers fit).
+  std::size_t maxBytes = std::size_t{128} << 20;
 };
 
 /// Reads `path` according to `spec`. Throws InputError with `path:line: column: ...`.

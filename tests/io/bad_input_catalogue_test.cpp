@@ -419,6 +419,23 @@ TEST(BadInputCatalogue, CsvJustUnderTheRowLimitReads) {
   }
 }
 
+// A file with no line breaks (a binary export, one endless line of numbers) is refused once a
+// line passes the limit, not read whole; so is a file past the byte limit.
+TEST(BadInputCatalogue, CsvEndlessLineAndOversizedFileAreRefusedAtTheLimit) {
+  const std::string endless = "time_s,position_m,force_N\n" + std::string(3u << 20, '7');
+  EXPECT_THAT(benchError("endless.csv", endless), HasSubstr("endless.csv:2: line longer than 1 MiB (the limit"));
+  CsvSpec spec;
+  spec.required = {"t"};
+  spec.maxBytes = 20;
+  EXPECT_EQ(parseCsv("t\n1\n2\n3\n", "small.csv", spec).rows(), 3u);
+  try {
+    parseCsv("t\n1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n", "big.csv", spec);
+    ADD_FAILURE() << "read past maxBytes";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("big.csv: larger than 20 bytes (the limit"));
+  }
+}
+
 TEST(BadInputCatalogue, CsvMissingFileAndDirectory) {
   EXPECT_THAT(benchError("../no/such/dir/x.csv", ""), HasSubstr("cannot"));
   try {
