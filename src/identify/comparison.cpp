@@ -79,6 +79,21 @@ std::string describeResidualStructure(const Comparison& cmp, double effectiveSam
       binNote = "; the binned mean residual departs most from zero at " + var.label + " = " +
                 fmt("%.3g", b.center[b.maxBin]) + " (mean " + fmt("%.3g", b.mean[b.maxBin]) + " " + cmp.unit + ", " +
                 fmt("%.1f", b.maxSignificance) + " x its 99 % half-width)";
+      if (b.maxSignificance > 1) {
+        // Where in the state it sits: the run of bins with a nonzero mean of that sign.
+        const bool fromBottom = b.runFirst == 0, toTop = b.runLast + 1 == b.center.size();
+        const std::string lo = fmt("%.3g", b.lower[b.runFirst]), hi = fmt("%.3g", b.upper[b.runLast]);
+        std::string where;
+        if (fromBottom && toTop)
+          where = "over the whole range of " + var.label;
+        else if (toTop)
+          where = "only above " + var.label + " = " + lo;
+        else if (fromBottom)
+          where = "only below " + var.label + " = " + hi;
+        else
+          where = "only for " + var.label + " from " + lo + " to " + hi;
+        binNote += "; the mean residual is " + std::string(b.mean[b.maxBin] > 0 ? "positive" : "negative") + " (99 %) " + where;
+      }
     }
   }
   return out + binNote;

@@ -104,6 +104,8 @@ BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std
     const double sd = std::sqrt(ss / (m - 1));
     const double half = kZ99 * sd / std::sqrt(std::max(1.0, m * ratio));
     out.center.push_back(sv / m);
+    out.lower.push_back(variable[order[lo]]);
+    out.upper.push_back(variable[order[hi - 1]]);
     out.mean.push_back(mean);
     out.halfWidth.push_back(half);
     const double sig = half > 0 ? std::fabs(mean) / half : 0.0;
@@ -111,6 +113,16 @@ BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std
       out.maxSignificance = sig;
       out.maxBin = out.center.size() - 1;
     }
+  }
+  // The run of significant bins of the same sign around the most significant one.
+  if (out.maxSignificance > 1) {
+    const auto significantLike = [&](std::size_t k) {
+      return out.halfWidth[k] > 0 && std::fabs(out.mean[k]) > out.halfWidth[k] &&
+             (out.mean[k] > 0) == (out.mean[out.maxBin] > 0);
+    };
+    out.runFirst = out.runLast = out.maxBin;
+    while (out.runFirst > 0 && significantLike(out.runFirst - 1)) --out.runFirst;
+    while (out.runLast + 1 < out.center.size() && significantLike(out.runLast + 1)) ++out.runLast;
   }
   return out;
 }

@@ -42,11 +42,16 @@ double calcChiSquaredQuantile(double p, double dof);
 /// uses the effective sample size (the within-bin spread / sqrt(count * nEff / n)).
 struct BinnedResidual {
   std::vector<double> center;     ///< mean of the variable in the bin
+  std::vector<double> lower, upper;  ///< smallest and largest value of the variable in the bin
   std::vector<double> mean;       ///< mean residual
   std::vector<double> halfWidth;  ///< 99 % confidence half-width
   /// Largest |mean| / halfWidth over the bins (> 1: that bin's mean is not zero at 99 %).
   double maxSignificance = 0;
   std::size_t maxBin = 0;
+  /// The contiguous run of bins around maxBin whose means are nonzero at 99 % with maxBin's
+  /// sign (runFirst..runLast, bin indices; both maxBin if maxSignificance <= 1): where in the
+  /// variable's range the residual sits.
+  std::size_t runFirst = 0, runLast = 0;
 };
 BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std::vector<double>& residual,
                                   int bins, double nEffOverN);

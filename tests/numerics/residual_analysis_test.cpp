@@ -39,5 +39,28 @@ TEST(ResidualAnalysis, WhiteNoisePassesAndAStrongAr1MisfitFails) {
   EXPECT_NEAR(calcEffectiveSampleSize({ar1}), 4000 * 0.1 / 1.9, 60);
 }
 
+// A residual that is nonzero only above 55 (of a variable spread over 0..80): the run of
+// significant bins starts near 55 and reaches the top; below it the means are noise.
+TEST(ResidualAnalysis, BinnedRunFindsWhereInTheRangeTheResidualSits) {
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.5);
+  std::uniform_real_distribution<double> spread(0.0, 80.0);
+  std::vector<double> variable, residual;
+  for (int i = 0; i < 4000; ++i) {
+    const double x = spread(rng);
+    variable.push_back(x);
+    residual.push_back((x > 55 ? -1.0 : 0.0) + noise(rng));
+  }
+  const BinnedResidual b = calcBinnedResidual(variable, residual, 16, 1.0);
+  ASSERT_GT(b.maxSignificance, 1);
+  EXPECT_LT(b.mean[b.maxBin], 0);
+  EXPECT_EQ(b.runLast, b.center.size() - 1);
+  EXPECT_NEAR(b.lower[b.runFirst], 55, 5.0 + 1e-9);  // a bin is 5 wide
+  for (std::size_t k = 0; k < b.center.size(); ++k) {
+    EXPECT_LE(b.lower[k], b.center[k]);
+    EXPECT_GE(b.upper[k], b.center[k]);
+  }
+}
+
 }  // namespace
 }  // namespace swingsim
