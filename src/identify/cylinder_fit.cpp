@@ -58,11 +58,12 @@ LinearFit fitLeastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
   if (fit.rank == p && n > p) {
     const double s2 = rss / static_cast<double>(n - p);
     const Eigen::MatrixXd V = svd.matrixV();
-    for (Eigen::Index j = 0; j < p; ++j) {
-      double var = 0;
-      for (Eigen::Index k = 0; k < p; ++k) var += V(j, k) * V(j, k) / (sv(k) * sv(k));
-      fit.standardErrors[static_cast<std::size_t>(j)] = std::sqrt(s2 * var) / scale(j);
-    }
+    // (Xs'Xs)^-1 = V S^-2 V'; the column scaling cancels in the correlation.
+    const Eigen::MatrixXd inverse = V * sv.cwiseAbs2().cwiseInverse().asDiagonal() * V.transpose();
+    for (Eigen::Index j = 0; j < p; ++j)
+      fit.standardErrors[static_cast<std::size_t>(j)] = std::sqrt(s2 * inverse(j, j)) / scale(j);
+    const Eigen::VectorXd d = inverse.diagonal().cwiseSqrt().cwiseInverse();
+    fit.correlation = d.asDiagonal() * inverse * d.asDiagonal();
   }
   return fit;
 }
@@ -235,6 +236,12 @@ LinearFit regressWithinBounds(const MauchCylinderParams& params, const std::vect
       for (std::size_t k = 0; k < freeCols.size(); ++k)
         out.standardErrors[static_cast<std::size_t>(freeCols[k])] = fit.standardErrors[k];
       out.rank += static_cast<int>(p - static_cast<Eigen::Index>(freeCols.size()));
+      if (fit.correlation.size() > 0) {
+        out.correlation = Eigen::MatrixXd::Zero(p, p);
+        for (std::size_t a = 0; a < freeCols.size(); ++a)
+          for (std::size_t b = 0; b < freeCols.size(); ++b)
+            out.correlation(freeCols[a], freeCols[b]) = fit.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+      }
       return out;
     }
   }
@@ -409,7 +416,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
     setMauchCoefficientVector(current, best.coefficients);
   }
   std::vector<double> values = best.coefficients, errors = best.standardErrors;
-  Eigen::MatrixXd correlation;
+  Eigen::MatrixXd correlation = best.correlation;
   std::vector<BoundedParameter> all;
   for (std::size_t j = 0; j < names.size(); ++j) {
     const double se = std::isfinite(best.standardErrors[j]) ? best.standardErrors[j] : 0.0;
@@ -468,7 +475,8 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
                              "): records that differ from the training one there (another speed, another "
                              "hyperextension hold) may fit worse; train on more than one speed to pin it down");
   }
-  if (correlation.size() > 0) {
+  out.correlation = correlation;
+  if (correlation.size() > 0 && out.switchesFitted) {
     for (const auto& [i, j] : findCollinearPairs(correlation, kCollinearLimit))
       out.collinear.push_back({all[static_cast<std::size_t>(i)].name, all[static_cast<std::size_t>(j)].name, correlation(i, j)});
   }

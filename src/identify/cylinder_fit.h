@@ -24,6 +24,9 @@ struct LinearFit {
   double conditionNumber = 0;
   double residualRms = 0;  ///< sqrt(RSS / n)
   std::size_t samples = 0;
+  /// Correlation of the coefficients, from (X'X)^-1 (p x p; empty when rank-deficient).
+  /// Coefficients held on a bound (regressWithinBounds) have zero correlation with the rest.
+  Eigen::MatrixXd correlation;
 };
 
 /// Solves by singular value decomposition of the column-scaled X (rank-revealing; the
@@ -87,6 +90,9 @@ struct CylinderFit {
   /// constants), with standard errors from the Jacobian at the solution.
   std::vector<FittedConstant> constants;
   std::vector<CollinearPair> collinear;  ///< |r| > kCollinearLimit, strongest first
+  /// Correlation of `constants` (same order): of the regression's coefficients at fixed
+  /// switch constants, of every constant when they are fitted. Empty if not computable.
+  Eigen::MatrixXd correlation;
   std::vector<std::string> warnings;
 };
 

@@ -199,12 +199,26 @@ PlantFit CylinderPlant::fit(const PlantModel& model) const {
   s.trainRmse = std::sqrt(s.rss / static_cast<double>(s.samples));
   s.notes = fitted.warnings;
   for (const auto& d : validate_) s.validationRmse.push_back(rmsOf(residualOf(cyl, d)));
+  // Every fitted constant by name (an added effect's as "effect.constant", the base model's
+  // without a dot) with their correlation: the engine's confound rule reads them.
+  for (const auto& c : fitted.constants) {
+    std::string name = c.name;
+    std::replace(name.begin(), name.end(), '.', '_');
+    s.parameterNames.push_back(name);
+  }
   for (const auto& descriptor : effectTable()) {
     if (descriptor.plant != PlantKind::kCylinder || !hasEffect(fitted.params, descriptor.id)) continue;
     std::vector<double> se;
-    for (int col : effectColumns(fitted.params, descriptor.id))
+    for (int col : effectColumns(fitted.params, descriptor.id)) {
       se.push_back(fitted.regression.standardErrors[static_cast<std::size_t>(col)]);
+      s.parameterNames[static_cast<std::size_t>(col)] = descriptor.name + "." + s.parameterNames[static_cast<std::size_t>(col)];
+    }
     s.effectErrors.emplace_back(descriptor.id, se);
+  }
+  if (fitted.correlation.rows() == static_cast<Eigen::Index>(s.parameterNames.size())) {
+    s.correlation = fitted.correlation;
+  } else {
+    s.parameterNames.clear();  // no correlation to go with them
   }
   return s;
 }

@@ -254,3 +254,38 @@ TEST(CylinderDiagnosis, UnknownCandidateAndMissingValidationAreInputErrors) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// The cylinder plant names every fitted constant (an added effect's as "effect.constant")
+// and gives their correlation, so the engine's confound rule applies to the cylinder too.
+TEST(CylinderPlantFit, NamesEveryConstantAndGivesTheirCorrelation) {
+  const MauchCylinderParams base = model("mauch-4phase.yaml");
+  MauchCylinderParams truth = base;
+  truth = addCylinderEffect(truth, EffectId::kOrificeQuadratic, 0.0);
+  truth.effects.orificeCoefficient = 8000;
+  const Data d = makeData(truth, 41);
+  const CylinderPlant plant(base, d.train, d.validate);
+  const PlantFit fit = plant.fit(*plant.addEffect(CylinderModel(base), EffectId::kOrificeQuadratic, 0.0));
+  const auto n = static_cast<Eigen::Index>(fit.parameterNames.size());
+  ASSERT_EQ(n, static_cast<Eigen::Index>(3 * base.phases + 1));
+  ASSERT_EQ(fit.correlation.rows(), n);
+  int effectParameters = 0;
+  for (const auto& name : fit.parameterNames) {
+    if (name.find('.') == std::string::npos) continue;
+    EXPECT_EQ(name.rfind("orifice_quadratic.", 0), 0u) << name;
+    ++effectParameters;
+  }
+  EXPECT_EQ(effectParameters, 1);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    EXPECT_NEAR(fit.correlation(i, i), 1.0, 1e-9);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      EXPECT_NEAR(fit.correlation(i, j), fit.correlation(j, i), 1e-9);
+      EXPECT_LE(std::abs(fit.correlation(i, j)), 1.0 + 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace swingsim
