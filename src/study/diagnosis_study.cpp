@@ -5,8 +5,8 @@
 #include "identify/swing_plant.h"
 #include "io/bench_csv.h"
 #include "io/knee_model_loader.h"
+#include "io/motion_file.h"
 #include "io/participant_loader.h"
-#include "io/swing_record_csv.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
 
@@ -36,6 +36,43 @@ void serialize(A& a, EffectSelectionSettings& st) {
   a.optionalNumber("explained_noise_ratio", st.explainedNoiseRatio, [](double v) { return inRange(v, 1, 10, "must be in [1, 10]"); });
 }
 
+namespace {
+
+/// An optional number that is written only when set (no default stands for "absent").
+template <class A>
+void optionalSeconds(A& a, const char* key, std::optional<double>& v, const ValueCheck& check) {
+  bool present = v.has_value();
+  if constexpr (A::kReading) present = a.has(key);
+  if (!present) return;
+  double x = v.value_or(0);
+  a.optionalNumber(key, x, check);
+  v = x;
+}
+
+std::string mustBeSign(double v) { return v == 1 || v == -1 ? "" : "must be 1 or -1"; }
+std::string mustBeOffset(double deg) { return inRange(deg, -180, 180, "must be in [-180, 180] deg"); }
+
+}  // namespace
+
+/// The motion_columns map: which columns of a .mot/.sto file make a swing record.
+template <class A>
+void serialize(A& a, MotionColumns& c) {
+  a.text("hip", c.hip);
+  a.text("knee", c.knee);
+  a.optionalText("hip_moment", c.hipMoment);
+  a.optionalNumber("hip_sign", c.hipSign, mustBeSign);
+  a.optionalNumber("knee_sign", c.kneeSign, mustBeSign);
+  a.optionalAngle("hip_offset_deg", c.hipOffset, mustBeOffset);
+  a.optionalAngle("knee_offset_deg", c.kneeOffset, mustBeOffset);
+  optionalSeconds(a, "toe_off_s", c.toeOffTime, {});
+  optionalSeconds(a, "heel_contact_s", c.heelContactTime, {});
+  if (c.toeOffTime && c.heelContactTime)
+    a.require(*c.heelContactTime > *c.toeOffTime, "heel_contact_s",
+              "must be after toe_off_s (" + formatNumber(*c.toeOffTime) + " s)", [&] { return formatNumber(*c.heelContactTime); });
+  // 10 us to 100 ms: a bench's 100 kHz at most, and a swing of 0.4 s still gets 5 samples.
+  optionalSeconds(a, "resample_s", c.resampleInterval, [](double v) { return inRange(v, 1e-5, 0.1, "must be in [1e-5, 0.1] s"); });
+}
+
 template <class A>
 void serialize(A& a, DiagnosisStudy& s) {
   a.choice("kind", s.plant, {{"cylinder-diagnosis", PlantKind::kCylinder}, {"swing-diagnosis", PlantKind::kSwing}});
@@ -48,6 +85,22 @@ void serialize(A& a, DiagnosisStudy& s) {
   a.require(!s.train.empty(), "train", "expected at least one CSV", [] { return std::string("an empty list"); });
   a.require(!s.validate.empty(), "validate", "expected at least one CSV (the acceptance rule needs held-out data)",
             [] { return std::string("an empty list"); });
+  if (s.plant == PlantKind::kSwing) {
+    bool hasMotionColumns = s.motionColumns.has_value();
+    MotionColumns motion = s.motionColumns.value_or(MotionColumns{});
+    a.optionalMap("motion_columns", motion, hasMotionColumns);
+    if (hasMotionColumns) s.motionColumns = motion;
+    for (const auto& [key, list] : {std::pair{"train", &s.train}, std::pair{"validate", &s.validate}})
+      for (const auto& p : *list) {
+        if (!isMotionFile(p)) continue;
+        a.require(hasMotionColumns, key,
+                  "an OpenSim motion file needs the study's motion_columns map ({hip: NAME, knee: NAME, hip_moment: NAME}; "
+                  "README \"File formats\")", [&] { return p; });
+        a.require(!motion.hipMoment.empty(), "motion_columns",
+                  "hip_moment: expected the label of the hip moment column (N m), the drive the swing diagnosis needs",
+                  [] { return std::string("no hip_moment key"); });
+      }
+  }
   std::vector<std::string> stems;
   for (const auto* list : {&s.train, &s.validate})
     for (const auto& p : *list) {
@@ -110,8 +163,12 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
   base.participant = loadParticipant(study.participantPath);
   base.knee = loadKneeModel(study.baseModelPath);
   std::vector<SwingRecord> train, validate;
-  for (const auto& p : study.train) train.push_back(readSwingRecord(p));
-  for (const auto& p : study.validate) validate.push_back(readSwingRecord(p));
+  for (const auto* paths : {&study.train, &study.validate})
+    for (const auto& p : *paths) {
+      SwingRecord r = readSwingRecordFile(p, study.motionColumns);
+      if (r.hipMoment.empty()) throw InputError(p + ": no hip moment column (motion_columns: hip_moment), which the swing diagnosis needs");
+      (paths == &study.train ? train : validate).push_back(std::move(r));
+    }
   return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
 }
 

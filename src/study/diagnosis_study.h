@@ -7,14 +7,17 @@
 //   whiteness_lags, measurement_noise (unit of the data; default: estimated from each
 //   record), explained_noise_ratio (1.2)} (optional; frozen here before the run).
 //   cylinder-diagnosis only: fit_switches (false), plot_seconds (2).
-//   swing-diagnosis only: participant (participant YAML).
+//   swing-diagnosis only: participant (participant YAML); motion_columns (required when a
+//   train/validate file is an OpenSim .mot/.sto: io/motion_file.h, MotionColumns).
 // loadDiagnosisPlant reads the records and models a study names and builds its plant.
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "identify/diagnosis_engine.h"
+#include "io/motion_file.h"
 
 namespace swingsim {
 
@@ -25,8 +28,9 @@ struct DiagnosisStudy {
   std::string path, name, description;
   std::string baseModelPath;          ///< resolved knee model YAML
   std::string participantPath;        ///< resolved participant YAML (swing)
-  std::vector<std::string> train;     ///< resolved record CSV paths
-  std::vector<std::string> validate;  ///< resolved record CSV paths
+  std::vector<std::string> train;     ///< resolved record paths (CSV, or .mot/.sto for a swing)
+  std::vector<std::string> validate;  ///< resolved record paths (CSV, or .mot/.sto for a swing)
+  std::optional<MotionColumns> motionColumns;  ///< swing: how .mot/.sto records are read
   EffectSelectionSettings settings;
   bool fitSwitches = false;           ///< cylinder: refit switch widths and xhy before the baseline
   double plotSeconds = 2.0;           ///< cylinder: s of each record shown in residual-vs-time plots

@@ -1,0 +1,325 @@
+#include "io/motion_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <tuple>
+
+#include "core/input_error.h"
+#include "core/output_files.h"
+#include "core/units.h"
+#include "io/swing_record_csv.h"
+
+namespace swingsim {
+
+std::size_t MotionTable::index(const std::string& label) const {
+  auto it = std::find(labels.begin(), labels.end(), label);
+  if (it != labels.end()) return static_cast<std::size_t>(it - labels.begin());
+  // Name what is there: OpenSim files have dozens of coordinates; list at most 60.
+  constexpr std::size_t kMaxListed = 60;
+  std::string available;
+  for (std::size_t i = 0; i < labels.size() && i < kMaxListed; ++i) available += (i ? ", " : "") + labels[i];
+  if (labels.size() > kMaxListed) available += ", ... (" + std::to_string(labels.size() - kMaxListed) + " more)";
+  throw InputError(path + ":" + std::to_string(labelLine) + ": " + label + ": column is missing (available: " + available + ")");
+}
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+bool isBlank(const std::string& s) { return s.find_first_not_of(" \t") == std::string::npos; }
+
+std::vector<std::string> splitWhitespace(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  for (char c : line) {
+    if (c == ' ' || c == '\t') {
+      if (!cell.empty()) cells.push_back(cell);
+      cell.clear();
+    } else {
+      cell.push_back(c);
+    }
+  }
+  if (!cell.empty()) cells.push_back(cell);
+  return cells;
+}
+
+/// The lines of a text one at a time, without line ends (LF or CRLF) and without a leading
+/// UTF-8 BOM; `number` is the 1-based line number of the last line taken.
+class LineCursor {
+ public:
+  LineCursor(const std::string& text, const std::string& path) : text_(text) {
+    if (text.find('\0') != std::string::npos) throw InputError(path + ": not a text motion file (contains NUL bytes)");
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;
+  }
+  bool next(std::string& line) {
+    if (pos_ >= text_.size()) return false;
+    std::size_t end = text_.find('\n', pos_);
+    if (end == std::string::npos) end = text_.size();
+    line.assign(text_, pos_, end - pos_);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    pos_ = end + 1;
+    ++number;
+    return true;
+  }
+  int number = 0;
+
+ private:
+  const std::string& text_;
+  std::size_t pos_ = 0;
+};
+
+/// A whole non-negative count from a header value, or nullopt.
+std::optional<std::size_t> parseCount(const std::string& s) {
+  if (s.empty() || s.size() > 12 || !std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); }))
+    return std::nullopt;
+  return static_cast<std::size_t>(std::stoull(s));
+}
+
+/// Header key=value found on `line` (0: absent).
+struct HeaderValue {
+  std::string value;
+  int line = 0;
+};
+
+double median(std::vector<double> v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+MotionTable parseMotionTable(const std::string& text, const std::string& path) {
+  MotionTable table;
+  table.path = path;
+  LineCursor lines(text, path);
+  const auto at = [&](int line) { return path + ":" + std::to_string(line) + ": "; };
+
+  // Header: everything up to `endheader`; key=value lines kept, other lines (the name) ignored.
+  std::string line, firstLine;
+  bool ended = false;
+  HeaderValue version, nRows, nColumns, inDegrees;
+  while (lines.next(line)) {
+    if (lines.number == 1) firstLine = line;
+    if (trim(line) == "endheader") {
+      ended = true;
+      break;
+    }
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    const std::string key = trim(line.substr(0, eq));
+    HeaderValue* slot = key == "version" ? &version : key == "nRows" ? &nRows : key == "nColumns" ? &nColumns
+                        : key == "inDegrees" ? &inDegrees : nullptr;
+    if (slot == nullptr) continue;
+    if (slot->line) throw InputError(at(lines.number) + key + ": appears twice in the header (first on line " + std::to_string(slot->line) + ")");
+    *slot = {trim(line.substr(eq + 1)), lines.number};
+  }
+  if (!ended)
+    throw InputError(path + ":1: expected an OpenSim Storage header ending in a line 'endheader' (got none in " +
+                     std::to_string(lines.number) + " lines" +
+                     (lines.number == 0 ? std::string() : "; the first is '" + firstLine.substr(0, 60) + "'") + ")");
+  const int endheader = lines.number;
+  if (version.line && version.value != "1")
+    throw InputError(path + ":" + std::to_string(version.line) + ": version: expected 1 (Storage version 1) (got '" + version.value + "')");
+  if (inDegrees.line) {
+    if (inDegrees.value != "yes" && inDegrees.value != "no")
+      throw InputError(path + ":" + std::to_string(inDegrees.line) + ": inDegrees: expected yes or no (got '" + inDegrees.value + "')");
+    table.inDegrees = inDegrees.value == "yes";
+    table.inDegreesLine = inDegrees.line;
+  }
+  std::optional<std::size_t> expectedRows, expectedColumns;
+  for (auto [key, header, expected] : {std::tuple{"nRows", &nRows, &expectedRows}, std::tuple{"nColumns", &nColumns, &expectedColumns}}) {
+    if (!header->line) continue;
+    *expected = parseCount(header->value);
+    if (!*expected)
+      throw InputError(path + ":" + std::to_string(header->line) + ": " + key + ": expected a whole number (got '" + header->value + "')");
+  }
+
+  // Column labels: the first non-blank line after endheader.
+  bool labelled = false;
+  while (!labelled && lines.next(line)) labelled = !isBlank(line);
+  if (!labelled)
+    throw InputError(at(endheader) + "expected a line of column labels after endheader, starting with 'time' (got the end of the file)");
+  table.labelLine = lines.number;
+  table.labels = splitWhitespace(line);
+  if (table.labels.front() != "time")
+    throw InputError(at(lines.number) + "time: expected the first column label to be 'time' (got '" + table.labels.front() + "')");
+  for (std::size_t a = 0; a < table.labels.size(); ++a)
+    for (std::size_t b = 0; b < a; ++b)
+      if (table.labels[a] == table.labels[b]) throw InputError(at(lines.number) + table.labels[a] + ": column label appears twice");
+  if (expectedColumns && *expectedColumns != table.labels.size())
+    throw InputError(path + ":" + std::to_string(nColumns.line) + ": nColumns: the header says " + nColumns.value +
+                     " columns, time included (got " + std::to_string(table.labels.size()) + " labels on line " +
+                     std::to_string(table.labelLine) + ")");
+
+  // Rows of numbers.
+  table.columns.assign(table.labels.size(), {});
+  std::vector<double>& time = table.columns.front();
+  while (lines.next(line)) {
+    if (isBlank(line)) continue;
+    if (table.rows() >= kMaxMotionRows)
+      throw InputError(at(lines.number) + "too many rows (more than " + std::to_string(kMaxMotionRows) +
+                       ", the limit; cut the trial or resample it)");
+    const std::vector<std::string> cells = splitWhitespace(line);
+    if (cells.size() != table.labels.size())
+      throw InputError(at(lines.number) + "expected " + std::to_string(table.labels.size()) + " values, one per label on line " +
+                       std::to_string(table.labelLine) + " (got " + std::to_string(cells.size()) + ")" +
+                       (line.find(',') != std::string::npos ? "; is the file comma-separated, or the decimal separator a comma?" : ""));
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const std::string& s = cells[c];
+      errno = 0;
+      char* end = nullptr;
+      const double v = std::strtod(s.c_str(), &end);
+      if (end != s.c_str() + s.size())
+        throw InputError(at(lines.number) + table.labels[c] + ": expected a number (got '" + s + "')");
+      if (!std::isfinite(v) || errno == ERANGE)
+        throw InputError(at(lines.number) + table.labels[c] + ": expected a finite number (got '" + s + "')");
+      if (c == 0 && !time.empty() && !(v > time.back()))
+        throw InputError(at(lines.number) + "time: must strictly increase (got " + s + " after " + formatNumber(time.back()) + ")");
+      table.columns[c].push_back(v);
+    }
+    table.rowLines.push_back(lines.number);
+  }
+  if (table.rows() == 0)
+    throw InputError(path + ":" + std::to_string(table.labelLine) + ": expected rows of numbers after the column labels (got none)");
+  if (expectedRows && *expectedRows != table.rows())
+    throw InputError(path + ":" + std::to_string(nRows.line) + ": nRows: the header says " + nRows.value + " rows (got " +
+                     std::to_string(table.rows()) + " rows of numbers)");
+
+  // Frames dropped by the capture system show as one long step among even ones.
+  if (table.rows() >= 3) {
+    std::vector<double> steps;
+    for (std::size_t r = 1; r < time.size(); ++r) steps.push_back(time[r] - time[r - 1]);
+    const double typical = median(steps);
+    for (std::size_t r = 1; r < time.size(); ++r)
+      if (steps[r - 1] > kMaxStepOverMedian * typical)
+        throw InputError(path + ":" + std::to_string(table.rowLines[r]) + ": time: a gap of " + formatNumber(steps[r - 1]) +
+                         " s after " + formatNumber(time[r - 1]) + " s (more than " + formatNumber(kMaxStepOverMedian) +
+                         " times the median step of " + formatNumber(typical) + " s; missing frames?)");
+  }
+  return table;
+}
+
+MotionTable readMotionTable(const std::string& path) { return parseMotionTable(readFile(path), path); }
+
+namespace {
+
+/// Linear interpolation of (times, values) at increasing `at`, each within the times' range.
+std::vector<double> interpolate(const std::vector<double>& times, const std::vector<double>& values, const std::vector<double>& at) {
+  std::vector<double> out;
+  out.reserve(at.size());
+  std::size_t k = 0;
+  for (double t : at) {
+    while (k + 2 < times.size() && times[k + 1] <= t) ++k;
+    // At a row's time, that row's value exactly.
+    if (t == times[k + 1]) {
+      out.push_back(values[k + 1]);
+      continue;
+    }
+    const double w = (t - times[k]) / (times[k + 1] - times[k]);
+    out.push_back(values[k] + w * (values[k + 1] - values[k]));
+  }
+  return out;
+}
+
+/// Times closer than this are one instant (well below any capture frame step), s.
+constexpr double kSameTime = 1e-9;
+
+/// Knee range limits for the unit check: a swing flexes the knee by some 60 deg (1 rad).
+constexpr double kMinKneeRangeDeg = 3;
+constexpr double kMaxKneeRangeRad = 6;
+
+void checkKneeUnit(const MotionTable& table, const std::string& label, const std::vector<double>& knee) {
+  const auto [lo, hi] = std::minmax_element(knee.begin(), knee.end());
+  const double range = *hi - *lo;
+  const std::string where = table.path + (table.inDegreesLine ? ":" + std::to_string(table.inDegreesLine) : "") + ": " + label + ": ";
+  const std::string span = " (from " + formatNumber(*lo) + " to " + formatNumber(*hi) + "; a swing flexes it by tens of degrees)";
+  if (table.inDegrees && range < kMinKneeRangeDeg)
+    throw InputError(where + "the knee moves through only " + formatNumber(range) + " deg over the swing" + span +
+                     ": the column looks like radians, but the header says inDegrees=yes");
+  if (!table.inDegrees && range > kMaxKneeRangeRad)
+    throw InputError(where + "the knee moves through " + formatNumber(range) + " rad over the swing" + span +
+                     ": the column looks like degrees, but " +
+                     (table.inDegreesLine ? std::string("the header says inDegrees=no")
+                                          : std::string("the header has no inDegrees line, read as no (radians) as OpenSim does; add inDegrees=yes")));
+}
+
+}  // namespace
+
+SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns) {
+  const std::vector<double>& time = table.columns.front();
+  if (time.size() < kMinSwingSamples)
+    throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) + " rows for a swing (got " +
+                     std::to_string(time.size()) + ")");
+  const std::vector<double>& hipValues = table.column(columns.hip);
+  const std::vector<double>& kneeValues = table.column(columns.knee);
+  const std::vector<double>* momentValues = columns.hipMoment.empty() ? nullptr : &table.column(columns.hipMoment);
+  const std::string range = "the file's time runs from " + formatNumber(time.front()) + " to " + formatNumber(time.back()) + " s";
+  const double toeOff = columns.toeOffTime.value_or(time.front());
+  const double heelContact = columns.heelContactTime.value_or(time.back());
+  if (toeOff < time.front() || toeOff >= time.back())
+    throw InputError(table.path + ": toe_off_s: expected a time within the file, before its last row; " + range +
+                     " (got " + formatNumber(toeOff) + " s)");
+  if (heelContact <= toeOff || heelContact > time.back())
+    throw InputError(table.path + ": heel_contact_s: expected a time after toe-off (" + formatNumber(toeOff) +
+                     " s) and within the file; " + range + " (got " + formatNumber(heelContact) + " s)");
+
+  // Sample times, in file time.
+  std::vector<double> at;
+  if (columns.resampleInterval) {
+    const double dt = *columns.resampleInterval;
+    if (!(dt > 0)) throw InputError(table.path + ": resample_s: expected a positive interval (got " + formatNumber(dt) + ")");
+    const double count = std::floor((heelContact - toeOff) / dt + kSameTime) + 1;
+    if (count > static_cast<double>(kMaxMotionRows))
+      throw InputError(table.path + ": resample_s: " + formatNumber(dt) + " s gives more than " + std::to_string(kMaxMotionRows) +
+                       " samples over the swing (the limit)");
+    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) at.push_back(std::min(toeOff + static_cast<double>(k) * dt, heelContact));
+  } else {
+    at.push_back(toeOff);
+    for (double t : time)
+      if (t > toeOff + kSameTime && t < heelContact - kSameTime) at.push_back(t);
+    at.push_back(heelContact);
+  }
+  if (at.size() < kMinSwingSamples)
+    throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) + " samples between toe-off (" +
+                     formatNumber(toeOff) + " s) and heel contact (" + formatNumber(heelContact) + " s) (got " +
+                     std::to_string(at.size()) + ")");
+
+  const std::vector<double> knee = interpolate(time, kneeValues, at);
+  checkKneeUnit(table, columns.knee, knee);
+  const std::vector<double> hip = interpolate(time, hipValues, at);
+  const double toRad = table.inDegrees ? kDegToRad : 1.0;
+  SwingRecord r;
+  r.path = table.path;
+  r.stem = fileStem(table.path);
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    r.time.push_back(at[k] - toeOff);
+    r.hipFlexion.push_back(columns.hipSign * hip[k] * toRad + columns.hipOffset);
+    r.kneeFlexion.push_back(columns.kneeSign * knee[k] * toRad + columns.kneeOffset);
+  }
+  if (momentValues) r.hipMoment = interpolate(time, *momentValues, at);
+  return r;
+}
+
+bool isMotionFile(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".mot" || ext == ".sto";
+}
+
+SwingRecord readSwingRecordFile(const std::string& path, const std::optional<MotionColumns>& columns) {
+  if (!isMotionFile(path)) return readSwingRecord(path);
+  if (!columns)
+    throw InputError(path + ": a motion file (.mot/.sto) needs motion_columns naming its hip and knee columns (got none)");
+  return makeSwingRecord(readMotionTable(path), *columns);
+}
+
+}  // namespace swingsim

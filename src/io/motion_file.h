@@ -1,0 +1,83 @@
+#pragma once
+// OpenSim motion files (.mot, .sto: Storage version 1) and the swing records cut from them.
+//   name                     <- optional lines before endheader; `key=value` lines are
+//   version=1                   read (version, nRows, nColumns, inDegrees), others ignored
+//   nRows=120
+//   nColumns=4               <- counts the time column
+//   inDegrees=yes            <- yes|no; missing means no (radians), as in OpenSim
+//   endheader
+//   time  hip_flexion_r  knee_angle_r  hip_moment   <- labels, tab/space separated
+//   0.000 12.5 8.1 20.3                             <- numbers, one row per line
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/swing_record.h"
+
+namespace swingsim {
+
+/// The numbers of one motion file, as written (angle units as the header says).
+struct MotionTable {
+  std::string path;
+  std::vector<std::string> labels;            ///< column labels, "time" first
+  std::vector<std::vector<double>> columns;   ///< one per label, time in s
+  std::vector<int> rowLines;                  ///< file line (1-based) of each row
+  int labelLine = 0;                          ///< file line of the column labels
+  bool inDegrees = false;                     ///< angles in degrees (else radians)
+  int inDegreesLine = 0;                      ///< file line of `inDegrees=`; 0 if absent (read as no)
+
+  std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+  /// Index of a column. Throws InputError `path:line: label: column is missing (available: ...)`.
+  std::size_t index(const std::string& label) const;
+  const std::vector<double>& column(const std::string& label) const { return columns[index(label)]; }
+};
+
+/// Most rows a motion file may hold: more is refused before they are all read.
+constexpr std::size_t kMaxMotionRows = 2000000;
+/// A time step longer than this many times the median step is a gap (missing frames).
+constexpr double kMaxStepOverMedian = 5;
+
+/// Reads a motion file, at most 16 MiB (readFile) and kMaxMotionRows rows. Throws
+/// InputError `path:line: column: what was expected (got what was found)` for: no
+/// `endheader`, a bad `inDegrees`/`nRows`/`nColumns`/`version` value, a first label other
+/// than `time`, repeated labels, a row with the wrong number of values, non-numeric,
+/// NaN or infinite values, time that does not strictly increase, a gap (a step more than
+/// kMaxStepOverMedian times the median step), nRows/nColumns that disagree with the data.
+MotionTable readMotionTable(const std::string& path);
+/// Same, from text in memory (tests, fuzzers); `path` names it in messages.
+MotionTable parseMotionTable(const std::string& text, const std::string& path);
+
+/// Which columns of a motion file make a swing record, and how (the study's
+/// `motion_columns:` map). Clinical flexion = sign * value + offset, value in the file's unit.
+struct MotionColumns {
+  std::string hip, knee;            ///< hip and knee flexion angle labels (required)
+  std::string hipMoment;            ///< hip flexion moment label, N m ("" = not read)
+  double hipSign = 1, kneeSign = 1;  ///< +1 or -1
+  double hipOffset = 0, kneeOffset = 0;  ///< rad (degrees in the file: *_offset_deg)
+  std::optional<double> toeOffTime;      ///< s, file time; default the first row
+  std::optional<double> heelContactTime;  ///< s, file time; default the last row
+  std::optional<double> resampleInterval;  ///< s; linear interpolation; default: the file's rows
+};
+
+/// Fewest samples a swing record cut from a motion file may have (as the kinematics CSV).
+constexpr std::size_t kMinSwingSamples = 10;
+
+/// The swing between toe-off and heel contact, time rebased to 0 at toe-off, angles in rad.
+/// Rows strictly inside the cut are kept; toe-off and heel contact are added by linear
+/// interpolation when they fall between rows; with a resample interval every sample is
+/// linearly interpolated at toe-off + k * interval. Throws InputError for a missing column,
+/// a cut outside the file's time or fewer than kMinSwingSamples samples, and for a knee
+/// whose range says the unit is wrong (under 3 "deg" with inDegrees=yes: radians; over
+/// 6 "rad" with inDegrees=no: degrees).
+SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns);
+
+/// True for a path ending in .mot or .sto (any case).
+bool isMotionFile(const std::string& path);
+
+/// Reads a swing record, choosing the format by extension (the one place that does):
+/// .mot/.sto through readMotionTable and makeSwingRecord with `columns` (required for
+/// those: InputError if absent); anything else as the swing kinematics CSV (readSwingRecord).
+SwingRecord readSwingRecordFile(const std::string& path, const std::optional<MotionColumns>& columns);
+
+}  // namespace swingsim
