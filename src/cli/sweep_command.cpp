@@ -1,4 +1,5 @@
 // swingsim sweep STUDY.yaml [--out DIR] [--json FILE] [--jobs N] [--add-mass KG@METRES]
+//                          [--uncertainty N [--seed S]]
 
 #include <csignal>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "study/sweep_study.h"
 #include "swing/sweep.h"
 #include "swing/measured_validation.h"
+#include "swing/sweep_uncertainty.h"
 #include "swing/terminal_impact.h"
 
 namespace swingsim::cli {
@@ -40,6 +42,7 @@ struct SweepArguments {
   std::optional<std::string> out, json;
   int jobs = 0;  ///< worker threads, 0 = all cores
   std::optional<AddedMass> added;
+  std::optional<int> uncertaintySamples, seed;  ///< override the study's `uncertainty:` map
 };
 
 int runSweepCommand(const SweepArguments& a) {
@@ -47,6 +50,13 @@ int runSweepCommand(const SweepArguments& a) {
   if (a.added) {
     study.addedMasses = {0.0, a.added->mass};
     study.addedMassDistances = {a.added->distanceBelowKnee};
+  }
+  if (a.uncertaintySamples) study.uncertaintySamples = *a.uncertaintySamples;
+  if (a.seed) {
+    if (study.uncertaintySamples == 0)
+      throw InputError("--seed: sets the seed of the uncertainty analysis, which needs --uncertainty N or an "
+                       "`uncertainty:` map in " + study.path + " (got --seed " + std::to_string(*a.seed) + " alone)");
+    study.uncertaintySeed = *a.seed;
   }
   const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + makeSafeFileStem(study.name) : study.outputDir);
 
@@ -79,6 +89,29 @@ int runSweepCommand(const SweepArguments& a) {
     validateOnTable4(study, results);
   }
   std::printf("%s", formatSweepTables(study, results).c_str());
+  // How sure is the optimum: after the plain sweep, over all its swings with one bar.
+  std::optional<UncertaintyResults> uncertainty;
+  if (study.uncertaintySamples > 0 && !gInterrupted) {
+    UncertaintyOptions options;
+    options.samples = study.uncertaintySamples;
+    options.seed = static_cast<std::uint64_t>(study.uncertaintySeed);
+    uncertainty = [&] {
+      ProgressReporter progress("uncertainty " + study.name, "swings");
+      progress.setShowRate(true);
+      progress.note(std::to_string(options.samples) + " samples, seed " + std::to_string(study.uncertaintySeed) +
+                    ", and each assumption at both ends of its range (docs/uncertainty.md)");
+      return runSweepUncertainty(study, options, a.jobs, [&](int done, int total) { progress.update(done, total); },
+                                 &gInterrupted);
+    }();
+    if (gInterrupted) {
+      // The sweep itself finished, but a report without the analysis asked for would look complete.
+      std::fprintf(stderr, "swingsim: interrupted during the uncertainty analysis; nothing in %s was written\n",
+                   out.c_str());
+      restoreInterrupts();
+      return 1;
+    }
+    std::printf("%s", formatUncertaintyTables(*uncertainty).c_str());
+  }
   if (gInterrupted) {
     // Keep what finished, readable, under a name that cannot be mistaken for a result.
     writeFileAtomic(out + "/sweep.partial.csv", formatSweepCsv(results));
@@ -106,11 +139,12 @@ int runSweepCommand(const SweepArguments& a) {
   // run stopped here (or failing) leaves the folder as it was, with no temporary files.
   {
     StagedOutput staged(out);
-    for (const auto& [name, contents] : makeSweepReport(study, results)) {
+    const UncertaintyResults* u = uncertainty ? &*uncertainty : nullptr;
+    for (const auto& [name, contents] : makeSweepReport(study, results, u)) {
       if (gInterrupted) break;
       staged.add(name, contents);
     }
-    if (a.json && !gInterrupted) staged.addBeside(*a.json, formatSweepJson(results));
+    if (a.json && !gInterrupted) staged.addBeside(*a.json, formatSweepJson(results, u));
     if (gInterrupted) {
       staged.discard();
       std::fprintf(stderr, "swingsim: interrupted while writing the report; nothing in %s was changed\n", out.c_str());
@@ -140,6 +174,15 @@ Command addSweepCommand(CLI::App& app) {
                                         "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)")
       ->type_name("KG@M")
       ->check(addedMassSpec());
+  sub->add_option("--uncertainty", a->uncertaintySamples,
+                  "after the sweep, how sure the fastest lowering is: N Monte Carlo samples over the unpublished "
+                  "assumptions and each at both ends of its range (docs/uncertainty.md; default: the study's "
+                  "uncertainty: map, else none)")
+      ->type_name("N")
+      ->check(wholeNumberFrom(1, "expected a positive whole number of samples"));
+  sub->add_option("--seed", a->seed, "seed of the uncertainty analysis's draws (std::mt19937_64; default: the study's, else 1)")
+      ->type_name("S")
+      ->check(wholeNumberFrom(0, "expected a whole number from 0"));
   return {sub, [a] { return runSweepCommand(*a); }};
 }
 

@@ -38,11 +38,20 @@ void ProgressReporter::update(int done, int total) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const bool last = done >= total;
   const int percent = total > 0 ? static_cast<int>(100LL * done / total) : 100;
+  // ", 480 swings/s, 25 s left" once there is a rate to extrapolate.
+  std::string rate;
+  if (rate_ && done > 0 && elapsed > 0) {
+    char buf[96];
+    const double perSecond = done / elapsed;
+    std::snprintf(buf, sizeof buf, ", %.0f %s/s, %.0f s left", perSecond, unit_.c_str(), (total - done) / perSecond);
+    rate = buf;
+  }
   if (bar_) {
     if (!last && percent == lastBucket_ && elapsed - lastDrawn_ < kRedrawSeconds) return;
     const int filled = total > 0 ? static_cast<int>(static_cast<long long>(kBarWidth) * done / total) : kBarWidth;
-    std::fprintf(stream_, "\r%s [%s%s] %d/%d %s (%d %%), %.1f s", step_.c_str(), std::string(filled, '#').c_str(),
-                 std::string(kBarWidth - filled, ' ').c_str(), done, total, unit_.c_str(), percent, elapsed);
+    std::fprintf(stream_, "\r%s [%s%s] %d/%d %s (%d %%), %.1f s%s", step_.c_str(), std::string(filled, '#').c_str(),
+                 std::string(kBarWidth - filled, ' ').c_str(), done, total, unit_.c_str(), percent, elapsed,
+                 (rate + (rate_ ? "    " : "")).c_str());  // blanks over a longer previous rate
     barOpen_ = true;
     lastBucket_ = percent;
     lastDrawn_ = elapsed;
@@ -50,7 +59,8 @@ void ProgressReporter::update(int done, int total) {
   } else {
     const int bucket = total > 0 ? static_cast<int>(static_cast<long long>(kLineBuckets) * done / total) : kLineBuckets;
     if (total > kEveryStepUpTo && bucket == lastBucket_ && !last) return;
-    std::fprintf(stream_, "%s: %d/%d %s (%d %%), %.1f s\n", step_.c_str(), done, total, unit_.c_str(), percent, elapsed);
+    std::fprintf(stream_, "%s: %d/%d %s (%d %%), %.1f s%s\n", step_.c_str(), done, total, unit_.c_str(), percent, elapsed,
+                 rate.c_str());
     lastBucket_ = bucket;
   }
   std::fflush(stream_);

@@ -32,6 +32,9 @@ class ProgressReporter {
   /// Writes `text` as a whole line after the step name ("sweep burkett2004: 4 participants"),
   /// ending a bar in progress first.
   void note(const std::string& text);
+  /// Also show the rate and the time left at that rate ("..., 12.3 s, 480 swings/s, 25 s
+  /// left"), for runs long enough that the user wants to know when they end.
+  void setShowRate(bool show) { rate_ = show; }
 
  private:
   void endBar();
@@ -44,6 +47,7 @@ class ProgressReporter {
   double lastDrawn_ = 0;  ///< bar: elapsed seconds at the last redraw
   bool barOpen_ = false;  ///< bar drawn and not yet ended by a newline
   bool finished_ = false;
+  bool rate_ = false;
   std::chrono::steady_clock::time_point start_;
 };
 

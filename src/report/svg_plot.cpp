@@ -90,7 +90,7 @@ std::vector<double> calcNiceTicks(double lo, double hi, int target) {
   return ticks;
 }
 
-SvgPlot::SvgPlot(double width, double height) : width_(width), height_(height) {
+SvgPlot::SvgPlot(double width, double height) : width_(width), height_(height), marginLeft_(kMarginLeft) {
   if (!(width > kMarginLeft + kMarginRight + 10) || !(height > kMarginTop + kMarginBottom + 10)) {
     throw std::invalid_argument("SvgPlot: panel of " + px(width) + " x " + px(height) +
                                 " px is too small for axes and labels");
@@ -138,6 +138,22 @@ void SvgPlot::addHBand(double y0, double y1, const std::string& label, const std
   bands_.push_back({std::min(y0, y1), std::max(y0, y1), label, color, opacity, true});
 }
 
+void SvgPlot::addFill(const std::vector<double>& xs, const std::vector<double>& lows,
+                      const std::vector<double>& highs, const std::string& label, const std::string& color,
+                      double opacity) {
+  if (xs.size() != lows.size() || xs.size() != highs.size())
+    throw std::invalid_argument("SvgPlot::addFill: xs, lows and highs differ in length");
+  fills_.push_back({xs, lows, highs, label, color, opacity});
+}
+
+void SvgPlot::setYTickLabels(const std::vector<std::pair<double, std::string>>& labels, double leftMargin) {
+  if (!(leftMargin >= kMarginLeft) || !(width_ > leftMargin + kMarginRight + 10))
+    throw std::invalid_argument("SvgPlot::setYTickLabels: a left margin of " + px(leftMargin) +
+                                " px does not fit a panel " + px(width_) + " px wide");
+  yTickLabels_ = labels;
+  marginLeft_ = leftMargin;
+}
+
 void SvgPlot::addHLine(double y, const std::string& label, const std::string& color, bool dashed,
                        bool includeInRange) {
   if (!std::isfinite(y)) return;
@@ -159,6 +175,15 @@ void SvgPlot::calcRanges(double& x0, double& x1, double& y0, double& y1) const {
       xmax = std::max(xmax, s.xs[i]);
       ymin = std::min(ymin, s.ys[i]);
       ymax = std::max(ymax, s.ys[i]);
+    }
+  }
+  for (const auto& f : fills_) {
+    for (std::size_t i = 0; i < f.xs.size(); ++i) {
+      if (!std::isfinite(f.xs[i]) || !std::isfinite(f.lows[i]) || !std::isfinite(f.highs[i])) continue;
+      xmin = std::min(xmin, f.xs[i]);
+      xmax = std::max(xmax, f.xs[i]);
+      ymin = std::min({ymin, f.lows[i], f.highs[i]});
+      ymax = std::max({ymax, f.lows[i], f.highs[i]});
     }
   }
   for (const auto& r : refs_) {
@@ -210,8 +235,8 @@ void SvgPlot::calcRanges(double& x0, double& x1, double& y0, double& y1) const {
 std::string SvgPlot::renderGroup(double dx, double dy) const {
   double x0, x1, y0, y1;
   calcRanges(x0, x1, y0, y1);
-  const double left = kMarginLeft, top = kMarginTop;
-  const double plotW = width_ - kMarginLeft - kMarginRight;
+  const double left = marginLeft_, top = kMarginTop;
+  const double plotW = width_ - marginLeft_ - kMarginRight;
   const double plotH = height_ - kMarginTop - kMarginBottom;
   auto mapX = [&](double x) { return left + (x - x0) / (x1 - x0) * plotW; };
   auto mapY = [&](double y) { return top + (y1 - y) / (y1 - y0) * plotH; };
@@ -240,6 +265,27 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
     s += "<rect x=\"" + px(a) + "\" y=\"" + px(top) + "\" width=\"" + px(c - a) + "\" height=\"" +
          px(plotH) + "\" fill=\"" + svgEscape(b.color) + "\" fill-opacity=\"" + opacity(b.opacity) + "\"/>\n";
   }
+  // Filled bands between two curves, one polygon per finite run of points.
+  for (const auto& f : fills_) {
+    std::size_t i = 0;
+    while (i < f.xs.size()) {
+      auto finite = [&](std::size_t k) {
+        return std::isfinite(f.xs[k]) && std::isfinite(f.lows[k]) && std::isfinite(f.highs[k]);
+      };
+      if (!finite(i)) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < f.xs.size() && finite(j)) ++j;
+      std::string d;
+      for (std::size_t k = i; k < j; ++k) d += (k == i ? "M" : "L") + px(mapX(f.xs[k])) + " " + px(mapY(f.highs[k]));
+      for (std::size_t k = j; k-- > i;) d += "L" + px(mapX(f.xs[k])) + " " + px(mapY(f.lows[k]));
+      s += "<path d=\"" + d + "Z\" fill=\"" + svgEscape(f.color) + "\" fill-opacity=\"" + opacity(f.opacity) +
+           "\" stroke=\"none\"/>\n";
+      i = j;
+    }
+  }
   s += "</g>\n";
 
   // Grid and ticks.
@@ -257,7 +303,10 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
          "\" font-size=\"" + px(kFontTick) + "\" text-anchor=\"middle\" fill=\"#333\">" +
          tickLabel(v, xstep) + "</text>\n";
   }
-  for (double v : yt) {
+  std::vector<std::pair<double, std::string>> yLabels = yTickLabels_;
+  if (yLabels.empty())
+    for (double v : yt) yLabels.emplace_back(v, tickLabel(v, ystep));
+  for (const auto& [v, text] : yLabels) {
     const double Y = mapY(v);
     s += "<line x1=\"" + px(left) + "\" y1=\"" + px(Y) + "\" x2=\"" + px(left + plotW) + "\" y2=\"" +
          px(Y) + "\" stroke=\"#e3e3e3\" stroke-width=\"1\"/>\n";
@@ -265,7 +314,7 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
          "\" y2=\"" + px(Y) + "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
     s += "<text x=\"" + px(left - kTickLength - 3) + "\" y=\"" + px(Y + kFontTick * 0.35) +
          "\" font-size=\"" + px(kFontTick) + "\" text-anchor=\"end\" fill=\"#333\">" +
-         tickLabel(v, ystep) + "</text>\n";
+         svgEscape(text) + "</text>\n";
   }
 
   // Data, clipped to the plot area.
@@ -338,6 +387,9 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
   std::vector<Entry> entries;
   for (const auto& ser : series_) {
     if (!ser.label.empty()) entries.push_back({ser.label, ser.color, ser.points ? 1 : (ser.dashed ? 3 : 0)});
+  }
+  for (const auto& f : fills_) {
+    if (!f.label.empty()) entries.push_back({f.label, f.color, 2});
   }
   for (const auto& b : bands_) {
     if (b.label.empty()) continue;

@@ -5,6 +5,7 @@
 // vertically in one SVG (force over time above the switch traces, Chien 2014 Figs. 5-6).
 // Sized to stay legible at 800 px wide.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace swingsim {
@@ -50,6 +51,15 @@ class SvgPlot {
   /// Not used for auto-ranging; drawn beneath lines and points.
   void addHBand(double y0, double y1, const std::string& label, const std::string& color,
                 double opacity = 0.15);
+  /// A shaded area between two curves over the same xs (an uncertainty band); a
+  /// non-finite value breaks it. Used for auto-ranging; drawn beneath lines and points.
+  void addFill(const std::vector<double>& xs, const std::vector<double>& lows,
+               const std::vector<double>& highs, const std::string& label, const std::string& color,
+               double opacity = 0.22);
+  /// Text labels at given y values instead of numeric y ticks (the rows of a tornado
+  /// figure); `leftMargin` px leaves room for them (at least the default 74).
+  void setYTickLabels(const std::vector<std::pair<double, std::string>>& labels, double leftMargin);
+
   /// A horizontal reference line across the panel (not used for auto-ranging y unless
   /// `includeInRange`).
   void addHLine(double y, const std::string& label, const std::string& color,
@@ -80,6 +90,11 @@ class SvgPlot {
     double opacity;
     bool horizontal = false;
   };
+  struct Fill {
+    std::vector<double> xs, lows, highs;
+    std::string label, color;
+    double opacity;
+  };
   struct RefLine {
     double value;
     std::string label, color;
@@ -97,6 +112,9 @@ class SvgPlot {
   std::vector<Series> series_;
   std::vector<Band> bands_;
   std::vector<RefLine> refs_;
+  std::vector<Fill> fills_;
+  std::vector<std::pair<double, std::string>> yTickLabels_;
+  double marginLeft_;
 };
 
 /// Panels stacked vertically (top to bottom) in one SVG document, with an optional

@@ -46,7 +46,57 @@ std::string shortFailure(const SweepPoint& pt) {
   return "failed";
 }
 
+const ParticipantUncertainty* uncertaintyOf(const UncertaintyResults* u, const std::string& name) {
+  if (!u) return nullptr;
+  for (const auto& pu : u->participants)
+    if (pu.name == name) return &pu;
+  return nullptr;
+}
+
+const SweepAssumption* assumptionKeyed(const std::string& key) {
+  for (const auto& a : sweepAssumptions())
+    if (a.key == key) return &a;
+  return nullptr;
+}
+
+// An assumption's value as a reader wants it: the reading's name for a two-way choice.
+std::string formatAssumptionValue(const std::string& key, double v) {
+  const SweepAssumption* a = assumptionKeyed(key);
+  if (a && a->discrete) return a->choices[v >= 0.5 ? 1 : 0];
+  return fmt("%.4g", v);
+}
+
+std::string formatLoweringOrNone(double v) { return std::isfinite(v) ? fmt("%.3f", v) : "no end"; }
+
 }  // namespace
+
+std::string formatUncertaintyTables(const UncertaintyResults& u) {
+  std::string out = "\nHow sure is the optimum: " + std::to_string(u.samples) + " Monte Carlo samples, seed " +
+                    std::to_string(u.seed) + " (assumptions and ranges: docs/uncertainty.md)\n";
+  out += "  participant  nominal_m  fastest_median_m  fastest_p05_m  fastest_p95_m  time_median_s  time_p05_s  "
+         "time_p95_s  no_swing_end\n";
+  for (const auto& pu : u.participants) {
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-11s  %9s  %16.3f  %13.3f  %13.3f  %13.4f  %10.4f  %10.4f  %12d\n",
+                  pu.name.c_str(), formatLoweringOrNone(pu.nominal.calcFastestLowering()).c_str(),
+                  pu.fastestLowering.median, pu.fastestLowering.p05, pu.fastestLowering.p95, pu.fastestTime.median,
+                  pu.fastestTime.p05, pu.fastestTime.p95, pu.samplesWithoutSwingEnd);
+    out += line;
+  }
+  for (const auto& pu : u.participants) {
+    if (pu.sensitivity.empty()) continue;
+    out += "  " + pu.name + ", largest one-at-a-time effects on the fastest lowering:";
+    for (std::size_t k = 0; k < pu.sensitivity.size() && k < 3; ++k) {
+      const SensitivityRow& r = pu.sensitivity[k];
+      out += std::string(k ? ";" : "") + " " + r.assumption + " " + formatAssumptionValue(r.assumption, r.lowValue) +
+             " -> " + formatLoweringOrNone(r.low.calcFastestLowering()) + " m, " +
+             formatAssumptionValue(r.assumption, r.highValue) + " -> " +
+             formatLoweringOrNone(r.high.calcFastestLowering()) + " m";
+    }
+    out += "\n";
+  }
+  return out;
+}
 
 std::string formatSweepTables(const SweepStudy& study, const SweepResults& results) {
   std::string out;
@@ -98,7 +148,29 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
   return out;
 }
 
-std::string formatSweepJson(const SweepResults& results) {
+namespace {
+
+Json intervalJson(const Interval& i) { return {{"median", i.median}, {"p05", i.p05}, {"p95", i.p95}}; }
+
+Json sensitivityJson(const ParticipantUncertainty& pu) {
+  Json rows = Json::array();
+  for (const auto& r : pu.sensitivity) {
+    Json row = {{"assumption", r.assumption}, {"unit", r.unit}, {"low_value", r.lowValue}, {"high_value", r.highValue},
+                {"fastest_lowering_low_m", r.low.calcFastestLowering()},
+                {"fastest_lowering_high_m", r.high.calcFastestLowering()}, {"time_low_s", r.low.calcFastestTime()},
+                {"time_high_s", r.high.calcFastestTime()}};
+    if (const SweepAssumption* a = assumptionKeyed(r.assumption); a && a->discrete) {
+      row["low_choice"] = formatAssumptionValue(r.assumption, r.lowValue);
+      row["high_choice"] = formatAssumptionValue(r.assumption, r.highValue);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+std::string formatSweepJson(const SweepResults& results, const UncertaintyResults* uncertainty) {
   Json participants = Json::array();
   for (const auto& ps : results.participants) {
     std::vector<double> lowering, swing, peak, clearance, bounceHeight;
@@ -185,6 +257,14 @@ std::string formatSweepJson(const SweepResults& results) {
     } else {
       j["published"] = nullptr;
     }
+    if (const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name)) {
+      j["fastest_lowering_interval_m"] = intervalJson(pu->fastestLowering);
+      j["fastest_time_interval_s"] = intervalJson(pu->fastestTime);
+      j["samples_without_swing_end"] = pu->samplesWithoutSwingEnd;
+      j["sensitivity"] = sensitivityJson(*pu);
+      j["uncertainty_samples"] = uncertainty->samples;
+      j["seed"] = uncertainty->seed;
+    }
     participants.push_back(j);
   }
   return formatJson({{"study", results.study}, {"participants", participants}});
@@ -238,7 +318,7 @@ std::string formatSweepCsv(const SweepResults& results) {
 
 namespace {
 
-SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps) {
+SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps, const ParticipantUncertainty* pu) {
   SvgPlot plot(800, 380);
   plot.setTitle(ps.name + ": swing time vs knee-axis lowering (cf. Burkett 2004 Fig. 4)");
   plot.setXLabel("knee-axis lowering below standard (m)");
@@ -248,6 +328,9 @@ SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps) {
     x.push_back(pt.lowering);
     y.push_back(pt.ok ? pt.result.swingTime : kNaN);
   }
+  if (pu)
+    plot.addFill(pu->bandLowerings, pu->bandP05, pu->bandP95, "5-95 % over the assumptions (docs/uncertainty.md)",
+                 svgPaletteColor(0));
   plot.addLine(x, y, "this model", svgPaletteColor(0), 2.0);
   double xMax = x.empty() ? 0.2 : x.back();
   if (const PublishedParticipant* pub = findPublished(ps.name))
@@ -268,6 +351,48 @@ SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps) {
     const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
     plot.addPoints({b.lowering}, {b.result.swingTime}, "our fastest", "#000000", 6);
   }
+  return plot;
+}
+
+// Horizontal bars of the change in the fastest lowering when one assumption goes to the low
+// or the high end of its range, largest effect on top; a dot at the end of each bar (so a
+// zero change still shows) and "no swing end" in the label where a run found none.
+SvgPlot makeTornadoFigure(const ParticipantUncertainty& pu) {
+  const std::size_t n = pu.sensitivity.size();
+  SvgPlot plot(800, 120 + 34 * static_cast<double>(n));
+  plot.setTitle(pu.name + ": change in the fastest lowering, one assumption at a time");
+  plot.setXLabel("fastest lowering minus nominal (m); each assumption at the low / high end of its range");
+  const double nominal = pu.nominal.calcFastestLowering();
+  std::vector<std::pair<double, std::string>> labels;
+  double reach = 0.01;  // m: at least +-10 mm, one grid step either side
+  constexpr double kOffset = 0.17;  // rows: low bar above, high bar below the row's centre
+  constexpr double kBarPx = 10;
+  bool labelled = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const SensitivityRow& r = pu.sensitivity[i];
+    const double y = static_cast<double>(n - i);
+    std::string label = r.name + " [" + formatAssumptionValue(r.assumption, r.lowValue) + " .. " +
+                        formatAssumptionValue(r.assumption, r.highValue) + (r.unit == "choice" ? "" : " " + r.unit) + "]";
+    const double dLow = r.low.calcFastestLowering() - nominal, dHigh = r.high.calcFastestLowering() - nominal;
+    if (!std::isfinite(dLow) || !std::isfinite(dHigh)) label += " (no swing end)";
+    labels.emplace_back(y, label);
+    const struct {
+      double d, dy;
+      int colour;
+      const char* name;
+    } ends[] = {{dLow, kOffset, 0, "low end"}, {dHigh, -kOffset, 1, "high end"}};
+    for (const auto& e : ends) {
+      if (!std::isfinite(e.d)) continue;
+      reach = std::max(reach, std::fabs(e.d));
+      plot.addLine({0.0, e.d}, {y + e.dy, y + e.dy}, labelled ? "" : e.name, svgPaletteColor(e.colour), kBarPx);
+      plot.addPoints({e.d}, {y + e.dy}, "", svgPaletteColor(e.colour), 4);
+    }
+    labelled = labelled || (std::isfinite(dLow) && std::isfinite(dHigh));
+  }
+  plot.addVLine(0.0, "", "#333333", false);
+  plot.setXRange(-1.15 * reach, 1.15 * reach);
+  plot.setYRange(0.4, static_cast<double>(n) + 0.6);
+  plot.setYTickLabels(labels, 330);
   return plot;
 }
 
@@ -328,6 +453,43 @@ std::string mdRow(const std::vector<std::string>& cells) {
 std::string ms(double seconds) {
   const double v = std::round(seconds * 1000);
   return v == 0 ? "0 ms" : fmt("%+.0f ms", v);
+}
+
+std::string formatUncertaintySection(const UncertaintyResults& u) {
+  std::string md = "## How sure is the optimum\n\n";
+  md += "The sweep above uses one value for each assumption the paper leaves out. Here each is varied over a "
+        "documented range (docs/uncertainty.md: the range and its source for every row): one at a time to its low "
+        "and high end (the tornado figure of each participant), and all together in " +
+        std::to_string(u.samples) + " Monte Carlo samples (uniform draws, the COM rule 50/50; std::mt19937_64 seed " +
+        std::to_string(u.seed) + "). The hip time scale is not recalibrated per sample: it is one ranged "
+        "assumption. The interval is of the model's answer under these assumptions, not of a runner's optimum.\n\n";
+  md += mdRow({"participant", "nominal fastest (m)", "median (m)", "5-95 % (m)", "swing time median (s)",
+               "swing time 5-95 % (s)", "samples without a swing end"});
+  md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
+  for (const auto& pu : u.participants) {
+    md += mdRow({pu.name, formatLoweringOrNone(pu.nominal.calcFastestLowering()), fmt("%.3f", pu.fastestLowering.median),
+                 fmt("%.3f", pu.fastestLowering.p05) + " - " + fmt("%.3f", pu.fastestLowering.p95),
+                 fmt("%.4f", pu.fastestTime.median),
+                 fmt("%.4f", pu.fastestTime.p05) + " - " + fmt("%.4f", pu.fastestTime.p95),
+                 std::to_string(pu.samplesWithoutSwingEnd)});
+  }
+  md += "\n";
+  for (const auto& pu : u.participants) {
+    if (pu.sensitivity.empty()) continue;
+    md += "**" + pu.name + ", one at a time** (largest change of the fastest lowering first):\n\n";
+    md += mdRow({"assumption", "low", "high", "fastest at low (m)", "fastest at high (m)", "time at low (s)",
+                 "time at high (s)"});
+    md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
+    for (const auto& r : pu.sensitivity) {
+      auto t = [](double v) { return std::isfinite(v) ? fmt("%.4f", v) : std::string("no end"); };
+      md += mdRow({r.name + " (" + r.unit + ")", formatAssumptionValue(r.assumption, r.lowValue),
+                   formatAssumptionValue(r.assumption, r.highValue), formatLoweringOrNone(r.low.calcFastestLowering()),
+                   formatLoweringOrNone(r.high.calcFastestLowering()), t(r.low.calcFastestTime()),
+                   t(r.high.calcFastestTime())});
+    }
+    md += "\n";
+  }
+  return md;
 }
 
 }  // namespace
@@ -450,7 +612,8 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
 
 }  // namespace
 
-std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, const SweepResults& results) {
+std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, const SweepResults& results,
+                                                   const UncertaintyResults* uncertainty) {
   std::map<std::string, std::string> files;
   files["sweep.csv"] = formatSweepCsv(results);
   std::string md = "# Knee-axis sweep: " + study.name + "\n\n";
@@ -550,13 +713,20 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     md += "\n";
   }
 
+  if (uncertainty) md += formatUncertaintySection(*uncertainty);
+
   for (const auto& ps : results.participants) {
     const Participant* p = participantNamed(study, ps.name);
     md += "## " + ps.name + "\n\n";
     if (!ps.capNote.empty()) md += "Note: " + ps.capNote + ".\n\n";
     const std::string base = "figures/" + makeSafeFileStem(ps.name);
-    files[base + "-swing-time.svg"] = makeSwingTimeFigure(ps).render();
+    const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name);
+    files[base + "-swing-time.svg"] = makeSwingTimeFigure(ps, pu).render();
     md += "![swing time vs lowering](" + base + "-swing-time.svg)\n\n";
+    if (pu && !pu->sensitivity.empty()) {
+      files[base + "-tornado.svg"] = makeTornadoFigure(*pu).render();
+      md += "![one-at-a-time sensitivity of the fastest lowering](" + base + "-tornado.svg)\n\n";
+    }
     files[base + "-knee-flexion.svg"] =
         makeKneeFlexionFigure(ps, p ? p->swingEnd.zoneOfStability * kRadToDeg : 6.0).render();
     md += "![knee flexion vs time](" + base + "-knee-flexion.svg)\n\n";

@@ -1,5 +1,7 @@
 #include "study/sweep_study.h"
 
+#include <string>
+
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -14,6 +16,11 @@ namespace {
 
 struct LoweringOf {};
 struct AddedMassOf {};
+struct UncertaintyOf {};
+
+// Enough for 5-95 % intervals; far beyond it a run would take hours (about 0.15 s per
+// sample for the four Burkett participants on 2 cores).
+constexpr int kMaxUncertaintySamples = 100000;
 
 std::vector<std::pair<std::string, SwingIntegrator>> integratorChoices() {
   std::vector<std::pair<std::string, SwingIntegrator>> choices;
@@ -43,6 +50,19 @@ void serialize(A& a, SweepStudy& s, AddedMassOf) {
     a.require(v >= 0, "distance_below_knee_m", "distances must not be negative", [&] { return formatNumber(v); });
   a.require(!s.addedMassDistances.empty(), "distance_below_knee_m", "expected at least one distance",
             [] { return std::string("an empty list"); });
+}
+
+template <class A>
+void serialize(A& a, SweepStudy& s, UncertaintyOf) {
+  a.integer("samples", s.uncertaintySamples);
+  a.require(s.uncertaintySamples >= 1 && s.uncertaintySamples <= kMaxUncertaintySamples, "samples",
+            "expected a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples),
+            [&] { return std::to_string(s.uncertaintySamples); });
+  bool seeded = true;
+  if constexpr (A::kReading) seeded = a.has("seed");
+  if (seeded) a.integer("seed", s.uncertaintySeed);
+  a.require(s.uncertaintySeed >= 0, "seed", "expected a seed from 0 to 1000000000",
+            [&] { return std::to_string(s.uncertaintySeed); });
 }
 
 template <class A>
@@ -92,6 +112,8 @@ void serialize(A& a, SweepStudy& s) {
   a.choice("calibrate_to", s.calibrateTo,
            {{"stored", CalibrationTarget::kStored}, {"model", CalibrationTarget::kModel}, {"measured", CalibrationTarget::kMeasured}},
            true);
+  bool uncertainty = s.uncertaintySamples > 0;
+  a.optionalMap("uncertainty", s, uncertainty, UncertaintyOf{});
   a.optionalText("output_dir", s.outputDir);
 }
 

@@ -42,6 +42,10 @@ struct SweepStudy {
   /// (calibrateSweepParticipants), to Table 3's model or measured column; kStored = keep
   /// the files' time scales.
   CalibrationTarget calibrateTo = CalibrationTarget::kStored;
+  /// Monte Carlo samples of the uncertainty analysis run after the sweep (`uncertainty:`
+  /// in the study, `--uncertainty N`; sweep_uncertainty.h), 0 = none.
+  int uncertaintySamples = 0;
+  int uncertaintySeed = 1;  ///< std::mt19937_64 seed of its draws, 0 to 1e9
 };
 
 /// One simulated (participant, lowering, added mass) point.

@@ -1,0 +1,130 @@
+// How sure is the optimum (issue 15 item 4): the Monte Carlo is reproducible from its seed
+// whatever the thread count, the sensitivity is sorted by effect, and the nominal run is
+// the plain sweep. Small on purpose: one participant, a 50 mm grid, a few samples.
+#include "swing/sweep_uncertainty.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "study/sweep_study.h"
+
+namespace swingsim {
+namespace {
+
+const std::string kRoot = SWINGSIM_SOURCE_DIR;
+
+SweepStudy smallStudy() {
+  SweepStudy s = loadSweepStudy(kRoot + "/studies/burkett2004.yaml");
+  s.participants.resize(1);  // P1
+  s.loweringStep = 0.05;
+  s.includePublishedLowerings = false;
+  s.addedMasses = {0.0};
+  s.addedMassDistances.clear();
+  return s;
+}
+
+// NaN-aware equality: two runs agree when every swing time is bit-identical or both NaN.
+void expectSameSummaries(const LoweringSweepSummary& a, const LoweringSweepSummary& b, const std::string& what) {
+  ASSERT_EQ(a.lowerings, b.lowerings) << what;
+  ASSERT_EQ(a.swingTimes.size(), b.swingTimes.size()) << what;
+  for (std::size_t k = 0; k < a.swingTimes.size(); ++k) {
+    if (std::isnan(a.swingTimes[k]))
+      EXPECT_TRUE(std::isnan(b.swingTimes[k])) << what << " lowering " << a.lowerings[k];
+    else
+      EXPECT_EQ(a.swingTimes[k], b.swingTimes[k]) << what << " lowering " << a.lowerings[k];
+  }
+  EXPECT_EQ(a.best, b.best) << what;
+}
+
+TEST(SweepUncertainty, DrawsComeFromTheSeed) {
+  const auto a = drawUncertaintySamples(4, 7), b = drawUncertaintySamples(4, 7), c = drawUncertaintySamples(4, 8);
+  ASSERT_EQ(a.size(), 4u);
+  ASSERT_EQ(a[0].size(), sweepAssumptions().size());
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  for (const auto& sample : a)
+    for (double u : sample) {
+      EXPECT_GE(u, 0.0);
+      EXPECT_LT(u, 1.0);
+    }
+  // More samples extend the same stream: the first four draws do not depend on N.
+  const auto longer = drawUncertaintySamples(6, 7);
+  EXPECT_EQ(std::vector<std::vector<double>>(longer.begin(), longer.begin() + 4), a);
+}
+
+TEST(SweepUncertainty, SameSeedSameResultsWhateverTheThreadCount) {
+  const SweepStudy s = smallStudy();
+  UncertaintyOptions o;
+  o.samples = 3;
+  o.seed = 11;
+  o.sensitivity = false;
+  const UncertaintyResults one = runSweepUncertainty(s, o, 1);
+  const UncertaintyResults two = runSweepUncertainty(s, o, 2);
+  EXPECT_FALSE(one.interrupted);
+  EXPECT_EQ(one.draws, two.draws);
+  ASSERT_EQ(one.participants.size(), 1u);
+  ASSERT_EQ(one.participants[0].samples.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k)
+    expectSameSummaries(one.participants[0].samples[k], two.participants[0].samples[k], "sample " + std::to_string(k));
+  EXPECT_EQ(one.participants[0].fastestLowering.median, two.participants[0].fastestLowering.median);
+  EXPECT_EQ(one.participants[0].fastestTime.p95, two.participants[0].fastestTime.p95);
+
+  // Another seed draws other assumption values, so other swing times.
+  o.seed = 12;
+  const UncertaintyResults other = runSweepUncertainty(s, o, 2);
+  EXPECT_NE(other.draws, one.draws);
+  EXPECT_NE(other.participants[0].samples[0].swingTimes, one.participants[0].samples[0].swingTimes);
+}
+
+// The nominal run is the plain sweep's grid with every assumption at the files' value: the
+// same fastest lowering and swing time as runSweep.
+TEST(SweepUncertainty, NominalIsThePlainSweep) {
+  const SweepStudy s = smallStudy();
+  const SweepResults plain = runSweep(s, 2);
+  UncertaintyOptions o;
+  o.samples = 0;
+  o.sensitivity = false;
+  const UncertaintyResults u = runSweepUncertainty(s, o, 2);
+  const auto& ps = plain.participants[0];
+  ASSERT_GE(ps.best, 0);
+  EXPECT_EQ(u.participants[0].nominal.calcFastestLowering(), ps.points[static_cast<std::size_t>(ps.best)].lowering);
+  EXPECT_EQ(u.participants[0].nominal.calcFastestTime(), ps.points[static_cast<std::size_t>(ps.best)].result.swingTime);
+}
+
+TEST(SweepUncertainty, SensitivityIsSortedByEffectAndCoversEveryAssumption) {
+  const SweepStudy s = smallStudy();
+  UncertaintyOptions o;
+  o.samples = 0;
+  const UncertaintyResults u = runSweepUncertainty(s, o, 0);
+  const auto& rows = u.participants[0].sensitivity;
+  ASSERT_EQ(rows.size(), sweepAssumptions().size());
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    const double before = rows[k - 1].calcLoweringEffect(), now = rows[k].calcLoweringEffect();
+    EXPECT_GE(before, now) << rows[k - 1].assumption << " before " << rows[k].assumption;
+    if (before == now) {
+      EXPECT_GE(rows[k - 1].calcTimeEffect(), rows[k].calcTimeEffect()) << rows[k].assumption;
+    }
+  }
+  // The hip time scale drives the whole swing: its two ends give different swing times.
+  for (const auto& r : rows)
+    if (r.assumption == "hip_time_scale") {
+      EXPECT_LT(r.lowValue, r.highValue);
+      EXPECT_GT(r.calcTimeEffect(), 0.0);
+    }
+}
+
+TEST(SweepUncertainty, IntervalIsTheFivetoNinetyFivePercentRange) {
+  std::vector<double> v;
+  for (int i = 0; i <= 100; ++i) v.push_back(i);  // 0..100: percentiles are the values themselves
+  v.push_back(std::nan(""));                      // ignored
+  const Interval i = calcInterval(v);
+  EXPECT_EQ(i.count, 101);
+  EXPECT_DOUBLE_EQ(i.median, 50);
+  EXPECT_DOUBLE_EQ(i.p05, 5);
+  EXPECT_DOUBLE_EQ(i.p95, 95);
+  EXPECT_TRUE(std::isnan(calcInterval({}).median));
+}
+
+}  // namespace
+}  // namespace swingsim
