@@ -66,6 +66,9 @@ std::string formatAssumptionValue(const std::string& key, double v) {
   return fmt("%.4g", v);
 }
 
+// " N m" after a value; nothing for a choice or a dimensionless value (unit "1").
+std::string unitSuffix(const std::string& unit) { return unit == "choice" || unit == "1" ? "" : " " + unit; }
+
 std::string formatLoweringOrNone(double v) { return std::isfinite(v) ? fmt("%.3f", v) : "no end"; }
 
 }  // namespace
@@ -372,7 +375,7 @@ SvgPlot makeTornadoFigure(const ParticipantUncertainty& pu) {
     const SensitivityRow& r = pu.sensitivity[i];
     const double y = static_cast<double>(n - i);
     std::string label = r.name + " [" + formatAssumptionValue(r.assumption, r.lowValue) + " .. " +
-                        formatAssumptionValue(r.assumption, r.highValue) + (r.unit == "choice" ? "" : " " + r.unit) + "]";
+                        formatAssumptionValue(r.assumption, r.highValue) + unitSuffix(r.unit) + "]";
     const double dLow = r.low.calcFastestLowering() - nominal, dHigh = r.high.calcFastestLowering() - nominal;
     if (!std::isfinite(dLow) || !std::isfinite(dHigh)) label += " (no swing end)";
     labels.emplace_back(y, label);
@@ -482,7 +485,7 @@ std::string formatUncertaintySection(const UncertaintyResults& u) {
     md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
     for (const auto& r : pu.sensitivity) {
       auto t = [](double v) { return std::isfinite(v) ? fmt("%.4f", v) : std::string("no end"); };
-      md += mdRow({r.name + " (" + r.unit + ")", formatAssumptionValue(r.assumption, r.lowValue),
+      md += mdRow({r.name + (unitSuffix(r.unit).empty() ? "" : " (" + r.unit + ")"), formatAssumptionValue(r.assumption, r.lowValue),
                    formatAssumptionValue(r.assumption, r.highValue), formatLoweringOrNone(r.low.calcFastestLowering()),
                    formatLoweringOrNone(r.high.calcFastestLowering()), t(r.low.calcFastestTime()),
                    t(r.high.calcFastestTime())});

@@ -59,7 +59,7 @@ std::vector<SweepAssumption> makeAssumptions() {
     SweepAssumption a;
     a.key = "hip_time_scale";
     a.name = "hip-moment time scale";
-    a.unit = "tau";
+    a.unit = "1";
     a.source = "calibrated tau x (1 +- SD/T), SD the trial-to-trial SD of the measured standard-location swing time "
                "and T Table 3's model time (Burkett 2004 Table 3; swing time ~ proportional to tau); +-10 % without "
                "Table 3 data. Not recalibrated per sample";
@@ -78,7 +78,7 @@ std::vector<SweepAssumption> makeAssumptions() {
     SweepAssumption a;
     a.key = "hip_extension_ratio";
     a.name = "hip extension / flexion amplitude";
-    a.unit = "ratio";
+    a.unit = "1";
     a.source = "not published (Burkett measured it per participant); 0.25-1: from a weak terminal-swing brake to one "
                "as strong as the flexion drive (terminal-swing hip torques rise most with running speed: "
                "Schache 2011, Dorn 2012)";
@@ -122,7 +122,7 @@ std::vector<SweepAssumption> makeAssumptions() {
     SweepAssumption a;
     a.key = "hip_effort_adaptation";
     a.name = "hip effort adaptation exponent";
-    a.unit = "a";
+    a.unit = "1";
     a.source = "Hale 1990: amputees raised hip effort 37-71 % when the shank got heavier, keeping swing time; hip "
                "moment x (I_knee(d) / I_knee(0))^a, a = 0 (replayed unchanged, the files) to 1 (moment in "
                "proportion to the shank + foot inertia about the knee)";
@@ -200,7 +200,7 @@ std::vector<SweepAssumption> makeAssumptions() {
     SweepAssumption a;
     a.key = "integrator_accuracy";
     a.name = "integrator accuracy";
-    a.unit = "relative";
+    a.unit = "1";
     a.logUniform = true;
     a.source = "README convergence study: swing times converged to 0.1 ms from 2e-5 down; 3e-6 to 2e-5, drawn "
                "uniformly in log(accuracy)";

@@ -40,7 +40,7 @@ struct AssumptionRange {
 struct SweepAssumption {
   std::string key;     ///< JSON/report key: com_rule, hip_time_scale, ...
   std::string name;    ///< what it is, for tables and figures
-  std::string unit;    ///< unit of the values ("m", "N m", "s/rad"; "choice" for discrete)
+  std::string unit;    ///< unit of the values ("deg", "N m", "s/rad"; "1" dimensionless, "choice" discrete)
   /// A two-way choice: value 0 = the first reading, 1 = the second (`choices`); a Monte
   /// Carlo draw takes each with probability 1/2.
   bool discrete = false;

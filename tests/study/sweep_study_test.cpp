@@ -1,6 +1,9 @@
 #include "study/sweep_study.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include "core/input_error.h"
 
 namespace swingsim {
 namespace {
@@ -20,6 +23,8 @@ TEST(SweepStudyFormat, LoadWriteLoadGivesTheSameStudy) {
   custom.swing.accuracy = 1e-6;
   custom.outputDir = "out/custom";
   custom.loweringStep = 0.02;
+  custom.uncertaintySamples = 40;
+  custom.uncertaintySeed = 123;
   studies.push_back(custom);
   const std::string dir = kRoot + "/studies";
   for (const SweepStudy& s : studies) {
@@ -40,6 +45,52 @@ TEST(SweepStudyFormat, LoadWriteLoadGivesTheSameStudy) {
     EXPECT_EQ(back.swing.accuracy, s.swing.accuracy);
     EXPECT_EQ(back.outputDir, s.outputDir);
     EXPECT_EQ(back.kneeModels.size(), s.kneeModels.size());
+    EXPECT_EQ(back.uncertaintySamples, s.uncertaintySamples);
+    EXPECT_EQ(back.uncertaintySeed, s.uncertaintySeed);
+  }
+}
+
+// `uncertainty: {samples: N, seed: S}` (issue 15 item 4): read, defaults, and strict keys.
+std::string studyWithUncertainty(const std::string& map) {
+  return "kind: knee-axis-sweep\nname: u\nparticipants: [../participants/p1.yaml]\nuncertainty: " + map + "\n";
+}
+
+TEST(SweepStudyFormat, UncertaintyMapIsRead) {
+  const std::string path = kRoot + "/studies/uncertainty-test.yaml";
+  const SweepStudy s = parseSweepStudy(studyWithUncertainty("{samples: 25, seed: 9}"), path);
+  EXPECT_EQ(s.uncertaintySamples, 25);
+  EXPECT_EQ(s.uncertaintySeed, 9);
+  const SweepStudy unseeded = parseSweepStudy(studyWithUncertainty("{samples: 3}"), path);
+  EXPECT_EQ(unseeded.uncertaintySeed, 1);
+  const SweepStudy none = parseSweepStudy("kind: knee-axis-sweep\nname: u\nparticipants: [../participants/p1.yaml]\n", path);
+  EXPECT_EQ(none.uncertaintySamples, 0);
+}
+
+TEST(SweepStudyFormat, UncertaintyMapRejectsBadKeysAndValues) {
+  using ::testing::HasSubstr;
+  const std::string path = kRoot + "/studies/uncertainty-test.yaml";
+  struct Case {
+    std::string map, message;
+  };
+  const Case cases[] = {
+      {"{samples: 10, sed: 3}", "sed: unknown key"},
+      {"{samples: 10, seeds: 3}", "seeds: unknown key"},
+      {"{seed: 3}", "samples"},
+      {"{samples: 0}", "samples: expected a whole number of samples from 1 to 100000"},
+      {"{samples: -5}", "samples: expected a whole number of samples from 1 to 100000"},
+      {"{samples: 2.5}", "samples: expected an integer"},
+      {"{samples: many}", "samples"},
+      {"{samples: 10, seed: -1}", "seed: expected a seed from 0 to 1000000000"},
+      {"200", "uncertainty"},
+  };
+  for (const Case& c : cases) {
+    try {
+      parseSweepStudy(studyWithUncertainty(c.map), path);
+      ADD_FAILURE() << c.map << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), HasSubstr(c.message)) << c.map;
+      EXPECT_THAT(e.what(), HasSubstr("uncertainty-test.yaml:4")) << c.map << ": no file:line";
+    }
   }
 }
 
