@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <regex>
 #include <sstream>
+#include <chrono>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -112,6 +114,44 @@ TEST(ProgressReporter, AutoStyleWritesLinesToAFile) {
   ProgressReporter progress("sweep", "swings", out.file());  // a file is not a terminal
   progress.update(1, 2);
   EXPECT_EQ(out.text().find('\r'), std::string::npos);
+}
+
+}  // namespace
+}  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// setShowRate: lines carry the rate and the time left at that rate once something is done;
+// the first line (nothing done yet) and the last (all done) have nothing to extrapolate
+// from or to, except that the last says 0 s left.
+TEST(ProgressReporterRate, LinesShowRateAndTimeLeft) {
+  Capture c;
+  {
+    ProgressReporter p("uncertainty demo", "swings", c.file(), ProgressReporter::Style::kLines);
+    p.setShowRate(true);
+    p.update(0, 10);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    p.update(5, 10);
+    p.update(10, 10);
+  }
+  const auto lines = splitLines(c.text());
+  ASSERT_EQ(lines.size(), 3u) << c.text();
+  EXPECT_THAT(lines[0], ::testing::Not(HasSubstr("left")));
+  const std::regex rate(R"(uncertainty demo: 5/10 swings \(50 %\), [0-9.]+ s, [0-9]+ swings/s, [0-9]+ s left)");
+  EXPECT_TRUE(std::regex_match(lines[1], rate)) << lines[1];
+  EXPECT_THAT(lines[2], HasSubstr(", 0 s left"));
+}
+
+// Without setShowRate the lines stay as they were (the sweep's documented format).
+TEST(ProgressReporterRate, OffByDefault) {
+  Capture c;
+  {
+    ProgressReporter p("sweep demo", "swings", c.file(), ProgressReporter::Style::kLines);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    p.update(5, 10);
+  }
+  EXPECT_THAT(c.text(), ::testing::Not(HasSubstr("/s")));
 }
 
 }  // namespace

@@ -81,6 +81,39 @@ TEST(SvgPlot, FixedRangeMapsDataToPixelsLinearly) {
   EXPECT_THAT(svg, HasSubstr("L782.0 "));
 }
 
+// A band between two curves is one closed polygon per finite run: along the highs, back
+// along the lows; a NaN splits it in two.
+TEST(SvgPlot, FillIsAClosedPolygonPerFiniteRun) {
+  SvgPlot plot(800, 300);
+  plot.setXRange(0, 10);
+  plot.setYRange(0, 1);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  plot.addFill({0, 5, 10}, {0.25, 0.25, 0.25}, {0.75, 0.75, 0.75}, "5-95 %", "#0072B2");
+  const std::string one = plot.render();
+  // Plot area 708 x 216 px from (74, 34): y = 0.75 at 88, y = 0.25 at 196.
+  EXPECT_THAT(one, HasSubstr("M74.0 88.0L428.0 88.0L782.0 88.0L782.0 196.0L428.0 196.0L74.0 196.0Z"));
+  EXPECT_THAT(one, HasSubstr("5-95 %"));  // in the legend
+  SvgPlot gap(800, 300);
+  gap.addFill({0, 1, 2, 3, 4}, {0, 0, nan, 0, 0}, {1, 1, 1, 1, 1}, "", "#000");
+  EXPECT_EQ(countOf(gap.render(), "Z\" fill=\"#000\""), 2);
+  EXPECT_THROW(gap.addFill({0, 1}, {0}, {1, 1}, "", "#000"), std::invalid_argument);
+}
+
+// Text labels replace the numeric y ticks (a tornado's rows); the left margin grows for them.
+TEST(SvgPlot, YTickLabelsReplaceNumbersAndWidenTheMargin) {
+  SvgPlot plot(800, 300);
+  plot.setXRange(0, 10);
+  plot.setYRange(0, 3);
+  plot.addLine({0, 10}, {1, 1}, "", "#000");
+  plot.setYTickLabels({{1, "knee friction <Tc>"}, {2, "COM rule"}}, 300);
+  const std::string svg = plot.render();
+  EXPECT_THAT(svg, HasSubstr(">knee friction &lt;Tc&gt;</text>"));
+  EXPECT_THAT(svg, HasSubstr(">COM rule</text>"));
+  EXPECT_THAT(svg, Not(HasSubstr(">2.5</text>")));  // no numeric tick
+  EXPECT_THAT(svg, HasSubstr("M300.0 "));            // the plot starts at the new margin
+  EXPECT_THROW(plot.setYTickLabels({}, 790), std::invalid_argument);
+}
+
 // The legend box (white, grey frame) in the corner where it hides the least data.
 TEST(SvgPlot, LegendGoesToTheCornerWithTheLeastData) {
   auto legendX = [](const std::string& svg) {
