@@ -129,6 +129,33 @@ TEST(SweepRobustness, SigintKeepsFinishedRowsReadableNamesTheMissingAndWritesNoR
   EXPECT_LT(finished, rows) << "the interrupt came too late to test anything";
 }
 
+// An interrupt during the uncertainty analysis (after the plain sweep finished): exit 1,
+// and no report, CSV or JSON, since a report without the analysis asked for would look
+// complete.
+TEST(SweepRobustness, SigintDuringTheUncertaintyAnalysisWritesNothing) {
+  const fs::path dir = freshDir("sigint-uncertainty");
+  const fs::path study = writeStudy(dir, "interrupted-uncertainty", 0.05, 0.2);  // 5 lowerings
+  const fs::path out = dir / "out";
+  const fs::path log = dir / "log.txt";
+  // 5 x (23 + 200) = 1115 swings on one thread: seconds, long enough to interrupt.
+  const pid_t pid = spawn({"sweep", study.string(), "--out", out.string(), "--jobs", "1", "--json",
+                           (dir / "r.json").string(), "--uncertainty", "200"},
+                          log);
+  static const std::regex started(R"(uncertainty interrupted-uncertainty: ([1-9]\d*)/\d+ swings)");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (!std::regex_search(slurp(log), started) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(std::regex_search(slurp(log), started)) << "the analysis never reported progress:\n" << slurp(log);
+  ASSERT_EQ(::kill(pid, SIGINT), 0);
+  const Finished r = reap(pid, log);
+  ASSERT_EQ(r.code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("interrupted during the uncertainty analysis; nothing in " + out.string() +
+                                  " was written"));
+  EXPECT_FALSE(fs::exists(out / "report.md"));
+  EXPECT_FALSE(fs::exists(out / "sweep.csv"));
+  EXPECT_FALSE(fs::exists(dir / "r.json"));
+}
+
 TEST(SweepRobustness, SameStudyTwiceGivesByteIdenticalFiles) {
   const fs::path dir = freshDir("twice");
   const fs::path study = writeStudy(dir, "twice", 0.05, 0.15);

@@ -60,6 +60,14 @@ TEST(SweepUncertaintyCli, WritesIntervalsSensitivityAndTornado) {
   EXPECT_THAT(report, HasSubstr("## How sure is the optimum"));
   EXPECT_THAT(report, HasSubstr("figures/P1-tornado.svg"));
   EXPECT_THAT(slurp(dir / "out" / "figures" / "P1-swing-time.svg"), HasSubstr("5-95 % over the assumptions"));
+
+  // The same seed on one thread: byte-identical JSON and report.
+  const CliRun again = runSwingsim("sweep " + study.string() + " --out " + (dir / "out1").string() + " --json " +
+                                   (dir / "out1.json").string() + " --jobs 1");
+  ASSERT_EQ(again.code, 0) << again.output;
+  EXPECT_EQ(slurp(dir / "out1.json"), slurp(dir / "out.json"));
+  EXPECT_EQ(slurp(dir / "out1" / "report.md"), report);
+  EXPECT_EQ(slurp(dir / "out1" / "figures" / "P1-tornado.svg"), slurp(dir / "out" / "figures" / "P1-tornado.svg"));
 }
 
 // The command line overrides the study's map; without either there is nothing to seed.
