@@ -72,11 +72,11 @@ CLI::Validator finiteNumber(std::function<std::string(double)> check) {
       "");
 }
 
-CLI::Validator wholeNumberFrom(int min, const std::string& expected) {
+CLI::Validator wholeNumberFrom(int min, const std::string& expected, int max) {
   return CLI::Validator(
-      [min, expected](std::string& text) -> std::string {
+      [min, max, expected](std::string& text) -> std::string {
         const std::optional<double> v = readFinite(text);
-        if (!v || *v != std::floor(*v) || *v < min || *v > 1e9) return expected + " (got '" + text + "')";
+        if (!v || *v != std::floor(*v) || *v < min || *v > max) return expected + " (got '" + text + "')";
         text = std::to_string(static_cast<long long>(*v));  // "2.0" -> "2" for CLI11's integer conversion
         return "";
       },

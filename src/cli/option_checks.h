@@ -15,8 +15,8 @@ namespace swingsim::cli {
 /// A finite number; `check(value)` returns "" if it is usable, else what was expected
 /// ("expected a relative accuracy in [1e-14, 0.01]").
 CLI::Validator finiteNumber(std::function<std::string(double)> check = {});
-/// A whole number of at least `min`; `expected` says what is wanted.
-CLI::Validator wholeNumberFrom(int min, const std::string& expected);
+/// A whole number from `min` to `max`; `expected` says what is wanted.
+CLI::Validator wholeNumberFrom(int min, const std::string& expected, int max = 1000000000);
 /// One of `keys`.
 CLI::Validator oneOf(const std::vector<std::string>& keys);
 

@@ -179,7 +179,8 @@ Command addSweepCommand(CLI::App& app) {
                   "assumptions and each at both ends of its range (docs/uncertainty.md; default: the study's "
                   "uncertainty: map, else none)")
       ->type_name("N")
-      ->check(wholeNumberFrom(1, "expected a positive whole number of samples"));
+      ->check(wholeNumberFrom(1, "expected a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples),
+                              kMaxUncertaintySamples));
   sub->add_option("--seed", a->seed, "seed of the uncertainty analysis's draws (std::mt19937_64; default: the study's, else 1)")
       ->type_name("S")
       ->check(wholeNumberFrom(0, "expected a whole number from 0"));

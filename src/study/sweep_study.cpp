@@ -7,6 +7,7 @@
 #include "io/participant_loader.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
+#include "swing/sweep_uncertainty.h"
 
 namespace swingsim {
 
@@ -18,9 +19,6 @@ struct LoweringOf {};
 struct AddedMassOf {};
 struct UncertaintyOf {};
 
-// Enough for 5-95 % intervals; far beyond it a run would take hours (about 0.15 s per
-// sample for the four Burkett participants on 2 cores).
-constexpr int kMaxUncertaintySamples = 100000;
 
 std::vector<std::pair<std::string, SwingIntegrator>> integratorChoices() {
   std::vector<std::pair<std::string, SwingIntegrator>> choices;
