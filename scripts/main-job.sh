@@ -2,7 +2,7 @@
 # The main job: install, build, and run the Burkett 2004 knee-axis sweep study, then how sure
 # its fastest lowering is (200 Monte Carlo samples over the unpublished assumptions and each
 # assumption at both ends of its range: docs/uncertainty.md; 18,900 swings, 1-2 min on
-# 2 cores). Writes out/burkett2004/report.md (+ CSV, SVG, JSON).
+# 2 cores shared with other work). Writes out/burkett2004/report.md (+ CSV, SVG, JSON).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh
