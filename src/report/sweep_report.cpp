@@ -769,7 +769,7 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
     const Participant& p = study.participants.front();
     md += "- Hip moment (not published): " + p.hipMoment.describe() +
           " for " + p.name + "; each participant's time scale is calibrated to Table 3 (see participant YAML).\n";
-    md += "- Knee damping table (not published): " + (study.kneeModelOverride.empty() ? p.kneeModelPath : study.kneeModelOverride) +
+    md += "- Knee damping table (not published): " + studyKneeModelPath(study, p) +
           ", the same for everyone; viscous speed rule (moment scales with speed / 150 deg/s).\n";
     md += std::string("- COM rule: ") +
           (p.comRule == ComRule::kFixedFromProximal ? "thigh COM fixed from the hip, shank COM fixed from the knee (moves down with the knee unit)"

@@ -124,7 +124,7 @@ SweepStudy readSweepStudy(YamlMap& yaml, const std::string& path) {
   serialize(a, s);
   yaml.finish();
   for (const auto& p : s.participants) {
-    const std::string modelPath = s.kneeModelOverride.empty() ? p.kneeModelPath : s.kneeModelOverride;
+    const std::string modelPath = studyKneeModelPath(s, p);
     if (!s.kneeModels.count(modelPath)) s.kneeModels.emplace(modelPath, loadKneeModel(modelPath));
   }
   return s;

@@ -13,18 +13,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-const KneeModel& kneeModelOf(const SweepStudy& study, const Participant& p) {
-  const std::string path = study.kneeModelOverride.empty() ? p.kneeModelPath : study.kneeModelOverride;
-  const auto model = study.kneeModels.find(path);
-  if (model == study.kneeModels.end()) throw RunError(p.name + ": knee model " + path + " was not loaded with the study");
-  return model->second;
-}
 
 // Swing time (s) of participant p at `lowering` with its hip time scale set to `scale`; NaN
 // if no swing ends there.
 double swingTimeWith(const SweepStudy& study, Participant p, double scale, double lowering) {
   p.hipMoment.timeScale = scale;
-  const KneeLawSum knee = makeKneeLaw(p, kneeModelOf(study, p));
+  const KneeLawSum knee = makeKneeLaw(p, findStudyKneeModel(study, p));
   SwingSetup setup;
   setup.participant = p;
   setup.knee = &knee;
@@ -62,7 +56,7 @@ std::vector<ParticipantCalibration> calibrateSweepParticipants(SweepStudy& study
       continue;
     }
     c.targetTime = study.calibrateTo == CalibrationTarget::kMeasured ? pub->table3Measured : pub->table3Model;
-    const KneeLawSum knee = makeKneeLaw(p, kneeModelOf(study, p));
+    const KneeLawSum knee = makeKneeLaw(p, findStudyKneeModel(study, p));
     SwingSetup setup;
     setup.participant = p;
     setup.knee = &knee;

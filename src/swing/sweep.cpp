@@ -15,6 +15,45 @@
 namespace swingsim {
 
 
+std::string studyKneeModelPath(const SweepStudy& study, const Participant& p) {
+  return study.kneeModelOverride.empty() ? p.kneeModelPath : study.kneeModelOverride;
+}
+
+const KneeModel& findStudyKneeModel(const SweepStudy& study, const Participant& p) {
+  const std::string path = studyKneeModelPath(study, p);
+  const auto model = study.kneeModels.find(path);
+  if (model == study.kneeModels.end())
+    throw RunError("sweep " + study.name + ": participant " + p.name + ": knee model " + path + " was not loaded with the study");
+  return model->second;
+}
+
+int runParallelJobs(int total, int jobs, const std::function<void(int)>& runOne,
+                    const std::function<void(int, int)>& progress, const volatile bool* stopFlag) {
+  std::atomic<int> next{0}, done{0};
+  auto worker = [&] {
+    for (;;) {
+      if (stopFlag && *stopFlag) return;
+      const int k = next.fetch_add(1);
+      if (k >= total) return;
+      runOne(k);
+      done.fetch_add(1);
+    }
+  };
+  int threads = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, std::max(1, total));
+  // Workers pull jobs by index; the calling thread only reports progress.
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  while (progress && done.load() < total && !(stopFlag && *stopFlag)) {
+    progress(done.load(), total);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (done.load() >= total) break;
+  }
+  for (auto& t : pool) t.join();
+  if (progress) progress(done.load(), total);
+  return done.load();
+}
+
 std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p) {
   const double cap = std::min(study.loweringMax, calcMaxLowering(p));
   std::vector<double> out;
@@ -55,12 +94,7 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
   std::vector<Job> work;
   for (std::size_t i = 0; i < study.participants.size(); ++i) {
     const Participant& p = study.participants[i];
-    const std::string modelPath = study.kneeModelOverride.empty() ? p.kneeModelPath : study.kneeModelOverride;
-    const auto model = study.kneeModels.find(modelPath);
-    if (model == study.kneeModels.end())
-      throw RunError("sweep " + study.name + ": participant " + p.name + ": knee model " + modelPath +
-                     " was not loaded with the study");
-    knees.push_back(makeKneeLaw(p, model->second));
+    knees.push_back(makeKneeLaw(p, findStudyKneeModel(study, p)));
 
     ParticipantSweep ps;
     ps.name = p.name;
@@ -95,7 +129,6 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
   }
 
   const int total = static_cast<int>(work.size());
-  std::atomic<int> next{0}, done{0};
   auto runOne = [&](const Job& job) {
     const Participant& p = study.participants[job.participant];
     ParticipantSweep& ps = results.participants[job.participant];
@@ -121,27 +154,7 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
     }
     pt.ran = true;
   };
-  auto worker = [&] {
-    for (;;) {
-      if (stopFlag && *stopFlag) return;
-      const int k = next.fetch_add(1);
-      if (k >= total) return;
-      runOne(work[static_cast<std::size_t>(k)]);
-      done.fetch_add(1);
-    }
-  };
-  int threads = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, std::max(1, total));
-  // Workers pull jobs by index; the calling thread only reports progress.
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  while (progress && done.load() < total && !(stopFlag && *stopFlag)) {
-    progress(done.load(), total);
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    if (done.load() >= total) break;
-  }
-  for (auto& t : pool) t.join();
-  if (progress) progress(done.load(), total);
+  runParallelJobs(total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
 
   for (auto& ps : results.participants) {
     auto pickBest = [](std::vector<SweepPoint>& pts) {

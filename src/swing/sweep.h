@@ -136,6 +136,19 @@ struct SweepResults {
 };
 
 
+/// Path of the knee model participant `p` uses in `study` (the study's override, else the
+/// participant's own).
+std::string studyKneeModelPath(const SweepStudy& study, const Participant& p);
+/// That knee model, as the study reader loaded it; throws RunError if it was not loaded.
+const KneeModel& findStudyKneeModel(const SweepStudy& study, const Participant& p);
+
+/// Runs runOne(0) .. runOne(total - 1) on `jobs` worker threads (0 = all cores), each index
+/// once, in no set order (results stored by index are the same whatever the thread count).
+/// progress(done, total) is called from the calling thread about every 0.1 s and at the end.
+/// A stop flag (SIGINT) ends it early. Returns how many ran.
+int runParallelJobs(int total, int jobs, const std::function<void(int)>& runOne,
+                    const std::function<void(int, int)>& progress = {}, const volatile bool* stopFlag = nullptr);
+
 /// Lowerings for a participant: 0, step, 2 step, ... up to min(max, cap), plus the
 /// Table 4 lowerings if requested, sorted.
 std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p);

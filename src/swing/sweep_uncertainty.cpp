@@ -1,12 +1,10 @@
 #include "swing/sweep_uncertainty.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <random>
-#include <thread>
 
 #include "core/input_error.h"
 
@@ -103,14 +101,9 @@ std::vector<std::vector<double>> drawUncertaintySamples(int samples, std::uint64
 }
 
 SweepVariant makeNominalVariant(const SweepStudy& study, const Participant& participant) {
-  const std::string modelPath = study.kneeModelOverride.empty() ? participant.kneeModelPath : study.kneeModelOverride;
-  const auto model = study.kneeModels.find(modelPath);
-  if (model == study.kneeModels.end())
-    throw RunError("sweep " + study.name + ": participant " + participant.name + ": knee model " + modelPath +
-                   " was not loaded with the study");
   SweepVariant v;
   v.participant = participant;
-  v.knee = model->second;
+  v.knee = findStudyKneeModel(study, participant);
   v.swing = study.swing;
   v.swing.recordTrajectory = false;
   return v;
@@ -177,7 +170,6 @@ UncertaintyResults runSweepUncertainty(const SweepStudy& study, const Uncertaint
     for (std::size_t k = 0; k < scenarios[s].summary.lowerings.size(); ++k) work.push_back({s, k});
 
   const int total = static_cast<int>(work.size());
-  std::atomic<int> next{0}, done{0};
   auto runOne = [&](const Job& job) {
     Scenario& sc = scenarios[job.scenario];
     const double lowering = sc.summary.lowerings[job.lowering];
@@ -192,26 +184,8 @@ UncertaintyResults runSweepUncertainty(const SweepStudy& study, const Uncertaint
       // target, a time limit): the point drops out of the fastest-lowering search, as in runSweep.
     }
   };
-  auto worker = [&] {
-    for (;;) {
-      if (stopFlag && *stopFlag) return;
-      const int k = next.fetch_add(1);
-      if (k >= total) return;
-      runOne(work[static_cast<std::size_t>(k)]);
-      done.fetch_add(1);
-    }
-  };
-  int threads = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, std::max(1, total));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  while (progress && done.load() < total && !(stopFlag && *stopFlag)) {
-    progress(done.load(), total);
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  for (auto& t : pool) t.join();
-  if (progress) progress(done.load(), total);
-  results.interrupted = done.load() < total;
+  const int done = runParallelJobs(total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
+  results.interrupted = done < total;
 
   for (auto& sc : scenarios) pickBest(sc.summary);
   for (std::size_t i = 0; i < study.participants.size(); ++i) {

@@ -82,10 +82,8 @@ void checkTerminalImpact(const SweepStudy& study, SweepResults& results, int job
               check.fastestTimeWithoutFriction, check.interiorOptimumWithoutFriction);
 
     // The bookkeeping at the standard location and the largest lowering.
-    const std::string modelPath = study.kneeModelOverride.empty() ? p.kneeModelPath : study.kneeModelOverride;
-    const auto model = study.kneeModels.find(modelPath);
-    if (model == study.kneeModels.end()) throw RunError("terminal impact check: knee model " + modelPath + " was not loaded");
-    const KneeLawSum knee = makeKneeLaw(p, model->second);
+    const KneeModel& model = findStudyKneeModel(study, p);
+    const KneeLawSum knee = makeKneeLaw(p, model);
     for (double lowering : {0.0, ps.loweringCap}) {
       TrackedImpactSwing tracked;
       tracked.lowering = lowering;
@@ -130,7 +128,7 @@ void checkTerminalImpact(const SweepStudy& study, SweepResults& results, int job
           fmt("%.2f", -damping) + " J; the knee leaves the stop at " + fmt("%.2f", im.reboundRate) + " rad/s and rises to " +
           fmt("%.1f", im.reboundHeight * kRadToDeg) + " deg.");
     }
-    const double restitution = model->second.spec.stop.restitution;
+    const double restitution = model.spec.stop.restitution;
     if (check.bounceLowerings.empty() && check.bounceLoweringsWithoutFriction.empty()) {
       check.findings.push_back("Friction is not what stops the bounce here: without it the knee still does not bounce at any lowering; "
                                "with the stop's restitution of " + fmt("%.2f", restitution) +
