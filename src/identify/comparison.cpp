@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/text_format.h"
 #include "numerics/residual_analysis.h"
 
 namespace swingsim {
@@ -9,12 +10,6 @@ namespace swingsim {
 namespace {
 
 constexpr int kStructureBins = 12;  // equal-count bins of the binned mean residual
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 }  // namespace
 

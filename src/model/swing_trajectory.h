@@ -1,5 +1,6 @@
 #pragma once
 // A simulated swing sampled over time (what the trajectory CSV and .sto files hold).
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -9,6 +10,11 @@ struct SwingTrajectory {
   std::vector<double> time, hipFlexion, kneeFlexion, hipFlexionRate, kneeFlexionRate, hipMoment, kneeMoment;
   std::vector<double> kneeX, kneeY, ankleX, ankleY, toeX, toeY;  ///< ground frame, hip at (0, hipHeight)
   std::size_t size() const { return time.size(); }
+  /// Every column, in declaration order (to reserve or cut them all alike).
+  std::array<std::vector<double>*, 13> columns() {
+    return {&time, &hipFlexion, &kneeFlexion, &hipFlexionRate, &kneeFlexionRate, &hipMoment, &kneeMoment,
+            &kneeX, &kneeY, &ankleX, &ankleY, &toeX, &toeY};
+  }
 };
 
 }  // namespace swingsim

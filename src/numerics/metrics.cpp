@@ -42,4 +42,11 @@ ErrorMetrics calcErrorMetrics(const std::vector<double>& measured, const std::ve
   return m;
 }
 
+double calcRms(const std::vector<double>& errors) {
+  if (errors.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double sum = 0;
+  for (double e : errors) sum += e * e;
+  return std::sqrt(sum / static_cast<double>(errors.size()));
+}
+
 }  // namespace swingsim

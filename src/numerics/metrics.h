@@ -26,4 +26,7 @@ ErrorMetrics calcErrorMetrics(const std::vector<double>& measured, const std::ve
 ErrorMetrics calcErrorMetrics(const std::vector<double>& measured, const std::vector<double>& predicted,
                               const std::vector<bool>& mask);
 
+/// Root mean square of a series of errors (residuals); NaN if it is empty.
+double calcRms(const std::vector<double>& errors);
+
 }  // namespace swingsim

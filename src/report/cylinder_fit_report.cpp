@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/text_format.h"
 #include "io/json_file.h"
 #include "core/output_files.h"
 #include "report/svg_plot.h"
@@ -10,12 +11,6 @@
 namespace swingsim {
 
 namespace {
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 const char* kPhaseNames4[] = {"1 stance flexion", "2 flexion after hyperextension", "3 extension", "4 hyperextension"};
 const char* kPhaseNames2[] = {"1 high force (stance flexion)", "2 low force"};

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/text_format.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "report/svg_plot.h"
@@ -15,13 +16,6 @@ namespace {
 const double kZ99 = calcNormalQuantile(0.995);  // two-sided 99 % normal quantile
 constexpr int kResidualBins = 12;            // equal-count bins for the binned residual
 constexpr double kAcfSeconds = 0.5;          // autocorrelation shown up to this lag, s
-
-template <class... A>
-std::string fmt(const char* f, A... a) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, f, a...);
-  return buf;
-}
 
 // A number with the comparison's decimals.
 std::string num(double v, int decimals) { return fmt("%.*f", decimals, v); }

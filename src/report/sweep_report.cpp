@@ -1,7 +1,5 @@
 #include "report/sweep_report.h"
 
-#include "report/swing_json.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,9 +7,12 @@
 
 #include "io/csv_table.h"
 #include "core/input_error.h"
+#include "core/text_format.h"
 #include "core/output_files.h"
 #include "io/json_file.h"
+#include "numerics/metrics.h"
 #include "report/svg_plot.h"
+#include "report/swing_json.h"
 #include "swing/burkett_published.h"
 
 namespace swingsim {
@@ -20,12 +21,6 @@ namespace {
 
 constexpr double kSameLowering = 1e-6;  // m: lowerings closer than this are the same row
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 const SweepPoint* pointAt(const ParticipantSweep& ps, double lowering) {
   for (const auto& pt : ps.points)
@@ -599,13 +594,8 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
     for (double x : {v.shorteningMeasured, v.shorteningOurs, v.shorteningModel}) row.push_back(msOrDash(x));
     md += mdRow(row);
   }
-  auto rmsOf = [](const std::vector<double>& e) {
-    double sum = 0;
-    for (double x : e) sum += x * x;
-    return e.empty() ? std::numeric_limits<double>::quiet_NaN() : std::sqrt(sum / static_cast<double>(e.size()));
-  };
-  std::vector<std::string> all = {"all", msOrDash(rmsOf(pooledOurs)), msOrDash(rmsOf(pooledModel))};
-  if (loo) all.push_back(msOrDash(rmsOf(pooledLoo)));
+  std::vector<std::string> all = {"all", msOrDash(calcRms(pooledOurs)), msOrDash(calcRms(pooledModel))};
+  if (loo) all.push_back(msOrDash(calcRms(pooledLoo)));
   for (int k = 0; k < 3; ++k) all.push_back("");
   md += mdRow(all);
   md += "\nShortening: standard location minus the largest Table 4 lowering simulated here (positive = faster when "

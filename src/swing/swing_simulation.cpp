@@ -678,9 +678,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     // Room for a typical swing plus its settle dwell, so samples rarely reallocate.
     constexpr double kTypicalDuration = 0.8;  // s
     const std::size_t capacity = static_cast<std::size_t>(std::min(rule.timeLimit, kTypicalDuration) / options.sampleInterval) + 2;
-    for (auto* v : {&tr.time, &tr.hipFlexion, &tr.kneeFlexion, &tr.hipFlexionRate, &tr.kneeFlexionRate, &tr.hipMoment,
-                    &tr.kneeMoment, &tr.kneeX, &tr.kneeY, &tr.ankleX, &tr.ankleY, &tr.toeX, &tr.toeY})
-      v->reserve(capacity);
+    for (auto* v : tr.columns()) v->reserve(capacity);
     // The first sample, at toe-off.
     appendSample(tr, geometry, hipHeight, 0.0, previous.hip, previous.knee, previous.hipRate, previous.kneeRate,
                  previous.hipMoment, previous.kneeMoment);
@@ -762,9 +760,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
         log = checkpoint.log;
         impacts = checkpoint.impacts;
         now = checkpoint.previous;
-        for (auto* v : {&tr.time, &tr.hipFlexion, &tr.kneeFlexion, &tr.hipFlexionRate, &tr.kneeFlexionRate, &tr.hipMoment,
-                        &tr.kneeMoment, &tr.kneeX, &tr.kneeY, &tr.ankleX, &tr.ankleY, &tr.toeX, &tr.toeY})
-          v->resize(checkpoint.samples);
+        for (auto* v : tr.columns()) v->resize(checkpoint.samples);
         nextSample = checkpoint.nextSample;
         dormandPrince->restoreCheckpoint(options.accuracy);
         tightenedFor = checkpoint.candidateTime;

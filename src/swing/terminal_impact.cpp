@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/text_format.h"
 #include "core/input_error.h"
 #include "core/units.h"
 #include "swing/knee_setup.h"
@@ -13,12 +14,6 @@ namespace swingsim {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 // "0.00-0.13 m" style ranges of consecutive grid lowerings, or "none".
 std::string describeLowerings(const std::vector<double>& lowerings, double step) {
