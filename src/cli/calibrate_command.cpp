@@ -26,6 +26,12 @@ struct CalibrateArguments {
   bool dryRun = false;
 };
 
+// The Table 3 column a --target word names: model or measured ("stored" is not a target).
+std::optional<CalibrationTarget> findTableColumn(const std::string& word) {
+  const auto target = findCalibrationTarget(word);
+  return target == CalibrationTarget::kStored ? std::nullopt : target;
+}
+
 int runCalibrate(const CalibrateArguments& a) {
   if (a.target && a.participants.size() != 1) throw CLI::ValidationError("--target", "applies to one participant file");
   // Every file is loaded and calibrated before any is written; storeParticipants then checks
@@ -39,7 +45,7 @@ int runCalibrate(const CalibrateArguments& a) {
     if (a.target) {
       target = *a.target;
     } else if (const PublishedParticipant* pub = findPublished(p.name)) {
-      target = a.column == CalibrationTarget::kMeasured ? pub->table3Measured : pub->table3Model;
+      target = table3Target(*pub, a.column);
     } else {
       throw InputError(path + ": name: '" + p.name + "' is not a Burkett 2004 participant; give --target SECONDS");
     }
@@ -76,8 +82,8 @@ Command addCalibrateCommand(CLI::App& app) {
   sub->add_option_function<std::string>(
          "--target",
          [a](const std::string& v) {
-           if (v == "model" || v == "measured") {
-             a->column = v == "model" ? CalibrationTarget::kModel : CalibrationTarget::kMeasured;
+           if (const auto column = findTableColumn(v)) {
+             a->column = *column;
            } else {
              a->target = std::stod(v);  // checked below
            }
@@ -87,7 +93,7 @@ Command addCalibrateCommand(CLI::App& app) {
       ->type_name("model|measured|S")
       ->check(CLI::Validator(
           [](std::string& v) -> std::string {
-            if (v == "model" || v == "measured") return "";
+            if (findTableColumn(v)) return "";
             try {
               std::size_t used = 0;
               const double x = std::stod(v, &used);

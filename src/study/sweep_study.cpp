@@ -107,9 +107,7 @@ void serialize(A& a, SweepStudy& s) {
   a.optionalMap("added_mass", s, addedMass, AddedMassOf{});
   a.optionalMap("integrator", s.swing, present = true);
   // Calibrate the hip time scales to Burkett Table 3 before sweeping (measured_validation.h).
-  a.choice("calibrate_to", s.calibrateTo,
-           {{"stored", CalibrationTarget::kStored}, {"model", CalibrationTarget::kModel}, {"measured", CalibrationTarget::kMeasured}},
-           true);
+  a.choice("calibrate_to", s.calibrateTo, calibrationTargetChoices(), true);
   bool uncertainty = s.uncertaintySamples > 0;
   a.optionalMap("uncertainty", s, uncertainty, UncertaintyOf{});
   a.optionalText("output_dir", s.outputDir);

@@ -21,13 +21,24 @@ double swingTimeAt(SwingSetup setup, double scale, const SwingOptions& options) 
 
 }  // namespace
 
+const std::vector<std::pair<std::string, CalibrationTarget>>& calibrationTargetChoices() {
+  static const std::vector<std::pair<std::string, CalibrationTarget>> choices = {
+      {"stored", CalibrationTarget::kStored}, {"model", CalibrationTarget::kModel}, {"measured", CalibrationTarget::kMeasured}};
+  return choices;
+}
+
 const char* calibrationTargetKey(CalibrationTarget target) {
-  switch (target) {
-    case CalibrationTarget::kModel: return "model";
-    case CalibrationTarget::kMeasured: return "measured";
-    case CalibrationTarget::kStored: break;
-  }
-  return "stored";
+  return calibrationTargetChoices()[static_cast<std::size_t>(target)].first.c_str();
+}
+
+std::optional<CalibrationTarget> findCalibrationTarget(const std::string& key) {
+  for (const auto& [name, target] : calibrationTargetChoices())
+    if (name == key) return target;
+  return std::nullopt;
+}
+
+double table3Target(const PublishedParticipant& published, CalibrationTarget column) {
+  return column == CalibrationTarget::kMeasured ? published.table3Measured : published.table3Model;
 }
 
 CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, const SwingOptions& swingOptions,

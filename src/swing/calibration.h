@@ -2,8 +2,12 @@
 // Calibration of the one free hip-moment parameter per participant (README "Assumptions",
 // "Calibration"): the profile's time scale, chosen so the standard-location swing time equals a
 // target (Burkett Table 3's model prediction).
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "swing/burkett_published.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -15,8 +19,14 @@ enum class CalibrationTarget {
   kMeasured,  ///< Burkett 2004 Table 3, measured mean (then Table 4 measured is the validation)
 };
 
-/// "stored", "model", "measured".
+/// Every target with its key, in enum order: stored, model, measured.
+const std::vector<std::pair<std::string, CalibrationTarget>>& calibrationTargetChoices();
+/// The key of a target ("stored", "model", "measured").
 const char* calibrationTargetKey(CalibrationTarget target);
+/// The target of a key, or nullopt.
+std::optional<CalibrationTarget> findCalibrationTarget(const std::string& key);
+/// Table 3's swing time for `column` (kModel or kMeasured), s.
+double table3Target(const PublishedParticipant& published, CalibrationTarget column);
 
 struct CalibrationResult {
   double timeScale = 0;   ///< calibrated hip-moment time scale

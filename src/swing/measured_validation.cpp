@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "numerics/metrics.h"
 #include "swing/burkett_published.h"
 #include "swing/knee_setup.h"
 
@@ -33,13 +34,6 @@ double swingTimeWith(const SweepStudy& study, Participant p, double scale, doubl
   }
 }
 
-double rms(const std::vector<double>& errors) {
-  if (errors.empty()) return kNaN;
-  double sum = 0;
-  for (double e : errors) sum += e * e;
-  return std::sqrt(sum / static_cast<double>(errors.size()));
-}
-
 }  // namespace
 
 std::vector<ParticipantCalibration> calibrateSweepParticipants(SweepStudy& study) {
@@ -55,7 +49,7 @@ std::vector<ParticipantCalibration> calibrateSweepParticipants(SweepStudy& study
       out.push_back(c);
       continue;
     }
-    c.targetTime = study.calibrateTo == CalibrationTarget::kMeasured ? pub->table3Measured : pub->table3Model;
+    c.targetTime = table3Target(*pub, study.calibrateTo);
     const KneeLawSum knee = makeKneeLaw(p, findStudyKneeModel(study, p));
     SwingSetup setup;
     setup.participant = p;
@@ -117,9 +111,9 @@ void validateOnTable4(const SweepStudy& study, SweepResults& results) {
       }
       v.rows.push_back(r);
     }
-    v.rmseOurs = rms(ours);
-    v.rmseModel = rms(model);
-    v.rmseLeaveOneOut = rms(loo);
+    v.rmseOurs = calcRms(ours);
+    v.rmseModel = calcRms(model);
+    v.rmseLeaveOneOut = calcRms(loo);
     // Shortening to the largest lowering where ours is known too.
     v.shorteningMeasured = v.shorteningOurs = v.shorteningModel = kNaN;
     if (!v.rows.empty() && !std::isnan(v.rows.front().ours)) {

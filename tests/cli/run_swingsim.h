@@ -37,10 +37,24 @@ inline std::string slurp(const std::filesystem::path& path) {
   return s.str();
 }
 
+/// The folder `<temp>/<suite>-<pid>`, created if missing (kept between tests of a suite).
+inline std::filesystem::path suiteTempDir(const std::string& suite) {
+  const auto dir = std::filesystem::temp_directory_path() / (suite + "-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Writes `text` byte for byte to `<suiteTempDir(suite)>/<name>`; returns the path.
+inline std::string writeSuiteTempFile(const std::string& suite, const std::string& name, const std::string& text) {
+  const auto path = suiteTempDir(suite) / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path.string();
+}
+
 /// An empty folder `<temp>/<suite>-<pid>/<name>`, created anew (the pid keeps two test runs
 /// on one machine out of each other's files).
 inline std::filesystem::path freshTempDir(const std::string& suite, const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / (suite + "-" + std::to_string(::getpid())) / name;
+  const auto dir = suiteTempDir(suite) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -18,6 +18,7 @@
 #include <csignal>
 #include <thread>
 
+#include "../cli/run_swingsim.h"
 #include "io/bench_csv.h"
 #include "identify/bench_data.h"
 #include "knee/bench_profile.h"
@@ -262,16 +263,10 @@ TEST(BadInputCatalogue, YamlMissingFileSaysSo) {
 // CSV readers: the bench data (cylinder fit) and the generic reader
 // ---------------------------------------------------------------------------------------
 
-fs::path tempDir() {
-  const fs::path d = fs::temp_directory_path() / ("swingsim_bad_input_catalogue_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path tempDir() { return testing::suiteTempDir("swingsim_bad_input_catalogue"); }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const fs::path path = tempDir() / name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path.string();
+  return testing::writeSuiteTempFile("swingsim_bad_input_catalogue", name, text);
 }
 
 std::string benchError(const std::string& name, const std::string& text) {

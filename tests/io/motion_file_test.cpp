@@ -6,6 +6,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include "../cli/run_swingsim.h"
 #include <unistd.h>
 
 #include <cmath>
@@ -84,16 +86,10 @@ MotionColumns swingColumns() {
   return c;
 }
 
-fs::path tempDir() {
-  const fs::path d = fs::temp_directory_path() / ("swingsim_motion_file_test_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path tempDir() { return testing::suiteTempDir("swingsim_motion_file_test"); }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const fs::path path = tempDir() / name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path.string();
+  return testing::writeSuiteTempFile("swingsim_motion_file_test", name, text);
 }
 
 /// The message of the InputError that reading `text` as a swing record throws ("" if none).
