@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/output_files.h"
+#include "io/swing_record_csv.h"
 #include "io/yaml_archive.h"
 
 namespace swingsim {
@@ -140,7 +141,18 @@ void serialize(A& a, Participant& p) {
   a.require(p.swingEnd.thighTargetFlexion > p.initial.hipFlexion, "swing_end",
             "thigh_target_flexion_deg must be above the initial hip flexion",
             [&] { return formatNumber(p.swingEnd.thighTargetFlexion * kRadToDeg) + " deg"; });
-  a.map("hip_moment", p.hipMoment);
+  // The drive (issue 14 item 1): a hip moment profile, or the measured thigh angle.
+  if (A::kReading || p.drive != SwingDrive::kHipMoment)
+    a.choice("drive", p.drive, {{"hip_moment", SwingDrive::kHipMoment}, {"thigh_kinematics", SwingDrive::kThighKinematics}},
+             true);
+  if (p.drive == SwingDrive::kThighKinematics) {
+    if constexpr (A::kReading)
+      a.require(!a.has("hip_moment"), "hip_moment", "no hip moment with drive: thigh_kinematics (the measured thigh drives the swing; the hip moment is an output)",
+                [] { return std::string("a hip_moment map"); });
+    a.path("thigh_kinematics", p.thighKinematics.path);
+  } else {
+    a.map("hip_moment", p.hipMoment);
+  }
 }
 
 // ---- Reading and writing ------------------------------------------------------------------
@@ -153,6 +165,12 @@ Participant readParticipant(YamlMap& yaml) {
   YamlReadArchive a(yaml);
   serialize(a, p);
   yaml.finish();
+  if (p.drive == SwingDrive::kThighKinematics) {
+    // The swing kinematics CSV (time_s, hip_flexion_deg, knee_flexion_deg): only its hip is used.
+    const SwingRecord record = readSwingRecord(p.thighKinematics.path);
+    p.thighKinematics.time = record.time;
+    p.thighKinematics.hipFlexion = record.hipFlexion;
+  }
   return p;
 }
 

@@ -1,5 +1,7 @@
 #include "leg/leg_model.h"
 
+#include <stdexcept>
+
 namespace swingsim {
 
 using namespace SimTK;
@@ -13,10 +15,31 @@ MassProperties segmentMassProperties(double m, const Vec3& com, double izz) {
   return MassProperties(m, com, Inertia(izz).shiftFromMassCenter(com, m));
 }
 
+// The measured thigh angle on the hip pin (q = hip flexion): position, rate and
+// acceleration from the same quintic spline, so each is the exact derivative of the last.
+class PrescribedThighImpl final : public Motion::Custom::Implementation {
+ public:
+  explicit PrescribedThighImpl(const ThighMotion& motion) : motion_(motion) {}
+  Implementation* clone() const override { return new PrescribedThighImpl(motion_); }
+  Motion::Level getLevel(const State&) const override { return Motion::Position; }
+  void calcPrescribedPosition(const State& s, int nq, Real* q) const override {
+    if (nq == 1) q[0] = motion_.calcAngle(s.getTime());
+  }
+  void calcPrescribedPositionDot(const State& s, int nq, Real* qdot) const override {
+    if (nq == 1) qdot[0] = motion_.calcRate(s.getTime());
+  }
+  void calcPrescribedPositionDotDot(const State& s, int nq, Real* qdotdot) const override {
+    if (nq == 1) qdotdot[0] = motion_.calcAcceleration(s.getTime());
+  }
+
+ private:
+  ThighMotion motion_;  // shares the fitted spline
+};
+
 }  // namespace
 
 LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment,
-                   const HipRange& hipRange, double hipHeight, bool trackWork)
+                   const HipRange& hipRange, double hipHeight, bool trackWork, const ThighMotion* prescribedThigh)
     : matter_(system_),
       forces_(system_),
       footLength_(g.footLength) {
@@ -54,9 +77,13 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
   auto* kneeImpl = new KneeForceElement(forces_, matter_, shank_, knee, trackWork);
   knee_ = kneeImpl;
   Force::Custom(forces_, kneeImpl);
-  auto* hipImpl = new HipDriveElement(forces_, matter_, thigh_, hipMoment, range, trackWork);
-  hipDrive_ = hipImpl;
-  Force::Custom(forces_, hipImpl);
+  if (prescribedThigh != nullptr) {
+    Motion::Custom(thigh_, new PrescribedThighImpl(*prescribedThigh));
+  } else {
+    auto* hipImpl = new HipDriveElement(forces_, matter_, thigh_, hipMoment, range, trackWork);
+    hipDrive_ = hipImpl;
+    Force::Custom(forces_, hipImpl);
+  }
 
   system_.realizeTopology();
 }
@@ -67,8 +94,28 @@ State LegModel::makeInitialState(const InitialConditions& initial) const {
   shank_.setOneQ(s, 0, initial.kneeFlexion);
   thigh_.setOneU(s, 0, initial.hipFlexionRate);
   shank_.setOneU(s, 0, initial.kneeFlexionRate);
+  if (hasPrescribedThigh()) {  // the thigh's q and u from its prescribed motion at t = 0
+    system_.realize(s, Stage::Time);
+    system_.prescribeQ(s);
+    system_.realize(s, Stage::Position);
+    system_.prescribeU(s);
+  }
   system_.realize(s, Stage::Velocity);
   return s;
+}
+
+double LegModel::calcHipMoment(const State& s) const {
+  if (hipDrive_ != nullptr) return hipDrive_->calcHipMoment(s);
+  // Simbody's tau is the generalized force the Motion exerts with the sign of a multiplier
+  // (it enters the equations as M udot + tau = applied forces): the hip moment the
+  // prescription needs is its negative (checked against the reference integrator's
+  // inverse dynamics and by the round trip, tests/swing/thigh_drive_test.cpp).
+  return -thigh_.getOneTau(s, MobilizerUIndex(0));
+}
+
+double LegModel::getHipWork(const State& s) const {
+  if (hipDrive_ == nullptr) throw std::logic_error("LegModel::getHipWork: the thigh is prescribed; its work is not integrated");
+  return hipDrive_->getWork(s);
 }
 
 double LegModel::calcMechanicalEnergy(const State& s) const {

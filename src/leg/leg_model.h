@@ -11,6 +11,7 @@
 #include "knee/joint_stop.h"
 #include "knee/knee_law.h"
 #include "leg/knee_force_element.h"
+#include "leg/thigh_motion.h"
 #include "model/leg_parameters.h"
 
 namespace swingsim {
@@ -25,8 +26,13 @@ class LegModel {
   /// Builds the system. `hipHeight` (m) places the hip above the ground. `trackWork`: also
   /// integrate the work the knee and the hip do (two Z states, for energy bookkeeping);
   /// off, getKneeWork and getHipWork throw std::logic_error.
+  /// `prescribedThigh` (the measured thigh drive, SwingDrive::kThighKinematics): if given,
+  /// the hip pin follows it as a Simbody prescribed motion (Motion::Custom at position
+  /// level) and `hipMoment` and `hipRange` are not used; the hip moment is then the moment
+  /// the prescription needs (calcHipMoment). It must outlive the model.
   LegModel(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
-           const HipRange& hipRange, double hipHeight, bool trackWork = true);
+           const HipRange& hipRange, double hipHeight, bool trackWork = true,
+           const ThighMotion* prescribedThigh = nullptr);
   LegModel(const LegModel&) = delete;
   LegModel& operator=(const LegModel&) = delete;
 
@@ -41,7 +47,11 @@ class LegModel {
   double getKneeFlexion(const SimTK::State& s) const { return shank_.getOneQ(s, 0); }
   double getHipFlexionRate(const SimTK::State& s) const { return thigh_.getOneU(s, 0); }
   double getKneeFlexionRate(const SimTK::State& s) const { return shank_.getOneU(s, 0); }
-  double calcHipMoment(const SimTK::State& s) const { return hipDrive_->calcHipMoment(s); }
+  /// Hip moment, N m, + = flexion: the profile plus the hip range stop; with a prescribed
+  /// thigh, the moment the prescribed motion needs (Simbody's tau; Acceleration stage).
+  double calcHipMoment(const SimTK::State& s) const;
+  /// The thigh follows a prescribed motion (no hip moment drive, no hip work state).
+  bool hasPrescribedThigh() const { return hipDrive_ == nullptr; }
   double calcKneeMoment(const SimTK::State& s) const { return knee_->calcKneeMoment(s); }
   /// Knee law states (e.g. Mauch S2) in state s.
   const double* getKneeLawStates(const SimTK::State& s) const { return knee_->getLawStates(s); }
@@ -51,7 +61,8 @@ class LegModel {
   double calcMechanicalEnergy(const SimTK::State& s) const;
   /// Work done on the leg by the knee moment and by the hip moment since toe-off, J.
   double getKneeWork(const SimTK::State& s) const { return knee_->getWork(s); }
-  double getHipWork(const SimTK::State& s) const { return hipDrive_->getWork(s); }
+  /// Throws std::logic_error with a prescribed thigh (its work is not integrated).
+  double getHipWork(const SimTK::State& s) const;
   /// The knee's work split by law part (resisting law, friction, stop, ...): how many parts,
   /// each part's name and its work since toe-off, J. Need trackWork.
   int numKneeWorkParts() const { return knee_->numWorkParts(); }
@@ -70,7 +81,7 @@ class LegModel {
   SimTK::MobilizedBody::Pin shank_;
   SimTK::MobilizedBody::Weld foot_;
   const KneeForceElement* knee_ = nullptr;    // owned by forces_
-  const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_
+  const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_; null with a prescribed thigh
   double footLength_;  // m, ankle to toe (for calcPose)
 };
 

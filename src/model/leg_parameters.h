@@ -83,6 +83,23 @@ struct AddedMass {
   double distanceBelowKnee = 0;  ///< m, along the shank
 };
 
+/// What drives the swing (issue 14 item 1).
+enum class SwingDrive {
+  /// A hip moment (HipMomentProfile) drives the thigh; thigh, shank and foot swing freely.
+  kHipMoment,
+  /// The measured thigh angle is prescribed on the hip (ThighKinematics); shank and foot
+  /// swing freely under gravity, the knee law and the stop, and the hip moment the
+  /// prescription needs is an output.
+  kThighKinematics,
+};
+
+/// A measured thigh (hip flexion) angle over a swing: the `thigh_kinematics:` file of a
+/// participant (a swing kinematics CSV or a motion file), or a measured swing record.
+struct ThighKinematics {
+  std::string path;                      ///< file it was read from ("" = given in code)
+  std::vector<double> time, hipFlexion;  ///< s from toe-off (first sample at 0), rad
+};
+
 struct Participant {
   std::string path;  ///< file it was loaded from
   std::string name;
@@ -98,7 +115,9 @@ struct Participant {
   SwingEndRule swingEnd;
   ToeClearanceRule toeClearance;
   HipRange hipRange;
-  HipMomentProfile hipMoment;
+  SwingDrive drive = SwingDrive::kHipMoment;
+  HipMomentProfile hipMoment;        ///< the drive if drive == kHipMoment
+  ThighKinematics thighKinematics;   ///< the drive if drive == kThighKinematics
   double minShankLength = 0.10;  ///< m: the knee unit and pylon clamp need at least this
 };
 

@@ -1,6 +1,7 @@
 #include "swing/reference_swing.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -64,11 +65,25 @@ namespace swingsim {
 // M11 > m2 L1^2 (the thigh has inertia).
 //
 // State vector y = (phi, beta, phi', beta', z_0 .. z_{n-1}).
+//
+// The measured thigh drive (a prescribed thigh, issue 14 item 1): phi(t) is given, so
+// phi'' = the prescribed acceleration replaces the first equation, beta'' follows from the
+// second alone,
+//   beta'' = (-M_knee + m2 L1 r2 sin(phi - beta) phi'^2 - m2 r2 g sin beta - M12 phi'') / M22,
+// and the first equation gives the hip moment the prescription needs:
+//   M_hip = M11 phi'' + M12 beta'' + m2 L1 r2 sin(phi - beta) beta'^2 + (m1 a1 + m2 L1) g sin phi - M_knee.
+// phi and phi' stay in y, integrated from phi'' (they follow the prescription to the
+// integration tolerance).
 // ---------------------------------------------------------------------------------------
 class ReferenceSwing::Equations final : public OdeSystem {
  public:
-  Equations(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment, const HipRange& hipRange)
-      : law_(knee.clone()), numLawStates_(law_->numStates()), hipMoment_(hipMoment), hipStop_(makeHipStop(hipRange)) {
+  Equations(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment, const HipRange& hipRange,
+            std::optional<ThighMotion> thigh = std::nullopt)
+      : law_(knee.clone()),
+        numLawStates_(law_->numStates()),
+        hipMoment_(hipMoment),
+        hipStop_(makeHipStop(hipRange)),
+        thigh_(std::move(thigh)) {
     const double m1 = g.thighMass, a1 = g.thighCom, I1 = g.thighInertia, L1 = g.thighLength;
     const double ms = g.shankMass, as = g.shankCom, Is = g.shankInertia, L2 = g.shankLength;
     const double mf = g.footMass, cf = g.footComForward, If = g.footInertia;
@@ -88,21 +103,43 @@ class ReferenceSwing::Equations final : public OdeSystem {
   int numStates() const override { return 4 + numLawStates_; }
 
   void calcDerivatives(double t, const double* y, double* dydt) const override {
+    double hipMoment;
+    calcDerivativesAndHipMoment(t, y, dydt, hipMoment);
+  }
+
+  /// The derivatives and the hip moment (the drive's, or the one a prescribed thigh needs).
+  void calcDerivativesAndHipMoment(double t, const double* y, double* dydt, double& hipMoment) const {
     const double phi = y[0], beta = y[1], phiDot = y[2], betaDot = y[3];
     const KneeKinematics knee{calcKneeFlexion(y), phiDot - betaDot};
     const double* z = y + 4;
     const double kneeMoment = law_->calcMoment(knee, z);
-    const double hipMoment = hipMoment_.calcMoment(t) + hipStop_.calcJointMoment(phi, phiDot);
     const double s = std::sin(phi - beta);
     const double m12 = m2L1r2_ * std::cos(phi - beta);
-    const double rhs1 = hipMoment + kneeMoment - m2L1r2_ * s * betaDot * betaDot - gravity1_ * std::sin(phi);
     const double rhs2 = -kneeMoment + m2L1r2_ * s * phiDot * phiDot - gravity2_ * std::sin(beta);
-    const double det = m11_ * m22_ - m12 * m12;
     dydt[0] = phiDot;
     dydt[1] = betaDot;
-    dydt[2] = (m22_ * rhs1 - m12 * rhs2) / det;
-    dydt[3] = (m11_ * rhs2 - m12 * rhs1) / det;
+    if (thigh_) {
+      const double phiDDot = thigh_->calcAcceleration(t);
+      const double betaDDot = (rhs2 - m12 * phiDDot) / m22_;
+      dydt[2] = phiDDot;
+      dydt[3] = betaDDot;
+      hipMoment = m11_ * phiDDot + m12 * betaDDot + m2L1r2_ * s * betaDot * betaDot + gravity1_ * std::sin(phi) - kneeMoment;
+    } else {
+      hipMoment = hipMoment_.calcMoment(t) + hipStop_.calcJointMoment(phi, phiDot);
+      const double rhs1 = hipMoment + kneeMoment - m2L1r2_ * s * betaDot * betaDot - gravity1_ * std::sin(phi);
+      const double det = m11_ * m22_ - m12 * m12;
+      dydt[2] = (m22_ * rhs1 - m12 * rhs2) / det;
+      dydt[3] = (m11_ * rhs2 - m12 * rhs1) / det;
+    }
     if (numLawStates_ > 0) law_->calcStateDerivatives(knee, z, dydt + 4);
+  }
+
+  /// The hip moment at (t, y), N m.
+  double calcHipMoment(double t, const double* y) const {
+    std::vector<double> dydt(static_cast<std::size_t>(numStates()));
+    double hipMoment;
+    calcDerivativesAndHipMoment(t, y, dydt.data(), hipMoment);
+    return hipMoment;
   }
 
   double calcKneeFlexion(const double* y) const { return calcKneeFlexion(y[0], y[1]); }
@@ -112,10 +149,12 @@ class ReferenceSwing::Equations final : public OdeSystem {
   /// y at toe-off: the mechanics from the initial conditions, the law's own initial states.
   std::vector<double> makeInitialState(const InitialConditions& initial) const {
     std::vector<double> y(static_cast<std::size_t>(numStates()));
-    y[0] = initial.hipFlexion;
-    y[1] = toBeta(initial.hipFlexion, initial.kneeFlexion);
-    y[2] = initial.hipFlexionRate;
-    y[3] = initial.hipFlexionRate - initial.kneeFlexionRate;
+    const double hip = thigh_ ? thigh_->calcAngle(0) : initial.hipFlexion;
+    const double hipRate = thigh_ ? thigh_->calcRate(0) : initial.hipFlexionRate;
+    y[0] = hip;
+    y[1] = toBeta(hip, initial.kneeFlexion);
+    y[2] = hipRate;
+    y[3] = hipRate - initial.kneeFlexionRate;
     if (numLawStates_ > 0) law_->initialStates(y.data() + 4);
     return y;
   }
@@ -138,12 +177,16 @@ class ReferenceSwing::Equations final : public OdeSystem {
   int numLawStates_;
   HipMomentProfile hipMoment_;
   JointStop hipStop_;
+  std::optional<ThighMotion> thigh_;  // the prescribed thigh, if it drives the swing
   double gamma_ = 0, m11_ = 0, m22_ = 0, m2L1r2_ = 0, gravity1_ = 0, gravity2_ = 0;
 };
 
 ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
                                const HipRange& hipRange)
     : equations_(std::make_shared<Equations>(geometry, knee, hipMoment, hipRange)) {}
+
+ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const ThighMotion& thigh)
+    : equations_(std::make_shared<Equations>(geometry, knee, HipMomentProfile{}, HipRange{}, thigh)) {}
 
 namespace {
 
@@ -195,7 +238,7 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
   dp.initialize(0.0, y0.data());
 
   ReferenceTrajectory out;
-  for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate})
+  for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate, &out.hipMoment})
     v->reserve(sampleTimes.size());
   for (double t : sampleTimes) {
     while (dp.getTime() < t) {
@@ -208,6 +251,7 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
     out.kneeFlexion.push_back(eq.calcKneeFlexion(y));
     out.hipFlexionRate.push_back(y[2]);
     out.kneeFlexionRate.push_back(y[2] - y[3]);
+    out.hipMoment.push_back(eq.calcHipMoment(t, y));
   }
   return out;
 }

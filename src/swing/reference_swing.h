@@ -2,15 +2,16 @@
 // An independent reference for the Simbody swing: the thigh and
 // the rigid shank+foot(+added mass) as a 2-DOF planar double pendulum whose equations of
 // motion are derived by hand (Lagrange, see reference_swing.cpp), integrated by our own
-// Dormand-Prince RK5(4) (dormand_prince.h). No Simbody anywhere in this unit: it shares
+// Dormand-Prince RK5(4) (dormand_prince.h). No Simbody multibody code in this unit: it shares
 // with LegModel only the inputs (LegGeometry, the knee law, the hip moment profile and the
-// hip range stop), so a mistake in the multibody model shows up as a disagreement.
+// hip range stop, or the prescribed thigh's spline, leg/thigh_motion.h), so a mistake in the multibody model shows up as a disagreement.
 // It is also the performance baseline for the Simbody swing.
 #include <memory>
 #include <vector>
 
 #include "knee/joint_stop.h"
 #include "knee/knee_law.h"
+#include "leg/thigh_motion.h"
 #include "model/hip_moment_profile.h"
 #include "model/leg_parameters.h"
 
@@ -19,6 +20,9 @@ namespace swingsim {
 /// Hip and knee angles and rates at requested times (rad, rad/s).
 struct ReferenceTrajectory {
   std::vector<double> time, hipFlexion, kneeFlexion, hipFlexionRate, kneeFlexionRate;
+  /// N m, + = flexion: the hip moment profile plus the hip range stop, or with a prescribed
+  /// thigh the moment the prescription needs (inverse dynamics of the thigh equation).
+  std::vector<double> hipMoment;
   std::size_t size() const { return time.size(); }
 };
 
@@ -39,6 +43,11 @@ class ReferenceSwing {
   /// upper = maxFlexion).
   ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
                  const HipRange& hipRange);
+  /// The measured thigh drive: hip flexion follows `thigh` (its acceleration replaces the
+  /// thigh's equation of motion; InitialConditions' hip angle and rate are replaced by the
+  /// thigh's at t = 0), the knee swings freely. The spline is the shared input, as the hip
+  /// moment profile is for the other constructor.
+  ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const ThighMotion& thigh);
 
   /// Integrates from toe-off (t = 0) and returns the state at `sampleTimes` (s, >= 0,
   /// non-decreasing); steps are shortened to land exactly on each sample time. relTol and

@@ -8,8 +8,23 @@ namespace swingsim {
 
 using namespace SimTK;
 
+namespace {
+
+bool hasPrescribedMotion(const SimbodyMatterSubsystem& matter) {
+  for (MobilizedBodyIndex i(0); i < matter.getNumBodies(); ++i)
+    if (matter.getMobilizedBody(i).hasMotion()) return true;
+  return false;
+}
+
+}  // namespace
+
 SimbodyOde::SimbodyOde(const MultibodySystem& system, State& state)
-    : system_(system), state_(state), nq_(state.getNQ()), nu_(state.getNU()), nz_(state.getNZ()) {
+    : system_(system),
+      state_(state),
+      nq_(state.getNQ()),
+      nu_(state.getNU()),
+      nz_(state.getNZ()),
+      prescribed_(hasPrescribedMotion(system.getMatterSubsystem())) {
   if (system.getMatterSubsystem().getNumConstraints() > 0)
     throw std::invalid_argument("SimbodyOde: systems with constraints need projection; use a Simbody integrator");
 }
@@ -44,6 +59,14 @@ const State& SimbodyOde::realizeAt(double t, const double* y) const {
   if (nz_ > 0) {
     Vector& z = state_.updZ();
     for (int i = 0; i < nz_; ++i) z[i] = y[nq_ + nu_ + i];
+  }
+  if (prescribed_) {
+    // A prescribed motion (the measured thigh drive) owns its q and u: write them from
+    // their functions of time, as Simbody's own integrators do (System::prescribe).
+    system_.realize(state_, Stage::Time);
+    system_.prescribeQ(state_);
+    system_.realize(state_, Stage::Position);
+    system_.prescribeU(state_);
   }
   system_.realize(state_, Stage::Acceleration);
   ++realizations_;

@@ -39,6 +39,7 @@ class SimbodyOde final : public OdeSystem {
   const SimTK::MultibodySystem& system_;
   SimTK::State& state_;
   int nq_, nu_, nz_;
+  bool prescribed_;  // the system has a prescribed motion: prescribe q and u at each evaluation
   mutable long realizations_ = 0;
 };
 

@@ -213,8 +213,8 @@ StepEnd readStepEnd(const LegModel& leg, const State& s, bool trackEnergy) {
     e.kinetic = system.calcKineticEnergy(s);
     const int parts = std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1);
     for (int i = 0; i < parts; ++i) e.work[static_cast<std::size_t>(i)] = leg.getKneePartWork(s, i);
-    e.work[static_cast<std::size_t>(parts)] = leg.getHipWork(s);
-    e.numWork = parts + 1;
+    e.numWork = parts;
+    if (!leg.hasPrescribedThigh()) e.work[static_cast<std::size_t>(e.numWork++)] = leg.getHipWork(s);
   }
   return e;
 }
@@ -633,7 +633,13 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   if (setup.knee == nullptr) throw InputError(p.path + ": no knee model");
   const LegGeometry geometry = calcLegGeometry(p, setup.lowering, setup.added);
   const bool trackEnergy = options.trackImpactEnergy;
-  LegModel leg(geometry, *setup.knee, p.hipMoment, p.hipRange, calcHipHeight(p), trackEnergy);
+  // The measured thigh drive: the thigh follows its spline, and the swing must end before
+  // the measurement does.
+  std::optional<ThighMotion> thighMotion;
+  if (p.drive == SwingDrive::kThighKinematics) thighMotion.emplace(p.thighKinematics);
+  LegModel leg(geometry, *setup.knee, p.hipMoment, p.hipRange, calcHipHeight(p), trackEnergy,
+               thighMotion ? &*thighMotion : nullptr);
+  const double timeLimit = thighMotion ? std::min(p.swingEnd.timeLimit, thighMotion->getEndTime()) : p.swingEnd.timeLimit;
 
   if (options.simbodyEvents && options.integrator == SwingIntegrator::kDormandPrince)
     throw std::invalid_argument("simulateSwing: Simbody's event handlers need one of Simbody's integrators");
@@ -648,15 +654,22 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     system.realizeTopology();
   }
 
-  const State initial = leg.makeInitialState(p.initial);
+  InitialConditions initialConditions = p.initial;
+  if (thighMotion) {
+    initialConditions.hipFlexion = thighMotion->calcAngle(0);
+    initialConditions.hipFlexionRate = thighMotion->calcRate(0);
+  }
+  const State initial = leg.makeInitialState(initialConditions);
   std::unique_ptr<SwingStepper> stepper;
   DormandPrinceStepper* dormandPrince = nullptr;
   if (options.integrator == SwingIntegrator::kDormandPrince) {
-    auto dp = std::make_unique<DormandPrinceStepper>(system, initial, options.accuracy, p.hipMoment.calcBreakpoints());
+    // End steps on the hip moment's kinks; the thigh spline is smooth (C4).
+    auto dp = std::make_unique<DormandPrinceStepper>(system, initial, options.accuracy,
+                                                     thighMotion ? std::vector<double>{} : p.hipMoment.calcBreakpoints());
     dormandPrince = dp.get();
     stepper = std::move(dp);
   } else {
-    stepper = std::make_unique<SimbodyStepper>(system, initial, options, rule.timeLimit);
+    stepper = std::make_unique<SimbodyStepper>(system, initial, options, timeLimit);
   }
 
   SwingResult result;
@@ -669,7 +682,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     std::vector<std::string> causes;
     if (trackEnergy) {
       for (int i = 0; i < std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1); ++i) causes.push_back(leg.getKneeWorkPartName(i));
-      causes.push_back("hip drive");
+      if (!thighMotion) causes.push_back("hip drive");
     }
     impacts.emplace(stop->params().lower, std::move(causes));
   }
@@ -677,7 +690,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   {
     // Room for a typical swing plus its settle dwell, so samples rarely reallocate.
     constexpr double kTypicalDuration = 0.8;  // s
-    const std::size_t capacity = static_cast<std::size_t>(std::min(rule.timeLimit, kTypicalDuration) / options.sampleInterval) + 2;
+    const std::size_t capacity = static_cast<std::size_t>(std::min(timeLimit, kTypicalDuration) / options.sampleInterval) + 2;
     for (auto* v : tr.columns()) v->reserve(capacity);
     // The first sample, at toe-off.
     appendSample(tr, geometry, hipHeight, 0.0, previous.hip, previous.knee, previous.hipRate, previous.kneeRate,
@@ -715,7 +728,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   while (true) {
     bool more;
     try {
-      more = stepper->step(rule.timeLimit);
+      more = stepper->step(timeLimit);
     } catch (const std::exception& e) {
       throw RunError(p.name + ": the integrator failed " + describeState(leg, stepper->getState()) +
                      " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; " +
@@ -740,7 +753,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     // The hip stop is soft (Hunt-Crossley): a thigh far past it means the inputs are wrong,
     // and a swing "ending" out there would look like a result.
     constexpr double kHipRangeSlack = 2 * kDegToRad;  // rad; plausible hip moments press the stop far less
-    if (now.hip < p.hipRange.minFlexion - kHipRangeSlack || now.hip > p.hipRange.maxFlexion + kHipRangeSlack) {
+    if (!thighMotion && (now.hip < p.hipRange.minFlexion - kHipRangeSlack || now.hip > p.hipRange.maxFlexion + kHipRangeSlack)) {
       const auto deg = [](double rad) { return formatNumber(std::round(rad * kRadToDeg * 10) / 10); };
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the hip left its range of " +
                      deg(p.hipRange.minFlexion) + " to " + deg(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
@@ -789,22 +802,27 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       dormandPrince->changeAccuracy(looseAccuracy);
       loose = true;
     }
-    if (!log.ended && (now.t >= rule.timeLimit - 1e-12 || !more)) {
+    if (!log.ended && (now.t >= timeLimit - 1e-12 || !more)) {
       std::string cause;
+      if (thighMotion && timeLimit < rule.timeLimit)
+        cause = "the measured thigh motion (" + p.thighKinematics.path + ") ends at " + formatNumber(timeLimit) +
+                " s, before the swing ended (it needs the thigh at its target, the knee back in the zone and the settle "
+                "dwell of " + formatNumber(rule.settleDwell) + " s): give a longer trial, or a shorter settle_dwell_s; ";
       if (!log.thighReached)
-        cause = "the thigh never reached its target flexion of " +
-                formatNumber(rule.thighTargetFlexion * kRadToDeg) + " deg (hip moment too small for this leg?)";
+        cause += "the thigh never reached its target flexion of " + formatNumber(rule.thighTargetFlexion * kRadToDeg) +
+                 (thighMotion ? " deg (set swing_end: thigh_target_flexion_deg below the measured thigh's peak)"
+                              : " deg (hip moment too small for this leg?)");
       else if (!log.peakSeen)
-        cause = "the knee never reached a flexion peak above the zone of stability";
+        cause += "the knee never reached a flexion peak above the zone of stability";
       else if (log.enteredOnce)
-        cause = "the knee did not settle: it left the zone of stability (< " + formatNumber(rule.zoneOfStability * kRadToDeg) +
+        cause += "the knee did not settle: it left the zone of stability (< " + formatNumber(rule.zoneOfStability * kRadToDeg) +
                 " deg) " + std::to_string(log.bounces) + " times and never stayed inside it for the settle dwell of " +
                 formatNumber(rule.settleDwell) + " s (a stop that returns too much of the impact, restitution near 1?)";
       else
-        cause = "the knee never came back inside the zone of stability (< " +
+        cause += "the knee never came back inside the zone of stability (< " +
                 formatNumber(rule.zoneOfStability * kRadToDeg) + " deg) after its peak (knee resistance too high, or the hip extension moment too weak?)";
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing did not end within the time limit of " +
-                     formatNumber(rule.timeLimit) + " s; " + describeState(leg, s) + "; " + cause);
+                     formatNumber(timeLimit) + " s; " + describeState(leg, s) + "; " + cause);
     }
     if (!more) break;
   }
