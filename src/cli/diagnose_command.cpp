@@ -38,19 +38,34 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
               study.train.size());
   std::printf("where the base model fails (before):\n%s\n%s", formatComparisonTable(before).c_str(), report.c_str());
   if (!check.empty()) std::printf("%s\n", check.c_str());
+  // An independent measurement the fit never saw (the swing's knee moment from inverse
+  // dynamics), against what the model applies before and after.
+  const std::optional<HeldBackComparison> heldBefore = plant->compareHeldBack(*dg.baseline.model);
+  const std::optional<HeldBackComparison> heldAfter = plant->compareHeldBack(*dg.final.model);
+  const bool held = heldBefore && heldAfter;
+  if (held) std::printf("%s", formatHeldBackText(*heldBefore, *heldAfter).c_str());
 
   const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n## Before\n\n```\n" +
                    formatComparisonTable(before) + "```\n\n## Ranking and result\n\n```\n" + report +
                    (check.empty() ? "" : check + "\n") + "```\n\n## After\n\n```\n" + formatComparisonTable(after) +
                    "```\n\n## Residual plots\n\n";
+  if (held) {
+    md += "## " + heldBefore->quantity + " against the measured one (never fitted)\n\n```\n" +
+          formatHeldBackText(*heldBefore, *heldAfter) + "```\n\n![" + heldBefore->quantity + "](held-back.svg)\n\n";
+    writeFileAtomic(outDir + "/held-back.svg", renderHeldBackSvg(*heldBefore, *heldAfter, heldBefore->quantity));
+  }
   for (const auto& p : writeResidualPlots(outDir, "before", before))
     md += "- before: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
   for (const auto& p : writeResidualPlots(outDir, "after", after))
     md += "- after: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
   writeFileAtomic(outDir + "/report.md", md);
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
-  if (args.json) writeJsonFile(*args.json, makeDiagnosisJson(dg, before, after));
+  if (args.json) {
+    Json json = makeDiagnosisJson(dg, before, after);
+    if (held) json["knee_moment_comparison"] = makeHeldBackJson(*heldBefore, *heldAfter);
+    writeJsonFile(*args.json, json);
+  }
   if (args.saveModel && !dg.explained)
     throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict + ")");
   if (args.saveModel) {

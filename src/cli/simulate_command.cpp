@@ -14,6 +14,7 @@
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
 #include "report/swing_json.h"
+#include "report/swing_plot.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 
@@ -53,6 +54,7 @@ int runSimulate(const SimulateArguments& a) {
   const SwingResult r = simulateSwing(setup, options);
 
   std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
+  std::printf("  drive               %s\n", describeDrive(p).c_str());
   std::printf("  swing time          %.4f s\n", r.swingTime);
   std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion * kRadToDeg, r.peakKneeFlexionTime);
   if (r.bounce)
@@ -96,8 +98,15 @@ int runSimulate(const SimulateArguments& a) {
   const std::string tag = stem + "-" + lowering;
   writeFileAtomic(out + "/" + tag + ".csv", formatTrajectoryCsv(r.trajectory));
   writeFileAtomic(out + "/" + tag + ".sto", formatTrajectorySto(r.trajectory, tag));
-  std::printf("  trajectory          %s/%s.csv and .sto\n", out.c_str(), tag.c_str());
-  if (a.json) writeJsonFile(*a.json, makeSwingResultJson(p.name, setup.lowering, r));
+  writeFileAtomic(out + "/" + tag + "-moments.svg", formatSwingMomentsSvg(r.trajectory, p.name + ", drive: " + driveKey(p.drive)));
+  std::printf("  trajectory          %s/%s.csv and .sto; hip and knee moments %s-moments.svg\n", out.c_str(), tag.c_str(),
+              tag.c_str());
+  if (a.json) {
+    Json json = makeSwingResultJson(p.name, setup.lowering, r);
+    json["drive"] = driveKey(p.drive);
+    json["drive_description"] = describeDrive(p);
+    writeJsonFile(*a.json, json);
+  }
   return 0;
 }
 

@@ -1,8 +1,12 @@
 #include "identify/comparison.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/text_format.h"
+#include "numerics/metrics.h"
 #include "numerics/residual_analysis.h"
 
 namespace swingsim {
@@ -92,6 +96,39 @@ std::string describeResidualStructure(const Comparison& cmp, double effectiveSam
     }
   }
   return out + binNote;
+}
+
+double calcCorrelation(const std::vector<double>& a, const std::vector<double>& b) {
+  const std::size_t n = std::min(a.size(), b.size());
+  if (n < 2) return std::numeric_limits<double>::quiet_NaN();
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < n; ++i) ma += a[i], mb += b[i];
+  ma /= static_cast<double>(n);
+  mb /= static_cast<double>(n);
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  if (saa <= 0 || sbb <= 0) return std::numeric_limits<double>::quiet_NaN();
+  return sab / std::sqrt(saa * sbb);
+}
+
+void finishHeldBackComparison(HeldBackComparison& c) {
+  std::vector<double> allMeasured, allModel;
+  for (auto& r : c.records) {
+    std::vector<double> diff;
+    for (std::size_t i = 0; i < r.measured.size(); ++i) diff.push_back(r.model[i] - r.measured[i]);
+    r.rmse = calcRms(diff);
+    r.correlation = calcCorrelation(r.measured, r.model);
+    allMeasured.insert(allMeasured.end(), r.measured.begin(), r.measured.end());
+    allModel.insert(allModel.end(), r.model.begin(), r.model.end());
+  }
+  std::vector<double> diff;
+  for (std::size_t i = 0; i < allMeasured.size(); ++i) diff.push_back(allModel[i] - allMeasured[i]);
+  c.rmse = calcRms(diff);
+  c.correlation = calcCorrelation(allMeasured, allModel);
 }
 
 }  // namespace swingsim

@@ -45,6 +45,27 @@ struct Comparison {
   int decimals = 1;                     ///< decimals to print errors with (1 for N, 2 for deg)
 };
 
+/// A quantity the model applies but is never fitted to, against an independent
+/// measurement of it: the swing's knee moment against a knee moment from inverse dynamics
+/// (issue 14 item 3). Whole records; the fit never sees the measured column.
+struct HeldBackComparison {
+  std::string quantity;  ///< "knee moment"
+  std::string unit;      ///< "N m"
+  struct Record {
+    std::string stem;
+    bool training = true;
+    std::vector<double> time, measured, model;
+    double rmse = 0, correlation = 0;  ///< correlation: Pearson's r of measured and model
+  };
+  std::vector<Record> records;
+  double rmse = 0, correlation = 0;  ///< over every sample of every record
+};
+
+/// Pearson's correlation coefficient of two equal-length series; NaN if either is constant.
+double calcCorrelation(const std::vector<double>& a, const std::vector<double>& b);
+/// Fills each record's and the overall RMSE and correlation.
+void finishHeldBackComparison(HeldBackComparison& comparison);
+
 /// Fills a record's residual, overall metrics, per-phase metrics and shares from its
 /// measured, predicted and phase vectors (`phases` phases).
 void finishRecordComparison(RecordComparison& record, std::size_t phases);

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,9 @@ class DiagnosisPlant {
   /// none): the swing reruns the model with Simbody, since its refits use the reference
   /// integrator.
   virtual std::string verify(const PlantModel&) const { return ""; }
+  /// A quantity the model applies against an independent measurement the fit never sees
+  /// (the swing's knee moment against inverse dynamics); nullopt if the data have none.
+  virtual std::optional<HeldBackComparison> compareHeldBack(const PlantModel&) const { return std::nullopt; }
 };
 
 /// One candidate scored on top of the current model.

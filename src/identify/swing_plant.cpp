@@ -125,30 +125,39 @@ Participant applyParticipantEffects(const Participant& participant, const SwingE
 }
 
 SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance) {
+                             double hipPose, double kneePose, double tolerance, const ThighMotion* thigh) {
   const auto& e = params.effects;
   const Participant participant = applyParticipantEffects(base.participant, e);
   const LegGeometry geometry = calcLegGeometry(participant, 0.0);
-  HipMomentProfile drive;
-  drive.kind = HipMomentProfile::Kind::kTable;
-  drive.times = record.time;
-  drive.moments = record.hipMoment;
-  if (e.hipScale)
-    for (double& m : drive.moments) m *= e.hipMomentScale;
-  InitialConditions initial;
-  initial.hipFlexion = hipPose;
-  initial.kneeFlexion = kneePose;
-  initial.hipFlexionRate = e.toeOff ? e.toeOffHipRate : 0.0;
-  initial.kneeFlexionRate = e.toeOff ? e.toeOffKneeRate : 0.0;
   const KneeLawSum law = makeSwingKneeLaw(base, params);
-  const ReferenceSwing swing(geometry, law, drive, participant.hipRange);
+  InitialConditions initial;
+  std::optional<ReferenceSwing> swing;
+  std::optional<ThighMotion> ownThigh;
+  if (base.drive == SwingDrive::kThighKinematics) {
+    if (thigh == nullptr) thigh = &ownThigh.emplace(ThighKinematics{record.path, record.time, record.hipFlexion});
+    initial.kneeFlexion = kneePose;
+    initial.kneeFlexionRate = hipPose;  // the knee's toe-off rate (the hip's is the thigh's)
+    swing.emplace(geometry, law, *thigh);
+  } else {
+    HipMomentProfile drive;
+    drive.kind = HipMomentProfile::Kind::kTable;
+    drive.times = record.time;
+    drive.moments = record.hipMoment;
+    if (e.hipScale)
+      for (double& m : drive.moments) m *= e.hipMomentScale;
+    initial.hipFlexion = hipPose;
+    initial.kneeFlexion = kneePose;
+    initial.hipFlexionRate = e.toeOff ? e.toeOffHipRate : 0.0;
+    initial.kneeFlexionRate = e.toeOff ? e.toeOffKneeRate : 0.0;
+    swing.emplace(geometry, law, drive, participant.hipRange);
+  }
   ReferenceTrajectory tr;
   try {
-    tr = swing.integrate(initial, record.time, tolerance, tolerance);
+    tr = swing->integrate(initial, record.time, tolerance, tolerance);
   } catch (const std::runtime_error& ex) {
     throw RunError(std::string("swing model along ") + record.stem + ": " + ex.what());
   }
-  return {tr.hipFlexion, tr.kneeFlexion, tr.kneeFlexionRate};
+  return {tr.hipFlexion, tr.kneeFlexion, tr.kneeFlexionRate, tr.hipMoment, tr.kneeMoment};
 }
 
 std::vector<std::string> swingPhaseNames() { return {"early flexion", "late extension", "terminal/stop contact"}; }
@@ -169,8 +178,9 @@ double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, 
     default: break;
   }
   const auto& init = base.participant.initial;
-  const auto a = predictSwing(base, truth, record, init.hipFlexion, init.kneeFlexion);
-  const auto b = predictSwing(base, without, record, init.hipFlexion, init.kneeFlexion);
+  const double first = base.drive == SwingDrive::kThighKinematics ? init.kneeFlexionRate : init.hipFlexion;
+  const auto a = predictSwing(base, truth, record, first, init.kneeFlexion);
+  const auto b = predictSwing(base, without, record, first, init.kneeFlexion);
   double s = 0;
   for (std::size_t i = 0; i < a.kneeFlexion.size(); ++i) s += std::pow((a.kneeFlexion[i] - b.kneeFlexion[i]) * kRadToDeg, 2);
   return std::sqrt(s / static_cast<double>(a.kneeFlexion.size()));
@@ -237,11 +247,6 @@ std::vector<int> phasesOf(const std::vector<double>& knee, double zone) {
   return ph;
 }
 
-struct PoseFit {
-  double hip = 0, knee = 0;
-  SwingPrediction prediction;
-};
-
 // Budgets of the swing refits: generous against the 5-15 iterations a fit takes here, so a
 // model that cannot run or a record in the wrong unit stops with a message, not never.
 BoundedFitSettings poseFitSettings() {
@@ -258,25 +263,11 @@ BoundedFitSettings modelFitSettings() {
   return s;
 }
 
-// The toe-off pose of one record with the model frozen (validation, compare).
-PoseFit fitPose(const SwingBase& base, const SwingModelParams& params, const SwingRecord& r, double tol) {
-  ResidualFunction f = [&](const Eigen::VectorXd& x) {
-    const SwingPrediction p = predictSwing(base, params, r, x[0], x[1], tol);
-    Eigen::VectorXd res(2 * static_cast<Eigen::Index>(r.time.size()));
-    for (std::size_t i = 0; i < r.time.size(); ++i) {
-      res[static_cast<Eigen::Index>(2 * i)] = (r.kneeFlexion[i] - p.kneeFlexion[i]) * kRadToDeg;
-      res[static_cast<Eigen::Index>(2 * i + 1)] = (r.hipFlexion[i] - p.hipFlexion[i]) * kRadToDeg;
-    }
-    return res;
-  };
-  const BoundedFitResult lm =
-      solveBoundedLeastSquares(f, {poseParameter(r.hipFlexion.front()), poseParameter(r.kneeFlexion.front())},
-                               poseFitSettings());
-  PoseFit out;
-  out.hip = lm.x[0];
-  out.knee = lm.x[1];
-  out.prediction = predictSwing(base, params, r, out.hip, out.knee, tol);
-  return out;
+// The knee's toe-off rate under the thigh drive: within 20 rad/s of the measured knee's
+// first difference (Winter's toe-off knee moves at 6.7 rad/s).
+BoundedParameter kneeRateParameter(const SwingRecord& r) {
+  const double measured = r.time.size() > 1 ? (r.kneeFlexion[1] - r.kneeFlexion[0]) / (r.time[1] - r.time[0]) : 0.0;
+  return {"", measured, measured - 20.0, measured + 20.0, false, 1.0};
 }
 
 double kneeRmse(const SwingRecord& r, const SwingPrediction& p) {
@@ -291,6 +282,43 @@ SwingPlant::SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vect
                        double tolerance)
     : base_(std::move(base)), train_(std::move(train)), validate_(std::move(validate)), tolerance_(tolerance) {
   if (train_.empty()) throw InputError("diagnose: no training file (train:)");
+  if (base_.drive == SwingDrive::kThighKinematics)
+    for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) {
+      const SwingRecord& r = record(i);
+      thighs_.emplace_back(ThighKinematics{r.path, r.time, r.hipFlexion});
+    }
+}
+
+std::vector<BoundedParameter> SwingPlant::poseParameters(std::size_t i) const {
+  const SwingRecord& r = record(i);
+  if (base_.drive == SwingDrive::kThighKinematics) return {kneeRateParameter(r), poseParameter(r.kneeFlexion.front())};
+  return {poseParameter(r.hipFlexion.front()), poseParameter(r.kneeFlexion.front())};
+}
+
+void SwingPlant::appendResiduals(const SwingRecord& r, const SwingPrediction& p, Eigen::VectorXd& res,
+                                 Eigen::Index& row) const {
+  for (std::size_t i = 0; i < r.time.size(); ++i) {
+    res[row++] = (r.kneeFlexion[i] - p.kneeFlexion[i]) * kRadToDeg;
+    if (rowsPerSample() == 2) res[row++] = (r.hipFlexion[i] - p.hipFlexion[i]) * kRadToDeg;
+  }
+}
+
+SwingPlant::PoseFit SwingPlant::fitPose(const SwingModelParams& params, std::size_t index) const {
+  const SwingRecord& r = record(index);
+  const ThighMotion* thigh = thighOf(index);
+  ResidualFunction f = [&](const Eigen::VectorXd& x) {
+    const SwingPrediction p = predictSwing(base_, params, r, x[0], x[1], tolerance_, thigh);
+    Eigen::VectorXd res(static_cast<Eigen::Index>(rowsPerSample() * r.time.size()));
+    Eigen::Index row = 0;
+    appendResiduals(r, p, res, row);
+    return res;
+  };
+  const BoundedFitResult lm = solveBoundedLeastSquares(f, poseParameters(index), poseFitSettings());
+  PoseFit out;
+  out.first = lm.x[0];
+  out.knee = lm.x[1];
+  out.prediction = predictSwing(base_, params, r, out.first, out.knee, tolerance_, thigh);
+  return out;
 }
 
 PlantModelPtr SwingPlant::baseModel() const { return std::make_shared<SwingModel>(SwingModelParams{}); }
@@ -306,17 +334,15 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
     b.start = slot.ref(p0);
     free.push_back(b);
   }
-  for (const auto& r : train_) {
-    free.push_back(poseParameter(r.hipFlexion.front()));
-    free.push_back(poseParameter(r.kneeFlexion.front()));
-  }
+  for (std::size_t f = 0; f < train_.size(); ++f)
+    for (const BoundedParameter& b : poseParameters(f)) free.push_back(b);
   auto paramsAt = [&](const Eigen::VectorXd& x) {
     SwingModelParams p = start;
     for (Eigen::Index k = 0; k < g; ++k) slots[static_cast<std::size_t>(k)].ref(p) = x[k];
     return p;
   };
   std::size_t rows = 0;
-  for (const auto& r : train_) rows += 2 * r.time.size();
+  for (const auto& r : train_) rows += rowsPerSample() * r.time.size();
   ResidualFunction fn = [&](const Eigen::VectorXd& x) {
     const SwingModelParams p = paramsAt(x);
     Eigen::VectorXd res(static_cast<Eigen::Index>(rows));
@@ -324,11 +350,8 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
     for (std::size_t f = 0; f < train_.size(); ++f) {
       const auto& r = train_[f];
       const SwingPrediction pr = predictSwing(base_, p, r, x[g + 2 * static_cast<Eigen::Index>(f)],
-                                              x[g + 2 * static_cast<Eigen::Index>(f) + 1], tolerance_);
-      for (std::size_t i = 0; i < r.time.size(); ++i) {
-        res[row++] = (r.kneeFlexion[i] - pr.kneeFlexion[i]) * kRadToDeg;
-        res[row++] = (r.hipFlexion[i] - pr.hipFlexion[i]) * kRadToDeg;
-      }
+                                              x[g + 2 * static_cast<Eigen::Index>(f) + 1], tolerance_, thighOf(f));
+      appendResiduals(r, pr, res, row);
     }
     return res;
   };
@@ -347,7 +370,7 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
     std::vector<double> knee, hip;
     for (std::size_t i = 0; i < train_[f].time.size(); ++i) {
       knee.push_back(lm.residual[row++]);
-      hip.push_back(lm.residual[row++]);
+      if (rowsPerSample() == 2) hip.push_back(lm.residual[row++]);
       kneeRss += knee.back() * knee.back();
     }
     kneeSamples += knee.size();
@@ -358,7 +381,7 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
     s.trainPhase.push_back(phasesOf(modelKnee, base_.participant.swingEnd.zoneOfStability));
     s.trainResidual.push_back(knee);
     s.likelihoodResidual.push_back(knee);
-    s.likelihoodResidual.push_back(hip);
+    if (!hip.empty()) s.likelihoodResidual.push_back(hip);
   }
   s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
   // Every free parameter: its standard error (from the fit's covariance, s^2 (J'J)^+), its
@@ -383,13 +406,19 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
       s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
                         ")");
   }
-  for (const auto& r : validate_) s.validationRmse.push_back(kneeRmse(r, fitPose(base_, fitted, r, tolerance_).prediction));
+  for (std::size_t v = 0; v < validate_.size(); ++v)
+    s.validationRmse.push_back(kneeRmse(validate_[v], fitPose(fitted, train_.size() + v).prediction));
   return s;
 }
 
 std::string SwingPlant::checkApplicable(const PlantModel& model, EffectId effect) const {
   requireSwingEffect(effect);
-  return swingParams(model).effects.has(effect) ? "already in the model" : "";
+  if (swingParams(model).effects.has(effect)) return "already in the model";
+  if (base_.drive == SwingDrive::kThighKinematics && effect == EffectId::kHipMomentScale)
+    return "the measured thigh drives the swing: no hip moment to scale";
+  if (base_.drive == SwingDrive::kThighKinematics && effect == EffectId::kToeOffVelocity)
+    return "the measured thigh drives the swing: its toe-off rate is measured and the knee's is fitted per record";
+  return "";
 }
 
 PlantModelPtr SwingPlant::addEffect(const PlantModel& model, EffectId effect, double gridValue) const {
@@ -487,12 +516,13 @@ Comparison SwingPlant::compare(const PlantModel& model) const {
   out.secondaryQuantity = "hip flexion";
   out.decimals = 2;
   out.phaseNames = swingPhaseNames();
-  auto run = [&](const SwingRecord& r, bool training) {
+  auto run = [&](std::size_t index) {
+    const SwingRecord& r = record(index);
     RecordComparison rc;
     rc.stem = r.stem;
-    rc.training = training;
+    rc.training = index < train_.size();
     rc.time = r.time;
-    const PoseFit pf = fitPose(base_, params, r, tolerance_);
+    const PoseFit pf = fitPose(params, index);
     std::vector<double> measuredHip, predictedHip, knee, rate;
     for (std::size_t i = 0; i < r.time.size(); ++i) {
       rc.measured.push_back(r.kneeFlexion[i] * kRadToDeg);
@@ -521,8 +551,7 @@ Comparison SwingPlant::compare(const PlantModel& model) const {
     finishRecordComparison(rc, out.phaseNames.size());
     out.records.push_back(std::move(rc));
   };
-  for (const auto& r : train_) run(r, true);
-  for (const auto& r : validate_) run(r, false);
+  for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) run(i);
   return out;
 }
 
@@ -537,34 +566,67 @@ std::string SwingPlant::verify(const PlantModel& model) const {
   const Participant participant = applyParticipantEffects(base_.participant, params.effects);
   const KneeLawSum law = makeSwingKneeLaw(base_, params);
   double worst = 0;
-  for (const auto* records : {&train_, &validate_})
-    for (const auto& r : *records) {
-      const PoseFit pose = fitPose(base_, params, r, tolerance_);
-      SwingSetup setup;
-      setup.participant = participant;
+  for (std::size_t index = 0; index < train_.size() + validate_.size(); ++index) {
+    const SwingRecord& r = record(index);
+    const PoseFit pose = fitPose(params, index);
+    SwingSetup setup;
+    setup.participant = participant;
+    setup.participant.initial.kneeFlexion = pose.knee;
+    if (base_.drive == SwingDrive::kThighKinematics) {
+      setup.participant.drive = SwingDrive::kThighKinematics;
+      setup.participant.thighKinematics = {r.path, r.time, r.hipFlexion};
+      setup.participant.initial.kneeFlexionRate = pose.first;
+    } else {
       setup.participant.hipMoment = {};
       setup.participant.hipMoment.kind = HipMomentProfile::Kind::kTable;
       setup.participant.hipMoment.times = r.time;
       setup.participant.hipMoment.moments = r.hipMoment;
       if (params.effects.hipScale)
         for (double& m : setup.participant.hipMoment.moments) m *= params.effects.hipMomentScale;
-      setup.participant.initial.hipFlexion = pose.hip;
-      setup.participant.initial.kneeFlexion = pose.knee;
-      setup.knee = &law;
-      const SwingResult res = simulateSwing(setup, makeSimbodyIntegratorOptions());
-      const auto& tr = res.trajectory;
-      std::size_t j = 0;
-      for (std::size_t i = 0; i < r.time.size(); ++i) {
-        const double t = r.time[i];
-        while (j + 1 < tr.size() && tr.time[j + 1] < t) ++j;
-        if (j + 1 >= tr.size()) break;
-        const double a = (t - tr.time[j]) / (tr.time[j + 1] - tr.time[j]);
-        const double knee = tr.kneeFlexion[j] + a * (tr.kneeFlexion[j + 1] - tr.kneeFlexion[j]);
-        worst = std::max(worst, std::abs(knee - pose.prediction.kneeFlexion[i]) * kRadToDeg);
-      }
+      setup.participant.initial.hipFlexion = pose.first;
     }
+    setup.knee = &law;
+    // Along the record only: the swing need not end inside it (a trial cut at heel contact).
+    setup.participant.swingEnd.timeLimit = r.time.back();
+    SwingTrajectory tr;
+    try {
+      tr = simulateSwing(setup, makeSimbodyIntegratorOptions()).trajectory;
+    } catch (const RunError& e) {
+      return std::string("Simbody check of the final model: not run to the end of ") + r.stem + " (" + e.what() + ")";
+    }
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < r.time.size(); ++i) {
+      const double t = r.time[i];
+      while (j + 1 < tr.size() && tr.time[j + 1] < t) ++j;
+      if (j + 1 >= tr.size()) break;
+      const double a = (t - tr.time[j]) / (tr.time[j + 1] - tr.time[j]);
+      const double knee = tr.kneeFlexion[j] + a * (tr.kneeFlexion[j + 1] - tr.kneeFlexion[j]);
+      worst = std::max(worst, std::abs(knee - pose.prediction.kneeFlexion[i]) * kRadToDeg);
+    }
+  }
   return "Simbody check of the final model (simulateSwing vs the reference integrator used for the refits): "
          "max knee difference " + fmt(worst, "%.2g") + " deg";
+}
+
+std::optional<HeldBackComparison> SwingPlant::compareHeldBack(const PlantModel& model) const {
+  HeldBackComparison c;
+  c.quantity = "knee moment";
+  c.unit = "N m";
+  for (std::size_t index = 0; index < train_.size() + validate_.size(); ++index) {
+    const SwingRecord& r = record(index);
+    if (r.kneeMoment.empty()) continue;
+    const PoseFit pose = fitPose(swingParams(model), index);
+    HeldBackComparison::Record rc;
+    rc.stem = r.stem;
+    rc.training = index < train_.size();
+    rc.time = r.time;
+    rc.measured = r.kneeMoment;
+    rc.model = pose.prediction.kneeMoment;
+    c.records.push_back(std::move(rc));
+  }
+  if (c.records.empty()) return std::nullopt;
+  finishHeldBackComparison(c);
+  return c;
 }
 
 std::vector<NoiseEstimate> SwingPlant::estimateRecordNoise() const {

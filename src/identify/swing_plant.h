@@ -6,14 +6,19 @@
 // parameters and the toe-off pose of each training record (a nuisance, measured with noise).
 // Every refit runs the fast independent reference integrator (swing/reference_swing.h);
 // compared quantity: knee flexion (deg); the likelihood uses hip and knee residuals.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "identify/diagnosis_engine.h"
 #include "knee/knee_added_effects.h"
+#include "leg/thigh_motion.h"
 #include "model/knee_model.h"
 #include "model/leg_parameters.h"
 #include "model/swing_record.h"
+#include "numerics/bounded_least_squares.h"
 
 namespace swingsim {
 
@@ -53,6 +58,12 @@ const SwingModelParams& swingParams(const PlantModel& model);
 struct SwingBase {
   Participant participant;
   KneeModel knee;
+  /// kHipMoment: each record's measured hip moment drives the leg (the record must have
+  /// one). kThighKinematics: each record's measured hip angle is prescribed on the hip
+  /// (issue 14 item 1); the hip then fits exactly, so the likelihood uses the knee only, and
+  /// each record's free toe-off state is the knee's angle and rate (the hip's come from
+  /// the measured thigh).
+  SwingDrive drive = SwingDrive::kHipMoment;
 };
 
 /// `params` with `effect` switched on (value 0 or scale 1; `gridValue`: the friction
@@ -66,13 +77,16 @@ KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& param
 Participant applyParticipantEffects(const Participant& participant, const SwingEffects& effects);
 
 /// Model hip and knee flexion (rad) at the record's times from toe-off pose `hipPose`,
-/// `kneePose` (rad), driven by the record's hip moment. `tolerance`: the reference
+/// `kneePose` (rad), driven by the record's hip moment, or with base.drive ==
+/// kThighKinematics by its hip angle (`thigh`: that angle's spline, made from the record if
+/// null; `hipPose` is then the knee's toe-off rate, rad/s). `tolerance`: the reference
 /// integrator's relative and absolute tolerance. Throws RunError if the integration fails.
 struct SwingPrediction {
   std::vector<double> hipFlexion, kneeFlexion, kneeFlexionRate;
+  std::vector<double> hipMoment, kneeMoment;  ///< N m, + = flexion: the drive's (or the one the thigh needs) and the knee law's
 };
 SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance = 1e-8);
+                             double hipPose, double kneePose, double tolerance = 1e-8, const ThighMotion* thigh = nullptr);
 
 /// Phases from the swing events of the model's knee: early flexion (toe-off to peak knee
 /// flexion), late extension (peak to entering the zone of stability), terminal/stop contact.
@@ -105,12 +119,30 @@ class SwingPlant final : public DiagnosisPlant {
   /// The model once more with Simbody (simulateSwing) along every record at its fitted pose:
   /// the largest knee difference to the reference integrator the refits used.
   std::string verify(const PlantModel& model) const override;
+  /// The model's knee moment along every record that has a measured one (knee_moment_Nm,
+  /// e.g. from inverse dynamics; never fitted) against it.
+  std::optional<HeldBackComparison> compareHeldBack(const PlantModel& model) const override;
 
   const SwingBase& base() const { return base_; }
 
  private:
+  /// Toe-off state of one record with the model frozen: (hip angle, knee angle), or under
+  /// the thigh drive (knee rate, knee angle); and the prediction there.
+  struct PoseFit {
+    double first = 0, knee = 0;
+    SwingPrediction prediction;
+  };
+  PoseFit fitPose(const SwingModelParams& params, std::size_t record) const;
+  const SwingRecord& record(std::size_t i) const { return i < train_.size() ? train_[i] : validate_[i - train_.size()]; }
+  const ThighMotion* thighOf(std::size_t i) const { return thighs_.empty() ? nullptr : &thighs_[i]; }
+  /// Free toe-off parameters of record i and their residual rows.
+  std::vector<BoundedParameter> poseParameters(std::size_t i) const;
+  void appendResiduals(const SwingRecord& r, const SwingPrediction& p, Eigen::VectorXd& res, Eigen::Index& row) const;
+  std::size_t rowsPerSample() const { return base_.drive == SwingDrive::kThighKinematics ? 1 : 2; }
+
   SwingBase base_;
   std::vector<SwingRecord> train_, validate_;
+  std::vector<ThighMotion> thighs_;  ///< thigh drive: each record's hip spline, train then validate
   double tolerance_;
 };
 

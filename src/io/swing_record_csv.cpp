@@ -11,7 +11,8 @@ namespace swingsim {
 
 SwingRecord readSwingRecord(const std::string& path) {
   CsvSpec spec;
-  spec.required = {"time_s", "hip_flexion_deg", "knee_flexion_deg", "hip_moment_Nm"};
+  spec.required = {"time_s", "hip_flexion_deg", "knee_flexion_deg"};
+  spec.optional = {"hip_moment_Nm", "knee_moment_Nm"};
   spec.strictlyIncreasing = "time_s";
   spec.minRows = 10;
   const CsvTable t = readCsv(path, spec);
@@ -32,7 +33,9 @@ SwingRecord readSwingRecord(const std::string& path) {
   for (double v : time) r.time.push_back(v - t0);
   for (double v : t.column("hip_flexion_deg")) r.hipFlexion.push_back(v * kDegToRad);
   for (double v : t.column("knee_flexion_deg")) r.kneeFlexion.push_back(v * kDegToRad);
-  r.hipMoment = t.column("hip_moment_Nm");
+  const auto has = [&](const char* name) { return std::find(t.names.begin(), t.names.end(), name) != t.names.end(); };
+  if (has("hip_moment_Nm")) r.hipMoment = t.column("hip_moment_Nm");
+  if (has("knee_moment_Nm")) r.kneeMoment = t.column("knee_moment_Nm");
   return r;
 }
 
@@ -40,7 +43,11 @@ std::string formatSwingRecordCsv(const SwingRecord& r) {
   std::vector<double> hip, knee;
   for (double v : r.hipFlexion) hip.push_back(v * kRadToDeg);
   for (double v : r.kneeFlexion) knee.push_back(v * kRadToDeg);
-  return formatCsv({"time_s", "hip_flexion_deg", "knee_flexion_deg", "hip_moment_Nm"}, {r.time, hip, knee, r.hipMoment});
+  std::vector<std::string> names = {"time_s", "hip_flexion_deg", "knee_flexion_deg"};
+  std::vector<std::vector<double>> columns = {r.time, hip, knee};
+  if (!r.hipMoment.empty()) names.push_back("hip_moment_Nm"), columns.push_back(r.hipMoment);
+  if (!r.kneeMoment.empty()) names.push_back("knee_moment_Nm"), columns.push_back(r.kneeMoment);
+  return formatCsv(names, columns);
 }
 
 }  // namespace swingsim

@@ -6,10 +6,15 @@
 namespace swingsim {
 
 /// One measured swing (Swing kinematics CSV: time_s, hip_flexion_deg, knee_flexion_deg,
-/// hip_moment_Nm). Time from toe-off (the first row is toe-off), s; angles rad; moment N m.
+/// optional hip_moment_Nm and knee_moment_Nm). Time from toe-off (the first row is
+/// toe-off), s; angles rad; moments N m, + = flexion.
 struct SwingRecord {
   std::string path, stem;
-  std::vector<double> time, hipFlexion, kneeFlexion, hipMoment;
+  std::vector<double> time, hipFlexion, kneeFlexion;
+  std::vector<double> hipMoment;   ///< the measured drive; empty if not measured
+  /// A knee moment measured independently (inverse dynamics), never fitted: compared with
+  /// the model's after a diagnosis (HeldBackComparison). Empty if not given.
+  std::vector<double> kneeMoment;
 };
 
 }  // namespace swingsim

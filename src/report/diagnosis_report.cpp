@@ -338,4 +338,55 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"warnings", dg.warnings}};
 }
 
+
+std::string formatHeldBackText(const HeldBackComparison& before, const HeldBackComparison& after) {
+  std::string out = before.quantity + " against the measured one (never fitted): RMSE " + before.unit +
+                    ", Pearson correlation r\n";
+  for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
+    const auto &b = before.records[i], &a = after.records[i];
+    out += fmt("  %-10s %-5s  before: RMSE %6.2f  r %+.2f  | after: RMSE %6.2f  r %+.2f\n", b.stem.c_str(),
+               b.training ? "train" : "valid", b.rmse, b.correlation, a.rmse, a.correlation);
+  }
+  out += fmt("  %-16s before: RMSE %6.2f  r %+.2f  | after: RMSE %6.2f  r %+.2f\n", "all records", before.rmse,
+             before.correlation, after.rmse, after.correlation);
+  return out;
+}
+
+namespace {
+
+Json heldBackSideJson(const HeldBackComparison& c) {
+  Json files = Json::object();
+  for (const auto& r : c.records)
+    files[r.stem] = {{"training", r.training}, {"rmse", r.rmse}, {"correlation", r.correlation}};
+  return {{"rmse", c.rmse}, {"correlation", c.correlation}, {"files", files}};
+}
+
+}  // namespace
+
+Json makeHeldBackJson(const HeldBackComparison& before, const HeldBackComparison& after) {
+  return {{"quantity", before.quantity},
+          {"unit", before.unit},
+          {"note", "the measured column is never fitted: the model's " + before.quantity + " along each record at its fitted toe-off state"},
+          {"before", heldBackSideJson(before)},
+          {"after", heldBackSideJson(after)}};
+}
+
+std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackComparison& after, const std::string& title) {
+  std::vector<SvgPlot> panels;
+  for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
+    const auto &b = before.records[i], &a = after.records[i];
+    SvgPlot plot(800, 300);
+    plot.setTitle(title + ": " + b.stem + (b.training ? " (training)" : " (held out)") +
+                  fmt(", after: RMSE %.1f %s, r %+.2f", a.rmse, after.unit.c_str(), a.correlation));
+    plot.setXLabel("time since toe-off (s)");
+    plot.setYLabel(before.quantity + " (" + before.unit + ", + = flexion)");
+    plot.addLine(b.time, b.measured, "measured (inverse dynamics)", "#000000", 2.0);
+    plot.addLine(b.time, b.model, "model before", svgPaletteColor(1), 1.5, true);
+    plot.addLine(a.time, a.model, "model after", svgPaletteColor(2), 1.5);
+    plot.addHLine(0, "", "#999999");
+    panels.push_back(plot);
+  }
+  return renderStackedSvg(panels);
+}
+
 }  // namespace swingsim

@@ -64,4 +64,13 @@ std::string formatDiagnosisText(const Diagnosis& diagnosis, const Comparison& be
 /// step), accepted, ambiguous, final, base_parameters, residual_white, structure.
 Json makeDiagnosisJson(const Diagnosis& diagnosis, const Comparison& before, const Comparison& after);
 
+/// The held-back comparison before and after the diagnosis (the swing's knee moment
+/// against inverse dynamics): one line per record and the totals, RMSE and correlation.
+std::string formatHeldBackText(const HeldBackComparison& before, const HeldBackComparison& after);
+/// `{"quantity", "unit", "note", "before": {"rmse", "correlation", "files": {"<stem>":
+/// {"training", "rmse", "correlation"}}}, "after": {...}}` (docs/diagnosis.md, "JSON").
+Json makeHeldBackJson(const HeldBackComparison& before, const HeldBackComparison& after);
+/// Measured and model (before, after) against time, one panel per record, SVG.
+std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackComparison& after, const std::string& title);
+
 }  // namespace swingsim

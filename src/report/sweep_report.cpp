@@ -757,8 +757,11 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
   md += "## Assumptions used in this run\n\n";
   if (!study.participants.empty()) {
     const Participant& p = study.participants.front();
-    md += "- Hip moment (not published): " + p.hipMoment.describe() +
-          " for " + p.name + "; each participant's time scale is calibrated to Table 3 (see participant YAML).\n";
+    if (p.drive == SwingDrive::kHipMoment)
+      md += "- Drive: hip moment (not published): " + p.hipMoment.describe() + " for " + p.name +
+            "; each participant's time scale is calibrated to Table 3 (see participant YAML).\n";
+    else
+      md += "- Drive: " + describeDrive(p) + " (" + p.name + ").\n";
     md += "- Knee damping table (not published): " + studyKneeModelPath(study, p) +
           ", the same for everyone; viscous speed rule (moment scales with speed / 150 deg/s).\n";
     md += std::string("- COM rule: ") +

@@ -86,6 +86,9 @@ void serialize(A& a, DiagnosisStudy& s) {
   a.require(!s.validate.empty(), "validate", "expected at least one CSV (the acceptance rule needs held-out data)",
             [] { return std::string("an empty list"); });
   if (s.plant == PlantKind::kSwing) {
+    if (A::kReading || s.drive != SwingDrive::kHipMoment)
+      a.choice("drive", s.drive, {{"hip_moment", SwingDrive::kHipMoment}, {"thigh_kinematics", SwingDrive::kThighKinematics}},
+               true);
     bool hasMotionColumns = s.motionColumns.has_value();
     MotionColumns motion = s.motionColumns.value_or(MotionColumns{});
     a.optionalMap("motion_columns", motion, hasMotionColumns);
@@ -96,7 +99,7 @@ void serialize(A& a, DiagnosisStudy& s) {
         a.require(hasMotionColumns, key,
                   "an OpenSim motion file needs the study's motion_columns map ({hip: NAME, knee: NAME, hip_moment: NAME}; "
                   "README \"File formats\")", [&] { return p; });
-        a.require(!motion.hipMoment.empty(), "motion_columns",
+        a.require(s.drive == SwingDrive::kThighKinematics || !motion.hipMoment.empty(), "motion_columns",
                   "hip_moment: expected the label of the hip moment column (N m), the drive the swing diagnosis needs",
                   [] { return std::string("no hip_moment key"); });
       }
@@ -162,11 +165,15 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
   SwingBase base;
   base.participant = loadParticipant(study.participantPath);
   base.knee = loadKneeModel(study.baseModelPath);
+  base.drive = study.drive;
   std::vector<SwingRecord> train, validate;
   for (const auto* paths : {&study.train, &study.validate})
     for (const auto& p : *paths) {
       SwingRecord r = readSwingRecordFile(p, study.motionColumns);
-      if (r.hipMoment.empty()) throw InputError(p + ": no hip moment column (motion_columns: hip_moment), which the swing diagnosis needs");
+      if (study.drive == SwingDrive::kHipMoment && r.hipMoment.empty())
+        throw InputError(p + ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
+                         "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
+      if (study.drive == SwingDrive::kThighKinematics) ThighMotion(ThighKinematics{p, r.time, r.hipFlexion});  // usable?
       (paths == &study.train ? train : validate).push_back(std::move(r));
     }
   return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);

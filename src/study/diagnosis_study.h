@@ -8,7 +8,9 @@
 //   record), explained_noise_ratio (1.2)} (optional; frozen here before the run).
 //   cylinder-diagnosis only: fit_switches (false), plot_seconds (2).
 //   swing-diagnosis only: participant (participant YAML); motion_columns (required when a
-//   train/validate file is an OpenSim .mot/.sto: io/motion_file.h, MotionColumns).
+//   train/validate file is an OpenSim .mot/.sto: io/motion_file.h, MotionColumns); drive
+//   (hip_moment, the default: each record's hip moment drives it; thigh_kinematics: each
+//   record's hip angle is prescribed, issue 14).
 // loadDiagnosisPlant reads the records and models a study names and builds its plant.
 #include <cstddef>
 #include <memory>
@@ -18,6 +20,7 @@
 
 #include "identify/diagnosis_engine.h"
 #include "io/motion_file.h"
+#include "model/leg_parameters.h"
 
 namespace swingsim {
 
@@ -35,6 +38,9 @@ struct DiagnosisStudy {
   bool fitSwitches = false;           ///< cylinder: refit switch widths and xhy before the baseline
   double plotSeconds = 2.0;           ///< cylinder: s of each record shown in residual-vs-time plots
   double integratorTolerance = 1e-8;  ///< swing: reference integrator tolerance in every refit
+  /// swing: `drive:` hip_moment (each record's measured hip moment drives the leg; the
+  /// default) or thigh_kinematics (each record's measured hip angle is prescribed).
+  SwingDrive drive = SwingDrive::kHipMoment;
 };
 
 /// Reads a study of either kind (the `kind:` key decides). Throws InputError.

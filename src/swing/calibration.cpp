@@ -43,6 +43,9 @@ double table3Target(const PublishedParticipant& published, CalibrationTarget col
 
 CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, const SwingOptions& swingOptions,
                                     const CalibrationOptions& options) {
+  if (base.participant.drive == SwingDrive::kThighKinematics)
+    throw InputError(base.participant.path + ": drive: thigh_kinematics: the measured thigh drives " + base.participant.name +
+                     "'s swing, so there is no hip moment time scale to calibrate");
   SwingOptions fast = swingOptions;
   fast.recordTrajectory = false;
   SwingSetup setup = base;

@@ -141,6 +141,8 @@ class ReferenceSwing::Equations final : public OdeSystem {
     calcDerivativesAndHipMoment(t, y, dydt.data(), hipMoment);
     return hipMoment;
   }
+  /// The knee law's moment at y, N m.
+  double calcKneeMoment(const double* y) const { return law_->calcMoment({calcKneeFlexion(y), y[2] - y[3]}, y + 4); }
 
   double calcKneeFlexion(const double* y) const { return calcKneeFlexion(y[0], y[1]); }
   double calcKneeFlexion(double phi, double beta) const { return phi - beta + gamma_; }
@@ -238,7 +240,7 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
   dp.initialize(0.0, y0.data());
 
   ReferenceTrajectory out;
-  for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate, &out.hipMoment})
+  for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate, &out.hipMoment, &out.kneeMoment})
     v->reserve(sampleTimes.size());
   for (double t : sampleTimes) {
     while (dp.getTime() < t) {
@@ -252,6 +254,7 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
     out.hipFlexionRate.push_back(y[2]);
     out.kneeFlexionRate.push_back(y[2] - y[3]);
     out.hipMoment.push_back(eq.calcHipMoment(t, y));
+    out.kneeMoment.push_back(eq.calcKneeMoment(y));
   }
   return out;
 }

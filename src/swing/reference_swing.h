@@ -23,6 +23,7 @@ struct ReferenceTrajectory {
   /// N m, + = flexion: the hip moment profile plus the hip range stop, or with a prescribed
   /// thigh the moment the prescription needs (inverse dynamics of the thigh equation).
   std::vector<double> hipMoment;
+  std::vector<double> kneeMoment;  ///< N m, + = flexion: the knee law's moment
   std::size_t size() const { return time.size(); }
 };
 

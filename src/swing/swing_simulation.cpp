@@ -20,6 +20,25 @@ namespace swingsim {
 
 using namespace SimTK;
 
+const char* driveKey(SwingDrive drive) { return drive == SwingDrive::kHipMoment ? "hip_moment" : "thigh_kinematics"; }
+
+std::string describeDrive(const Participant& p) {
+  if (p.drive == SwingDrive::kHipMoment) return "hip moment: " + p.hipMoment.describe();
+  const ThighKinematics& k = p.thighKinematics;
+  std::string text = "measured thigh angle prescribed on the hip (" + (k.path.empty() ? std::string("given in code") : k.path) +
+                     ", " + std::to_string(k.time.size()) + " samples over " +
+                     formatNumber(k.time.empty() ? 0.0 : k.time.back()) + " s";
+  try {
+    const ThighMotion motion(k);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "; GCV quintic spline, %.3f deg RMS from the samples", motion.getFitRms() * kRadToDeg);
+    text += buf;
+  } catch (const InputError& e) {
+    text += std::string("; unusable: ") + e.what();
+  }
+  return text + "); the hip moment is what the prescription needs";
+}
+
 double calcHipHeight(const Participant& p) {
   return 0.530 * p.height + (p.toeClearance.hipRiseGiven ? p.toeClearance.hipRise : 0.0);
 }
@@ -815,12 +834,12 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       else if (!log.peakSeen)
         cause += "the knee never reached a flexion peak above the zone of stability";
       else if (log.enteredOnce)
-        cause += "the knee did not settle: it left the zone of stability (< " + formatNumber(rule.zoneOfStability * kRadToDeg) +
+        cause += "the knee did not settle: it left the zone of stability (< " + formatNumber(std::round(rule.zoneOfStability * kRadToDeg * 10) / 10) +
                 " deg) " + std::to_string(log.bounces) + " times and never stayed inside it for the settle dwell of " +
                 formatNumber(rule.settleDwell) + " s (a stop that returns too much of the impact, restitution near 1?)";
       else
         cause += "the knee never came back inside the zone of stability (< " +
-                formatNumber(rule.zoneOfStability * kRadToDeg) + " deg) after its peak (knee resistance too high, or the hip extension moment too weak?)";
+                formatNumber(std::round(rule.zoneOfStability * kRadToDeg * 10) / 10) + " deg) after its peak (knee resistance too high, or the hip extension moment too weak?)";
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing did not end within the time limit of " +
                      formatNumber(timeLimit) + " s; " + describeState(leg, s) + "; " + cause);
     }

@@ -136,6 +136,13 @@ struct SwingSetup {
   AddedMass added;
 };
 
+/// What drives the participant's swing, in words for reports: the hip moment profile
+/// (HipMomentProfile::describe), or the measured thigh angle (file, samples, duration, and
+/// what the smoothing spline removed).
+std::string describeDrive(const Participant& p);
+/// The drive's YAML key: "hip_moment" or "thigh_kinematics".
+const char* driveKey(SwingDrive drive);
+
 /// Hip height used for toe clearance: 0.530 x height (Winter 2009, Table 4.1 segment
 /// lengths: greater trochanter at 0.530 H), plus the participant's stated hip rise
 /// (ToeClearanceRule::hipRise) if any.
