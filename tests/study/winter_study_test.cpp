@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/input_error.h"
 #include "core/units.h"
 #include "identify/comparison.h"
 #include "identify/diagnosis_engine.h"
@@ -96,6 +99,76 @@ TEST(WinterStudy, PassiveKneeDoesNotExplainAMuscleDrivenSwing) {
   EXPECT_TRUE(std::isfinite(held->rmse));
   EXPECT_GT(held->correlation, 0.0);
   std::printf("knee moment vs Winter: RMSE %.1f N m, r %.2f\n", held->rmse, held->correlation);
+}
+
+}  // namespace
+}  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// A study in the temp folder naming the bundled files by absolute path ("S/" = the source).
+std::string writeStudy(const std::string& name, std::string body) {
+  for (std::size_t at = 0; (at = body.find("S/", at)) != std::string::npos; at += kSource.size() + 1)
+    body.replace(at, 2, kSource + "/");
+  const std::string path = (std::filesystem::temp_directory_path() / ("swingsim-" + name)).string();
+  std::ofstream(path) << body;
+  return path;
+}
+
+TEST(SwingStudyDrive, HipMomentDriveNeedsAHipMomentAndSaysWhatElseWorks) {
+  const std::string path = writeStudy("test-winter-hip-drive.yaml",
+                                      "kind: swing-diagnosis\nparticipant: S/participants/winter.yaml\n"
+                                      "base_model: S/models/passive-knee.yaml\n"
+                                      "train: [S/studies/data/winter-swing/swing1.csv]\nvalidate: [S/studies/data/winter-swing/swing2.csv]\n");
+  try {
+    const DiagnosisStudy study = loadDiagnosisStudy(path);
+    loadDiagnosisPlant(study, 8);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("swing1.csv"), std::string::npos) << what;
+    EXPECT_NE(what.find("hip_moment_Nm"), std::string::npos) << what;
+    EXPECT_NE(what.find("drive: thigh_kinematics"), std::string::npos) << what;
+  }
+  std::remove(path.c_str());
+  const std::string bad = writeStudy("test-winter-bad-drive.yaml",
+                                     "kind: swing-diagnosis\nparticipant: S/participants/winter.yaml\n"
+                                     "base_model: S/models/passive-knee.yaml\ndrive: thigh\n"
+                                     "train: [S/studies/data/winter-swing/swing1.csv]\nvalidate: [S/studies/data/winter-swing/swing2.csv]\n");
+  try {
+    loadDiagnosisStudy(bad);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("drive"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("thigh_kinematics"), std::string::npos) << e.what();
+  }
+  std::remove(bad.c_str());
+}
+
+TEST(SwingStudyDrive, SeveralTrainingTrialsShareOneModelAndWholeTrialsAreHeldOut) {
+  // Issue 14 item 4: two training trials fit one set of model parameters (each keeps only
+  // its own toe-off state); the held-out trial is judged whole.
+  const std::string path = writeStudy("test-two-trials.yaml",
+                                      "kind: swing-diagnosis\nparticipant: S/participants/p1.yaml\n"
+                                      "base_model: S/models/damping-table-default.yaml\n"
+                                      "train: [S/studies/data/diagnose-demo-swing/normal.csv, S/studies/data/diagnose-demo-swing/slow.csv]\n"
+                                      "validate: [S/studies/data/diagnose-demo-swing/fast.csv]\n");
+  const DiagnosisStudy study = loadDiagnosisStudy(path);
+  std::remove(path.c_str());
+  const auto plant = loadDiagnosisPlant(study, 8);
+  const PlantFit both = plant->fit(*plant->baseModel());
+  ASSERT_EQ(both.trainResidual.size(), 2u);
+  ASSERT_EQ(both.validationRmse.size(), 1u);
+  ASSERT_EQ(both.baseParameters.size(), 1u);  // one knee_model_scale for both trials
+  EXPECT_EQ(both.baseParameters.front().name, "knee_model_scale");
+  EXPECT_EQ(plant->validationStems(), std::vector<std::string>{"fast"});
+  // Each trial's residual is its own length: the fit saw every sample of both.
+  const SwingRecord normal = readSwingRecord(kSource + "/studies/data/diagnose-demo-swing/normal.csv");
+  const SwingRecord slow = readSwingRecord(kSource + "/studies/data/diagnose-demo-swing/slow.csv");
+  EXPECT_EQ(both.trainResidual[0].size(), normal.time.size());
+  EXPECT_EQ(both.trainResidual[1].size(), slow.time.size());
+  std::printf("two training trials: knee RMSE %.3f deg, held-out fast %.3f deg\n", both.trainRmse, both.validationRmse[0]);
 }
 
 }  // namespace
