@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       break;
     default:
       spec.required = {"time_s", "hip_flexion_deg", "knee_flexion_deg"};
-      spec.optional = {"hip_moment_Nm"};
+      spec.optional = {"hip_moment_Nm", "knee_moment_Nm"};
       spec.strictlyIncreasing = "time_s";
       break;
   }

@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
-all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz diagnosis_study_fuzz csv_fuzz)
+all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz diagnosis_study_fuzz csv_fuzz motion_file_fuzz)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
 
@@ -46,6 +46,14 @@ done
 { printf '\001'; head -n 40 studies/data/winter-natural-cadence.csv; } >build-fuzz/seeds/csv_fuzz/winter.csv
 printf '\002time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\r\n0,-10,40,20\r\n0.01,-9,45,21\r\n' \
   >build-fuzz/seeds/csv_fuzz/kinematics.csv
+# Motion files: the first byte picks the column map (motion_file_fuzz.cpp).
+mkdir -p build-fuzz/seeds/motion_file_fuzz
+for f in tests/data/*.sto tests/data/*.mot studies/data/*/*.sto; do
+  [ -f "$f" ] || continue
+  { printf '\101'; head -n 60 "$f"; } >"build-fuzz/seeds/motion_file_fuzz/$(basename "$f")"
+done
+printf '\101swing\nversion=1\nnRows=6\nnColumns=4\ninDegrees=yes\nendheader\ntime\thip_flexion_r\tknee_angle_r\thip_moment\n0\t-10\t40\t20\n0.01\t-8\t45\t21\n0.02\t-6\t50\t21\n0.03\t-4\t54\t20\n0.04\t-2\t57\t18\n0.05\t0\t59\t15\n' \
+  >build-fuzz/seeds/motion_file_fuzz/inline.sto
 
 # A dictionary per YAML target: every key its seeds use, so mutations stay near valid files.
 dictionary() {  # dictionary TARGET -> path
@@ -59,7 +67,7 @@ mkdir -p build-fuzz/artifacts
 for t in "${targets[@]}"; do
   mkdir -p "build-fuzz/corpus/$t"
   dict_args=()
-  [ "$t" != csv_fuzz ] && dict_args=(-dict="$(dictionary "$t")")
+  [ "$t" != csv_fuzz ] && [ "$t" != motion_file_fuzz ] && dict_args=(-dict="$(dictionary "$t")")
   echo "== $t: ${seconds} s" >&2
   log="build-fuzz/$t.log"
   if ! nice -n 10 "build-fuzz/$t" "build-fuzz/corpus/$t" "build-fuzz/seeds/$t" "${dict_args[@]}" \

@@ -49,7 +49,12 @@ ThighMotion::ThighMotion(const ThighKinematics& kinematics) {
   }
   auto impl = std::make_shared<Impl>();
   impl->kinematics = kinematics;
-  impl->spline = SimTK::SplineFitter<SimTK::Real>::fitFromGCV(5, x, y).getSpline();
+  try {
+    impl->spline = SimTK::SplineFitter<SimTK::Real>::fitFromGCV(5, x, y).getSpline();
+  } catch (const std::exception& e) {  // SimTK's GCVSPL refuses what it cannot fit
+    throw InputError((kinematics.path.empty() ? std::string("thigh kinematics") : kinematics.path) +
+                     ": the thigh angle could not be fitted by a smoothing spline (" + e.what() + ")");
+  }
   double sum = 0;
   for (int i = 0; i < n; ++i) {
     const double r = impl->spline.calcValue(x[i]) - y[i];
