@@ -27,8 +27,9 @@ int runCompare(const CompareArguments& args) {
   const auto plant = loadDiagnosisPlant(study, 1);
   const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);
   for (const auto& w : plant->warnings()) std::fprintf(stderr, "swingsim compare: warning: %s\n", w.c_str());
-  std::printf("%s: %s refitted on %zu training file(s)\n", study.name.c_str(), fileStem(study.baseModelPath).c_str(),
-              study.train.size());
+  const std::string drive = describeStudyDrive(study);
+  std::printf("%s: %s refitted on %zu training file(s)%s\n", study.name.c_str(), fileStem(study.baseModelPath).c_str(),
+              study.train.size(), drive.empty() ? "" : ("; " + drive).c_str());
   for (const auto& p : b.parameters)
     std::printf("base model: %s refitted to %.4g (95 %% CI %.4g .. %.4g)\n", p.name.c_str(), p.value, p.lower, p.upper);
   std::printf("%s", formatComparisonTable(b.comparison).c_str());

@@ -34,8 +34,9 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const Comparison after = plant->compare(*dg.final.model);
   const std::string report = formatDiagnosisText(dg, before, after);
   const std::string check = plant->verify(*dg.final.model);
-  std::printf("%s: %s, %zu training file(s)\n", study.name.c_str(), fileStem(study.baseModelPath).c_str(),
-              study.train.size());
+  const std::string drive = describeStudyDrive(study);
+  std::printf("%s: %s, %zu training file(s)%s\n", study.name.c_str(), fileStem(study.baseModelPath).c_str(),
+              study.train.size(), drive.empty() ? "" : ("; " + drive).c_str());
   std::printf("where the base model fails (before):\n%s\n%s", formatComparisonTable(before).c_str(), report.c_str());
   if (!check.empty()) std::printf("%s\n", check.c_str());
   // An independent measurement the fit never saw (the swing's knee moment from inverse
@@ -46,7 +47,8 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   if (held) std::printf("%s", formatHeldBackText(*heldBefore, *heldAfter).c_str());
 
   const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
-  std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n## Before\n\n```\n" +
+  std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n" +
+                   (drive.empty() ? "" : "The model's " + drive + ".\n\n") + "## Before\n\n```\n" +
                    formatComparisonTable(before) + "```\n\n## Ranking and result\n\n```\n" + report +
                    (check.empty() ? "" : check + "\n") + "```\n\n## After\n\n```\n" + formatComparisonTable(after) +
                    "```\n\n## Residual plots\n\n";

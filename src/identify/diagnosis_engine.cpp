@@ -169,7 +169,7 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                                         [](const RecordComparison& r) { return !r.training; }),
                          training.records.end());
   out.structureNote = describeResidualStructure(training, nEffRatio);
-  std::string tried, closest;
+  std::string tried, closest, closestParameters;
   double closestRmse = std::numeric_limits<double>::infinity();
   if (!out.steps.empty()) {
     for (const auto& c : out.steps.back().candidates) {
@@ -180,6 +180,11 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
       if (worst < closestRmse) {
         closestRmse = worst;
         closest = c.effect;
+        // Its fitted parameters with their 95 % intervals, so a user can judge it.
+        closestParameters.clear();
+        for (const auto& p : c.parameters)
+          closestParameters += std::string(closestParameters.empty() ? "" : ", ") + p.name + " " + fmtRatio(p.value) +
+                               " (95 % CI " + fmtRatio(p.lower) + " .. " + fmtRatio(p.upper) + ")";
       }
     }
   }
@@ -193,7 +198,8 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
   out.verdict += ". What remains: " + out.structureNote + ".";
   if (!tried.empty())
     out.verdict += " Tried on top of the final model: " + tried + "; the closest, " + closest +
-                   ", left a held-out error of " + fmtRatio(closestRmse) + " (largest over the held-out records).";
+                   (closestParameters.empty() ? "" : " (" + closestParameters + ")") + ", left a held-out error of " +
+                   fmtRatio(closestRmse) + " (largest over the held-out records).";
   out.verdict += " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";
 }
 

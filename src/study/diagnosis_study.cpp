@@ -132,6 +132,12 @@ void serialize(A& a, DiagnosisStudy& s) {
   }
 }
 
+std::string describeStudyDrive(const DiagnosisStudy& study) {
+  if (study.plant != PlantKind::kSwing) return "";
+  return study.drive == SwingDrive::kThighKinematics ? "drive: each record's measured thigh angle, prescribed (thigh_kinematics)"
+                                                     : "drive: each record's measured hip moment (hip_moment)";
+}
+
 DiagnosisStudy readDiagnosisStudy(YamlMap& yaml) {
   DiagnosisStudy s;
   s.path = yaml.path();

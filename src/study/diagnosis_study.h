@@ -43,6 +43,10 @@ struct DiagnosisStudy {
   SwingDrive drive = SwingDrive::kHipMoment;
 };
 
+/// What drives a swing study's model, for reports ("" for a cylinder study): "drive: each
+/// record's measured hip moment" or "drive: each record's measured thigh angle, prescribed".
+std::string describeStudyDrive(const DiagnosisStudy& study);
+
 /// Reads a study of either kind (the `kind:` key decides). Throws InputError.
 DiagnosisStudy readDiagnosisStudy(YamlMap& yaml);
 /// Loads and reads a study file, rejecting unknown keys.
