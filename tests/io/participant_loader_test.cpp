@@ -57,7 +57,8 @@ TEST(ParticipantLoader, GoodFileLoadsWithDefaultsAndResolvedPaths) {
 }
 
 TEST(ParticipantLoader, BundledParticipantsLoad) {
-  for (const char* f : {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml"}) {
+  for (const char* f : {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml",
+                        "participants/winter.yaml"}) {
     EXPECT_NO_THROW(loadParticipant(f)) << f;
   }
 }
@@ -119,7 +120,8 @@ TEST(ParticipantLoader, LoweringBeyondTheShankIsAClearError) {
 // writing it again gives the same text.
 TEST(ParticipantFormat, LoadWriteLoadGivesTheSameParticipant) {
   std::vector<Participant> participants;
-  for (const char* f : {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml"})
+  for (const char* f : {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml",
+                        "participants/winter.yaml"})  // winter: the measured thigh drive
     participants.push_back(loadParticipant(f));
   Participant table = participants.front();
   table.hipMoment.kind = HipMomentProfile::Kind::kTable;
@@ -139,6 +141,8 @@ TEST(ParticipantFormat, LoadWriteLoadGivesTheSameParticipant) {
     EXPECT_EQ(back.hipMoment.kind, p.hipMoment.kind);
     EXPECT_EQ(back.hipMoment.times, p.hipMoment.times);
     EXPECT_EQ(back.hipMoment.moments, p.hipMoment.moments);
+    EXPECT_EQ(back.drive, p.drive) << p.name;
+    EXPECT_EQ(back.thighKinematics.hipFlexion, p.thighKinematics.hipFlexion) << p.name;
     for (const auto& [a, b] : std::vector<std::pair<double, double>>{
              {back.height, p.height}, {back.bodyMass, p.bodyMass}, {back.thigh.mass, p.thigh.mass},
              {back.shank.comFromDistal, p.shank.comFromDistal}, {back.foot.inertia, p.foot.inertia},
