@@ -821,6 +821,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       dormandPrince->changeAccuracy(looseAccuracy);
       loose = true;
     }
+    if (!log.ended && (now.t >= timeLimit - 1e-12 || !more) && !options.requireSwingEnd) break;
     if (!log.ended && (now.t >= timeLimit - 1e-12 || !more)) {
       std::string cause;
       if (thighMotion && timeLimit < rule.timeLimit)
@@ -849,10 +850,10 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   // peak the foot is still leaving the ground it pushed off from.
   double minClearance = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < tr.size(); ++k) {
-    if (tr.time[k] >= log.peakTime && tr.time[k] <= log.endTime) minClearance = std::min({minClearance, tr.ankleY[k], tr.toeY[k]});
+    if (tr.time[k] >= log.peakTime && tr.time[k] <= (log.ended ? log.endTime : previous.t)) minClearance = std::min({minClearance, tr.ankleY[k], tr.toeY[k]});
   }
   if (!options.recordTrajectory) result.trajectory = SwingTrajectory{};
-  result.swingTime = log.endTime;
+  result.swingTime = log.ended ? log.endTime : std::numeric_limits<double>::quiet_NaN();
   result.peakKneeFlexion = log.peak;
   result.peakKneeFlexionTime = log.peakTime;
   result.bounces = log.bounces;

@@ -64,6 +64,10 @@ struct SwingOptions {
   /// accuracy (SwingResult::looseDwellRetries). Off with trackImpactEnergy (the impact
   /// bookkeeping wants full accuracy). 1 = no loose dwell.
   double dwellAccuracyFactor = 100;
+  /// false: a swing that reaches its time limit (or the end of a measured thigh drive)
+  /// before the end rule is met returns what it has, with swingTime NaN, instead of throwing
+  /// RunError (a model run along a measured trial cut at heel contact).
+  bool requireSwingEnd = true;
   /// Energy bookkeeping of each stop impact (StopImpact::work): integrates the work of every
   /// knee law part and of the hip as extra states (a little slower; off in sweeps).
   bool trackImpactEnergy = false;
@@ -111,7 +115,8 @@ struct StopImpact {
 
 struct SwingResult {
   /// s: thigh at target AND knee back in the zone after its peak, staying there for the
-  /// settle dwell (SwingEndRule::settleDwell)
+  /// settle dwell (SwingEndRule::settleDwell); NaN if the swing had not ended
+  /// (SwingOptions::requireSwingEnd false)
   double swingTime = 0;
   double peakKneeFlexion = 0;      ///< rad
   double peakKneeFlexionTime = 0;  ///< s

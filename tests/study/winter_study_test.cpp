@@ -169,6 +169,11 @@ TEST(SwingStudyDrive, SeveralTrainingTrialsShareOneModelAndWholeTrialsAreHeldOut
   EXPECT_EQ(both.trainResidual[0].size(), normal.time.size());
   EXPECT_EQ(both.trainResidual[1].size(), slow.time.size());
   std::printf("two training trials: knee RMSE %.3f deg, held-out fast %.3f deg\n", both.trainRmse, both.validationRmse[0]);
+  // The Simbody check runs along every trial, to its end (a hip-moment swing that has not
+  // settled when its record ends is still compared).
+  const std::string check = plant->verify(*both.model);
+  ASSERT_NE(check.find("max knee difference "), std::string::npos) << check;
+  EXPECT_LT(std::atof(check.substr(check.rfind("difference ") + 11).c_str()), 0.05) << check;
 }
 
 }  // namespace
