@@ -111,7 +111,8 @@ struct UncertaintyRun {
 /// nominal, then low and high of each applicable assumption), then the Monte Carlo sample by
 /// sample (within a sample the participants in study order), each run's lowerings in grid
 /// order. Holds the draws and the nominal variants only: a swing's variant and knee law are
-/// rebuilt when it runs, so memory does not grow with the swings (about 4 bytes a swing).
+/// rebuilt when it runs, so memory grows with the swings only by their lowering and time
+/// (tens of bytes a swing, about 2 MB for 84,000).
 struct UncertaintyPlan {
   UncertaintyOptions options;
   std::vector<std::vector<double>> draws;             ///< [sample][assumption], u in [0, 1)
