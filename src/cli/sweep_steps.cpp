@@ -153,8 +153,11 @@ int writeSweepOutputs(const SweepStudy& study, const SweepResults& results, cons
     std::fprintf(stderr, "swingsim: interrupted while writing the report; nothing in %s was changed\n", out.c_str());
     return 1;
   }
-  // Partial results of an earlier, interrupted run are out of date now.
-  staged.commit({"sweep.partial.csv", uncertaintyPartialFileName()});
+  // Partial results of an earlier, interrupted run are out of date now (an interrupted
+  // analysis only if this run did the analysis).
+  std::vector<std::string> stale = {"sweep.partial.csv"};
+  if (uncertainty) stale.push_back(uncertaintyPartialFileName());
+  staged.commit(stale);
   std::printf("\nreport: %s/report.md\n", out.c_str());
   return 0;
 }

@@ -42,7 +42,8 @@ bool runUncertaintySlice(const UncertaintyPlan& plan, UncertaintySwingsFile& fil
                          const std::string& label, int jobs);
 
 /// Stages report, figures and --json, and moves them into `out` together (also removing an
-/// earlier run's partial files); Ctrl-C meanwhile leaves `out` unchanged. Prints the
+/// earlier run's sweep.partial.csv, and with `uncertainty` its uncertainty.partial.json);
+/// Ctrl-C meanwhile leaves `out` unchanged. Prints the
 /// report's path. Returns the exit code.
 int writeSweepOutputs(const SweepStudy& study, const SweepResults& results, const UncertaintyResults* uncertainty,
                       const std::string& out, const std::optional<std::string>& json);
