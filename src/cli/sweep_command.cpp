@@ -67,14 +67,15 @@ int runShard(const SweepStudy& study, const ShardSpec& shard, const std::string&
                             std::to_string(shard.count);
   std::fprintf(stderr, "%s: swings %zu to %zu of %zu (%d samples, seed %d, and each assumption at both ends)\n",
                label.c_str(), file.first, file.last, plan.swingCount, study.uncertaintySamples, study.uncertaintySeed);
+  readResumableSlice(file, path);  // another analysis's file there: refused before any swing
   catchInterrupts();
   const bool complete = runUncertaintySlice(plan, file, path, label, jobs);
   restoreInterrupts();
   if (!complete) return 1;
   writeFileAtomic(path, formatUncertaintySwingsJson(file));
-  std::printf("shard %d/%d of %s: %zu swings -> %s\n(combine all %d shards with: swingsim merge %s/%s ...)\n",
+  std::printf("shard %d/%d of %s: %zu swings -> %s\n(when all %d have run: swingsim merge %s/uncertainty-shard-*-of-%d.json)\n",
               shard.index, shard.count, study.name.c_str(), file.last - file.first, path.c_str(), shard.count,
-              out.c_str(), uncertaintyShardFileName(0, shard.count).c_str());
+              out.c_str(), shard.count);
   return 0;
 }
 
@@ -99,30 +100,36 @@ int runSweepCommand(const SweepArguments& a) {
   const std::vector<ParticipantCalibration> calibrations = calibrateForSweep(study);
   if (a.shard) return runShard(study, *a.shard, out, a.jobs);
 
+  // How sure is the optimum: after the plain sweep, over all its swings with one bar; an
+  // interrupted analysis keeps its finished swings in uncertainty.partial.json, and the same
+  // command resumes from there. A partial file of another analysis is refused before anything runs.
+  std::optional<UncertaintyPlan> plan;
+  UncertaintySwingsFile file;
+  const std::string partialPath = out + "/" + uncertaintyPartialFileName();
+  if (study.uncertaintySamples > 0) {
+    plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
+    file.run = makeUncertaintyRunIdentity(study, *plan, SWINGSIM_VERSION);
+    file.first = 0;
+    file.last = plan->swingCount;
+    readResumableSlice(file, partialPath);
+  }
+
   catchInterrupts();
   const SweepResults results = runPlainSweep(study, calibrations, a.jobs);
   std::printf("%s", formatSweepTables(study, results).c_str());
-  // How sure is the optimum: after the plain sweep, over all its swings with one bar; an
-  // interrupted analysis keeps its finished swings in uncertainty.partial.json, and the same
-  // command resumes from there.
   std::optional<UncertaintyResults> uncertainty;
-  if (study.uncertaintySamples > 0 && !gInterrupted) {
-    const UncertaintyPlan plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
-    UncertaintySwingsFile file;
-    file.run = makeUncertaintyRunIdentity(study, plan, SWINGSIM_VERSION);
-    file.first = 0;
-    file.last = plan.swingCount;
+  if (plan && !gInterrupted) {
     std::fprintf(stderr, "uncertainty %s: %d samples, seed %d, and each assumption at both ends of its range "
                  "(docs/uncertainty.md)\n", study.name.c_str(), study.uncertaintySamples, study.uncertaintySeed);
-    if (!runUncertaintySlice(plan, file, out + "/" + uncertaintyPartialFileName(), "uncertainty " + study.name, a.jobs)) {
+    if (!runUncertaintySlice(*plan, file, partialPath, "uncertainty " + study.name, a.jobs)) {
       // The sweep itself finished, but a report without the analysis asked for would look complete.
       std::fprintf(stderr, "swingsim: no report, CSV or JSON in %s was written\n", out.c_str());
       restoreInterrupts();
       return 1;
     }
-    UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan.swingCount);
+    UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan->swingCount);
     copyFinishedSwings(file, times);
-    uncertainty = assembleUncertaintyResults(study, plan, times);
+    uncertainty = assembleUncertaintyResults(study, *plan, times);
     std::printf("%s", formatUncertaintyTables(*uncertainty).c_str());
   }
   if (gInterrupted) {

@@ -87,23 +87,27 @@ UncertaintyOptions makeUncertaintyOptions(const SweepStudy& study) {
   return options;
 }
 
+std::optional<UncertaintySwingsFile> readResumableSlice(const UncertaintySwingsFile& file, const std::string& path) {
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  UncertaintySwingsFile earlier = readUncertaintySwingsFile(path);
+  checkSameUncertaintyRun(file.run, earlier, "this run");
+  auto shardOf = [](const UncertaintySwingsFile& f) {
+    return f.sharded ? std::to_string(f.shardIndex) + "/" + std::to_string(f.shardCount) : std::string("null");
+  };
+  if (shardOf(earlier) != shardOf(file))
+    throw InputError(path + ": shard: expected " + shardOf(file) + " (this run), found " + shardOf(earlier));
+  return earlier;
+}
+
 bool runUncertaintySlice(const UncertaintyPlan& plan, UncertaintySwingsFile& file, const std::string& path,
                          const std::string& label, int jobs) {
   const long stopAfter = stopAfterSwingsForTests();
   const std::size_t sliceSwings = file.last - file.first;
   UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan.swingCount);
   std::size_t resumed = 0;
-  if (std::filesystem::exists(path)) {
-    const UncertaintySwingsFile earlier = readUncertaintySwingsFile(path);
-    checkSameUncertaintyRun(file.run, earlier, "this run");
-    if (earlier.sharded != file.sharded || earlier.shardIndex != file.shardIndex || earlier.shardCount != file.shardCount)
-      throw InputError(path + ": shard: expected " +
-                       (file.sharded ? std::to_string(file.shardIndex) + "/" + std::to_string(file.shardCount) : "null") +
-                       " (this run), found " +
-                       (earlier.sharded ? std::to_string(earlier.shardIndex) + "/" + std::to_string(earlier.shardCount)
-                                        : "null"));
-    copyFinishedSwings(earlier, times);
-    resumed = earlier.times.countFinished();
+  if (const auto earlier = readResumableSlice(file, path)) {
+    copyFinishedSwings(*earlier, times);
+    resumed = earlier->times.countFinished();
   }
   ProgressReporter progress(label, "swings");
   progress.setShowRate(true);

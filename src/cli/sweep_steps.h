@@ -32,6 +32,11 @@ SweepResults runPlainSweep(const SweepStudy& study, const std::vector<Participan
 /// The uncertainty analysis's options from the study (samples, seed, with the sensitivity).
 UncertaintyOptions makeUncertaintyOptions(const SweepStudy& study);
 
+/// The file an earlier interrupted run of the same analysis and slice as `file` left at
+/// `path`, if any; one from another analysis or slice is an InputError (file, key, expected,
+/// found), so a command can refuse it before it runs anything.
+std::optional<UncertaintySwingsFile> readResumableSlice(const UncertaintySwingsFile& file, const std::string& path);
+
 /// Runs the swings of `file`'s slice ([first, last) of `plan`) that are not finished yet,
 /// after taking those an earlier interrupted run of the same analysis left in `path` (a
 /// file there from another analysis is an InputError: file, key, expected, found). On an
