@@ -187,9 +187,9 @@ TEST(UncertaintyShards, WrongShardSetsAreRefusedAndNothingIsWritten) {
   const auto dir = freshTempDir(kSuite, "errors");
   const auto study = writeTinyStudy(dir);
   const fs::path shards = dir / "shards", other = dir / "other";
-  auto shard = [&](const std::string& spec, const std::string& seed, const fs::path& out) {
+  auto shard = [&](const std::string& spec, const std::string& seed, const fs::path& out, int jobs = 2) {
     return runSwingsim("sweep " + study.string() + " --uncertainty 2 --seed " + seed + " --shard " + spec +
-                       " --jobs 2 --out " + out.string());
+                       " --jobs " + std::to_string(jobs) + " --out " + out.string());
   };
   for (const char* spec : {"0/3", "1/3", "2/3"}) ASSERT_EQ(shard(spec, "5", shards).code, 0) << spec;
   ASSERT_EQ(shard("1/3", "6", other).code, 0);  // another seed
@@ -218,7 +218,7 @@ TEST(UncertaintyShards, WrongShardSetsAreRefusedAndNothingIsWritten) {
   // A partial shard (interrupted) is named, with how far it got.
   {
     ScopedEnv stop("SWINGSIM_TEST_STOP_AFTER_SWINGS", "3");
-    ASSERT_EQ(shard("0/3", "5", other).code, 1);
+    ASSERT_EQ(shard("0/3", "5", other, 1).code, 1);  // one thread: stops after exactly 3
   }
   const std::string partial0 = (other / "uncertainty-shard-0-of-3.json").string();
   const CliRun partial = merge(partial0 + " " + s1 + " " + s2);
