@@ -129,17 +129,19 @@ bool runUncertaintySlice(const UncertaintyPlan& plan, UncertaintySwingsFile& fil
   }
   // A shard holds parts of samples: only a whole run counts them.
   file.samplesFinished = file.sharded ? 0 : countFinishedSamples(plan, times);
-  if (!complete) {
+  // Interrupted just as the last swing ended: the swings are kept all the same, since the
+  // caller writes nothing else.
+  if (!complete || gInterrupted) {
     writeFileAtomic(path, formatUncertaintySwingsJson(file));
     std::fprintf(stderr,
-                 "swingsim: interrupted; %zu of %zu swings%s (seed %llu) are kept in %s (\"partial\": true); run the "
+                 "swingsim: interrupted; %zu of %zu swings%s (seed %llu) are kept in %s (\"partial\": %s); run the "
                  "same command again to resume\n",
                  file.times.countFinished(), sliceSwings,
                  file.sharded ? "" : (" and " + std::to_string(file.samplesFinished) + " of " +
                                       std::to_string(plan.options.samples) + " Monte Carlo samples").c_str(),
-                 static_cast<unsigned long long>(plan.options.seed), path.c_str());
+                 static_cast<unsigned long long>(plan.options.seed), path.c_str(), file.isPartial() ? "true" : "false");
   }
-  return complete;
+  return complete && !gInterrupted;
 }
 
 int writeSweepOutputs(const SweepStudy& study, const SweepResults& results, const UncertaintyResults* uncertainty,
