@@ -194,8 +194,8 @@ BENCHMARK(BM_DiagnoseSwing)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Issue 16: the Monte Carlo of `sweep studies/burkett2004.yaml --uncertainty N` on 1 and 2
 // threads, as that command runs it (planSweepUncertainty + runUncertaintySwings), with 20
-// samples (1,680 swings; the one-at-a-time runs left out) instead of 1000 (84,000 swings,
-// minutes): bench.sh extrapolates the time to 84,000 swings and says so. One iteration per
+// samples (1,764 swings: the nominal run and 20 samples of the 84-point grid; the
+// one-at-a-time runs left out) instead of 1000 (84,000 swings, minutes): bench.sh extrapolates the time to 84,000 swings and says so. One iteration per
 // repetition, three repetitions whatever bench.sh's REPS (each is 5-10 s).
 void BM_UncertaintyBurkett(benchmark::State& state) {
   static const SweepStudy study = plainBurkettSweep();
