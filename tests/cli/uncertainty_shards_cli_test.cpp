@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/wait.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -66,19 +68,36 @@ std::string uncertaintyTables(const std::string& output) {
   return from == std::string::npos || to == std::string::npos ? "" : output.substr(from, to - from);
 }
 
+// Runs `swingsim ARGS` with stdout and stderr to files of `dir`; returns the exit code.
+int runSeparated(const std::string& args, const fs::path& dir, const std::string& name) {
+  const int status = std::system((std::string(SWINGSIM_BINARY) + " " + args + " > " + (dir / (name + ".stdout")).string() +
+                                  " 2> " + (dir / (name + ".stderr")).string()).c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// stdout without its last line, "report: DIR/report.md", which names the output folder.
+std::string withoutReportLine(const std::string& stdoutText) {
+  const auto at = stdoutText.rfind("\nreport: ");
+  return at == std::string::npos ? stdoutText : stdoutText.substr(0, at);
+}
+
 struct SingleRun {
   fs::path out, json;
-  std::string tables;
+  std::string tables;  ///< the uncertainty tables
+  std::string stdoutText;
 };
 
 // The uninterrupted, unsharded run everything is compared with.
 SingleRun runSingle(const fs::path& dir, const fs::path& study) {
-  SingleRun s{dir / "single", dir / "single.json", ""};
-  const CliRun r = runSwingsim("sweep " + study.string() + " --uncertainty 2 --seed 5 --jobs 2 --out " + s.out.string() +
-                               " --json " + s.json.string());
-  EXPECT_EQ(r.code, 0) << r.output;
-  s.tables = uncertaintyTables(r.output);
+  SingleRun s{dir / "single", dir / "single.json", "", ""};
+  const int code = runSeparated("sweep " + study.string() + " --uncertainty 2 --seed 5 --jobs 2 --out " + s.out.string() +
+                                    " --json " + s.json.string(),
+                                dir, "single");
+  EXPECT_EQ(code, 0) << slurp(dir / "single.stderr");
+  s.stdoutText = slurp(dir / "single.stdout");
+  s.tables = uncertaintyTables(s.stdoutText);
   EXPECT_THAT(s.tables, HasSubstr("2 Monte Carlo samples, seed 5"));
+  EXPECT_THAT(s.stdoutText, HasSubstr("P1 — swing time vs knee-axis lowering"));
   return s;
 }
 
@@ -173,6 +192,14 @@ TEST(UncertaintyShards, MergedShardsGiveTheSingleRunsReportAndJson) {
   EXPECT_EQ(slurp(json), slurp(single.json));
   EXPECT_EQ(readTree(out), readTree(single.out));
   EXPECT_EQ(uncertaintyTables(m.output), single.tables);
+  // The whole stdout too (plain tables and uncertainty tables), but for the report's folder.
+  ASSERT_EQ(runSeparated("merge " + (shards / "uncertainty-shard-0-of-3.json").string() + " " +
+                             (shards / "uncertainty-shard-1-of-3.json").string() + " " +
+                             (shards / "uncertainty-shard-2-of-3.json").string() + " --out " + out.string(),
+                         dir, "merge"),
+            0);
+  EXPECT_EQ(withoutReportLine(slurp(dir / "merge.stdout")), withoutReportLine(single.stdoutText));
+  EXPECT_THAT(slurp(dir / "merge.stdout"), HasSubstr("\nreport: " + out.string() + "/report.md"));
 
   // Without --out: the study's output_dir, as the sweep.
   const CliRun d = runSwingsim("merge " + (shards / "uncertainty-shard-0-of-3.json").string() + " " +
