@@ -141,6 +141,9 @@ TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {
   UncertaintySwingsFile otherSeed = set[1];
   otherSeed.run.seed = 6;
   EXPECT_THAT(refusal({set[0], otherSeed, set[2]}), HasSubstr(": seed: expected 5 (the first shard, " + set[0].path + "), found 6"));
+  UncertaintySwingsFile otherN = set[1];
+  otherN.run.samples = 3;
+  EXPECT_THAT(refusal({set[0], otherN, set[2]}), HasSubstr(": samples: expected 2 (the first shard, " + set[0].path + "), found 3"));
   UncertaintySwingsFile otherStudy = set[2];
   otherStudy.run.inputsFingerprint = "0000000000000000";
   EXPECT_THAT(refusal({set[0], set[1], otherStudy}), HasSubstr(": inputs_fingerprint: expected 0123456789abcdef"));
