@@ -6,6 +6,7 @@
 // sweep (its terminal-impact check and Table 4 validation, seconds for the Burkett study) is
 // run here from the study the shards name, after checking that it is the study they ran.
 
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -37,6 +38,10 @@ int runMergeCommand(const MergeArguments& a) {
   const UncertaintySwingTimes times = mergeUncertaintyShards(shards);
   const UncertaintySwingsFile& head = shards.front();
 
+  constexpr std::uint64_t kMaxSeed = 1000000000;  // what --seed and a study's seed accept
+  if (head.run.seed > kMaxSeed)
+    throw InputError(head.path + ": seed: expected a seed from 0 to 1000000000 (what sweep --seed accepts), found " +
+                     std::to_string(head.run.seed));
   SweepStudy study = loadSweepStudy(head.run.studyPath);
   study.uncertaintySamples = head.run.samples;
   study.uncertaintySeed = static_cast<int>(head.run.seed);
