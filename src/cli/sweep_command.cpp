@@ -65,8 +65,9 @@ int runShard(const SweepStudy& study, const ShardSpec& shard, const std::string&
   const std::string path = out + "/" + uncertaintyShardFileName(shard.index, shard.count);
   const std::string label = "uncertainty " + study.name + " shard " + std::to_string(shard.index) + "/" +
                             std::to_string(shard.count);
-  std::fprintf(stderr, "%s: swings %zu to %zu of %zu (%d samples, seed %d, and each assumption at both ends)\n",
-               label.c_str(), file.first, file.last, plan.swingCount, study.uncertaintySamples, study.uncertaintySeed);
+  std::fprintf(stderr, "%s: %zu swings, %zu to %zu of the %zu (%d samples, seed %d, and each assumption at both ends)\n",
+               label.c_str(), file.last - file.first, file.first, file.last - 1, plan.swingCount, study.uncertaintySamples,
+               study.uncertaintySeed);
   readResumableSlice(file, path);  // another analysis's file there: refused before any swing
   catchInterrupts();
   const bool complete = runUncertaintySlice(plan, file, path, label, jobs);
