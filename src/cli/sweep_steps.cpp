@@ -114,8 +114,11 @@ bool runUncertaintySlice(const UncertaintyPlan& plan, UncertaintySwingsFile& fil
   progress.setResumedFrom(static_cast<int>(resumed));
   if (resumed > 0)
     progress.note("resuming from " + path + ": " + std::to_string(resumed) + " of " + std::to_string(sliceSwings) +
-                  " swings and " + std::to_string(countFinishedSamples(plan, times)) + " of " +
-                  std::to_string(plan.options.samples) + " samples done by an earlier run");
+                  " swings" +
+                  (file.sharded ? std::string()  // a shard holds parts of samples
+                                : " and " + std::to_string(countFinishedSamples(plan, times)) + " of " +
+                                      std::to_string(plan.options.samples) + " samples") +
+                  " done by an earlier run");
   UncertaintyRunControl control;
   control.stopFlag = &gInterrupted;
   control.stopAfterSwings = stopAfter;
