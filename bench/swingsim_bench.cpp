@@ -20,6 +20,7 @@
 #include "leg/leg_model.h"
 #include "swing/reference_swing.h"
 #include "swing/simbody_ode.h"
+#include "swing/sweep_uncertainty.h"
 
 namespace swingsim::bench {
 namespace {
@@ -190,6 +191,39 @@ void BM_DiagnoseSwing(benchmark::State& state) {
   state.counters["accepted"] = static_cast<double>(accepted);
 }
 BENCHMARK(BM_DiagnoseSwing)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Issue 16: the Monte Carlo of `sweep studies/burkett2004.yaml --uncertainty N` on 1 and 2
+// threads, as that command runs it (planSweepUncertainty + runUncertaintySwings), with 20
+// samples (1,764 swings: the nominal run and 20 samples of the 84-point grid; the
+// one-at-a-time runs left out) instead of 1000 (84,000 swings, minutes): bench.sh extrapolates the time to 84,000 swings and says so. One iteration per
+// repetition, three repetitions whatever bench.sh's REPS (each is 5-10 s).
+void BM_UncertaintyBurkett(benchmark::State& state) {
+  static const SweepStudy study = plainBurkettSweep();
+  UncertaintyOptions options;
+  options.samples = 20;
+  options.seed = 1;
+  options.sensitivity = false;
+  const int jobs = static_cast<int>(state.range(0));
+  std::size_t swings = 0;
+  for (auto _ : state) {
+    const UncertaintyPlan plan = planSweepUncertainty(study, options);
+    UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan.swingCount);
+    runUncertaintySwings(plan, 0, plan.swingCount, times, jobs);
+    swings = times.countFinished();
+    keep(swings);
+  }
+  state.counters["swings"] = static_cast<double>(swings);
+  state.counters["samples"] = options.samples;
+  state.counters["threads"] = jobs;
+}
+BENCHMARK(BM_UncertaintyBurkett)
+    ->ArgName("jobs")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3);
 
 }  // namespace
 }  // namespace swingsim::bench

@@ -58,5 +58,14 @@ dgc = ms(next(k for k in med if k.startswith("BM_DiagnoseCylinder")))
 dgs = ms(next(k for k in med if k.startswith("BM_DiagnoseSwing")))
 print(f"one cylinder diagnosis: {dgc / 1e3:.2f} s; one swing diagnosis (three trials): {dgs / 1e3:.2f} s; "
       f"swing diagnosis / Simbody swing: {dgs / swing:.0f}x")
+# Issue 16: the Monte Carlo (sweep --uncertainty 1000 on the four Burkett participants is
+# 84,000 swings), measured on fewer samples and extrapolated by swings.
+mc = {j: next(k for k in med if k.startswith(f"BM_UncertaintyBurkett/jobs:{j}")) for j in (1, 2)}
+mc_swings = med[mc[1]]["swings"]
+print(f"Monte Carlo, 84,000 swings (sweep --uncertainty 1000, Burkett study), EXTRAPOLATED from "
+      f"{mc_swings:.0f} swings (20 samples) measured in this run: "
+      f"1 thread {ms(mc[1]) / 1e3 * 84000 / mc_swings:.0f} s (measured {ms(mc[1]) / 1e3:.2f} s), "
+      f"2 threads {ms(mc[2]) / 1e3 * 84000 / mc_swings:.0f} s (measured {ms(mc[2]) / 1e3:.2f} s); "
+      f"{mc_swings / (ms(mc[2]) / 1e3):.0f} swings/s on 2 threads; 1 / 2 threads {ms(mc[1]) / ms(mc[2]):.2f}x")
 print(f"json: {sys.argv[1]}")
 EOF

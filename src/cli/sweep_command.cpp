@@ -1,39 +1,46 @@
 // swingsim sweep STUDY.yaml [--out DIR] [--json FILE] [--jobs N] [--add-mass KG@METRES]
-//                          [--uncertainty N [--seed S]]
+//                          [--uncertainty N [--seed S] [--shard K/N]]
 
-#include <csignal>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
+#include "cli/sweep_steps.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
 #include "study/sweep_study.h"
+#include "study/uncertainty_swings_file.h"
 #include "swing/sweep.h"
-#include "swing/measured_validation.h"
 #include "swing/sweep_uncertainty.h"
-#include "swing/terminal_impact.h"
 
 namespace swingsim::cli {
 namespace {
 
-// Set by SIGINT or SIGTERM: the sweep stops starting swings; in the write phase the staged
-// files are discarded rather than left half-written.
-volatile bool gInterrupted = false;
-extern "C" void onInterrupt(int) { gInterrupted = true; }
+/// `--shard K/N`: shard K (0 <= K < N) of N.
+struct ShardSpec {
+  int index = 0, count = 1;
+};
 
-void catchInterrupts() {
-  std::signal(SIGINT, onInterrupt);
-  std::signal(SIGTERM, onInterrupt);
-}
-
-void restoreInterrupts() {
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+/// Reads "K/N"; a message for CLI11 if it is not two whole numbers with 0 <= K < N.
+std::string checkShardSpec(const std::string& text, ShardSpec* spec = nullptr) {
+  const auto slash = text.find('/');
+  auto whole = [](const std::string& t, long long& v) {
+    if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos) return false;
+    v = std::stoll(t);
+    return true;
+  };
+  long long k = 0, n = 0;
+  if (slash == std::string::npos || !whole(text.substr(0, slash), k) || !whole(text.substr(slash + 1), n))
+    return "expected K/N, two whole numbers (shard K of N, K from 0 to N - 1), found \"" + text + "\"";
+  if (n < 1) return "expected N of at least 1, found \"" + text + "\"";
+  if (k >= n) return "expected K from 0 to N - 1 = " + std::to_string(n - 1) + ", found \"" + text + "\"";
+  if (spec) *spec = {static_cast<int>(k), static_cast<int>(n)};
+  return "";
 }
 
 /// What `swingsim sweep` was given; nullopt: not given (the default applies).
@@ -43,7 +50,35 @@ struct SweepArguments {
   int jobs = 0;  ///< worker threads, 0 = all cores
   std::optional<AddedMass> added;
   std::optional<int> uncertaintySamples, seed;  ///< override the study's `uncertainty:` map
+  std::optional<ShardSpec> shard;
 };
+
+/// `--shard K/N`: this shard's slice of the uncertainty swings only, into its shard file.
+int runShard(const SweepStudy& study, const ShardSpec& shard, const std::string& out, int jobs) {
+  const UncertaintyPlan plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
+  UncertaintySwingsFile file;
+  file.run = makeUncertaintyRunIdentity(study, plan, SWINGSIM_VERSION);
+  file.sharded = true;
+  file.shardIndex = shard.index;
+  file.shardCount = shard.count;
+  std::tie(file.first, file.last) = calcShardSwings(plan.swingCount, shard.index, shard.count);
+  const std::string path = out + "/" + uncertaintyShardFileName(shard.index, shard.count);
+  const std::string label = "uncertainty " + study.name + " shard " + std::to_string(shard.index) + "/" +
+                            std::to_string(shard.count);
+  std::fprintf(stderr, "%s: %zu swings, %zu to %zu of the %zu (%d samples, seed %d, and each assumption at both ends)\n",
+               label.c_str(), file.last - file.first, file.first, file.last - 1, plan.swingCount, study.uncertaintySamples,
+               study.uncertaintySeed);
+  readResumableSlice(file, path);  // another analysis's file there: refused before any swing
+  catchInterrupts();
+  const bool complete = runUncertaintySlice(plan, file, path, label, jobs);
+  restoreInterrupts();
+  if (!complete) return 1;
+  writeFileAtomic(path, formatUncertaintySwingsJson(file));
+  std::printf("shard %d/%d of %s: %zu swings -> %s\n(when all %d have run: swingsim merge %s/uncertainty-shard-*-of-%d.json)\n",
+              shard.index, shard.count, study.name.c_str(), file.last - file.first, path.c_str(), shard.count,
+              out.c_str(), shard.count);
+  return 0;
+}
 
 int runSweepCommand(const SweepArguments& a) {
   SweepStudy study = loadSweepStudy(a.study);
@@ -58,58 +93,44 @@ int runSweepCommand(const SweepArguments& a) {
                        "`uncertainty:` map in " + study.path + " (got --seed " + std::to_string(*a.seed) + " alone)");
     study.uncertaintySeed = *a.seed;
   }
-  const std::string out = a.out.value_or(study.outputDir.empty() ? "out/" + makeSafeFileStem(study.name) : study.outputDir);
+  if (a.shard && study.uncertaintySamples == 0)
+    throw InputError("--shard: shards the uncertainty analysis, which needs --uncertainty N or an `uncertainty:` map in " +
+                     study.path + " (got --shard " + std::to_string(a.shard->index) + "/" +
+                     std::to_string(a.shard->count) + " alone)");
+  const std::string out = chooseSweepOutputFolder(study, a.out);
+  const std::vector<ParticipantCalibration> calibrations = calibrateForSweep(study);
+  if (a.shard) return runShard(study, *a.shard, out, a.jobs);
 
-  std::vector<ParticipantCalibration> calibrations;
-  if (study.calibrateTo != CalibrationTarget::kStored) {
-    std::fprintf(stderr, "sweep %s: calibrating the hip time scales to Burkett Table 3 (%s)\n", study.name.c_str(),
-                 calibrationTargetKey(study.calibrateTo));
-    calibrations = calibrateSweepParticipants(study);
-    for (const auto& c : calibrations)
-      std::fprintf(stderr, "sweep %s: %s: %s\n", study.name.c_str(), c.participant.c_str(),
-                   c.ok ? ("time scale " + formatNumber(c.timeScale) + " for " + formatNumber(c.targetTime) + " s").c_str()
-                        : c.failure.c_str());
+  // How sure is the optimum: after the plain sweep, over all its swings with one bar; an
+  // interrupted analysis keeps its finished swings in uncertainty.partial.json, and the same
+  // command resumes from there. A partial file of another analysis is refused before anything runs.
+  std::optional<UncertaintyPlan> plan;
+  UncertaintySwingsFile file;
+  const std::string partialPath = out + "/" + uncertaintyPartialFileName();
+  if (study.uncertaintySamples > 0) {
+    plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
+    file.run = makeUncertaintyRunIdentity(study, *plan, SWINGSIM_VERSION);
+    file.first = 0;
+    file.last = plan->swingCount;
+    readResumableSlice(file, partialPath);
   }
 
   catchInterrupts();
-  SweepResults results = [&] {
-    // Scoped: an interrupted run's bar is ended before the message below.
-    ProgressReporter progress("sweep " + study.name, "swings");
-    progress.note(std::to_string(study.participants.size()) + " participants (" + study.path + ")");
-    return runSweep(study, a.jobs, [&](int done, int total) { progress.update(done, total); }, &gInterrupted);
-  }();
-
-  if (!gInterrupted) {
-    // Burkett's bounce and interior optimum, checked (report section "Terminal impact").
-    std::fprintf(stderr, "sweep %s: terminal impact check: impact bookkeeping and a friction-free sweep per participant\n",
-                 study.name.c_str());
-    checkTerminalImpact(study, results, a.jobs);
-    results.calibratedTo = study.calibrateTo;
-    results.calibrations = calibrations;
-    validateOnTable4(study, results);
-  }
+  const SweepResults results = runPlainSweep(study, calibrations, a.jobs);
   std::printf("%s", formatSweepTables(study, results).c_str());
-  // How sure is the optimum: after the plain sweep, over all its swings with one bar.
   std::optional<UncertaintyResults> uncertainty;
-  if (study.uncertaintySamples > 0 && !gInterrupted) {
-    UncertaintyOptions options;
-    options.samples = study.uncertaintySamples;
-    options.seed = static_cast<std::uint64_t>(study.uncertaintySeed);
-    uncertainty = [&] {
-      ProgressReporter progress("uncertainty " + study.name, "swings");
-      progress.setShowRate(true);
-      progress.note(std::to_string(options.samples) + " samples, seed " + std::to_string(study.uncertaintySeed) +
-                    ", and each assumption at both ends of its range (docs/uncertainty.md)");
-      return runSweepUncertainty(study, options, a.jobs, [&](int done, int total) { progress.update(done, total); },
-                                 &gInterrupted);
-    }();
-    if (gInterrupted) {
+  if (plan && !gInterrupted) {
+    std::fprintf(stderr, "uncertainty %s: %d samples, seed %d, and each assumption at both ends of its range "
+                 "(docs/uncertainty.md)\n", study.name.c_str(), study.uncertaintySamples, study.uncertaintySeed);
+    if (!runUncertaintySlice(*plan, file, partialPath, "uncertainty " + study.name, a.jobs)) {
       // The sweep itself finished, but a report without the analysis asked for would look complete.
-      std::fprintf(stderr, "swingsim: interrupted during the uncertainty analysis; nothing in %s was written\n",
-                   out.c_str());
+      std::fprintf(stderr, "swingsim: no report, CSV or JSON in %s was written\n", out.c_str());
       restoreInterrupts();
       return 1;
     }
+    UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan->swingCount);
+    copyFinishedSwings(file, times);
+    uncertainty = assembleUncertaintyResults(study, *plan, times);
     std::printf("%s", formatUncertaintyTables(*uncertainty).c_str());
   }
   if (gInterrupted) {
@@ -135,28 +156,9 @@ int runSweepCommand(const SweepArguments& a) {
     restoreInterrupts();
     return 1;
   }
-  // The write phase: every file is staged inside --out and moved into place at the end, so a
-  // run stopped here (or failing) leaves the folder as it was, with no temporary files.
-  {
-    StagedOutput staged(out);
-    const UncertaintyResults* u = uncertainty ? &*uncertainty : nullptr;
-    for (const auto& [name, contents] : makeSweepReport(study, results, u)) {
-      if (gInterrupted) break;
-      staged.add(name, contents);
-    }
-    if (a.json && !gInterrupted) staged.addBeside(*a.json, formatSweepJson(results, u));
-    if (gInterrupted) {
-      staged.discard();
-      std::fprintf(stderr, "swingsim: interrupted while writing the report; nothing in %s was changed\n", out.c_str());
-      restoreInterrupts();
-      return 1;
-    }
-    // A partial CSV of an earlier, interrupted run is out of date now.
-    staged.commit({"sweep.partial.csv"});
-  }
+  const int code = writeSweepOutputs(study, results, uncertainty ? &*uncertainty : nullptr, out, a.json);
   restoreInterrupts();
-  std::printf("\nreport: %s/report.md\n", out.c_str());
-  return 0;
+  return code;
 }
 
 }  // namespace
@@ -184,6 +186,20 @@ Command addSweepCommand(CLI::App& app) {
   sub->add_option("--seed", a->seed, "seed of the uncertainty analysis's draws (std::mt19937_64; default: the study's, else 1)")
       ->type_name("S")
       ->check(wholeNumberFrom(0, "expected a whole number from 0"));
+  CLI::Option* shard =
+      sub->add_option_function<std::string>("--shard", [a](const std::string& v) {
+           ShardSpec spec;
+           checkShardSpec(v, &spec);
+           a->shard = spec;
+         },
+         "compute only shard K of N (K from 0 to N - 1) of the uncertainty analysis's swings and write them to "
+         "OUT/uncertainty-shard-K-of-N.json, without the plain sweep or a report; `swingsim merge` combines the N "
+         "shard files into the report and JSON of one run (README, Population studies across machines)")
+          ->type_name("K/N")
+          ->check(CLI::Validator([](std::string& v) { return checkShardSpec(v); }, "K/N", "shard"));
+  // The shard file is the result: the JSON and the added-mass sweep come from the merge.
+  shard->excludes(sub->get_option("--json"));
+  shard->excludes(sub->get_option("--add-mass"));
   return {sub, [a] { return runSweepCommand(*a); }};
 }
 

@@ -40,9 +40,9 @@ void ProgressReporter::update(int done, int total) {
   const int percent = total > 0 ? static_cast<int>(100LL * done / total) : 100;
   // ", 480 swings/s, 25 s left" once there is a rate to extrapolate.
   std::string rate;
-  if (rate_ && done > 0 && elapsed > 0) {
+  if (rate_ && done > resumedFrom_ && elapsed > 0) {
     char buf[96];
-    const double perSecond = done / elapsed;
+    const double perSecond = (done - resumedFrom_) / elapsed;
     std::snprintf(buf, sizeof buf, ", %.0f %s/s, %.0f s left", perSecond, unit_.c_str(), (total - done) / perSecond);
     rate = buf;
   }

@@ -35,6 +35,9 @@ class ProgressReporter {
   /// Also show the rate and the time left at that rate ("..., 12.3 s, 480 swings/s, 25 s
   /// left"), for runs long enough that the user wants to know when they end.
   void setShowRate(bool show) { rate_ = show; }
+  /// A resumed run: the first `done` of the work were done by an earlier run, so the rate
+  /// and the time left count only what this run does (the count still shows the whole).
+  void setResumedFrom(int done) { resumedFrom_ = done; }
 
  private:
   void endBar();
@@ -48,6 +51,7 @@ class ProgressReporter {
   bool barOpen_ = false;  ///< bar drawn and not yet ended by a newline
   bool finished_ = false;
   bool rate_ = false;
+  int resumedFrom_ = 0;
   std::chrono::steady_clock::time_point start_;
 };
 

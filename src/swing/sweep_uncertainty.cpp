@@ -1,6 +1,7 @@
 #include "swing/sweep_uncertainty.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -15,18 +16,6 @@ namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 constexpr double kSameSwingTime = 1e-12;  // s: a later lowering must be faster than this to win (as runSweep)
-
-/// One participant's lowering sweep under one set of assumption values, ready to run.
-struct Scenario {
-  SweepVariant variant;
-  KneeLawSum knee;
-  LoweringSweepSummary summary;
-};
-
-struct Job {
-  std::size_t scenario;
-  std::size_t lowering;
-};
 
 // The study's on-grid lowerings for a participant (no Table 4 extras: they are never the
 // "fastest" in runSweep either).
@@ -109,100 +98,182 @@ SweepVariant makeNominalVariant(const SweepStudy& study, const Participant& part
   return v;
 }
 
-UncertaintyResults runSweepUncertainty(const SweepStudy& study, const UncertaintyOptions& options, int jobs,
-                                       const std::function<void(int, int)>& progress,
-                                       const volatile bool* stopFlag) {
+SweepVariant UncertaintyPlan::makeVariant(const UncertaintyRun& run) const {
   const auto& table = sweepAssumptions();
-  UncertaintyResults results;
-  results.samples = options.samples;
-  results.seed = options.seed;
-  results.draws = drawUncertaintySamples(options.samples, options.seed);
+  const std::vector<AssumptionRange>& range = ranges[run.participant];
+  SweepVariant v = nominals[run.participant];
+  switch (run.kind) {
+    case UncertaintyRun::Kind::kNominal:
+      break;
+    case UncertaintyRun::Kind::kLow:
+      table[run.assumption].apply(v, range[run.assumption].low);
+      break;
+    case UncertaintyRun::Kind::kHigh:
+      table[run.assumption].apply(v, range[run.assumption].high);
+      break;
+    case UncertaintyRun::Kind::kSample:
+      for (std::size_t k = 0; k < table.size(); ++k)
+        table[k].apply(v, calcAssumptionValue(table[k], range[k], draws[run.sample][k]));
+      break;
+  }
+  return v;
+}
 
-  // Scenarios, per participant: the nominal one, then low and high of each applicable
-  // assumption (sensitivity), then the samples. Indices are remembered to read results back.
-  std::vector<Scenario> scenarios;
-  struct ParticipantIndex {
-    std::size_t nominal = 0;
-    std::vector<std::pair<std::size_t, std::size_t>> oat;  // assumption -> (low scenario, high scenario); unused if n/a
-    std::vector<bool> applicable;
-    std::vector<AssumptionRange> ranges;
-    std::vector<std::size_t> samples;
-  };
-  std::vector<ParticipantIndex> index(study.participants.size());
-  auto addScenario = [&](SweepVariant variant) {
-    Scenario s;
-    s.summary.lowerings = gridLowerings(study, variant.participant);
-    s.summary.swingTimes.assign(s.summary.lowerings.size(), kNaN);
+const UncertaintyRun& UncertaintyPlan::findRun(std::size_t swing) const {
+  // The last run starting at or before `swing` (runs with no lowerings share a start).
+  auto it = std::upper_bound(runs.begin(), runs.end(), swing,
+                             [](std::size_t s, const UncertaintyRun& r) { return s < r.firstSwing; });
+  while (it != runs.begin() && (it - 1)->lowerings.empty()) --it;
+  return *(it - 1);
+}
+
+UncertaintyPlan planSweepUncertainty(const SweepStudy& study, const UncertaintyOptions& options) {
+  const auto& table = sweepAssumptions();
+  UncertaintyPlan plan;
+  plan.options = options;
+  plan.draws = drawUncertaintySamples(options.samples, options.seed);
+  auto addRun = [&](UncertaintyRun run) {
+    const SweepVariant variant = plan.makeVariant(run);
     try {
-      s.knee = makeSweepVariantKnee(variant);
+      (void)makeSweepVariantKnee(variant);  // built again per swing; checked here, before any runs
     } catch (const std::invalid_argument& e) {
       throw RunError("sweep " + study.name + ": participant " + variant.participant.name +
                      ": an assumption's value makes an unusable knee law: " + e.what());
     }
-    s.variant = std::move(variant);
-    scenarios.push_back(std::move(s));
-    return scenarios.size() - 1;
+    run.lowerings = gridLowerings(study, variant.participant);
+    run.firstSwing = plan.swingCount;
+    plan.swingCount += run.lowerings.size();
+    plan.runs.push_back(std::move(run));
   };
+  using Kind = UncertaintyRun::Kind;
   for (std::size_t i = 0; i < study.participants.size(); ++i) {
-    const SweepVariant nominal = makeNominalVariant(study, study.participants[i]);
-    ParticipantIndex& pi = index[i];
-    pi.nominal = addScenario(nominal);
-    for (const auto& a : table) {
-      pi.ranges.push_back(a.calcRange(nominal));
-      pi.applicable.push_back(pi.ranges.back().applicable);
-      pi.oat.emplace_back(0, 0);
-      if (!options.sensitivity || !pi.ranges.back().applicable) continue;
-      SweepVariant low = nominal, high = nominal;
-      a.apply(low, pi.ranges.back().low);
-      a.apply(high, pi.ranges.back().high);
-      pi.oat.back() = {addScenario(std::move(low)), addScenario(std::move(high))};
-    }
-    for (const auto& draw : results.draws) {
-      SweepVariant v = nominal;
-      for (std::size_t k = 0; k < table.size(); ++k)
-        table[k].apply(v, calcAssumptionValue(table[k], pi.ranges[k], draw[k]));
-      pi.samples.push_back(addScenario(std::move(v)));
+    plan.nominals.push_back(makeNominalVariant(study, study.participants[i]));
+    plan.ranges.emplace_back();
+    for (const auto& a : table) plan.ranges.back().push_back(a.calcRange(plan.nominals.back()));
+  }
+  for (std::size_t i = 0; i < study.participants.size(); ++i) {
+    addRun({i, Kind::kNominal, 0, 0, {}, 0});
+    if (!options.sensitivity) continue;
+    for (std::size_t k = 0; k < table.size(); ++k) {
+      if (!plan.ranges[i][k].applicable) continue;
+      addRun({i, Kind::kLow, k, 0, {}, 0});
+      addRun({i, Kind::kHigh, k, 0, {}, 0});
     }
   }
+  plan.sensitivitySwings = plan.swingCount;
+  for (std::size_t s = 0; s < plan.draws.size(); ++s)
+    for (std::size_t i = 0; i < study.participants.size(); ++i) addRun({i, Kind::kSample, 0, s, {}, 0});
+  return plan;
+}
 
-  std::vector<Job> work;
-  for (std::size_t s = 0; s < scenarios.size(); ++s)
-    for (std::size_t k = 0; k < scenarios[s].summary.lowerings.size(); ++k) work.push_back({s, k});
+UncertaintySwingTimes UncertaintySwingTimes::makeEmpty(std::size_t count) {
+  UncertaintySwingTimes t;
+  t.swingTimes.assign(count, kNaN);
+  t.finished.assign(count, 0);
+  return t;
+}
 
-  const int total = static_cast<int>(work.size());
-  auto runOne = [&](const Job& job) {
-    Scenario& sc = scenarios[job.scenario];
-    const double lowering = sc.summary.lowerings[job.lowering];
+std::size_t UncertaintySwingTimes::countFinished() const {
+  return static_cast<std::size_t>(std::count(finished.begin(), finished.end(), 1));
+}
+
+std::pair<std::size_t, std::size_t> calcShardSwings(std::size_t count, int index, int shards) {
+  const auto bound = [&](int k) {
+    return static_cast<std::size_t>(static_cast<unsigned long long>(count) * static_cast<unsigned>(k) /
+                                    static_cast<unsigned>(shards));
+  };
+  return {bound(index), bound(index + 1)};
+}
+
+bool runUncertaintySwings(const UncertaintyPlan& plan, std::size_t first, std::size_t last,
+                          UncertaintySwingTimes& times, int jobs, const UncertaintyRunControl& control) {
+  std::vector<std::size_t> todo;
+  for (std::size_t s = first; s < last; ++s)
+    if (!times.finished[s]) todo.push_back(s);
+  // Stops when the caller's flag is set or after control.stopAfterSwings swings.
+  volatile bool stop = false;
+  std::atomic<long> finishedHere{0};
+  auto runOne = [&](int k) {
+    const std::size_t swing = todo[static_cast<std::size_t>(k)];
+    const UncertaintyRun& run = plan.findRun(swing);
+    const double lowering = run.lowerings[swing - run.firstSwing];
+    double swingTime = kNaN;
     try {
+      const SweepVariant variant = plan.makeVariant(run);
+      const KneeLawSum knee = makeSweepVariantKnee(variant);
       SwingSetup setup;
-      setup.participant = calcAdaptedParticipant(sc.variant.participant, lowering, sc.variant.hipEffortExponent);
-      setup.knee = &sc.knee;
+      setup.participant = calcAdaptedParticipant(variant.participant, lowering, variant.hipEffortExponent);
+      setup.knee = &knee;
       setup.lowering = lowering;
-      sc.summary.swingTimes[job.lowering] = simulateSwing(setup, sc.variant.swing).swingTime;
+      swingTime = simulateSwing(setup, variant.swing).swingTime;
     } catch (const std::exception&) {
       // No swing end at this lowering under these assumptions (the thigh short of its
       // target, a time limit): the point drops out of the fastest-lowering search, as in runSweep.
     }
+    times.swingTimes[swing] = swingTime;
+    times.finished[swing] = 1;
+    const long n = finishedHere.fetch_add(1) + 1;
+    if ((control.stopAfterSwings >= 0 && n >= control.stopAfterSwings) || (control.stopFlag && *control.stopFlag))
+      stop = true;
   };
-  const int done = runParallelJobs(total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
-  results.interrupted = done < total;
+  auto progress = [&](int done, int total) {
+    if (control.stopFlag && *control.stopFlag) stop = true;
+    if (control.progress) control.progress(done, total);
+  };
+  const int total = static_cast<int>(todo.size());
+  const int done = runParallelJobs(total, jobs, runOne, progress, &stop);
+  return done == total;
+}
 
-  for (auto& sc : scenarios) pickBest(sc.summary);
+int countFinishedSamples(const UncertaintyPlan& plan, const UncertaintySwingTimes& times) {
+  std::vector<char> complete(plan.draws.size(), 1);
+  for (const auto& run : plan.runs) {
+    if (run.kind != UncertaintyRun::Kind::kSample) continue;
+    for (std::size_t k = 0; k < run.lowerings.size(); ++k)
+      if (!times.finished[run.firstSwing + k]) complete[run.sample] = 0;
+  }
+  return static_cast<int>(std::count(complete.begin(), complete.end(), 1));
+}
+
+UncertaintyResults assembleUncertaintyResults(const SweepStudy& study, const UncertaintyPlan& plan,
+                                              const UncertaintySwingTimes& times) {
+  const auto& table = sweepAssumptions();
+  UncertaintyResults results;
+  results.samples = plan.options.samples;
+  results.seed = plan.options.seed;
+  results.draws = plan.draws;
+  results.interrupted = times.countFinished() < plan.swingCount;
+
+  auto summaryOf = [&](const UncertaintyRun& run) {
+    LoweringSweepSummary s;
+    s.lowerings = run.lowerings;
+    s.swingTimes.assign(times.swingTimes.begin() + static_cast<std::ptrdiff_t>(run.firstSwing),
+                        times.swingTimes.begin() + static_cast<std::ptrdiff_t>(run.firstSwing + run.lowerings.size()));
+    pickBest(s);
+    return s;
+  };
+  using Kind = UncertaintyRun::Kind;
   for (std::size_t i = 0; i < study.participants.size(); ++i) {
-    const ParticipantIndex& pi = index[i];
     ParticipantUncertainty pu;
     pu.name = study.participants[i].name;
-    pu.nominal = scenarios[pi.nominal].summary;
+    std::vector<const UncertaintyRun*> low(table.size(), nullptr), high(table.size(), nullptr);
+    for (const auto& run : plan.runs) {
+      if (run.participant != i) continue;
+      if (run.kind == Kind::kNominal) pu.nominal = summaryOf(run);
+      if (run.kind == Kind::kLow) low[run.assumption] = &run;
+      if (run.kind == Kind::kHigh) high[run.assumption] = &run;
+      if (run.kind == Kind::kSample) pu.samples.push_back(summaryOf(run));  // runs are in sample order
+    }
     for (std::size_t k = 0; k < table.size(); ++k) {
-      if (!options.sensitivity || !pi.applicable[k]) continue;
+      if (!low[k] || !high[k]) continue;
       SensitivityRow row;
       row.assumption = table[k].key;
       row.name = table[k].name;
       row.unit = table[k].unit;
-      row.lowValue = pi.ranges[k].low;
-      row.highValue = pi.ranges[k].high;
-      row.low = scenarios[pi.oat[k].first].summary;
-      row.high = scenarios[pi.oat[k].second].summary;
+      row.lowValue = plan.ranges[i][k].low;
+      row.highValue = plan.ranges[i][k].high;
+      row.low = summaryOf(*low[k]);
+      row.high = summaryOf(*high[k]);
       pu.sensitivity.push_back(std::move(row));
     }
     // Largest change of the fastest lowering first; ties (most often "no change") by the
@@ -212,23 +283,22 @@ UncertaintyResults runSweepUncertainty(const SweepStudy& study, const Uncertaint
       return a.calcTimeEffect() > b.calcTimeEffect();
     });
     std::vector<double> fastestLowering, fastestTime;
-    for (std::size_t s : pi.samples) {
-      pu.samples.push_back(scenarios[s].summary);
-      fastestLowering.push_back(scenarios[s].summary.calcFastestLowering());
-      fastestTime.push_back(scenarios[s].summary.calcFastestTime());
-      if (scenarios[s].summary.best < 0) ++pu.samplesWithoutSwingEnd;
+    for (const auto& s : pu.samples) {
+      fastestLowering.push_back(s.calcFastestLowering());
+      fastestTime.push_back(s.calcFastestTime());
+      if (s.best < 0) ++pu.samplesWithoutSwingEnd;
     }
     pu.fastestLowering = calcInterval(fastestLowering);
     pu.fastestTime = calcInterval(fastestTime);
     // The band: per lowering of the nominal grid, over the samples that reached it.
     for (std::size_t k = 0; k < pu.nominal.lowerings.size(); ++k) {
       const double d = pu.nominal.lowerings[k];
-      std::vector<double> times;
+      std::vector<double> bandTimes;
       for (const auto& s : pu.samples)
         for (std::size_t j = 0; j < s.lowerings.size(); ++j)
-          if (std::fabs(s.lowerings[j] - d) < 1e-9 && std::isfinite(s.swingTimes[j])) times.push_back(s.swingTimes[j]);
-      const bool enough = !pu.samples.empty() && 2 * times.size() >= pu.samples.size();
-      const Interval band = calcInterval(times);
+          if (std::fabs(s.lowerings[j] - d) < 1e-9 && std::isfinite(s.swingTimes[j])) bandTimes.push_back(s.swingTimes[j]);
+      const bool enough = !pu.samples.empty() && 2 * bandTimes.size() >= pu.samples.size();
+      const Interval band = calcInterval(bandTimes);
       pu.bandLowerings.push_back(d);
       pu.bandP05.push_back(enough ? band.p05 : kNaN);
       pu.bandMedian.push_back(enough ? band.median : kNaN);
@@ -237,6 +307,18 @@ UncertaintyResults runSweepUncertainty(const SweepStudy& study, const Uncertaint
     results.participants.push_back(std::move(pu));
   }
   return results;
+}
+
+UncertaintyResults runSweepUncertainty(const SweepStudy& study, const UncertaintyOptions& options, int jobs,
+                                       const std::function<void(int, int)>& progress,
+                                       const volatile bool* stopFlag) {
+  const UncertaintyPlan plan = planSweepUncertainty(study, options);
+  UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan.swingCount);
+  UncertaintyRunControl control;
+  control.progress = progress;
+  control.stopFlag = stopFlag;
+  runUncertaintySwings(plan, 0, plan.swingCount, times, jobs, control);
+  return assembleUncertaintyResults(study, plan, times);
 }
 
 }  // namespace swingsim

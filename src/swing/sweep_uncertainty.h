@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "swing/sweep.h"
@@ -94,9 +95,83 @@ std::vector<std::vector<double>> drawUncertaintySamples(int samples, std::uint64
 /// The variant of `participant` in `study` with every assumption nominal.
 SweepVariant makeNominalVariant(const SweepStudy& study, const Participant& participant);
 
-/// Runs the sensitivity and the Monte Carlo on `jobs` threads (0 = all cores).
-/// `progress(done, total)` is called from the calling thread only; a stop flag ends it
-/// early with `interrupted` set. Throws RunError if a knee model was not loaded.
+/// One lowering sweep of the analysis: one participant under one set of assumption values.
+struct UncertaintyRun {
+  enum class Kind { kNominal, kLow, kHigh, kSample };
+  std::size_t participant = 0;  ///< index in the study
+  Kind kind = Kind::kNominal;
+  std::size_t assumption = 0;   ///< kLow, kHigh: index in sweepAssumptions()
+  std::size_t sample = 0;       ///< kSample: Monte Carlo sample index
+  std::vector<double> lowerings;  ///< m, the study's grid up to this variant's cap
+  std::size_t firstSwing = 0;     ///< index of its first lowering in the plan's swing order
+};
+
+/// Every swing of an analysis in one fixed order, the swing index that shards slice and
+/// partial result files record: first the sensitivity runs (per participant in study order:
+/// nominal, then low and high of each applicable assumption), then the Monte Carlo sample by
+/// sample (within a sample the participants in study order), each run's lowerings in grid
+/// order. Holds the draws and the nominal variants only: a swing's variant and knee law are
+/// rebuilt when it runs, so memory grows with the swings only by their lowering and time
+/// (tens of bytes a swing, about 2 MB for 84,000).
+struct UncertaintyPlan {
+  UncertaintyOptions options;
+  std::vector<std::vector<double>> draws;             ///< [sample][assumption], u in [0, 1)
+  std::vector<SweepVariant> nominals;                 ///< per participant
+  std::vector<std::vector<AssumptionRange>> ranges;   ///< [participant][assumption]
+  std::vector<UncertaintyRun> runs;                   ///< in swing order
+  std::size_t swingCount = 0;                         ///< sum of the runs' lowerings
+  std::size_t sensitivitySwings = 0;                  ///< the swings before the first sample's
+  /// The variant a run sweeps (nominal with the run's assumption values applied).
+  SweepVariant makeVariant(const UncertaintyRun& run) const;
+  /// The run holding swing `swing` (< swingCount).
+  const UncertaintyRun& findRun(std::size_t swing) const;
+};
+
+/// Builds the plan: the draws, each run's variant (to check that its knee law can be built
+/// and to find its lowering grid). Throws RunError if an assumption's value makes an
+/// unusable knee law or a knee model was not loaded.
+UncertaintyPlan planSweepUncertainty(const SweepStudy& study, const UncertaintyOptions& options);
+
+/// Swing times of a plan's swings by swing index, and which of them have run.
+struct UncertaintySwingTimes {
+  std::vector<double> swingTimes;  ///< s; NaN where no swing ended or not run
+  std::vector<char> finished;      ///< 1 where the swing has run
+  /// `count` swings, none run.
+  static UncertaintySwingTimes makeEmpty(std::size_t count);
+  std::size_t countFinished() const;
+};
+
+/// Swings [first, last) of `count` as shard `index` of `shards` takes them: contiguous
+/// slices in swing order, sizes differing by at most one (0 <= index < shards).
+std::pair<std::size_t, std::size_t> calcShardSwings(std::size_t count, int index, int shards);
+
+/// How a run of swings reports and stops.
+struct UncertaintyRunControl {
+  /// progress(done, total) over the swings this call runs; from the calling thread only.
+  std::function<void(int, int)> progress;
+  const volatile bool* stopFlag = nullptr;  ///< when set (SIGINT), no further swing starts
+  /// Stop as if the stop flag were set once this many swings have finished in this call;
+  /// negative = never. Lets a test interrupt a run at a known point.
+  long stopAfterSwings = -1;
+};
+
+/// Runs the swings in [first, last) not yet `finished` in `times` on `jobs` threads (0 = all
+/// cores), storing each swing time and marking it finished. Returns true if all of them ran
+/// (false: stopped early; what finished is kept).
+bool runUncertaintySwings(const UncertaintyPlan& plan, std::size_t first, std::size_t last,
+                          UncertaintySwingTimes& times, int jobs, const UncertaintyRunControl& control = {});
+
+/// Monte Carlo samples whose swings (every participant's) have all run.
+int countFinishedSamples(const UncertaintyPlan& plan, const UncertaintySwingTimes& times);
+
+/// The results from the swing times (`interrupted` set if any swing has not run).
+UncertaintyResults assembleUncertaintyResults(const SweepStudy& study, const UncertaintyPlan& plan,
+                                              const UncertaintySwingTimes& times);
+
+/// Runs the sensitivity and the Monte Carlo on `jobs` threads (0 = all cores): plan, run
+/// every swing, assemble. `progress(done, total)` is called from the calling thread only; a
+/// stop flag ends it early with `interrupted` set. Throws RunError if a knee model was not
+/// loaded.
 UncertaintyResults runSweepUncertainty(const SweepStudy& study, const UncertaintyOptions& options, int jobs,
                                        const std::function<void(int, int)>& progress = {},
                                        const volatile bool* stopFlag = nullptr);

@@ -27,7 +27,7 @@ fs::path freshDir(const std::string& name) { return swingsim::testing::freshTemp
 TEST(Cli, NoArgumentsPrintsUsageListingEveryCommand) {
   CliRun r = run("");
   EXPECT_EQ(r.code, 2);
-  for (const char* c : {"simulate", "sweep", "calibrate"}) EXPECT_THAT(r.output, HasSubstr(c));
+  for (const char* c : {"simulate", "sweep", "calibrate", "merge"}) EXPECT_THAT(r.output, HasSubstr(c));
 }
 
 // Every option of every subcommand is in its --help (CLI11 builds it from the registry), and
@@ -36,7 +36,8 @@ TEST(Cli, HelpListsEveryOptionAndVersionPrintsIt) {
   const std::map<std::string, std::vector<std::string>> options = {
       {"simulate", {"--lowering", "--knee", "--add-mass", "--hip-rate-deg-s", "--knee-rate-deg-s", "--integrator", "--accuracy",
                     "--json", "--out"}},
-      {"sweep", {"--out", "--json", "--jobs", "--add-mass"}},
+      {"sweep", {"--out", "--json", "--jobs", "--add-mass", "--uncertainty", "--seed", "--shard"}},
+      {"merge", {"SHARD_FILES", "--out", "--json", "--jobs"}},
       {"calibrate", {"--target", "--dry-run"}},
       {"fit", {"--out", "--json"}},
       {"compare", {"--out", "--json"}},

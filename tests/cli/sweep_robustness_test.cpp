@@ -129,10 +129,11 @@ TEST(SweepRobustness, SigintKeepsFinishedRowsReadableNamesTheMissingAndWritesNoR
   EXPECT_LT(finished, rows) << "the interrupt came too late to test anything";
 }
 
-// An interrupt during the uncertainty analysis (after the plain sweep finished): exit 1,
-// and no report, CSV or JSON, since a report without the analysis asked for would look
-// complete.
-TEST(SweepRobustness, SigintDuringTheUncertaintyAnalysisWritesNothing) {
+// A real SIGINT during the uncertainty analysis (after the plain sweep finished): exit 1, no
+// report, CSV or JSON, since a report without the analysis asked for would look complete;
+// the finished swings are kept in uncertainty.partial.json, which says it is partial (the
+// resume from it: uncertainty_shards_cli_test.cpp).
+TEST(SweepRobustness, SigintDuringTheUncertaintyAnalysisKeepsOnlyAPartialFile) {
   const fs::path dir = freshDir("sigint-uncertainty");
   const fs::path study = writeStudy(dir, "interrupted-uncertainty", 0.05, 0.2);  // 5 lowerings
   const fs::path out = dir / "out";
@@ -149,8 +150,13 @@ TEST(SweepRobustness, SigintDuringTheUncertaintyAnalysisWritesNothing) {
   ASSERT_EQ(::kill(pid, SIGINT), 0);
   const Finished r = reap(pid, log);
   ASSERT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("interrupted during the uncertainty analysis; nothing in " + out.string() +
-                                  " was written"));
+  EXPECT_THAT(r.output, HasSubstr("are kept in " + (out / "uncertainty.partial.json").string() +
+                                  " (\"partial\": true); run the same command again to resume"));
+  EXPECT_THAT(r.output, HasSubstr("no report, CSV or JSON in " + out.string() + " was written"));
+  const std::string partial = slurp(out / "uncertainty.partial.json");
+  EXPECT_THAT(partial, HasSubstr("\"partial\": true"));
+  EXPECT_THAT(partial, HasSubstr("\"samples\": 200"));
+  EXPECT_THAT(partial, HasSubstr("\"seed\": 1"));
   EXPECT_FALSE(fs::exists(out / "report.md"));
   EXPECT_FALSE(fs::exists(out / "sweep.csv"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));

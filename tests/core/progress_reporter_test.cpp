@@ -156,3 +156,32 @@ TEST(ProgressReporterRate, OffByDefault) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// setResumedFrom: a run that resumes with 900 of 2000 swings done earlier reports the whole
+// count, but its rate counts only what it did itself (100 swings in at least 0.1 s: at most
+// 1000 swings/s, not 10,000), so the time left is not underestimated.
+TEST(ProgressReporterRate, AResumedRunCountsOnlyItsOwnSwingsInTheRate) {
+  Capture c;
+  {
+    ProgressReporter p("uncertainty demo", "swings", c.file(), ProgressReporter::Style::kLines);
+    p.setShowRate(true);
+    p.setResumedFrom(900);
+    p.update(900, 2000);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    p.update(1000, 2000);
+  }
+  const auto lines = splitLines(c.text());
+  ASSERT_EQ(lines.size(), 2u) << c.text();
+  EXPECT_THAT(lines[0], ::testing::Not(HasSubstr("left")));  // nothing done in this run yet
+  std::smatch m;
+  const std::regex rate(R"(uncertainty demo: 1000/2000 swings \(50 %\), [0-9.]+ s, ([0-9]+) swings/s, ([0-9]+) s left)");
+  ASSERT_TRUE(std::regex_match(lines[1], m, rate)) << lines[1];
+  EXPECT_LE(std::stoi(m[1].str()), 1000) << lines[1];
+  EXPECT_GE(std::stoi(m[2].str()), 1) << lines[1];  // 1000 swings left at <= 1000 swings/s
+}
+
+}  // namespace
+}  // namespace swingsim

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "study/sweep_study.h"
@@ -124,6 +125,82 @@ TEST(SweepUncertainty, IntervalIsTheFivetoNinetyFivePercentRange) {
   EXPECT_DOUBLE_EQ(i.p05, 5);
   EXPECT_DOUBLE_EQ(i.p95, 95);
   EXPECT_TRUE(std::isnan(calcInterval({}).median));
+}
+
+}  // namespace
+}  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// Issue 16: shards are contiguous slices of the swing order that tile it, sizes within one.
+TEST(UncertaintyPlanSlices, ShardsTileTheSwings) {
+  for (std::size_t count : {0u, 1u, 7u, 81u, 84000u})
+    for (int shards : {1, 2, 3, 7, 100}) {
+      std::size_t next = 0, smallest = count, largest = 0;
+      for (int k = 0; k < shards; ++k) {
+        const auto [first, last] = calcShardSwings(count, k, shards);
+        EXPECT_EQ(first, next) << count << " in " << shards;
+        ASSERT_GE(last, first);
+        smallest = std::min(smallest, last - first);
+        largest = std::max(largest, last - first);
+        next = last;
+      }
+      EXPECT_EQ(next, count) << count << " in " << shards;
+      EXPECT_LE(largest - smallest, 1u) << count << " in " << shards;
+    }
+}
+
+// The plan's order: the one-at-a-time runs first, then the samples one by one; swings run in
+// any slices, in any order, stopped and resumed, give the one-go run's results bit for bit.
+TEST(UncertaintyPlanSlices, SlicesStoppedAndResumedGiveTheOneGoResults) {
+  SweepStudy s = smallStudy();
+  s.loweringMax = 0.10;  // 0, 0.05, 0.10 m
+  UncertaintyOptions o;
+  o.samples = 2;
+  o.seed = 5;
+  const UncertaintyPlan plan = planSweepUncertainty(s, o);
+  ASSERT_GT(plan.sensitivitySwings, 0u);
+  ASSERT_LT(plan.sensitivitySwings, plan.swingCount);
+  EXPECT_EQ(plan.runs.back().kind, UncertaintyRun::Kind::kSample);
+  EXPECT_EQ(plan.runs.back().sample, 1u);
+  for (std::size_t k = 0; k < plan.swingCount; ++k) {
+    const UncertaintyRun& run = plan.findRun(k);
+    ASSERT_GE(k, run.firstSwing);
+    ASSERT_LT(k, run.firstSwing + run.lowerings.size());
+  }
+
+  const UncertaintyResults oneGo = runSweepUncertainty(s, o, 2);
+  ASSERT_FALSE(oneGo.interrupted);
+
+  UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan.swingCount);
+  const auto [first, last] = calcShardSwings(plan.swingCount, 1, 2);
+  // The second half first, stopped after 5 swings, then resumed; then the first half.
+  UncertaintyRunControl stopEarly;
+  stopEarly.stopAfterSwings = 5;
+  EXPECT_FALSE(runUncertaintySwings(plan, first, last, times, 1, stopEarly));
+  EXPECT_EQ(times.countFinished(), 5u);
+  EXPECT_EQ(countFinishedSamples(plan, times), 0);
+  EXPECT_TRUE(assembleUncertaintyResults(s, plan, times).interrupted);
+  EXPECT_TRUE(runUncertaintySwings(plan, first, last, times, 2));
+  EXPECT_EQ(times.countFinished(), last - first);
+  EXPECT_TRUE(runUncertaintySwings(plan, 0, first, times, 2));
+  EXPECT_EQ(countFinishedSamples(plan, times), 2);
+
+  const UncertaintyResults pieced = assembleUncertaintyResults(s, plan, times);
+  ASSERT_FALSE(pieced.interrupted);
+  const auto& a = oneGo.participants[0];
+  const auto& b = pieced.participants[0];
+  expectSameSummaries(a.nominal, b.nominal, "nominal");
+  ASSERT_EQ(a.sensitivity.size(), b.sensitivity.size());
+  for (std::size_t k = 0; k < a.sensitivity.size(); ++k) {
+    EXPECT_EQ(a.sensitivity[k].assumption, b.sensitivity[k].assumption);
+    expectSameSummaries(a.sensitivity[k].low, b.sensitivity[k].low, a.sensitivity[k].assumption + " low");
+    expectSameSummaries(a.sensitivity[k].high, b.sensitivity[k].high, a.sensitivity[k].assumption + " high");
+  }
+  ASSERT_EQ(a.samples.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) expectSameSummaries(a.samples[k], b.samples[k], "sample " + std::to_string(k));
+  EXPECT_EQ(a.fastestTime.median, b.fastestTime.median);
 }
 
 }  // namespace

@@ -1,0 +1,89 @@
+// swingsim merge SHARD_FILES... [--out DIR] [--json FILE] [--jobs N]
+//
+// Combines the shard files of `swingsim sweep STUDY --uncertainty N --seed S --shard K/N`
+// (K = 0 .. N-1) into the tables, report and JSON that `swingsim sweep STUDY --uncertainty N
+// --seed S` prints and writes. The shards hold the uncertainty analysis's swings; the plain
+// sweep (its terminal-impact check and Table 4 validation, seconds for the Burkett study) is
+// run here from the study the shards name, after checking that it is the study they ran.
+
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/command.h"
+#include "cli/option_checks.h"
+#include "cli/sweep_steps.h"
+#include "core/input_error.h"
+#include "report/sweep_report.h"
+#include "study/sweep_study.h"
+#include "study/uncertainty_swings_file.h"
+
+namespace swingsim::cli {
+namespace {
+
+struct MergeArguments {
+  std::vector<std::string> shards;
+  std::optional<std::string> out, json;
+  int jobs = 0;
+};
+
+int runMergeCommand(const MergeArguments& a) {
+  // Every shard is read and checked (missing, duplicate, partial, another analysis) before any
+  // swing runs or any file is written.
+  std::vector<UncertaintySwingsFile> shards;
+  for (const auto& path : a.shards) shards.push_back(readUncertaintySwingsFile(path));
+  const UncertaintySwingTimes times = mergeUncertaintyShards(shards);
+  const UncertaintySwingsFile& head = shards.front();
+
+  constexpr std::uint64_t kMaxSeed = 1000000000;  // what --seed and a study's seed accept
+  if (head.run.seed > kMaxSeed)
+    throw InputError(head.path + ": seed: expected a seed from 0 to 1000000000 (what sweep --seed accepts), found " +
+                     std::to_string(head.run.seed));
+  SweepStudy study = loadSweepStudy(head.run.studyPath);
+  study.uncertaintySamples = head.run.samples;
+  study.uncertaintySeed = static_cast<int>(head.run.seed);
+  const std::vector<ParticipantCalibration> calibrations = calibrateForSweep(study);
+  const UncertaintyPlan plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
+  const UncertaintyRunIdentity now = makeUncertaintyRunIdentity(study, plan, SWINGSIM_VERSION);
+  for (const auto& s : shards) checkSameUncertaintyRun(now, s, "the study " + study.path + " as it is now");
+  std::fprintf(stderr, "merge %s: %zu shards, %zu swings of %d samples, seed %llu\n", study.name.c_str(), shards.size(),
+               plan.swingCount, study.uncertaintySamples, static_cast<unsigned long long>(head.run.seed));
+
+  const std::string out = chooseSweepOutputFolder(study, a.out);
+  catchInterrupts();
+  const SweepResults results = runPlainSweep(study, calibrations, a.jobs);
+  if (gInterrupted) {
+    std::fprintf(stderr, "swingsim: interrupted during the plain sweep; nothing in %s was written\n", out.c_str());
+    restoreInterrupts();
+    return 1;
+  }
+  std::printf("%s", formatSweepTables(study, results).c_str());
+  const UncertaintyResults uncertainty = assembleUncertaintyResults(study, plan, times);
+  std::printf("%s", formatUncertaintyTables(uncertainty).c_str());
+  const int code = writeSweepOutputs(study, results, &uncertainty, out, a.json);
+  restoreInterrupts();
+  return code;
+}
+
+}  // namespace
+
+Command addMergeCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "merge", "combine the shard files of `sweep --uncertainty N --shard K/N` into the report and JSON of one sweep run");
+  auto a = std::make_shared<MergeArguments>();
+  sub->add_option("SHARD_FILES", a->shards,
+                  "every shard file (OUT/uncertainty-shard-K-of-N.json, K = 0 .. N-1) of one analysis")
+      ->required()
+      ->type_name("");
+  addTextOption(sub, "--out", a->out, "output folder (default: the study's output_dir, else out/<study name>/)", "DIR");
+  addJsonOption(sub, a->json);
+  sub->add_option("--jobs", a->jobs, "worker threads of the plain sweep, 0 = all cores (default 0)")
+      ->type_name("N")
+      ->check(wholeNumberFrom(0, "expected 0 (all cores) or a positive whole number"));
+  return {sub, [a] { return runMergeCommand(*a); }};
+}
+
+}  // namespace swingsim::cli

@@ -1,0 +1,165 @@
+// The uncertainty swings file (issue 16): written and read back bit for bit (swing times,
+// no-swing-end nulls, swings not run), malformed files refused with file, key, expected and
+// found, and shard sets combined only when they are every shard of one analysis.
+#include "study/uncertainty_swings_file.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "core/input_error.h"
+#include "core/output_files.h"
+
+namespace swingsim {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("swingsim-swings-file-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+UncertaintyRunIdentity identity() {
+  UncertaintyRunIdentity id;
+  id.study = "tiny";
+  id.studyPath = "studies/tiny.yaml";
+  id.inputsFingerprint = "0123456789abcdef";
+  id.assumptionsFingerprint = "fedcba9876543210";
+  id.samples = 2;
+  id.seed = 5;
+  id.swingCount = 10;
+  id.version = "0.test";
+  return id;
+}
+
+// Shard k of n of identity(), every swing finished with made-up times (1/3 + index / 7 s:
+// numbers whose decimal form is not short, so a lossy writer would show).
+UncertaintySwingsFile makeShard(int k, int n) {
+  UncertaintySwingsFile f;
+  f.run = identity();
+  f.sharded = true;
+  f.shardIndex = k;
+  f.shardCount = n;
+  std::tie(f.first, f.last) = calcShardSwings(f.run.swingCount, k, n);
+  f.times = UncertaintySwingTimes::makeEmpty(f.last - f.first);
+  for (std::size_t i = 0; i < f.last - f.first; ++i) {
+    f.times.finished[i] = 1;
+    f.times.swingTimes[i] = 1.0 / 3.0 + static_cast<double>(f.first + i) / 7.0;
+  }
+  return f;
+}
+
+UncertaintySwingsFile roundTrip(const UncertaintySwingsFile& f, const std::string& name) {
+  const std::string path = scratch(name);
+  writeFileAtomic(path, formatUncertaintySwingsJson(f));
+  return readUncertaintySwingsFile(path);
+}
+
+TEST(UncertaintySwingsFile, ReadsBackBitForBit) {
+  UncertaintySwingsFile f = makeShard(1, 3);
+  f.times.swingTimes[1] = std::numeric_limits<double>::quiet_NaN();  // ran, no swing end
+  f.times.finished[2] = 0;                                            // not run
+  f.times.swingTimes[2] = std::numeric_limits<double>::quiet_NaN();
+  const UncertaintySwingsFile back = roundTrip(f, "partial.json");
+  EXPECT_TRUE(back.isPartial());
+  EXPECT_TRUE(back.sharded);
+  EXPECT_EQ(back.shardIndex, 1);
+  EXPECT_EQ(back.shardCount, 3);
+  EXPECT_EQ(back.first, f.first);
+  EXPECT_EQ(back.last, f.last);
+  EXPECT_EQ(back.run.inputsFingerprint, f.run.inputsFingerprint);
+  EXPECT_EQ(back.run.seed, 5u);
+  EXPECT_EQ(back.times.finished, f.times.finished);
+  for (std::size_t i = 0; i < f.times.swingTimes.size(); ++i) {
+    if (std::isnan(f.times.swingTimes[i]))
+      EXPECT_TRUE(std::isnan(back.times.swingTimes[i])) << i;
+    else
+      EXPECT_EQ(back.times.swingTimes[i], f.times.swingTimes[i]) << i;  // exact, not near
+  }
+  EXPECT_THAT(formatUncertaintySwingsJson(f), HasSubstr("\"partial\": true"));
+}
+
+TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
+  const UncertaintySwingsFile good = makeShard(0, 2);
+  const std::string text = formatUncertaintySwingsJson(good);
+  auto refuse = [](const std::string& name, const std::string& content) {
+    const std::string path = scratch(name);
+    std::ofstream(path) << content;
+    try {
+      readUncertaintySwingsFile(path);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  auto replace = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const auto at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return t.replace(at, from.size(), to);
+  };
+  const std::string p = scratch("");
+  EXPECT_THAT(refuse("a.json", "not json"), HasSubstr(p + "a.json: expected the JSON of an uncertainty swings file"));
+  EXPECT_THAT(refuse("b.json", replace("\"seed\": 5", "\"seed\": -5")),
+              HasSubstr(p + "b.json: seed: expected a whole number from 0 to"));
+  EXPECT_THAT(refuse("c.json", replace("\"seed\": 5,", "")),
+              HasSubstr(p + "c.json: seed: expected the key"));
+  EXPECT_THAT(refuse("d.json", replace("\"partial\": false", "\"partial\": true")),
+              HasSubstr(p + "d.json: partial: expected false (no swing is in not_run), found true"));
+  EXPECT_THAT(refuse("e.json", replace("\"index\": 0", "\"index\": 2")),
+              HasSubstr(p + "e.json: shard.index: expected a whole number from 0 to 1, found 2"));
+  EXPECT_THAT(refuse("f.json", replace("\"last_swing\": 5", "\"last_swing\": 6")),
+              HasSubstr(p + "f.json: swing_times_s: expected a list of 6 swing times (last_swing - first_swing), found a list of 5"));
+  EXPECT_THAT(refuse("g.json", replace("\"format_version\": 1", "\"format_version\": 2")),
+              HasSubstr(p + "g.json: format_version: expected 1, found 2"));
+}
+
+TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {
+  std::vector<UncertaintySwingsFile> set;
+  for (int k = 0; k < 3; ++k) set.push_back(roundTrip(makeShard(k, 3), "s" + std::to_string(k) + ".json"));
+  const UncertaintySwingTimes merged = mergeUncertaintyShards(set);
+  EXPECT_EQ(merged.countFinished(), 10u);
+  for (std::size_t i = 0; i < 10; ++i) EXPECT_EQ(merged.swingTimes[i], 1.0 / 3.0 + static_cast<double>(i) / 7.0);
+
+  auto refusal = [](const std::vector<UncertaintySwingsFile>& files) {
+    try {
+      mergeUncertaintyShards(files);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_THAT(refusal({set[0], set[2]}), HasSubstr("missing K = 1"));
+  EXPECT_THAT(refusal({set[0], set[1], set[1], set[2]}), HasSubstr(set[1].path + ": shard.index: expected each shard once"));
+  UncertaintySwingsFile otherSeed = set[1];
+  otherSeed.run.seed = 6;
+  EXPECT_THAT(refusal({set[0], otherSeed, set[2]}), HasSubstr(": seed: expected 5 (the first shard, " + set[0].path + "), found 6"));
+  UncertaintySwingsFile otherN = set[1];
+  otherN.run.samples = 3;
+  EXPECT_THAT(refusal({set[0], otherN, set[2]}), HasSubstr(": samples: expected 2 (the first shard, " + set[0].path + "), found 3"));
+  UncertaintySwingsFile otherStudy = set[2];
+  otherStudy.run.inputsFingerprint = "0000000000000000";
+  EXPECT_THAT(refusal({set[0], set[1], otherStudy}), HasSubstr(": inputs_fingerprint: expected 0123456789abcdef"));
+  UncertaintySwingsFile otherTable = set[2];
+  otherTable.run.assumptionsFingerprint = "0000000000000000";
+  EXPECT_THAT(refusal({set[0], set[1], otherTable}), HasSubstr(": assumptions_fingerprint: expected fedcba9876543210"));
+  UncertaintySwingsFile unfinished = set[1];
+  unfinished.times.finished[0] = 0;
+  EXPECT_THAT(refusal({set[0], unfinished, set[2]}), HasSubstr(": partial: expected false (a finished shard), found true"));
+  UncertaintySwingsFile whole = set[0];
+  whole.sharded = false;
+  EXPECT_THAT(refusal({whole, set[1], set[2]}), HasSubstr(": shard: expected {\"index\": K, \"count\": N}"));
+  UncertaintySwingsFile moved = set[1];
+  moved.first += 1;
+  EXPECT_THAT(refusal({set[0], moved, set[2]}), HasSubstr(": first_swing, last_swing: expected "));
+}
+
+}  // namespace
+}  // namespace swingsim
