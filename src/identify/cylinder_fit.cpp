@@ -1,11 +1,14 @@
 #include "identify/cylinder_fit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <future>
 #include <limits>
 #include <stdexcept>
+
+#include <ceres/jet.h>
 
 #include "core/input_error.h"
 #include "numerics/bounded_least_squares.h"
@@ -111,26 +114,50 @@ CylinderTrace predictBench(const MauchCylinder& cylinder, const BenchData& data)
 
 namespace {
 
+// The training records laid end to end with what does not depend on the model's constants:
+// the measured force and, for an added inertia, the piston acceleration estimate.
+struct TrainingSet {
+  TrainingSet(const MauchCylinderParams& model, const std::vector<BenchData>& files) : files(files) {
+    for (const auto& d : files) rows += static_cast<Eigen::Index>(d.time.size());
+    y.resize(rows);
+    Eigen::Index r = 0;
+    for (const auto& d : files) {
+      accel.push_back(model.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
+                                            : std::vector<double>(d.time.size(), 0.0));
+      for (double f : d.force) y(r++) = f;
+    }
+  }
+  const std::vector<BenchData>& files;
+  Eigen::Index rows = 0;
+  Eigen::VectorXd y;                       // N
+  std::vector<std::vector<double>> accel;  // m/s^2, per file
+};
+
+// The regressors X (rows x coefficients) of y ~ X b at the model's switch constants, written
+// into X (resized only if its shape changes: the fit builds them thousands of times).
+void buildRegressors(const MauchCylinderParams& params, const TrainingSet& set, Eigen::MatrixXd& X) {
+  const MauchCylinder cylinder(params);
+  const int p = cylinder.numCoefficients();
+  if (X.rows() != set.rows || X.cols() != p) X.resize(set.rows, p);
+  Eigen::Index r = 0;
+  double row[3 * MauchCylinder::kMaxGates + 4];
+  for (std::size_t f = 0; f < set.files.size(); ++f) {
+    const BenchData& d = set.files[f];
+    const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
+    const std::vector<double>& accel = set.accel[f];
+    for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+      cylinder.calcRegressorRow(d.position[i], d.velocity[i], accel[i], latch[i], row);
+      for (int j = 0; j < p; ++j) X(r, j) = row[j];
+    }
+  }
+}
+
 // The regression problem y ~ X b at fixed switch constants.
 void buildRegression(const MauchCylinderParams& params, const std::vector<BenchData>& train, Eigen::MatrixXd& X,
                      Eigen::VectorXd& y) {
-  const MauchCylinder cylinder(params);
-  std::size_t rows = 0;
-  for (const auto& d : train) rows += d.time.size();
-  const int p = cylinder.numCoefficients();
-  X.resize(static_cast<Eigen::Index>(rows), p);
-  y.resize(static_cast<Eigen::Index>(rows));
-  Eigen::Index r = 0;
-  for (const auto& d : train) {
-    const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
-    const std::vector<double> accel = params.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
-                                                             : std::vector<double>(d.time.size(), 0.0);
-    for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
-      const auto row = cylinder.calcRegressorRow(d.position[i], d.velocity[i], accel[i], latch[i]);
-      for (int j = 0; j < p; ++j) X(r, j) = row[static_cast<std::size_t>(j)];
-      y(r) = d.force[i];
-    }
-  }
+  const TrainingSet set(params, train);
+  buildRegressors(params, set, X);
+  y = set.y;
 }
 
 // Regression at fixed switch constants.
@@ -141,25 +168,159 @@ LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData
   return fitLeastSquares(X, y);
 }
 
-// Residual of the regression at fixed switch constants (the variable projection functional),
-// by column-pivoting QR of the column-scaled X: the SVD of fitLeastSquares is kept for the
-// final fit, where its rank and condition number are reported.
-Eigen::VectorXd projectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
-  Eigen::MatrixXd X;
-  Eigen::VectorXd y;
-  buildRegression(params, train, X, y);
-  const Eigen::MatrixXd Xs = X * calcColumnScale(X).cwiseInverse().asDiagonal();
-  const Eigen::VectorXd b = Xs.colPivHouseholderQr().solve(y);
-  return y - Xs * b;
+// Number of switch constants the fit can free: velocity width, position width, xhy, latch rate.
+constexpr int kSwitchConstants = 4;
+using SwitchJet = ceres::Jet<double, kSwitchConstants>;
+
+// d X / d (velocity width, position width, xhy, latch rate) at the model's switch constants,
+// by forward-mode differentiation (ceres::Jet) of calcLatchHistory and calcMauchSwitches' own
+// equations (Chien 2014 Eqs. 3-6, 12-16, written here a second time on Jets; the fit's test
+// checks both against each other and against finite differences). Only the phase-gate
+// columns depend on the switch constants; the added effects' columns get zero derivatives.
+// With X, also the regressors themselves (the same numbers buildRegressors writes: the Jets'
+// values are the same floating-point operations), so they need no second latch history.
+void buildRegressorDerivatives(const MauchCylinder& cylinder, const TrainingSet& set,
+                               std::array<Eigen::MatrixXd, kSwitchConstants>& dX, Eigen::MatrixXd* X = nullptr) {
+  const MauchCylinderParams& params = cylinder.params();
+  const MauchSwitchParams& sw = params.switches;
+  const int p = cylinder.numCoefficients(), numGates = cylinder.numPhaseGates();
+  for (auto& d : dX) {
+    if (d.rows() != set.rows || d.cols() != p) d.resize(set.rows, p);
+    d.setZero();
+  }
+  if (X && (X->rows() != set.rows || X->cols() != p)) X->resize(set.rows, p);
+  double row[3 * MauchCylinder::kMaxGates + 4];
+  const SwitchJet velocityWidth(sw.velocityWidth, 0), positionWidth(sw.positionWidth, 1),
+      hyperextension(sw.hyperextensionPosition, 2), latchRate(sw.latchRate, 3);
+  constexpr int kSubsteps = 10;  // calcLatchHistory's default, as buildRegressors uses it
+  Eigen::Index r = 0;
+  for (std::size_t f = 0; f < set.files.size(); ++f) {
+    const BenchData& d = set.files[f];
+    SwitchJet s2(0.0);
+    for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+      if (i > 0) {
+        // calcLatchHistory: Eq. 6 integrated exactly over sub-intervals.
+        const double h = (d.time[i] - d.time[i - 1]) / kSubsteps;
+        for (int j = 0; j < kSubsteps; ++j) {
+          const double w = (j + 0.5) / kSubsteps;
+          const double xm = d.position[i - 1] + w * (d.position[i] - d.position[i - 1]);
+          const double vm = d.velocity[i - 1] + w * (d.velocity[i] - d.velocity[i - 1]);
+          const SwitchJet a = latchRate * (0.5 - 0.5 * tanh(vm / velocityWidth));
+          const SwitchJet b = 0.5 - 0.5 * tanh((xm - hyperextension) / positionWidth);
+          s2 = b + (s2 - b) * exp(-a * h);
+        }
+      }
+      // calcMauchSwitches and MauchCylinder::calcGates.
+      const double x = d.position[i], xd = d.velocity[i];
+      if (X) {
+        cylinder.calcRegressorRow(x, xd, set.accel[f][i], s2.a, row);
+        for (int j = 0; j < p; ++j) (*X)(r, j) = row[j];
+      }
+      const SwitchJet s1 = 0.5 + 0.5 * tanh(xd / velocityWidth);
+      const SwitchJet s8 = 0.5 + 0.5 * tanh((x - hyperextension) / positionWidth);
+      SwitchJet gates[MauchCylinder::kMaxGates];
+      if (params.phases == 2) {
+        gates[0] = s1 * (1.0 - s2);
+        gates[1] = 1.0 - s1 * (1.0 - s2);
+      } else {
+        gates[0] = s1 * (1.0 - s2) * s8;
+        gates[1] = s1 * s2 * s8;
+        gates[2] = (1.0 - s1) * s8;
+        gates[3] = 1.0 - s8;
+      }
+      if (params.effects.hyperextensionPhase) {
+        for (int g = 0; g < params.phases; ++g) gates[g] *= s8;
+        gates[params.phases] = 1.0 - s8;
+      }
+      for (int g = 0; g < numGates; ++g)
+        for (int k = 0; k < kSwitchConstants; ++k) {
+          const double dg = gates[g].v[k];
+          dX[static_cast<std::size_t>(k)](r, 3 * g) = dg;
+          dX[static_cast<std::size_t>(k)](r, 3 * g + 1) = dg * x;
+          dX[static_cast<std::size_t>(k)](r, 3 * g + 2) = dg * xd;
+        }
+    }
+  }
 }
 
+// Residual of the regression at given switch constants (the variable projection functional),
+// by column-pivoting QR of the column-scaled X: the SVD of fitLeastSquares is kept for the
+// final fit, where its rank and condition number are reported. One per thread: it keeps its
+// matrices from one evaluation to the next (a new X and QR each time cost more in page
+// faults than in arithmetic).
+class ProjectedResidual {
+ public:
+  ProjectedResidual(const MauchCylinderParams& model, const TrainingSet& set) : model_(model), set_(set) {}
+  const Eigen::VectorXd& calc(const MauchSwitchParams& switches) {
+    model_.switches = switches;
+    buildRegressors(model_, set_, X_);
+    return project();
+  }
+  // The residual and its Jacobian with respect to the first `n` switch constants (in
+  // switchParameters' order, their own units), r = (I - P) y with P the projection on the
+  // columns of X: d r = -(I - P) dX b - X+' dX' r (Golub & Pereyra 1973, Eq. 5.4; with the
+  // columns scaled by D, X b = (X D^-1)(D b), and the scale's own derivative drops out
+  // because P depends only on the span). Columns QR leaves out as dependent (rank below p)
+  // are left out here too, as qr.solve does.
+  const Eigen::VectorXd& calc(const MauchSwitchParams& switches, int n, Eigen::MatrixXd& jacobian) {
+    model_.switches = switches;
+    buildRegressorDerivatives(MauchCylinder(model_), set_, dX_, &X_);
+    project();
+    const Eigen::Index m = X_.rows(), rank = qr_.rank();
+    const auto& perm = qr_.colsPermutation().indices();
+    const auto R = qr_.matrixR().topLeftCorner(rank, rank).template triangularView<Eigen::Upper>();
+    jacobian.resize(m, n);
+    for (int k = 0; k < n; ++k) {
+      Eigen::MatrixXd& dX = dX_[static_cast<std::size_t>(k)];
+      for (Eigen::Index j = 0; j < dX.cols(); ++j) dX.col(j) *= 1.0 / scale_(j);
+      // (I - P) dX b
+      const Eigen::VectorXd v = dX * b_;
+      Eigen::VectorXd term = v - X_ * qr_.solve(v);
+      // X+' dX' r with X+ = Pi R^-1 Q' over the kept columns: X (R'R)^-1 (Pi' dX' r).
+      Eigen::VectorXd w(rank);
+      for (Eigen::Index c = 0; c < rank; ++c) w(c) = dX.col(perm(c)).dot(residual_);
+      const Eigen::VectorXd t = R.solve(R.transpose().solve(w));
+      for (Eigen::Index c = 0; c < rank; ++c) term += X_.col(perm(c)) * t(c);
+      jacobian.col(k) = -term;
+    }
+    return residual_;
+  }
+
+ private:
+  // Scales X's columns to unit length and fits y by QR: the residual, with b and the QR kept.
+  const Eigen::VectorXd& project() {
+    scale_ = calcColumnScale(X_);
+    for (Eigen::Index j = 0; j < X_.cols(); ++j) X_.col(j) *= 1.0 / scale_(j);
+    qr_.compute(X_);
+    b_ = qr_.solve(set_.y);
+    residual_ = set_.y - X_ * b_;
+    return residual_;
+  }
+
+  MauchCylinderParams model_;
+  const TrainingSet& set_;
+  Eigen::MatrixXd X_;
+  std::array<Eigen::MatrixXd, kSwitchConstants> dX_;
+  Eigen::VectorXd scale_, b_, residual_;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
+};
+
+}  // namespace
+
+Eigen::VectorXd calcProjectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train,
+                                      Eigen::MatrixXd* jacobian) {
+  const TrainingSet set(params, train);
+  ProjectedResidual projected(params, set);
+  return jacobian ? projected.calc(params.switches, kSwitchConstants, *jacobian) : projected.calc(params.switches);
+}
+
+namespace {
+
 // Training residual y - X b of a model (its coefficients as given) along every record.
-Eigen::VectorXd predictionResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
-  Eigen::MatrixXd X;
-  Eigen::VectorXd y;
-  buildRegression(params, train, X, y);
+Eigen::VectorXd predictionResidual(const MauchCylinderParams& params, const TrainingSet& set, Eigen::MatrixXd& X) {
+  buildRegressors(params, set, X);
   const std::vector<double> b = MauchCylinder(params).getCoefficientVector();
-  return y - X * Eigen::Map<const Eigen::VectorXd>(b.data(), static_cast<Eigen::Index>(b.size()));
+  return set.y - X * Eigen::Map<const Eigen::VectorXd>(b.data(), static_cast<Eigen::Index>(b.size()));
 }
 
 // The switch constants as bounded parameters, in the order of switchesFrom.
@@ -338,13 +499,11 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
           for (double k : ks) grid.push_back({vw, pw, xh, k});
     // The starts are independent: evaluated on two threads (results in grid order, so the
     // fit is the same on any machine).
+    const TrainingSet set(model, train);
     std::vector<double> costs(grid.size());
     auto evaluate = [&](std::size_t first, std::size_t step) {
-      for (std::size_t i = first; i < grid.size(); i += step) {
-        MauchCylinderParams trial = model;
-        trial.switches = grid[i];
-        costs[i] = projectedResidual(trial, train).squaredNorm();
-      }
+      ProjectedResidual projected(model, set);
+      for (std::size_t i = first; i < grid.size(); i += step) costs[i] = projected.calc(grid[i]).squaredNorm();
     };
     if (grid.size() > 1) {
       auto other = std::async(std::launch::async, evaluate, 1, 2);
@@ -365,12 +524,11 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
     settings.maxSeconds = 30.0;
     settings.functionTolerance = options.multiStart ? 1e-6 : 1e-5;
     settings.computeCovariance = false;
-    settings.differenceStep = 1e-6;
     auto polish = [&](const MauchSwitchParams& from) {
-      ResidualFunction f = [&](const Eigen::VectorXd& x) {
-        MauchCylinderParams trial = model;
-        trial.switches = switchesFrom(model.switches, x.data(), latch);
-        return projectedResidual(trial, train);
+      ProjectedResidual projected(model, set);
+      ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) -> Eigen::VectorXd {
+        const MauchSwitchParams switches = switchesFrom(model.switches, x.data(), latch);
+        return jacobian ? projected.calc(switches, static_cast<int>(x.size()), *jacobian) : projected.calc(switches);
       };
       return solveBoundedLeastSquares(f, switchParameters(from, R, latch), settings);
     };
@@ -427,18 +585,30 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   if (out.switchesFitted)
     for (const auto& b : switchParameters(current.switches, options.ranges, latch)) all.push_back(b);
   if (out.switchesFitted && best.rank == static_cast<int>(p)) {
-    ResidualFunction f = [&](const Eigen::VectorXd& x) {
+    const TrainingSet set(current, train);
+    Eigen::MatrixXd X;
+    std::array<Eigen::MatrixXd, kSwitchConstants> dX;
+    // r = y - X(switches) b: d r / d b = -X, d r / d switch k = -(d X / d switch k) b.
+    ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) {
       MauchCylinderParams trial = current;
       setMauchCoefficientVector(trial, std::vector<double>(x.data(), x.data() + nLinear));
       trial.switches = switchesFrom(current.switches, x.data() + nLinear, latch);
-      return predictionResidual(trial, train);
+      Eigen::VectorXd residual = predictionResidual(trial, set, X);
+      if (jacobian) {
+        const Eigen::Index nl = static_cast<Eigen::Index>(nLinear);
+        jacobian->resize(X.rows(), x.size());
+        jacobian->leftCols(nl) = -X;
+        buildRegressorDerivatives(MauchCylinder(trial), set, dX);
+        const Eigen::Map<const Eigen::VectorXd> b(x.data(), nl);
+        for (Eigen::Index k = nl; k < x.size(); ++k) jacobian->col(k) = -(dX[static_cast<std::size_t>(k - nl)] * b);
+      }
+      return residual;
     };
     BoundedFitSettings settings;
     // Variable projection (with the active set) already found the joint optimum: only the
     // covariance of every constant at that point is needed.
     settings.maxIterations = 0;
     settings.maxSeconds = 30.0;
-    settings.differenceStep = 1e-6;
     const BoundedFitResult r = solveBoundedLeastSquares(f, all, settings);
     values.assign(r.x.data(), r.x.data() + r.x.size());
     errors.assign(r.standardErrors.data(), r.standardErrors.data() + r.standardErrors.size());

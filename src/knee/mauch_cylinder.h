@@ -118,6 +118,11 @@ class MauchCylinder final : public KneeLaw {
   int numPhaseGates() const { return p_.phases + (p_.effects.hyperextensionPhase ? 1 : 0); }
   /// Phase gates at these switch values (calcPhaseGates, with an added hyperextension phase).
   std::vector<double> calcGates(const MauchSwitches& s) const;
+  /// Most phase gates a model has (4 phases, or 2 plus an added hyperextension phase).
+  static constexpr int kMaxGates = 4;
+  /// The same gates written to gates[0 .. numPhaseGates()), without allocating (the fit
+  /// builds its regression thousands of times).
+  void calcGates(const MauchSwitches& s, double* gates) const;
 
   /// Cylinder force (N, positive resists compression) at piston position x (m), velocity
   /// xd (m/s) and latch S2: sum over phases of gate * (f + k x + c xd) (Eqs. 2, 7-11), plus
@@ -130,6 +135,8 @@ class MauchCylinder final : public KneeLaw {
   /// xdd, x xd), so that calcForce = row . getCoefficientVector(). Size numCoefficients().
   std::vector<double> calcRegressorRow(double x, double xd, double s2) const { return calcRegressorRow(x, xd, 0.0, s2); }
   std::vector<double> calcRegressorRow(double x, double xd, double xdd, double s2) const;
+  /// The same row written to row[0 .. numCoefficients()), without allocating.
+  void calcRegressorRow(double x, double xd, double xdd, double s2, double* row) const;
   /// Coefficients flattened in the regressor's order.
   std::vector<double> getCoefficientVector() const;
 

@@ -62,6 +62,18 @@ struct BoundedFitResult {
 BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::vector<BoundedParameter>& parameters,
                                           const BoundedFitSettings& settings = {});
 
+/// Residual vector at a parameter vector and, when `jacobian` is not null, its Jacobian
+/// d residual / d x (residuals x parameters, in the parameters' own units) written there.
+/// May throw as ResidualFunction.
+using ResidualJacobianFunction = std::function<Eigen::VectorXd(const Eigen::VectorXd&, Eigen::MatrixXd* jacobian)>;
+
+/// The same with the residual function's own (analytic) Jacobian instead of numeric
+/// differences: one evaluation per Jacobian instead of one per parameter plus one
+/// (settings.differenceStep and centralDifferences are not used).
+BoundedFitResult solveBoundedLeastSquares(const ResidualJacobianFunction& f,
+                                          const std::vector<BoundedParameter>& parameters,
+                                          const BoundedFitSettings& settings = {});
+
 /// Pairs (i, j), i < j, whose correlation magnitude exceeds `limit`, strongest first.
 std::vector<std::pair<int, int>> findCollinearPairs(const Eigen::MatrixXd& correlation, double limit = 0.95);
 
