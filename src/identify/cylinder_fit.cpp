@@ -256,6 +256,13 @@ class ProjectedResidual {
     buildRegressors(model_, set_, X_);
     return project();
   }
+  // The regressors to fill for projectRegressors (rows x p).
+  Eigen::MatrixXd& updRegressors(Eigen::Index rows, Eigen::Index p) {
+    if (X_.rows() != rows || X_.cols() != p) X_.resize(rows, p);
+    return X_;
+  }
+  // The residual of the regressors written through updRegressors.
+  const Eigen::VectorXd& projectRegressors() { return project(); }
   // The residual and its Jacobian with respect to the first `n` switch constants (in
   // switchParameters' order, their own units), r = (I - P) y with P the projection on the
   // columns of X: d r = -(I - P) dX b - X+' dX' r (Golub & Pereyra 1973, Eq. 5.4; with the
@@ -305,7 +312,131 @@ class ProjectedResidual {
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
 };
 
+// The multi-start grid's costs |r|^2 of the projected residual, with the switch values
+// shared between grid points computed once: in the latch history (calcLatchHistory, Eq. 6)
+// the decay exp(-a h) of each sub-interval depends only on the velocity width and the latch
+// rate, its target b only on the position width and xhy, and so do S1 and S8 of each
+// sample; the grid has 6 and 20 such pairs for its 120 points, so the 120 latch histories
+// need 11 times fewer tanh and exp. The arithmetic is calcLatchHistory's and
+// calcMauchSwitches' (the fit's test checks the costs against calcProjectedResidual).
+std::vector<double> calcGridCosts(const MauchCylinderParams& model, const TrainingSet& set,
+                                  const std::vector<MauchSwitchParams>& grid, int threads) {
+  constexpr int kSubsteps = 10;  // calcLatchHistory's default, as buildRegressors uses it
+  // One entry per distinct pair, in first-seen order; per grid point, its pair's index.
+  auto index = [](std::vector<std::pair<double, double>>& pairs, std::pair<double, double> key) {
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (pairs[i] == key) return i;
+    pairs.push_back(key);
+    return pairs.size() - 1;
+  };
+  std::vector<std::pair<double, double>> velocityPairs, positionPairs, widths;
+  std::vector<std::size_t> velocityOf, positionOf, widthOf;
+  for (const auto& g : grid) {
+    velocityOf.push_back(index(velocityPairs, {g.velocityWidth, g.latchRate}));
+    positionOf.push_back(index(positionPairs, {g.positionWidth, g.hyperextensionPosition}));
+    widthOf.push_back(index(widths, {g.velocityWidth, 0.0}));
+  }
+  std::size_t substeps = 0;
+  for (const auto& d : set.files) substeps += kSubsteps * (d.time.size() > 0 ? d.time.size() - 1 : 0);
+  const auto rows = static_cast<std::size_t>(set.rows);
+  std::vector<std::vector<double>> decay(velocityPairs.size(), std::vector<double>(substeps)),
+      target(positionPairs.size(), std::vector<double>(substeps)), s1(widths.size(), std::vector<double>(rows)),
+      s8(positionPairs.size(), std::vector<double>(rows));
+  auto fill = [&](std::size_t first, std::size_t step) {
+    // Tasks: each velocity pair's decays, each position pair's targets and S8, each width's S1.
+    const std::size_t tasks = velocityPairs.size() + 2 * positionPairs.size() + widths.size();
+    for (std::size_t task = first; task < tasks; task += step) {
+      std::size_t k = 0, r = 0;
+      for (const auto& d : set.files) {
+        for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+          if (task >= velocityPairs.size() + 2 * positionPairs.size()) {
+            const double vw = widths[task - velocityPairs.size() - 2 * positionPairs.size()].first;
+            s1[task - velocityPairs.size() - 2 * positionPairs.size()][r] = 0.5 + 0.5 * std::tanh(d.velocity[i] / vw);
+            continue;
+          }
+          if (task >= velocityPairs.size() + positionPairs.size()) {
+            const auto [pw, xhy] = positionPairs[task - velocityPairs.size() - positionPairs.size()];
+            s8[task - velocityPairs.size() - positionPairs.size()][r] = 0.5 + 0.5 * std::tanh((d.position[i] - xhy) / pw);
+            continue;
+          }
+          if (i == 0) continue;
+          const double h = (d.time[i] - d.time[i - 1]) / kSubsteps;
+          for (int j = 0; j < kSubsteps; ++j, ++k) {
+            const double w = (j + 0.5) / kSubsteps;
+            if (task < velocityPairs.size()) {
+              const auto [vw, rate] = velocityPairs[task];
+              const double vm = d.velocity[i - 1] + w * (d.velocity[i] - d.velocity[i - 1]);
+              const double a = rate * (0.5 - 0.5 * std::tanh(vm / vw));
+              decay[task][k] = std::exp(-a * h);
+            } else {
+              const auto [pw, xhy] = positionPairs[task - velocityPairs.size()];
+              const double xm = d.position[i - 1] + w * (d.position[i] - d.position[i - 1]);
+              target[task - velocityPairs.size()][k] = 0.5 - 0.5 * std::tanh((xm - xhy) / pw);
+            }
+          }
+        }
+      }
+    }
+  };
+  std::vector<double> costs(grid.size());
+  auto evaluate = [&](std::size_t first, std::size_t step) {
+    Eigen::MatrixXd X;
+    ProjectedResidual projected(model, set);
+    MauchCylinderParams params = model;
+    double gates[MauchCylinder::kMaxGates];
+    for (std::size_t g = first; g < grid.size(); g += step) {
+      params.switches = grid[g];
+      const MauchCylinder cylinder(params);
+      const int p = cylinder.numCoefficients(), numGates = cylinder.numPhaseGates();
+      const std::vector<double>&E = decay[velocityOf[g]], &B = target[positionOf[g]], &S1 = s1[widthOf[g]],
+                            &S8 = s8[positionOf[g]];
+      Eigen::MatrixXd& Xg = projected.updRegressors(set.rows, p);
+      std::size_t k = 0, r = 0;
+      for (std::size_t f = 0; f < set.files.size(); ++f) {
+        const BenchData& d = set.files[f];
+        double s2 = 0.0;
+        for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+          if (i > 0)
+            for (int j = 0; j < kSubsteps; ++j, ++k) s2 = B[k] + (s2 - B[k]) * E[k];
+          cylinder.calcGates(combineMauchSwitches(S1[r], s2, S8[r]), gates);
+          const double x = d.position[i], xd = d.velocity[i];
+          for (int q = 0; q < numGates; ++q) {
+            Xg(static_cast<Eigen::Index>(r), 3 * q) = gates[q];
+            Xg(static_cast<Eigen::Index>(r), 3 * q + 1) = gates[q] * x;
+            Xg(static_cast<Eigen::Index>(r), 3 * q + 2) = gates[q] * xd;
+          }
+          if (p > 3 * numGates) {
+            // The added effects' columns do not depend on the switch constants.
+            double row[3 * MauchCylinder::kMaxGates + 4];
+            cylinder.calcRegressorRow(x, xd, set.accel[f][i], s2, row);
+            for (int c = 3 * numGates; c < p; ++c) Xg(static_cast<Eigen::Index>(r), c) = row[c];
+          }
+        }
+      }
+      costs[g] = projected.projectRegressors().squaredNorm();
+    }
+  };
+  if (threads > 1) {
+    auto other = std::async(std::launch::async, fill, 1, 2);
+    fill(0, 2);
+    other.get();
+    auto second = std::async(std::launch::async, evaluate, 1, 2);
+    evaluate(0, 2);
+    second.get();
+  } else {
+    fill(0, 1);
+    evaluate(0, 1);
+  }
+  return costs;
+}
+
 }  // namespace
+
+std::vector<double> calcSwitchGridCosts(const MauchCylinderParams& model, const std::vector<BenchData>& train,
+                                        const std::vector<MauchSwitchParams>& grid) {
+  const TrainingSet set(model, train);
+  return calcGridCosts(model, set, grid, 2);
+}
 
 Eigen::VectorXd calcProjectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train,
                                       Eigen::MatrixXd* jacobian) {
@@ -500,18 +631,7 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
     // The starts are independent: evaluated on two threads (results in grid order, so the
     // fit is the same on any machine).
     const TrainingSet set(model, train);
-    std::vector<double> costs(grid.size());
-    auto evaluate = [&](std::size_t first, std::size_t step) {
-      ProjectedResidual projected(model, set);
-      for (std::size_t i = first; i < grid.size(); i += step) costs[i] = projected.calc(grid[i]).squaredNorm();
-    };
-    if (grid.size() > 1) {
-      auto other = std::async(std::launch::async, evaluate, 1, 2);
-      evaluate(0, 2);
-      other.get();
-    } else {
-      evaluate(0, 1);
-    }
+    const std::vector<double> costs = calcGridCosts(model, set, grid, grid.size() > 1 ? 2 : 1);
     for (std::size_t i = 0; i < grid.size(); ++i) starts.push_back({costs[i], grid[i]});
     if (options.progress) options.progress(total, total + static_cast<int>(kPolishedStarts));
     std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });

@@ -114,6 +114,13 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
 Eigen::VectorXd calcProjectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train,
                                       Eigen::MatrixXd* jacobian = nullptr);
 
+/// The squared norm of calcProjectedResidual (N^2) at each set of switch constants of a
+/// multi-start grid, as the fit ranks its starts: switch values that grid points share
+/// (the same velocity width and latch rate, or the same position width and xhy) are computed
+/// once, on two threads.
+std::vector<double> calcSwitchGridCosts(const MauchCylinderParams& model, const std::vector<BenchData>& train,
+                                        const std::vector<MauchSwitchParams>& grid);
+
 /// Predicted force and switch traces of a cylinder along a bench file (S2 = 0 at start).
 CylinderTrace predictBench(const MauchCylinder& cylinder, const BenchData& data);
 

@@ -6,11 +6,17 @@
 namespace swingsim {
 
 MauchSwitches calcMauchSwitches(double x, double xd, double s2, const MauchSwitchParams& sw) {
+  return combineMauchSwitches(0.5 + 0.5 * std::tanh(xd / sw.velocityWidth),                                // Eq. 4
+                              s2,                                                                           // Eq. 5
+                              0.5 + 0.5 * std::tanh((x - sw.hyperextensionPosition) / sw.positionWidth));  // Eq. 16
+}
+
+MauchSwitches combineMauchSwitches(double s1, double s2, double s8) {
   MauchSwitches s;
-  s.s1 = 0.5 + 0.5 * std::tanh(xd / sw.velocityWidth);                                // Eq. 4
-  s.s2 = s2;                                                                           // Eq. 5
-  s.s3 = 1.0 - s.s1 * (1.0 - s2);                                                      // Eq. 3
-  s.s8 = 0.5 + 0.5 * std::tanh((x - sw.hyperextensionPosition) / sw.positionWidth);  // Eq. 16
+  s.s1 = s1;
+  s.s2 = s2;
+  s.s3 = 1.0 - s.s1 * (1.0 - s2);  // Eq. 3
+  s.s8 = s8;
   s.s4 = s.s1 * (1.0 - s2) * s.s8;                                                     // Eq. 12
   s.s5 = (1.0 - s.s1) * s.s8;                                                          // Eq. 13
   s.s6 = s.s1 * s2 * s.s8;                                                             // Eq. 14

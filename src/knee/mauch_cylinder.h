@@ -84,6 +84,9 @@ struct MauchSwitches {
 
 /// Switch values at piston position x (m), velocity xd (m/s) and latch state s2.
 MauchSwitches calcMauchSwitches(double x, double xd, double s2, const MauchSwitchParams& sw);
+/// The same from S1 (Eq. 4), S2 and S8 (Eq. 16) already computed: the products of Eqs. 3,
+/// 12-15 (calcMauchSwitches uses it; the switch-constant fit reuses S1 and S8 between starts).
+MauchSwitches combineMauchSwitches(double s1, double s2, double s8);
 
 /// dS2/dt (1/s), Chien 2014 Eq. 6: k (1 - S1) [1/2 - 1/2 tanh((x - xhy)/x0) - S2].
 double calcLatchDerivative(double x, double xd, double s2, const MauchSwitchParams& sw);

@@ -151,6 +151,30 @@ TEST(CylinderFit, ProjectedResidualJacobianMatchesFiniteDifferences) {
   }
 }
 
+// The multi-start grid's shortcut (switch values shared between starts computed once) ranks
+// the starts by the same costs as the projected residual itself.
+TEST(CylinderFit, GridCostsAreTheProjectedResidualsSquaredNorms) {
+  constexpr double kSameCost = 1e-12;  // relative: only the order of sums differs, if anything
+  const auto truth = model("mauch-4phase.yaml");
+  const std::vector<BenchData> train = {makeBench(truth, 0.987, 1.0, kNoise, 6, "normal"),
+                                        makeBench(truth, 1.19, 0.9, kNoise, 7, "slow")};
+  for (const char* file : {"mauch-4phase.yaml", "mauch-2phase.yaml"}) {
+    auto params = model(file);
+    std::vector<MauchSwitchParams> grid;
+    for (double vw : {2e-4, 3e-3})
+      for (double pw : {1e-5, 4e-4, 1e-3})
+        for (double xhy : {-1e-4, 3e-4})
+          for (double k : {20.0, 2e4}) grid.push_back({vw, pw, xhy, k});
+    const std::vector<double> costs = calcSwitchGridCosts(params, train, grid);
+    ASSERT_EQ(costs.size(), grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      params.switches = grid[i];
+      const double direct = calcProjectedResidual(params, train).squaredNorm();
+      EXPECT_NEAR(costs[i], direct, kSameCost * direct) << file << " grid point " << i;
+    }
+  }
+}
+
 TEST(LeastSquares, ReportsRankDeficiencyAndConditioning) {
   Eigen::MatrixXd X(5, 3);
   X << 1, 0, 2, 1, 0, 2, 1, 0, 2, 1, 0, 2, 1, 0, 2;  // column 2 = 2 x column 0, column 1 zero

@@ -105,7 +105,9 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees)
                 endedEarly, realizationsFull, realizationsEarly);
     // And it is a lever where the knee comes to rest on its stop: on the published knees
     // (no bounce) most swings end early (not asserting a speed, only that it acts).
-    if (v.restitution < 0) EXPECT_GT(endedEarly, swings / 2) << v.name;
+    if (v.restitution < 0) {
+      EXPECT_GT(endedEarly, swings / 2) << v.name;
+    }
   }
   EXPECT_GT(bouncing, 10) << "the bouncy variants must bounce";
 }
