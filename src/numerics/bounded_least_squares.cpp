@@ -176,6 +176,7 @@ BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const 
   options.logging_type = ceres::SILENT;
   options.minimizer_progress_to_stdout = false;
   options.num_threads = 1;
+  options.use_nonmonotonic_steps = settings.nonmonotonicSteps;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
 

@@ -39,6 +39,10 @@ struct BoundedFitSettings {
   double functionTolerance = 1e-9;  ///< relative cost fall that ends the iterations
   double parameterTolerance = 1e-9;
   bool computeCovariance = true;
+  /// Ceres' non-monotonic steps (Conn, Gould & Toint, Trust-Region Methods, Sec. 10.1): a
+  /// step may raise the cost a little if the iterations as a whole fall, which crosses
+  /// curved, narrow valleys in fewer iterations.
+  bool nonmonotonicSteps = false;
 };
 
 struct BoundedFitResult {
