@@ -172,13 +172,14 @@ LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData
 constexpr int kSwitchConstants = 4;
 using SwitchJet = ceres::Jet<double, kSwitchConstants>;
 
-// d X / d (velocity width, position width, xhy, latch rate) at the model's switch constants,
-// by forward-mode differentiation (ceres::Jet) of calcLatchHistory and calcMauchSwitches' own
-// equations (Chien 2014 Eqs. 3-6, 12-16, written here a second time on Jets; the fit's test
-// checks both against each other and against finite differences). Only the phase-gate
+// d X / d (velocity width, position width, xhy, latch rate) at the model's switch constants:
+// the latch history (calcLatchHistory, Eq. 6) differentiated by hand, the switches and gates
+// (calcMauchSwitches, MauchCylinder::calcGates; Chien 2014 Eqs. 3-4, 12-16) by forward-mode
+// differentiation (ceres::Jet). These equations are written here a second time; the fit's
+// test checks the result against finite differences of the residual. Only the phase-gate
 // columns depend on the switch constants; the added effects' columns get zero derivatives.
-// With X, also the regressors themselves (the same numbers buildRegressors writes: the Jets'
-// values are the same floating-point operations), so they need no second latch history.
+// With X, also the regressors themselves (the latch from the same floating-point operations
+// as calcLatchHistory's), so they need no second latch history.
 void buildRegressorDerivatives(const MauchCylinder& cylinder, const TrainingSet& set,
                                std::array<Eigen::MatrixXd, kSwitchConstants>& dX, Eigen::MatrixXd* X = nullptr) {
   const MauchCylinderParams& params = cylinder.params();
@@ -191,29 +192,44 @@ void buildRegressorDerivatives(const MauchCylinder& cylinder, const TrainingSet&
   if (X && (X->rows() != set.rows || X->cols() != p)) X->resize(set.rows, p);
   double row[3 * MauchCylinder::kMaxGates + 4];
   const SwitchJet velocityWidth(sw.velocityWidth, 0), positionWidth(sw.positionWidth, 1),
-      hyperextension(sw.hyperextensionPosition, 2), latchRate(sw.latchRate, 3);
+      hyperextension(sw.hyperextensionPosition, 2);
   constexpr int kSubsteps = 10;  // calcLatchHistory's default, as buildRegressors uses it
+  const double vw = sw.velocityWidth, pw = sw.positionWidth, xhy = sw.hyperextensionPosition, k = sw.latchRate;
   Eigen::Index r = 0;
   for (std::size_t f = 0; f < set.files.size(); ++f) {
     const BenchData& d = set.files[f];
-    SwitchJet s2(0.0);
+    // S2 and its derivatives (velocity width, position width, xhy, latch rate), by hand in
+    // the latch history's inner loop (a Jet there cost three times as much): a depends on
+    // the velocity width and the rate only, b on the position width and xhy only.
+    double latch = 0.0, dLatch[kSwitchConstants] = {0, 0, 0, 0};
     for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
       if (i > 0) {
-        // calcLatchHistory: Eq. 6 integrated exactly over sub-intervals.
+        // calcLatchHistory: Eq. 6 integrated exactly over sub-intervals, s = b + (s - b) E.
         const double h = (d.time[i] - d.time[i - 1]) / kSubsteps;
         for (int j = 0; j < kSubsteps; ++j) {
           const double w = (j + 0.5) / kSubsteps;
           const double xm = d.position[i - 1] + w * (d.position[i] - d.position[i - 1]);
           const double vm = d.velocity[i - 1] + w * (d.velocity[i] - d.velocity[i - 1]);
-          const SwitchJet a = latchRate * (0.5 - 0.5 * tanh(vm / velocityWidth));
-          const SwitchJet b = 0.5 - 0.5 * tanh((xm - hyperextension) / positionWidth);
-          s2 = b + (s2 - b) * exp(-a * h);
+          const double ta = std::tanh(vm / vw), tb = std::tanh((xm - xhy) / pw);
+          const double a = k * (0.5 - 0.5 * ta);
+          const double b = 0.5 - 0.5 * tb;
+          const double E = std::exp(-a * h);
+          const double dbShape = 0.5 * (1.0 - tb * tb) / pw;  // d b / d xhy
+          const double dEda = -h * E;
+          const double gap = latch - b;
+          dLatch[0] = E * dLatch[0] + gap * dEda * (0.5 * k * (1.0 - ta * ta) * vm / (vw * vw));
+          dLatch[1] = dbShape * (xm - xhy) / pw * (1.0 - E) + E * dLatch[1];
+          dLatch[2] = dbShape * (1.0 - E) + E * dLatch[2];
+          dLatch[3] = E * dLatch[3] + gap * dEda * (0.5 - 0.5 * ta);
+          latch = b + gap * E;
         }
       }
+      SwitchJet s2(latch);
+      for (int q = 0; q < kSwitchConstants; ++q) s2.v[q] = dLatch[q];
       // calcMauchSwitches and MauchCylinder::calcGates.
       const double x = d.position[i], xd = d.velocity[i];
       if (X) {
-        cylinder.calcRegressorRow(x, xd, set.accel[f][i], s2.a, row);
+        cylinder.calcRegressorRow(x, xd, set.accel[f][i], latch, row);
         for (int j = 0; j < p; ++j) (*X)(r, j) = row[j];
       }
       const SwitchJet s1 = 0.5 + 0.5 * tanh(xd / velocityWidth);
@@ -233,11 +249,11 @@ void buildRegressorDerivatives(const MauchCylinder& cylinder, const TrainingSet&
         gates[params.phases] = 1.0 - s8;
       }
       for (int g = 0; g < numGates; ++g)
-        for (int k = 0; k < kSwitchConstants; ++k) {
-          const double dg = gates[g].v[k];
-          dX[static_cast<std::size_t>(k)](r, 3 * g) = dg;
-          dX[static_cast<std::size_t>(k)](r, 3 * g + 1) = dg * x;
-          dX[static_cast<std::size_t>(k)](r, 3 * g + 2) = dg * xd;
+        for (int c = 0; c < kSwitchConstants; ++c) {
+          const double dg = gates[g].v[c];
+          dX[static_cast<std::size_t>(c)](r, 3 * g) = dg;
+          dX[static_cast<std::size_t>(c)](r, 3 * g + 1) = dg * x;
+          dX[static_cast<std::size_t>(c)](r, 3 * g + 2) = dg * xd;
         }
     }
   }
