@@ -567,12 +567,8 @@ class DormandPrinceStepper final : public SwingStepper {
     checkpointTime_ = dp_->getTime();
     checkpoint_.assign(dp_->getState(), dp_->getState() + ode_.numStates());
   }
-  /// Goes on from the current step end at a new accuracy.
-  void changeAccuracy(double accuracy) {
-    stepsBefore_ += static_cast<int>(dp_->getNumSteps());
-    std::copy(dp_->getState(), dp_->getState() + ode_.numStates(), y_.begin());
-    start(dp_->getTime(), accuracy);
-  }
+  /// Goes on from the current step end at a new accuracy (the step size scaled to it).
+  void changeAccuracy(double accuracy) { dp_->changeTolerances(accuracy, accuracy); }
   /// Goes back to the checkpoint and on from there at `accuracy`.
   void restoreCheckpoint(double accuracy) {
     stepsBefore_ += static_cast<int>(dp_->getNumSteps());
