@@ -1,7 +1,8 @@
 #pragma once
 // Bounded nonlinear least squares, a thin front end to Ceres Solver (trust region,
-// Levenberg-Marquardt strategy, numeric Jacobian): for residual functions that run a
-// simulation or a regression (the swing plant's refits, the Mauch switch constants), with
+// Levenberg-Marquardt strategy, numeric Jacobian or the caller's exact one): for residual
+// functions that run a simulation or a regression (the swing plant's refits, the Mauch
+// switch constants), with
 // bounds from physics, an iteration and wall-clock budget, and the parameter covariance
 // from the Jacobian at the solution (Ceres' Jacobian, pseudo-inverse by SVD).
 #include <Eigen/Dense>
