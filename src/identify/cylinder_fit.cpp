@@ -1,11 +1,14 @@
 #include "identify/cylinder_fit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <future>
 #include <limits>
 #include <stdexcept>
+
+#include <ceres/jet.h>
 
 #include "core/input_error.h"
 #include "numerics/bounded_least_squares.h"
@@ -111,26 +114,50 @@ CylinderTrace predictBench(const MauchCylinder& cylinder, const BenchData& data)
 
 namespace {
 
+// The training records laid end to end with what does not depend on the model's constants:
+// the measured force and, for an added inertia, the piston acceleration estimate.
+struct TrainingSet {
+  TrainingSet(const MauchCylinderParams& model, const std::vector<BenchData>& files) : files(files) {
+    for (const auto& d : files) rows += static_cast<Eigen::Index>(d.time.size());
+    y.resize(rows);
+    Eigen::Index r = 0;
+    for (const auto& d : files) {
+      accel.push_back(model.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
+                                            : std::vector<double>(d.time.size(), 0.0));
+      for (double f : d.force) y(r++) = f;
+    }
+  }
+  const std::vector<BenchData>& files;
+  Eigen::Index rows = 0;
+  Eigen::VectorXd y;                       // N
+  std::vector<std::vector<double>> accel;  // m/s^2, per file
+};
+
+// The regressors X (rows x coefficients) of y ~ X b at the model's switch constants, written
+// into X (resized only if its shape changes: the fit builds them thousands of times).
+void buildRegressors(const MauchCylinderParams& params, const TrainingSet& set, Eigen::MatrixXd& X) {
+  const MauchCylinder cylinder(params);
+  const int p = cylinder.numCoefficients();
+  if (X.rows() != set.rows || X.cols() != p) X.resize(set.rows, p);
+  Eigen::Index r = 0;
+  double row[3 * MauchCylinder::kMaxGates + 4];
+  for (std::size_t f = 0; f < set.files.size(); ++f) {
+    const BenchData& d = set.files[f];
+    const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
+    const std::vector<double>& accel = set.accel[f];
+    for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+      cylinder.calcRegressorRow(d.position[i], d.velocity[i], accel[i], latch[i], row);
+      for (int j = 0; j < p; ++j) X(r, j) = row[j];
+    }
+  }
+}
+
 // The regression problem y ~ X b at fixed switch constants.
 void buildRegression(const MauchCylinderParams& params, const std::vector<BenchData>& train, Eigen::MatrixXd& X,
                      Eigen::VectorXd& y) {
-  const MauchCylinder cylinder(params);
-  std::size_t rows = 0;
-  for (const auto& d : train) rows += d.time.size();
-  const int p = cylinder.numCoefficients();
-  X.resize(static_cast<Eigen::Index>(rows), p);
-  y.resize(static_cast<Eigen::Index>(rows));
-  Eigen::Index r = 0;
-  for (const auto& d : train) {
-    const auto latch = calcLatchHistory(d.time, d.position, d.velocity, params.switches, 0.0);
-    const std::vector<double> accel = params.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
-                                                             : std::vector<double>(d.time.size(), 0.0);
-    for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
-      const auto row = cylinder.calcRegressorRow(d.position[i], d.velocity[i], accel[i], latch[i]);
-      for (int j = 0; j < p; ++j) X(r, j) = row[static_cast<std::size_t>(j)];
-      y(r) = d.force[i];
-    }
-  }
+  const TrainingSet set(params, train);
+  buildRegressors(params, set, X);
+  y = set.y;
 }
 
 // Regression at fixed switch constants.
@@ -141,25 +168,306 @@ LinearFit regress(const MauchCylinderParams& params, const std::vector<BenchData
   return fitLeastSquares(X, y);
 }
 
-// Residual of the regression at fixed switch constants (the variable projection functional),
-// by column-pivoting QR of the column-scaled X: the SVD of fitLeastSquares is kept for the
-// final fit, where its rank and condition number are reported.
-Eigen::VectorXd projectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
-  Eigen::MatrixXd X;
-  Eigen::VectorXd y;
-  buildRegression(params, train, X, y);
-  const Eigen::MatrixXd Xs = X * calcColumnScale(X).cwiseInverse().asDiagonal();
-  const Eigen::VectorXd b = Xs.colPivHouseholderQr().solve(y);
-  return y - Xs * b;
+// Number of switch constants the fit can free: velocity width, position width, xhy, latch rate.
+constexpr int kSwitchConstants = 4;
+using SwitchJet = ceres::Jet<double, kSwitchConstants>;
+
+// d X / d (velocity width, position width, xhy, latch rate) at the model's switch constants:
+// the latch history (calcLatchHistory, Eq. 6) differentiated by hand, the switches and gates
+// (calcMauchSwitches, MauchCylinder::calcGates; Chien 2014 Eqs. 3-4, 12-16) by forward-mode
+// differentiation (ceres::Jet). These equations are written here a second time; the fit's
+// test checks the result against finite differences of the residual. Only the phase-gate
+// columns depend on the switch constants; the added effects' columns get zero derivatives.
+// With X, also the regressors themselves (the latch from the same floating-point operations
+// as calcLatchHistory's), so they need no second latch history.
+void buildRegressorDerivatives(const MauchCylinder& cylinder, const TrainingSet& set,
+                               std::array<Eigen::MatrixXd, kSwitchConstants>& dX, Eigen::MatrixXd* X = nullptr) {
+  const MauchCylinderParams& params = cylinder.params();
+  const MauchSwitchParams& sw = params.switches;
+  const int p = cylinder.numCoefficients(), numGates = cylinder.numPhaseGates();
+  for (auto& d : dX) {
+    if (d.rows() != set.rows || d.cols() != p) d.resize(set.rows, p);
+    d.setZero();
+  }
+  if (X && (X->rows() != set.rows || X->cols() != p)) X->resize(set.rows, p);
+  double row[3 * MauchCylinder::kMaxGates + 4];
+  const SwitchJet velocityWidth(sw.velocityWidth, 0), positionWidth(sw.positionWidth, 1),
+      hyperextension(sw.hyperextensionPosition, 2);
+  constexpr int kSubsteps = 10;  // calcLatchHistory's default, as buildRegressors uses it
+  const double vw = sw.velocityWidth, pw = sw.positionWidth, xhy = sw.hyperextensionPosition, k = sw.latchRate;
+  Eigen::Index r = 0;
+  for (std::size_t f = 0; f < set.files.size(); ++f) {
+    const BenchData& d = set.files[f];
+    // S2 and its derivatives (velocity width, position width, xhy, latch rate), by hand in
+    // the latch history's inner loop (a Jet there cost three times as much): a depends on
+    // the velocity width and the rate only, b on the position width and xhy only.
+    double latch = 0.0, dLatch[kSwitchConstants] = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+      if (i > 0) {
+        // calcLatchHistory: Eq. 6 integrated exactly over sub-intervals, s = b + (s - b) E.
+        const double h = (d.time[i] - d.time[i - 1]) / kSubsteps;
+        for (int j = 0; j < kSubsteps; ++j) {
+          const double w = (j + 0.5) / kSubsteps;
+          const double xm = d.position[i - 1] + w * (d.position[i] - d.position[i - 1]);
+          const double vm = d.velocity[i - 1] + w * (d.velocity[i] - d.velocity[i - 1]);
+          const double ta = std::tanh(vm / vw), tb = std::tanh((xm - xhy) / pw);
+          const double a = k * (0.5 - 0.5 * ta);
+          const double b = 0.5 - 0.5 * tb;
+          const double E = std::exp(-a * h);
+          const double dbShape = 0.5 * (1.0 - tb * tb) / pw;  // d b / d xhy
+          const double dEda = -h * E;
+          const double gap = latch - b;
+          dLatch[0] = E * dLatch[0] + gap * dEda * (0.5 * k * (1.0 - ta * ta) * vm / (vw * vw));
+          dLatch[1] = dbShape * (xm - xhy) / pw * (1.0 - E) + E * dLatch[1];
+          dLatch[2] = dbShape * (1.0 - E) + E * dLatch[2];
+          dLatch[3] = E * dLatch[3] + gap * dEda * (0.5 - 0.5 * ta);
+          latch = b + gap * E;
+        }
+      }
+      SwitchJet s2(latch);
+      for (int q = 0; q < kSwitchConstants; ++q) s2.v[q] = dLatch[q];
+      // calcMauchSwitches and MauchCylinder::calcGates.
+      const double x = d.position[i], xd = d.velocity[i];
+      if (X) {
+        cylinder.calcRegressorRow(x, xd, set.accel[f][i], latch, row);
+        for (int j = 0; j < p; ++j) (*X)(r, j) = row[j];
+      }
+      const SwitchJet s1 = 0.5 + 0.5 * tanh(xd / velocityWidth);
+      const SwitchJet s8 = 0.5 + 0.5 * tanh((x - hyperextension) / positionWidth);
+      SwitchJet gates[MauchCylinder::kMaxGates];
+      if (params.phases == 2) {
+        gates[0] = s1 * (1.0 - s2);
+        gates[1] = 1.0 - s1 * (1.0 - s2);
+      } else {
+        gates[0] = s1 * (1.0 - s2) * s8;
+        gates[1] = s1 * s2 * s8;
+        gates[2] = (1.0 - s1) * s8;
+        gates[3] = 1.0 - s8;
+      }
+      if (params.effects.hyperextensionPhase) {
+        for (int g = 0; g < params.phases; ++g) gates[g] *= s8;
+        gates[params.phases] = 1.0 - s8;
+      }
+      for (int g = 0; g < numGates; ++g)
+        for (int c = 0; c < kSwitchConstants; ++c) {
+          const double dg = gates[g].v[c];
+          dX[static_cast<std::size_t>(c)](r, 3 * g) = dg;
+          dX[static_cast<std::size_t>(c)](r, 3 * g + 1) = dg * x;
+          dX[static_cast<std::size_t>(c)](r, 3 * g + 2) = dg * xd;
+        }
+    }
+  }
 }
 
+// Residual of the regression at given switch constants (the variable projection functional),
+// by column-pivoting QR of the column-scaled X: the SVD of fitLeastSquares is kept for the
+// final fit, where its rank and condition number are reported. One per thread: it keeps its
+// matrices from one evaluation to the next (a new X and QR each time cost more in page
+// faults than in arithmetic).
+class ProjectedResidual {
+ public:
+  ProjectedResidual(const MauchCylinderParams& model, const TrainingSet& set) : model_(model), set_(set) {}
+  const Eigen::VectorXd& calc(const MauchSwitchParams& switches) {
+    model_.switches = switches;
+    buildRegressors(model_, set_, X_);
+    return project();
+  }
+  // The regressors to fill for projectRegressors (rows x p).
+  Eigen::MatrixXd& updRegressors(Eigen::Index rows, Eigen::Index p) {
+    if (X_.rows() != rows || X_.cols() != p) X_.resize(rows, p);
+    return X_;
+  }
+  // The residual of the regressors written through updRegressors.
+  const Eigen::VectorXd& projectRegressors() { return project(); }
+  // The residual and its Jacobian with respect to the first `n` switch constants (in
+  // switchParameters' order, their own units), r = (I - P) y with P the projection on the
+  // columns of X: d r = -(I - P) dX b - X+' dX' r (Golub & Pereyra 1973, Eq. 5.4; with the
+  // columns scaled by D, X b = (X D^-1)(D b), and the scale's own derivative drops out
+  // because P depends only on the span). Columns QR leaves out as dependent (rank below p)
+  // are left out here too, as qr.solve does.
+  const Eigen::VectorXd& calc(const MauchSwitchParams& switches, int n, Eigen::MatrixXd& jacobian) {
+    model_.switches = switches;
+    buildRegressorDerivatives(MauchCylinder(model_), set_, dX_, &X_);
+    project();
+    const Eigen::Index m = X_.rows(), rank = qr_.rank();
+    const auto& perm = qr_.colsPermutation().indices();
+    const auto R = qr_.matrixR().topLeftCorner(rank, rank).template triangularView<Eigen::Upper>();
+    jacobian.resize(m, n);
+    for (int k = 0; k < n; ++k) {
+      Eigen::MatrixXd& dX = dX_[static_cast<std::size_t>(k)];
+      for (Eigen::Index j = 0; j < dX.cols(); ++j) dX.col(j) *= 1.0 / scale_(j);
+      // (I - P) dX b
+      const Eigen::VectorXd v = dX * b_;
+      Eigen::VectorXd term = v - X_ * qr_.solve(v);
+      // X+' dX' r with X+ = Pi R^-1 Q' over the kept columns: X (R'R)^-1 (Pi' dX' r).
+      Eigen::VectorXd w(rank);
+      for (Eigen::Index c = 0; c < rank; ++c) w(c) = dX.col(perm(c)).dot(residual_);
+      const Eigen::VectorXd t = R.solve(R.transpose().solve(w));
+      for (Eigen::Index c = 0; c < rank; ++c) term += X_.col(perm(c)) * t(c);
+      jacobian.col(k) = -term;
+    }
+    return residual_;
+  }
+
+ private:
+  // Scales X's columns to unit length and fits y by QR: the residual, with b and the QR kept.
+  const Eigen::VectorXd& project() {
+    scale_ = calcColumnScale(X_);
+    for (Eigen::Index j = 0; j < X_.cols(); ++j) X_.col(j) *= 1.0 / scale_(j);
+    qr_.compute(X_);
+    b_ = qr_.solve(set_.y);
+    residual_ = set_.y - X_ * b_;
+    return residual_;
+  }
+
+  MauchCylinderParams model_;
+  const TrainingSet& set_;
+  Eigen::MatrixXd X_;
+  std::array<Eigen::MatrixXd, kSwitchConstants> dX_;
+  Eigen::VectorXd scale_, b_, residual_;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
+};
+
+// The multi-start grid's costs |r|^2 of the projected residual, with the switch values
+// shared between grid points computed once: in the latch history (calcLatchHistory, Eq. 6)
+// the decay exp(-a h) of each sub-interval depends only on the velocity width and the latch
+// rate, its target b only on the position width and xhy, and so do S1 and S8 of each
+// sample; the grid has 6 and 20 such pairs for its 120 points, so the 120 latch histories
+// need 11 times fewer tanh and exp. The arithmetic is calcLatchHistory's and
+// calcMauchSwitches' (the fit's test checks the costs against calcProjectedResidual).
+std::vector<double> calcGridCosts(const MauchCylinderParams& model, const TrainingSet& set,
+                                  const std::vector<MauchSwitchParams>& grid, int threads) {
+  constexpr int kSubsteps = 10;  // calcLatchHistory's default, as buildRegressors uses it
+  // One entry per distinct pair, in first-seen order; per grid point, its pair's index.
+  auto index = [](std::vector<std::pair<double, double>>& pairs, std::pair<double, double> key) {
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (pairs[i] == key) return i;
+    pairs.push_back(key);
+    return pairs.size() - 1;
+  };
+  std::vector<std::pair<double, double>> velocityPairs, positionPairs, widths;
+  std::vector<std::size_t> velocityOf, positionOf, widthOf;
+  for (const auto& g : grid) {
+    velocityOf.push_back(index(velocityPairs, {g.velocityWidth, g.latchRate}));
+    positionOf.push_back(index(positionPairs, {g.positionWidth, g.hyperextensionPosition}));
+    widthOf.push_back(index(widths, {g.velocityWidth, 0.0}));
+  }
+  std::size_t substeps = 0;
+  for (const auto& d : set.files) substeps += kSubsteps * (d.time.size() > 0 ? d.time.size() - 1 : 0);
+  const auto rows = static_cast<std::size_t>(set.rows);
+  std::vector<std::vector<double>> decay(velocityPairs.size(), std::vector<double>(substeps)),
+      target(positionPairs.size(), std::vector<double>(substeps)), s1(widths.size(), std::vector<double>(rows)),
+      s8(positionPairs.size(), std::vector<double>(rows));
+  auto fill = [&](std::size_t first, std::size_t step) {
+    // Tasks: each velocity pair's decays, each position pair's targets and S8, each width's S1.
+    const std::size_t tasks = velocityPairs.size() + 2 * positionPairs.size() + widths.size();
+    for (std::size_t task = first; task < tasks; task += step) {
+      std::size_t k = 0, r = 0;
+      for (const auto& d : set.files) {
+        for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+          if (task >= velocityPairs.size() + 2 * positionPairs.size()) {
+            const double vw = widths[task - velocityPairs.size() - 2 * positionPairs.size()].first;
+            s1[task - velocityPairs.size() - 2 * positionPairs.size()][r] = 0.5 + 0.5 * std::tanh(d.velocity[i] / vw);
+            continue;
+          }
+          if (task >= velocityPairs.size() + positionPairs.size()) {
+            const auto [pw, xhy] = positionPairs[task - velocityPairs.size() - positionPairs.size()];
+            s8[task - velocityPairs.size() - positionPairs.size()][r] = 0.5 + 0.5 * std::tanh((d.position[i] - xhy) / pw);
+            continue;
+          }
+          if (i == 0) continue;
+          const double h = (d.time[i] - d.time[i - 1]) / kSubsteps;
+          for (int j = 0; j < kSubsteps; ++j, ++k) {
+            const double w = (j + 0.5) / kSubsteps;
+            if (task < velocityPairs.size()) {
+              const auto [vw, rate] = velocityPairs[task];
+              const double vm = d.velocity[i - 1] + w * (d.velocity[i] - d.velocity[i - 1]);
+              const double a = rate * (0.5 - 0.5 * std::tanh(vm / vw));
+              decay[task][k] = std::exp(-a * h);
+            } else {
+              const auto [pw, xhy] = positionPairs[task - velocityPairs.size()];
+              const double xm = d.position[i - 1] + w * (d.position[i] - d.position[i - 1]);
+              target[task - velocityPairs.size()][k] = 0.5 - 0.5 * std::tanh((xm - xhy) / pw);
+            }
+          }
+        }
+      }
+    }
+  };
+  std::vector<double> costs(grid.size());
+  auto evaluate = [&](std::size_t first, std::size_t step) {
+    Eigen::MatrixXd X;
+    ProjectedResidual projected(model, set);
+    MauchCylinderParams params = model;
+    double gates[MauchCylinder::kMaxGates];
+    for (std::size_t g = first; g < grid.size(); g += step) {
+      params.switches = grid[g];
+      const MauchCylinder cylinder(params);
+      const int p = cylinder.numCoefficients(), numGates = cylinder.numPhaseGates();
+      const std::vector<double>&E = decay[velocityOf[g]], &B = target[positionOf[g]], &S1 = s1[widthOf[g]],
+                            &S8 = s8[positionOf[g]];
+      Eigen::MatrixXd& Xg = projected.updRegressors(set.rows, p);
+      std::size_t k = 0, r = 0;
+      for (std::size_t f = 0; f < set.files.size(); ++f) {
+        const BenchData& d = set.files[f];
+        double s2 = 0.0;
+        for (std::size_t i = 0; i < d.time.size(); ++i, ++r) {
+          if (i > 0)
+            for (int j = 0; j < kSubsteps; ++j, ++k) s2 = B[k] + (s2 - B[k]) * E[k];
+          cylinder.calcGates(combineMauchSwitches(S1[r], s2, S8[r]), gates);
+          const double x = d.position[i], xd = d.velocity[i];
+          for (int q = 0; q < numGates; ++q) {
+            Xg(static_cast<Eigen::Index>(r), 3 * q) = gates[q];
+            Xg(static_cast<Eigen::Index>(r), 3 * q + 1) = gates[q] * x;
+            Xg(static_cast<Eigen::Index>(r), 3 * q + 2) = gates[q] * xd;
+          }
+          if (p > 3 * numGates) {
+            // The added effects' columns do not depend on the switch constants.
+            double row[3 * MauchCylinder::kMaxGates + 4];
+            cylinder.calcRegressorRow(x, xd, set.accel[f][i], s2, row);
+            for (int c = 3 * numGates; c < p; ++c) Xg(static_cast<Eigen::Index>(r), c) = row[c];
+          }
+        }
+      }
+      costs[g] = projected.projectRegressors().squaredNorm();
+    }
+  };
+  if (threads > 1) {
+    auto other = std::async(std::launch::async, fill, 1, 2);
+    fill(0, 2);
+    other.get();
+    auto second = std::async(std::launch::async, evaluate, 1, 2);
+    evaluate(0, 2);
+    second.get();
+  } else {
+    fill(0, 1);
+    evaluate(0, 1);
+  }
+  return costs;
+}
+
+}  // namespace
+
+std::vector<double> calcSwitchGridCosts(const MauchCylinderParams& model, const std::vector<BenchData>& train,
+                                        const std::vector<MauchSwitchParams>& grid) {
+  const TrainingSet set(model, train);
+  return calcGridCosts(model, set, grid, 2);
+}
+
+Eigen::VectorXd calcProjectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train,
+                                      Eigen::MatrixXd* jacobian) {
+  const TrainingSet set(params, train);
+  ProjectedResidual projected(params, set);
+  return jacobian ? projected.calc(params.switches, kSwitchConstants, *jacobian) : projected.calc(params.switches);
+}
+
+namespace {
+
 // Training residual y - X b of a model (its coefficients as given) along every record.
-Eigen::VectorXd predictionResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train) {
-  Eigen::MatrixXd X;
-  Eigen::VectorXd y;
-  buildRegression(params, train, X, y);
+Eigen::VectorXd predictionResidual(const MauchCylinderParams& params, const TrainingSet& set, Eigen::MatrixXd& X) {
+  buildRegressors(params, set, X);
   const std::vector<double> b = MauchCylinder(params).getCoefficientVector();
-  return y - X * Eigen::Map<const Eigen::VectorXd>(b.data(), static_cast<Eigen::Index>(b.size()));
+  return set.y - X * Eigen::Map<const Eigen::VectorXd>(b.data(), static_cast<Eigen::Index>(b.size()));
 }
 
 // The switch constants as bounded parameters, in the order of switchesFrom.
@@ -338,21 +646,8 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
           for (double k : ks) grid.push_back({vw, pw, xh, k});
     // The starts are independent: evaluated on two threads (results in grid order, so the
     // fit is the same on any machine).
-    std::vector<double> costs(grid.size());
-    auto evaluate = [&](std::size_t first, std::size_t step) {
-      for (std::size_t i = first; i < grid.size(); i += step) {
-        MauchCylinderParams trial = model;
-        trial.switches = grid[i];
-        costs[i] = projectedResidual(trial, train).squaredNorm();
-      }
-    };
-    if (grid.size() > 1) {
-      auto other = std::async(std::launch::async, evaluate, 1, 2);
-      evaluate(0, 2);
-      other.get();
-    } else {
-      evaluate(0, 1);
-    }
+    const TrainingSet set(model, train);
+    const std::vector<double> costs = calcGridCosts(model, set, grid, grid.size() > 1 ? 2 : 1);
     for (std::size_t i = 0; i < grid.size(); ++i) starts.push_back({costs[i], grid[i]});
     if (options.progress) options.progress(total, total + static_cast<int>(kPolishedStarts));
     std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
@@ -365,12 +660,14 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
     settings.maxSeconds = 30.0;
     settings.functionTolerance = options.multiStart ? 1e-6 : 1e-5;
     settings.computeCovariance = false;
-    settings.differenceStep = 1e-6;
+    // The 2-phase model on 4-phase data has a curved, flat valley: monotone steps crept along
+    // it to the iteration budget from one of the three starts.
+    settings.nonmonotonicSteps = true;
     auto polish = [&](const MauchSwitchParams& from) {
-      ResidualFunction f = [&](const Eigen::VectorXd& x) {
-        MauchCylinderParams trial = model;
-        trial.switches = switchesFrom(model.switches, x.data(), latch);
-        return projectedResidual(trial, train);
+      ProjectedResidual projected(model, set);
+      ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) -> Eigen::VectorXd {
+        const MauchSwitchParams switches = switchesFrom(model.switches, x.data(), latch);
+        return jacobian ? projected.calc(switches, static_cast<int>(x.size()), *jacobian) : projected.calc(switches);
       };
       return solveBoundedLeastSquares(f, switchParameters(from, R, latch), settings);
     };
@@ -427,18 +724,30 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   if (out.switchesFitted)
     for (const auto& b : switchParameters(current.switches, options.ranges, latch)) all.push_back(b);
   if (out.switchesFitted && best.rank == static_cast<int>(p)) {
-    ResidualFunction f = [&](const Eigen::VectorXd& x) {
+    const TrainingSet set(current, train);
+    Eigen::MatrixXd X;
+    std::array<Eigen::MatrixXd, kSwitchConstants> dX;
+    // r = y - X(switches) b: d r / d b = -X, d r / d switch k = -(d X / d switch k) b.
+    ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) {
       MauchCylinderParams trial = current;
       setMauchCoefficientVector(trial, std::vector<double>(x.data(), x.data() + nLinear));
       trial.switches = switchesFrom(current.switches, x.data() + nLinear, latch);
-      return predictionResidual(trial, train);
+      Eigen::VectorXd residual = predictionResidual(trial, set, X);
+      if (jacobian) {
+        const Eigen::Index nl = static_cast<Eigen::Index>(nLinear);
+        jacobian->resize(X.rows(), x.size());
+        jacobian->leftCols(nl) = -X;
+        buildRegressorDerivatives(MauchCylinder(trial), set, dX);
+        const Eigen::Map<const Eigen::VectorXd> b(x.data(), nl);
+        for (Eigen::Index k = nl; k < x.size(); ++k) jacobian->col(k) = -(dX[static_cast<std::size_t>(k - nl)] * b);
+      }
+      return residual;
     };
     BoundedFitSettings settings;
     // Variable projection (with the active set) already found the joint optimum: only the
     // covariance of every constant at that point is needed.
     settings.maxIterations = 0;
     settings.maxSeconds = 30.0;
-    settings.differenceStep = 1e-6;
     const BoundedFitResult r = solveBoundedLeastSquares(f, all, settings);
     values.assign(r.x.data(), r.x.data() + r.x.size());
     errors.assign(r.standardErrors.data(), r.standardErrors.data() + r.standardErrors.size());

@@ -106,6 +106,21 @@ std::vector<std::string> mauchCoefficientNames(const MauchCylinderParams& params
 CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<BenchData>& train,
                         const CylinderFitOptions& options = {});
 
+/// The switch-constant fit's objective (variable projection): the training residual y - X b,
+/// N per sample, with the linear coefficients b fitted by least squares at `params`' switch
+/// constants (each file starting unlatched). With `jacobian`, also its exact derivative with
+/// respect to the velocity width, position width, xhy and latch rate (m/s, m, m, 1/s; one
+/// column each, Golub & Pereyra 1973), as the fit's Ceres polish uses it.
+Eigen::VectorXd calcProjectedResidual(const MauchCylinderParams& params, const std::vector<BenchData>& train,
+                                      Eigen::MatrixXd* jacobian = nullptr);
+
+/// The squared norm of calcProjectedResidual (N^2) at each set of switch constants of a
+/// multi-start grid, as the fit ranks its starts: switch values that grid points share
+/// (the same velocity width and latch rate, or the same position width and xhy) are computed
+/// once, on two threads.
+std::vector<double> calcSwitchGridCosts(const MauchCylinderParams& model, const std::vector<BenchData>& train,
+                                        const std::vector<MauchSwitchParams>& grid);
+
 /// Predicted force and switch traces of a cylinder along a bench file (S2 = 0 at start).
 CylinderTrace predictBench(const MauchCylinder& cylinder, const BenchData& data);
 

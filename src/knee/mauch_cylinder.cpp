@@ -6,11 +6,17 @@
 namespace swingsim {
 
 MauchSwitches calcMauchSwitches(double x, double xd, double s2, const MauchSwitchParams& sw) {
+  return combineMauchSwitches(0.5 + 0.5 * std::tanh(xd / sw.velocityWidth),                                // Eq. 4
+                              s2,                                                                           // Eq. 5
+                              0.5 + 0.5 * std::tanh((x - sw.hyperextensionPosition) / sw.positionWidth));  // Eq. 16
+}
+
+MauchSwitches combineMauchSwitches(double s1, double s2, double s8) {
   MauchSwitches s;
-  s.s1 = 0.5 + 0.5 * std::tanh(xd / sw.velocityWidth);                                // Eq. 4
-  s.s2 = s2;                                                                           // Eq. 5
-  s.s3 = 1.0 - s.s1 * (1.0 - s2);                                                      // Eq. 3
-  s.s8 = 0.5 + 0.5 * std::tanh((x - sw.hyperextensionPosition) / sw.positionWidth);  // Eq. 16
+  s.s1 = s1;
+  s.s2 = s2;
+  s.s3 = 1.0 - s.s1 * (1.0 - s2);  // Eq. 3
+  s.s8 = s8;
   s.s4 = s.s1 * (1.0 - s2) * s.s8;                                                     // Eq. 12
   s.s5 = (1.0 - s.s1) * s.s8;                                                          // Eq. 13
   s.s6 = s.s1 * s2 * s.s8;                                                             // Eq. 14
@@ -90,24 +96,39 @@ MauchCylinder::MauchCylinder(MauchCylinderParams params) : p_(std::move(params))
 }
 
 std::vector<double> MauchCylinder::calcGates(const MauchSwitches& s) const {
-  auto gates = calcPhaseGates(p_.phases, s);
-  if (p_.effects.hyperextensionPhase) {
-    // Chien 2014 Eq. 11: outside hyperextension the base phases, inside it the new one.
-    for (double& g : gates) g *= s.s8;
-    gates.push_back(s.s7);
-  }
+  std::vector<double> gates(static_cast<std::size_t>(numPhaseGates()));
+  calcGates(s, gates.data());
   return gates;
 }
 
+void MauchCylinder::calcGates(const MauchSwitches& s, double* gates) const {
+  if (p_.phases == 2) {
+    gates[0] = s.s1 * (1.0 - s.s2);  // Eq. 2: 1 - S3 = S1 (1 - S2)
+    gates[1] = s.s3;
+  } else {
+    // Eqs. 8-11 with phases 2 and 3 gated as the paper describes them (see header).
+    gates[0] = s.s4;
+    gates[1] = s.s6;
+    gates[2] = s.s5;
+    gates[3] = s.s7;
+  }
+  if (p_.effects.hyperextensionPhase) {
+    // Chien 2014 Eq. 11: outside hyperextension the base phases, inside it the new one.
+    for (int i = 0; i < p_.phases; ++i) gates[i] *= s.s8;
+    gates[p_.phases] = s.s7;
+  }
+}
+
 double MauchCylinder::calcForce(double x, double xd, double xdd, double s2) const {
-  const auto gates = calcGates(calcMauchSwitches(x, xd, s2, p_.switches));
+  double gates[kMaxGates];
+  calcGates(calcMauchSwitches(x, xd, s2, p_.switches), gates);
   double force = 0;
   for (int i = 0; i < p_.phases; ++i) {
     const auto& c = p_.coefficients[static_cast<std::size_t>(i)];
     force += gates[static_cast<std::size_t>(i)] * (c.f + c.k * x + c.c * xd);
   }
   const auto& e = p_.effects;
-  if (e.hyperextensionPhase) force += gates.back() * (e.hyperextension.f + e.hyperextension.k * x + e.hyperextension.c * xd);
+  if (e.hyperextensionPhase) force += gates[p_.phases] * (e.hyperextension.f + e.hyperextension.k * x + e.hyperextension.c * xd);
   if (e.coulombFriction) force += e.coulombForce * std::tanh(xd / e.coulombWidth);
   if (e.orificeQuadratic) force += e.orificeCoefficient * xd * std::fabs(xd);
   if (e.inertia) force += e.pistonMass * xdd;
@@ -116,20 +137,25 @@ double MauchCylinder::calcForce(double x, double xd, double xdd, double s2) cons
 }
 
 std::vector<double> MauchCylinder::calcRegressorRow(double x, double xd, double xdd, double s2) const {
-  const auto gates = calcGates(calcMauchSwitches(x, xd, s2, p_.switches));
-  std::vector<double> row;
-  row.reserve(static_cast<std::size_t>(numCoefficients()));
-  for (double g : gates) {
-    row.push_back(g);
-    row.push_back(g * x);
-    row.push_back(g * xd);
+  std::vector<double> row(static_cast<std::size_t>(numCoefficients()));
+  calcRegressorRow(x, xd, xdd, s2, row.data());
+  return row;
+}
+
+void MauchCylinder::calcRegressorRow(double x, double xd, double xdd, double s2, double* row) const {
+  double gates[kMaxGates];
+  calcGates(calcMauchSwitches(x, xd, s2, p_.switches), gates);
+  const int numGates = numPhaseGates();
+  for (int i = 0; i < numGates; ++i) {
+    *row++ = gates[i];
+    *row++ = gates[i] * x;
+    *row++ = gates[i] * xd;
   }
   const auto& e = p_.effects;
-  if (e.coulombFriction) row.push_back(std::tanh(xd / e.coulombWidth));
-  if (e.orificeQuadratic) row.push_back(xd * std::fabs(xd));
-  if (e.inertia) row.push_back(xdd);
-  if (e.positionDependentDamping) row.push_back(x * xd);
-  return row;
+  if (e.coulombFriction) *row++ = std::tanh(xd / e.coulombWidth);
+  if (e.orificeQuadratic) *row++ = xd * std::fabs(xd);
+  if (e.inertia) *row++ = xdd;
+  if (e.positionDependentDamping) *row++ = x * xd;
 }
 
 std::vector<double> MauchCylinder::getCoefficientVector() const {

@@ -84,6 +84,9 @@ struct MauchSwitches {
 
 /// Switch values at piston position x (m), velocity xd (m/s) and latch state s2.
 MauchSwitches calcMauchSwitches(double x, double xd, double s2, const MauchSwitchParams& sw);
+/// The same from S1 (Eq. 4), S2 and S8 (Eq. 16) already computed: the products of Eqs. 3,
+/// 12-15 (calcMauchSwitches uses it; the switch-constant fit reuses S1 and S8 between starts).
+MauchSwitches combineMauchSwitches(double s1, double s2, double s8);
 
 /// dS2/dt (1/s), Chien 2014 Eq. 6: k (1 - S1) [1/2 - 1/2 tanh((x - xhy)/x0) - S2].
 double calcLatchDerivative(double x, double xd, double s2, const MauchSwitchParams& sw);
@@ -118,6 +121,11 @@ class MauchCylinder final : public KneeLaw {
   int numPhaseGates() const { return p_.phases + (p_.effects.hyperextensionPhase ? 1 : 0); }
   /// Phase gates at these switch values (calcPhaseGates, with an added hyperextension phase).
   std::vector<double> calcGates(const MauchSwitches& s) const;
+  /// Most phase gates a model has (4 phases, or 2 plus an added hyperextension phase).
+  static constexpr int kMaxGates = 4;
+  /// The same gates written to gates[0 .. numPhaseGates()), without allocating (the fit
+  /// builds its regression thousands of times).
+  void calcGates(const MauchSwitches& s, double* gates) const;
 
   /// Cylinder force (N, positive resists compression) at piston position x (m), velocity
   /// xd (m/s) and latch S2: sum over phases of gate * (f + k x + c xd) (Eqs. 2, 7-11), plus
@@ -130,6 +138,8 @@ class MauchCylinder final : public KneeLaw {
   /// xdd, x xd), so that calcForce = row . getCoefficientVector(). Size numCoefficients().
   std::vector<double> calcRegressorRow(double x, double xd, double s2) const { return calcRegressorRow(x, xd, 0.0, s2); }
   std::vector<double> calcRegressorRow(double x, double xd, double xdd, double s2) const;
+  /// The same row written to row[0 .. numCoefficients()), without allocating.
+  void calcRegressorRow(double x, double xd, double xdd, double s2, double* row) const;
   /// Coefficients flattened in the regressor's order.
   std::vector<double> getCoefficientVector() const;
 

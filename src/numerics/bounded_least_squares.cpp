@@ -63,6 +63,54 @@ ceres::CostFunction* makeNumericCost(const ResidualFunction& f, const std::vecto
   return c;
 }
 
+// The residuals for Ceres at scaled coordinates with the function's own Jacobian, converted
+// to the scaled coordinates (d value / d u per column).
+class AnalyticScaledCost final : public ceres::CostFunction {
+ public:
+  AnalyticScaledCost(const ResidualJacobianFunction& f, const std::vector<BoundedParameter>& ps, Eigen::Index m)
+      : f_(f), ps_(ps), m_(m) {
+    set_num_residuals(static_cast<int>(m));
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(ps.size()));
+  }
+  bool Evaluate(double const* const* u, double* r, double** jacobians) const override {
+    try {
+      const bool wantJacobian = jacobians != nullptr && jacobians[0] != nullptr;
+      Eigen::MatrixXd J;
+      const Eigen::VectorXd res = f_(toValues(ps_, u[0]), wantJacobian ? &J : nullptr);
+      const Eigen::Index n = static_cast<Eigen::Index>(ps_.size());
+      if (res.size() != m_ || (wantJacobian && (J.rows() != m_ || J.cols() != n))) return false;
+      for (Eigen::Index i = 0; i < m_; ++i) {
+        if (!std::isfinite(res[i])) return false;
+        r[i] = res[i];
+      }
+      if (wantJacobian) {
+        for (Eigen::Index k = 0; k < n; ++k) {
+          const double d = scaledDerivative(ps_[static_cast<std::size_t>(k)], u[0][k]);
+          for (Eigen::Index i = 0; i < m_; ++i) {
+            const double v = J(i, k) * d;
+            if (!std::isfinite(v)) return false;
+            jacobians[0][i * n + k] = v;  // row-major
+          }
+        }
+      }
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+
+ private:
+  const ResidualJacobianFunction& f_;
+  const std::vector<BoundedParameter>& ps_;
+  Eigen::Index m_;
+};
+
+// The solve shared by both fronts: `makeCost(m)` gives the Ceres cost for m residuals, `f0`
+// the residual at a point (for the start, and the reason a point cannot run).
+template <class MakeCost, class Residual>
+BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f0, const std::vector<BoundedParameter>& parameters,
+                             const BoundedFitSettings& settings);
+
 }  // namespace
 
 Eigen::MatrixXd BoundedFitResult::correlation() const {
@@ -74,6 +122,28 @@ Eigen::MatrixXd BoundedFitResult::correlation() const {
 
 BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::vector<BoundedParameter>& parameters,
                                           const BoundedFitSettings& settings) {
+  ceres::NumericDiffOptions diff;
+  diff.relative_step_size = settings.differenceStep;
+  const auto makeCost = [&](Eigen::Index m) {
+    return settings.centralDifferences ? makeNumericCost<ceres::CENTRAL>(f, parameters, m, diff)
+                                       : makeNumericCost<ceres::FORWARD>(f, parameters, m, diff);
+  };
+  return solveScaled(makeCost, f, parameters, settings);
+}
+
+BoundedFitResult solveBoundedLeastSquares(const ResidualJacobianFunction& f,
+                                          const std::vector<BoundedParameter>& parameters,
+                                          const BoundedFitSettings& settings) {
+  const auto makeCost = [&](Eigen::Index m) -> ceres::CostFunction* { return new AnalyticScaledCost(f, parameters, m); };
+  const auto f0 = [&](const Eigen::VectorXd& x) { return f(x, nullptr); };
+  return solveScaled(makeCost, f0, parameters, settings);
+}
+
+namespace {
+
+template <class MakeCost, class Residual>
+BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const std::vector<BoundedParameter>& parameters,
+                             const BoundedFitSettings& settings) {
   const std::size_t n = parameters.size();
   std::vector<double> u(n), lo(n), hi(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -92,11 +162,7 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
 
   ceres::Problem::Options problemOptions;
   ceres::Problem problem(problemOptions);
-  ceres::NumericDiffOptions diff;
-  diff.relative_step_size = settings.differenceStep;
-  ceres::CostFunction* cost = settings.centralDifferences ? makeNumericCost<ceres::CENTRAL>(f, parameters, m, diff)
-                                                          : makeNumericCost<ceres::FORWARD>(f, parameters, m, diff);
-  problem.AddResidualBlock(cost, nullptr, u.data());
+  problem.AddResidualBlock(makeCost(m), nullptr, u.data());
   for (std::size_t k = 0; k < n; ++k) {
     if (std::isfinite(lo[k])) problem.SetParameterLowerBound(u.data(), static_cast<int>(k), lo[k]);
     if (std::isfinite(hi[k])) problem.SetParameterUpperBound(u.data(), static_cast<int>(k), hi[k]);
@@ -110,6 +176,7 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
   options.logging_type = ceres::SILENT;
   options.minimizer_progress_to_stdout = false;
   options.num_threads = 1;
+  options.use_nonmonotonic_steps = settings.nonmonotonicSteps;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
 
@@ -165,6 +232,8 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
   }
   return out;
 }
+
+}  // namespace
 
 std::vector<std::pair<int, int>> findCollinearPairs(const Eigen::MatrixXd& correlation, double limit) {
   std::vector<std::pair<int, int>> pairs;

@@ -1,7 +1,8 @@
 #pragma once
 // Bounded nonlinear least squares, a thin front end to Ceres Solver (trust region,
-// Levenberg-Marquardt strategy, numeric Jacobian): for residual functions that run a
-// simulation or a regression (the swing plant's refits, the Mauch switch constants), with
+// Levenberg-Marquardt strategy, numeric Jacobian or the caller's exact one): for residual
+// functions that run a simulation or a regression (the swing plant's refits, the Mauch
+// switch constants), with
 // bounds from physics, an iteration and wall-clock budget, and the parameter covariance
 // from the Jacobian at the solution (Ceres' Jacobian, pseudo-inverse by SVD).
 #include <Eigen/Dense>
@@ -39,6 +40,10 @@ struct BoundedFitSettings {
   double functionTolerance = 1e-9;  ///< relative cost fall that ends the iterations
   double parameterTolerance = 1e-9;
   bool computeCovariance = true;
+  /// Ceres' non-monotonic steps (Conn, Gould & Toint, Trust-Region Methods, Sec. 10.1): a
+  /// step may raise the cost a little if the iterations as a whole fall, which crosses
+  /// curved, narrow valleys in fewer iterations.
+  bool nonmonotonicSteps = false;
 };
 
 struct BoundedFitResult {
@@ -60,6 +65,18 @@ struct BoundedFitResult {
 /// Minimises |f(x)|^2 over the box given by `parameters` from their start values. Starts
 /// outside the bounds are moved onto them. Throws RunError if f cannot run at the start.
 BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::vector<BoundedParameter>& parameters,
+                                          const BoundedFitSettings& settings = {});
+
+/// Residual vector at a parameter vector and, when `jacobian` is not null, its Jacobian
+/// d residual / d x (residuals x parameters, in the parameters' own units) written there.
+/// May throw as ResidualFunction.
+using ResidualJacobianFunction = std::function<Eigen::VectorXd(const Eigen::VectorXd&, Eigen::MatrixXd* jacobian)>;
+
+/// The same with the residual function's own (analytic) Jacobian instead of numeric
+/// differences: one evaluation per Jacobian instead of one per parameter plus one
+/// (settings.differenceStep and centralDifferences are not used).
+BoundedFitResult solveBoundedLeastSquares(const ResidualJacobianFunction& f,
+                                          const std::vector<BoundedParameter>& parameters,
                                           const BoundedFitSettings& settings = {});
 
 /// Pairs (i, j), i < j, whose correlation magnitude exceeds `limit`, strongest first.

@@ -77,6 +77,14 @@ struct SwingLog {
       add("swing_end", candidateTime);
     }
   }
+  // The knee can no longer leave the zone (SwingOptions::earlySettleEnd): the candidate is
+  // the end, as the full dwell would have confirmed.
+  void endAtCandidate() {
+    if (ended || !candidate) return;
+    ended = true;
+    endTime = candidateTime;
+    add("swing_end", candidateTime);
+  }
   void checkCandidate(double t) {
     if (!ended && !candidate && thighReached && kneeInZone) {
       candidate = true;
@@ -389,6 +397,30 @@ const JointStop* findKneeStop(const KneeLaw& law) {
   return nullptr;
 }
 
+// The early end of the settle dwell (SwingOptions::earlySettleEnd): fraction of the present
+// free acceleration assumed to hold the knee on its stop for the rest of the dwell. With the
+// hip moment constant the leg moves as a passive double pendulum, whose holding moment
+// changes with the thigh angle (sin of it, about) over the dwell's tenths of a second:
+// P1's falls by a few percent there.
+constexpr double kHoldFraction = 0.5;
+
+// Whether the knee, at step end `e` in the zone, can no longer climb out of it. Treated as
+// one degree of freedom with the thigh free: its acceleration without the knee laws
+// (a_free = knee acceleration - mu x knee law moment, mu = (M^-1)_knee,knee in
+// 1/(kg m^2)) presses it onto the stop (a_free < 0); the resisting laws (damping, friction)
+// only take energy; the stop gives back at most what its loading spring stores,
+// k p^2.5 / 2.5 (JointStop). To reach the zone edge the knee needs
+// 1/2 rate^2 + mu x stored >= kHoldFraction |a_free| (edge - engage angle).
+bool isSettled(const StepEnd& e, const JointStopParams& stop, double zone, double mu) {
+  if (!(e.knee < stop.lower && e.kneeRate >= 0)) return false;  // on the stop, coming out or at rest
+  const double freeAcceleration = e.kneeAcc - mu * e.kneeMoment;  // rad/s^2
+  if (!(freeAcceleration < 0)) return false;
+  const double p = stop.lower - e.knee;
+  const double stored = stop.stiffness * p * p * std::sqrt(p) / 2.5;  // J
+  const double energy = 0.5 * e.kneeRate * e.kneeRate + mu * stored;  // (rad/s)^2 / 2 per unit inertia
+  return energy < kHoldFraction * -freeAcceleration * (zone - stop.lower);
+}
+
 // Contacts of the knee with its hyperextension stop, from the step ends and their Hermite
 // interpolants (as the fast path's events). It only reports; the swing end does not use it.
 class StopImpactTracker {
@@ -554,12 +586,8 @@ class DormandPrinceStepper final : public SwingStepper {
     checkpointTime_ = dp_->getTime();
     checkpoint_.assign(dp_->getState(), dp_->getState() + ode_.numStates());
   }
-  /// Goes on from the current step end at a new accuracy.
-  void changeAccuracy(double accuracy) {
-    stepsBefore_ += static_cast<int>(dp_->getNumSteps());
-    std::copy(dp_->getState(), dp_->getState() + ode_.numStates(), y_.begin());
-    start(dp_->getTime(), accuracy);
-  }
+  /// Goes on from the current step end at a new accuracy (the step size scaled to it).
+  void changeAccuracy(double accuracy) { dp_->changeTolerances(accuracy, accuracy); }
   /// Goes back to the checkpoint and on from there at `accuracy`.
   void restoreCheckpoint(double accuracy) {
     stepsBefore_ += static_cast<int>(dp_->getNumSteps());
@@ -733,6 +761,14 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   const double looseAccuracy = std::min(options.accuracy * options.dwellAccuracyFactor, kLoosestDwellAccuracy);
   const bool looseDwellAllowed = dormandPrince != nullptr && !trackEnergy && looseAccuracy > options.accuracy;
   const double zone = rule.zoneOfStability;
+  // The early settle end (SwingOptions::earlySettleEnd) needs the stop and a hip moment that
+  // no longer changes: from the profile's last breakpoint on it is constant.
+  const JointStop* kneeStop = findKneeStop(*setup.knee);
+  const std::vector<double> hipBreakpoints = p.hipMoment.calcBreakpoints();
+  const double hipMomentConstantFrom = hipBreakpoints.empty() ? 0.0 : hipBreakpoints.back();
+  // Not with the measured thigh drive: the prescribed thigh keeps moving.
+  const bool earlyEndAllowed = options.earlySettleEnd && dormandPrince != nullptr && !trackEnergy && kneeStop != nullptr &&
+                               kneeStop->params().lower < zone && !thighMotion;
   const auto wallStart = std::chrono::steady_clock::now();
   // What to change when a budget runs out: the same advice for both budgets.
   const auto overBudget = [&](const std::string& what, const State& s) {
@@ -806,7 +842,18 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       candidateTime = log.candidateTime;
       result.realizationsToEnd = stepper->getNumRealizations();
     }
-    if (log.ended) break;
+    if (!log.ended && earlyEndAllowed && log.candidate && now.t >= hipMomentConstantFrom && now.t == s.getTime() &&
+        now.knee < kneeStop->params().lower) {
+      // mu = (M^-1)_knee,knee: the knee's acceleration per unit knee moment, thigh free.
+      Vector unitKneeForce(s.getNU(), 0.0), response;
+      unitKneeForce[1] = 1.0;
+      leg.getMatter().multiplyByMInv(s, unitKneeForce, response);
+      if (isSettled(now, kneeStop->params(), zone, response[1])) log.endAtCandidate();
+    }
+    if (log.ended) {
+      result.endDecidedTime = now.t;
+      break;
+    }
     if (looseDwellAllowed && !loose && log.candidate && log.candidateTime != tightenedFor &&
         log.candidateTime != checkpoint.candidateTime) {
       // The knee has entered the zone: integrate the dwell loosely from here, keeping what is

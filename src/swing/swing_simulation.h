@@ -68,6 +68,21 @@ struct SwingOptions {
   /// before the end rule is met returns what it has, with swingTime NaN, instead of throwing
   /// RunError (a model run along a measured trial cut at heel contact).
   bool requireSwingEnd = true;
+  /// Fast path (Dormand-Prince) only: end the settle dwell as soon as the knee cannot leave
+  /// the zone before the dwell would end, instead of integrating the whole dwell. Decided at
+  /// a step end where the hip moment has reached its final constant value (past the
+  /// profile's last breakpoint), the knee is on its hyperextension stop coming out of it or
+  /// at rest (flexion below the stop's engage angle, rate >= 0), and the energy it has (its
+  /// rate and what the stop has stored) cannot lift it to the zone's edge against half the
+  /// acceleration that presses it onto the stop now (see simulateSwing's isSettled). Swing
+  /// time, events, bounces and bounce height are those of the full dwell (tests/swing/
+  /// settle_dwell_test.cpp, every lowering of the four Burkett participants, bouncy knees
+  /// included); the trajectory and the stop contacts end where the end was decided (a
+  /// contact still open there is closed as at the end of a dwell). Off with
+  /// trackImpactEnergy (the impact bookkeeping wants the whole dwell) and with the
+  /// measured thigh drive (the prescribed thigh keeps moving; the rule assumes a constant
+  /// hip moment).
+  bool earlySettleEnd = true;
   /// Energy bookkeeping of each stop impact (StopImpact::work): integrates the work of every
   /// knee law part and of the hip as extra states (a little slower; off in sweeps).
   bool trackImpactEnergy = false;
@@ -131,6 +146,9 @@ struct SwingResult {
   int realizations = 0;            ///< system realizations the integrator asked for
   int realizationsToEnd = 0;       ///< of which up to the step where the swing ended (the rest: the settle dwell)
   int looseDwellRetries = 0;       ///< loose settle dwells redone at full accuracy (SwingOptions::dwellAccuracyFactor)
+  /// s since toe-off when the end was decided: the swing end plus the settle dwell, or
+  /// earlier where the knee could no longer leave the zone (SwingOptions::earlySettleEnd)
+  double endDecidedTime = 0;
 };
 
 /// The participant-level inputs one swing needs, after loading.

@@ -113,6 +113,71 @@ TEST(CylinderFit, ProfilingSwitchesFindsTheGeneratingWidths) {
   EXPECT_LT(fit.regression.residualRms, 1e-6);  // ... the right ones fit exactly
 }
 
+// The polish's analytic Jacobian of the projected residual against central differences of
+// the residual itself, for both models, at switch constants away from the model files'
+// (so nothing is at an optimum where a wrong term could vanish).
+TEST(CylinderFit, ProjectedResidualJacobianMatchesFiniteDifferences) {
+  // Central differences at a relative step of 1e-5 are accurate to about step^2 (1e-10)
+  // relative plus round-off 1e-16 / 1e-5 of the residual's size: far below this bound.
+  constexpr double kJacobianTol = 1e-6;
+  constexpr double kRelativeStep = 1e-5;
+  // Round-off of one residual evaluation relative to its size (a QR of ~1800 rows is good to
+  // ~1e-13): divided by the step it bounds the differences' round-off error, generously.
+  constexpr double kResidualRoundOff = 1e-9;
+  const auto truth = model("mauch-4phase.yaml");
+  const auto data = makeBench(truth, 0.987, 1.0, kNoise, 5, "normal");
+  for (const char* file : {"mauch-4phase.yaml", "mauch-2phase.yaml"}) {
+    auto params = model(file);
+    params.switches.velocityWidth *= 3.0;
+    params.switches.positionWidth *= 0.5;
+    params.switches.hyperextensionPosition += 2e-4;
+    params.switches.latchRate = 300.0;
+    Eigen::MatrixXd jacobian;
+    const Eigen::VectorXd r = calcProjectedResidual(params, {data}, &jacobian);
+    ASSERT_EQ(jacobian.rows(), r.size());
+    ASSERT_EQ(jacobian.cols(), 4);
+    EXPECT_EQ(r, calcProjectedResidual(params, {data}));  // the same residual with or without it
+    double* constants[] = {&params.switches.velocityWidth, &params.switches.positionWidth,
+                           &params.switches.hyperextensionPosition, &params.switches.latchRate};
+    for (int k = 0; k < 4; ++k) {
+      const double v = *constants[k], h = kRelativeStep * std::max(std::fabs(v), 1e-3);
+      *constants[k] = v + h;
+      const Eigen::VectorXd up = calcProjectedResidual(params, {data});
+      *constants[k] = v - h;
+      const Eigen::VectorXd down = calcProjectedResidual(params, {data});
+      *constants[k] = v;
+      const Eigen::VectorXd numeric = (up - down) / (2 * h);
+      ASSERT_GT(numeric.norm(), 0.0) << file << " constant " << k;
+      EXPECT_LT((jacobian.col(k) - numeric).norm(), kJacobianTol * numeric.norm() + kResidualRoundOff * r.norm() / h)
+          << file << " constant " << k << ": analytic " << jacobian.col(k).norm() << ", numeric " << numeric.norm();
+    }
+  }
+}
+
+// The multi-start grid's shortcut (switch values shared between starts computed once) ranks
+// the starts by the same costs as the projected residual itself.
+TEST(CylinderFit, GridCostsAreTheProjectedResidualsSquaredNorms) {
+  constexpr double kSameCost = 1e-12;  // relative: only the order of sums differs, if anything
+  const auto truth = model("mauch-4phase.yaml");
+  const std::vector<BenchData> train = {makeBench(truth, 0.987, 1.0, kNoise, 6, "normal"),
+                                        makeBench(truth, 1.19, 0.9, kNoise, 7, "slow")};
+  for (const char* file : {"mauch-4phase.yaml", "mauch-2phase.yaml"}) {
+    auto params = model(file);
+    std::vector<MauchSwitchParams> grid;
+    for (double vw : {2e-4, 3e-3})
+      for (double pw : {1e-5, 4e-4, 1e-3})
+        for (double xhy : {-1e-4, 3e-4})
+          for (double k : {20.0, 2e4}) grid.push_back({vw, pw, xhy, k});
+    const std::vector<double> costs = calcSwitchGridCosts(params, train, grid);
+    ASSERT_EQ(costs.size(), grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      params.switches = grid[i];
+      const double direct = calcProjectedResidual(params, train).squaredNorm();
+      EXPECT_NEAR(costs[i], direct, kSameCost * direct) << file << " grid point " << i;
+    }
+  }
+}
+
 TEST(LeastSquares, ReportsRankDeficiencyAndConditioning) {
   Eigen::MatrixXd X(5, 3);
   X << 1, 0, 2, 1, 0, 2, 1, 0, 2, 1, 0, 2, 1, 0, 2;  // column 2 = 2 x column 0, column 1 zero

@@ -75,6 +75,27 @@ TEST(DormandPrince, GlobalErrorFollowsTheTolerance) {
   }
 }
 
+// Loosening the tolerances mid-run (the swing's loose settle dwell) goes on from the step
+// end without a new start: no extra evaluation, the error after the change follows the new
+// tolerance, and the steps grow.
+TEST(DormandPrince, ChangedTolerancesGoOnFromTheStepEnd) {
+  constexpr double kGlobalErrorFactor = 10;  // as GlobalErrorFollowsTheTolerance
+  constexpr double kTight = 1e-10, kLoose = 1e-5;
+  Oscillator osc(2 * kPiTest);
+  DormandPrince dp(osc, kTight, kTight);
+  const double y0[2] = {1, 0};
+  dp.initialize(0, y0);
+  dp.integrateTo(1.0);
+  const long evaluations = dp.getNumEvaluations(), steps = dp.getNumSteps();
+  dp.changeTolerances(kLoose, kLoose);
+  EXPECT_EQ(dp.getNumEvaluations(), evaluations);
+  dp.integrateTo(2.0);
+  EXPECT_EQ(dp.getTime(), 2.0);
+  EXPECT_NEAR(dp.getState()[0], 1.0, kGlobalErrorFactor * kLoose);  // two full periods
+  EXPECT_LT(dp.getNumSteps() - steps, steps / 2) << "the second second at 1e-5, the first at 1e-10";
+  EXPECT_THROW(dp.changeTolerances(0, 1e-8), std::invalid_argument);
+}
+
 TEST(DormandPrince, TighterToleranceTakesMoreStepsAtFifthOrderRate) {
   // For a 5th-order pair the step count grows like tol^(-1/5): 1e-4 tighter -> ~6.3x steps.
   constexpr double kMinRatio = 3, kMaxRatio = 12;  // loose bracket around 10^(4/5) = 6.3

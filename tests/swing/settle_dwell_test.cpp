@@ -1,0 +1,132 @@
+// The settle dwell's early end (SwingOptions::earlySettleEnd): ending the dwell once the
+// knee can no longer leave the zone must give the swing the full dwell gives, on every
+// lowering of the four Burkett participants, with their knees and with bouncy ones.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "study/sweep_study.h"
+#include "swing/knee_setup.h"
+#include "swing/sweep.h"
+#include "swing/swing_simulation.h"
+
+namespace swingsim {
+namespace {
+
+// A knee variant of the sweep: the participant's knee model with a stop restitution and
+// with or without the knee friction near extension (which takes a rebound's energy).
+struct KneeVariant {
+  const char* name;
+  double restitution;  // < 0: the model's own
+  bool friction;
+};
+
+struct Outcome {
+  bool ok = false;
+  std::string failure;
+  SwingResult result;
+};
+
+Outcome run(const SwingSetup& setup, const SwingOptions& options) {
+  Outcome o;
+  try {
+    o.result = simulateSwing(setup, options);
+    o.ok = true;
+  } catch (const std::exception& e) {
+    o.failure = e.what();
+  }
+  return o;
+}
+
+TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees) {
+  const SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
+  const KneeVariant variants[] = {{"as published", -1, true}, {"restitution 0.9, no friction", 0.9, false},
+                                  {"restitution 0.6, no friction", 0.6, false}};
+  SwingOptions early;
+  early.recordTrajectory = false;
+  SwingOptions full = early;
+  full.earlySettleEnd = false;
+  int compared = 0, bouncing = 0;
+  for (const KneeVariant& v : variants) {
+    int swings = 0, endedEarly = 0;
+    long realizationsEarly = 0, realizationsFull = 0;
+    for (const Participant& base : study.participants) {
+      Participant p = base;
+      if (!v.friction) p.kneeFriction = 0;
+      const KneeModel& published = findStudyKneeModel(study, base);
+      KneeModelSpec spec = published.spec;
+      if (v.restitution >= 0) spec.stop.restitution = v.restitution;
+      const KneeLawSum knee =
+          makeKneeLaw(p, KneeModel{published.path, published.name, published.kind, makeKneeModelLaw(spec), spec});
+      for (double lowering : sweepLowerings(study, p)) {
+        SCOPED_TRACE(p.name + " at " + std::to_string(lowering) + " m, " + v.name);
+        SwingSetup setup;
+        setup.participant = p;
+        setup.knee = &knee;
+        setup.lowering = lowering;
+        const Outcome a = run(setup, early), b = run(setup, full);
+        ASSERT_EQ(a.ok, b.ok) << a.failure << b.failure;
+        if (!a.ok) continue;
+        const SwingResult &x = a.result, &y = b.result;
+        ++compared;
+        ++swings;
+        endedEarly += x.endDecidedTime < y.endDecidedTime;
+        bouncing += y.bounces > 0;
+        realizationsEarly += x.realizations;
+        realizationsFull += y.realizations;
+        // The same swing, exactly: the early end only stops integrating after the decision.
+        EXPECT_EQ(x.swingTime, y.swingTime);
+        EXPECT_EQ(x.bounces, y.bounces);
+        EXPECT_EQ(x.bounce, y.bounce);
+        EXPECT_EQ(x.bounceHeight, y.bounceHeight);
+        EXPECT_EQ(x.peakKneeFlexion, y.peakKneeFlexion);
+        EXPECT_EQ(x.minToeClearance, y.minToeClearance);
+        EXPECT_EQ(x.looseDwellRetries, y.looseDwellRetries);
+        ASSERT_EQ(x.events.size(), y.events.size());
+        for (std::size_t i = 0; i < x.events.size(); ++i) {
+          EXPECT_EQ(x.events[i].name, y.events[i].name);
+          EXPECT_EQ(x.events[i].time, y.events[i].time) << x.events[i].name;
+        }
+        // The terminal impact (the first stop contact after the last entry) up to its
+        // deepest point is decided before the early end.
+        ASSERT_EQ(x.impacts.empty(), y.impacts.empty());
+        if (!x.impacts.empty()) {
+          EXPECT_EQ(x.impacts.front().impactRate, y.impacts.front().impactRate);
+          EXPECT_EQ(x.impacts.front().maxPenetration, y.impacts.front().maxPenetration);
+        }
+        EXPECT_LE(x.endDecidedTime, y.endDecidedTime);
+        EXPECT_LE(x.realizations, y.realizations);
+      }
+    }
+    std::printf("early settle end, knee %s: %d swings, %d ended early; realizations %ld -> %ld\n", v.name, swings,
+                endedEarly, realizationsFull, realizationsEarly);
+    // And it is a lever where the knee comes to rest on its stop: on the published knees
+    // (no bounce) most swings end early (not asserting a speed, only that it acts).
+    if (v.restitution < 0) {
+      EXPECT_GT(endedEarly, swings / 2) << v.name;
+    }
+  }
+  EXPECT_GT(bouncing, 10) << "the bouncy variants must bounce";
+}
+
+// Off (the full dwell) the end is decided at the swing end plus the dwell, as before.
+TEST(SettleDwell, FullDwellIsDecidedOneDwellAfterTheSwingEnd) {
+  const Participant p = loadParticipant("participants/p1.yaml");
+  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  SwingSetup setup;
+  setup.participant = p;
+  setup.knee = &knee;
+  SwingOptions full;
+  full.earlySettleEnd = false;
+  const SwingResult r = simulateSwing(setup, full);
+  EXPECT_GE(r.endDecidedTime, r.swingTime + p.swingEnd.settleDwell);
+  const SwingResult e = simulateSwing(setup);
+  EXPECT_LT(e.endDecidedTime, r.endDecidedTime) << "P1 at the standard location rests on its stop well before";
+  EXPECT_GT(e.endDecidedTime, e.swingTime);
+}
+
+}  // namespace
+}  // namespace swingsim
