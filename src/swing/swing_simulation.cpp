@@ -872,7 +872,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     if (!log.ended && (now.t >= timeLimit - 1e-12 || !more)) {
       std::string cause;
       if (thighMotion && timeLimit < rule.timeLimit)
-        cause = "the measured thigh motion (" + p.thighKinematics.path + ") ends at " + formatNumber(timeLimit) +
+        cause = "the measured thigh motion (" + (p.thighKinematics.path.empty() ? std::string("given in code") : p.thighKinematics.path) +
+                ") ends at " + formatNumber(std::round(timeLimit * 1e4) / 1e4) +
                 " s, before the swing ended (it needs the thigh at its target, the knee back in the zone and the settle "
                 "dwell of " + formatNumber(rule.settleDwell) + " s): give a longer trial, or a shorter settle_dwell_s; ";
       if (!log.thighReached)
@@ -889,7 +890,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
         cause += "the knee never came back inside the zone of stability (< " +
                 formatNumber(std::round(rule.zoneOfStability * kRadToDeg * 10) / 10) + " deg) after its peak (knee resistance too high, or the hip extension moment too weak?)";
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing did not end within the time limit of " +
-                     formatNumber(timeLimit) + " s; " + describeState(leg, s) + "; " + cause);
+                     formatNumber(std::round(timeLimit * 1e4) / 1e4) + " s; " + describeState(leg, s) + "; " + cause);
     }
     if (!more) break;
   }
