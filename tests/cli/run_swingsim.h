@@ -60,4 +60,16 @@ inline std::filesystem::path freshTempDir(const std::string& suite, const std::s
   return dir;
 }
 
+/// `dir/tiny.yaml`: a knee-axis sweep of P1 alone at lowerings 0 to `maxLowering` m in
+/// 0.05 m steps (no Table 4 extras), plus the YAML lines `extra`; for the sweep's CLI tests.
+inline std::filesystem::path writeTinySweepStudy(const std::filesystem::path& dir, double maxLowering,
+                                                 const std::string& extra) {
+  const auto path = dir / "tiny.yaml";
+  std::ofstream(path) << "kind: knee-axis-sweep\nname: tiny\nparticipants: [" << SWINGSIM_SOURCE_DIR
+                      << "/participants/p1.yaml]\nlowering: {step_m: 0.05, max_m: " << maxLowering
+                      << ", include_published: false}\n"
+                      << extra;
+  return path;
+}
+
 }  // namespace swingsim::testing

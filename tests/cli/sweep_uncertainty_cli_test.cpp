@@ -20,14 +20,9 @@ using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::slurp;
 
-const std::string kRoot = SWINGSIM_SOURCE_DIR;
 
 std::filesystem::path writeTinyStudy(const std::filesystem::path& dir, const std::string& extra) {
-  const auto path = dir / "tiny.yaml";
-  std::ofstream(path) << "kind: knee-axis-sweep\nname: tiny\nparticipants: [" << kRoot
-                      << "/participants/p1.yaml]\nlowering: {step_m: 0.05, max_m: 0.2, include_published: false}\n"
-                      << extra;
-  return path;
+  return swingsim::testing::writeTinySweepStudy(dir, 0.2, extra);
 }
 
 TEST(SweepUncertaintyCli, WritesIntervalsSensitivityAndTornado) {

@@ -36,11 +36,7 @@ const std::string kRoot = SWINGSIM_SOURCE_DIR;
 const std::string kSuite = "swingsim-uncertainty-shards";
 
 fs::path writeTinyStudy(const fs::path& dir) {
-  const auto path = dir / "tiny.yaml";
-  std::ofstream(path) << "kind: knee-axis-sweep\nname: tiny\nparticipants: [" << kRoot
-                      << "/participants/p1.yaml]\nlowering: {step_m: 0.05, max_m: 0.1, include_published: false}\n"
-                      << "output_dir: " << (dir / "default-out").string() << "\n";
-  return path;
+  return swingsim::testing::writeTinySweepStudy(dir, 0.1, "output_dir: " + (dir / "default-out").string() + "\n");
 }
 
 // Sets an environment variable for the runs of one scope (popen passes it on).
