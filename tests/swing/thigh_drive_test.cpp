@@ -19,6 +19,7 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "leg/thigh_motion.h"
+#include "swing/calibration.h"
 #include "swing/knee_setup.h"
 #include "swing/reference_swing.h"
 #include "swing/swing_simulation.h"
@@ -203,6 +204,21 @@ TEST(ThighDrive, RoundTripGivesBackTheKneeAndTheAppliedHipMoment) {
   EXPECT_LT(preMoment, 0.02 * momentPeak);
   EXPECT_LT(postMoment, 0.02 * momentPeak);
   EXPECT_NEAR(thigh.swingTime, moment.swingTime, 1e-4);
+}
+
+TEST(ThighDrive, CalibrationRefusesAThighDrivenParticipant) {
+  // No hip moment, so no time scale to calibrate: said, not silently "calibrated".
+  const Participant p = load("winter");
+  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  SwingSetup setup;
+  setup.participant = p;
+  setup.knee = &law;
+  try {
+    calibrateHipTimeScale(setup, 0.4);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("thigh_kinematics"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ThighDrive, ParticipantFileNamesItsThighKinematics) {
