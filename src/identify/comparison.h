@@ -61,8 +61,6 @@ struct HeldBackComparison {
   double rmse = 0, correlation = 0;  ///< over every sample of every record
 };
 
-/// Pearson's correlation coefficient of two equal-length series; NaN if either is constant.
-double calcCorrelation(const std::vector<double>& a, const std::vector<double>& b);
 /// Fills each record's and the overall RMSE and correlation.
 void finishHeldBackComparison(HeldBackComparison& comparison);
 

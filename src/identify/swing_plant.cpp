@@ -25,6 +25,9 @@ std::string fmt(double v, const char* f = "%.3g") {
   return buf;
 }
 
+// The measured hip angle of a record, as the thigh drive prescribes it.
+ThighKinematics thighKinematicsOf(const SwingRecord& r) { return {r.path, r.time, r.hipFlexion}; }
+
 void requireSwingEffect(EffectId effect) {
   if (describeEffect(effect).plant != PlantKind::kSwing)
     throw std::invalid_argument("not a swing effect: " + describeEffect(effect).name);
@@ -134,7 +137,7 @@ SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& para
   std::optional<ReferenceSwing> swing;
   std::optional<ThighMotion> ownThigh;
   if (base.drive == SwingDrive::kThighKinematics) {
-    if (thigh == nullptr) thigh = &ownThigh.emplace(ThighKinematics{record.path, record.time, record.hipFlexion});
+    if (thigh == nullptr) thigh = &ownThigh.emplace(thighKinematicsOf(record));
     initial.kneeFlexion = kneePose;
     initial.kneeFlexionRate = hipPose;  // the knee's toe-off rate (the hip's is the thigh's)
     swing.emplace(geometry, law, *thigh);
@@ -285,7 +288,7 @@ SwingPlant::SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vect
   if (base_.drive == SwingDrive::kThighKinematics)
     for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) {
       const SwingRecord& r = record(i);
-      thighs_.emplace_back(ThighKinematics{r.path, r.time, r.hipFlexion});
+      thighs_.emplace_back(thighKinematicsOf(r));
     }
 }
 
@@ -574,7 +577,7 @@ std::string SwingPlant::verify(const PlantModel& model) const {
     setup.participant.initial.kneeFlexion = pose.knee;
     if (base_.drive == SwingDrive::kThighKinematics) {
       setup.participant.drive = SwingDrive::kThighKinematics;
-      setup.participant.thighKinematics = {r.path, r.time, r.hipFlexion};
+      setup.participant.thighKinematics = thighKinematicsOf(r);
       setup.participant.initial.kneeFlexionRate = pose.first;
     } else {
       setup.participant.hipMoment = {};

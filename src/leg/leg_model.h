@@ -29,7 +29,8 @@ class LegModel {
   /// `prescribedThigh` (the measured thigh drive, SwingDrive::kThighKinematics): if given,
   /// the hip pin follows it as a Simbody prescribed motion (Motion::Custom at position
   /// level) and `hipMoment` and `hipRange` are not used; the hip moment is then the moment
-  /// the prescription needs (calcHipMoment). It must outlive the model.
+  /// the prescription needs (calcHipMoment). The model keeps its own handle on the fitted
+  /// spline.
   LegModel(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
            const HipRange& hipRange, double hipHeight, bool trackWork = true,
            const ThighMotion* prescribedThigh = nullptr);

@@ -29,4 +29,8 @@ ErrorMetrics calcErrorMetrics(const std::vector<double>& measured, const std::ve
 /// Root mean square of a series of errors (residuals); NaN if it is empty.
 double calcRms(const std::vector<double>& errors);
 
+/// Pearson's correlation coefficient of two series over their common length; NaN if fewer
+/// than 2 samples or either is constant.
+double calcCorrelation(const std::vector<double>& a, const std::vector<double>& b);
+
 }  // namespace swingsim

@@ -179,7 +179,6 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
       if (study.drive == SwingDrive::kHipMoment && r.hipMoment.empty())
         throw InputError(p + ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
                          "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
-      if (study.drive == SwingDrive::kThighKinematics) ThighMotion(ThighKinematics{p, r.time, r.hipFlexion});  // usable?
       (paths == &study.train ? train : validate).push_back(std::move(r));
     }
   return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);

@@ -20,6 +20,7 @@
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
 #include "model/leg_parameters.h"
+#include "numerics/metrics.h"
 #include "study/diagnosis_study.h"
 
 namespace swingsim {
