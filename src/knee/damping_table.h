@@ -42,6 +42,9 @@ class DampingTable final : public KneeLaw {
 
   std::string name() const override { return "damping table"; }
   double calcMoment(const KneeKinematics& knee, const double* z) const override;
+  /// Passive: the moments are not negative and the extension factor is not negative (checked
+  /// by the constructor), so the moment never has the rate's sign.
+  bool isPassive() const override { return true; }
   std::unique_ptr<KneeLaw> clone() const override { return std::make_unique<DampingTable>(*this); }
 
  private:

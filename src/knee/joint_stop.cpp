@@ -26,4 +26,10 @@ double JointStop::calcJointMoment(double angle, double rate) const {
   return 0.0;
 }
 
+double JointStop::calcJointStoredEnergy(double angle) const {
+  const double p = angle < p_.lower ? p_.lower - angle : angle > p_.upper ? angle - p_.upper : 0.0;
+  const double e2 = p_.restitution * p_.restitution;
+  return 0.5 * (1.0 + e2) * p_.stiffness * p * p * std::sqrt(p) / 2.5;
+}
+
 }  // namespace swingsim

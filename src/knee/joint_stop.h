@@ -49,6 +49,17 @@ class JointStop final : public KneeLaw {
   double calcMoment(const KneeKinematics& knee, const double*) const override {
     return calcJointMoment(knee.flexion, knee.flexionRate);
   }
+  /// Passive with the stored energy below.
+  bool isPassive() const override { return true; }
+  /// (1 + e^2) / 2 k p^2.5 / 2.5, the energy of the spring midway between loading and
+  /// unloading: the moment exceeds that spring's exactly when the penetration grows (r < 1/2
+  /// for pdot > 0), so the stop's power into the leg plus this energy's rate,
+  /// -(1 - e^2) k p^1.5 (1/2 - r) pdot, is never positive.
+  double calcStoredEnergy(const KneeKinematics& knee, const double*) const override {
+    return calcJointStoredEnergy(knee.flexion);
+  }
+  /// The stored energy at a joint angle, J.
+  double calcJointStoredEnergy(double angle) const;
   std::unique_ptr<KneeLaw> clone() const override { return std::make_unique<JointStop>(*this); }
 
  private:

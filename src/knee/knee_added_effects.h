@@ -30,6 +30,14 @@ class KneeAddedEffects final : public KneeLaw {
   const KneeAddedEffectsParams& params() const { return p_; }
   std::string name() const override { return "added knee effects"; }
   double calcMoment(const KneeKinematics& knee, const double* z) const override;
+  /// Passive if the friction, the damping and the spring are not negative.
+  bool isPassive() const override {
+    return p_.coulombMoment >= 0 && p_.viscousDamping >= 0 && p_.assistStiffness >= 0;
+  }
+  /// The assist spring's k flexion^2 / 2.
+  double calcStoredEnergy(const KneeKinematics& knee, const double*) const override {
+    return 0.5 * p_.assistStiffness * knee.flexion * knee.flexion;
+  }
   std::unique_ptr<KneeLaw> clone() const override { return std::make_unique<KneeAddedEffects>(*this); }
 
  private:
@@ -51,6 +59,10 @@ class ScaledKneeLaw final : public KneeLaw {
   }
   void calcStateDerivatives(const KneeKinematics& knee, const double* z, double* zdot) const override {
     law_->calcStateDerivatives(knee, z, zdot);
+  }
+  bool isPassive() const override { return scale_ >= 0 && law_->isPassive(); }
+  double calcStoredEnergy(const KneeKinematics& knee, const double* z) const override {
+    return scale_ * law_->calcStoredEnergy(knee, z);
   }
   std::unique_ptr<KneeLaw> clone() const override { return std::make_unique<ScaledKneeLaw>(*this); }
 

@@ -27,6 +27,8 @@ class KneeFriction final : public KneeLaw {
 
   std::string name() const override { return "knee friction"; }
   double calcMoment(const KneeKinematics& knee, const double* z) const override;
+  /// Passive: Tc >= 0 (checked by the constructor) and the gate is positive.
+  bool isPassive() const override { return true; }
   std::unique_ptr<KneeLaw> clone() const override { return std::make_unique<KneeFriction>(*this); }
 
  private:

@@ -51,6 +51,19 @@ void KneeLawSum::calcStateDerivatives(const KneeKinematics& knee, const double* 
   }
 }
 
+bool KneeLawSum::isPassive() const {
+  if (laws_.empty()) return false;
+  for (const auto& law : laws_)
+    if (!law->isPassive()) return false;
+  return true;
+}
+
+double KneeLawSum::calcStoredEnergy(const KneeKinematics& knee, const double* z) const {
+  double e = 0;
+  for (std::size_t i = 0; i < laws_.size(); ++i) e += laws_[i]->calcStoredEnergy(knee, z + offsets_[i]);
+  return e;
+}
+
 std::unique_ptr<KneeLaw> KneeLawSum::clone() const { return std::make_unique<KneeLawSum>(*this); }
 
 }  // namespace swingsim

@@ -33,6 +33,16 @@ class KneeLaw {
   /// Time derivatives of the law's states, written to zdot[0..numStates()).
   virtual void calcStateDerivatives(const KneeKinematics& /*knee*/, const double* /*z*/,
                                     double* /*zdot*/) const {}
+  /// Whether the law is passive: the leg's mechanical energy plus calcStoredEnergy never
+  /// rises under it (a resisting moment, never of the rate's sign, stores nothing; a spring
+  /// or the stop stores what it may give back). The swing stops early on this: a leg whose
+  /// energy cannot lift the thigh to its target never will (simulateSwing). Default false,
+  /// so a law nobody has shown to be passive (the Mauch cylinder, whose latch state could
+  /// hold energy) never stops a swing early.
+  virtual bool isPassive() const { return false; }
+  /// Energy the law holds and may give back to the leg, J (0 for a resisting law). Only
+  /// meaningful if isPassive().
+  virtual double calcStoredEnergy(const KneeKinematics& /*knee*/, const double* /*z*/) const { return 0; }
   virtual std::unique_ptr<KneeLaw> clone() const = 0;
 };
 
@@ -58,6 +68,9 @@ class KneeLawSum final : public KneeLaw {
   double calcMoment(const KneeKinematics& knee, const double* z) const override;
   void calcStateDerivatives(const KneeKinematics& knee, const double* z,
                             double* zdot) const override;
+  /// Passive if it has parts and every part is.
+  bool isPassive() const override;
+  double calcStoredEnergy(const KneeKinematics& knee, const double* z) const override;
   std::unique_ptr<KneeLaw> clone() const override;
 
  private:

@@ -122,6 +122,19 @@ double LegModel::calcMechanicalEnergy(const State& s) const {
   return system_.calcKineticEnergy(s) + system_.calcPotentialEnergy(s);
 }
 
+double LegModel::calcLeastPotentialEnergy(double hipFlexion) const {
+  State s = system_.getDefaultState();
+  thigh_.setOneQ(s, 0, hipFlexion);
+  const auto potentialAt = [&](double knee) {
+    shank_.setOneQ(s, 0, knee);
+    system_.realize(s, Stage::Position);
+    return system_.calcPotentialEnergy(s);
+  };
+  const double v0 = potentialAt(0), v90 = potentialAt(Pi / 2), v180 = potentialAt(Pi);
+  const double c = 0.5 * (v0 + v180), a = 0.5 * (v0 - v180), b = v90 - c;
+  return c - std::sqrt(a * a + b * b);
+}
+
 LegPose LegModel::calcPose(const State& s) const {
   auto at = [&](const MobilizedBody& b, const Vec3& p) {
     Vec3 g = b.findStationLocationInGround(s, p);

@@ -60,6 +60,11 @@ class LegModel {
 
   /// Kinetic + gravitational potential energy, J (needs Velocity stage).
   double calcMechanicalEnergy(const SimTK::State& s) const;
+  /// The least gravitational potential energy the leg can have with the thigh at
+  /// `hipFlexion` (rad), over every knee angle, J (on calcMechanicalEnergy's scale): the shank
+  /// and foot turn as one rigid body about the knee, so their potential is
+  /// c + a cos(knee) + b sin(knee), found exactly from three knee angles.
+  double calcLeastPotentialEnergy(double hipFlexion) const;
   /// Work done on the leg by the knee moment and by the hip moment since toe-off, J.
   double getKneeWork(const SimTK::State& s) const { return knee_->getWork(s); }
   /// Throws std::logic_error with a prescribed thigh (its work is not integrated).

@@ -397,6 +397,11 @@ const JointStop* findKneeStop(const KneeLaw& law) {
   return nullptr;
 }
 
+// The early failure (SwingOptions::earlyThighFailure) needs the leg's energy this far below
+// what the thigh at its target needs, J: far above the integration's error in the energy
+// (about the accuracy times the leg's few joules, and its drift over a swing's steps).
+constexpr double kUnreachableEnergyMargin = 0.01;
+
 // The early end of the settle dwell (SwingOptions::earlySettleEnd): fraction of the present
 // free acceleration assumed to hold the knee on its stop for the rest of the dwell. With the
 // hip moment constant the leg moves as a passive double pendulum, whose holding moment
@@ -769,6 +774,14 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   // Not with the measured thigh drive: the prescribed thigh keeps moving.
   const bool earlyEndAllowed = options.earlySettleEnd && dormandPrince != nullptr && !trackEnergy && kneeStop != nullptr &&
                                kneeStop->params().lower < zone && !thighMotion;
+  // The early failure (SwingOptions::earlyThighFailure): the hip moment after its last
+  // breakpoint, and the least energy (J) the leg must have for the thigh to get to its target.
+  const double hipMomentFinal = p.hipMoment.calcMoment(hipMomentConstantFrom + 1.0);
+  const bool earlyFailureAllowed =
+      options.earlyThighFailure && dormandPrince != nullptr && !thighMotion && setup.knee->isPassive();
+  const double thighTargetEnergy =
+      earlyFailureAllowed ? leg.calcLeastPotentialEnergy(rule.thighTargetFlexion) - hipMomentFinal * rule.thighTargetFlexion : 0.0;
+  double thighShortfall = 0;  // J: > 0 once the thigh cannot reach its target
   const auto wallStart = std::chrono::steady_clock::now();
   // What to change when a budget runs out: the same advice for both budgets.
   const auto overBudget = [&](const std::string& what, const State& s) {
@@ -868,7 +881,25 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       dormandPrince->changeAccuracy(looseAccuracy);
       loose = true;
     }
-    if (!log.ended && (now.t >= timeLimit - 1e-12 || !more) && !options.requireSwingEnd) break;
+    if (earlyFailureAllowed && !log.thighReached && now.t >= hipMomentConstantFrom && now.t == s.getTime() &&
+        now.hip < rule.thighTargetFlexion && now.hip > p.hipRange.minFlexion && now.hip < p.hipRange.maxFlexion) {
+      const double energy = leg.calcMechanicalEnergy(s) +
+                            setup.knee->calcStoredEnergy({now.knee, now.kneeRate}, leg.getKneeLawStates(s)) -
+                            hipMomentFinal * now.hip;
+      if (energy < thighTargetEnergy - kUnreachableEnergyMargin) thighShortfall = thighTargetEnergy - energy;
+    }
+    const bool cannotEnd = thighShortfall > 0;
+    if (!log.ended && (now.t >= timeLimit - 1e-12 || !more || cannotEnd) && !options.requireSwingEnd) break;
+    if (!log.ended && cannotEnd) {
+      throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing cannot end (decided " +
+                     describeState(leg, s) + ", before the time limit of " + formatNumber(std::round(timeLimit * 1e4) / 1e4) +
+                     " s): the thigh never reached its target flexion of " + formatNumber(std::round(rule.thighTargetFlexion * kRadToDeg * 10) / 10) +
+                     " deg and cannot any more: with the hip moment constant at " + formatNumber(hipMomentFinal) +
+                     " N m from t = " + formatNumber(std::round(hipMomentConstantFrom * 1e4) / 1e4) + " s, the leg's energy is " +
+                     formatNumber(std::round(thighShortfall * 1e4) / 1e4) +
+                     " J short of the least the thigh at its target needs, and the knee and the hip stop only take energy "
+                     "away (hip moment too small for this leg?)");
+    }
     if (!log.ended && (now.t >= timeLimit - 1e-12 || !more)) {
       std::string cause;
       if (thighMotion && timeLimit < rule.timeLimit)
@@ -877,7 +908,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                 " s, before the swing ended (it needs the thigh at its target, the knee back in the zone and the settle "
                 "dwell of " + formatNumber(rule.settleDwell) + " s): give a longer trial, or a shorter settle_dwell_s; ";
       if (!log.thighReached)
-        cause += "the thigh never reached its target flexion of " + formatNumber(rule.thighTargetFlexion * kRadToDeg) +
+        cause += "the thigh never reached its target flexion of " + formatNumber(std::round(rule.thighTargetFlexion * kRadToDeg * 10) / 10) +
                  (thighMotion ? " deg (set swing_end: thigh_target_flexion_deg below the measured thigh's peak)"
                               : " deg (hip moment too small for this leg?)");
       else if (!log.peakSeen)

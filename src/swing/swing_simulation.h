@@ -83,6 +83,19 @@ struct SwingOptions {
   /// measured thigh drive (the prescribed thigh keeps moving; the rule assumes a constant
   /// hip moment).
   bool earlySettleEnd = true;
+  /// Fast path (Dormand-Prince) only: stop a swing as soon as its thigh provably cannot reach
+  /// the target flexion any more, instead of integrating to the time limit (a Monte Carlo
+  /// sample with a weak hip moment spends most of its time there). Decided at a step end past
+  /// the hip moment's last breakpoint (the moment constant from there on, M), with the thigh
+  /// below its target and inside its range, when the leg's energy E = kinetic + gravity
+  /// potential + what the knee law stores (KneeLaw::calcStoredEnergy) - M hip falls more
+  /// than 0.01 J (kUnreachableEnergyMargin) below the least energy the thigh at its target needs
+  /// (LegModel::calcLeastPotentialEnergy - M target). Only with a passive knee law
+  /// (KneeLaw::isPassive): then E never rises, so the thigh never gets there; the hip's
+  /// range stop is passive in the same way (JointStop). The outcome is the time limit's:
+  /// RunError naming the cause, or with requireSwingEnd false a NaN swing time. Off with the
+  /// measured thigh drive.
+  bool earlyThighFailure = true;
   /// Energy bookkeeping of each stop impact (StopImpact::work): integrates the work of every
   /// knee law part and of the hip as extra states (a little slower; off in sweeps).
   bool trackImpactEnergy = false;

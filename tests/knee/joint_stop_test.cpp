@@ -101,6 +101,32 @@ TEST(JointStop, RestitutionOfASingleImpactIsTheConfiguredOne) {
   }
 }
 
+// Passivity with the stored energy (KneeLaw::isPassive, calcStoredEnergy): the stop's
+// power into the joint, M angle_rate, plus the rate of its stored energy, dU/dangle
+// angle_rate (dU/dangle by central differences, not by the law's formula), is never positive,
+// at penetrations up to 10 deg on both stops and rates from -10 to 10 rad/s, slow turns
+// near the switch rate included.
+TEST(JointStop, StoredEnergyMakesItPassive) {
+  for (double e : {0.0, 0.4, 0.9, 1.0}) {
+    JointStopParams params = makeStop().params();
+    params.restitution = e;
+    const JointStop stop(params);
+    EXPECT_TRUE(stop.isPassive());
+    EXPECT_EQ(stop.calcJointStoredEnergy(5 * kDeg), 0.0);
+    for (double edge : {params.lower, params.upper}) {
+      for (double depth = 0.01 * kDeg; depth < 10 * kDeg; depth *= 1.7) {
+        const double angle = edge == params.lower ? edge - depth : edge + depth;
+        const double h = 1e-7;
+        const double dU = (stop.calcJointStoredEnergy(angle + h) - stop.calcJointStoredEnergy(angle - h)) / (2 * h);
+        for (double rate = -10; rate <= 10; rate += 0.0137) {
+          const double power = stop.calcJointMoment(angle, rate) * rate + dU * rate;
+          EXPECT_LE(power, 1e-6 * std::fabs(dU * rate) + 1e-12) << "e " << e << " angle " << angle << " rate " << rate;
+        }
+      }
+    }
+  }
+}
+
 TEST(JointStop, AsKneeLawUsesFlexionAndRate) {
   JointStop stop = makeStop();
   EXPECT_EQ(stop.calcMoment({-1 * kDeg, -0.5}, nullptr), stop.calcJointMoment(-1 * kDeg, -0.5));

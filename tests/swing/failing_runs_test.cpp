@@ -75,10 +75,24 @@ TEST(FailingRuns, SwingThatNeverEndsGivesTimeStateAndCause) {
   SwingSetup setup;
   setup.participant = p;
   setup.knee = &knee;
+  // Decided early (SwingOptions::earlyThighFailure): the leg cannot gain the energy.
   const std::string e = runErrorOf(setup);
-  EXPECT_THAT(e, HasSubstr("the swing did not end within the time limit of 1.5 s"));
+  EXPECT_THAT(e, HasSubstr("the swing cannot end (decided at t = "));
   EXPECT_THAT(e, ::testing::ContainsRegex(kStatePattern));
-  EXPECT_THAT(e, HasSubstr("the thigh never reached its target flexion of 20 deg (hip moment too small"));
+  EXPECT_THAT(e, HasSubstr("the thigh never reached its target flexion of 20 deg and cannot any more"));
+  EXPECT_THAT(e, HasSubstr("hip moment too small"));
+  // Without the early decision the time limit ends it.
+  SwingOptions full;
+  full.earlyThighFailure = false;
+  std::string late = "(no RunError)";
+  try {
+    simulateSwing(setup, full);
+  } catch (const RunError& error) {
+    late = error.what();
+  }
+  EXPECT_THAT(late, HasSubstr("the swing did not end within the time limit of 1.5 s"));
+  EXPECT_THAT(late, ::testing::ContainsRegex(kStatePattern));
+  EXPECT_THAT(late, HasSubstr("the thigh never reached its target flexion of 20 deg (hip moment too small"));
 }
 
 // Before issue 6 the soft hip stop let the thigh sail ~20 deg past 90 deg and the swing
@@ -115,7 +129,7 @@ TEST(FailingRuns, CliExitsOneAndWritesNothing) {
                           (dir / "out").string() + " --json " + (dir / "r.json").string());
   const std::string& output = run.output;
   EXPECT_EQ(run.code, 1) << output;
-  EXPECT_THAT(output, HasSubstr("swingsim: P1 at lowering 0 m: the swing did not end"));
+  EXPECT_THAT(output, HasSubstr("swingsim: P1 at lowering 0 m: the swing cannot end"));
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));
 }
