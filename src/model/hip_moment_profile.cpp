@@ -38,6 +38,27 @@ std::vector<double> HipMomentProfile::calcBreakpoints() const {
   return scaled;
 }
 
+std::pair<double, double> HipMomentProfile::calcRangeFrom(double time) const {
+  const double now = calcMoment(time);
+  double low = now, high = now;
+  const auto include = [&](double m) {
+    low = std::min(low, m);
+    high = std::max(high, m);
+  };
+  const double t = time / timeScale;
+  const double gain = 1.0 / (timeScale * timeScale);
+  if (kind == Kind::kTable) {
+    for (std::size_t i = 0; i < times.size(); ++i)
+      if (times[i] > t) include(gain * moments[i]);
+    if (!moments.empty()) include(gain * moments.back());
+    return {low, high};
+  }
+  include(0.0);  // the end, and the switch between the half-sines
+  if (t < 0.5 * flexionDuration) include(gain * flexionAmplitude);
+  if (t < flexionDuration + 0.5 * extensionDuration) include(-gain * extensionAmplitude);
+  return {low, high};
+}
+
 void HipMomentProfile::validate() const {
   if (!(timeScale > 0) || !std::isfinite(timeScale)) throw std::invalid_argument("time_scale must be positive");
   if (kind == Kind::kTable) {

@@ -3,6 +3,7 @@
 // measured it per participant on an isokinetic dynamometer but did not publish it; see the
 // README ("Assumptions") for the profile we use and how it is calibrated.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace swingsim {
@@ -36,6 +37,10 @@ struct HipMomentProfile {
   /// half-sines, or the first and last table samples (the monotone cubic is C1 between).
   /// An integrator that ends a step there keeps its order (Hairer I, Sec. II.6).
   std::vector<double> calcBreakpoints() const;
+  /// The least and the greatest moment at any time from t (s) on, N m: bounds of what the
+  /// hip can still do (the half-sines' remaining peaks, the table's remaining samples, which
+  /// the monotone cubic never passes, and the held end value).
+  std::pair<double, double> calcRangeFrom(double t) const;
   /// Throws std::invalid_argument with a description if the profile is unusable.
   void validate() const;
   std::string describe() const;

@@ -402,28 +402,28 @@ const JointStop* findKneeStop(const KneeLaw& law) {
 // (about the accuracy times the leg's few joules, and its drift over a swing's steps).
 constexpr double kUnreachableEnergyMargin = 0.01;
 
-// The early end of the settle dwell (SwingOptions::earlySettleEnd): fraction of the present
-// free acceleration assumed to hold the knee on its stop for the rest of the dwell. With the
-// hip moment constant the leg moves as a passive double pendulum, whose holding moment
-// changes with the thigh angle (sin of it, about) over the dwell's tenths of a second:
-// P1's falls by a few percent there.
+// The early end of the settle dwell (SwingOptions::earlySettleEnd): fraction of the free
+// acceleration (under the least holding hip moment still to come) assumed to hold the knee
+// on its stop for the rest of the dwell. The holding moment also changes with the thigh's
+// angle and rate (sin of the angle, about) over the dwell's tenths of a second, which the
+// linear response to the hip moment at the present pose does not see: P1's falls by a few
+// percent there.
 constexpr double kHoldFraction = 0.5;
 
 // Whether the knee, at step end `e` in the zone, can no longer climb out of it. Treated as
-// one degree of freedom with the thigh free: its acceleration without the knee laws
-// (a_free = knee acceleration - mu x knee law moment, mu = (M^-1)_knee,knee in
-// 1/(kg m^2)) presses it onto the stop (a_free < 0); the resisting laws (damping, friction)
-// only take energy; the stop gives back at most what its loading spring stores,
-// k p^2.5 / 2.5 (JointStop). To reach the zone edge the knee needs
-// 1/2 rate^2 + mu x stored >= kHoldFraction |a_free| (edge - engage angle).
-bool isSettled(const StepEnd& e, const JointStopParams& stop, double zone, double mu) {
-  if (!(e.knee < stop.lower && e.kneeRate >= 0)) return false;  // on the stop, coming out or at rest
-  const double freeAcceleration = e.kneeAcc - mu * e.kneeMoment;  // rad/s^2
+// one degree of freedom with the thigh free: its acceleration without the knee laws,
+// `freeAcceleration` (rad/s^2; the caller takes the least holding one the hip moment can
+// still give), presses it onto the stop (< 0); the resisting laws (damping, friction) only
+// take energy; the stop gives back at most its stored energy (JointStop::
+// calcJointStoredEnergy, the midway spring), times mu = (M^-1)_knee,knee in 1/(kg m^2). To
+// reach the zone edge the knee needs 1/2 rate^2 + mu x stored >= kHoldFraction
+// |freeAcceleration| (edge - engage angle).
+bool isSettled(const StepEnd& e, const JointStop& stop, double zone, double mu, double freeAcceleration) {
+  const double lower = stop.params().lower;
+  if (!(e.knee < lower && e.kneeRate >= 0)) return false;  // on the stop, coming out or at rest
   if (!(freeAcceleration < 0)) return false;
-  const double p = stop.lower - e.knee;
-  const double stored = stop.stiffness * p * p * std::sqrt(p) / 2.5;  // J
-  const double energy = 0.5 * e.kneeRate * e.kneeRate + mu * stored;  // (rad/s)^2 / 2 per unit inertia
-  return energy < kHoldFraction * -freeAcceleration * (zone - stop.lower);
+  const double energy = 0.5 * e.kneeRate * e.kneeRate + mu * stop.calcJointStoredEnergy(e.knee);  // (rad/s)^2 / 2 per unit inertia
+  return energy < kHoldFraction * -freeAcceleration * (zone - lower);
 }
 
 // Contacts of the knee with its hyperextension stop, from the step ends and their Hermite
@@ -779,8 +779,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   const double hipMomentFinal = p.hipMoment.calcMoment(hipMomentConstantFrom + 1.0);
   const bool earlyFailureAllowed =
       options.earlyThighFailure && dormandPrince != nullptr && !thighMotion && setup.knee->isPassive();
-  const double thighTargetEnergy =
-      earlyFailureAllowed ? leg.calcLeastPotentialEnergy(rule.thighTargetFlexion) - hipMomentFinal * rule.thighTargetFlexion : 0.0;
+  double thighTargetEnergy = std::numeric_limits<double>::quiet_NaN();  // found when first needed
   double thighShortfall = 0;  // J: > 0 once the thigh cannot reach its target
   const auto wallStart = std::chrono::steady_clock::now();
   // What to change when a budget runs out: the same advice for both budgets.
@@ -855,13 +854,18 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       candidateTime = log.candidateTime;
       result.realizationsToEnd = stepper->getNumRealizations();
     }
-    if (!log.ended && earlyEndAllowed && log.candidate && now.t >= hipMomentConstantFrom && now.t == s.getTime() &&
-        now.knee < kneeStop->params().lower) {
-      // mu = (M^-1)_knee,knee: the knee's acceleration per unit knee moment, thigh free.
+    if (!log.ended && earlyEndAllowed && log.candidate && now.t == s.getTime() && now.knee < kneeStop->params().lower) {
+      // The knee's acceleration per unit knee moment (mu) and per unit hip moment (nu),
+      // thigh free: the knee column of M^-1 (symmetric).
       Vector unitKneeForce(s.getNU(), 0.0), response;
       unitKneeForce[1] = 1.0;
       leg.getMatter().multiplyByMInv(s, unitKneeForce, response);
-      if (isSettled(now, kneeStop->params(), zone, response[1])) log.endAtCandidate();
+      const double mu = response[1], nu = response[0];
+      // Without the knee laws, under the hip moment still to come that holds it least.
+      const auto [hipLow, hipHigh] = p.hipMoment.calcRangeFrom(now.t);
+      const double hipNow = p.hipMoment.calcMoment(now.t);
+      const double freeAcceleration = now.kneeAcc - mu * now.kneeMoment + nu * ((nu > 0 ? hipHigh : hipLow) - hipNow);
+      if (isSettled(now, *kneeStop, zone, mu, freeAcceleration)) log.endAtCandidate();
     }
     if (log.ended) {
       result.endDecidedTime = now.t;
@@ -883,6 +887,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     }
     if (earlyFailureAllowed && !log.thighReached && now.t >= hipMomentConstantFrom && now.t == s.getTime() &&
         now.hip < rule.thighTargetFlexion && now.hip > p.hipRange.minFlexion && now.hip < p.hipRange.maxFlexion) {
+      if (std::isnan(thighTargetEnergy))
+        thighTargetEnergy = leg.calcLeastPotentialEnergy(rule.thighTargetFlexion) - hipMomentFinal * rule.thighTargetFlexion;
       const double energy = leg.calcMechanicalEnergy(s) +
                             setup.knee->calcStoredEnergy({now.knee, now.kneeRate}, leg.getKneeLawStates(s)) -
                             hipMomentFinal * now.hip;

@@ -70,18 +70,18 @@ struct SwingOptions {
   bool requireSwingEnd = true;
   /// Fast path (Dormand-Prince) only: end the settle dwell as soon as the knee cannot leave
   /// the zone before the dwell would end, instead of integrating the whole dwell. Decided at
-  /// a step end where the hip moment has reached its final constant value (past the
-  /// profile's last breakpoint), the knee is on its hyperextension stop coming out of it or
-  /// at rest (flexion below the stop's engage angle, rate >= 0), and the energy it has (its
-  /// rate and what the stop has stored) cannot lift it to the zone's edge against half the
-  /// acceleration that presses it onto the stop now (see simulateSwing's isSettled). Swing
+  /// a step end where the knee is on its hyperextension stop coming out of it or at rest
+  /// (flexion below the stop's engage angle, rate >= 0), and the energy it has (its rate and
+  /// what the stop can give back) cannot lift it to the zone's edge against half the
+  /// acceleration that presses it onto the stop under the hip moment still to come
+  /// (HipMomentProfile::calcRangeFrom, the end of it that holds the knee least, through
+  /// the present M^-1; see simulateSwing's isSettled). Swing
   /// time, events, bounces and bounce height are those of the full dwell (tests/swing/
   /// settle_dwell_test.cpp, every lowering of the four Burkett participants, bouncy knees
   /// included); the trajectory and the stop contacts end where the end was decided (a
   /// contact still open there is closed as at the end of a dwell). Off with
   /// trackImpactEnergy (the impact bookkeeping wants the whole dwell) and with the
-  /// measured thigh drive (the prescribed thigh keeps moving; the rule assumes a constant
-  /// hip moment).
+  /// measured thigh drive (the prescribed thigh's future is not bounded like a hip moment's).
   bool earlySettleEnd = true;
   /// Fast path (Dormand-Prince) only: stop a swing as soon as its thigh provably cannot reach
   /// the target flexion any more, instead of integrating to the time limit (a Monte Carlo

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace swingsim {
@@ -45,6 +46,44 @@ TEST(HipMomentProfile, TableBreakpointsAreItsEndsWhereTheHeldValuesBegin) {
   h.moments = {0, 20, 0};
   ASSERT_EQ(h.calcBreakpoints().size(), 1u);
   EXPECT_DOUBLE_EQ(h.calcBreakpoints()[0], 0.4);
+}
+
+}  // namespace
+}  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// calcRangeFrom against a dense scan of the moment from t on: every scanned moment inside
+// the range, and the range's ends met by the scan (to its resolution).
+TEST(HipMomentProfile, RangeFromBoundsEveryLaterMomentTightly) {
+  HipMomentProfile sine;
+  sine.flexionAmplitude = 30;
+  sine.extensionAmplitude = 12;
+  sine.flexionDuration = 0.18;
+  sine.extensionDuration = 0.23;
+  sine.timeScale = 1.1;
+  HipMomentProfile table;
+  table.kind = HipMomentProfile::Kind::kTable;
+  table.times = {0.0, 0.1, 0.2, 0.3, 0.45};
+  table.moments = {5, 25, -4, -14, -2};
+  table.timeScale = 0.9;
+  for (const HipMomentProfile* profile : {&sine, &table}) {
+    for (double t = 0; t < 0.7; t += 0.013) {
+      const auto [low, high] = profile->calcRangeFrom(t);
+      double seenLow = 1e9, seenHigh = -1e9;
+      for (double u = t; u < 2.0; u += 1e-4) {
+        const double m = profile->calcMoment(u);
+        EXPECT_GE(m, low - 1e-12) << t << " " << u;
+        EXPECT_LE(m, high + 1e-12) << t << " " << u;
+        seenLow = std::min(seenLow, m);
+        seenHigh = std::max(seenHigh, m);
+      }
+      // The scan's 0.1 ms steps pass a table sample by at most 0.05 ms: 250 N m/s x 5e-5 s.
+      EXPECT_NEAR(seenLow, low, 0.02) << t;
+      EXPECT_NEAR(seenHigh, high, 0.02) << t;
+    }
+  }
 }
 
 }  // namespace
