@@ -53,6 +53,10 @@ class DormandPrince {
 
   double getTime() const { return t_; }
   const double* getState() const { return y_.data(); }
+  /// f at the current step end (the next step's first stage).
+  const double* getDerivatives() const { return k1_.data(); }
+  /// The step size the controller plans next, s.
+  double getPlannedStep() const { return h_; }
   /// Start time and state of the last accepted step (the dense output's interval).
   double getStepStartTime() const { return tPrev_; }
   const double* getStepStartState() const { return yPrev_.data(); }

@@ -14,6 +14,7 @@
 
 #include "core/input_error.h"
 #include "leg/leg_model.h"
+#include "numerics/bogacki_shampine.h"
 #include "swing/simbody_ode.h"
 
 namespace swingsim {
@@ -573,37 +574,51 @@ class DormandPrinceStepper final : public SwingStepper {
     start(initial.getTime(), accuracy);
   }
   bool step(double tLimit) override {
-    const double t = dp_->getTime();
+    const double t = getTime();
     if (t >= tLimit) return false;
     // End steps on the hip moment's kinks: a step across one loses the method's order.
     double tStop = tLimit;
     for (double b : breakpoints_)
       if (b > t && b < tStop) tStop = b;
-    dp_->step(tStop);
-    return dp_->getTime() < tLimit;
+    if (loose_) loose_->step(tStop);
+    else dp_->step(tStop);
+    return getTime() < tLimit;
   }
-  const State& getState() override { return ode_.realizeAt(dp_->getTime(), dp_->getState()); }
-  int getNumSteps() const override { return stepsBefore_ + static_cast<int>(dp_->getNumSteps()); }
+  const State& getState() override { return ode_.realizeAt(getTime(), loose_ ? loose_->getState() : dp_->getState()); }
+  int getNumSteps() const override {
+    return stepsBefore_ + static_cast<int>(dp_->getNumSteps() + (loose_ ? loose_->getNumSteps() : 0));
+  }
   int getNumRealizations() const override { return static_cast<int>(ode_.getNumRealizations()); }
 
   /// Remembers the current step end (time and state).
   void saveCheckpoint() {
-    checkpointTime_ = dp_->getTime();
+    checkpointTime_ = getTime();
     checkpoint_.assign(dp_->getState(), dp_->getState() + ode_.numStates());
   }
-  /// Goes on from the current step end at a new accuracy (the step size scaled to it).
-  void changeAccuracy(double accuracy) { dp_->changeTolerances(accuracy, accuracy); }
-  /// Goes back to the checkpoint and on from there at `accuracy`.
+  /// Goes on from the current step end with Bogacki-Shampine 3(2) at `accuracy` (the loose
+  /// settle dwell): half the realizations of a Dormand-Prince step, and where the knee
+  /// meets its stop the step is bounded by the stop's stiffness rather than the order.
+  /// Its first step is Dormand-Prince's planned one scaled by (accuracy ratio)^(1/5); f at
+  /// the step end is Dormand-Prince's (FSAL), so the switch costs no realization.
+  void loosen(double accuracy) {
+    const double firstStep = dp_->getPlannedStep() * std::pow(accuracy / accuracy_, 0.2);
+    loose_ = std::make_unique<BogackiShampine>(ode_, accuracy, accuracy);
+    loose_->initialize(dp_->getTime(), dp_->getState(), dp_->getDerivatives(), firstStep);
+  }
+  /// Goes back to the checkpoint and on from there with Dormand-Prince at `accuracy`.
   void restoreCheckpoint(double accuracy) {
-    stepsBefore_ += static_cast<int>(dp_->getNumSteps());
+    stepsBefore_ += static_cast<int>(dp_->getNumSteps() + (loose_ ? loose_->getNumSteps() : 0));
+    loose_.reset();
     y_ = checkpoint_;
     start(checkpointTime_, accuracy);
   }
 
  private:
+  double getTime() const { return loose_ ? loose_->getTime() : dp_->getTime(); }
   void start(double t, double accuracy) {
     // One number for the relative and the absolute tolerance, as Simbody's accuracy is
     // used (angles in rad, rates in rad/s, work in J, law states dimensionless).
+    accuracy_ = accuracy;
     dp_ = std::make_unique<DormandPrince>(ode_, accuracy, accuracy);
     dp_->initialize(t, y_.data());
   }
@@ -611,7 +626,9 @@ class DormandPrinceStepper final : public SwingStepper {
   SimbodyOde ode_;
   std::vector<double> y_;
   std::vector<double> breakpoints_;  // s
+  double accuracy_ = 0;
   std::unique_ptr<DormandPrince> dp_;
+  std::unique_ptr<BogackiShampine> loose_;  // the loose dwell, once it has begun
   int stepsBefore_ = 0;
   double checkpointTime_ = 0;
   std::vector<double> checkpoint_;
@@ -882,7 +899,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       checkpoint.samples = tr.size();
       checkpoint.nextSample = nextSample;
       dormandPrince->saveCheckpoint();
-      dormandPrince->changeAccuracy(looseAccuracy);
+      dormandPrince->loosen(looseAccuracy);
       loose = true;
     }
     if (earlyFailureAllowed && !log.thighReached && now.t >= hipMomentConstantFrom && now.t == s.getTime() &&

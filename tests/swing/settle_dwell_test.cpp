@@ -91,12 +91,17 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees)
           EXPECT_EQ(x.events[i].name, y.events[i].name);
           EXPECT_EQ(x.events[i].time, y.events[i].time) << x.events[i].name;
         }
-        // The terminal impact (the first stop contact after the last entry) up to its
-        // deepest point is decided before the early end.
+        // The first stop contact after the last entry: its impact is decided before the
+        // early end. Its deepest point may not be: the early end may come while the hip
+        // moment still changes (HipMomentProfile::calcRangeFrom), and a knee resting on its
+        // stop can then be pressed a little deeper later in the same contact (P4 at 0.19 m:
+        // 3.358 against 3.368 mrad). simulate and the terminal impact check, which report
+        // the penetration, integrate the whole dwell.
         ASSERT_EQ(x.impacts.empty(), y.impacts.empty());
         if (!x.impacts.empty()) {
           EXPECT_EQ(x.impacts.front().impactRate, y.impacts.front().impactRate);
-          EXPECT_EQ(x.impacts.front().maxPenetration, y.impacts.front().maxPenetration);
+          EXPECT_LE(x.impacts.front().maxPenetration, y.impacts.front().maxPenetration);
+          EXPECT_GT(x.impacts.front().maxPenetration, 0.99 * y.impacts.front().maxPenetration);
         }
         EXPECT_LE(x.endDecidedTime, y.endDecidedTime);
         EXPECT_LE(x.realizations, y.realizations);
