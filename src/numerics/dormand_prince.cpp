@@ -68,14 +68,6 @@ void DormandPrince::setMaxStep(double maxStep) {
   maxStep_ = maxStep;
 }
 
-void DormandPrince::changeTolerances(double relTol, double absTol) {
-  if (!(relTol > 0) || !(absTol > 0) || !std::isfinite(relTol) || !std::isfinite(absTol))
-    throw std::invalid_argument("Dormand-Prince: tolerances must be positive and finite");
-  h_ = std::min(h_ * std::pow(relTol / relTol_, 0.2), maxStep_);
-  relTol_ = relTol;
-  absTol_ = absTol;
-}
-
 void DormandPrince::initialize(double t0, const double* y0) {
   t_ = tPrev_ = t0;
   std::copy(y0, y0 + n_, y_.begin());

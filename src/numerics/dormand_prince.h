@@ -33,12 +33,6 @@ class DormandPrince {
 
   /// Largest step allowed, s (default: unlimited).
   void setMaxStep(double maxStep);
-  /// Goes on from the current step end with new tolerances (> 0, else
-  /// std::invalid_argument): the next step is the planned one scaled by
-  /// (new / old relTol)^(1/5), the error's order, and f at the step end is kept (no new
-  /// starting-step search, no evaluation).
-  void changeTolerances(double relTol, double absTol);
-
   /// Sets time and state (numStates() values) and chooses the first step size
   /// (Hairer I, Sec. II.4, "starting step size").
   void initialize(double t0, const double* y0);

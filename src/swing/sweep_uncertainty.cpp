@@ -127,6 +127,25 @@ const UncertaintyRun& UncertaintyPlan::findRun(std::size_t swing) const {
   return *(it - 1);
 }
 
+SwingSetup PlannedSwing::makeSetup() const {
+  SwingSetup setup;
+  setup.participant = participant;
+  setup.knee = &knee;
+  setup.lowering = lowering;
+  return setup;
+}
+
+PlannedSwing UncertaintyPlan::makeSwing(std::size_t swing) const {
+  PlannedSwing planned;
+  planned.run = &findRun(swing);
+  planned.lowering = planned.run->lowerings[swing - planned.run->firstSwing];
+  planned.variant = makeVariant(*planned.run);
+  planned.knee = makeSweepVariantKnee(planned.variant);
+  planned.participant = calcAdaptedParticipant(planned.variant.participant, planned.lowering,
+                                               planned.variant.hipEffortExponent);
+  return planned;
+}
+
 UncertaintyPlan planSweepUncertainty(const SweepStudy& study, const UncertaintyOptions& options) {
   const auto& table = sweepAssumptions();
   UncertaintyPlan plan;
@@ -195,17 +214,10 @@ bool runUncertaintySwings(const UncertaintyPlan& plan, std::size_t first, std::s
   std::atomic<long> finishedHere{0};
   auto runOne = [&](int k) {
     const std::size_t swing = todo[static_cast<std::size_t>(k)];
-    const UncertaintyRun& run = plan.findRun(swing);
-    const double lowering = run.lowerings[swing - run.firstSwing];
     double swingTime = kNaN;
     try {
-      const SweepVariant variant = plan.makeVariant(run);
-      const KneeLawSum knee = makeSweepVariantKnee(variant);
-      SwingSetup setup;
-      setup.participant = calcAdaptedParticipant(variant.participant, lowering, variant.hipEffortExponent);
-      setup.knee = &knee;
-      setup.lowering = lowering;
-      swingTime = simulateSwing(setup, variant.swing).swingTime;
+      const PlannedSwing planned = plan.makeSwing(swing);
+      swingTime = simulateSwing(planned.makeSetup(), planned.variant.swing).swingTime;
     } catch (const std::exception&) {
       // No swing end at this lowering under these assumptions (the thigh short of its
       // target, a time limit): the point drops out of the fastest-lowering search, as in runSweep.

@@ -106,6 +106,18 @@ struct UncertaintyRun {
   std::size_t firstSwing = 0;     ///< index of its first lowering in the plan's swing order
 };
 
+/// One swing of an analysis, ready to run: the variant its run sweeps, that variant's knee
+/// law and its participant adapted to the lowering (calcAdaptedParticipant).
+struct PlannedSwing {
+  const UncertaintyRun* run = nullptr;
+  double lowering = 0;  ///< m
+  SweepVariant variant;
+  KneeLawSum knee;
+  Participant participant;
+  /// The swing's setup; it points at `knee`, so it is valid while this object lives unmoved.
+  SwingSetup makeSetup() const;
+};
+
 /// Every swing of an analysis in one fixed order, the swing index that shards slice and
 /// partial result files record: first the sensitivity runs (per participant in study order:
 /// nominal, then low and high of each applicable assumption), then the Monte Carlo sample by
@@ -125,6 +137,9 @@ struct UncertaintyPlan {
   SweepVariant makeVariant(const UncertaintyRun& run) const;
   /// The run holding swing `swing` (< swingCount).
   const UncertaintyRun& findRun(std::size_t swing) const;
+  /// Swing `swing` (< swingCount), built to run. Throws std::invalid_argument if its knee
+  /// law cannot be built (planSweepUncertainty checked every run's).
+  PlannedSwing makeSwing(std::size_t swing) const;
 };
 
 /// Builds the plan: the draws, each run's variant (to check that its knee law can be built

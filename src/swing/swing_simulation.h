@@ -58,7 +58,8 @@ struct SwingOptions {
   /// Fast path (Dormand-Prince) only: once the knee has entered the zone, the settle dwell
   /// that confirms the end (SwingEndRule::settleDwell; the knee meets its stop there, about
   /// two thirds of a swing's realizations at full accuracy) is integrated at accuracy x this
-  /// factor, no looser than 1e-3. The swing time, peak and clearance are found before it. If
+  /// factor, no looser than 1e-3, with Bogacki-Shampine 3(2) (numerics/bogacki_shampine.h:
+  /// half the realizations per step where the stop, not the order, sets the step). The swing time, peak and clearance are found before it. If
   /// the knee rises to within 0.5 deg of the zone's edge during the loose dwell (a bounce
   /// may decide the end), the swing goes back to the entry and integrates the dwell at full
   /// accuracy (SwingResult::looseDwellRetries). Off with trackImpactEnergy (the impact

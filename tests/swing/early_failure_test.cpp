@@ -21,28 +21,16 @@
 #include "swing/knee_setup.h"
 #include "swing/sweep_uncertainty.h"
 #include "swing/swing_simulation.h"
+#include "swing_outcome.h"
 
 namespace swingsim {
 namespace {
 
 using ::testing::HasSubstr;
 
-struct Outcome {
-  bool ok = false;
-  std::string failure;
-  SwingResult result;
-};
+using Outcome = testing::SwingOutcome;
 
-Outcome run(const SwingSetup& setup, const SwingOptions& options) {
-  Outcome o;
-  try {
-    o.result = simulateSwing(setup, options);
-    o.ok = true;
-  } catch (const RunError& e) {
-    o.failure = e.what();
-  }
-  return o;
-}
+Outcome run(const SwingSetup& setup, const SwingOptions& options) { return testing::runSwingCatching(setup, options); }
 
 TEST(EarlyFailure, ChangesNoSwingOfTheMonteCarloVariants) {
   SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
@@ -53,16 +41,12 @@ TEST(EarlyFailure, ChangesNoSwingOfTheMonteCarloVariants) {
   const UncertaintyPlan plan = planSweepUncertainty(study, options);
   int ended = 0, failedEarly = 0, failedAtLimit = 0;
   for (std::size_t swing = 0; swing < plan.swingCount; ++swing) {
-    const UncertaintyRun& r = plan.findRun(swing);
-    const double lowering = r.lowerings[swing - r.firstSwing];
-    const SweepVariant v = plan.makeVariant(r);
-    const KneeLawSum knee = makeSweepVariantKnee(v);
-    ASSERT_TRUE(knee.isPassive());
-    SwingSetup setup;
-    setup.participant = calcAdaptedParticipant(v.participant, lowering, v.hipEffortExponent);
-    setup.knee = &knee;
-    setup.lowering = lowering;
-    SwingOptions early = v.swing;
+    const PlannedSwing planned = plan.makeSwing(swing);
+    const UncertaintyRun& r = *planned.run;
+    const double lowering = planned.lowering;
+    ASSERT_TRUE(planned.knee.isPassive());
+    const SwingSetup setup = planned.makeSetup();
+    SwingOptions early = planned.variant.swing;
     SwingOptions full = early;
     full.earlyThighFailure = false;
     SCOPED_TRACE(setup.participant.name + " at " + std::to_string(lowering) + " m, sample " + std::to_string(r.sample));
@@ -115,10 +99,16 @@ TEST(EarlyFailure, LeastPotentialEnergyIsTheMinimumOverKneeAngles) {
   }
 }
 
-TEST(EarlyFailure, MessageNamesTheShortfallAndOffItRunsToTheTimeLimit) {
+// P1 with a hip far too weak to lift the thigh 35 deg to its target.
+Participant loadWeakP1() {
   Participant p = loadParticipant("participants/p1.yaml");
-  p.hipMoment.flexionAmplitude = 5;  // far too weak to lift the thigh 35 deg
+  p.hipMoment.flexionAmplitude = 5;
   p.hipMoment.extensionAmplitude = 5;
+  return p;
+}
+
+TEST(EarlyFailure, MessageNamesTheShortfallAndOffItRunsToTheTimeLimit) {
+  const Participant p = loadWeakP1();
   const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
   SwingSetup setup;
   setup.participant = p;
@@ -145,9 +135,7 @@ TEST(EarlyFailure, MessageNamesTheShortfallAndOffItRunsToTheTimeLimit) {
 // A knee law nobody has shown to be passive (the Mauch cylinder, whose latch state may hold
 // energy) never stops a swing early.
 TEST(EarlyFailure, NotWithALawThatIsNotPassive) {
-  Participant p = loadParticipant("participants/p1.yaml");
-  p.hipMoment.flexionAmplitude = 5;
-  p.hipMoment.extensionAmplitude = 5;
+  const Participant p = loadWeakP1();
   const KneeModel mauch = loadKneeModel("models/mauch-2phase.yaml");
   const KneeLawSum knee = makeKneeLaw(p, mauch);
   EXPECT_FALSE(knee.isPassive());

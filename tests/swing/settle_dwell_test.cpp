@@ -13,6 +13,7 @@
 #include "swing/sweep.h"
 #include "swing/sweep_uncertainty.h"
 #include "swing/swing_simulation.h"
+#include "swing_outcome.h"
 
 namespace swingsim {
 namespace {
@@ -25,22 +26,9 @@ struct KneeVariant {
   bool friction;
 };
 
-struct Outcome {
-  bool ok = false;
-  std::string failure;
-  SwingResult result;
-};
+using Outcome = testing::SwingOutcome;
 
-Outcome run(const SwingSetup& setup, const SwingOptions& options) {
-  Outcome o;
-  try {
-    o.result = simulateSwing(setup, options);
-    o.ok = true;
-  } catch (const std::exception& e) {
-    o.failure = e.what();
-  }
-  return o;
-}
+Outcome run(const SwingSetup& setup, const SwingOptions& options) { return testing::runSwingCatching(setup, options); }
 
 TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees) {
   const SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
@@ -131,15 +119,11 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingOnTheMonteCarloVariants) {
   const UncertaintyPlan plan = planSweepUncertainty(study, options);
   int compared = 0, endedEarly = 0, beforeHipConstant = 0;
   for (std::size_t swing = 0; swing < plan.swingCount; ++swing) {
-    const UncertaintyRun& r = plan.findRun(swing);
-    const double lowering = r.lowerings[swing - r.firstSwing];
-    const SweepVariant v = plan.makeVariant(r);
-    const KneeLawSum knee = makeSweepVariantKnee(v);
-    SwingSetup setup;
-    setup.participant = calcAdaptedParticipant(v.participant, lowering, v.hipEffortExponent);
-    setup.knee = &knee;
-    setup.lowering = lowering;
-    SwingOptions early = v.swing;
+    const PlannedSwing planned = plan.makeSwing(swing);
+    const UncertaintyRun& r = *planned.run;
+    const double lowering = planned.lowering;
+    const SwingSetup setup = planned.makeSetup();
+    SwingOptions early = planned.variant.swing;
     SwingOptions full = early;
     full.earlySettleEnd = false;
     SCOPED_TRACE(setup.participant.name + " at " + std::to_string(lowering) + " m, sample " + std::to_string(r.sample));
