@@ -102,7 +102,13 @@ std::string calcStudyInputsFingerprint(const SweepStudy& study) {
   const std::string folder = std::filesystem::path(absolutePath(study.path)).parent_path().string();
   Fingerprint f;
   f.add(formatSweepStudyYaml(study, folder));
-  for (const Participant& p : study.participants) f.add(formatParticipantYaml(p, folder));
+  for (const Participant& p : study.participants) {
+    f.add(formatParticipantYaml(p, folder));
+    // A measured thigh drive's samples: the YAML names only their file (nothing is added
+    // for a hip-moment drive, so such studies keep their fingerprints).
+    for (double t : p.thighKinematics.time) f.add(t);
+    for (double q : p.thighKinematics.hipFlexion) f.add(q);
+  }
   for (const auto& [path, model] : study.kneeModels) {
     f.add(std::filesystem::path(path).filename().string());
     f.add(formatKneeModelYaml(model.spec));

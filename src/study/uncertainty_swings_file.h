@@ -48,7 +48,8 @@ struct UncertaintySwingsFile {
 
 /// Fingerprint (16 hex digits, FNV-1a 64) of everything in the study that the swings
 /// depend on, after any calibration: the study, every participant and every knee model as
-/// swingsim would write them (paths relative to the study's folder).
+/// swingsim would write them (paths relative to the study's folder), and the samples of a
+/// measured thigh drive (its CSV's contents, not only its name).
 std::string calcStudyInputsFingerprint(const SweepStudy& study);
 /// Fingerprint of the assumption table as applied: keys, units, kinds and each participant's
 /// range (exact values), and the plan's run layout (lowerings per run).

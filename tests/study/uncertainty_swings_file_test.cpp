@@ -14,6 +14,7 @@
 
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "study/sweep_study.h"
 
 namespace swingsim {
 namespace {
@@ -159,6 +160,25 @@ TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {
   UncertaintySwingsFile moved = set[1];
   moved.first += 1;
   EXPECT_THAT(refusal({set[0], moved, set[2]}), HasSubstr(": first_swing, last_swing: expected "));
+}
+
+// The inputs fingerprint covers a measured thigh drive's samples, not only its file name:
+// shards run against different contents of the same CSV must not merge. A hip-moment study
+// keeps the fingerprint it had (no samples, nothing added).
+TEST(UncertaintySwingsFile, InputsFingerprintCoversTheThighDrivesSamples) {
+  SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
+  const std::string hipMoment = calcStudyInputsFingerprint(study);
+  study.participants[0].thighKinematics.path = "thigh.csv";
+  study.participants[0].thighKinematics.time = {0.0, 0.1, 0.2};
+  study.participants[0].thighKinematics.hipFlexion = {-0.2, 0.1, 0.3};
+  const std::string measured = calcStudyInputsFingerprint(study);
+  EXPECT_NE(measured, hipMoment);
+  study.participants[0].thighKinematics.hipFlexion[1] = 0.1000001;  // one sample edited in place
+  EXPECT_NE(calcStudyInputsFingerprint(study), measured);
+  study.participants[0].thighKinematics.hipFlexion[1] = 0.1;
+  EXPECT_EQ(calcStudyInputsFingerprint(study), measured);
+  study.participants[0].thighKinematics = ThighKinematics{};
+  EXPECT_EQ(calcStudyInputsFingerprint(study), hipMoment);
 }
 
 }  // namespace
