@@ -1,5 +1,7 @@
 #include "numerics/bogacki_shampine.h"
 
+#include "numerics/step_error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,17 +25,12 @@ constexpr double kMinShrink = 0.2;
 constexpr double kMaxGrow = 5.0;
 constexpr double kExponent = 1.0 / 3;  // the error estimate is O(h^3)
 
-void checkTolerances(double relTol, double absTol) {
-  if (!(relTol > 0) || !(absTol > 0) || !std::isfinite(relTol) || !std::isfinite(absTol))
-    throw std::invalid_argument("Bogacki-Shampine: tolerances must be positive and finite");
-}
-
 }  // namespace
 
 BogackiShampine::BogackiShampine(const OdeSystem& system, double relTol, double absTol)
     : system_(system), n_(system.numStates()), relTol_(relTol), absTol_(absTol) {
   if (n_ <= 0) throw std::invalid_argument("Bogacki-Shampine: the system has no states");
-  checkTolerances(relTol, absTol);
+  checkStepTolerances("Bogacki-Shampine", relTol, absTol);
   for (auto* v : {&y_, &yNew_, &yStage_, &yErr_, &k1_, &k2_, &k3_, &k4_}) v->assign(static_cast<std::size_t>(n_), 0.0);
 }
 
@@ -45,15 +42,6 @@ void BogackiShampine::initialize(double t0, const double* y0, const double* dydt
   std::copy(dydt0, dydt0 + n_, k1_.begin());
   h_ = firstStep;
   numSteps_ = numRejected_ = numEvaluations_ = 0;
-}
-
-double BogackiShampine::calcErrorNorm() const {
-  double sum = 0;
-  for (int i = 0; i < n_; ++i) {
-    const double sk = absTol_ + relTol_ * std::max(std::abs(y_[i]), std::abs(yNew_[i]));
-    sum += (yErr_[i] / sk) * (yErr_[i] / sk);
-  }
-  return std::sqrt(sum / n_);
 }
 
 void BogackiShampine::step(double tStop) {
@@ -80,7 +68,7 @@ void BogackiShampine::step(double tStop) {
     system_.calcDerivatives(tNew, yNew_.data(), k4_.data());
     numEvaluations_ += 3;
     for (int i = 0; i < n_; ++i) yErr_[i] = h * (e1 * k1_[i] + e2 * k2_[i] + e3 * k3_[i] + e4 * k4_[i]);
-    const double err = calcErrorNorm();
+    const double err = calcStepErrorNorm(y_, yNew_, yErr_, relTol_, absTol_);
     if (!std::isfinite(err))
       throw std::runtime_error("Bogacki-Shampine: the state became non-finite at t = " + std::to_string(t_) + " s");
     if (err <= 1.0) {

@@ -45,8 +45,6 @@ class BogackiShampine {
   long getNumEvaluations() const { return numEvaluations_; }
 
  private:
-  double calcErrorNorm() const;
-
   const OdeSystem& system_;
   int n_;
   double relTol_, absTol_;

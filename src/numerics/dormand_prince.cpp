@@ -1,5 +1,7 @@
 #include "numerics/dormand_prince.h"
 
+#include "numerics/step_error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -56,8 +58,7 @@ DormandPrince::DormandPrince(const OdeSystem& system, double relTol, double absT
       absTol_(absTol),
       maxStep_(std::numeric_limits<double>::infinity()) {
   if (n_ <= 0) throw std::invalid_argument("Dormand-Prince: the system has no states");
-  if (!(relTol > 0) || !(absTol > 0) || !std::isfinite(relTol) || !std::isfinite(absTol))
-    throw std::invalid_argument("Dormand-Prince: tolerances must be positive and finite");
+  checkStepTolerances("Dormand-Prince", relTol, absTol);
   for (auto* v : {&y_, &yPrev_, &yStage_, &yErr_, &k1_, &k2_, &k3_, &k4_, &k5_, &k6_, &k7_, &cont1_,
                   &cont2_, &cont3_, &cont4_, &cont5_})
     v->assign(static_cast<std::size_t>(n_), 0.0);
@@ -105,15 +106,6 @@ void DormandPrince::initialize(double t0, const double* y0) {
   const double dMax = std::max(d1n, d2);
   const double h1 = dMax <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / dMax, 1.0 / 5);
   h_ = std::min({100 * h0, h1, maxStep_});
-}
-
-double DormandPrince::calcErrorNorm() const {
-  double sum = 0;
-  for (int i = 0; i < n_; ++i) {
-    const double sk = absTol_ + relTol_ * std::max(std::abs(y_[i]), std::abs(yStage_[i]));
-    sum += (yErr_[i] / sk) * (yErr_[i] / sk);
-  }
-  return std::sqrt(sum / n_);
 }
 
 void DormandPrince::prepareDenseOutput(double h) {
@@ -167,7 +159,7 @@ void DormandPrince::step(double tStop) {
     numEvaluations_ += 6;
     for (int i = 0; i < n_; ++i)
       yErr_[i] = h * (e1 * k1_[i] + e3 * k3_[i] + e4 * k4_[i] + e5 * k5_[i] + e6 * k6_[i] + e7 * k7_[i]);
-    const double err = calcErrorNorm();
+    const double err = calcStepErrorNorm(y_, yStage_, yErr_, relTol_, absTol_);
     if (!std::isfinite(err)) {
       throw std::runtime_error("Dormand-Prince: the state became non-finite at t = " + std::to_string(t_) + " s");
     }

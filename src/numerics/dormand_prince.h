@@ -68,7 +68,6 @@ class DormandPrince {
   long getNumEvaluations() const { return numEvaluations_; }
 
  private:
-  double calcErrorNorm() const;
   void prepareDenseOutput(double h);
 
   const OdeSystem& system_;

@@ -202,6 +202,9 @@ class KneeZoneHandler : public LegEventHandler {
   bool entering_;
 };
 
+// An angle for a message: rad in, degrees rounded to 0.1 out.
+std::string formatDegrees(double rad) { return formatNumber(std::round(rad * kRadToDeg * 10) / 10); }
+
 std::string describeState(const LegModel& leg, const State& s) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "at t = %.4f s: hip flexion %.1f deg (%.0f deg/s), knee flexion %.1f deg (%.0f deg/s)",
@@ -838,9 +841,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     // and a swing "ending" out there would look like a result.
     constexpr double kHipRangeSlack = 2 * kDegToRad;  // rad; plausible hip moments press the stop far less
     if (!thighMotion && (now.hip < p.hipRange.minFlexion - kHipRangeSlack || now.hip > p.hipRange.maxFlexion + kHipRangeSlack)) {
-      const auto deg = [](double rad) { return formatNumber(std::round(rad * kRadToDeg * 10) / 10); };
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the hip left its range of " +
-                     deg(p.hipRange.minFlexion) + " to " + deg(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
+                     formatDegrees(p.hipRange.minFlexion) + " to " + formatDegrees(p.hipRange.maxFlexion) + " deg " + describeState(leg, s) +
                      " (likely cause: a hip moment far too large for this leg, or a hip_range that excludes the swing)");
     }
     if (loose) {
@@ -916,7 +918,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     if (!log.ended && cannotEnd) {
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing cannot end (decided " +
                      describeState(leg, s) + ", before the time limit of " + formatNumber(std::round(timeLimit * 1e4) / 1e4) +
-                     " s): the thigh never reached its target flexion of " + formatNumber(std::round(rule.thighTargetFlexion * kRadToDeg * 10) / 10) +
+                     " s): the thigh never reached its target flexion of " + formatDegrees(rule.thighTargetFlexion) +
                      " deg and cannot any more: with the hip moment constant at " + formatNumber(hipMomentFinal) +
                      " N m from t = " + formatNumber(std::round(hipMomentConstantFrom * 1e4) / 1e4) + " s, the leg's energy is " +
                      formatNumber(std::round(thighShortfall * 1e4) / 1e4) +
@@ -931,18 +933,18 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                 " s, before the swing ended (it needs the thigh at its target, the knee back in the zone and the settle "
                 "dwell of " + formatNumber(rule.settleDwell) + " s): give a longer trial, or a shorter settle_dwell_s; ";
       if (!log.thighReached)
-        cause += "the thigh never reached its target flexion of " + formatNumber(std::round(rule.thighTargetFlexion * kRadToDeg * 10) / 10) +
+        cause += "the thigh never reached its target flexion of " + formatDegrees(rule.thighTargetFlexion) +
                  (thighMotion ? " deg (set swing_end: thigh_target_flexion_deg below the measured thigh's peak)"
                               : " deg (hip moment too small for this leg?)");
       else if (!log.peakSeen)
         cause += "the knee never reached a flexion peak above the zone of stability";
       else if (log.enteredOnce)
-        cause += "the knee did not settle: it left the zone of stability (< " + formatNumber(std::round(rule.zoneOfStability * kRadToDeg * 10) / 10) +
+        cause += "the knee did not settle: it left the zone of stability (< " + formatDegrees(rule.zoneOfStability) +
                 " deg) " + std::to_string(log.bounces) + " times and never stayed inside it for the settle dwell of " +
                 formatNumber(rule.settleDwell) + " s (a stop that returns too much of the impact, restitution near 1?)";
       else
         cause += "the knee never came back inside the zone of stability (< " +
-                formatNumber(std::round(rule.zoneOfStability * kRadToDeg * 10) / 10) + " deg) after its peak (knee resistance too high, or the hip extension moment too weak?)";
+                formatDegrees(rule.zoneOfStability) + " deg) after its peak (knee resistance too high, or the hip extension moment too weak?)";
       throw RunError(p.name + " at lowering " + formatNumber(setup.lowering) + " m: the swing did not end within the time limit of " +
                      formatNumber(std::round(timeLimit * 1e4) / 1e4) + " s; " + describeState(leg, s) + "; " + cause);
     }

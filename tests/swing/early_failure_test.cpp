@@ -33,38 +33,25 @@ using Outcome = testing::SwingOutcome;
 Outcome run(const SwingSetup& setup, const SwingOptions& options) { return testing::runSwingCatching(setup, options); }
 
 TEST(EarlyFailure, ChangesNoSwingOfTheMonteCarloVariants) {
-  SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
-  UncertaintyOptions options;
-  options.samples = 4;
-  options.seed = 7;
-  options.sensitivity = false;
-  const UncertaintyPlan plan = planSweepUncertainty(study, options);
   int ended = 0, failedEarly = 0, failedAtLimit = 0;
-  for (std::size_t swing = 0; swing < plan.swingCount; ++swing) {
-    const PlannedSwing planned = plan.makeSwing(swing);
-    const UncertaintyRun& r = *planned.run;
-    const double lowering = planned.lowering;
-    ASSERT_TRUE(planned.knee.isPassive());
-    const SwingSetup setup = planned.makeSetup();
-    SwingOptions early = planned.variant.swing;
-    SwingOptions full = early;
-    full.earlyThighFailure = false;
-    SCOPED_TRACE(setup.participant.name + " at " + std::to_string(lowering) + " m, sample " + std::to_string(r.sample));
-    const Outcome a = run(setup, early), b = run(setup, full);
-    ASSERT_EQ(a.ok, b.ok) << a.failure << " | " << b.failure;
-    if (a.ok) {
-      // Nothing decided early: the same swing to the last bit.
-      EXPECT_EQ(a.result.swingTime, b.result.swingTime);
-      EXPECT_EQ(a.result.realizations, b.result.realizations);
-      ++ended;
-      continue;
-    }
-    // Both fail because the thigh never reaches its target.
-    EXPECT_THAT(b.failure, HasSubstr("the thigh never reached its target flexion"));
-    EXPECT_THAT(a.failure, HasSubstr("the thigh never reached its target flexion"));
-    if (a.failure.find("cannot end") != std::string::npos) ++failedEarly;
-    else ++failedAtLimit;
-  }
+  testing::compareMonteCarloSwings(
+      4, 7, [](SwingOptions& o) { o.earlyThighFailure = false; },
+      [&](const PlannedSwing& planned, const Outcome& a, const Outcome& b) {
+        ASSERT_TRUE(planned.knee.isPassive());
+        ASSERT_EQ(a.ok, b.ok) << a.failure << " | " << b.failure;
+        if (a.ok) {
+          // Nothing decided early: the same swing to the last bit.
+          EXPECT_EQ(a.result.swingTime, b.result.swingTime);
+          EXPECT_EQ(a.result.realizations, b.result.realizations);
+          ++ended;
+          return;
+        }
+        // Both fail because the thigh never reaches its target.
+        EXPECT_THAT(b.failure, HasSubstr("the thigh never reached its target flexion"));
+        EXPECT_THAT(a.failure, HasSubstr("the thigh never reached its target flexion"));
+        if (a.failure.find("cannot end") != std::string::npos) ++failedEarly;
+        else ++failedAtLimit;
+      });
   std::printf("Monte Carlo variants: %d swings ended, %d never did: %d decided early, %d at the time limit\n", ended,
               failedEarly + failedAtLimit, failedEarly, failedAtLimit);
   EXPECT_GT(ended, 100);

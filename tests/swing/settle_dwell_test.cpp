@@ -111,38 +111,25 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees)
 // (HipMomentProfile::calcRangeFrom), stops 1.25e4-5e4 N m/rad^1.5 with restitution 0.3-0.5,
 // friction 5-15 N m, dwells of 0.10-0.20 s, every lowering.
 TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingOnTheMonteCarloVariants) {
-  const SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
-  UncertaintyOptions options;
-  options.samples = 4;
-  options.seed = 11;
-  options.sensitivity = false;
-  const UncertaintyPlan plan = planSweepUncertainty(study, options);
   int compared = 0, endedEarly = 0, beforeHipConstant = 0;
-  for (std::size_t swing = 0; swing < plan.swingCount; ++swing) {
-    const PlannedSwing planned = plan.makeSwing(swing);
-    const UncertaintyRun& r = *planned.run;
-    const double lowering = planned.lowering;
-    const SwingSetup setup = planned.makeSetup();
-    SwingOptions early = planned.variant.swing;
-    SwingOptions full = early;
-    full.earlySettleEnd = false;
-    SCOPED_TRACE(setup.participant.name + " at " + std::to_string(lowering) + " m, sample " + std::to_string(r.sample));
-    const Outcome a = run(setup, early), b = run(setup, full);
-    ASSERT_EQ(a.ok, b.ok) << a.failure << " | " << b.failure;
-    if (!a.ok) continue;
-    ++compared;
-    const SwingResult &x = a.result, &y = b.result;
-    if (x.endDecidedTime < y.endDecidedTime) {
-      ++endedEarly;
-      const std::vector<double> kinks = setup.participant.hipMoment.calcBreakpoints();
-      beforeHipConstant += !kinks.empty() && x.endDecidedTime < kinks.back();
-    }
-    EXPECT_EQ(x.swingTime, y.swingTime);
-    EXPECT_EQ(x.bounces, y.bounces);
-    EXPECT_EQ(x.bounceHeight, y.bounceHeight);
-    ASSERT_EQ(x.events.size(), y.events.size());
-    for (std::size_t i = 0; i < x.events.size(); ++i) EXPECT_EQ(x.events[i].time, y.events[i].time) << x.events[i].name;
-  }
+  testing::compareMonteCarloSwings(
+      4, 11, [](SwingOptions& o) { o.earlySettleEnd = false; },
+      [&](const PlannedSwing& planned, const Outcome& a, const Outcome& b) {
+        ASSERT_EQ(a.ok, b.ok) << a.failure << " | " << b.failure;
+        if (!a.ok) return;
+        ++compared;
+        const SwingResult &x = a.result, &y = b.result;
+        if (x.endDecidedTime < y.endDecidedTime) {
+          ++endedEarly;
+          const std::vector<double> kinks = planned.participant.hipMoment.calcBreakpoints();
+          beforeHipConstant += !kinks.empty() && x.endDecidedTime < kinks.back();
+        }
+        EXPECT_EQ(x.swingTime, y.swingTime);
+        EXPECT_EQ(x.bounces, y.bounces);
+        EXPECT_EQ(x.bounceHeight, y.bounceHeight);
+        ASSERT_EQ(x.events.size(), y.events.size());
+        for (std::size_t i = 0; i < x.events.size(); ++i) EXPECT_EQ(x.events[i].time, y.events[i].time) << x.events[i].name;
+      });
   std::printf("Monte Carlo variants: %d swings ended, %d ended early, %d of them before the hip moment was constant\n",
               compared, endedEarly, beforeHipConstant);
   EXPECT_GT(compared, 100);
