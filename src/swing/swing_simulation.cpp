@@ -15,6 +15,7 @@
 #include "core/input_error.h"
 #include "leg/leg_model.h"
 #include "numerics/bogacki_shampine.h"
+#include "swing/knee_climb.h"
 #include "swing/simbody_ode.h"
 
 namespace swingsim {
@@ -392,42 +393,32 @@ void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& ru
 }
 
 // The knee's hyperextension stop inside a knee law (a part of a sum, or the law), or null.
-const JointStop* findKneeStop(const KneeLaw& law) {
-  if (const auto* stop = dynamic_cast<const JointStop*>(&law)) return stop;
-  if (const auto* sum = dynamic_cast<const KneeLawSum*>(&law)) {
-    for (std::size_t i = 0; i < sum->size(); ++i)
-      if (const JointStop* stop = findKneeStop(sum->part(i))) return stop;
-  }
-  return nullptr;
-}
-
 // The early failure (SwingOptions::earlyThighFailure) needs the leg's energy this far below
 // what the thigh at its target needs, J: far above the integration's error in the energy
 // (about the accuracy times the leg's few joules, and its drift over a swing's steps).
 constexpr double kUnreachableEnergyMargin = 0.01;
 
-// The early end of the settle dwell (SwingOptions::earlySettleEnd): fraction of the free
-// acceleration (under the least holding hip moment still to come) assumed to hold the knee
-// on its stop for the rest of the dwell. The holding moment also changes with the thigh's
-// angle and rate (sin of the angle, about) over the dwell's tenths of a second, which the
-// linear response to the hip moment at the present pose does not see: P1's falls by a few
-// percent there.
+// The early end of the settle dwell (SwingOptions::earlySettleEnd): fraction of what holds
+// the knee down that is trusted to hold it for the rest of the dwell (KneeClimb): the free
+// acceleration under the least holding hip moment still to come, and the knee law's
+// resisting parts. The holding moment also changes with the thigh's angle and rate (sin of
+// the angle, about) over the dwell's tenths of a second, which the linear response to the
+// hip moment at the present pose does not see: P1's falls by a few percent there. The same
+// fraction of the knee law's resisting parts (friction, damping) is trusted: the knee's
+// inertia mu^-1 below is taken at the present pose too.
 constexpr double kHoldFraction = 0.5;
 
 // Whether the knee, at step end `e` in the zone, can no longer climb out of it. Treated as
-// one degree of freedom with the thigh free: its acceleration without the knee laws,
-// `freeAcceleration` (rad/s^2; the caller takes the least holding one the hip moment can
-// still give), presses it onto the stop (< 0); the resisting laws (damping, friction) only
-// take energy; the stop gives back at most its stored energy (JointStop::
-// calcJointStoredEnergy, the midway spring), times mu = (M^-1)_knee,knee in 1/(kg m^2). To
-// reach the zone edge the knee needs 1/2 rate^2 + mu x stored >= kHoldFraction
-// |freeAcceleration| (edge - engage angle).
-bool isSettled(const StepEnd& e, const JointStop& stop, double zone, double mu, double freeAcceleration) {
-  const double lower = stop.params().lower;
-  if (!(e.knee < lower && e.kneeRate >= 0)) return false;  // on the stop, coming out or at rest
+// one degree of freedom with the thigh free (KneeClimb): its acceleration without the knee
+// laws, `freeAcceleration` (rad/s^2; the caller takes the least holding one the hip moment
+// can still give), presses it down (< 0); the stop gives back at most its stored energy
+// (the midway spring) times mu = (M^-1)_knee,knee in 1/(kg m^2); the other parts of the
+// knee law act as they would on the way up. Decided where the knee rises or rests (rate >= 0)
+// below `edge` (rad): on the stop coming out of it, or above it.
+bool isSettled(const StepEnd& e, const KneeClimb& climb, double edge, double mu, double freeAcceleration) {
+  if (!(e.knee < edge && e.kneeRate >= 0)) return false;
   if (!(freeAcceleration < 0)) return false;
-  const double energy = 0.5 * e.kneeRate * e.kneeRate + mu * stop.calcJointStoredEnergy(e.knee);  // (rad/s)^2 / 2 per unit inertia
-  return energy < kHoldFraction * -freeAcceleration * (zone - lower);
+  return !climb.canReach(e.knee, e.kneeRate, edge, mu, -freeAcceleration, kHoldFraction);
 }
 
 // Contacts of the knee with its hyperextension stop, from the step ends and their Hermite
@@ -750,7 +741,9 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   SwingTrajectory& tr = result.trajectory;
   StepEnd previous = readStepEnd(leg, stepper->getState(), trackEnergy);
   std::optional<StopImpactTracker> impacts;
-  if (const JointStop* stop = findKneeStop(*setup.knee)) {
+  // The knee law's hyperextension stop and the parts the settle dwell's early end weighs.
+  const KneeClimb climb(*setup.knee);
+  if (const JointStop* stop = climb.getStop()) {
     std::vector<std::string> causes;
     if (trackEnergy) {
       for (int i = 0; i < std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1); ++i) causes.push_back(leg.getKneeWorkPartName(i));
@@ -788,7 +781,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   const double zone = rule.zoneOfStability;
   // The early settle end (SwingOptions::earlySettleEnd) needs the stop and a hip moment that
   // no longer changes: from the profile's last breakpoint on it is constant.
-  const JointStop* kneeStop = findKneeStop(*setup.knee);
+  const JointStop* kneeStop = climb.getStop();
   const std::vector<double> hipBreakpoints = p.hipMoment.calcBreakpoints();
   const double hipMomentConstantFrom = hipBreakpoints.empty() ? 0.0 : hipBreakpoints.back();
   // Not with the measured thigh drive: the prescribed thigh keeps moving.
@@ -873,7 +866,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       candidateTime = log.candidateTime;
       result.realizationsToEnd = stepper->getNumRealizations();
     }
-    if (!log.ended && earlyEndAllowed && log.candidate && now.t == s.getTime() && now.knee < kneeStop->params().lower) {
+    if (!log.ended && earlyEndAllowed && log.candidate && now.t == s.getTime() && now.knee < zone &&
+        now.kneeRate >= 0) {
       // The knee's acceleration per unit knee moment (mu) and per unit hip moment (nu),
       // thigh free: the knee column of M^-1 (symmetric).
       Vector unitKneeForce(s.getNU(), 0.0), response;
@@ -884,7 +878,9 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       const auto [hipLow, hipHigh] = p.hipMoment.calcRangeFrom(now.t);
       const double hipNow = p.hipMoment.calcMoment(now.t);
       const double freeAcceleration = now.kneeAcc - mu * now.kneeMoment + nu * ((nu > 0 ? hipHigh : hipLow) - hipNow);
-      if (isSettled(now, *kneeStop, zone, mu, freeAcceleration)) log.endAtCandidate();
+      // Not within the loose dwell's margin of the edge either: there the dwell would be
+      // redone tightly (a knee that rises that high may bounce out).
+      if (isSettled(now, climb, zone - kLooseDwellMargin, mu, freeAcceleration)) log.endAtCandidate();
     }
     if (log.ended) {
       result.endDecidedTime = now.t;

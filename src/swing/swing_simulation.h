@@ -71,12 +71,14 @@ struct SwingOptions {
   bool requireSwingEnd = true;
   /// Fast path (Dormand-Prince) only: end the settle dwell as soon as the knee cannot leave
   /// the zone before the dwell would end, instead of integrating the whole dwell. Decided at
-  /// a step end where the knee is on its hyperextension stop coming out of it or at rest
-  /// (flexion below the stop's engage angle, rate >= 0), and the energy it has (its rate and
-  /// what the stop can give back) cannot lift it to the zone's edge against half the
-  /// acceleration that presses it onto the stop under the hip moment still to come
-  /// (HipMomentProfile::calcRangeFrom, the end of it that holds the knee least, through
-  /// the present M^-1; see simulateSwing's isSettled). Swing
+  /// a step end where the knee rises or rests (rate >= 0; on its hyperextension stop coming
+  /// out of it, or above it) and, treated as one degree of freedom with the thigh free
+  /// (swing/knee_climb.h), cannot climb to within the loose dwell's 0.5 deg of the zone's
+  /// edge: its energy (its rate and what the stop can give back) is used up first by half
+  /// of what holds it back: the acceleration that presses it down under the hip moment still
+  /// to come (HipMomentProfile::calcRangeFrom, the end of it that holds the knee least,
+  /// through the present M^-1) and the knee law's other parts on the way up (the friction
+  /// near extension, the damping table; see simulateSwing's isSettled). Swing
   /// time, events, bounces and bounce height are those of the full dwell (tests/swing/
   /// settle_dwell_test.cpp, every lowering of the four Burkett participants, bouncy knees
   /// included); the trajectory and the stop contacts end where the end was decided (a
