@@ -574,6 +574,8 @@ class DormandPrinceStepper final : public SwingStepper {
     double tStop = tLimit;
     for (double b : breakpoints_)
       if (b > t && b < tStop) tStop = b;
+    // End steps where the falling knee reaches its next level (the zone, the stop).
+    if (kneeIndex_ >= 0) tStop = std::min(tStop, t + calcTimeToKneeLevel());
     if (loose_) loose_->step(tStop);
     else dp_->step(tStop);
     return getTime() < tLimit;
@@ -584,6 +586,18 @@ class DormandPrinceStepper final : public SwingStepper {
   }
   int getNumRealizations() const override { return static_cast<int>(ode_.getNumRealizations()); }
 
+  /// Ends a step where the knee (coordinate `kneeIndex` of q), falling, is predicted to
+  /// reach the next of `levels` (rad, descending) below it, when that is sooner than the
+  /// step planned: the swing's levels are just inside the zone of stability (the swing end
+  /// is then found by a tight step, and the friction switching on near extension falls in
+  /// the loose dwell) and the stop's engage angle (a step that runs into the stop's
+  /// stiffness is rejected, often several times over). Predicted from the knee's angle,
+  /// rate and acceleration at the step start (a parabola); a level within kLevelSlack
+  /// above the knee is passed by, so no sliver of a step is forced.
+  void setKneeLevels(int kneeIndex, std::vector<double> levels) {
+    kneeIndex_ = kneeIndex;
+    kneeLevels_ = std::move(levels);
+  }
   /// Remembers the current step end (time and state).
   void saveCheckpoint() {
     checkpointTime_ = getTime();
@@ -620,6 +634,27 @@ class DormandPrinceStepper final : public SwingStepper {
   SimbodyOde ode_;
   std::vector<double> y_;
   std::vector<double> breakpoints_;  // s
+  static constexpr double kLevelSlack = 1e-3;  // rad
+  // Time to the knee's next level from the current step end, s (+inf: none ahead).
+  double calcTimeToKneeLevel() const {
+    const double* y = loose_ ? loose_->getState() : dp_->getState();
+    const double* f = loose_ ? loose_->getDerivatives() : dp_->getDerivatives();
+    const int nq = work_.getNQ();
+    const double knee = y[kneeIndex_], rate = y[nq + kneeIndex_], acc = f[nq + kneeIndex_];
+    if (!(rate < 0)) return std::numeric_limits<double>::infinity();
+    for (double level : kneeLevels_) {
+      const double gap = knee - level;
+      if (gap <= kLevelSlack) continue;
+      // Smallest s > 0 with gap + rate s + acc s^2 / 2 = 0, in the form without
+      // cancellation; none if the knee stops short of the level.
+      const double disc = rate * rate - 2 * acc * gap;
+      if (disc < 0) return std::numeric_limits<double>::infinity();
+      return 2 * gap / (-rate + std::sqrt(disc));
+    }
+    return std::numeric_limits<double>::infinity();
+  }
+  int kneeIndex_ = -1;
+  std::vector<double> kneeLevels_;  // rad, descending
   double accuracy_ = 0;
   std::unique_ptr<DormandPrince> dp_;
   std::unique_ptr<BogackiShampine> loose_;  // the loose dwell, once it has begun
@@ -730,6 +765,13 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     auto dp = std::make_unique<DormandPrinceStepper>(system, initial, options.accuracy,
                                                      thighMotion ? std::vector<double>{} : p.hipMoment.calcBreakpoints());
     dormandPrince = dp.get();
+    {
+      // The knee is mobility 1 (thigh then shank); its levels: inside the zone, the stop.
+      std::vector<double> levels{rule.zoneOfStability - kLooseDwellMargin};
+      if (const JointStop* stop = KneeClimb(*setup.knee).getStop())
+        if (stop->params().lower < levels.back()) levels.push_back(stop->params().lower);
+      dp->setKneeLevels(1, std::move(levels));
+    }
     stepper = std::move(dp);
   } else {
     stepper = std::make_unique<SimbodyStepper>(system, initial, options, timeLimit);
