@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "../independent/rk4_step.h"
+
 namespace swingsim {
 namespace {
 
@@ -74,12 +76,7 @@ double measureRestitution(const JointStop& stop, double inertia, double impactRa
   const double h = 2e-6;          // s: a few thousand steps per contact
   auto acc = [&](double qq, double uu) { return stop.calcJointMoment(qq, uu) / inertia; };
   for (int i = 0; i < 10000000; ++i) {
-    const double k1q = u, k1u = acc(q, u);
-    const double k2q = u + 0.5 * h * k1u, k2u = acc(q + 0.5 * h * k1q, u + 0.5 * h * k1u);
-    const double k3q = u + 0.5 * h * k2u, k3u = acc(q + 0.5 * h * k2q, u + 0.5 * h * k2u);
-    const double k4q = u + h * k3u, k4u = acc(q + h * k3q, u + h * k3u);
-    q += h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q);
-    u += h / 6 * (k1u + 2 * k2u + 2 * k3u + k4u);
+    testing::stepRk4(q, u, h, acc);
     if (q >= 0 && u > 0) return u / impactRate;  // left the stop
     if (q >= 0 && i > 0 && u <= 0 && std::abs(u) < 1e-12) return 0;
   }

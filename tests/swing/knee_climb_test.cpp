@@ -13,6 +13,7 @@
 #include "knee/knee_added_effects.h"
 #include "knee/knee_friction.h"
 #include "knee/joint_stop.h"
+#include "../independent/rk4_step.h"
 
 namespace swingsim {
 namespace {
@@ -41,12 +42,7 @@ double climbInTime(const KneeLaw& others, double q0, double w0, double trusted) 
   double q = q0, w = w0;
   const double h = 1e-6;  // s
   while (w > 0 && q < 1.0) {  // 1 rad: far past any edge
-    const double k1q = w, k1w = acc(q, w);
-    const double k2q = w + 0.5 * h * k1w, k2w = acc(q + 0.5 * h * k1q, w + 0.5 * h * k1w);
-    const double k3q = w + 0.5 * h * k2w, k3w = acc(q + 0.5 * h * k2q, w + 0.5 * h * k2w);
-    const double k4q = w + h * k3w, k4w = acc(q + h * k3q, w + h * k3w);
-    q += h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q);
-    w += h / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
+    testing::stepRk4(q, w, h, acc);
   }
   return q;
 }
