@@ -392,7 +392,6 @@ void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& ru
   }
 }
 
-// The knee's hyperextension stop inside a knee law (a part of a sum, or the law), or null.
 // The early failure (SwingOptions::earlyThighFailure) needs the leg's energy this far below
 // what the thigh at its target needs, J: far above the integration's error in the energy
 // (about the accuracy times the leg's few joules, and its drift over a swing's steps).
@@ -759,6 +758,8 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   }
   const State initial = leg.makeInitialState(initialConditions);
   std::unique_ptr<SwingStepper> stepper;
+  // The knee law's hyperextension stop and the parts the settle dwell's early end weighs.
+  const KneeClimb climb(*setup.knee);
   DormandPrinceStepper* dormandPrince = nullptr;
   if (options.integrator == SwingIntegrator::kDormandPrince) {
     // End steps on the hip moment's kinks; the thigh spline is smooth (C4).
@@ -768,7 +769,7 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
     {
       // The knee is mobility 1 (thigh then shank); its levels: inside the zone, the stop.
       std::vector<double> levels{rule.zoneOfStability - kLooseDwellMargin};
-      if (const JointStop* stop = KneeClimb(*setup.knee).getStop())
+      if (const JointStop* stop = climb.getStop())
         if (stop->params().lower < levels.back()) levels.push_back(stop->params().lower);
       dp->setKneeLevels(1, std::move(levels));
     }
@@ -783,8 +784,6 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   SwingTrajectory& tr = result.trajectory;
   StepEnd previous = readStepEnd(leg, stepper->getState(), trackEnergy);
   std::optional<StopImpactTracker> impacts;
-  // The knee law's hyperextension stop and the parts the settle dwell's early end weighs.
-  const KneeClimb climb(*setup.knee);
   if (const JointStop* stop = climb.getStop()) {
     std::vector<std::string> causes;
     if (trackEnergy) {
