@@ -13,7 +13,8 @@
 //   dE/dq = -f h + mu (f min(M, 0) + max(M, 0)),   M = M(q, sqrt(2 E)),
 //
 // f the fraction of what holds it back that is trusted (the swing's kHoldFraction,
-// swing_simulation.cpp, says why it is below 1); a part that pushes the knee up (M > 0 while it flexes) counts whole.
+// swing_simulation.cpp, says why it is below 1); a part that pushes the knee up (M > 0
+// while it flexes) counts whole.
 // The climb is integrated in q (midpoint rule, steps of at most kClimbStep) from q to the
 // edge; the knee cannot get there if E reaches 0 first.
 //

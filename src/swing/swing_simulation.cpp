@@ -820,14 +820,19 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   const double looseAccuracy = std::min(options.accuracy * options.dwellAccuracyFactor, kLoosestDwellAccuracy);
   const bool looseDwellAllowed = dormandPrince != nullptr && !trackEnergy && looseAccuracy > options.accuracy;
   const double zone = rule.zoneOfStability;
-  // The early settle end (SwingOptions::earlySettleEnd) needs the stop and a hip moment that
-  // no longer changes: from the profile's last breakpoint on it is constant.
-  const JointStop* kneeStop = climb.getStop();
+  // The hip moment is constant from the profile's last breakpoint on.
   const std::vector<double> hipBreakpoints = p.hipMoment.calcBreakpoints();
   const double hipMomentConstantFrom = hipBreakpoints.empty() ? 0.0 : hipBreakpoints.back();
-  // Not with the measured thigh drive: the prescribed thigh keeps moving.
-  const bool earlyEndAllowed = options.earlySettleEnd && dormandPrince != nullptr && !trackEnergy && kneeStop != nullptr &&
-                               kneeStop->params().lower < zone && !thighMotion;
+  // The early settle end (SwingOptions::earlySettleEnd) needs the stop; not with the measured
+  // thigh drive: the prescribed thigh keeps moving. It is decided below `settleEdge`: not
+  // within the loose dwell's margin of the zone's edge either, where the dwell would be
+  // redone tightly (a knee that rises that high may bounce out).
+  const bool earlyEndAllowed = options.earlySettleEnd && dormandPrince != nullptr && !trackEnergy &&
+                               climb.getStop() != nullptr && climb.getStop()->params().lower < zone && !thighMotion;
+  const double settleEdge = zone - kLooseDwellMargin;
+  // The knee's column of M^-1 is asked for with a unit knee force (mobility 1).
+  Vector unitKneeForce(initial.getNU(), 0.0), kneeResponse;
+  unitKneeForce[1] = 1.0;
   // The early failure (SwingOptions::earlyThighFailure): the hip moment after its last
   // breakpoint, and the least energy (J) the leg must have for the thigh to get to its target.
   const double hipMomentFinal = p.hipMoment.calcMoment(hipMomentConstantFrom + 1.0);
@@ -907,21 +912,17 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
       candidateTime = log.candidateTime;
       result.realizationsToEnd = stepper->getNumRealizations();
     }
-    if (!log.ended && earlyEndAllowed && log.candidate && now.t == s.getTime() && now.knee < zone &&
+    if (!log.ended && earlyEndAllowed && log.candidate && now.t == s.getTime() && now.knee < settleEdge &&
         now.kneeRate >= 0) {
       // The knee's acceleration per unit knee moment (mu) and per unit hip moment (nu),
       // thigh free: the knee column of M^-1 (symmetric).
-      Vector unitKneeForce(s.getNU(), 0.0), response;
-      unitKneeForce[1] = 1.0;
-      leg.getMatter().multiplyByMInv(s, unitKneeForce, response);
-      const double mu = response[1], nu = response[0];
+      leg.getMatter().multiplyByMInv(s, unitKneeForce, kneeResponse);
+      const double mu = kneeResponse[1], nu = kneeResponse[0];
       // Without the knee laws, under the hip moment still to come that holds it least.
       const auto [hipLow, hipHigh] = p.hipMoment.calcRangeFrom(now.t);
       const double hipNow = p.hipMoment.calcMoment(now.t);
       const double freeAcceleration = now.kneeAcc - mu * now.kneeMoment + nu * ((nu > 0 ? hipHigh : hipLow) - hipNow);
-      // Not within the loose dwell's margin of the edge either: there the dwell would be
-      // redone tightly (a knee that rises that high may bounce out).
-      if (isSettled(now, climb, zone - kLooseDwellMargin, mu, freeAcceleration)) log.endAtCandidate();
+      if (isSettled(now, climb, settleEdge, mu, freeAcceleration)) log.endAtCandidate();
     }
     if (log.ended) {
       result.endDecidedTime = now.t;
