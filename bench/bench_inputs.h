@@ -10,7 +10,7 @@
 #include "knee/knee_law.h"
 #include "swing/knee_setup.h"
 #include "study/sweep_study.h"
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim::bench {

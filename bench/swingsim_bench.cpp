@@ -20,7 +20,7 @@
 #include "leg/leg_model.h"
 #include "swing/reference_swing.h"
 #include "swing/simbody_ode.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim::bench {
 namespace {

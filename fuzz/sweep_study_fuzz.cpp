@@ -2,7 +2,7 @@
 // parseSweepStudy, then the lowering grid of each participant (what runSweep builds first).
 #include "fuzz_common.h"
 #include "study/sweep_study.h"
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace swingsim;

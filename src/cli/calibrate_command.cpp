@@ -11,8 +11,8 @@
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
 #include "io/participant_loader.h"
-#include "swing/burkett_published.h"
-#include "swing/calibration.h"
+#include "sweep/burkett_published.h"
+#include "sweep/calibration.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim::cli {

@@ -15,8 +15,8 @@
 #include "report/sweep_report.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
-#include "swing/sweep.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim::cli {
 namespace {

@@ -9,8 +9,8 @@
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
-#include "swing/measured_validation.h"
-#include "swing/terminal_impact.h"
+#include "sweep/measured_validation.h"
+#include "sweep/terminal_impact.h"
 
 namespace swingsim::cli {
 

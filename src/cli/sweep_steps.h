@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "study/uncertainty_swings_file.h"
-#include "swing/sweep.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim::cli {
 

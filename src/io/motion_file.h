@@ -53,6 +53,10 @@ MotionTable parseMotionTable(const std::string& text, const std::string& path);
 struct MotionColumns {
   std::string hip, knee;            ///< hip and knee flexion angle labels (required)
   std::string hipMoment;            ///< hip flexion moment label, N m ("" = not read)
+  /// Pelvis labels ("" = not read): tilt (angle, the file's unit; added to the hip angle to
+  /// give the thigh's angle in space) and translations (m, whatever inDegrees says).
+  std::string pelvisTilt, pelvisTx, pelvisTy;
+  std::string kneeMoment;           ///< knee moment label in an inverse-dynamics .sto ("" = not read)
   double hipSign = 1, kneeSign = 1;  ///< +1 or -1
   double hipOffset = 0, kneeOffset = 0;  ///< rad (degrees in the file: *_offset_deg)
   std::optional<double> toeOffTime;      ///< s, file time; default the first row

@@ -2,6 +2,8 @@
 // Plain data describing one participant's prosthetic leg (Burkett 2004 Table 2) and how a
 // knee-axis lowering changes it. No Simbody here: the Simbody model and the reference
 // integrator both build from LegGeometry.
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,7 +99,12 @@ enum class SwingDrive {
 /// participant (a swing kinematics CSV or a motion file), or a measured swing record.
 struct ThighKinematics {
   std::string path;                      ///< file it was read from ("" = given in code)
-  std::vector<double> time, hipFlexion;  ///< s from toe-off (first sample at 0), rad
+  /// s from toe-off (first sample at 0); the thigh's angle in space, rad (hip flexion plus
+  /// pelvis tilt when the recording has the pelvis).
+  std::vector<double> time, hipFlexion;
+  /// The measured pelvis at the same times: translation in the ground frame, m (x forward,
+  /// y up), and tilt about +z, rad. Empty = the hip is fixed in space (Burkett's assumption).
+  std::vector<double> pelvisX, pelvisY, pelvisTilt;
 };
 
 struct Participant {
@@ -119,6 +126,9 @@ struct Participant {
   HipMomentProfile hipMoment;        ///< the drive if drive == kHipMoment
   ThighKinematics thighKinematics;   ///< the drive if drive == kThighKinematics
   double minShankLength = 0.10;  ///< m: the knee unit and pylon clamp need at least this
+  /// The hip joint centre in the pelvis frame, m (x forward, y up): where the hip sits when
+  /// a measured pelvis moves it (`hip_offset_in_pelvis_m`; written by import-osim).
+  std::optional<std::array<double, 2>> hipOffsetInPelvis;
 };
 
 /// The leg as the dynamics sees it, after lowering: distances from the proximal joint.

@@ -15,6 +15,10 @@ struct SwingRecord {
   /// A knee moment measured independently (inverse dynamics), never fitted: compared with
   /// the model's after a diagnosis (HeldBackComparison). Empty if not given.
   std::vector<double> kneeMoment;
+  /// The measured pelvis (OpenSim pelvis_tx, pelvis_ty, pelvis_tilt): translation in the
+  /// ground frame, m (x forward, y up), tilt about +z, rad. When pelvisTilt is given,
+  /// hipFlexion is the thigh's angle in space (hip flexion + pelvis tilt). Empty if not given.
+  std::vector<double> pelvisX, pelvisY, pelvisTilt;
 };
 
 }  // namespace swingsim

@@ -13,7 +13,7 @@
 #include "numerics/metrics.h"
 #include "report/svg_plot.h"
 #include "report/swing_json.h"
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 
 namespace swingsim {
 
@@ -500,7 +500,7 @@ std::string toeStrikeCell(const Participant* p, double clearance) {
   return clearance < 0 ? "yes" : "no";
 }
 
-// Burkett's terminal-impact findings, per participant (swing/terminal_impact.h); "" if the
+// Burkett's terminal-impact findings, per participant (sweep/terminal_impact.h); "" if the
 // check did not run.
 std::string formatTerminalImpactSection(const SweepResults& results) {
   if (results.terminalImpact.empty()) return "";
@@ -536,7 +536,7 @@ std::string formatTerminalImpactSection(const SweepResults& results) {
 
 namespace {
 
-// Table 4 as a validation set (swing/measured_validation.h); "" if it did not run.
+// Table 4 as a validation set (sweep/measured_validation.h); "" if it did not run.
 std::string formatTable4ValidationSection(const SweepResults& results) {
   if (results.table4.empty()) return "";
   std::string md = "## Table 4 as validation: errors against the measured swing times\n\n";

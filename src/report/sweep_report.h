@@ -5,8 +5,8 @@
 #include <map>
 #include <string>
 
-#include "swing/sweep.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
 

@@ -7,7 +7,7 @@
 #include "io/participant_loader.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
 

@@ -3,7 +3,7 @@
 // lowering grid, added masses and integrator settings of a knee-axis sweep.
 #include <string>
 
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 namespace swingsim {
 

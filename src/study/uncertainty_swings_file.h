@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "swing/sweep.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
 

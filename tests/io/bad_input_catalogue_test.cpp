@@ -33,7 +33,7 @@
 #include "core/units.h"
 #include "io/yaml_reader.h"
 #include "study/sweep_study.h"
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 namespace swingsim {
 namespace {

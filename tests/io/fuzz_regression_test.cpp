@@ -15,7 +15,7 @@
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
 #include "study/sweep_study.h"
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 namespace swingsim {
 namespace {

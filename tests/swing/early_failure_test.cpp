@@ -19,7 +19,7 @@
 #include "leg/leg_model.h"
 #include "study/sweep_study.h"
 #include "swing/knee_setup.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep_uncertainty.h"
 #include "swing/swing_simulation.h"
 #include "swing_outcome.h"
 

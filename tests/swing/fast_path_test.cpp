@@ -12,7 +12,7 @@
 #include "knee/joint_stop.h"
 #include "swing/knee_setup.h"
 #include "study/sweep_study.h"
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {

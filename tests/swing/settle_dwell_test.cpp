@@ -10,8 +10,8 @@
 #include "io/participant_loader.h"
 #include "study/sweep_study.h"
 #include "swing/knee_setup.h"
-#include "swing/sweep.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_uncertainty.h"
 #include "swing/swing_simulation.h"
 #include "swing_outcome.h"
 

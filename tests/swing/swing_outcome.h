@@ -9,7 +9,7 @@
 #include <string>
 
 #include "study/sweep_study.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep_uncertainty.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim::testing {

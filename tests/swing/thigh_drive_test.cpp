@@ -19,7 +19,7 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "leg/thigh_motion.h"
-#include "swing/calibration.h"
+#include "sweep/calibration.h"
 #include "swing/knee_setup.h"
 #include "swing/reference_swing.h"
 #include "swing/swing_simulation.h"

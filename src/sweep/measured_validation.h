@@ -5,7 +5,7 @@
 // Burkett's own model, with a leave-one-participant-out check of the calibration.
 #include <vector>
 
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 namespace swingsim {
 

@@ -10,7 +10,7 @@
 #include <map>
 
 #include "model/knee_model.h"
-#include "swing/calibration.h"
+#include "sweep/calibration.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -70,7 +70,7 @@ struct ParticipantSweep {
   int bestWithMass = -1;  ///< index into massPoints, -1 if none
 };
 
-// Burkett 2004's terminal-impact findings on a sweep (swing/terminal_impact.h).
+// Burkett 2004's terminal-impact findings on a sweep (sweep/terminal_impact.h).
 /// One swing with its impact bookkeeping (SwingOptions::trackImpactEnergy).
 struct TrackedImpactSwing {
   double lowering = 0;  ///< m

@@ -1,6 +1,6 @@
 // The table of unpublished assumptions (issue 15 item 4): every entry's apply function
 // changes what it claims, its range holds the files' value, and the draws stay inside it.
-#include "swing/sweep_assumptions.h"
+#include "sweep/sweep_assumptions.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <set>
 
 #include "study/sweep_study.h"
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
 namespace {

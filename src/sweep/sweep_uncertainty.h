@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "swing/sweep.h"
-#include "swing/sweep_assumptions.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_assumptions.h"
 
 namespace swingsim {
 

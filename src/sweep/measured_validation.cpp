@@ -1,11 +1,11 @@
-#include "swing/measured_validation.h"
+#include "sweep/measured_validation.h"
 
 #include <cmath>
 #include <limits>
 
 #include "core/input_error.h"
 #include "numerics/metrics.h"
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim {

@@ -1,7 +1,7 @@
 // How sure is the optimum (issue 15 item 4): the Monte Carlo is reproducible from its seed
 // whatever the thread count, the sensitivity is sorted by effect, and the nominal run is
 // the plain sweep. Small on purpose: one participant, a 50 mm grid, a few samples.
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep_uncertainty.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // Burkett's measured swing times as a target: calibration of a sweep's participants to
 // Table 3 (model or measured), Table 4 as validation beside Burkett's model, and the
 // leave-one-participant-out prediction.
-#include "swing/measured_validation.h"
+#include "sweep/measured_validation.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "study/sweep_study.h"
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim {

@@ -1,4 +1,4 @@
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 
 namespace swingsim {
 

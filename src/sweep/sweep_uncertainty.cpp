@@ -1,4 +1,4 @@
-#include "swing/sweep_uncertainty.h"
+#include "sweep/sweep_uncertainty.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,6 +1,6 @@
 // Burkett Table 3: the stored calibration reproduces the standard-location model swing
 // times, and the calibration itself finds a scale that does.
-#include "swing/calibration.h"
+#include "sweep/calibration.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim {

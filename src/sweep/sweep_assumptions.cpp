@@ -1,10 +1,10 @@
-#include "swing/sweep_assumptions.h"
+#include "sweep/sweep_assumptions.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/units.h"
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim {

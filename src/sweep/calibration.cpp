@@ -1,4 +1,4 @@
-#include "swing/calibration.h"
+#include "sweep/calibration.h"
 
 #include <cmath>
 #include <cstdio>

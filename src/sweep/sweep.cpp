@@ -1,4 +1,4 @@
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 #include <algorithm>
 #include <atomic>
@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "core/input_error.h"
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim {

@@ -1,6 +1,6 @@
 // Burkett's terminal-impact findings checked on a sweep: what the check reports must be what
 // the sweeps it ran show, and the JSON carries it under the documented keys.
-#include "swing/terminal_impact.h"
+#include "sweep/terminal_impact.h"
 
 #include <gtest/gtest.h>
 

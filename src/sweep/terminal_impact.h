@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 namespace swingsim {
 
-// TrackedImpactSwing and TerminalImpactCheck are in swing/sweep.h (SweepResults holds them).
+// TrackedImpactSwing and TerminalImpactCheck are in sweep/sweep.h (SweepResults holds them).
 
 /// Runs the check on `jobs` threads (0 = all cores): two tracked swings per participant
 /// and one friction-free sweep of the lowering grid (no added mass, no off-grid lowerings).

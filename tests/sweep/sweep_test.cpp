@@ -1,13 +1,13 @@
 // The knee-axis sweep: published behaviour, pinned optimum, and thread-count invariance.
 #include "study/sweep_study.h"
 #include "io/json_file.h"
-#include "swing/sweep.h"
+#include "sweep/sweep.h"
 
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
 #include "report/sweep_report.h"
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 
 namespace swingsim {
 namespace {

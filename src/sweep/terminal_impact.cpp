@@ -1,4 +1,4 @@
-#include "swing/terminal_impact.h"
+#include "sweep/terminal_impact.h"
 
 #include <cmath>
 #include <cstdio>

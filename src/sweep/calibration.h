@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "swing/burkett_published.h"
+#include "sweep/burkett_published.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
