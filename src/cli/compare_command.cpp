@@ -30,15 +30,17 @@ int runCompare(const CompareArguments& args) {
   const std::string drive = describeStudyDrive(study);
   std::printf("%s: %s refitted on %zu training file(s)%s\n", study.name.c_str(), fileStem(study.baseModelPath).c_str(),
               study.train.size(), drive.empty() ? "" : ("; " + drive).c_str());
-  for (const auto& p : b.parameters)
-    std::printf("base model: %s refitted to %.4g (95 %% CI %.4g .. %.4g)\n", p.name.c_str(), p.value, p.lower, p.upper);
+  for (const auto& p : b.parameters) std::printf("%s", formatBaseParameter("base model: ", " refitted to", p).c_str());
   std::printf("%s", formatComparisonTable(b.comparison).c_str());
   const WhitenessTest& wt = b.whiteness;
   std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g), %d lags outside the 99 %% band: %s\n",
               wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand,
               wt.pValue < study.settings.alpha ? "structure left (not white)" : "consistent with white noise");
   const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
-  for (const auto& p : writeResidualPlots(outDir, "compare", b.comparison)) std::printf("plot: %s\n", p.c_str());
+  // The knee moment against the measured one, when the records have it (never fitted).
+  const std::optional<HeldBackComparison> moment = plant->compareHeldBack(*b.fit.model);
+  for (const auto& p : writeResidualPlots(outDir, "compare", b.comparison, moment ? &*moment : nullptr))
+    std::printf("plot: %s\n", p.c_str());
   if (args.json)
     writeJsonFile(*args.json, makeComparisonJson(fileStem(study.baseModelPath), b.comparison));
   return 0;

@@ -33,6 +33,8 @@ struct RecordComparison {
   std::vector<double> sampleShare;  ///< share of the samples in each phase
   /// A second compared quantity when the plant has one (the swing's hip flexion), else empty.
   ErrorMetrics secondary;
+  /// Its measured and model series (Comparison::unit), empty if the plant has none.
+  std::vector<double> secondaryMeasured, secondaryPredicted;
 };
 
 struct Comparison {

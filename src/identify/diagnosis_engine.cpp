@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "numerics/profile_likelihood.h"
 
 namespace swingsim {
 
@@ -40,20 +41,58 @@ std::vector<EffectParameter> parametersWithIntervals(const DiagnosisPlant& plant
   const std::vector<double> values = plant.effectValues(*fit.model, id);
   std::vector<EffectParameter> out;
   for (std::size_t k = 0; k < d.parameters.size() && k < values.size(); ++k)
-    out.push_back({d.parameters[k], values[k], values[k], values[k]});
+    out.push_back({d.parameters[k], values[k], values[k], values[k], ""});
   if (const auto* se = findErrors(fit, id))
     for (std::size_t k = 0; k < se->size() && k < out.size() && static_cast<int>(k) < d.fittedParameters; ++k)
       setNormalInterval(out[k], (*se)[k] * inflate);
   return out;
 }
 
-std::vector<EffectParameter> baseIntervals(const PlantFit& fit) {
-  const double inflate = calcStandardErrorInflation(static_cast<double>(fit.samples),
-                                                    calcEffectiveSampleSize(fit.likelihoodResidual));
+// Refits per side of a profile interval after the bracket is found: each is a full refit
+// (a swing simulation per record per iteration); 8 halvings pin the end to 1/256 of the last
+// bracket step, well inside what a 95 % interval on 1-5 effective samples means.
+constexpr int kProfileBisections = 8;
+
+// A base parameter at or within one (inflated) standard error of a physical bound gets a
+// profile-likelihood interval (numerics/profile_likelihood.h), one-sided where the bound cuts
+// it: the Wald interval would cross the bound (knee scale 0.05, CI -2.3 .. 2.4).
+void setProfileInterval(const DiagnosisPlant& plant, const PlantFit& fit, const PlantFit::FreeParameter& free,
+                        double se, double nEff, EffectParameter& p) {
+  const bool nearBound = free.value - free.lower <= se || free.upper - free.value <= se;
+  if (!nearBound || !(se > 0) || !std::isfinite(se) || !(nEff > 0)) return;
+  bool unsupported = false;
+  const auto rssAt = [&](double v) {
+    const std::optional<double> rss = plant.calcHeldParameterRss(*fit.model, free.name, v);
+    if (!rss) {
+      unsupported = true;
+      throw RunError("the plant cannot hold " + free.name);
+    }
+    return *rss;
+  };
+  // Steps from a quarter of the standard error: the bracket doubles from there. A value
+  // where the model cannot run counts as outside the interval.
+  const ProfileInterval pi =
+      calcProfileInterval(rssAt, free.value, fit.rss, nEff, free.lower, free.upper, 0.25 * se, kProfileBisections);
+  if (unsupported) {
+    p.intervalNote = "on or within one standard error of its bound; Wald interval (this plant cannot profile it)";
+    return;
+  }
+  p.lower = pi.lower;
+  p.upper = pi.upper;
+  p.intervalNote = "profile likelihood (" + std::to_string(pi.evaluations) + " refits)";
+  if (pi.lowerAtBound || pi.upperAtBound)
+    p.intervalNote += ", one-sided: the physical bound " + fmtRatio(pi.lowerAtBound ? free.lower : free.upper) +
+                      " cuts it" + (pi.lowerAtBound && pi.upperAtBound ? " on both sides" : "");
+}
+
+std::vector<EffectParameter> baseIntervals(const DiagnosisPlant& plant, const PlantFit& fit) {
+  const double nEff = calcEffectiveSampleSize(fit.likelihoodResidual);
+  const double inflate = calcStandardErrorInflation(static_cast<double>(fit.samples), nEff);
   std::vector<EffectParameter> out;
   for (const auto& free : fit.baseParameters) {
-    EffectParameter p{free.name, free.value, free.value, free.value};
+    EffectParameter p{free.name, free.value, free.value, free.value, ""};
     setNormalInterval(p, free.standardError * inflate);
+    setProfileInterval(plant, fit, free, free.standardError * inflate, nEff, p);
     out.push_back(p);
   }
   return out;
@@ -135,6 +174,45 @@ std::vector<EffectId> resolveEffects(PlantKind plant, const std::vector<std::str
   return ids;
 }
 
+// The closest candidate of the last step that is not significant (largest LR), and how many
+// records like the training ones would give it kPowerTarget power; nullopt if a candidate
+// was significant (the sample size was not the limit) or none was scored.
+std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const EffectSelectionSettings& settings) {
+  if (out.steps.empty() || out.steps.back().chosen >= 0) return std::nullopt;
+  const CandidateScore* closest = nullptr;
+  int applicable = 0;
+  for (const auto& c : out.steps.back().candidates) {
+    if (!c.notApplicable.empty()) continue;
+    ++applicable;
+    if (c.significant) return std::nullopt;
+    if (!closest || c.likelihoodRatio > closest->likelihoodRatio) closest = &c;
+  }
+  if (!closest) return std::nullopt;
+  PowerAdvice a;
+  a.effect = closest->effect;
+  a.likelihoodRatio = closest->likelihoodRatio;
+  a.dof = std::max(1, closest->dof);
+  a.level = settings.alpha / applicable;
+  a.recordsNow = static_cast<int>(out.final.trainResidual.size());
+  // The fitted effect's LR is the estimate of its noncentrality on these records.
+  a.recordsNeeded = calcRecordsForPower(a.likelihoodRatio / std::max(1, a.recordsNow), a.dof, a.level, kPowerTarget);
+  return a;
+}
+
+std::string describePowerAdvice(const PowerAdvice& a) {
+  const std::string at = " at the acceptance rule's level (alpha " + fmtRatio(a.level) + " after Bonferroni)";
+  if (a.recordsNeeded == 0)
+    return " No candidate is significant, and the closest, " + a.effect + ", has no likelihood gain (LR " +
+           fmtRatio(a.likelihoodRatio) + "): more swings like these would not make it so.";
+  if (a.recordsNeeded <= a.recordsNow)
+    return " The closest candidate, " + a.effect + " (LR " + fmtRatio(a.likelihoodRatio) + "), already has " +
+           fmtPercent(100 * kPowerTarget) + " % power" + at + " on these records at its fitted size.";
+  return " The effective sample size is too small to accept any effect: at its fitted size the closest, " + a.effect +
+         " (LR " + fmtRatio(a.likelihoodRatio) + " on " + std::to_string(a.recordsNow) + " training swing(s)), would need " +
+         std::to_string(a.recordsNeeded - a.recordsNow) + " more swings like these (" + std::to_string(a.recordsNeeded) +
+         " in all) for " + fmtPercent(100 * kPowerTarget) + " % power" + at + ".";
+}
+
 // The verdict: is what remains measurement noise? Noise per record from the study or the
 // data; every held-out RMSE within the ratio of its record's noise, and a white residual.
 void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& settings, Diagnosis& out) {
@@ -200,6 +278,8 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
     out.verdict += " Tried on top of the final model: " + tried + "; the closest, " + closest +
                    (closestParameters.empty() ? "" : " (" + closestParameters + ")") + ", left a held-out error of " +
                    fmtRatio(closestRmse) + " (largest over the held-out records).";
+  out.power = adviseRecordsForPower(out, settings);
+  if (out.power) out.verdict += describePowerAdvice(*out.power);
   out.verdict += " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";
 }
 
@@ -251,7 +331,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
   out.warnings = plant.warnings();
   PlantFit current = plant.fit(*plant.baseModel());
   out.baseline = current;
-  out.baselineParameters = baseIntervals(current);
+  out.baselineParameters = baseIntervals(plant, current);
   out.baselineWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
 
   for (int stepNo = 0; stepNo < settings.maxEffects; ++stepNo) {
@@ -308,7 +388,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
   for (const std::string& note : current.notes)
     if (std::find(out.warnings.begin(), out.warnings.end(), note) == out.warnings.end())
       out.warnings.push_back("final fit: " + note);
-  out.finalParameters = baseIntervals(current);
+  out.finalParameters = baseIntervals(plant, current);
   out.finalWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
   out.finalResidualWhite = out.finalWhiteness.pValue >= settings.alpha;
   judgeExplained(plant, settings, out);
@@ -318,7 +398,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
 BaselineComparison compareBaseline(const DiagnosisPlant& plant, int whitenessLags) {
   BaselineComparison out;
   out.fit = plant.fit(*plant.baseModel());
-  out.parameters = baseIntervals(out.fit);
+  out.parameters = baseIntervals(plant, out.fit);
   out.comparison = plant.compare(*out.fit.model);
   out.whiteness = calcWhitenessTest(out.fit.likelihoodResidual, whitenessLags);
   return out;

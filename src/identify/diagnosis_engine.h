@@ -7,6 +7,7 @@
 // in the DiagnosisPlant they implement; docs/diagnosis.md explains the statistics.
 #include <Eigen/Dense>
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,6 +49,8 @@ struct PlantFit {
   struct FreeParameter {
     std::string name;  ///< with unit
     double value = 0, standardError = 0;
+    /// Physical bounds of the parameter in the fit (reported unit).
+    double lower = -std::numeric_limits<double>::infinity(), upper = std::numeric_limits<double>::infinity();
   };
   std::vector<FreeParameter> baseParameters;
   /// Notes on the fit itself: stopped at its budget, a parameter on a physical bound.
@@ -97,6 +100,14 @@ class DiagnosisPlant {
   /// A quantity the model applies against an independent measurement the fit never sees
   /// (the swing's knee moment against inverse dynamics); nullopt if the data have none.
   virtual std::optional<HeldBackComparison> compareHeldBack(const PlantModel&) const { return std::nullopt; }
+  /// The training RSS (PlantFit::rss) of `fitted` refitted with its base parameter
+  /// `parameter` (a PlantFit::FreeParameter name) held at `value`, every other parameter
+  /// free: one point of its profile likelihood. nullopt if the plant cannot hold it. May
+  /// throw RunError where the model cannot run at that value.
+  virtual std::optional<double> calcHeldParameterRss(const PlantModel& /*fitted*/, const std::string& /*parameter*/,
+                                                     double /*value*/) const {
+    return std::nullopt;
+  }
 };
 
 /// One candidate scored on top of the current model.
@@ -116,6 +127,20 @@ struct DiagnosisStep {
 
 /// Correlation of two fitted parameters above which they count as one confounded group.
 constexpr double kConfoundLimit = 0.95;
+
+/// When no candidate is significant: how many swings (records) like the training ones the
+/// closest candidate (largest likelihood ratio) would need, at its fitted size, for
+/// kPowerTarget power at the acceptance rule's level. The likelihood ratio is taken to
+/// grow in proportion to the number of training records (docs/diagnosis.md).
+struct PowerAdvice {
+  std::string effect;
+  double likelihoodRatio = 0;  ///< on the training records
+  int dof = 1;
+  double level = 0;            ///< the rule's alpha, Bonferroni-corrected over the candidates
+  int recordsNow = 0;          ///< training records
+  int recordsNeeded = 0;       ///< in all; 0: no number of records would do (no effect at all)
+};
+constexpr double kPowerTarget = 0.8;
 
 /// Result of a diagnosis.
 struct Diagnosis {
@@ -146,6 +171,7 @@ struct Diagnosis {
   /// says in words what remains, what was tried and how close the best candidate came.
   bool explained = false;
   std::string verdict;
+  std::optional<PowerAdvice> power;  ///< set when no candidate was significant
 };
 
 /// Forward stepwise diagnosis with the acceptance rule of `settings`. Throws InputError for

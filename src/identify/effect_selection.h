@@ -35,6 +35,9 @@ struct EffectSelectionSettings {
 struct EffectParameter {
   std::string name;  ///< with unit: "force_N"
   double value = 0, lower = 0, upper = 0;
+  /// Empty for the Wald interval value +- 1.96 se; else how the interval was found (a
+  /// profile-likelihood interval of a parameter at or near its physical bound).
+  std::string intervalNote;
 };
 
 /// One candidate scored on top of the current model (model-kind independent part).

@@ -326,9 +326,21 @@ SwingPlant::PoseFit SwingPlant::fitPose(const SwingModelParams& params, std::siz
 
 PlantModelPtr SwingPlant::baseModel() const { return std::make_shared<SwingModel>(SwingModelParams{}); }
 
-PlantFit SwingPlant::fit(const PlantModel& model) const {
-  const SwingModelParams& start = swingParams(model);
-  const std::vector<Slot> slots = slotsOf(start.effects);
+PlantFit SwingPlant::fit(const PlantModel& model) const { return fitWith(model, std::nullopt); }
+
+std::optional<double> SwingPlant::calcHeldParameterRss(const PlantModel& fitted, const std::string& parameter,
+                                                       double value) const {
+  if (parameter != "knee_model_scale") return std::nullopt;
+  return fitWith(fitted, value).rss;
+}
+
+PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> heldScale) const {
+  SwingModelParams start = swingParams(model);
+  std::vector<Slot> slots = slotsOf(start.effects);
+  if (heldScale) {  // the knee scale's slot (the first) leaves the free parameters
+    start.kneeModelScale = *heldScale;
+    slots.erase(slots.begin());
+  }
   const Eigen::Index g = static_cast<Eigen::Index>(slots.size());
   std::vector<BoundedParameter> free;
   SwingModelParams p0 = start;
@@ -394,7 +406,8 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
   for (std::size_t k = 0; k < slots.size(); ++k) {
     const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
     if (!slots[k].effect) {
-      s.baseParameters.push_back({"knee_model_scale", fitted.kneeModelScale, se});
+      s.baseParameters.push_back({"knee_model_scale", fitted.kneeModelScale, se, slots[k].bounds.lower,
+                                  slots[k].bounds.upper});
       s.parameterNames.push_back("knee_model_scale");
       continue;
     }
@@ -409,8 +422,9 @@ PlantFit SwingPlant::fit(const PlantModel& model) const {
       s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
                         ")");
   }
-  for (std::size_t v = 0; v < validate_.size(); ++v)
-    s.validationRmse.push_back(kneeRmse(validate_[v], fitPose(fitted, train_.size() + v).prediction));
+  if (!heldScale)  // a profile point needs the training RSS only
+    for (std::size_t v = 0; v < validate_.size(); ++v)
+      s.validationRmse.push_back(kneeRmse(validate_[v], fitPose(fitted, train_.size() + v).prediction));
   return s;
 }
 
@@ -535,6 +549,8 @@ Comparison SwingPlant::compare(const PlantModel& model) const {
     }
     rc.phase = phasesOf(pf.prediction.kneeFlexion, base_.participant.swingEnd.zoneOfStability);
     rc.secondary = calcErrorMetrics(measuredHip, predictedHip);
+    rc.secondaryMeasured = measuredHip;
+    rc.secondaryPredicted = predictedHip;
     // The variables are the model's: binning on the measured (noisy) angle would sort the
     // measurement noise into the end bins near the stop and show a mean residual that is not
     // there. The acceleration is by central differences of the model rate (one-sided at the

@@ -122,10 +122,16 @@ class SwingPlant final : public DiagnosisPlant {
   /// The model's knee moment along every record that has a measured one (knee_moment_Nm,
   /// e.g. from inverse dynamics; never fitted) against it.
   std::optional<HeldBackComparison> compareHeldBack(const PlantModel& model) const override;
+  /// The fit with knee_model_scale held at `value` (its profile likelihood); nullopt for any
+  /// other parameter.
+  std::optional<double> calcHeldParameterRss(const PlantModel& fitted, const std::string& parameter,
+                                             double value) const override;
 
   const SwingBase& base() const { return base_; }
 
  private:
+  /// fit(), with the knee model scale held at `heldScale` when given (not a free parameter).
+  PlantFit fitWith(const PlantModel& model, std::optional<double> heldScale) const;
   /// Toe-off state of one record with the model frozen: (hip angle, knee angle), or under
   /// the thigh drive (knee rate, knee angle); and the prediction there.
   struct PoseFit {

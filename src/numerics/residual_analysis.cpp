@@ -1,6 +1,7 @@
 #include "numerics/residual_analysis.h"
 
 #include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/non_central_chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 
@@ -62,6 +63,24 @@ double calcChiSquaredSurvival(double x, double dof) {
   return boost::math::gamma_q(0.5 * dof, 0.5 * x);
 }
 
+double calcChiSquaredPower(double lambda, double dof, double alpha) {
+  const double critical = calcChiSquaredQuantile(1.0 - alpha, dof);
+  if (!(lambda > 0)) return alpha;
+  return boost::math::cdf(boost::math::complement(boost::math::non_central_chi_squared(dof, lambda), critical));
+}
+
+int calcRecordsForPower(double lambdaPerRecord, double dof, double alpha, double power, int maxRecords) {
+  if (!(lambdaPerRecord > 0) || maxRecords < 1) return 0;
+  if (calcChiSquaredPower(lambdaPerRecord * maxRecords, dof, alpha) < power) return 0;
+  // Power rises with lambda: bisect on the record count.
+  int lo = 0, hi = maxRecords;  // power(lo) < power (or lo = 0), power(hi) >= power
+  while (hi - lo > 1) {
+    const int mid = lo + (hi - lo) / 2;
+    (calcChiSquaredPower(lambdaPerRecord * mid, dof, alpha) >= power ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 WhitenessTest calcWhitenessTest(const ResidualSegments& residuals, int lags) {
   WhitenessTest t;
   t.lags = lags;
@@ -84,15 +103,17 @@ BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std
   if (variable.size() != residual.size()) throw std::invalid_argument("calcBinnedResidual: sizes differ");
   BinnedResidual out;
   const std::size_t n = variable.size();
-  if (n == 0 || bins < 1) return out;
+  if (n < kMinBinSamples || bins < 1) return out;
+  bins = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(bins), n / kMinBinSamples));
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return variable[a] < variable[b]; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return variable[a] < variable[b] || (variable[a] == variable[b] && a < b);
+  });
   const double ratio = std::clamp(nEffOverN, 1e-6, 1.0);
   for (int b = 0; b < bins; ++b) {
     const std::size_t lo = n * static_cast<std::size_t>(b) / static_cast<std::size_t>(bins);
     const std::size_t hi = n * static_cast<std::size_t>(b + 1) / static_cast<std::size_t>(bins);
-    if (hi <= lo + 1) continue;
     double sv = 0, sr = 0;
     for (std::size_t i = lo; i < hi; ++i) {
       sv += variable[order[i]];

@@ -38,8 +38,30 @@ double calcNormalQuantile(double p);
 /// The `p` quantile of chi^2 with `dof` degrees of freedom (0 < p < 1).
 double calcChiSquaredQuantile(double p, double dof);
 
+/// Fewest samples in a bin of the binned mean residual. Its band comes from the within-bin
+/// spread s, estimated with count - 1 degrees of freedom: s^2 / sigma^2 ~ chi^2(m - 1) / (m - 1).
+/// With 2 samples s < sigma / 10 has probability 8 % (the band collapses and a bin reads as
+/// "hundreds of half-widths" off zero); with 5 samples it has 2e-4. A 60 Hz swing of ~25
+/// samples in 12 bins would give 2-samples bins.
+constexpr std::size_t kMinBinSamples = 5;
+
+/// Power of the chi^2(dof) test at level `alpha` (reject when the statistic exceeds the
+/// 1 - alpha quantile) when the statistic is noncentral chi^2(dof, lambda): the likelihood
+/// ratio of a true effect of noncentrality lambda (Boost.Math non_central_chi_squared).
+double calcChiSquaredPower(double lambda, double dof, double alpha);
+
+/// The smallest number of records N >= 1 for which a noncentrality of N * lambdaPerRecord
+/// (the likelihood ratio grows with the number of independent records) reaches `power` at
+/// level `alpha`; 0 if lambdaPerRecord <= 0 or more than maxRecords would be needed.
+int calcRecordsForPower(double lambdaPerRecord, double dof, double alpha, double power, int maxRecords = 100000);
+
 /// Mean residual in equal-count bins of a variable, with a 99 % confidence half-width that
-/// uses the effective sample size (the within-bin spread / sqrt(count * nEff / n)).
+/// uses the effective sample size (the within-bin spread / sqrt(count * nEff / n)). Fewer
+/// bins than asked when the samples are few: every bin holds at least kMinBinSamples (the
+/// short bins merged into their neighbours); no bins if n < kMinBinSamples. Equal variable
+/// values keep their sample order (the bins do not depend on the sort's whims). A bin whose
+/// spread is zero has no band (halfWidth 0) and takes no part in the search for maxBin.
+/// Ties in significance go to the lowest bin.
 struct BinnedResidual {
   std::vector<double> center;     ///< mean of the variable in the bin
   std::vector<double> lower, upper;  ///< smallest and largest value of the variable in the bin

@@ -7,6 +7,7 @@
 #include "core/text_format.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "report/overlay_plot.h"
 #include "report/svg_plot.h"
 
 namespace swingsim {
@@ -40,12 +41,15 @@ Json summaryJson(const Comparison& c) {
 }
 
 Json parametersJson(const std::vector<EffectParameter>& parameters) {
-  Json values = Json::object(), intervals = Json::object();
+  Json values = Json::object(), intervals = Json::object(), notes = Json::object();
   for (const auto& p : parameters) {
     values[p.name] = p.value;
     intervals[p.name] = {p.lower, p.upper};
+    if (!p.intervalNote.empty()) notes[p.name] = p.intervalNote;
   }
-  return {{"values", values}, {"confidence_intervals", intervals}};
+  Json j = {{"values", values}, {"confidence_intervals", intervals}};
+  if (!notes.empty()) j["interval_notes"] = notes;  // how an interval other than Wald's was found
+  return j;
 }
 
 Json candidateJson(const CandidateScore& c, int step, const std::vector<std::string>& stems) {
@@ -195,7 +199,8 @@ std::string renderResidualSvg(const RecordComparison& r, const Comparison& c, co
   return renderResidualPanels(in, title);
 }
 
-std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix, const Comparison& c) {
+std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix, const Comparison& c,
+                                            const HeldBackComparison* heldBack) {
   std::vector<std::string> paths;
   for (const auto& r : c.records) {
     const std::string path = outDir + "/" + prefix + "-" + r.stem + "-residual.svg";
@@ -204,6 +209,7 @@ std::vector<std::string> writeResidualPlots(const std::string& outDir, const std
                                                 c.quantity + " RMSE " + num(r.overall.rmse, c.decimals) + " " + c.unit));
     paths.push_back(path);
   }
+  for (const auto& p : writeOverlayPlots(outDir, prefix, c, heldBack)) paths.push_back(p);
   return paths;
 }
 
@@ -264,12 +270,17 @@ std::string formatStepOutcome(const std::string& chosen, const std::vector<std::
   return out + "\n";
 }
 
+std::string formatBaseParameter(const std::string& prefix, const std::string& verb, const EffectParameter& p) {
+  return fmt("%s%s%s %.4g (95 %% CI %.4g .. %.4g", prefix.c_str(), p.name.c_str(), verb.c_str(), p.value, p.lower,
+             p.upper) +
+         (p.intervalNote.empty() ? "" : "; " + p.intervalNote) + ")\n";
+}
+
 std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, const Comparison& after) {
   const int d = before.decimals;
   const std::string& u = before.unit;
   std::string out;
-  for (const auto& p : dg.baselineParameters)
-    out += fmt("base model: %s refitted to %.4g (95 %% CI %.4g .. %.4g)\n", p.name.c_str(), p.value, p.lower, p.upper);
+  for (const auto& p : dg.baselineParameters) out += formatBaseParameter("base model: ", " refitted to", p);
   std::vector<std::string> stems;
   for (const auto& r : before.records)
     if (!r.training) stems.push_back(r.stem);
@@ -290,8 +301,7 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   for (const auto& c : dg.acceptedScores) out += formatAcceptedEffect(c, describeEffect(c.id).sentence);
   for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
   for (const auto& c : dg.confounds) out += "confound: " + c + "\n";
-  for (const auto& p : dg.finalParameters)
-    out += fmt("%s after: %.4g (95 %% CI %.4g .. %.4g)\n", p.name.c_str(), p.value, p.lower, p.upper);
+  for (const auto& p : dg.finalParameters) out += formatBaseParameter("", " after:", p);
   out += fmt("\n%-16s | before: ME %-4s RMSE %-4s R^2 %%  | after: ME %-4s RMSE %-4s R^2 %%\n", before.quantity.c_str(),
              u.c_str(), u.c_str(), u.c_str(), u.c_str());
   for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
@@ -309,6 +319,14 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
     out += fmt(" %s %.*f %s", before.records[i].stem.c_str(), d + 1, dg.recordNoise[i], u.c_str());
   out += "\nverdict: " + dg.verdict + "\n";
   return out;
+}
+
+// null unless no candidate was significant (Diagnosis::power).
+Json powerJson(const std::optional<PowerAdvice>& a) {
+  if (!a) return nullptr;
+  return {{"effect", a->effect},           {"likelihood_ratio", a->likelihoodRatio}, {"dof", a->dof},
+          {"level", a->level},             {"power", kPowerTarget},                  {"training_swings", a->recordsNow},
+          {"swings_needed", a->recordsNeeded}};
 }
 
 Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comparison& after) {
@@ -334,6 +352,7 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"noise", noiseJson(dg, before)},
           {"explained", dg.explained},
           {"verdict", dg.verdict},
+          {"more_swings_for_power", powerJson(dg.power)},
           {"structure", dg.structureNote},
           {"warnings", dg.warnings}};
 }

@@ -38,9 +38,11 @@ std::string renderResidualPanels(const ResidualPlotData& data, const std::string
 /// The panels of one record of a comparison.
 std::string renderResidualSvg(const RecordComparison& record, const Comparison& comparison, const std::string& title);
 
-/// Writes `<prefix>-<stem>-residual.svg` for every record into `outDir`; returns the paths.
+/// Writes `<prefix>-<stem>-residual.svg` for every record into `outDir`, and for a plant
+/// with a second quantity (the swing) `<prefix>-<stem>-overlay.svg` (report/overlay_plot.h,
+/// with the knee moment of `heldBack` when given); returns the paths.
 std::vector<std::string> writeResidualPlots(const std::string& outDir, const std::string& prefix,
-                                            const Comparison& comparison);
+                                            const Comparison& comparison, const HeldBackComparison* heldBack = nullptr);
 
 /// `{"model", "quantity", "unit", "files": {"<stem>": {"training", "me", "rmse", "r2",
 /// "phases": {"<phase>": {"rmse", "share_of_squared_error", "share_of_samples"}}}}}`.
@@ -55,6 +57,9 @@ std::string formatAcceptedEffect(const EffectScore& score, const std::string& se
 /// `chosen` names an effect, "  -> no candidate passes the acceptance rule; stop" when it
 /// is empty. `group` is the ambiguity group, chosen effect first.
 std::string formatStepOutcome(const std::string& chosen, const std::vector<std::string>& group);
+
+/// One base-model parameter: "<prefix><name><verb> value (95 % CI lower .. upper[; how])".
+std::string formatBaseParameter(const std::string& prefix, const std::string& verb, const EffectParameter& p);
 
 /// The ranking of every step, the accepted effects with parameters, the base model's own
 /// parameters, the before/after table for every record, and the verdict on the residual.

@@ -62,5 +62,66 @@ TEST(ResidualAnalysis, BinnedRunFindsWhereInTheRangeTheResidualSits) {
   }
 }
 
+// A short record (a 60 Hz swing of 24 samples) asked for 12 bins gets 4 bins of 6, never a
+// 2-sample bin whose spread (and band) can collapse; fewer than kMinBinSamples: no bins.
+TEST(ResidualAnalysis, SparseBinsAreMergedToTheMinimumCount) {
+  std::vector<double> variable, residual;
+  for (int i = 0; i < 24; ++i) {
+    variable.push_back(i);
+    residual.push_back(std::sin(0.3 * i) + 1e-3 * (i % 2));  // smooth: neighbours nearly equal
+  }
+  const BinnedResidual b = calcBinnedResidual(variable, residual, 12, 0.2);
+  ASSERT_EQ(b.center.size(), 24 / kMinBinSamples);
+  for (std::size_t k = 0; k < b.center.size(); ++k) {
+    EXPECT_GE(b.upper[k] - b.lower[k] + 1, static_cast<double>(kMinBinSamples));  // integer variable: count
+    EXPECT_GT(b.halfWidth[k], 0);
+  }
+  const std::vector<double> few(kMinBinSamples - 1, 1.0);
+  EXPECT_TRUE(calcBinnedResidual(few, few, 12, 1.0).center.empty());
+}
+
+// Two bins equally far from zero (mirror images): the lowest bin is named, every time; a bin
+// of constant residual (zero spread) has no band and is not named although its mean is largest.
+TEST(ResidualAnalysis, BinnedTiesGoToTheLowestBinAndZeroSpreadBinsAreLeftOut) {
+  std::vector<double> variable, residual;
+  const std::vector<std::vector<double>> bins = {
+      {1, 2, 3, 4, 5}, {1, -1, 1, -1, 0}, {9, 9, 9, 9, 9}, {-1, -2, -3, -4, -5}};
+  for (std::size_t k = 0; k < bins.size(); ++k)
+    for (double r : bins[k]) {
+      variable.push_back(static_cast<double>(variable.size()));
+      residual.push_back(r);
+    }
+  const BinnedResidual b = calcBinnedResidual(variable, residual, 4, 1.0);
+  ASSERT_EQ(b.center.size(), 4u);
+  EXPECT_EQ(b.halfWidth[2], 0);
+  EXPECT_EQ(b.maxBin, 0u);
+  EXPECT_GT(b.maxSignificance, 1);
+  // Equal variable values: the bins follow the sample order, so the same input gives the same bins.
+  const std::vector<double> flat(20, 0.0);
+  const BinnedResidual f1 = calcBinnedResidual(flat, residual, 4, 1.0), f2 = calcBinnedResidual(flat, residual, 4, 1.0);
+  EXPECT_EQ(f1.mean, f2.mean);
+  EXPECT_EQ(f1.maxBin, 0u);
+}
+
+// Closed form for one degree of freedom: chi'^2(1, lambda) is (Z + sqrt(lambda))^2, so the
+// power at level alpha is Phi(sqrt(lambda) - z) + Phi(-sqrt(lambda) - z), z = z_{1-alpha/2}.
+// Table value: lambda = (1.96 + 0.8416)^2 = 7.849 gives 80 % power at alpha 0.05 (Cohen 1988).
+TEST(ResidualAnalysis, NoncentralChiSquaredPowerMatchesTheClosedFormAndTheTable) {
+  const auto phi = [](double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); };
+  for (double alpha : {0.05, 0.01, 0.001})
+    for (double lambda : {0.5, 3.0, 7.849, 20.0}) {
+      const double z = calcNormalQuantile(1 - alpha / 2), r = std::sqrt(lambda);
+      EXPECT_NEAR(calcChiSquaredPower(lambda, 1, alpha), phi(r - z) + phi(-r - z), kTableTolerance);
+    }
+  constexpr double kTableDigits = 1e-4;  // the table's four digits
+  EXPECT_NEAR(calcChiSquaredPower(7.849, 1, 0.05), 0.80, kTableDigits);
+  EXPECT_NEAR(calcChiSquaredPower(1e-9, 3, 0.01), 0.01, 1e-8);  // lambda -> 0: power -> alpha
+  // lambda 1 per record: 7 records give 0.754, 8 give 0.807 (closed form above).
+  EXPECT_EQ(calcRecordsForPower(1.0, 1, 0.05, 0.8), 8);
+  EXPECT_EQ(calcRecordsForPower(8.0, 1, 0.05, 0.8), 1);
+  EXPECT_EQ(calcRecordsForPower(0.0, 1, 0.05, 0.8), 0);
+  EXPECT_EQ(calcRecordsForPower(1e-9, 1, 0.05, 0.8, 1000), 0);
+}
+
 }  // namespace
 }  // namespace swingsim
