@@ -75,12 +75,18 @@ LegAngles calcLegAngles(const MotionTable& table, const MotionColumns& columns) 
   return a;
 }
 
+/// Least knee range of a file holding a swing, rad: a walking knee flexes some 60-70 deg in
+/// a swing and under 25 deg in a stance (the OpenSim walk: 70 and 21-25 deg), so a range
+/// under 30 deg is stance only.
+constexpr double kMinSwingKneeRange = 30 * kDegToRad;
+
 /// Rows of the knee's swing peaks: in each run of rows flexed beyond the middle of the
 /// file's knee range, the most flexed (a stance's loading flexion stays well below it).
 std::vector<std::size_t> findSwingPeaks(const std::vector<double>& knee) {
   const auto [lo, hi] = std::minmax_element(knee.begin(), knee.end());
   const double middle = 0.5 * (*lo + *hi);
   std::vector<std::size_t> peaks;
+  if (*hi - *lo < kMinSwingKneeRange) return peaks;
   for (std::size_t k = 0; k < knee.size(); ++k) {
     if (knee[k] <= middle) continue;
     std::size_t top = k;

@@ -114,6 +114,17 @@ TEST(SwingEvents, ASwingCutByTheFilesStartOrEndIsLeftOut) {
   EXPECT_EQ(events.heelContacts.size(), 1u);
 }
 
+TEST(SwingEvents, AStanceOnlyRecordingHasNoSwing) {
+  // Two strides' worth of the knee's loading flexion alone, 5 to 20 deg (a raised cosine over
+  // the first 0.4 s of each second), the hip as in the synthetic gait: no swing in it.
+  const auto knee = [](double t) { return phaseOf(t) < 0.4 ? 5 + 7.5 * (1 - std::cos(2 * kPi * phaseOf(t) / 0.4)) : 5.0; };
+  const MotionTable stance = makeTable("time\thip_flexion_r\tknee_angle_r", 0, 2, 0.01,
+                                       [&](double t) { return number(hipFlexionDeg(t)) + "\t" + number(-knee(t)); }, "stance.mot");
+  const SwingEventTimes events = findKinematicEvents(stance, rightColumns(false));
+  EXPECT_TRUE(events.toeOffs.empty());
+  EXPECT_TRUE(events.heelContacts.empty());
+}
+
 /// A GRF table of one foot's vertical force `force(t)` at `rate` Hz.
 MotionTable grfTable(double t0, double t1, double step, const std::function<double(double)>& force) {
   return makeTable("time\tground_force_vy\t1_ground_force_vy", t0, t1, step,
