@@ -1,0 +1,111 @@
+// swingsim swings FILE.mot [--side r|l] [--grf GRF.mot] [--vertical-force LABEL]
+//   [--threshold-N N] [--knee-sign S] [--json FILE]
+//
+// Lists the complete swings of one leg in an OpenSim IK file, numbered from 1 so that a
+// study can pick one (`swing: K`): toe-off and heel contact from the GRF file's vertical
+// force where it covers the time, from the joint angles elsewhere (docs/swing-events.md).
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cli/command.h"
+#include "cli/option_checks.h"
+#include "core/input_error.h"
+#include "io/json_file.h"
+#include "io/swing_events.h"
+
+namespace swingsim::cli {
+namespace {
+
+/// What `swingsim swings` was given; nullopt: not given (the default applies).
+struct SwingsArguments {
+  std::string kinematics;
+  std::string side = "r";
+  std::optional<std::string> grf, verticalForce, json;
+  double thresholdN = 20;  ///< N
+  double kneeSign = -1;
+};
+
+/// OpenSim's example GRF files name the right foot's columns `ground_force_*` and the left
+/// foot's `1_ground_force_*`.
+std::string defaultVerticalForce(const std::string& side) { return side == "l" ? "1_ground_force_vy" : "ground_force_vy"; }
+
+Json makeSwingsJson(const SwingsArguments& a, const MotionColumns& columns, const std::optional<GrfSettings>& grf,
+                    const std::vector<FoundSwing>& swings) {
+  Json j;
+  j["file"] = a.kinematics;
+  j["side"] = a.side;
+  j["hip"] = columns.hip;
+  j["knee"] = columns.knee;
+  j["knee_sign"] = columns.kneeSign;
+  j["pelvis_tilt"] = columns.pelvisTilt.empty() ? Json() : Json(columns.pelvisTilt);
+  j["grf"] = grf ? Json{{"file", grf->path}, {"vertical_force", grf->verticalForce}, {"threshold_N", grf->thresholdN}} : Json();
+  j["swings"] = Json::array();
+  for (std::size_t i = 0; i < swings.size(); ++i)
+    j["swings"].push_back({{"swing", i + 1},
+                           {"toe_off_s", swings[i].toeOff},
+                           {"heel_contact_s", swings[i].heelContact},
+                           {"duration_s", swings[i].duration()},
+                           {"toe_off_source", swings[i].toeOffSource},
+                           {"heel_contact_source", swings[i].heelContactSource}});
+  return j;
+}
+
+int runSwings(const SwingsArguments& a) {
+  const MotionTable table = readMotionTable(a.kinematics);
+  MotionColumns columns;
+  columns.hip = "hip_flexion_" + a.side;
+  columns.knee = "knee_angle_" + a.side;
+  columns.kneeSign = a.kneeSign;
+  // The thigh's angle in space (hip + pelvis tilt) when the file has the tilt.
+  if (std::find(table.labels.begin(), table.labels.end(), "pelvis_tilt") != table.labels.end()) columns.pelvisTilt = "pelvis_tilt";
+  std::optional<GrfSettings> grf;
+  if (a.grf) grf = GrfSettings{*a.grf, a.verticalForce.value_or(defaultVerticalForce(a.side)), a.thresholdN};
+  const std::vector<FoundSwing> swings = findSwings(table, columns, grf);
+
+  std::printf("%s: %s leg (%s, %s x %g%s); events from %s\n", a.kinematics.c_str(), a.side == "l" ? "left" : "right",
+              columns.hip.c_str(), columns.knee.c_str(), columns.kneeSign,
+              columns.pelvisTilt.empty() ? "" : (", + " + columns.pelvisTilt).c_str(),
+              grf ? (grf->path + " (" + grf->verticalForce + " below " + formatNumber(grf->thresholdN) +
+                     " N) where it covers the time, the kinematics elsewhere").c_str()
+                  : "the kinematics (no --grf)");
+  if (swings.empty()) {
+    std::printf("no complete swing (toe-off and heel contact both inside the file)\n");
+  } else {
+    std::printf("swing  toe-off s  heel contact s  duration s  toe-off from  heel contact from\n");
+    for (std::size_t i = 0; i < swings.size(); ++i)
+      std::printf("%5zu  %9.4f  %14.4f  %10.4f  %-12s  %s\n", i + 1, swings[i].toeOff, swings[i].heelContact,
+                  swings[i].duration(), swings[i].toeOffSource.c_str(), swings[i].heelContactSource.c_str());
+  }
+  if (a.json) writeJsonFile(*a.json, makeSwingsJson(a, columns, grf, swings));
+  return 0;
+}
+
+}  // namespace
+
+Command addSwingsCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("swings", "list the swings (toe-off to heel contact) in an OpenSim IK .mot, to pick one for a study");
+  auto a = std::make_shared<SwingsArguments>();
+  sub->add_option("FILE.mot", a->kinematics, "OpenSim inverse-kinematics file (hip_flexion_<side>, knee_angle_<side>)")
+      ->required()
+      ->type_name("");
+  sub->add_option("--side", a->side, "which leg: r or l; reads hip_flexion_<side> and knee_angle_<side> (default r)")
+      ->type_name("r|l")
+      ->check(oneOf({"r", "l"}));
+  addTextOption(sub, "--grf", a->grf, "OpenSim ground reaction force .mot on the same clock (default: none, events from the kinematics)",
+                "GRF.mot");
+  addTextOption(sub, "--vertical-force", a->verticalForce,
+                "the foot's vertical force column in the GRF file, N (default ground_force_vy for r, 1_ground_force_vy for l)", "LABEL");
+  sub->add_option("--threshold-N", a->thresholdN, "vertical force below which the foot is in the air, N (default 20)")
+      ->type_name("N")
+      ->check(finiteNumber([](double v) { return v > 0 ? "" : "expected a positive force"; }));
+  sub->add_option("--knee-sign", a->kneeSign, "+1 or -1: knee flexion = sign * knee_angle (default -1, OpenSim's knee_angle is negative in flexion)")
+      ->type_name("S")
+      ->check(finiteNumber([](double v) { return v == 1 || v == -1 ? "" : "expected +1 or -1"; }));
+  addJsonOption(sub, a->json);
+  return {sub, [a] { return runSwings(*a); }};
+}
+
+}  // namespace swingsim::cli

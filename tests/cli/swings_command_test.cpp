@@ -1,0 +1,74 @@
+// End-to-end checks of `swingsim swings` through the real binary: the table and JSON on the
+// public OpenSim walk, the left leg's default force column, and bad input that exits 1 or 2
+// and writes nothing.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "io/json_file.h"
+#include "run_swingsim.h"
+
+namespace {
+
+using ::testing::HasSubstr;
+using swingsim::Json;
+using swingsim::testing::CliRun;
+using swingsim::testing::runSwingsim;
+using swingsim::testing::slurp;
+namespace fs = std::filesystem;
+
+const std::string kRoot = SWINGSIM_SOURCE_DIR;
+const std::string kIk = kRoot + "/studies/data/opensim-subject01/gait2392_subject01_walk1_ik.mot";
+const std::string kGrf = kRoot + "/studies/data/opensim-subject01/subject01_walk1_grf.mot";
+
+fs::path scratch(const std::string& name) { return swingsim::testing::freshTempDir("swingsim_swings_command_test", name); }
+
+TEST(SwingsCommand, ListsForceSwingsThenKinematicOnesWithJson) {
+  const auto dir = scratch("good");
+  const CliRun r = runSwingsim("swings " + kIk + " --grf " + kGrf + " --json " + (dir / "s.json").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("swing  toe-off s  heel contact s  duration s  toe-off from  heel contact from"));
+  // The right foot's force falls below 20 N at 1.4086 s and rises above it at 1.8522 s.
+  EXPECT_THAT(r.output, HasSubstr("    1     1.4086          1.8522      0.4436  grf           grf"));
+  const Json j = Json::parse(slurp(dir / "s.json"));
+  EXPECT_EQ(j["side"], "r");
+  EXPECT_EQ(j["pelvis_tilt"], "pelvis_tilt");
+  EXPECT_EQ(j["grf"]["vertical_force"], "ground_force_vy");
+  ASSERT_GE(j["swings"].size(), 2u);
+  EXPECT_EQ(j["swings"][0]["swing"], 1);
+  EXPECT_EQ(j["swings"][0]["toe_off_source"], "grf");
+  EXPECT_EQ(j["swings"][1]["toe_off_source"], "kinematics");
+  EXPECT_GT(j["swings"][1]["toe_off_s"].get<double>(), 2.5);  // after the force plates' last row
+}
+
+TEST(SwingsCommand, TheLeftLegReadsTheSecondFootsForce) {
+  const CliRun r = runSwingsim("swings " + kIk + " --side l --grf " + kGrf);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("left leg (hip_flexion_l, knee_angle_l x -1, + pelvis_tilt)"));
+  EXPECT_THAT(r.output, HasSubstr("1_ground_force_vy below 20 N"));
+  // The left foot's force: toe-off 0.7882 s, heel contact 1.2452 s.
+  EXPECT_THAT(r.output, HasSubstr("    1     0.7882          1.2452      0.4570  grf           grf"));
+}
+
+TEST(SwingsCommand, BadInputExitsWithAMessageAndWritesNothing) {
+  const auto dir = scratch("bad");
+  const std::string json = (dir / "s.json").string();
+  const CliRun column = runSwingsim("swings " + kIk + " --grf " + kGrf + " --vertical-force force_vy --json " + json);
+  EXPECT_EQ(column.code, 1);
+  EXPECT_THAT(column.output, HasSubstr("subject01_walk1_grf.mot:7: force_vy: column is missing (available: time, ground_force_vx"));
+  const CliRun side = runSwingsim("swings " + kIk + " --side x");
+  EXPECT_EQ(side.code, 2);
+  EXPECT_THAT(side.output, HasSubstr("expected one of r, l (got 'x')"));
+  const CliRun sign = runSwingsim("swings " + kIk + " --knee-sign 2");
+  EXPECT_EQ(sign.code, 2);
+  EXPECT_THAT(sign.output, HasSubstr("expected +1 or -1"));
+  // The force file as kinematics: it has no hip_flexion_r.
+  const CliRun hip = runSwingsim("swings " + kGrf + " --json " + json);
+  EXPECT_EQ(hip.code, 1);
+  EXPECT_THAT(hip.output, HasSubstr("hip_flexion_r: column is missing"));
+  EXPECT_FALSE(fs::exists(json));
+}
+
+}  // namespace
