@@ -327,6 +327,7 @@ IkSwing readSubject01RightSwing() {
   ThighKinematics& k = swing.kinematics;
   k.path = "gait2392_subject01_walk1_ik.mot";
   constexpr double kToeOff = 1.41, kHeelStrike = 1.85;  // s
+  double start = 0;
   while (std::getline(in, line)) {
     std::stringstream row(line);
     std::vector<double> v;
@@ -335,7 +336,8 @@ IkSwing readSubject01RightSwing() {
     const double t = v.at(column.at("time"));
     if (t < kToeOff - 1e-9 || t > kHeelStrike + 1e-9) continue;
     const double tilt = v.at(column.at("pelvis_tilt")) * kDegToRad;
-    k.time.push_back(k.time.empty() ? 0.0 : t - kToeOff);
+    if (k.time.empty()) start = t;  // the first frame in the window is toe-off, t = 0
+    k.time.push_back(t - start);
     k.hipFlexion.push_back(v.at(column.at("hip_flexion_r")) * kDegToRad + tilt);  // the thigh in space
     k.pelvisX.push_back(v.at(column.at("pelvis_tx")));
     k.pelvisY.push_back(v.at(column.at("pelvis_ty")));
@@ -387,7 +389,7 @@ TEST(ReferenceSwing, MovingHipMatchesSimbodyOnSubject01sMeasuredPelvis) {
   double maxBetween = 0;
   for (std::size_t i = 0; i < n; ++i)
     maxBetween = std::max(maxBetween, std::abs(fixed.trajectory.kneeFlexion[i] - moving.trajectory.kneeFlexion[i]));
-  // The model knees at the measured samples (the trajectory is every 2 ms; the IK every 8.3 ms).
+  // The model knees at the measured samples (the trajectory is every 2 ms; the IK every 16.7 ms).
   const auto atSamples = [&](const SwingTrajectory& tr, std::vector<double>& model, std::vector<double>& measured) {
     for (std::size_t j = 0; j < ik.kinematics.time.size(); ++j) {
       const double t = ik.kinematics.time[j];
