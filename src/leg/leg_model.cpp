@@ -36,10 +36,42 @@ class PrescribedThighImpl final : public Motion::Custom::Implementation {
   ThighMotion motion_;  // shares the fitted spline
 };
 
+// The hip carrier's translation (x, y, z) in the orientation frame: the hip path's
+// displacement from its start, z held at 0.
+class PrescribedHipImpl final : public Motion::Custom::Implementation {
+ public:
+  explicit PrescribedHipImpl(const HipPath& path) : path_(path), start_(path.calcPosition(0)) {}
+  Implementation* clone() const override { return new PrescribedHipImpl(path_); }
+  Motion::Level getLevel(const State&) const override { return Motion::Position; }
+  void calcPrescribedPosition(const State& s, int nq, Real* q) const override {
+    const std::array<double, 2> p = path_.calcPosition(s.getTime());
+    set(nq, q, p[0] - start_[0], p[1] - start_[1]);
+  }
+  void calcPrescribedPositionDot(const State& s, int nq, Real* qdot) const override {
+    const std::array<double, 2> v = path_.calcVelocity(s.getTime());
+    set(nq, qdot, v[0], v[1]);
+  }
+  void calcPrescribedPositionDotDot(const State& s, int nq, Real* qdotdot) const override {
+    const std::array<double, 2> a = path_.calcAcceleration(s.getTime());
+    set(nq, qdotdot, a[0], a[1]);
+  }
+
+ private:
+  static void set(int nq, Real* out, double x, double y) {
+    if (nq != 3) return;
+    out[0] = x;
+    out[1] = y;
+    out[2] = 0;
+  }
+  HipPath path_;  // shares the fitted splines
+  std::array<double, 2> start_;
+};
+
 }  // namespace
 
 LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment,
-                   const HipRange& hipRange, double hipHeight, bool trackWork, const ThighMotion* prescribedThigh)
+                   const HipRange& hipRange, double hipHeight, bool trackWork, const ThighMotion* prescribedThigh,
+                   const HipPath* hipPath)
     : matter_(system_),
       forces_(system_),
       footLength_(g.footLength) {
@@ -49,7 +81,19 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
   orientation_ = MobilizedBody::Weld(matter_.Ground(), Transform(Vec3(0, hipHeight, 0)),
                                      Body::Massless(), Transform());
 
-  thigh_ = MobilizedBody::Pin(orientation_, Transform(),
+  if (hipPath != nullptr && prescribedThigh == nullptr)
+    throw std::invalid_argument("LegModel: a moving hip needs the measured thigh drive");
+  // The hip carrier: massless, so it adds nothing to the dynamics but the hip's motion (its
+  // mobilities are all prescribed, so its zero mass never enters the mass matrix that is
+  // solved).
+  movingHip_ = hipPath != nullptr;
+  if (movingHip_) {
+    carrier_ = MobilizedBody::Translation(orientation_, Transform(), Body::Massless(), Transform());
+    Motion::Custom(carrier_, new PrescribedHipImpl(*hipPath));
+    kneeCoordinate_ = 4;
+  }
+  MobilizedBody& hipParent = movingHip_ ? static_cast<MobilizedBody&>(carrier_) : static_cast<MobilizedBody&>(orientation_);
+  thigh_ = MobilizedBody::Pin(hipParent, Transform(),
                               Body::Rigid(segmentMassProperties(g.thighMass, Vec3(0, -g.thighCom, 0), g.thighInertia)),
                               Transform());
 
@@ -94,7 +138,7 @@ State LegModel::makeInitialState(const InitialConditions& initial) const {
   shank_.setOneQ(s, 0, initial.kneeFlexion);
   thigh_.setOneU(s, 0, initial.hipFlexionRate);
   shank_.setOneU(s, 0, initial.kneeFlexionRate);
-  if (hasPrescribedThigh()) {  // the thigh's q and u from its prescribed motion at t = 0
+  if (hasPrescribedThigh()) {  // the thigh's (and hip's) q and u from their prescribed motion at t = 0
     system_.realize(s, Stage::Time);
     system_.prescribeQ(s);
     system_.realize(s, Stage::Position);

@@ -3,6 +3,11 @@
 // (welded frame placing the hip) -> thigh (pin at the hip) -> shank (pin at the knee) ->
 // foot (welded at the ankle, perpendicular to the shank). Planar, gravity -y, x forward.
 //
+// With a measured pelvis (a HipPath) a hip carrier sits between the orientation frame and the
+// thigh: a massless body on a Translation mobilizer whose x, y follow the hip's path (z held
+// at 0), so the swing feels the hip's acceleration (docs/moving-hip.md). Without it the hip
+// is fixed in space, as Burkett assumed.
+//
 // Coordinates: hip pin q = hip flexion (counter-clockwise about +z with the subject facing
 // +x); knee pin q = knee flexion (its frames are flipped about x so that a positive q
 // swings the shank backwards, the clinical sign).
@@ -10,6 +15,7 @@
 
 #include "knee/joint_stop.h"
 #include "knee/knee_law.h"
+#include "leg/hip_path.h"
 #include "leg/knee_force_element.h"
 #include "leg/thigh_motion.h"
 #include "model/leg_parameters.h"
@@ -31,9 +37,11 @@ class LegModel {
   /// level) and `hipMoment` and `hipRange` are not used; the hip moment is then the moment
   /// the prescription needs (calcHipMoment). The model keeps its own handle on the fitted
   /// spline.
+  /// `hipPath` (only with `prescribedThigh`): the hip joint centre moves along it, displaced
+  /// from (0, hipHeight) by hipPath(t) - hipPath(0); else the hip is fixed at (0, hipHeight).
   LegModel(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
            const HipRange& hipRange, double hipHeight, bool trackWork = true,
-           const ThighMotion* prescribedThigh = nullptr);
+           const ThighMotion* prescribedThigh = nullptr, const HipPath* hipPath = nullptr);
   LegModel(const LegModel&) = delete;
   LegModel& operator=(const LegModel&) = delete;
 
@@ -48,6 +56,14 @@ class LegModel {
   double getKneeFlexion(const SimTK::State& s) const { return shank_.getOneQ(s, 0); }
   double getHipFlexionRate(const SimTK::State& s) const { return thigh_.getOneU(s, 0); }
   double getKneeFlexionRate(const SimTK::State& s) const { return shank_.getOneU(s, 0); }
+  /// rad/s^2 (Acceleration stage).
+  double getHipFlexionAcceleration(const SimTK::State& s) const { return thigh_.getOneUDot(s, 0); }
+  double getKneeFlexionAcceleration(const SimTK::State& s) const { return shank_.getOneUDot(s, 0); }
+  /// Where the knee's q (and u) sits in the state: 1 with the hip fixed, 4 after the hip
+  /// carrier's three translations.
+  int getKneeCoordinateIndex() const { return kneeCoordinate_; }
+  /// The hip moves along a measured pelvis path (a hip carrier is in the chain).
+  bool hasMovingHip() const { return movingHip_; }
   /// Hip moment, N m, + = flexion: the profile plus the hip range stop; with a prescribed
   /// thigh, the moment the prescribed motion needs (Simbody's tau; Acceleration stage).
   double calcHipMoment(const SimTK::State& s) const;
@@ -83,12 +99,15 @@ class LegModel {
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;
   SimTK::MobilizedBody::Weld orientation_;
+  SimTK::MobilizedBody::Translation carrier_;  // only with a moving hip
   SimTK::MobilizedBody::Pin thigh_;
   SimTK::MobilizedBody::Pin shank_;
   SimTK::MobilizedBody::Weld foot_;
   const KneeForceElement* knee_ = nullptr;    // owned by forces_
   const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_; null with a prescribed thigh
   double footLength_;  // m, ankle to toe (for calcPose)
+  int kneeCoordinate_ = 1;
+  bool movingHip_ = false;
 };
 
 }  // namespace swingsim

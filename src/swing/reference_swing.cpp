@@ -1,5 +1,6 @@
 #include "swing/reference_swing.h"
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -74,16 +75,26 @@ namespace swingsim {
 //   M_hip = M11 phi'' + M12 beta'' + m2 L1 r2 sin(phi - beta) beta'^2 + (m1 a1 + m2 L1) g sin phi - M_knee.
 // phi and phi' stay in y, integrated from phi'' (they follow the prescription to the
 // integration tolerance).
+//
+// A moving hip (a prescribed support path s(t), acceleration a = (a_x, a_y); derivation in
+// docs/moving-hip.md): every point moves with s(t) plus the pendulum's own motion, and
+// Lagrange's equations in the inertial frame gain the generalized force
+// Q_q = -sum_i m_i a . dp_i/dq of the support's acceleration:
+//   Q_phi  = -(m1 a1 + m2 L1) (a_x cos phi + a_y sin phi)
+//   Q_beta = -m2 r2 (a_x cos beta + a_y sin beta)
+// (with a = (0, -g) these are the gravity terms: a support accelerating up at a_y acts as
+// gravity g + a_y).
 // ---------------------------------------------------------------------------------------
 class ReferenceSwing::Equations final : public OdeSystem {
  public:
   Equations(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment, const HipRange& hipRange,
-            std::optional<ThighMotion> thigh = std::nullopt)
+            std::optional<ThighMotion> thigh = std::nullopt, std::optional<HipPath> hip = std::nullopt)
       : law_(knee.clone()),
         numLawStates_(law_->numStates()),
         hipMoment_(hipMoment),
         hipStop_(makeHipStop(hipRange)),
-        thigh_(std::move(thigh)) {
+        thigh_(std::move(thigh)),
+        hip_(std::move(hip)) {
     const double m1 = g.thighMass, a1 = g.thighCom, I1 = g.thighInertia, L1 = g.thighLength;
     const double ms = g.shankMass, as = g.shankCom, Is = g.shankInertia, L2 = g.shankLength;
     const double mf = g.footMass, cf = g.footComForward, If = g.footInertia;
@@ -96,8 +107,10 @@ class ReferenceSwing::Equations final : public OdeSystem {
     m11_ = I1 + m1 * a1 * a1 + m2 * L1 * L1;
     m22_ = Is + ms * as * as + If + mf * (cf * cf + L2 * L2) + ma * da * da;
     m2L1r2_ = m2 * L1 * r2;
-    gravity1_ = (m1 * a1 + m2 * L1) * kGravity;
-    gravity2_ = m2 * r2 * kGravity;
+    massMoment1_ = m1 * a1 + m2 * L1;
+    massMoment2_ = m2 * r2;
+    gravity1_ = massMoment1_ * kGravity;
+    gravity2_ = massMoment2_ * kGravity;
   }
 
   int numStates() const override { return 4 + numLawStates_; }
@@ -115,7 +128,14 @@ class ReferenceSwing::Equations final : public OdeSystem {
     const double kneeMoment = law_->calcMoment(knee, z);
     const double s = std::sin(phi - beta);
     const double m12 = m2L1r2_ * std::cos(phi - beta);
-    const double rhs2 = -kneeMoment + m2L1r2_ * s * phiDot * phiDot - gravity2_ * std::sin(beta);
+    // The moving support's generalized forces (zero with the hip fixed).
+    double supportPhi = 0, supportBeta = 0;
+    if (hip_) {
+      const std::array<double, 2> a = hip_->calcAcceleration(t);
+      supportPhi = -massMoment1_ * (a[0] * std::cos(phi) + a[1] * std::sin(phi));
+      supportBeta = -massMoment2_ * (a[0] * std::cos(beta) + a[1] * std::sin(beta));
+    }
+    const double rhs2 = -kneeMoment + m2L1r2_ * s * phiDot * phiDot - gravity2_ * std::sin(beta) + supportBeta;
     dydt[0] = phiDot;
     dydt[1] = betaDot;
     if (thigh_) {
@@ -123,10 +143,12 @@ class ReferenceSwing::Equations final : public OdeSystem {
       const double betaDDot = (rhs2 - m12 * phiDDot) / m22_;
       dydt[2] = phiDDot;
       dydt[3] = betaDDot;
-      hipMoment = m11_ * phiDDot + m12 * betaDDot + m2L1r2_ * s * betaDot * betaDot + gravity1_ * std::sin(phi) - kneeMoment;
+      hipMoment = m11_ * phiDDot + m12 * betaDDot + m2L1r2_ * s * betaDot * betaDot + gravity1_ * std::sin(phi) -
+                  kneeMoment - supportPhi;
     } else {
       hipMoment = hipMoment_.calcMoment(t) + hipStop_.calcJointMoment(phi, phiDot);
-      const double rhs1 = hipMoment + kneeMoment - m2L1r2_ * s * betaDot * betaDot - gravity1_ * std::sin(phi);
+      const double rhs1 =
+          hipMoment + kneeMoment - m2L1r2_ * s * betaDot * betaDot - gravity1_ * std::sin(phi) + supportPhi;
       const double det = m11_ * m22_ - m12 * m12;
       dydt[2] = (m22_ * rhs1 - m12 * rhs2) / det;
       dydt[3] = (m11_ * rhs2 - m12 * rhs1) / det;
@@ -180,7 +202,9 @@ class ReferenceSwing::Equations final : public OdeSystem {
   HipMomentProfile hipMoment_;
   JointStop hipStop_;
   std::optional<ThighMotion> thigh_;  // the prescribed thigh, if it drives the swing
+  std::optional<HipPath> hip_;        // the moving hip, if the pelvis is measured
   double gamma_ = 0, m11_ = 0, m22_ = 0, m2L1r2_ = 0, gravity1_ = 0, gravity2_ = 0;
+  double massMoment1_ = 0, massMoment2_ = 0;  // kg m: m1 a1 + m2 L1, m2 r2
 };
 
 ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const HipMomentProfile& hipMoment,
@@ -189,6 +213,10 @@ ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee,
 
 ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const ThighMotion& thigh)
     : equations_(std::make_shared<Equations>(geometry, knee, HipMomentProfile{}, HipRange{}, thigh)) {}
+
+ReferenceSwing::ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const ThighMotion& thigh,
+                               const HipPath& hip)
+    : equations_(std::make_shared<Equations>(geometry, knee, HipMomentProfile{}, HipRange{}, thigh, hip)) {}
 
 namespace {
 

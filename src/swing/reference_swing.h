@@ -11,6 +11,7 @@
 
 #include "knee/joint_stop.h"
 #include "knee/knee_law.h"
+#include "leg/hip_path.h"
 #include "leg/thigh_motion.h"
 #include "model/hip_moment_profile.h"
 #include "model/leg_parameters.h"
@@ -49,6 +50,9 @@ class ReferenceSwing {
   /// thigh's at t = 0), the knee swings freely. The spline is the shared input, as the hip
   /// moment profile is for the other constructor.
   ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const ThighMotion& thigh);
+  /// The measured thigh drive on a moving hip: as above, with the hip joint centre following
+  /// `hip` (its acceleration enters as the support's inertial force; docs/moving-hip.md).
+  ReferenceSwing(const LegGeometry& geometry, const KneeLaw& knee, const ThighMotion& thigh, const HipPath& hip);
 
   /// Integrates from toe-off (t = 0) and returns the state at `sampleTimes` (s, >= 0,
   /// non-decreasing); steps are shortened to land exactly on each sample time. relTol and

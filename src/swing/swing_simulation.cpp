@@ -237,10 +237,9 @@ struct StepEnd {
 StepEnd readStepEnd(const LegModel& leg, const State& s, bool trackEnergy) {
   const MultibodySystem& system = leg.getSystem();
   system.realize(s, Stage::Acceleration);
-  const Vector& udot = s.getUDot();
-  // Mobility order: thigh (hip) then shank (knee); the welds have none.
   StepEnd e{s.getTime(), leg.getHipFlexion(s), leg.getKneeFlexion(s), leg.getHipFlexionRate(s),
-            leg.getKneeFlexionRate(s), udot[0], udot[1], leg.calcHipMoment(s), leg.calcKneeMoment(s)};
+            leg.getKneeFlexionRate(s), leg.getHipFlexionAcceleration(s), leg.getKneeFlexionAcceleration(s),
+            leg.calcHipMoment(s), leg.calcKneeMoment(s)};
   if (trackEnergy) {
     e.kinetic = system.calcKineticEnergy(s);
     const int parts = std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1);
@@ -734,8 +733,10 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
   // the measurement does.
   std::optional<ThighMotion> thighMotion;
   if (p.drive == SwingDrive::kThighKinematics) thighMotion.emplace(p.thighKinematics);
+  std::optional<HipPath> hipPath;  // a measured pelvis moves the hip
+  if (thighMotion && HipPath::hasPelvis(p.thighKinematics)) hipPath.emplace(p.thighKinematics, p.hipOffsetInPelvis, p.path);
   LegModel leg(geometry, *setup.knee, p.hipMoment, p.hipRange, calcHipHeight(p), trackEnergy,
-               thighMotion ? &*thighMotion : nullptr);
+               thighMotion ? &*thighMotion : nullptr, hipPath ? &*hipPath : nullptr);
   const double timeLimit = thighMotion ? std::min(p.swingEnd.timeLimit, thighMotion->getEndTime()) : p.swingEnd.timeLimit;
 
   if (options.simbodyEvents && options.integrator == SwingIntegrator::kDormandPrince)
@@ -767,11 +768,11 @@ SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) 
                                                      thighMotion ? std::vector<double>{} : p.hipMoment.calcBreakpoints());
     dormandPrince = dp.get();
     {
-      // The knee is mobility 1 (thigh then shank); its levels: inside the zone, the stop.
+      // The knee's levels: inside the zone, the stop.
       std::vector<double> levels{rule.zoneOfStability - kLooseDwellMargin};
       if (const JointStop* stop = climb.getStop())
         if (stop->params().lower < levels.back()) levels.push_back(stop->params().lower);
-      dp->setKneeLevels(1, std::move(levels));
+      dp->setKneeLevels(leg.getKneeCoordinateIndex(), std::move(levels));
     }
     stepper = std::move(dp);
   } else {

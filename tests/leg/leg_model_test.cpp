@@ -201,5 +201,64 @@ TEST(LegModel, EnergyBookkeepingWithDampingFrictionStopsAndHipDrive) {
               maxDrift, kneeWork, hipWork, kEnergyTol);
 }
 
+TEST(LegModel, MovingHipPendulumSwingsAsUnderGravityPlusTheHipsAcceleration) {
+  // The hip carrier's Translation mobilizer: the thigh held still, the hip rising at a = 1 g
+  // (y = a t^2 / 2, reproduced exactly by the quintic smoothing spline), the free knee
+  // swings the shank+foot as a compound pendulum under g + a: period
+  // 2 pi sqrt(J / (m r (g + a))). The pose's hip must follow the path.
+  LegGeometry g = calcLegGeometry(load("p1"), 0.0);
+  g.footComForward = 0;  // composite COM on the shank axis: equilibrium at knee = 0
+  const double m2r2 = g.shankMass * g.shankCom + g.footMass * g.shankLength;
+  const double j2 = g.shankInertia + g.shankMass * g.shankCom * g.shankCom + g.footInertia +
+                    g.footMass * g.shankLength * g.shankLength;
+  constexpr double kRise = kGravity;  // m/s^2
+  constexpr double kDuration = 5.0;   // s
+  ThighKinematics k;
+  for (int i = 0; i <= 100; ++i) {
+    const double t = kDuration * i / 100.0;
+    k.time.push_back(t);
+    k.hipFlexion.push_back(0.0);
+    k.pelvisX.push_back(0.1 * t);  // a steady walk forward: no force, but the pose must show it
+    k.pelvisY.push_back(0.5 * kRise * t * t);
+    k.pelvisTilt.push_back(0.0);
+  }
+  const ThighMotion thigh(k);
+  const HipPath hip(k, std::array<double, 2>{0.0, 0.0});
+  const KneeLawSum noKnee;
+  LegModel leg(g, noKnee, makeZeroHipMoment(), makeWideHipRange(), kHipHeight, false, &thigh, &hip);
+  ASSERT_TRUE(leg.hasMovingHip());
+  EXPECT_EQ(leg.getKneeCoordinateIndex(), 4);
+  InitialConditions initial;
+  constexpr double kAmplitude = 1e-3;  // rad
+  initial.kneeFlexion = kAmplitude;
+  const State state = leg.makeInitialState(initial);
+  std::vector<double> time, knee;
+  double hipPoseError = 0;
+  integrateAndObserve(leg.getSystem(), state, kPeriodAccuracy, kSampleInterval, kDuration, [&](const State& s) {
+    time.push_back(s.getTime());
+    knee.push_back(leg.getKneeFlexion(s));
+    const LegPose pose = leg.calcPose(s);
+    const double t = s.getTime();
+    hipPoseError = std::max({hipPoseError, std::abs(pose.hip[0] - 0.1 * t),
+                             std::abs(pose.hip[1] - (kHipHeight + 0.5 * kRise * t * t))});
+  });
+  const double expected = 2 * Pi * std::sqrt(j2 / (m2r2 * (kGravity + kRise)));
+  const double period = calcMeanPeriod(time, knee);
+  std::printf("Simbody moving hip, support rising at 1 g: knee period %.9f s, formula (g + a) %.9f s\n", period, expected);
+  EXPECT_NEAR(period / expected - 1, 0, kPeriodRelTol);
+  // m: the spline reproduces a line and a parabola to rounding (values up to 120 m at 5 s).
+  constexpr double kPoseTol = 1e-9;
+  EXPECT_LT(hipPoseError, kPoseTol);
+}
+
+TEST(LegModel, FixedHipHasNoCarrier) {
+  const Participant p = load("p1");
+  const KneeLawSum noKnee;
+  LegModel leg(calcLegGeometry(p, 0.0), noKnee, makeZeroHipMoment(), makeWideHipRange(), kHipHeight);
+  EXPECT_FALSE(leg.hasMovingHip());
+  EXPECT_EQ(leg.getKneeCoordinateIndex(), 1);
+  EXPECT_EQ(leg.makeInitialState(InitialConditions{}).getNQ(), 2);
+}
+
 }  // namespace
 }  // namespace swingsim
