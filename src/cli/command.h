@@ -29,6 +29,7 @@ Command addCompareCommand(CLI::App& app);
 Command addDiagnoseCommand(CLI::App& app);
 Command addGenerateCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
+Command addImportOsimCommand(CLI::App& app);
 
 /// Declares `--flag VALUE` stored in `value` (left unset unless given), shown as `typeName`
 /// in --help. `value` must outlive the parse (a member of the command's argument struct).
