@@ -308,6 +308,34 @@ SegmentParams makeSegment(const Eigen::Vector2d& proximal, const Eigen::Vector2d
 
 std::string fmt(const Eigen::Vector2d& v) { return "(" + formatNumber(v.x()) + ", " + formatNumber(v.y()) + ")"; }
 
+// Rigidly joined bodies, each placed by its pose in a common frame.
+struct RigidPart {
+  const OsimBody* body;
+  Eigen::Isometry3d pose;
+};
+struct PlanarMass {
+  double mass = 0;
+  Eigen::Vector2d com = Eigen::Vector2d::Zero();  ///< x-y of the common frame
+  double izz = 0;                                 ///< about the combined COM
+};
+
+// Masses summed, COM the mass-weighted mean, Izz each part's (turned into the common frame)
+// plus m d^2 in the x-y plane (parallel-axis theorem).
+PlanarMass calcCombinedPlanarMass(const std::vector<RigidPart>& parts) {
+  PlanarMass c;
+  for (const auto& part : parts) {
+    c.mass += part.body->mass;
+    c.com += part.body->mass * xy(part.pose * part.body->massCenter);
+  }
+  c.com /= c.mass;
+  for (const auto& part : parts) {
+    const Eigen::Matrix3d r = part.pose.linear();
+    c.izz += (r * part.body->inertia * r.transpose())(2, 2) +
+             part.body->mass * (xy(part.pose * part.body->massCenter) - c.com).squaredNorm();
+  }
+  return c;
+}
+
 // Scales a segment's mass, keeping its COM and radius of gyration (inertia in proportion).
 void replaceMass(SegmentParams& s, double mass) {
   s.inertia *= mass / s.mass;
@@ -355,24 +383,10 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
   const Eigen::Isometry3d talusPose = ankle.calcChildInParent();
   const Eigen::Isometry3d calcnPose = talusPose * subtalar.calcChildInParent();
   const Eigen::Isometry3d toesPose = calcnPose * mtp.calcChildInParent();
-  struct Part {
-    const OsimBody* body;
-    Eigen::Isometry3d pose;
-  };
-  const Part parts[] = {{&talus, talusPose}, {&calcn, calcnPose}, {&toes, toesPose}};
-  double footMass = 0;
-  Eigen::Vector2d footCom = Eigen::Vector2d::Zero();
-  for (const auto& part : parts) {
-    footMass += part.body->mass;
-    footCom += part.body->mass * xy(part.pose * part.body->massCenter);
-  }
-  footCom /= footMass;
-  double footIzz = 0;  // each part's Izz turned into the tibia frame, plus m d^2 (parallel axes)
-  for (const auto& part : parts) {
-    const Eigen::Matrix3d r = part.pose.linear();
-    footIzz += (r * part.body->inertia * r.transpose())(2, 2) +
-               part.body->mass * (xy(part.pose * part.body->massCenter) - footCom).squaredNorm();
-  }
+  const PlanarMass foot = calcCombinedPlanarMass({{&talus, talusPose}, {&calcn, calcnPose}, {&toes, toesPose}});
+  const double footMass = foot.mass;
+  const Eigen::Vector2d footCom = foot.com;
+  const double footIzz = foot.izz;
   // The foot link is perpendicular to the shank, pointing forward.
   const Eigen::Vector2d up = (kneeInTibia - ankleInTibia).normalized(), forward(up.y(), -up.x());
   const Eigen::Vector2d mtpCentre = xy(calcnPose * mtp.calcCentreInParent());
