@@ -30,6 +30,7 @@ Command addDiagnoseCommand(CLI::App& app);
 Command addGenerateCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
 Command addSwingsCommand(CLI::App& app);
+Command addImportOsimCommand(CLI::App& app);
 
 /// Declares `--flag VALUE` stored in `value` (left unset unless given), shown as `typeName`
 /// in --help. `value` must outlive the parse (a member of the command's argument struct).

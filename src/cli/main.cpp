@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
   });
   const std::vector<Command> commands = {addSimulateCommand(app), addSweepCommand(app),   addCalibrateCommand(app),
                                          addFitCommand(app),      addCompareCommand(app), addDiagnoseCommand(app),
-                                         addGenerateCommand(app), addMergeCommand(app),   addSwingsCommand(app)};
+                                         addGenerateCommand(app), addMergeCommand(app),   addSwingsCommand(app),
+                                         addImportOsimCommand(app)};
   // Set after adding the subcommands, which would inherit it.
   app.footer("'swingsim <command> --help' lists a command's options with their units and defaults.");
   if (argc < 2) {

@@ -1,5 +1,6 @@
 #include "io/participant_loader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -130,6 +131,17 @@ void serialize(A& a, Participant& p) {
   a.require(p.minShankLength < p.shank.length, "min_shank_length_m",
             "must be shorter than the shank (" + formatNumber(p.shank.length) + " m)",
             [&] { return formatNumber(p.minShankLength); });
+  // The hip joint centre in the pelvis frame [x, y], m (written by import-osim).
+  if constexpr (A::kReading)
+    if (a.has("hip_offset_in_pelvis_m")) p.hipOffsetInPelvis.emplace();
+  if (p.hipOffsetInPelvis) {
+    std::vector<double> xy = {(*p.hipOffsetInPelvis)[0], (*p.hipOffsetInPelvis)[1]};
+    a.numbers("hip_offset_in_pelvis_m", xy);
+    a.require(xy.size() == 2 && std::abs(xy[0]) <= kMaxSegmentLength && std::abs(xy[1]) <= kMaxSegmentLength,
+              "hip_offset_in_pelvis_m", "expected [x, y] in metres, each within " + formatNumber(kMaxSegmentLength) + " m",
+              [&] { return std::to_string(xy.size()) + " values"; });
+    p.hipOffsetInPelvis = std::array<double, 2>{xy[0], xy[1]};
+  }
   bool present = true;
   a.optionalMap("initial", p.initial, present);
   a.optionalMap("hip_range", p.hipRange, present = true);

@@ -27,7 +27,7 @@ fs::path freshDir(const std::string& name) { return swingsim::testing::freshTemp
 TEST(Cli, NoArgumentsPrintsUsageListingEveryCommand) {
   CliRun r = run("");
   EXPECT_EQ(r.code, 2);
-  for (const char* c : {"simulate", "sweep", "calibrate", "merge", "swings"}) EXPECT_THAT(r.output, HasSubstr(c));
+  for (const char* c : {"simulate", "sweep", "calibrate", "merge", "swings", "import-osim"}) EXPECT_THAT(r.output, HasSubstr(c));
 }
 
 // Every option of every subcommand is in its --help (CLI11 builds it from the registry), and
@@ -43,7 +43,9 @@ TEST(Cli, HelpListsEveryOptionAndVersionPrintsIt) {
       {"compare", {"--out", "--json"}},
       {"diagnose", {"--out", "--json", "--save-model"}},
       {"generate", {"--out"}},
-      {"swings", {"FILE.mot", "--side", "--grf", "--vertical-force", "--threshold-N", "--knee-sign", "--json"}}};
+      {"swings", {"FILE.mot", "--side", "--grf", "--vertical-force", "--threshold-N", "--knee-sign", "--json"}},
+      {"import-osim", {"MODEL.osim", "--side", "--out", "--name", "--knee", "--knee-friction-Nm", "--shank-mass-kg",
+                       "--foot-mass-kg", "--foot-length-m", "--height-m"}}};
   for (const auto& [command, flags] : options) {
     const CliRun r = run(command + " --help");
     EXPECT_EQ(r.code, 0) << command;

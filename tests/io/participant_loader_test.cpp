@@ -154,5 +154,23 @@ TEST(ParticipantFormat, LoadWriteLoadGivesTheSameParticipant) {
   }
 }
 
+TEST(ParticipantLoader, HipOffsetInPelvisReadsAndWritesBack) {
+  EXPECT_FALSE(parseParticipant(kGood, "participants/px.yaml").hipOffsetInPelvis);
+  const Participant p = parseParticipant(kGood + "hip_offset_in_pelvis_m: [-0.0724, -0.0677]\n", "participants/px.yaml");
+  ASSERT_TRUE(p.hipOffsetInPelvis);
+  EXPECT_DOUBLE_EQ((*p.hipOffsetInPelvis)[0], -0.0724);
+  EXPECT_DOUBLE_EQ((*p.hipOffsetInPelvis)[1], -0.0677);
+  const std::string text = formatParticipantYaml(p, "participants");
+  EXPECT_THAT(text, HasSubstr("hip_offset_in_pelvis_m: [-0.0724, -0.0677]"));
+  EXPECT_EQ(parseParticipant(text, "participants/px.yaml").hipOffsetInPelvis, p.hipOffsetInPelvis);
+}
+
+TEST(ParticipantLoader, HipOffsetInPelvisNeedsTwoNumbersInMetres) {
+  EXPECT_THAT(errorFor(kGood + "hip_offset_in_pelvis_m: [-0.07]\n"),
+              HasSubstr("hip_offset_in_pelvis_m: expected [x, y] in metres, each within 1.5 m (got 1 values)"));
+  EXPECT_THAT(errorFor(kGood + "hip_offset_in_pelvis_m: [-72.4, -67.7]\n"),
+              HasSubstr("hip_offset_in_pelvis_m: expected [x, y] in metres"));
+}
+
 }  // namespace
 }  // namespace swingsim

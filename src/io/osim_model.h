@@ -1,0 +1,89 @@
+#pragma once
+// A scaled OpenSim model (.osim, OpenSim 4 XML) read with tinyxml2, as far as a planar
+// swing leg needs it: each body's mass, COM and inertia, each joint's parent and child
+// frames and its pose at the reference configuration (every coordinate 0), and the
+// participant built from one leg of it (`swingsim import-osim`, docs/import-osim.md).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "model/leg_parameters.h"
+
+namespace swingsim {
+
+struct OsimBody {
+  std::string name;
+  int line = 0;                   ///< XML line of <Body>
+  double mass = 0;                ///< kg
+  Eigen::Vector3d massCenter;     ///< m, in the body frame
+  Eigen::Matrix3d inertia;        ///< kg m^2, about the COM, in the body frame
+};
+
+struct OsimJoint {
+  std::string name, type;  ///< type: the element (CustomJoint, PinJoint, WeldJoint, ...)
+  int line = 0;
+  std::string parentBody, childBody;  ///< body names ("ground" for the ground)
+  Eigen::Isometry3d parentFrame;  ///< joint frame F in the parent body (its offset frame)
+  Eigen::Isometry3d childFrame;   ///< joint frame M in the child body
+  /// M in F with every coordinate at 0 (a CustomJoint's SpatialTransform evaluated there,
+  /// so a knee whose centre moves along a spline is taken at full extension).
+  Eigen::Isometry3d motionAtZero;
+  bool centreMoves = false;  ///< a translation of the SpatialTransform depends on a coordinate
+
+  /// The joint centre (origin of M) in the parent body frame at the reference pose.
+  Eigen::Vector3d calcCentreInParent() const { return (parentFrame * motionAtZero).translation(); }
+  /// The child body's pose in the parent body frame at the reference pose.
+  Eigen::Isometry3d calcChildInParent() const { return parentFrame * motionAtZero * childFrame.inverse(); }
+};
+
+struct OsimModel {
+  std::string path, name;
+  std::vector<OsimBody> bodies;
+  std::vector<OsimJoint> joints;
+
+  /// Throws InputError `file: body NAME: ...` when no body has that name.
+  const OsimBody& getBody(const std::string& name) const;
+  /// The joint whose child frame is on body `child`; throws InputError if none.
+  const OsimJoint& getJointTo(const std::string& child) const;
+  /// Sum of every body's mass, kg.
+  double calcTotalMass() const;
+};
+
+/// Reads a .osim file. Throws InputError `file:line: element: expected ... (got ...)` for
+/// text that is not XML, a model without a BodySet or JointSet, a body without a positive
+/// finite mass, a frame that names no body, or a transform function it cannot evaluate.
+OsimModel loadOsimModel(const std::string& path);
+/// Same, from XML text (tests); `path` names it in messages.
+OsimModel parseOsimModel(const std::string& text, const std::string& path);
+
+/// OpenSim's SimmSpline (Forsythe, Malcolm & Moler 1977, Computer Methods for Mathematical
+/// Computations, routine SPLINE: end third derivatives from cubics through the 4 end points)
+/// at `x`; `natural`: NaturalCubicSpline (zero second derivative at both ends).
+double calcOsimSplineValue(const std::vector<double>& xs, const std::vector<double>& ys, double x, bool natural);
+
+/// What `import-osim` takes besides the model.
+struct OsimImportOptions {
+  char side = 'r';                 ///< 'r' or 'l': the bodies femur_r, tibia_r, talus_r, ...
+  std::string name;                ///< participant name ("" = the model's name and side)
+  std::string kneeModelPath;       ///< knee model YAML written as knee_model
+  double kneeFriction = 0;         ///< N m
+  std::optional<double> shankMass, footMass;  ///< kg: the prosthesis's parts (inertia scales with mass)
+  std::optional<double> footLength;           ///< m, ankle to toe
+  std::optional<double> height;               ///< m, standing height
+};
+
+/// The participant and, line by line, where each of its numbers comes from.
+struct OsimParticipant {
+  Participant participant;
+  std::string provenance;  ///< comment lines (without '#') for the file's header
+};
+
+/// Thigh from femur_<side>, shank from tibia_<side>, foot from talus, calcn and toes combined
+/// (planar, sagittal x-y plane, inertia about z), lengths from joint centres at the reference
+/// pose, hip_offset_in_pelvis from the hip's centre in the pelvis; every other field the
+/// project's default. Throws InputError for a missing body or joint or an impossible segment.
+OsimParticipant calcOsimParticipant(const OsimModel& model, const OsimImportOptions& options);
+
+}  // namespace swingsim
