@@ -1,4 +1,4 @@
-// The convergence study of issue 7: swing time against the integrator, its accuracy, the
+// The convergence study (docs/speed.md): swing time against the integrator, its accuracy, the
 // knee friction smoothing width and the hyperextension stop stiffness, for every bundled
 // participant. Prints Markdown tables (README "Convergence study").
 //

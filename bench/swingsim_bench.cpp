@@ -1,4 +1,4 @@
-// Google Benchmark programs of issue 7. Run them with `bash scripts/bench.sh` (build, run
+// Google Benchmark programs (docs/speed.md). Run them with `bash scripts/bench.sh` (build, run
 // with repetitions, report medians and ratios). `swingsim_bench --convergence` runs the
 // convergence study instead (convergence_study.cpp).
 #include <benchmark/benchmark.h>
@@ -41,7 +41,7 @@ const LoadedParticipant& p1() {
 // One P1 swing at the standard location through the full Simbody path (build the leg,
 // integrate, find the swing end, sample the trajectory). Argument: 0 = the converged
 // defaults the README and the CLI use (fast path, our Dormand-Prince stepping Simbody's
-// realizations); 1 = the plain path as before issue 7 (Simbody's Runge-Kutta-Merson at 1e-4
+// realizations); 1 = the plain path before the fast path (Simbody's Runge-Kutta-Merson at 1e-4
 // with Simbody event handlers); 2 = the fast path on Simbody's Runge-Kutta-Merson at 1e-4
 // (the default before Dormand-Prince); 3 = the fast path on Simbody's Runge-Kutta 3 at
 // 1e-3, its cheapest converged Simbody setting.
@@ -192,7 +192,7 @@ void BM_DiagnoseSwing(benchmark::State& state) {
 }
 BENCHMARK(BM_DiagnoseSwing)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// Issue 16: the Monte Carlo of `sweep studies/burkett2004.yaml --uncertainty N` on 1 and 2
+// The Monte Carlo of `sweep studies/burkett2004.yaml --uncertainty N` on 1 and 2
 // threads, as that command runs it (planSweepUncertainty + runUncertaintySwings), with 20
 // samples (1,764 swings: the nominal run and 20 samples of the 84-point grid; the
 // one-at-a-time runs left out) instead of 1000 (84,000 swings, minutes): bench.sh extrapolates the time to 84,000 swings and says so. One iteration per

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmarks of issue 7: build swingsim_bench (Release, build-perf/), run every benchmark
+# Benchmarks (docs/speed.md): build swingsim_bench (Release, build-perf/), run every benchmark
 # with repetitions, write the JSON to out/bench/bench.json and print medians and the ratios
 # the README reports (Simbody swing / reference swing, sweep on 1 core / all cores).
 #
@@ -58,7 +58,7 @@ dgc = ms(next(k for k in med if k.startswith("BM_DiagnoseCylinder")))
 dgs = ms(next(k for k in med if k.startswith("BM_DiagnoseSwing")))
 print(f"one cylinder diagnosis: {dgc / 1e3:.2f} s; one swing diagnosis (three trials): {dgs / 1e3:.2f} s; "
       f"swing diagnosis / Simbody swing: {dgs / swing:.0f}x")
-# Issue 16: the Monte Carlo (sweep --uncertainty 1000 on the four Burkett participants is
+# The Monte Carlo (sweep --uncertainty 1000 on the four Burkett participants is
 # 84,000 swings), measured on fewer samples and extrapolated by swings.
 mc = {j: next(k for k in med if k.startswith(f"BM_UncertaintyBurkett/jobs:{j}")) for j in (1, 2)}
 mc_swings = med[mc[1]]["swings"]

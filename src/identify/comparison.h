@@ -49,7 +49,7 @@ struct Comparison {
 
 /// A quantity the model applies but is never fitted to, against an independent
 /// measurement of it: the swing's knee moment against a knee moment from inverse dynamics
-/// (issue 14 item 3). Whole records; the fit never sees the measured column.
+/// (docs/winter.md). Whole records; the fit never sees the measured column.
 struct HeldBackComparison {
   std::string quantity;  ///< "knee moment"
   std::string unit;      ///< "N m"

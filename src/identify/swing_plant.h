@@ -60,7 +60,7 @@ struct SwingBase {
   KneeModel knee;
   /// kHipMoment: each record's measured hip moment drives the leg (the record must have
   /// one). kThighKinematics: each record's measured hip angle is prescribed on the hip
-  /// (issue 14 item 1); the hip then fits exactly, so the likelihood uses the knee only, and
+  /// (measured thigh drive); the hip then fits exactly, so the likelihood uses the knee only, and
   /// each record's free toe-off state is the knee's angle and rate (the hip's come from
   /// the measured thigh).
   SwingDrive drive = SwingDrive::kHipMoment;

@@ -153,7 +153,7 @@ void serialize(A& a, Participant& p) {
   a.require(p.swingEnd.thighTargetFlexion > p.initial.hipFlexion, "swing_end",
             "thigh_target_flexion_deg must be above the initial hip flexion",
             [&] { return formatNumber(p.swingEnd.thighTargetFlexion * kRadToDeg) + " deg"; });
-  // The drive (issue 14 item 1): a hip moment profile, or the measured thigh angle.
+  // The drive: a hip moment profile, or the measured thigh angle.
   if (A::kReading || p.drive != SwingDrive::kHipMoment)
     a.choice("drive", p.drive, {{"hip_moment", SwingDrive::kHipMoment}, {"thigh_kinematics", SwingDrive::kThighKinematics}},
              true);

@@ -9,8 +9,8 @@
 // weaker so that it returns e^2 of the stored energy). The exit speed is then e times the
 // impact speed whatever the speed and the inertia behind the joint (a Hunt-Crossley damping
 // c p^1.5 pdot, used before, returns e = 0.49 at c v = 1 but 0.13 at c v = 5: Simbody
-// HuntCrossleyForce; ../shared/literature.md). The switch between the two springs is a
-// tanh in the penetration rate, so the moment is smooth for the integrator.
+// HuntCrossleyForce integrated alone: docs/assumptions.md). The switch between the two
+// springs is a tanh in the penetration rate, so the moment is smooth for the integrator.
 #include "knee/knee_law.h"
 
 namespace swingsim {
@@ -20,11 +20,11 @@ struct JointStopParams {
   double upper = 1e9;  ///< angle where the upper stop engages, rad (huge = none)
   /// k in M = k p^1.5, N m / rad^1.5. 2e4 keeps the overshoot of a 0.2 kg m^2 shank hitting
   /// at 8 rad/s at 3.3 deg, within Burkett 2004's "within 4 deg of full extension"
-  /// (p = (1.25 I v^2 / k)^0.4); no published bumper stiffness exists (literature.md), so
+  /// (p = (1.25 I v^2 / k)^0.4); no published bumper stiffness exists (docs/assumptions.md), so
   /// the plausible range is 1.25e4 (4 deg at that impact) to 5e4.
   double stiffness = 2.0e4;
   /// e, the coefficient of restitution: exit speed / impact speed of a single impact, in
-  /// [0, 1]. No bumper restitution is published (literature.md); the prior is 0.3-0.5 at
+  /// [0, 1]. No bumper restitution is published (docs/assumptions.md); the prior is 0.3-0.5 at
   /// swing impact speeds, nominal 0.4 (the middle), chosen before any comparison with Burkett
   /// Table 4.
   double restitution = 0.4;

@@ -1,6 +1,6 @@
 #pragma once
 // A measured thigh angle as a smooth function of time, for prescribing it on the hip
-// (issue 14 item 1): a quintic smoothing spline through the samples, its smoothing chosen
+// (the measured thigh drive): a quintic smoothing spline through the samples, its smoothing chosen
 // by generalized cross-validation (GCVSPL: Woltring 1986, "A Fortran package for
 // generalized, cross-validatory spline smoothing and differentiation", Adv. Eng. Software
 // 8:104-113; the standard smoother of joint angles in gait analysis, here Simbody's

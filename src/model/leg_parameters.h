@@ -85,7 +85,7 @@ struct AddedMass {
   double distanceBelowKnee = 0;  ///< m, along the shank
 };
 
-/// What drives the swing (issue 14 item 1).
+/// What drives the swing: a hip moment, or the measured thigh angle prescribed on the hip.
 enum class SwingDrive {
   /// A hip moment (HipMomentProfile) drives the thigh; thigh, shank and foot swing freely.
   kHipMoment,

@@ -10,7 +10,7 @@
 //   swing-diagnosis only: participant (participant YAML); motion_columns (required when a
 //   train/validate file is an OpenSim .mot/.sto: io/motion_file.h, MotionColumns); drive
 //   (hip_moment, the default: each record's hip moment drives it; thigh_kinematics: each
-//   record's hip angle is prescribed, issue 14).
+//   record's hip angle is prescribed: docs/winter.md).
 // loadDiagnosisPlant reads the records and models a study names and builds its plant.
 #include <cstddef>
 #include <memory>

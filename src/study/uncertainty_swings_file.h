@@ -1,6 +1,6 @@
 #pragma once
-// The swing times of an uncertainty analysis, or of a slice of it, as a JSON file (issue 16
-// items 2 and 3): what an interrupted `sweep --uncertainty N` keeps
+// The swing times of an uncertainty analysis, or of a slice of it, as a JSON file
+// (docs/uncertainty.md): what an interrupted `sweep --uncertainty N` keeps
 // (`uncertainty.partial.json`, resumed by the same command) and what `sweep --shard K/N`
 // writes (`uncertainty-shard-K-of-N.json`, combined by `swingsim merge`). The file names
 // the run it belongs to (study, fingerprints of its inputs and of the assumption table,

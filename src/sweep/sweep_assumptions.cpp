@@ -18,7 +18,7 @@ constexpr double kDurationLow = 0.15, kDurationHigh = 0.25;             // s, ea
 constexpr double kThighTargetLowDeg = 15, kThighTargetHighDeg = 25;     // deg
 constexpr double kFrictionLow = 5, kFrictionHigh = 15;                  // N m, the span of Burkett Table 2
 constexpr double kStopStiffnessLow = 1.25e4, kStopStiffnessHigh = 5.0e4;  // N m/rad^1.5 (knee/joint_stop.h)
-constexpr double kRestitutionLow = 0.3, kRestitutionHigh = 0.5;          // shared/literature.md prior
+constexpr double kRestitutionLow = 0.3, kRestitutionHigh = 0.5;          // docs/assumptions.md, Sources
 constexpr double kSettleDwellLow = 0.10, kSettleDwellHigh = 0.20;        // s (model/leg_parameters.h)
 constexpr double kAccuracyLow = 3e-6, kAccuracyHigh = 2e-5;
 

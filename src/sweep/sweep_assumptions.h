@@ -1,6 +1,6 @@
 #pragma once
-// The unpublished assumptions of the knee-axis sweep (issue 15 item 4, "How sure is the
-// optimum"), in one table: each with its unit, the nominal value the participant and knee
+// The unpublished assumptions of the knee-axis sweep ("How sure is the optimum"), in one
+// table: each with its unit, the nominal value the participant and knee
 // files say, a plausible range and where that range comes from (docs/uncertainty.md lists
 // the same table). Each entry applies a value to a copy of one participant's inputs; the
 // uncertainty runner (sweep_uncertainty.h) sweeps those copies.
@@ -47,7 +47,7 @@ struct SweepAssumption {
   std::vector<std::string> choices;  ///< discrete: the names of values 0 and 1
   /// Drawn uniformly in log(value) instead of value (a scale parameter: the accuracy).
   bool logUniform = false;
-  std::string source;  ///< why this range: a citation (shared/literature.md) or the stated reasoning
+  std::string source;  ///< why this range: a published source or the stated reasoning
   /// The range for a participant (its nominal read from the variant as loaded).
   std::function<AssumptionRange(const SweepVariant&)> calcRange;
   /// The value the variant currently has (for discrete ones 0 or 1).

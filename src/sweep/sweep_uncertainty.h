@@ -1,5 +1,5 @@
 #pragma once
-// How sure is the optimum (issue 15 item 4): the knee-axis sweep re-run under the
+// How sure is the optimum (docs/uncertainty.md): the knee-axis sweep re-run under the
 // unpublished assumptions of sweep_assumptions.h, one at a time at each end of its range
 // (sensitivity) and all together in N Monte Carlo samples (uncertainty). Every run is a
 // plain lowering sweep (the study's step grid, no Table 4 extras, no added mass) of one

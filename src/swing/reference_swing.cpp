@@ -11,80 +11,8 @@
 
 namespace swingsim {
 
-// ---------------------------------------------------------------------------------------
-// Equations of motion, derived by hand (Lagrange's equations of the second kind; e.g.
-// Goldstein, Classical Mechanics, Sec. 1.4; the double compound pendulum).
-//
-// Frame: x forward, y up, gravity g along -y, hip fixed at the origin. Angles are
-// counter-clockwise about +z, zero when a segment hangs straight down.
-//
-// Body 1, the thigh: mass m1 = thighMass, COM a1 = thighCom below the hip, inertia I1 about
-// its COM, length L1 = thighLength. Coordinate phi = hip flexion.
-//   p_knee = L1 (sin phi, -cos phi),  p_1 = a1 (sin phi, -cos phi).
-//
-// Body 2, the shank + foot (+ added point mass) as ONE rigid body (the ankle is welded).
-// In the shank frame (origin at the knee, -y along the shank towards the ankle, +x the
-// direction the foot points) its parts are:
-//   shank       m_s at (0, -a_s), inertia I_s about its COM    (a_s = shankCom)
-//   foot        m_f at (c_f, -L2), inertia I_f about its COM   (c_f = footComForward, L2 = shankLength)
-//   added mass  m_a at (0, -d_a)                               (d_a = added.distanceBelowKnee)
-// so m2 = m_s + m_f + m_a, and the composite COM lies at
-//   m2 r2 (sin gamma, -cos gamma) = (m_f c_f, -(m_s a_s + m_f L2 + m_a d_a)),
-// i.e. at distance r2 from the knee, rotated by gamma (forward) from the shank axis.
-// Its inertia about the knee is
-//   J2 = I_s + m_s a_s^2 + I_f + m_f (c_f^2 + L2^2) + m_a d_a^2 = I2 + m2 r2^2,
-// with I2 the inertia about the composite COM (parallel-axis theorem).
-//
-// The shank's absolute angle is psi = phi - theta (theta = knee flexion: flexing the knee
-// swings the shank backwards, the clinical sign used by LegModel). The composite COM line
-// therefore has absolute angle
-//   beta = psi + gamma = phi - theta + gamma,    theta = phi - beta + gamma,
-// and p_2 = p_knee + r2 (sin beta, -cos beta).
-//
-// Generalized coordinates (phi, beta). Velocities:
-//   v_1 = a1 phi' (cos phi, sin phi)
-//   v_2 = L1 phi' (cos phi, sin phi) + r2 beta' (cos beta, sin beta)
-// Kinetic and potential energy:
-//   T = 1/2 M11 phi'^2 + M12 phi' beta' + 1/2 M22 beta'^2
-//     M11 = I1 + m1 a1^2 + m2 L1^2
-//     M12 = m2 L1 r2 cos(phi - beta)
-//     M22 = I2 + m2 r2^2 = J2
-//   V = -(m1 a1 + m2 L1) g cos phi - m2 r2 g cos beta
-// d/dt dL/dq' - dL/dq = Q gives
-//   M11 phi'' + M12 beta'' + m2 L1 r2 sin(phi - beta) beta'^2 + (m1 a1 + m2 L1) g sin phi = Q_phi
-//   M12 phi'' + M22 beta'' - m2 L1 r2 sin(phi - beta) phi'^2 + m2 r2 g sin beta          = Q_beta
-// (the velocity terms: dM12/dt = -m2 L1 r2 sin(phi - beta)(phi' - beta'), and
-// dT/dphi = -dT/dbeta = -m2 L1 r2 sin(phi - beta) phi' beta').
-//
-// Generalized forces from the virtual work of the hip moment M_hip (on phi) and the knee
-// moment M_knee (on theta): dW = M_hip dphi + M_knee dtheta, dtheta = dphi - dbeta, so
-//   Q_phi = M_hip + M_knee,   Q_beta = -M_knee.
-// M_hip = hip moment profile(t) + hip range stop(phi, phi'); M_knee = knee law(theta,
-// theta', z) with theta' = phi' - beta', and the law's own states z integrated alongside
-// (z' = law.calcStateDerivatives). The 2x2 system is solved by Cramer's rule; its
-// determinant M11 M22 - M12^2 >= M11 M22 - (m2 L1 r2)^2 > 0 because M22 >= m2 r2^2 and
-// M11 > m2 L1^2 (the thigh has inertia).
-//
-// State vector y = (phi, beta, phi', beta', z_0 .. z_{n-1}).
-//
-// The measured thigh drive (a prescribed thigh, issue 14 item 1): phi(t) is given, so
-// phi'' = the prescribed acceleration replaces the first equation, beta'' follows from the
-// second alone,
-//   beta'' = (-M_knee + m2 L1 r2 sin(phi - beta) phi'^2 - m2 r2 g sin beta - M12 phi'') / M22,
-// and the first equation gives the hip moment the prescription needs:
-//   M_hip = M11 phi'' + M12 beta'' + m2 L1 r2 sin(phi - beta) beta'^2 + (m1 a1 + m2 L1) g sin phi - M_knee.
-// phi and phi' stay in y, integrated from phi'' (they follow the prescription to the
-// integration tolerance).
-//
-// A moving hip (a prescribed support path s(t), acceleration a = (a_x, a_y); derivation in
-// docs/moving-hip.md): every point moves with s(t) plus the pendulum's own motion, and
-// Lagrange's equations in the inertial frame gain the generalized force
-// Q_q = -sum_i m_i a . dp_i/dq of the support's acceleration:
-//   Q_phi  = -(m1 a1 + m2 L1) (a_x cos phi + a_y sin phi)
-//   Q_beta = -m2 r2 (a_x cos beta + a_y sin beta)
-// (with a = (0, -g) these are the gravity terms: a support accelerating up at a_y acts as
-// gravity g + a_y).
-// ---------------------------------------------------------------------------------------
+// The equations of motion, derived by hand (2-DOF Lagrangian): docs/reference-swing.md; the
+// moving hip's support-acceleration forces: docs/moving-hip.md.
 class ReferenceSwing::Equations final : public OdeSystem {
  public:
   Equations(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment, const HipRange& hipRange,

@@ -1,4 +1,4 @@
-// The bad-input catalogue at the command line (issue 17): each bad input exits non-zero
+// The bad-input catalogue at the command line: each bad input exits non-zero
 // with a message naming the file, key or option, and leaves no output, no half-written
 // file and no temporary file behind; the already-fixed kinds stay fixed.
 #include <gmock/gmock.h>

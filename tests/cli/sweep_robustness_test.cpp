@@ -1,4 +1,4 @@
-// Nothing lost (issue 6): an interrupted `swingsim sweep` keeps its finished rows readable
+// Nothing lost (docs/robustness.md): an interrupted `swingsim sweep` keeps its finished rows readable
 // and names the missing ones without writing anything that looks like a final result, and
 // the same study run twice gives byte-identical files.
 #include <gmock/gmock.h>

@@ -1,4 +1,4 @@
-// `swingsim sweep STUDY --uncertainty N [--seed S]` end to end (issue 15 item 4): the
+// `swingsim sweep STUDY --uncertainty N [--seed S]` end to end: the
 // documented JSON keys per participant, the tornado figure and the report section, and a
 // --seed without anything to seed refused before any swing runs. A tiny study: one
 // participant, a 50 mm grid, two samples.

@@ -1,4 +1,4 @@
-// Issue 16 items 2 and 3 end to end: an uncertainty analysis interrupted (the test hook
+// Interrupted runs and shards end to end: an uncertainty analysis interrupted (the test hook
 // SWINGSIM_TEST_STOP_AFTER_SWINGS stops it as Ctrl-C would) keeps its finished swings in a
 // partial file and the same command resumes to the uninterrupted run's result, bit for bit;
 // `sweep --shard K/N` + `swingsim merge` give the single run's report and JSON; every way a

@@ -1,4 +1,4 @@
-// Staged output (issue 17): files appear in their folder together at commit(), or not at
+// Staged output: files appear in their folder together at commit(), or not at
 // all; nothing of the staging is left behind either way.
 #include "core/output_files.h"
 

@@ -16,7 +16,7 @@ namespace swingsim {
 namespace {
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
-// The requirement for noise-free recovery.
+// Noise-free data must give back the generating coefficients (rounding only).
 constexpr double kRecoveryTol = 1e-6;
 // With noise, each estimate within this many standard errors of the truth: the chance that
 // one of 12 normal estimates falls outside 4 SE is 12 * 6.3e-5, under 0.1 %.

@@ -17,11 +17,11 @@ namespace {
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 constexpr double kNoise = 25.0;  // N, load-cell noise of studies/mauch2014-bench.yaml
-// Issue 5: hidden effects of at least 3 noise RMS must be found...
+// The diagnosis's claim: hidden effects of at least 3 noise RMS must be found...
 constexpr double kMinEffectToNoise = 3.0;
 // ...and the final validation RMSE must come within 15 % of the noise floor.
 constexpr double kNoiseFloorTolerance = 1.15;
-// Null test: at most this many false acceptances over kNullSeeds seeds (issue 5).
+// Null test: at most this many false acceptances over kNullSeeds seeds.
 constexpr int kNullSeeds = 20;
 constexpr int kMaxFalseAcceptances = 1;
 // Parameters are reported with 95 % intervals, which miss the truth in 1 of 20 honest draws;
@@ -106,7 +106,8 @@ Hidden makeHidden(const std::string& effect, double scale) {
   return h;
 }
 
-// Runs the diagnosis and checks the three claims of issue 5 for a hidden effect.
+// Runs the diagnosis and checks its three claims for a hidden effect: named first, its
+// parameters inside their intervals, and the validation error down to the noise floor.
 void expectRecovered(const Hidden& h, std::uint64_t seed) {
   const Data d = makeData(h.truth, seed);
   const double size = calcCylinderEffectRms(h.truth, effectId(h.effect), d.train.front());

@@ -19,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kNoise = 15.0;  // N, as in the measurement
+constexpr double kNoise = 15.0;  // N, as in the measurement that set this test up
 
 struct Files {
   std::vector<BenchData> train, validate;

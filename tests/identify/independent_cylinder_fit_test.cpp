@@ -45,7 +45,7 @@ MauchCylinderParams startModel(int phases) {
   return p;
 }
 
-// Held-out RMSE within this factor of the generator's noise: the acceptance level.
+// Held-out RMSE within this factor of the generator's noise: the diagnosis's acceptance level.
 constexpr double kNoiseFactor = 1.2;
 
 struct Outcome {
@@ -88,7 +88,7 @@ void expectFitReachesNoise(int phases, std::uint64_t seed, double noise) {
 }
 
 // Switch constants drawn across their ranges (independent::drawTruth), 15 N of noise as in
-// the measurement: before this fit, held-out errors were 30-48 N.
+// the measurement that set this test up: before this fit, held-out errors were 30-48 N.
 TEST(IndependentCylinderFit, FourPhaseHeldOutErrorReachesTheNoise) {
   for (std::uint64_t seed : {1, 3, 4, 6}) expectFitReachesNoise(4, seed, 15.0);
 }

@@ -19,7 +19,7 @@ namespace {
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 constexpr double kNoise = 0.5;  // deg on hip and knee: marker-based angles (studies/diagnose-demo-swing-data.yaml)
-// Issue 5: hidden effects of at least 3 noise RMS must be found...
+// The diagnosis's claim: hidden effects of at least 3 noise RMS must be found...
 constexpr double kMinEffectToNoise = 3.0;
 // ...and the final validation RMSE must come within 15 % of the noise floor.
 constexpr double kNoiseFloorTolerance = 1.15;

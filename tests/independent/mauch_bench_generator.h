@@ -5,7 +5,7 @@
 // measured-file format a user has (time_s, position_m, force_N) and nothing else, so what
 // swingsim reads from it is what it would read from a bench.
 //
-// Equations: Chien 2014 Eqs. 2-16 as digested in shared/papers.md (switches S1..S8, latch
+// Equations: Chien et al. 2014 Eqs. 2-16 (switches S1..S8, latch
 // dS2/dt = k (1 - S1) [1/2 - 1/2 tanh((x - xhy)/x0) - S2], 2- and 4-phase force laws), with
 // the phase reading documented in docs/mauch.md (x > 0 in flexion; phase 2 = S1 S2 S8,
 // phase 3 = (1 - S1) S8). Coefficients: Chien 2014 Table 1 (F90E90).

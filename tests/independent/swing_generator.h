@@ -64,7 +64,7 @@ inline double hipMoment(const HipDrive& d, double t) {
 
 /// Slow, normal and fast swings: a weaker and longer, or stronger and shorter, hip drive.
 /// Sized so that Burkett's P1 swings like a person walks (peak knee flexion 58-68 deg, peak
-/// hip flexion 32-36 deg; Winter's normal cadence, shared/data, peaks near 65 and 30 deg):
+/// hip flexion 32-36 deg; Winter 2009 Appendix A, normal cadence, peaks near 65 and 30 deg):
 /// a stronger drive takes the hip to its 90 deg range limit, which is not a gait.
 inline std::vector<HipDrive> threeDrives() {
   return {{"slow", 14.4, 0.24, 7.2, 0.24}, {"normal", 18.0, 0.20, 9.0, 0.20}, {"fast", 22.8, 0.17, 11.4, 0.17}};

@@ -1,4 +1,4 @@
-// A catalogue of the ways users get input files wrong (issue 6), for every loader: each
+// A catalogue of the ways users get input files wrong, for every loader: each
 // case either gives a clear InputError naming the file (and line and key where there is
 // one) or is a documented, tested acceptance. Acceptances: a UTF-8 byte-order mark and
 // CRLF line ends simply work; YAML numbers that are finite but absurdly large are refused
@@ -483,7 +483,7 @@ TEST(BadInputCatalogue, KneeAngleStrideMissingFramesAndBadColumns) {
 
 
 // ---------------------------------------------------------------------------------------
-// Size limits before parsing (issue 17): a bounded reader, a YAML value count taken on the
+// Size limits before parsing: a bounded reader, a YAML value count taken on the
 // parser's events, and a directory named as one.
 // ---------------------------------------------------------------------------------------
 
@@ -588,7 +588,7 @@ TEST(BadInputCatalogue, DirectoryGivenForAYamlFileIsNamedAsADirectory) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Unit mistakes (issue 17): values that only make sense in another unit are named so.
+// Unit mistakes: values that only make sense in another unit are named so.
 // ---------------------------------------------------------------------------------------
 
 std::string participantWith(const std::string& from, const std::string& to) {

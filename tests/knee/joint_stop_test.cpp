@@ -68,7 +68,7 @@ TEST(JointStop, NeverPullsOnRelease) {
 // fixed step (independent of the simulator's integrators): exit speed / impact speed must
 // be the configured restitution within 5 % over swing impact speeds (2-10 rad/s), shank
 // inertias about the knee (0.05-0.3 kg m^2) and restitutions (0.1-0.9), independent of
-// speed (the Hunt-Crossley law it replaced was not: literature.md). It holds while the exit
+// speed (the Hunt-Crossley law it replaced was not: docs/assumptions.md). It holds while the exit
 // speed e v is at least 8 switch rates (0.4 rad/s); slower rebounds come out faster than
 // e v (e = 0.1 at 1 rad/s: 0.15), and lift a shank by well under a degree.
 double measureRestitution(const JointStop& stop, double inertia, double impactRate) {

@@ -69,7 +69,7 @@ TEST(MauchSwitches, GatesSumToOneEverywhere) {
   }
 }
 
-// Decision (papers.md AMBIGUOUS, docs/mauch.md): Table 1's phase 2 ("moderate", c = 928.7)
+// Decision (an ambiguity of Chien et al. 2014, docs/mauch.md): Table 1's phase 2 ("moderate", c = 928.7)
 // acts in flexion after hyperextension, its phase 3 ("low", c = 501.49) in extension.
 TEST(MauchCylinder, FourPhaseUsesDescribedPhaseForEachGaitEvent) {
   const MauchCylinder cyl(table1FourPhase());

@@ -50,7 +50,7 @@ TEST(SweepStudyFormat, LoadWriteLoadGivesTheSameStudy) {
   }
 }
 
-// `uncertainty: {samples: N, seed: S}` (issue 15 item 4): read, defaults, and strict keys.
+// `uncertainty: {samples: N, seed: S}` (docs/uncertainty.md): read, defaults, and strict keys.
 std::string studyWithUncertainty(const std::string& map) {
   return "kind: knee-axis-sweep\nname: u\nparticipants: [../participants/p1.yaml]\nuncertainty: " + map + "\n";
 }

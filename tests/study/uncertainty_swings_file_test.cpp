@@ -1,4 +1,4 @@
-// The uncertainty swings file (issue 16): written and read back bit for bit (swing times,
+// The uncertainty swings file (docs/uncertainty.md): written and read back bit for bit (swing times,
 // no-swing-end nulls, swings not run), malformed files refused with file, key, expected and
 // found, and shard sets combined only when they are every shard of one analysis.
 #include "study/uncertainty_swings_file.h"

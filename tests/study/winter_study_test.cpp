@@ -1,4 +1,4 @@
-// The demonstration on published gait data (issue 14 item 3): studies/winter-swing.yaml,
+// The demonstration on published gait data (docs/winter.md): studies/winter-swing.yaml,
 // Winter's two measured swings with the measured thigh prescribed and a passive knee.
 // The assertions are on what the study measured (docs/winter.md), and on the data's sign
 // convention, checked here by an inverse dynamics of the test's own.
@@ -148,7 +148,7 @@ TEST(SwingStudyDrive, HipMomentDriveNeedsAHipMomentAndSaysWhatElseWorks) {
 }
 
 TEST(SwingStudyDrive, SeveralTrainingTrialsShareOneModelAndWholeTrialsAreHeldOut) {
-  // Issue 14 item 4: two training trials fit one set of model parameters (each keeps only
+  // Two training trials fit one set of model parameters (each keeps only
   // its own toe-off state); the held-out trial is judged whole.
   const std::string path = writeStudy("test-two-trials.yaml",
                                       "kind: swing-diagnosis\nparticipant: S/participants/p1.yaml\n"

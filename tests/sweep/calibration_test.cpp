@@ -16,7 +16,7 @@
 namespace swingsim {
 namespace {
 
-// The criterion: Table 3 model predictions within 5 ms.
+// Calibrated swing times reproduce Table 3's model predictions within 5 ms.
 constexpr double kTable3Tolerance = 0.005;  // s
 
 TEST(Calibration, StoredParticipantsReproduceTable3) {

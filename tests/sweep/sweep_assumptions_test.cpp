@@ -1,4 +1,4 @@
-// The table of unpublished assumptions (issue 15 item 4): every entry's apply function
+// The table of unpublished assumptions (docs/uncertainty.md): every entry's apply function
 // changes what it claims, its range holds the files' value, and the draws stay inside it.
 #include "sweep/sweep_assumptions.h"
 
@@ -31,7 +31,7 @@ TEST(SweepAssumptions, EveryEntryIsDocumentedAndKeyedOnce) {
     EXPECT_GT(a.source.size(), 20u) << a.key << ": a range needs its source";
     EXPECT_EQ(a.discrete, a.choices.size() == 2) << a.key;
   }
-  // The assumptions the issue names are all there.
+  // The assumptions docs/uncertainty.md lists are all there.
   for (const char* key : {"com_rule", "hip_time_scale", "hip_extension_ratio", "hip_flexion_duration",
                           "hip_extension_duration", "hip_effort_adaptation", "thigh_target_flexion", "knee_friction",
                           "settle_dwell", "stop_stiffness", "stop_restitution", "integrator_accuracy"})

@@ -1,4 +1,4 @@
-// How sure is the optimum (issue 15 item 4): the Monte Carlo is reproducible from its seed
+// How sure is the optimum (docs/uncertainty.md): the Monte Carlo is reproducible from its seed
 // whatever the thread count, the sensitivity is sorted by effect, and the nominal run is
 // the plain sweep. Small on purpose: one participant, a 50 mm grid, a few samples.
 #include "sweep/sweep_uncertainty.h"
@@ -133,7 +133,7 @@ TEST(SweepUncertainty, IntervalIsTheFivetoNinetyFivePercentRange) {
 namespace swingsim {
 namespace {
 
-// Issue 16: shards are contiguous slices of the swing order that tile it, sizes within one.
+// Shards are contiguous slices of the swing order that tile it, sizes within one.
 TEST(UncertaintyPlanSlices, ShardsTileTheSwings) {
   for (std::size_t count : {0u, 1u, 7u, 81u, 84000u})
     for (int shards : {1, 2, 3, 7, 100}) {

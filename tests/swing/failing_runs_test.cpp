@@ -1,4 +1,4 @@
-// Failing runs explain themselves (issue 6): an integrator failure, a swing that never
+// Failing runs explain themselves (docs/robustness.md): an integrator failure, a swing that never
 // ends and a hip driven out of its range each throw RunError with the time, the state and
 // the likely cause in words; the CLI turns that into exit code 1 and writes nothing.
 #include <gmock/gmock.h>
@@ -95,7 +95,7 @@ TEST(FailingRuns, SwingThatNeverEndsGivesTimeStateAndCause) {
   EXPECT_THAT(late, HasSubstr("the thigh never reached its target flexion of 20 deg (hip moment too small"));
 }
 
-// Before issue 6 the soft hip stop let the thigh sail ~20 deg past 90 deg and the swing
+// Before this check the soft hip stop let the thigh sail ~20 deg past 90 deg and the swing
 // "ended" there, which looked like a result.
 TEST(FailingRuns, HipDrivenOutOfItsRangeGivesTimeStateAndCause) {
   Participant p = loadParticipant("participants/p1.yaml");
@@ -136,7 +136,7 @@ TEST(FailingRuns, CliExitsOneAndWritesNothing) {
 
 // A bench record that never comes near full extension (here: the normal-speed record moved
 // 8 mm into flexion) leaves the 4-phase model's hyperextension phase without data. Before
-// issue 6 the column-scaled regression still reported "rank 12" and returned phase
+// this check the column-scaled regression still reported "rank 12" and returned phase
 // coefficients of 1e16 N with exit code 0 and a complete-looking report.
 BenchData recordWithoutHyperextension() {
   BenchData d = readBenchCsv("studies/data/mauch2014/normal.csv", 3);
@@ -184,7 +184,7 @@ TEST(FailingRuns, FitCliWithSingularRegressionExitsOneAndWritesNothing) {
 }
 
 
-// Budgets (issue 17): a swing past its realization or wall-clock budget stops with a
+// Budgets: a swing past its realization or wall-clock budget stops with a
 // RunError naming the participant, the lowering, the integrator and what to change.
 SwingSetup p1Setup(const KneeModel& model, KneeLawSum& law) {
   SwingSetup setup;

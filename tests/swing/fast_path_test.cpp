@@ -1,4 +1,4 @@
-// Correctness guard of the fast path (issue 7): swing events found between integrator
+// Correctness guard of the fast path (docs/speed.md): swing events found between integrator
 // steps on the Hermite interpolant, at the converged default accuracy, against the plain
 // path (Simbody event handlers localizing every crossing) at a tight accuracy, for every
 // participant and every lowering of the Burkett sweep.

@@ -1,4 +1,4 @@
-// The measured thigh drive (issue 14 item 1): the thigh angle prescribed on the hip mobilizer
+// The measured thigh drive: the thigh angle prescribed on the hip mobilizer
 // (Simbody prescribed motion), shank and foot free. Verified (a) against the independent
 // reference integrator given the same prescribed thigh (hand-derived equations, our own
 // Dormand-Prince, no Simbody multibody code), on Winter's measured hip angle, a thigh motion
