@@ -45,6 +45,8 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const std::optional<HeldBackComparison> heldAfter = plant->compareHeldBack(*dg.final.model);
   const bool held = heldBefore && heldAfter;
   if (held) std::printf("%s", formatHeldBackText(*heldBefore, *heldAfter).c_str());
+  const std::vector<std::string> heldWarnings = held ? checkHeldBackComparison(*heldAfter) : std::vector<std::string>{};
+  for (const auto& w : heldWarnings) std::fprintf(stderr, "swingsim diagnose: warning: %s\n", w.c_str());
 
   const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n" +
@@ -55,6 +57,7 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   if (held) {
     md += "## " + heldBefore->quantity + " against the measured one (never fitted)\n\n```\n" +
           formatHeldBackText(*heldBefore, *heldAfter) + "```\n\n![" + heldBefore->quantity + "](held-back.svg)\n\n";
+    for (const auto& w : heldWarnings) md += "Warning: " + w + "\n\n";
     writeFileAtomic(outDir + "/held-back.svg", renderHeldBackSvg(*heldBefore, *heldAfter, heldBefore->quantity));
   }
   for (const auto& p : writeResidualPlots(outDir, "before", before))

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/input_error.h"
 #include "core/text_format.h"
 #include "numerics/metrics.h"
 #include "numerics/residual_analysis.h"
@@ -112,6 +113,16 @@ void finishHeldBackComparison(HeldBackComparison& c) {
   for (std::size_t i = 0; i < allMeasured.size(); ++i) diff.push_back(allModel[i] - allMeasured[i]);
   c.rmse = calcRms(diff);
   c.correlation = calcCorrelation(allMeasured, allModel);
+}
+
+std::vector<std::string> checkHeldBackComparison(const HeldBackComparison& c) {
+  std::vector<std::string> out;
+  for (const auto& r : c.records)
+    if (r.correlation < 0)
+      out.push_back(r.stem + ": the measured " + c.quantity + " correlates negatively with the model's (r = " +
+                    formatNumber(r.correlation) + "): is its sign flipped? An OpenSim generalized force acts along its "
+                    "coordinate, so motion_columns: knee_sign applies to it too (OpenSim's knee: knee_sign: -1)");
+  return out;
 }
 
 }  // namespace swingsim

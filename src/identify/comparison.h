@@ -66,6 +66,11 @@ struct HeldBackComparison {
 /// Fills each record's and the overall RMSE and correlation.
 void finishHeldBackComparison(HeldBackComparison& comparison);
 
+/// Warnings about a finished comparison, each naming the likely cause and the key that fixes
+/// it: a record whose measured and model quantities correlate below zero (a sign flipped in
+/// reading the measurement: `knee_sign`).
+std::vector<std::string> checkHeldBackComparison(const HeldBackComparison& comparison);
+
 /// Fills a record's residual, overall metrics, per-phase metrics and shares from its
 /// measured, predicted and phase vectors (`phases` phases).
 void finishRecordComparison(RecordComparison& record, std::size_t phases);

@@ -26,7 +26,13 @@ std::string fmt(double v, const char* f = "%.3g") {
 }
 
 // The measured hip angle of a record, as the thigh drive prescribes it.
-ThighKinematics thighKinematicsOf(const SwingRecord& r) { return {r.path, r.time, r.hipFlexion}; }
+ThighKinematics thighKinematicsOf(const SwingRecord& r) {
+  ThighKinematics t;
+  t.path = r.path;
+  t.time = r.time;
+  t.hipFlexion = r.hipFlexion;
+  return t;
+}
 
 void requireSwingEffect(EffectId effect) {
   if (describeEffect(effect).plant != PlantKind::kSwing)
@@ -639,9 +645,14 @@ std::optional<HeldBackComparison> SwingPlant::compareHeldBack(const PlantModel& 
     HeldBackComparison::Record rc;
     rc.stem = r.stem;
     rc.training = index < train_.size();
-    rc.time = r.time;
-    rc.measured = r.kneeMoment;
-    rc.model = pose.prediction.kneeMoment;
+    // NaN: where the inverse dynamics does not reach; compared where it exists.
+    for (std::size_t k = 0; k < r.time.size() && k < pose.prediction.kneeMoment.size(); ++k) {
+      if (std::isnan(r.kneeMoment[k])) continue;
+      rc.time.push_back(r.time[k]);
+      rc.measured.push_back(r.kneeMoment[k]);
+      rc.model.push_back(pose.prediction.kneeMoment[k]);
+    }
+    if (rc.measured.empty()) continue;
     c.records.push_back(std::move(rc));
   }
   if (c.records.empty()) return std::nullopt;

@@ -64,6 +64,9 @@ struct SwingBase {
   /// each record's free toe-off state is the knee's angle and rate (the hip's come from
   /// the measured thigh).
   SwingDrive drive = SwingDrive::kHipMoment;
+  /// Warnings about the records found while reading them (a flipped knee sign, a pelvis
+  /// tilt left unread), each naming the key that fixes it: the plant's warnings().
+  std::vector<std::string> notes;
 };
 
 /// `params` with `effect` switched on (value 0 or scale 1; `gridValue`: the friction
@@ -126,6 +129,7 @@ class SwingPlant final : public DiagnosisPlant {
   /// other parameter.
   std::optional<double> calcHeldParameterRss(const PlantModel& fitted, const std::string& parameter,
                                              double value) const override;
+  std::vector<std::string> warnings() const override { return base_.notes; }
 
   const SwingBase& base() const { return base_; }
 

@@ -254,7 +254,52 @@ void checkKneeUnit(const MotionTable& table, const std::string& label, const std
 
 }  // namespace
 
-SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns) {
+MotionColumns openSimRightLegColumns(const MotionTable& table) {
+  MotionColumns c;
+  c.hip = "hip_flexion_r";
+  c.knee = "knee_angle_r";
+  c.kneeSign = -1;  // OpenSim's knee_angle_r is 0 straight and negative in flexion
+  c.kneeMoment = kOpenSimKneeMoment;
+  const auto has = [&](const char* label) { return std::find(table.labels.begin(), table.labels.end(), label) != table.labels.end(); };
+  if (has("pelvis_tilt")) c.pelvisTilt = "pelvis_tilt";
+  if (has("pelvis_tx")) c.pelvisTx = "pelvis_tx";
+  if (has("pelvis_ty")) c.pelvisTy = "pelvis_ty";
+  return c;
+}
+
+namespace {
+
+/// The inverse-dynamics knee moment at file times `at` (N m, NaN outside the .sto's time).
+std::vector<double> calcKneeMoment(const MotionTable& id, const MotionColumns& columns, const std::vector<double>& at) {
+  const std::string label = columns.kneeMoment.empty() ? std::string(kOpenSimKneeMoment) : columns.kneeMoment;
+  const std::vector<double>& idTime = id.columns.front();
+  std::size_t column = 0;
+  try {
+    column = id.index(label);
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + "; inverse_dynamics: expected the knee moment column that motion_columns: knee_moment names" +
+                     (columns.kneeMoment.empty() ? " (default " + std::string(kOpenSimKneeMoment) + ")" : std::string()));
+  }
+  const std::vector<double>& values = id.columns[column];
+  std::vector<double> inside;
+  for (double t : at)
+    if (t >= idTime.front() && t <= idTime.back()) inside.push_back(t);
+  if (inside.empty() || idTime.size() < 2)
+    throw InputError(id.path + ": inverse_dynamics: expected times that overlap the swing, " + formatNumber(at.front()) +
+                     " to " + formatNumber(at.back()) + " s (got " + formatNumber(idTime.front()) + " to " +
+                     formatNumber(idTime.back()) + " s)");
+  const std::vector<double> moment = interpolate(idTime, values, inside);
+  std::vector<double> out;
+  std::size_t k = 0;
+  for (double t : at)
+    // An OpenSim generalized force acts along its coordinate, so the knee's sign applies.
+    out.push_back(t >= idTime.front() && t <= idTime.back() ? columns.kneeSign * moment[k++] : std::nan(""));
+  return out;
+}
+
+}  // namespace
+
+SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns, const MotionTable* inverseDynamics) {
   const std::vector<double>& time = table.columns.front();
   if (time.size() < kMinSwingSamples)
     throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) + " rows for a swing (got " +
@@ -262,6 +307,8 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
   const std::vector<double>& hipValues = table.column(columns.hip);
   const std::vector<double>& kneeValues = table.column(columns.knee);
   const std::vector<double>* momentValues = columns.hipMoment.empty() ? nullptr : &table.column(columns.hipMoment);
+  for (const std::string* label : {&columns.pelvisTilt, &columns.pelvisTx, &columns.pelvisTy})
+    if (!label->empty()) table.index(*label);  // a missing label fails here, naming those there are
   const std::string range = "the file's time runs from " + formatNumber(time.front()) + " to " + formatNumber(time.back()) + " s";
   const double toeOff = columns.toeOffTime.value_or(time.front());
   const double heelContact = columns.heelContactTime.value_or(time.back());
@@ -306,7 +353,31 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
     r.kneeFlexion.push_back(columns.kneeSign * knee[k] * toRad + columns.kneeOffset);
   }
   if (momentValues) r.hipMoment = interpolate(time, *momentValues, at);
+  if (!columns.pelvisTilt.empty()) {
+    // OpenSim's pelvis_tilt and hip_flexion both turn about +z (forward tilt and flexion
+    // positive), so the thigh's angle in space is their sum.
+    for (double v : interpolate(time, table.column(columns.pelvisTilt), at)) r.pelvisTilt.push_back(v * toRad);
+    for (std::size_t k = 0; k < at.size(); ++k) r.hipFlexion[k] += r.pelvisTilt[k];
+  }
+  // Translations are in metres whatever inDegrees says.
+  if (!columns.pelvisTx.empty()) r.pelvisX = interpolate(time, table.column(columns.pelvisTx), at);
+  if (!columns.pelvisTy.empty()) r.pelvisY = interpolate(time, table.column(columns.pelvisTy), at);
+  if (inverseDynamics) r.kneeMoment = calcKneeMoment(*inverseDynamics, columns, at);
   return r;
+}
+
+std::vector<std::string> checkMotionRecord(const SwingRecord& record, const MotionTable& table, const MotionColumns& columns) {
+  std::vector<std::string> out;
+  const auto low = std::count_if(record.kneeFlexion.begin(), record.kneeFlexion.end(), [](double v) { return v < kHyperextendedKnee; });
+  if (2 * static_cast<std::size_t>(low) > record.kneeFlexion.size())
+    out.push_back(std::to_string(low) + " of " + std::to_string(record.kneeFlexion.size()) + " knee samples of " + table.path +
+                  " are below " + formatNumber(kHyperextendedKnee * kRadToDeg) + " deg (hyperextended): is the knee's sign "
+                  "flipped? OpenSim's knee_angle is negative in flexion: set motion_columns: knee_sign: -1");
+  const bool hasTilt = std::find(table.labels.begin(), table.labels.end(), "pelvis_tilt") != table.labels.end();
+  if (hasTilt && columns.pelvisTilt.empty())
+    out.push_back("the hip angle " + columns.hip + " of " + table.path + " is read without the pelvis tilt although the file has "
+                  "a pelvis_tilt column, so the thigh's angle in space misses the tilt: set motion_columns: pelvis_tilt: pelvis_tilt");
+  return out;
 }
 
 bool isMotionFile(const std::string& path) {

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "core/units.h"
+#include "model/motion_columns.h"
 #include "model/swing_record.h"
 
 namespace swingsim {
@@ -48,21 +50,15 @@ MotionTable readMotionTable(const std::string& path);
 /// Same, from text in memory (tests, fuzzers); `path` names it in messages.
 MotionTable parseMotionTable(const std::string& text, const std::string& path);
 
-/// Which columns of a motion file make a swing record, and how (the study's
-/// `motion_columns:` map). Clinical flexion = sign * value + offset, value in the file's unit.
-struct MotionColumns {
-  std::string hip, knee;            ///< hip and knee flexion angle labels (required)
-  std::string hipMoment;            ///< hip flexion moment label, N m ("" = not read)
-  /// Pelvis labels ("" = not read): tilt (angle, the file's unit; added to the hip angle to
-  /// give the thigh's angle in space) and translations (m, whatever inDegrees says).
-  std::string pelvisTilt, pelvisTx, pelvisTy;
-  std::string kneeMoment;           ///< knee moment label in an inverse-dynamics .sto ("" = not read)
-  double hipSign = 1, kneeSign = 1;  ///< +1 or -1
-  double hipOffset = 0, kneeOffset = 0;  ///< rad (degrees in the file: *_offset_deg)
-  std::optional<double> toeOffTime;      ///< s, file time; default the first row
-  std::optional<double> heelContactTime;  ///< s, file time; default the last row
-  std::optional<double> resampleInterval;  ///< s; linear interpolation; default: the file's rows
-};
+// MotionColumns (which columns make a swing record, and how): model/motion_columns.h.
+
+/// The labels OpenSim's gait models (Gait2354, Gait2392, Gait10dof18musc) give the right
+/// leg: hip_flexion_r, knee_angle_r (knee_sign -1: OpenSim's knee angle is negative in
+/// flexion), knee_angle_r_moment; pelvis_tilt, pelvis_tx, pelvis_ty when `table` has them.
+MotionColumns openSimRightLegColumns(const MotionTable& table);
+
+/// Default label of the knee moment in an OpenSim inverse-dynamics .sto (right leg).
+inline const char* const kOpenSimKneeMoment = "knee_angle_r_moment";
 
 /// Fewest samples a swing record cut from a motion file may have (as the kinematics CSV).
 constexpr std::size_t kMinSwingSamples = 10;
@@ -74,7 +70,23 @@ constexpr std::size_t kMinSwingSamples = 10;
 /// a cut outside the file's time or fewer than kMinSwingSamples samples, and for a knee
 /// whose range says the unit is wrong (under 3 "deg" with inDegrees=yes: radians; over
 /// 6 "rad" with inDegrees=no: degrees).
-SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns);
+/// Pelvis columns, when labelled, fill pelvisX/Y/Tilt; with pelvis tilt the record's hip
+/// angle is the thigh's angle in space (hip flexion + pelvis tilt). With `inverseDynamics`
+/// (an OpenSim ID .sto), its `columns.kneeMoment` column (default kOpenSimKneeMoment),
+/// times kneeSign, is interpolated onto the record's times into kneeMoment: NaN where the
+/// .sto does not reach; InputError if it covers none of the swing.
+SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns,
+                            const MotionTable* inverseDynamics = nullptr);
+
+/// A knee angle below this is hyperextension no swing reaches: many samples there mean a
+/// flipped sign (OpenSim's knee_angle is negative in flexion), rad.
+constexpr double kHyperextendedKnee = -5 * kDegToRad;
+
+/// Warnings about a record cut from `table` by `columns`, each naming the likely cause and
+/// the motion_columns key that fixes it: more than half of the knee samples below
+/// kHyperextendedKnee (`knee_sign: -1`); a hip angle read without the pelvis tilt the file
+/// has (`pelvis_tilt`).
+std::vector<std::string> checkMotionRecord(const SwingRecord& record, const MotionTable& table, const MotionColumns& columns);
 
 /// True for a path ending in .mot or .sto (any case).
 bool isMotionFile(const std::string& path);

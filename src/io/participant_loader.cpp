@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "core/output_files.h"
+#include "io/motion_columns_yaml.h"
+#include "io/motion_file.h"
 #include "io/swing_record_csv.h"
 #include "io/yaml_archive.h"
 
@@ -111,6 +113,17 @@ void serialize(A& a, HipMomentProfile& h) {
   a.optionalNumber("time_scale", h.timeScale, mustBePositive);
 }
 
+/// The map form of thigh_kinematics: {file: F, <motion_columns keys>}.
+template <class A>
+void serialize(A& a, ThighKinematics& t) {
+  a.path("file", t.path);
+  a.require(isMotionFile(t.path), "file", "an OpenSim .mot/.sto (the map says how to read its columns; a CSV is given by name alone)",
+            [&] { return t.path; });
+  MotionColumns columns = t.columns.value_or(MotionColumns{});
+  serialize(a, columns);
+  t.columns = columns;
+}
+
 template <class A>
 void serialize(A& a, Participant& p) {
   a.text("name", p.name);
@@ -161,7 +174,13 @@ void serialize(A& a, Participant& p) {
     if constexpr (A::kReading)
       a.require(!a.has("hip_moment"), "hip_moment", "no hip moment with drive: thigh_kinematics (the measured thigh drives the swing; the hip moment is an output)",
                 [] { return std::string("a hip_moment map"); });
-    a.path("thigh_kinematics", p.thighKinematics.path);
+    // A file name, or a map {file, motion_columns keys} saying how to read a .mot/.sto.
+    bool isMap = p.thighKinematics.columns.has_value();
+    if constexpr (A::kReading) isMap = a.yaml().isMap("thigh_kinematics");
+    if (isMap)
+      a.flowMap("thigh_kinematics", p.thighKinematics);
+    else
+      a.path("thigh_kinematics", p.thighKinematics.path);
   } else {
     a.map("hip_moment", p.hipMoment);
   }
@@ -171,6 +190,21 @@ void serialize(A& a, Participant& p) {
 
 namespace {
 
+/// The swing record of a .mot/.sto thigh_kinematics: with the map's columns, or a plain
+/// name read with OpenSim's right-leg labels (a missing one names the map form).
+SwingRecord readThighMotion(const ThighKinematics& t, const YamlMap& yaml) {
+  const MotionTable table = readMotionTable(t.path);
+  if (t.columns) return makeSwingRecord(table, *t.columns);
+  try {
+    return makeSwingRecord(table, openSimRightLegColumns(table));
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + "\n" + yaml.where("thigh_kinematics") +
+                     "a plain .mot/.sto name is read with OpenSim's right-leg labels (hip_flexion_r, knee_angle_r, knee_sign -1, "
+                     "pelvis_tilt/tx/ty when present); for other labels or a cut give the map form {file: F, hip: LABEL, "
+                     "knee: LABEL, knee_sign: -1, pelvis_tilt: LABEL, toe_off_s: T0, heel_contact_s: T1}");
+  }
+}
+
 Participant readParticipant(YamlMap& yaml) {
   Participant p;
   p.path = yaml.path();
@@ -178,10 +212,14 @@ Participant readParticipant(YamlMap& yaml) {
   serialize(a, p);
   yaml.finish();
   if (p.drive == SwingDrive::kThighKinematics) {
-    // The swing kinematics CSV (time_s, hip_flexion_deg, knee_flexion_deg): only its hip is used.
-    const SwingRecord record = readSwingRecord(p.thighKinematics.path);
-    p.thighKinematics.time = record.time;
-    p.thighKinematics.hipFlexion = record.hipFlexion;
+    // Only the hip (and the pelvis) of the record is used.
+    ThighKinematics& t = p.thighKinematics;
+    const SwingRecord record = isMotionFile(t.path) ? readThighMotion(t, yaml) : readSwingRecord(t.path);
+    t.time = record.time;
+    t.hipFlexion = record.hipFlexion;
+    t.pelvisX = record.pelvisX;
+    t.pelvisY = record.pelvisY;
+    t.pelvisTilt = record.pelvisTilt;
   }
   return p;
 }

@@ -111,6 +111,23 @@ class YamlReadArchive {
       child.finish();
     }
   }
+  /// A list whose items are each a path (stored in `v[i].*path`, resolved) or a mapping
+  /// read through serialize(); `isPlain` is the writer's choice between the two.
+  template <class T>
+  void pathOrMapList(const char* key, std::vector<T>& v, std::string T::*path, bool (*isPlain)(const T&)) {
+    (void)isPlain;
+    v.clear();
+    for (auto& item : map_.getTextOrMapList(key)) {
+      v.emplace_back();
+      if (!item.map) {
+        v.back().*path = map_.resolvePath(item.text);
+        continue;
+      }
+      YamlReadArchive a(*item.map);
+      serialize(a, v.back());
+      item.map->finish();
+    }
+  }
   /// A check across fields: fails with `file:line: key: what (got GOT)` unless `ok`.
   void require(bool ok, const char* key, const std::string& what, const std::function<std::string()>& got) {
     if (!ok) map_.fail(key, what, got());
@@ -185,6 +202,20 @@ class YamlWriteArchive {
     for (auto& item : v) {
       out_ << YAML::BeginMap;
       serialize(*this, item, std::forward<Context>(context)...);
+      out_ << YAML::EndMap;
+    }
+    out_ << YAML::EndSeq;
+  }
+  template <class T>
+  void pathOrMapList(const char* key, std::vector<T>& v, std::string T::*path, bool (*isPlain)(const T&)) {
+    out_ << YAML::Key << key << YAML::Value << YAML::BeginSeq;
+    for (auto& item : v) {
+      if (isPlain(item)) {
+        out_ << relative(item.*path);
+        continue;
+      }
+      out_ << YAML::Flow << YAML::BeginMap;
+      serialize(*this, item);
       out_ << YAML::EndMap;
     }
     out_ << YAML::EndSeq;

@@ -280,6 +280,24 @@ std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
   return out;
 }
 
+bool YamlMap::isMap(const std::string& key) const { return has(key) && node_[key].IsMap(); }
+
+std::vector<YamlMap::TextOrMap> YamlMap::getTextOrMapList(const std::string& key) {
+  YAML::Node n = require(key);
+  if (!n.IsSequence()) fail(key, "expected a list", describe(n));
+  std::vector<TextOrMap> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::string item = key + "[" + std::to_string(i) + "]";
+    if (n[i].IsScalar())
+      out.push_back({n[i].Scalar(), std::nullopt});
+    else if (n[i].IsMap())
+      out.push_back({"", YamlMap(n[i], path_, prefix_ + item + ".")});
+    else
+      fail(item, "expected a file name or a mapping of keys", describe(n[i]));
+  }
+  return out;
+}
+
 void YamlMap::finish() const {
   for (const auto& kv : node_) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";

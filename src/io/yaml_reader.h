@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,12 @@ class YamlMap {
   YamlMap getMap(const std::string& key);
   /// A list of nested mappings.
   std::vector<YamlMap> getMapList(const std::string& key);
+  /// Whether `key` holds a mapping (false if absent or another kind of value).
+  bool isMap(const std::string& key) const;
+  /// One item of a list whose items are each a text value or a mapping.
+  struct TextOrMap;
+  /// A list whose items are each a text value or a mapping.
+  std::vector<TextOrMap> getTextOrMapList(const std::string& key);
 
   /// Throws if the mapping holds a key that no accessor asked for.
   void finish() const;
@@ -71,6 +78,11 @@ class YamlMap {
   std::string path_;
   std::string prefix_;
   mutable std::vector<std::string> used_;
+};
+
+struct YamlMap::TextOrMap {
+  std::string text;             ///< the item, if it is a text value
+  std::optional<YamlMap> map;   ///< the item, if it is a mapping
 };
 
 /// Common value checks for getDouble.

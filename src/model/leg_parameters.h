@@ -9,6 +9,7 @@
 
 #include "core/units.h"
 #include "model/hip_moment_profile.h"
+#include "model/motion_columns.h"
 
 namespace swingsim {
 
@@ -105,6 +106,9 @@ struct ThighKinematics {
   /// The measured pelvis at the same times: translation in the ground frame, m (x forward,
   /// y up), and tilt about +z, rad. Empty = the hip is fixed in space (Burkett's assumption).
   std::vector<double> pelvisX, pelvisY, pelvisTilt;
+  /// How a .mot/.sto was read, when the file gave it as a map ({file, motion_columns keys,
+  /// toe_off_s, heel_contact_s}); nullopt: a plain file name (OpenSim right-leg labels).
+  std::optional<MotionColumns> columns;
 };
 
 struct Participant {

@@ -5,8 +5,10 @@
 #include "identify/swing_plant.h"
 #include "io/bench_csv.h"
 #include "io/knee_model_loader.h"
+#include "io/motion_columns_yaml.h"
 #include "io/motion_file.h"
 #include "io/participant_loader.h"
+#include "io/swing_record_csv.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
 
@@ -36,41 +38,48 @@ void serialize(A& a, EffectSelectionSettings& st) {
   a.optionalNumber("explained_noise_ratio", st.explainedNoiseRatio, [](double v) { return inRange(v, 1, 10, "must be in [1, 10]"); });
 }
 
-namespace {
+std::string StudyRecord::displayName() const { return name.empty() ? fileStem(path) : name; }
 
-/// An optional number that is written only when set (no default stands for "absent").
-template <class A>
-void optionalSeconds(A& a, const char* key, std::optional<double>& v, const ValueCheck& check) {
-  bool present = v.has_value();
-  if constexpr (A::kReading) present = a.has(key);
-  if (!present) return;
-  double x = v.value_or(0);
-  a.optionalNumber(key, x, check);
-  v = x;
+bool operator==(const StudyRecord& a, const StudyRecord& b) {
+  return a.name == b.name && a.path == b.path && a.toeOffTime == b.toeOffTime && a.heelContactTime == b.heelContactTime &&
+         a.swing == b.swing && a.inverseDynamicsPath == b.inverseDynamicsPath;
 }
 
-std::string mustBeSign(double v) { return v == 1 || v == -1 ? "" : "must be 1 or -1"; }
-std::string mustBeOffset(double deg) { return inRange(deg, -180, 180, "must be in [-180, 180] deg"); }
+namespace {
+
+/// A train/validate entry written as a plain file name (nothing else set).
+bool isPlainRecord(const StudyRecord& r) {
+  return r.name.empty() && !r.toeOffTime && !r.heelContactTime && !r.swing && r.inverseDynamicsPath.empty();
+}
+
+std::string mustBeSwingNumber(double v) { return v >= 1 && v <= 1000 && v == std::floor(v) ? "" : "expected a whole number from 1 (the first swing in the file)"; }
 
 }  // namespace
 
-/// The motion_columns map: which columns of a .mot/.sto file make a swing record.
+/// One train/validate entry in its map form: {name, file, toe_off_s, heel_contact_s | swing, inverse_dynamics}.
 template <class A>
-void serialize(A& a, MotionColumns& c) {
-  a.text("hip", c.hip);
-  a.text("knee", c.knee);
-  a.optionalText("hip_moment", c.hipMoment);
-  a.optionalNumber("hip_sign", c.hipSign, mustBeSign);
-  a.optionalNumber("knee_sign", c.kneeSign, mustBeSign);
-  a.optionalAngle("hip_offset_deg", c.hipOffset, mustBeOffset);
-  a.optionalAngle("knee_offset_deg", c.kneeOffset, mustBeOffset);
-  optionalSeconds(a, "toe_off_s", c.toeOffTime, {});
-  optionalSeconds(a, "heel_contact_s", c.heelContactTime, {});
-  if (c.toeOffTime && c.heelContactTime)
-    a.require(*c.heelContactTime > *c.toeOffTime, "heel_contact_s",
-              "must be after toe_off_s (" + formatNumber(*c.toeOffTime) + " s)", [&] { return formatNumber(*c.heelContactTime); });
-  // 10 us to 100 ms: a bench's 100 kHz at most, and a swing of 0.4 s still gets 5 samples.
-  optionalSeconds(a, "resample_s", c.resampleInterval, [](double v) { return inRange(v, 1e-5, 0.1, "must be in [1e-5, 0.1] s"); });
+void serialize(A& a, StudyRecord& r) {
+  a.optionalText("name", r.name);
+  a.path("file", r.path);
+  if constexpr (A::kReading)
+    a.require(isMotionFile(r.path) || (!a.has("toe_off_s") && !a.has("heel_contact_s") && !a.has("swing") && !a.has("inverse_dynamics")),
+              "file", "toe_off_s, heel_contact_s, swing and inverse_dynamics cut an OpenSim .mot/.sto, not a CSV record",
+              [&] { return r.path; });
+  optionalSeconds(a, "toe_off_s", r.toeOffTime, {});
+  optionalSeconds(a, "heel_contact_s", r.heelContactTime, {});
+  if (r.toeOffTime && r.heelContactTime)
+    a.require(*r.heelContactTime > *r.toeOffTime, "heel_contact_s",
+              "must be after toe_off_s (" + formatNumber(*r.toeOffTime) + " s)", [&] { return formatNumber(*r.heelContactTime); });
+  std::optional<double> swing;
+  if (r.swing) swing = *r.swing;
+  optionalSeconds(a, "swing", swing, mustBeSwingNumber);
+  if (swing) r.swing = static_cast<int>(*swing);
+  a.require(!r.swing || (!r.toeOffTime && !r.heelContactTime), "swing",
+            "either swing (the K-th swing found in the file) or toe_off_s and heel_contact_s, not both",
+            [&] { return std::to_string(r.swing.value_or(0)) + " with times"; });
+  bool hasId = !r.inverseDynamicsPath.empty();
+  if constexpr (A::kReading) hasId = a.has("inverse_dynamics");
+  if (hasId) a.path("inverse_dynamics", r.inverseDynamicsPath);
 }
 
 template <class A>
@@ -80,8 +89,8 @@ void serialize(A& a, DiagnosisStudy& s) {
   a.path("base_model", s.baseModelPath);
   a.optionalText("name", s.name);
   a.optionalText("description", s.description);
-  a.paths("train", s.train);
-  a.paths("validate", s.validate);
+  a.pathOrMapList("train", s.train, &StudyRecord::path, isPlainRecord);
+  a.pathOrMapList("validate", s.validate, &StudyRecord::path, isPlainRecord);
   a.require(!s.train.empty(), "train", "expected at least one CSV", [] { return std::string("an empty list"); });
   a.require(!s.validate.empty(), "validate", "expected at least one CSV (the acceptance rule needs held-out data)",
             [] { return std::string("an empty list"); });
@@ -94,7 +103,8 @@ void serialize(A& a, DiagnosisStudy& s) {
     a.optionalMap("motion_columns", motion, hasMotionColumns);
     if (hasMotionColumns) s.motionColumns = motion;
     for (const auto& [key, list] : {std::pair{"train", &s.train}, std::pair{"validate", &s.validate}})
-      for (const auto& p : *list) {
+      for (const auto& r : *list) {
+        const std::string& p = r.path;
         if (!isMotionFile(p)) continue;
         a.require(hasMotionColumns, key,
                   "an OpenSim motion file needs the study's motion_columns map ({hip: NAME, knee: NAME, hip_moment: NAME}; "
@@ -104,13 +114,16 @@ void serialize(A& a, DiagnosisStudy& s) {
                   [] { return std::string("no hip_moment key"); });
       }
   }
-  std::vector<std::string> stems;
-  for (const auto* list : {&s.train, &s.validate})
-    for (const auto& p : *list) {
-      for (const auto& other : stems)
-        a.require(other != fileStem(p), "validate", "two files share the stem '" + other + "' (results are keyed by stem)",
-                  [&] { return p; });
-      stems.push_back(fileStem(p));
+  std::vector<std::string> names;
+  for (const auto& [key, list] : {std::pair{"train", &s.train}, std::pair{"validate", &s.validate}})
+    for (const auto& r : *list) {
+      a.require(s.plant == PlantKind::kSwing || isPlainRecord(r), key, "a cylinder study's records are file names",
+                [&] { return "a map for " + r.path; });
+      for (const auto& other : names)
+        a.require(other != r.displayName(), key,
+                  "two records share the name '" + other + "' (results are keyed by name; give each entry a unique name:)",
+                  [&] { return r.path; });
+      names.push_back(r.displayName());
     }
   // Candidates: all of the plant's effects unless the study names some.
   bool namesCandidates = !s.settings.candidates.empty();
@@ -158,13 +171,41 @@ DiagnosisStudy loadDiagnosisStudy(const std::string& path) {
   return s;
 }
 
+MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table) {
+  MotionColumns out = columns;
+  if (record.toeOffTime) out.toeOffTime = record.toeOffTime;
+  if (record.heelContactTime) out.heelContactTime = record.heelContactTime;
+  if (record.swing)
+    // The K-th swing comes from the swing events of the file (io/swing_events.h, findSwings),
+    // which this build does not have.
+    throw InputError(table.path + ": swing: " + std::to_string(*record.swing) + ": finding swings in a file needs "
+                     "io/swing_events (not in this build); give toe_off_s and heel_contact_s instead");
+  return out;
+}
+
+SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entry, std::vector<std::string>& notes) {
+  SwingRecord r;
+  if (isMotionFile(entry.path)) {
+    const MotionTable table = readMotionTable(entry.path);
+    const MotionColumns columns = resolveRecordTimes(entry, *study.motionColumns, table);
+    std::optional<MotionTable> id;
+    if (!entry.inverseDynamicsPath.empty()) id = readMotionTable(entry.inverseDynamicsPath);
+    r = makeSwingRecord(table, columns, id ? &*id : nullptr);
+    for (auto& w : checkMotionRecord(r, table, columns)) notes.push_back(entry.displayName() + ": " + w);
+  } else {
+    r = readSwingRecord(entry.path);
+  }
+  r.stem = entry.displayName();
+  return r;
+}
+
 std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows) {
   if (study.plant == PlantKind::kCylinder) {
     const MauchCylinderParams base = loadMauchCylinder(study.baseModelPath);
     const auto minRows = static_cast<std::size_t>(MauchCylinder(base).numCoefficients()) + extraTrainRows;
     std::vector<BenchData> train, validate;
-    for (const auto& p : study.train) train.push_back(readBenchCsv(p, minRows));
-    for (const auto& p : study.validate) validate.push_back(readBenchCsv(p, 3));
+    for (const auto& r : study.train) train.push_back(readBenchCsv(r.path, minRows));
+    for (const auto& r : study.validate) validate.push_back(readBenchCsv(r.path, 3));
     return std::make_unique<CylinderPlant>(base, std::move(train), std::move(validate), study.fitSwitches,
                                            study.plotSeconds);
   }
@@ -173,13 +214,14 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
   base.knee = loadKneeModel(study.baseModelPath);
   base.drive = study.drive;
   std::vector<SwingRecord> train, validate;
-  for (const auto* paths : {&study.train, &study.validate})
-    for (const auto& p : *paths) {
-      SwingRecord r = readSwingRecordFile(p, study.motionColumns);
+  for (const auto* entries : {&study.train, &study.validate})
+    for (const auto& entry : *entries) {
+      const std::string& p = entry.path;
+      SwingRecord r = readStudyRecord(study, entry, base.notes);
       if (study.drive == SwingDrive::kHipMoment && r.hipMoment.empty())
         throw InputError(p + ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
                          "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
-      (paths == &study.train ? train : validate).push_back(std::move(r));
+      (entries == &study.train ? train : validate).push_back(std::move(r));
     }
   return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
 }

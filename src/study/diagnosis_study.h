@@ -10,7 +10,9 @@
 //   swing-diagnosis only: participant (participant YAML); motion_columns (required when a
 //   train/validate file is an OpenSim .mot/.sto: io/motion_file.h, MotionColumns); drive
 //   (hip_moment, the default: each record's hip moment drives it; thigh_kinematics: each
-//   record's hip angle is prescribed: docs/winter.md).
+//   record's hip angle is prescribed: docs/winter.md). A swing study's train/validate item is a
+//   file name, or a map {name, file, toe_off_s, heel_contact_s | swing, inverse_dynamics}
+//   (StudyRecord; docs/measured-data.md) so that several swings of one file are records.
 // loadDiagnosisPlant reads the records and models a study names and builds its plant.
 #include <cstddef>
 #include <memory>
@@ -26,13 +28,27 @@ namespace swingsim {
 
 class YamlMap;
 
+/// One train/validate entry: a file name, or (swing) a map naming one swing of a file.
+struct StudyRecord {
+  std::string name;  ///< unique in the study; default the file's stem
+  std::string path;  ///< resolved record file (CSV, or .mot/.sto for a swing)
+  /// s, file time: this swing's cut, overriding motion_columns' toe_off_s/heel_contact_s.
+  std::optional<double> toeOffTime, heelContactTime;
+  /// The K-th swing (1-based) found in the file, instead of the two times (resolveRecordTimes).
+  std::optional<int> swing;
+  std::string inverseDynamicsPath;  ///< resolved OpenSim ID .sto giving the knee moment ("" = none)
+  /// The entry's name: `name`, or the file's stem.
+  std::string displayName() const;
+};
+bool operator==(const StudyRecord& a, const StudyRecord& b);
+
 struct DiagnosisStudy {
   PlantKind plant = PlantKind::kCylinder;
   std::string path, name, description;
   std::string baseModelPath;          ///< resolved knee model YAML
   std::string participantPath;        ///< resolved participant YAML (swing)
-  std::vector<std::string> train;     ///< resolved record paths (CSV, or .mot/.sto for a swing)
-  std::vector<std::string> validate;  ///< resolved record paths (CSV, or .mot/.sto for a swing)
+  std::vector<StudyRecord> train;     ///< training records
+  std::vector<StudyRecord> validate;  ///< held-out records
   std::optional<MotionColumns> motionColumns;  ///< swing: how .mot/.sto records are read
   EffectSelectionSettings settings;
   bool fitSwitches = false;           ///< cylinder: refit switch widths and xhy before the baseline
@@ -53,6 +69,16 @@ DiagnosisStudy readDiagnosisStudy(YamlMap& yaml);
 DiagnosisStudy loadDiagnosisStudy(const std::string& path);
 /// The YAML text of a study as a file in folder `baseDir` (paths written relative to it).
 std::string formatDiagnosisStudyYaml(const DiagnosisStudy& study, const std::string& baseDir);
+
+/// The motion columns that cut `record` from its file `table`: the study's, with the
+/// entry's toe-off and heel-contact times, or those of its `swing: K`. Throws InputError.
+MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table);
+
+/// One swing record of a swing study: a CSV, or cut from an OpenSim file by the study's
+/// motion_columns and the entry's times, with the knee moment of the entry's
+/// inverse_dynamics; its stem is the entry's name. Appends warnings about the data (each
+/// naming the key that fixes it) to `notes`. Throws InputError.
+SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entry, std::vector<std::string>& notes);
 
 /// Reads the study's base model, participant and records and builds its plant. Each
 /// training record needs at least `extraTrainRows` rows more than the model has linear

@@ -137,4 +137,40 @@ TEST(Cli, LoweringBeyondTheShankExitsOneAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out / "o"));
 }
 
+/// Winter's participant in `dir`, driven by `thigh` (its thigh_kinematics value); paths absolute.
+fs::path writeWinterWith(const fs::path& dir, const std::string& thigh) {
+  std::ifstream in(std::string(SWINGSIM_SOURCE_DIR) + "/participants/winter.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"knee_model: ../models/", "knee_model: " + std::string(SWINGSIM_SOURCE_DIR) + "/models/"},
+           {"thigh_kinematics: ../studies/data/winter-swing/swing1.csv", "thigh_kinematics: " + thigh}}) {
+    const auto at = yaml.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    yaml.replace(at, from.size(), to);
+  }
+  std::ofstream(dir / "walk.yaml") << yaml;
+  return dir / "walk.yaml";
+}
+
+// OpenSim IK output as it comes, named in the participant: the right leg's labels are read.
+TEST(Cli, SimulateRunsOnAnOpenSimMotParticipant) {
+  const fs::path dir = freshDir("simulate-mot");
+  const std::string ik = std::string(SWINGSIM_SOURCE_DIR) + "/tests/data/opensim-gait10dof/subject01_walk_IK.mot";
+  CliRun r = run("simulate " + writeWinterWith(dir, ik).string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("swing time"));
+  EXPECT_TRUE(fs::exists(dir / "out"));
+
+  // A .mot without those labels: exit 1, the map form named, nothing written.
+  std::ofstream(dir / "other.mot") << "other\ninDegrees=yes\nendheader\ntime\thip\tknee\n";
+  for (int k = 0; k < 12; ++k) std::ofstream(dir / "other.mot", std::ios::app) << 0.01 * k << "\t1\t" << 5 * k << "\n";
+  CliRun bad = run("simulate " + writeWinterWith(dir, (dir / "other.mot").string()).string() + " --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.code, 1) << bad.output;
+  EXPECT_THAT(bad.output, HasSubstr("hip_flexion_r: column is missing (available: time, hip, knee)"));
+  EXPECT_THAT(bad.output, HasSubstr("thigh_kinematics: a plain .mot/.sto name is read with OpenSim's right-leg labels"));
+  EXPECT_FALSE(fs::exists(dir / "bad"));
+}
+
 }  // namespace

@@ -17,6 +17,7 @@
 #include <functional>
 
 #include "core/input_error.h"
+#include "core/output_files.h"
 #include "core/units.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -399,6 +400,159 @@ TEST(MotionFileBadInput, SizeAndRowLimits) {
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("directory"));
   }
+}
+
+// ---- Pelvis and inverse dynamics: the shipped OpenSim pipeline output ----------------------
+
+const std::string kGait2354Ik = kRoot + "/studies/data/opensim-subject01/gait2354_subject01_walk1_ik.mot";
+const std::string kGait2354Id = kRoot + "/studies/data/opensim-subject01/gait2354_subject01_walk1_inverse_dynamics.sto";
+const std::string kGait2392Ik = kRoot + "/studies/data/opensim-subject01/gait2392_subject01_walk1_ik.mot";
+const std::string kGait10Ik = kRoot + "/tests/data/opensim-gait10dof/subject01_walk_IK.mot";
+const std::string kGait10Id = kRoot + "/tests/data/opensim-gait10dof/subject01_walk_ID.sto";
+
+/// The value of `label` in `table` on the row at file time `t` (the rows the cut keeps).
+double valueAt(const MotionTable& table, const std::string& label, double t) {
+  const auto& time = table.column("time");
+  for (std::size_t r = 0; r < time.size(); ++r)
+    if (std::abs(time[r] - t) < 1e-9) return table.column(label)[r];
+  ADD_FAILURE() << "no row at " << t;
+  return 0;
+}
+
+// Rows are kept as read: only the degree-to-radian product rounds (a few ulps).
+constexpr double kRowTol = 1e-12;
+
+TEST(MotionFilePelvis, ThighInSpaceIsHipPlusPelvisTiltAndTranslationsStayMetres) {
+  for (const std::string& path : {kGait2354Ik, kGait10Ik}) {
+    const MotionTable table = readMotionTable(path);
+    MotionColumns c = openSimRightLegColumns(table);
+    EXPECT_EQ(c.pelvisTilt, "pelvis_tilt") << path;
+    EXPECT_EQ(c.kneeSign, -1);
+    c.toeOffTime = 0.5;
+    c.heelContactTime = 1.2;
+    const SwingRecord r = makeSwingRecord(table, c);
+    ASSERT_EQ(r.pelvisTilt.size(), r.time.size());
+    ASSERT_EQ(r.pelvisX.size(), r.time.size());
+    ASSERT_EQ(r.pelvisY.size(), r.time.size());
+    for (std::size_t k = 1; k + 1 < r.time.size(); ++k) {  // the rows themselves (the ends are interpolated)
+      const double t = 0.5 + r.time[k];
+      const double tilt = valueAt(table, "pelvis_tilt", t) * kDegToRad;
+      EXPECT_NEAR(r.pelvisTilt[k], tilt, kRowTol);
+      EXPECT_NEAR(r.hipFlexion[k], valueAt(table, "hip_flexion_r", t) * kDegToRad + tilt, kRowTol) << path << " " << t;
+      EXPECT_NEAR(r.kneeFlexion[k], -valueAt(table, "knee_angle_r", t) * kDegToRad, kRowTol);
+      // inDegrees=yes, but pelvis_tx/ty are metres: not converted.
+      EXPECT_EQ(r.pelvisX[k], valueAt(table, "pelvis_tx", t));
+      EXPECT_EQ(r.pelvisY[k], valueAt(table, "pelvis_ty", t));
+    }
+    // Without the pelvis columns the hip is the joint angle alone, and a warning says so.
+    MotionColumns bare = c;
+    bare.pelvisTilt = bare.pelvisTx = bare.pelvisTy = "";
+    const SwingRecord joint = makeSwingRecord(table, bare);
+    EXPECT_TRUE(joint.pelvisTilt.empty());
+    EXPECT_NEAR(joint.hipFlexion[3], r.hipFlexion[3] - r.pelvisTilt[3], kRowTol);
+    const auto warnings = checkMotionRecord(joint, table, bare);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_THAT(warnings[0], HasSubstr("motion_columns: pelvis_tilt: pelvis_tilt"));
+    EXPECT_TRUE(checkMotionRecord(r, table, c).empty());
+  }
+}
+
+TEST(MotionFilePelvis, FlippedKneeSignIsWarnedNamingKneeSign) {
+  const MotionTable table = readMotionTable(kGait10Ik);
+  MotionColumns c = openSimRightLegColumns(table);
+  c.kneeSign = 1;  // forgotten: OpenSim's knee angle is negative in flexion
+  const auto warnings = checkMotionRecord(makeSwingRecord(table, c), table, c);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_THAT(warnings[0], HasSubstr("knee samples of " + kGait10Ik + " are below -5 deg"));
+  EXPECT_THAT(warnings[0], HasSubstr("knee_sign: -1"));
+}
+
+// The ID's times lag the IK's by up to 1.5 us (single precision, accumulated: 2.4999985 s for 2.5 s).
+constexpr double kIdTimeSkew = 2e-6;  // s
+
+/// The largest |slope| of `label` over the rows of `table`, per s.
+double maxSlope(const MotionTable& table, const std::string& label) {
+  const auto& t = table.column("time");
+  const auto& v = table.column(label);
+  double m = 0;
+  for (std::size_t r = 1; r < t.size(); ++r) m = std::max(m, std::abs((v[r] - v[r - 1]) / (t[r] - t[r - 1])));
+  return m;
+}
+
+/// The value of `label` on the row of `table` within kIdTimeSkew of `t`.
+double valueNear(const MotionTable& table, const std::string& label, double t) {
+  const auto& time = table.column("time");
+  for (std::size_t r = 0; r < time.size(); ++r)
+    if (std::abs(time[r] - t) < kIdTimeSkew) return table.column(label)[r];
+  ADD_FAILURE() << "no row near " << t;
+  return 0;
+}
+
+TEST(MotionFileKneeMoment, InverseDynamicsKneeMomentOnTheRecordsTimesWithTheKneesSign) {
+  const MotionTable ik = readMotionTable(kGait10Ik);
+  const MotionTable id = readMotionTable(kGait10Id);
+  MotionColumns c = openSimRightLegColumns(ik);
+  c.toeOffTime = 1.3;
+  c.heelContactTime = 1.75;
+  const SwingRecord r = makeSwingRecord(ik, c, &id);
+  ASSERT_EQ(r.kneeMoment.size(), r.time.size());
+  // Each kept IK row has an ID row within the skew: the moment is that row's, sign flipped,
+  // to within the moment's change over the skew.
+  const double tol = maxSlope(id, "knee_angle_r_moment") * kIdTimeSkew;
+  for (std::size_t k = 1; k + 1 < r.time.size(); ++k)
+    EXPECT_NEAR(r.kneeMoment[k], -valueNear(id, "knee_angle_r_moment", 1.3 + r.time[k]), tol) << k;
+  // Another label, named through motion_columns: knee_moment.
+  c.kneeMoment = "knee_angle_l_moment";
+  const SwingRecord left = makeSwingRecord(ik, c, &id);
+  EXPECT_NEAR(left.kneeMoment[4], -valueNear(id, "knee_angle_l_moment", 1.3 + left.time[4]),
+              maxSlope(id, "knee_angle_l_moment") * kIdTimeSkew);
+}
+
+TEST(MotionFileKneeMoment, PartOfTheSwingOutsideTheStoIsNaN) {
+  // The Gait2392 IK runs 0.5-4 s, the Gait2354 ID 0.4-1.6 s (its last row at 1.59999928 s).
+  const MotionTable ik = readMotionTable(kGait2392Ik);
+  const MotionTable id = readMotionTable(kGait2354Id);
+  MotionColumns c = openSimRightLegColumns(ik);
+  c.toeOffTime = 1.4;
+  c.heelContactTime = 1.8;
+  const SwingRecord r = makeSwingRecord(ik, c, &id);
+  std::size_t covered = 0;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    const bool inside = 1.4 + r.time[k] <= id.column("time").back();
+    EXPECT_EQ(std::isnan(r.kneeMoment[k]), !inside) << r.time[k];
+    covered += inside;
+  }
+  EXPECT_GT(covered, 10u);
+  EXPECT_LT(covered, r.time.size());
+}
+
+TEST(MotionFileKneeMomentBadInput, NoOverlapOrNoLabelNamesFileKeyAndWhatWasFound) {
+  const MotionTable ik = readMotionTable(kGait2392Ik);
+  const MotionTable id = readMotionTable(kGait2354Id);
+  MotionColumns c = openSimRightLegColumns(ik);
+  c.toeOffTime = 2.0;
+  c.heelContactTime = 2.5;
+  try {
+    makeSwingRecord(ik, c, &id);
+    FAIL() << "an ID outside the swing was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(kGait2354Id + ": inverse_dynamics: expected times that overlap the swing, 2 to 2.5 s "
+                                    "(got 0.39999976 to 1.59999928 s)"));
+  }
+  c.toeOffTime = 0.6;
+  c.heelContactTime = 1.2;
+  c.kneeMoment = "knee_moment";
+  try {
+    makeSwingRecord(ik, c, &id);
+    FAIL() << "a missing knee moment label was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(kGait2354Id + ":7: knee_moment: column is missing (available: time, pelvis_tilt_moment"));
+    EXPECT_THAT(e.what(), HasSubstr("motion_columns: knee_moment"));
+  }
+  // A pelvis label the file lacks lists those it has.
+  c.kneeMoment = "";
+  c.pelvisTilt = "pelvis_tlt";
+  EXPECT_THAT(errorOf(readFile(kGait2392Ik), c), HasSubstr("pelvis_tlt: column is missing (available: time, pelvis_tilt,"));
 }
 
 }  // namespace

@@ -8,6 +8,9 @@
 
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/units.h"
+#include "io/motion_file.h"
+#include "../cli/run_swingsim.h"
 
 namespace swingsim {
 namespace {
@@ -170,6 +173,89 @@ TEST(ParticipantLoader, HipOffsetInPelvisNeedsTwoNumbersInMetres) {
               HasSubstr("hip_offset_in_pelvis_m: expected [x, y] in metres, each within 1.5 m (got 1 values)"));
   EXPECT_THAT(errorFor(kGood + "hip_offset_in_pelvis_m: [-72.4, -67.7]\n"),
               HasSubstr("hip_offset_in_pelvis_m: expected [x, y] in metres"));
+}
+
+// ---- thigh_kinematics from OpenSim pipeline output --------------------------------------
+
+const std::string kRoot = SWINGSIM_SOURCE_DIR;
+const std::string kGait10Ik = kRoot + "/tests/data/opensim-gait10dof/subject01_walk_IK.mot";
+
+/// Winter's participant (a thigh-driven swing) with `thigh` as its thigh_kinematics value.
+std::string winterWith(const std::string& thigh) {
+  std::string text = readFile(kRoot + "/participants/winter.yaml");
+  const std::string key = "thigh_kinematics: ../studies/data/winter-swing/swing1.csv";
+  const auto at = text.find(key);
+  EXPECT_NE(at, std::string::npos);
+  return text.replace(at, key.size(), "thigh_kinematics: " + thigh);
+}
+
+std::string thighError(const std::string& thigh) {
+  try {
+    parseParticipant(winterWith(thigh), kRoot + "/participants/w.yaml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// Rows are kept as read: only the degree-to-radian product rounds (a few ulps).
+constexpr double kRowTol = 1e-12;
+
+TEST(ParticipantThighMotion, PlainMotFileReadsOpenSimRightLegWithThePelvis) {
+  const Participant p = parseParticipant(winterWith(kGait10Ik), kRoot + "/participants/w.yaml");
+  const MotionTable table = readMotionTable(kGait10Ik);
+  const ThighKinematics& t = p.thighKinematics;
+  EXPECT_FALSE(t.columns.has_value());
+  ASSERT_EQ(t.time.size(), table.rows());  // the whole file, from its first row
+  ASSERT_EQ(t.pelvisTilt.size(), table.rows());
+  for (std::size_t r = 0; r < table.rows(); r += 25) {
+    EXPECT_NEAR(t.time[r], table.column("time")[r] - table.column("time")[0], kRowTol);
+    EXPECT_NEAR(t.hipFlexion[r], (table.column("hip_flexion_r")[r] + table.column("pelvis_tilt")[r]) * kDegToRad, kRowTol);
+    EXPECT_EQ(t.pelvisX[r], table.column("pelvis_tx")[r]);  // metres, not converted
+    EXPECT_EQ(t.pelvisY[r], table.column("pelvis_ty")[r]);
+  }
+}
+
+TEST(ParticipantThighMotion, MapFormCutsTheFileAndRoundTrips) {
+  const Participant p = parseParticipant(
+      winterWith("{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, toe_off_s: 1.35, "
+                 "heel_contact_s: 1.8}"),
+      kRoot + "/participants/w.yaml");
+  const ThighKinematics& t = p.thighKinematics;
+  ASSERT_TRUE(t.columns.has_value());
+  EXPECT_EQ(t.columns->toeOffTime, 1.35);
+  EXPECT_TRUE(t.pelvisTilt.empty());  // not named in the map
+  EXPECT_DOUBLE_EQ(t.time.back(), 1.8 - 1.35);
+  EXPECT_EQ(t.time.front(), 0);
+
+  const std::string dir = kRoot + "/participants";
+  const std::string text = formatParticipantYaml(p, dir);
+  EXPECT_THAT(text, HasSubstr("thigh_kinematics: {file: ../tests/data/opensim-gait10dof/subject01_walk_IK.mot"));
+  const Participant back = parseParticipant(text, dir + "/roundtrip.yaml");
+  EXPECT_EQ(formatParticipantYaml(back, dir), text);
+  EXPECT_EQ(back.thighKinematics.hipFlexion, t.hipFlexion);
+  EXPECT_EQ(back.thighKinematics.columns->heelContactTime, 1.8);
+}
+
+TEST(ParticipantThighMotion, BadInputNamesTheMapFormAndTheLabelsThere) {
+  // A .mot without OpenSim's right-leg labels, given by name: the message names the map form.
+  std::string rows;
+  for (int k = 0; k < 12; ++k) rows += std::to_string(0.01 * k) + "\t1\t" + std::to_string(5 * k) + "\n";
+  const std::string motion = testing::writeSuiteTempFile("swingsim_participant_test", "other.mot",
+                                                "other\ninDegrees=yes\nendheader\ntime\thip\tknee\n" + rows);
+  const std::string plain = thighError(motion);
+  EXPECT_THAT(plain, HasSubstr("other.mot:4: hip_flexion_r: column is missing (available: time, hip, knee)"));
+  EXPECT_THAT(plain, HasSubstr("w.yaml:35: thigh_kinematics: a plain .mot/.sto name is read with OpenSim's right-leg labels"));
+  EXPECT_THAT(plain, HasSubstr("{file: F, hip: LABEL, knee: LABEL"));
+  // The map form: a label the file lacks lists those it has; times outside the file; a CSV.
+  EXPECT_THAT(thighError("{file: " + kGait10Ik + ", hip: hip_flexion, knee: knee_angle_r}"),
+              HasSubstr("subject01_walk_IK.mot:11: hip_flexion: column is missing (available: time, pelvis_tilt, pelvis_tx,"));
+  EXPECT_THAT(thighError("{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, toe_off_s: 3, heel_contact_s: 3.5}"),
+              HasSubstr("subject01_walk_IK.mot: toe_off_s: expected a time within the file, before its last row; the file's "
+                        "time runs from 0 to 2.5 s (got 3 s)"));
+  EXPECT_THAT(thighError("{file: ../studies/data/winter-swing/swing1.csv, hip: a, knee: b}"),
+              HasSubstr("w.yaml:35: thigh_kinematics.file: an OpenSim .mot/.sto (the map says how to read its columns"));
+  EXPECT_THAT(thighError("{file: " + kGait10Ik + ", knee: knee_angle_r}"), HasSubstr("thigh_kinematics.hip: required key is missing"));
 }
 
 }  // namespace

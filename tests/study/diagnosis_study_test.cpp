@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 
 #include "core/input_error.h"
@@ -138,7 +139,7 @@ TEST(MotionColumnsStudy, StudyListingMotionFilesLoadsAndRoundTrips) {
   EXPECT_EQ(c.resampleInterval, 0.005);
 
   // The records as the diagnosis reads them: flexion positive, offset added, cut, resampled.
-  const SwingRecord r = readSwingRecordFile(study.train.front(), study.motionColumns);
+  const SwingRecord r = readSwingRecordFile(study.train.front().path, study.motionColumns);
   ASSERT_EQ(r.time.size(), 101u);  // 0 to 0.5 s every 5 ms
   // Linear interpolation between rows 10 ms apart errs by at most h^2/8 max|f''|; the knee's
   // 60 deg sine over 0.6 s curves most.
@@ -202,6 +203,132 @@ TEST(MotionColumnsStudy, BadMotionColumnsNameTheKey) {
     EXPECT_THAT(e.what(), HasSubstr("train.sto:7: hip_flexion_l: column is missing (available: time, hip_flexion_r, "
                                     "knee_angle_r, hip_moment)"));
   }
+}
+
+// ---- Record entries: several swings of one OpenSim file, with inverse dynamics -------------
+
+const std::string kGait10Ik = kRoot + "/tests/data/opensim-gait10dof/subject01_walk_IK.mot";
+const std::string kGait10Id = kRoot + "/tests/data/opensim-gait10dof/subject01_walk_ID.sto";
+
+/// A thigh-driven study of Winter's participant over the Gait10dof walk, with `records`
+/// (the train: and validate: lines) and `columns` (the motion_columns line).
+std::string entryStudy(const std::string& records, const std::string& columns =
+                           "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt}\n") {
+  return "kind: swing-diagnosis\nparticipant: " + kRoot + "/participants/winter.yaml\nbase_model: " + kRoot +
+         "/models/passive-knee.yaml\ndrive: thigh_kinematics\n" + columns + records;
+}
+
+const std::string kTwoSwings =
+    "train:\n  - {name: right1, file: " + kGait10Ik + ", toe_off_s: 0.25, heel_contact_s: 0.7, inverse_dynamics: " + kGait10Id +
+    "}\nvalidate:\n  - {name: right2, file: " + kGait10Ik + ", toe_off_s: 1.35, heel_contact_s: 1.8}\n";
+
+/// Whether two entry lists say the same (paths compared as files: the writer may write an
+/// absolute path outside the study's folder as a relative one).
+bool sameEntries(const std::vector<StudyRecord>& a, const std::vector<StudyRecord>& b) {
+  if (a.size() != b.size()) return false;
+  const auto same = [](const std::string& x, const std::string& y) {
+    return x.empty() ? y.empty() : fs::weakly_canonical(x) == fs::weakly_canonical(y);
+  };
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].name != b[i].name || !same(a[i].path, b[i].path) || a[i].toeOffTime != b[i].toeOffTime ||
+        a[i].heelContactTime != b[i].heelContactTime || a[i].swing != b[i].swing ||
+        !same(a[i].inverseDynamicsPath, b[i].inverseDynamicsPath))
+      return false;
+  return true;
+}
+
+TEST(StudyRecordEntries, TwoSwingsOfOneFileAreTwoRecordsAndRoundTrip) {
+  const std::string path = writeMotionStudy("entries", entryStudy(kTwoSwings));
+  const DiagnosisStudy study = loadDiagnosisStudy(path);
+  ASSERT_EQ(study.train.size(), 1u);
+  const StudyRecord& first = study.train.front();
+  EXPECT_EQ(first.name, "right1");
+  EXPECT_EQ(first.toeOffTime, 0.25);
+  EXPECT_EQ(first.inverseDynamicsPath, kGait10Id);
+  EXPECT_EQ(study.validate.front().heelContactTime, 1.8);
+
+  std::vector<std::string> notes;
+  const SwingRecord r = readStudyRecord(study, first, notes);
+  EXPECT_EQ(r.stem, "right1");
+  EXPECT_DOUBLE_EQ(r.time.back(), 0.7 - 0.25);  // the entry's times, not the whole file
+  ASSERT_EQ(r.kneeMoment.size(), r.time.size());
+  // The knee moment, sign flipped, of the ID row nearest the record's second sample (the
+  // ID's times lag the IK's by up to 1.5 us; the moment changes by under 0.01 N m in that).
+  const MotionTable id = readMotionTable(kGait10Id);
+  const auto& idTime = id.column("time");
+  const auto near = std::find_if(idTime.begin(), idTime.end(), [&](double t) { return std::abs(t - (0.25 + r.time[1])) < 2e-6; });
+  ASSERT_NE(near, idTime.end());
+  constexpr double kSkewTol = 0.01;  // N m
+  EXPECT_NEAR(r.kneeMoment[1], -id.column("knee_angle_r_moment")[static_cast<std::size_t>(near - idTime.begin())], kSkewTol);
+  EXPECT_FALSE(std::isnan(r.kneeMoment.front()));
+  EXPECT_TRUE(notes.empty()) << notes.front();
+  const auto plant = loadDiagnosisPlant(study, 0);
+  EXPECT_EQ(plant->validationStems(), std::vector<std::string>{"right2"});
+
+  const std::string dir = fs::path(path).parent_path().string();
+  const std::string text = formatDiagnosisStudyYaml(study, dir);
+  const DiagnosisStudy back = parse(text, path);
+  EXPECT_EQ(formatDiagnosisStudyYaml(back, dir), text);
+  EXPECT_TRUE(sameEntries(back.train, study.train));
+  EXPECT_TRUE(sameEntries(back.validate, study.validate));
+  EXPECT_EQ(back.motionColumns->pelvisTilt, "pelvis_tilt");
+
+  // Plain entries stay plain; `swing: K` is kept for the swing finder; the name defaults to the stem.
+  const DiagnosisStudy mixed = parse(entryStudy("train: [" + kGait10Ik + "]\nvalidate:\n  - {file: " + kGait10Ik +
+                                                ", swing: 2, name: second}\n"),
+                                     path);
+  EXPECT_EQ(mixed.train.front().displayName(), "subject01_walk_IK");
+  EXPECT_EQ(mixed.validate.front().swing, 2);
+  const std::string mixedText = formatDiagnosisStudyYaml(mixed, dir);
+  EXPECT_THAT(mixedText, HasSubstr("train:\n  - "));
+  EXPECT_THAT(mixedText, HasSubstr("subject01_walk_IK.mot\nvalidate:\n  - {name: second, file: "));
+  EXPECT_THAT(mixedText, HasSubstr("swing: 2"));
+  EXPECT_TRUE(sameEntries(parse(mixedText, path).validate, mixed.validate));
+}
+
+TEST(StudyRecordEntries, WarningsNameTheKeyThatFixesThem) {
+  // knee_sign forgotten, pelvis tilt not read: both said, each naming its key.
+  const DiagnosisStudy study = loadDiagnosisStudy(
+      writeMotionStudy("warnings", entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r}\n")));
+  const auto plant = loadDiagnosisPlant(study, 0);
+  std::string all;
+  for (const auto& w : plant->warnings()) all += w + "\n";
+  EXPECT_THAT(all, HasSubstr("right1: "));
+  EXPECT_THAT(all, HasSubstr("motion_columns: knee_sign: -1"));
+  EXPECT_THAT(all, HasSubstr("motion_columns: pelvis_tilt: pelvis_tilt"));
+}
+
+TEST(StudyRecordEntries, BadEntriesNameFileKeyExpectedAndFound) {
+  const std::string entry = "{name: a, file: " + kGait10Ik + ", toe_off_s: 0.25, heel_contact_s: 0.7}";
+  EXPECT_THAT(errorOfStudy("duplicate", entryStudy("train:\n  - " + entry + "\nvalidate:\n  - " + entry + "\n")),
+              HasSubstr("study.yaml:8: validate: two records share the name 'a'"));
+  EXPECT_THAT(errorOfStudy("stems", entryStudy("train: [" + kGait10Ik + "]\nvalidate: [" + kGait10Ik + "]\n")),
+              HasSubstr("two records share the name 'subject01_walk_IK'"));
+  EXPECT_THAT(errorOfStudy("both", entryStudy("train:\n  - {file: " + kGait10Ik + ", swing: 1, toe_off_s: 0.2}\nvalidate: [x.mot]\n")),
+              HasSubstr("study.yaml:7: train[0].swing: either swing (the K-th swing found in the file) or toe_off_s"));
+  EXPECT_THAT(errorOfStudy("swing0", entryStudy("train:\n  - {file: " + kGait10Ik + ", swing: 0}\nvalidate: [x.mot]\n")),
+              HasSubstr("train[0].swing: expected a whole number from 1"));
+  EXPECT_THAT(errorOfStudy("csv", entryStudy("train:\n  - {file: a.csv, toe_off_s: 0.2}\nvalidate: [x.mot]\n")),
+              HasSubstr("train[0].file: toe_off_s, heel_contact_s, swing and inverse_dynamics cut an OpenSim .mot/.sto"));
+  EXPECT_THAT(errorOfStudy("unknown", entryStudy("train:\n  - {file: " + kGait10Ik + ", tow_off_s: 0.2}\nvalidate: [x.mot]\n")),
+              HasSubstr("train[0].tow_off_s: unknown key"));
+
+  // At reading the records: times outside the file; an ID without the knee moment's label.
+  const auto loadError = [](const std::string& name, const std::string& text) {
+    try {
+      loadDiagnosisPlant(loadDiagnosisStudy(writeMotionStudy(name, text)), 0);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_THAT(loadError("outside", entryStudy("train:\n  - {file: " + kGait10Ik + ", toe_off_s: 2.2, heel_contact_s: 2.9}\n"
+                                              "validate:\n  - " + entry + "\n")),
+              HasSubstr("subject01_walk_IK.mot: heel_contact_s: expected a time after toe-off (2.2 s) and within the file; the "
+                        "file's time runs from 0 to 2.5 s (got 2.9 s)"));
+  EXPECT_THAT(loadError("nolabel", entryStudy("train:\n  - {file: " + kGait10Ik + ", toe_off_s: 0.2, heel_contact_s: 0.7, "
+                                              "inverse_dynamics: " + kGait10Ik + "}\nvalidate:\n  - " + entry + "\n")),
+              HasSubstr("subject01_walk_IK.mot:11: knee_angle_r_moment: column is missing (available: time, pelvis_tilt"));
 }
 
 }  // namespace
