@@ -40,11 +40,10 @@ struct Comparison {
   std::size_t samples = 0;
 };
 
-Comparison compare(const Participant& p, const KneeLaw& law, double lowering, const LegGeometry* referenceGeometry = nullptr) {
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &law;
-  setup.lowering = lowering;
+Comparison compare(const Participant& p, std::shared_ptr<const KneeLaw> shared, double lowering,
+                   const LegGeometry* referenceGeometry = nullptr) {
+  const SwingSetup setup = makeSwingSetup(p, shared, lowering);
+  const KneeLaw& law = *shared;
   // Simbody's own integrator: the reference runs on our Dormand-Prince, so the two share
   // neither equations nor integration code.
   SwingOptions options = makeSimbodyIntegratorOptions(kSimbodyAccuracy);
@@ -76,7 +75,7 @@ class ReferenceVsSimbody : public ::testing::TestWithParam<std::tuple<const char
 TEST_P(ReferenceVsSimbody, TrajectoryAndSwingTimeAgree) {
   const auto [stem, lowering] = GetParam();
   const Participant p = load(stem);
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
   const Comparison c = compare(p, law, lowering);
   ASSERT_GT(c.samples, 100u) << "the swing should be sampled every 2 ms for a few hundred ms";
   EXPECT_LT(c.maxHipDiff, kAngleTol);
@@ -99,7 +98,7 @@ TEST(ReferenceSwing, DisagreesWhenTheLegDiffers) {
   // The comparison can fail: 1 % more shank mass in the reference moves the knee by far
   // more than the tolerance.
   const Participant p = load("p1");
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
   LegGeometry heavier = calcLegGeometry(p, 0.0);
   heavier.shankMass *= 1.01;
   const Comparison c = compare(p, law, 0.0, &heavier);
@@ -129,7 +128,7 @@ TEST(ReferenceSwing, IntegratesKneeLawStatesLikeSimbody) {
   const Participant p = load("p2");
   KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
   law.add(std::make_unique<LaggedDamper>());
-  const Comparison c = compare(p, law, 0.05);
+  const Comparison c = compare(p, std::make_shared<const KneeLawSum>(std::move(law)), 0.05);
   EXPECT_LT(c.maxHipDiff, kAngleTol);
   EXPECT_LT(c.maxKneeDiff, kAngleTol);
   EXPECT_NEAR(c.referenceSwingTime, c.simbodySwingTime, kSwingTimeTol);
@@ -177,8 +176,8 @@ TEST(ReferenceSwing, SwingEndTimeOutThrows) {
   p.hipMoment.flexionAmplitude = 0;
   p.hipMoment.extensionAmplitude = 0;
   p.swingEnd.timeLimit = 0.3;
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  const ReferenceSwing reference(calcLegGeometry(p, 0.0), law, p.hipMoment, p.hipRange);
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  const ReferenceSwing reference(calcLegGeometry(p, 0.0), *law, p.hipMoment, p.hipRange);
   EXPECT_THROW(reference.calcSwingTime(p.initial, p.swingEnd, 1e-8), RunError);
 }
 
