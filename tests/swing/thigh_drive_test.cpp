@@ -107,7 +107,7 @@ TEST(ThighDrive, SimbodyMatchesTheReferenceOnWintersMeasuredThigh) {
   const SwingResult sim = simulateSwing(setup, options);
 
   const ThighMotion thigh(p.thighKinematics);
-  const ReferenceSwing reference(calcLegGeometry(p, 0.0), law, thigh);
+  const ReferenceSwing reference(calcLegGeometry(p, 0.0), *law, thigh);
   const ReferenceTrajectory ref = reference.integrate(p.initial, sim.trajectory.time, kReferenceTol, kReferenceTol);
   ASSERT_GT(ref.size(), 150u);
   double hipDiff = 0, kneeDiff = 0, momentDiff = 0, momentRange = 0;
