@@ -2,6 +2,7 @@
 // Inputs shared by the benchmarks and the convergence study: the bundled participants,
 // their knee laws and the Burkett sweep, loaded from the source tree (so the bench runs
 // from any directory).
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,22 +24,16 @@ inline std::string sourcePath(const std::string& relative) { return std::string(
 struct LoadedParticipant {
   Participant participant;
   KneeModel model;
-  KneeLawSum knee;
+  std::shared_ptr<const KneeLawSum> knee;
 
   explicit LoadedParticipant(const std::string& yaml, const KneeFrictionParams* friction = nullptr)
       : participant(loadParticipant(sourcePath(yaml))),
         model(loadKneeModel(participant.kneeModelPath)),
-        knee(makeKneeLaw(participant, model, friction)) {}
+        knee(std::make_shared<const KneeLawSum>(makeKneeLaw(participant, model, friction))) {}
   LoadedParticipant(const LoadedParticipant&) = delete;
   LoadedParticipant& operator=(const LoadedParticipant&) = delete;
 
-  SwingSetup setup(double lowering = 0) const {
-    SwingSetup s;
-    s.participant = participant;
-    s.knee = &knee;
-    s.lowering = lowering;
-    return s;
-  }
+  SwingSetup setup(double lowering = 0) const { return makeSwingSetup(participant, knee, lowering); }
 };
 
 inline const std::vector<std::string>& participantFiles() {

@@ -218,9 +218,9 @@ int runConvergenceStudy(int argc, char** argv) {
       double maxIntegrationError = 0, realizations = 0;
       bool bounce = false;
       for (std::size_t i = 0; i < participants.size(); ++i) {
-        const KneeLawSum knee = makeVariantKnee(*participants[i], isFriction ? 0 : v, isFriction ? v : 0);
-        SwingSetup setup = participants[i]->setup(0.0);
-        setup.knee = &knee;
+        const SwingSetup setup = makeSwingSetup(
+            participants[i]->participant,
+            std::make_shared<const KneeLawSum>(makeVariantKnee(*participants[i], isFriction ? 0 : v, isFriction ? v : 0)));
         const Run reference = runOnce(setup, referenceOptions());
         SwingOptions o = defaults;
         o.recordTrajectory = false;

@@ -78,7 +78,7 @@ BENCHMARK(BM_SwingSimbody)->ArgName("variant")->Arg(0)->Arg(1)->Arg(2)->Arg(3)->
 // Simbody's realization and how much is the rest.
 void BM_RealizeLeg(benchmark::State& state) {
   const LoadedParticipant& p = p1();
-  const LegModel leg(calcLegGeometry(p.participant, 0.0), p.knee, p.participant.hipMoment, p.participant.hipRange,
+  const LegModel leg(calcLegGeometry(p.participant, 0.0), *p.knee, p.participant.hipMoment, p.participant.hipRange,
                      calcHipHeight(p.participant), /*trackWork=*/false);
   const SimTK::State initial = leg.makeInitialState(p.participant.initial);
   SimTK::State work = initial;
@@ -106,7 +106,7 @@ void BM_SwingReference(benchmark::State& state) {
   const LegGeometry geometry = calcLegGeometry(p.participant, 0.0);
   ReferenceSwingEnd end;
   for (auto _ : state) {
-    const ReferenceSwing reference(geometry, p.knee, p.participant.hipMoment, p.participant.hipRange);
+    const ReferenceSwing reference(geometry, *p.knee, p.participant.hipMoment, p.participant.hipRange);
     end = reference.calcSwingEnd(p.participant.initial, p.participant.swingEnd, tolerance, tolerance);
     keep(end.swingTime);
   }

@@ -38,9 +38,8 @@ int runCalibrate(const CalibrateArguments& a) {
   // each rewritten file loads back before replacing any.
   std::vector<ParticipantEdit> edits;
   for (const std::string& path : a.participants) {
-    SwingSetup setup;
-    setup.participant = loadParticipant(path);
-    const Participant& p = setup.participant;
+    const Participant loaded = loadParticipant(path);
+    const Participant& p = loaded;
     double target = 0;
     if (a.target) {
       target = *a.target;
@@ -50,8 +49,7 @@ int runCalibrate(const CalibrateArguments& a) {
       throw InputError(path + ": name: '" + p.name + "' is not a Burkett 2004 participant; give --target SECONDS");
     }
     const KneeModel model = loadKneeModel(p.kneeModelPath);
-    const KneeLawSum knee = makeKneeLaw(p, model);
-    setup.knee = &knee;
+    const SwingSetup setup = makeSwingSetup(loaded, model);
     std::fprintf(stderr, "calibrating %s to a standard-location swing time of %.4f s...\n", p.name.c_str(), target);
     const CalibrationResult r = calibrateHipTimeScale(setup, target);
     std::printf("%s: hip moment time scale %.6f gives swing time %.5f s (target %.4f s)\n", p.name.c_str(), r.timeScale,

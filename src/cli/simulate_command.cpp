@@ -1,6 +1,7 @@
 // swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M]
 //   [--hip-rate-deg-s DEG/S] [--knee-rate-deg-s DEG/S] [--integrator METHOD] [--accuracy A]
 //   [--json FILE] [--out DIR]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "core/output_files.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "io/swing_record_csv.h"
 #include "io/trajectory_writer.h"
 #include "report/swing_json.h"
 #include "report/swing_plot.h"
@@ -33,6 +35,38 @@ struct SimulateArguments {
   std::optional<std::string> json, out;
 };
 
+// The measured knee at time t (s), rad, if the drive file is a swing kinematics CSV that
+// has one (time_s, hip_flexion_deg, knee_flexion_deg); linear between samples.
+std::optional<double> findMeasuredKnee(const ThighKinematics& drive, double t) {
+  const std::string& path = drive.path;
+  if (path.size() < 4 || path.compare(path.size() - 4, 4, ".csv") != 0) return std::nullopt;
+  SwingRecord record;
+  try {
+    record = readSwingRecord(path);
+  } catch (const InputError&) {
+    return std::nullopt;  // the drive loaded; a file without a usable knee has nothing to compare
+  }
+  const std::vector<double>& time = record.time;
+  if (time.empty() || t < time.front() || t > time.back()) return std::nullopt;
+  const auto upper = std::lower_bound(time.begin(), time.end(), t);
+  const std::size_t k = static_cast<std::size_t>(upper - time.begin());
+  if (k == 0) return record.kneeFlexion.front();
+  const double s = (t - time[k - 1]) / (time[k] - time[k - 1]);
+  return record.kneeFlexion[k - 1] + s * (record.kneeFlexion[k] - record.kneeFlexion[k - 1]);
+}
+
+// A measured trial that ended before the swing did: the unmet condition and the numbers,
+// the measured knee beside the model's where the drive file has one.
+void printTrialEnd(const TrialEnd& e, const Participant& p) {
+  std::printf("  swing time          not reached (%s)\n", e.unmet.c_str());
+  std::printf("  trial end           %s\n", e.describe().c_str());
+  std::printf("  at the trial's end  model knee %.1f deg", e.kneeFlexion * kRadToDeg);
+  if (const auto measured = findMeasuredKnee(p.thighKinematics, e.time))
+    std::printf(", measured knee %.1f deg", *measured * kRadToDeg);
+  std::printf("; thigh %.1f deg (peak %.1f deg, target %.1f deg)\n", e.thighFlexion * kRadToDeg,
+              e.thighPeak * kRadToDeg, e.thighTarget * kRadToDeg);
+}
+
 int runSimulate(const SimulateArguments& a) {
   SwingOptions options;
   if (a.integrator) {
@@ -40,22 +74,21 @@ int runSimulate(const SimulateArguments& a) {
     options.accuracy = calcConvergedAccuracy(options.integrator);  // its converged setting unless --accuracy says otherwise
   }
   if (a.accuracy) options.accuracy = *a.accuracy;
-  SwingSetup setup;
-  setup.participant = loadParticipant(a.participant);
-  Participant& p = setup.participant;
-  setup.lowering = a.lowering;
-  if (a.added) setup.added = *a.added;
-  if (a.hipRateDegS) p.initial.hipFlexionRate = *a.hipRateDegS * kDegToRad;
-  if (a.kneeRateDegS) p.initial.kneeFlexionRate = *a.kneeRateDegS * kDegToRad;
-  const KneeModel model = loadKneeModel(a.knee.value_or(p.kneeModelPath));
-  const KneeLawSum knee = makeKneeLaw(p, model);
-  setup.knee = &knee;
+  Participant loaded = loadParticipant(a.participant);
+  if (a.hipRateDegS) loaded.initial.hipFlexionRate = *a.hipRateDegS * kDegToRad;
+  if (a.kneeRateDegS) loaded.initial.kneeFlexionRate = *a.kneeRateDegS * kDegToRad;
+  const KneeModel model = loadKneeModel(a.knee.value_or(loaded.kneeModelPath));
+  const SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
+  const Participant& p = setup.participant;
   options.trackImpactEnergy = true;  // one swing: the bookkeeping is cheap here
   const SwingResult r = simulateSwing(setup, options);
 
   std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
   std::printf("  drive               %s\n", describeDrive(p).c_str());
-  std::printf("  swing time          %.4f s\n", r.swingTime);
+  if (r.trialEnd)
+    printTrialEnd(*r.trialEnd, p);
+  else
+    std::printf("  swing time          %.4f s\n", r.swingTime);
   std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion * kRadToDeg, r.peakKneeFlexionTime);
   if (r.bounce)
     std::printf("  bounce              yes: the knee left the zone of stability %d time%s, up to %.1f deg\n", r.bounces,

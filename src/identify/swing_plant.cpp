@@ -589,13 +589,12 @@ std::vector<std::string> SwingPlant::validationStems() const {
 std::string SwingPlant::verify(const PlantModel& model) const {
   const SwingModelParams& params = swingParams(model);
   const Participant participant = applyParticipantEffects(base_.participant, params.effects);
-  const KneeLawSum law = makeSwingKneeLaw(base_, params);
+  const auto law = std::make_shared<const KneeLawSum>(makeSwingKneeLaw(base_, params));
   double worst = 0;
   for (std::size_t index = 0; index < train_.size() + validate_.size(); ++index) {
     const SwingRecord& r = record(index);
     const PoseFit pose = fitPose(params, index);
-    SwingSetup setup;
-    setup.participant = participant;
+    SwingSetup setup = makeSwingSetup(participant, law);
     setup.participant.initial.kneeFlexion = pose.knee;
     if (base_.drive == SwingDrive::kThighKinematics) {
       setup.participant.drive = SwingDrive::kThighKinematics;
@@ -610,7 +609,6 @@ std::string SwingPlant::verify(const PlantModel& model) const {
         for (double& m : setup.participant.hipMoment.moments) m *= params.effects.hipMomentScale;
       setup.participant.initial.hipFlexion = pose.first;
     }
-    setup.knee = &law;
     // Along the record: the swing need not end inside it (a trial cut at heel contact).
     SwingOptions options = makeSimbodyIntegratorOptions();
     options.requireSwingEnd = false;

@@ -1,6 +1,7 @@
 #include "identify/synthetic_swing.h"
 
 #include "identify/bench_data.h"
+#include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -15,10 +16,8 @@ SwingRecord makeSyntheticSwing(const SwingBase& base, const SwingModelParams& tr
   for (double& m : h.moments) m *= condition.amplitudeScale;
   SwingBase conditionBase = base;
   conditionBase.participant = measured;
-  const KneeLawSum law = makeSwingKneeLaw(conditionBase, truth);
-  SwingSetup setup;
-  setup.participant = applyParticipantEffects(measured, truth.effects);
-  setup.knee = &law;
+  const SwingSetup setup = makeSwingSetup(applyParticipantEffects(measured, truth.effects),
+                                         std::make_shared<const KneeLawSum>(makeSwingKneeLaw(conditionBase, truth)));
   // Simbody's own integrator: the diagnosis refits on the reference swing's Dormand-Prince,
   // so the truth shares neither equations nor integration code with it.
   SwingOptions options = makeSimbodyIntegratorOptions();

@@ -20,7 +20,7 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
   for (const auto& e : r.events) events.push_back({{"name", e.name}, {"time_s", e.time}});
   Json impacts = Json::array();
   for (const auto& im : r.impacts) impacts.push_back(makeStopImpactJson(im));
-  return {{"participant", participant},
+  Json json = {{"participant", participant},
           {"lowering_m", lowering},
           {"swing_time_s", r.swingTime},
           {"peak_knee_flexion_deg", r.peakKneeFlexion * kRadToDeg},
@@ -31,6 +31,18 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
           {"stop_impacts", impacts},
           {"min_toe_clearance_m", r.minToeClearance},
           {"events", events}};
+  if (const auto& e = r.trialEnd) {
+    json["trial_end"] = {{"unmet", e->unmet},
+                         {"time_s", e->time},
+                         {"knee_flexion_deg", e->kneeFlexion * kRadToDeg},
+                         {"thigh_flexion_deg", e->thighFlexion * kRadToDeg},
+                         {"thigh_peak_deg", e->thighPeak * kRadToDeg},
+                         {"thigh_target_deg", e->thighTarget * kRadToDeg},
+                         {"zone_of_stability_deg", e->zoneOfStability * kRadToDeg},
+                         {"settle_dwell_done_s", e->dwellDone},
+                         {"description", e->describe()}};
+  }
+  return json;
 }
 
 }  // namespace swingsim

@@ -19,11 +19,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // if no swing ends there.
 double swingTimeWith(const SweepStudy& study, Participant p, double scale, double lowering) {
   p.hipMoment.timeScale = scale;
-  const KneeLawSum knee = makeKneeLaw(p, findStudyKneeModel(study, p));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
-  setup.lowering = lowering;
+  const SwingSetup setup = makeSwingSetup(p, findStudyKneeModel(study, p), lowering);
   SwingOptions options = study.swing;
   options.recordTrajectory = false;
   try {
@@ -50,10 +46,7 @@ std::vector<ParticipantCalibration> calibrateSweepParticipants(SweepStudy& study
       continue;
     }
     c.targetTime = table3Target(*pub, study.calibrateTo);
-    const KneeLawSum knee = makeKneeLaw(p, findStudyKneeModel(study, p));
-    SwingSetup setup;
-    setup.participant = p;
-    setup.knee = &knee;
+    const SwingSetup setup = makeSwingSetup(p, findStudyKneeModel(study, p));
     try {
       const CalibrationResult r = calibrateHipTimeScale(setup, c.targetTime, study.swing);
       c.timeScale = r.timeScale;

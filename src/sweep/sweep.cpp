@@ -90,11 +90,11 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
                       const volatile bool* stopFlag) {
   SweepResults results;
   results.study = study.name;
-  std::vector<KneeLawSum> knees;
+  std::vector<std::shared_ptr<const KneeLawSum>> knees;
   std::vector<Job> work;
   for (std::size_t i = 0; i < study.participants.size(); ++i) {
     const Participant& p = study.participants[i];
-    knees.push_back(makeKneeLaw(p, findStudyKneeModel(study, p)));
+    knees.push_back(std::make_shared<const KneeLawSum>(makeKneeLaw(p, findStudyKneeModel(study, p))));
 
     ParticipantSweep ps;
     ps.name = p.name;
@@ -133,11 +133,7 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
     const Participant& p = study.participants[job.participant];
     ParticipantSweep& ps = results.participants[job.participant];
     SweepPoint& pt = job.withMass ? ps.massPoints[job.index] : ps.points[job.index];
-    SwingSetup setup;
-    setup.participant = p;
-    setup.knee = &knees[job.participant];
-    setup.lowering = pt.lowering;
-    setup.added = pt.added;
+    const SwingSetup setup = makeSwingSetup(p, knees[job.participant], pt.lowering, pt.added);
     SwingOptions options = study.swing;
     options.recordTrajectory = !job.withMass;
     try {

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/input_error.h"
+#include "swing/knee_setup.h"
 
 namespace swingsim {
 
@@ -128,11 +129,7 @@ const UncertaintyRun& UncertaintyPlan::findRun(std::size_t swing) const {
 }
 
 SwingSetup PlannedSwing::makeSetup() const {
-  SwingSetup setup;
-  setup.participant = participant;
-  setup.knee = &knee;
-  setup.lowering = lowering;
-  return setup;
+  return makeSwingSetup(participant, knee, lowering);
 }
 
 PlannedSwing UncertaintyPlan::makeSwing(std::size_t swing) const {
@@ -140,7 +137,7 @@ PlannedSwing UncertaintyPlan::makeSwing(std::size_t swing) const {
   planned.run = &findRun(swing);
   planned.lowering = planned.run->lowerings[swing - planned.run->firstSwing];
   planned.variant = makeVariant(*planned.run);
-  planned.knee = makeSweepVariantKnee(planned.variant);
+  planned.knee = std::make_shared<const KneeLawSum>(makeSweepVariantKnee(planned.variant));
   planned.participant = calcAdaptedParticipant(planned.variant.participant, planned.lowering,
                                                planned.variant.hipEffortExponent);
   return planned;

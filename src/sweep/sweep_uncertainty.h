@@ -13,6 +13,7 @@
 // are identical whatever the number of threads.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -112,9 +113,9 @@ struct PlannedSwing {
   const UncertaintyRun* run = nullptr;
   double lowering = 0;  ///< m
   SweepVariant variant;
-  KneeLawSum knee;
+  std::shared_ptr<const KneeLawSum> knee;
   Participant participant;
-  /// The swing's setup; it points at `knee`, so it is valid while this object lives unmoved.
+  /// The swing's setup; it shares `knee`.
   SwingSetup makeSetup() const;
 };
 

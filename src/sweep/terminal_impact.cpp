@@ -78,14 +78,11 @@ void checkTerminalImpact(const SweepStudy& study, SweepResults& results, int job
 
     // The bookkeeping at the standard location and the largest lowering.
     const KneeModel& model = findStudyKneeModel(study, p);
-    const KneeLawSum knee = makeKneeLaw(p, model);
+    const auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(p, model));
     for (double lowering : {0.0, ps.loweringCap}) {
       TrackedImpactSwing tracked;
       tracked.lowering = lowering;
-      SwingSetup setup;
-      setup.participant = p;
-      setup.knee = &knee;
-      setup.lowering = lowering;
+      const SwingSetup setup = makeSwingSetup(p, knee, lowering);
       SwingOptions options = study.swing;
       options.recordTrajectory = false;
       options.trackImpactEnergy = true;

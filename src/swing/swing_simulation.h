@@ -1,6 +1,7 @@
 #pragma once
 // One swing: build the leg for a participant and lowering, integrate from toe-off with
 // Simbody, find the swing end by event handlers, and return times, events and trajectory.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,81 +37,22 @@ std::optional<SwingIntegrator> findIntegrator(const std::string& key);
 /// what was expected.
 std::string checkAccuracy(double accuracy);
 
-/// Integrator settings. The defaults are the converged settings of the README's
-/// convergence study (swing time converged to 0.1 ms).
+/// Integrator settings, one line each; what each one does and why is in docs/swing-options.md.
+/// The defaults are the converged settings of the README's convergence study.
 struct SwingOptions {
-  /// Relative accuracy: Simbody's integrator accuracy, or Dormand-Prince's relative and
-  /// absolute tolerance (the same number). Converged values differ by integrator (README).
-  double accuracy = 1e-5;
-  SwingIntegrator integrator = SwingIntegrator::kDormandPrince;
-  double sampleInterval = 0.002;    ///< s between trajectory samples (Hermite-interpolated between steps: free)
-  bool recordTrajectory = true;
-  /// How the swing events (thigh at target, knee peak, knee enters/leaves the zone) are
-  /// located. false (the fast path): sign changes of the event witnesses between two
-  /// integrator steps, each crossing found on the cubic Hermite interpolant of the bracketing
-  /// step ends (angle and rate, or rate and acceleration), which costs no realization.
-  /// true (the plain path): Simbody TriggeredEventHandlers, each crossing localized by the
-  /// integrator to eventWindow (extra realizations and State copies) and the step restarted
-  /// there; needs one of Simbody's integrators (simulateSwing throws std::invalid_argument
-  /// with kDormandPrince). Both give the same swing times to the converged tolerance (tests/swing/fast_path_test.cpp).
-  bool simbodyEvents = false;
-  double eventWindow = 1e-5;        ///< s, localization window of the plain path
-  /// Fast path (Dormand-Prince) only: once the knee has entered the zone, the settle dwell
-  /// that confirms the end (SwingEndRule::settleDwell; the knee meets its stop there, about
-  /// two thirds of a swing's realizations at full accuracy) is integrated at accuracy x this
-  /// factor, no looser than 1e-3, with Bogacki-Shampine 3(2) (numerics/bogacki_shampine.h:
-  /// half the realizations per step where the stop, not the order, sets the step). The swing time, peak and clearance are found before it. If
-  /// the knee rises to within 0.5 deg of the zone's edge during the loose dwell (a bounce
-  /// may decide the end), the swing goes back to the entry and integrates the dwell at full
-  /// accuracy (SwingResult::looseDwellRetries). Off with trackImpactEnergy (the impact
-  /// bookkeeping wants full accuracy). 1 = no loose dwell.
-  double dwellAccuracyFactor = 100;
-  /// false: a swing that reaches its time limit (or the end of a measured thigh drive)
-  /// before the end rule is met returns what it has, with swingTime NaN, instead of throwing
-  /// RunError (a model run along a measured trial cut at heel contact).
-  bool requireSwingEnd = true;
-  /// Fast path (Dormand-Prince) only: end the settle dwell as soon as the knee cannot leave
-  /// the zone before the dwell would end, instead of integrating the whole dwell. Decided at
-  /// a step end where the knee rises or rests (rate >= 0; on its hyperextension stop coming
-  /// out of it, or above it) and, treated as one degree of freedom with the thigh free
-  /// (swing/knee_climb.h), cannot climb to within the loose dwell's 0.5 deg of the zone's
-  /// edge: its energy (its rate and what the stop can give back) is used up first by half
-  /// of what holds it back: the acceleration that presses it down under the hip moment still
-  /// to come (HipMomentProfile::calcRangeFrom, the end of it that holds the knee least,
-  /// through the present M^-1) and the knee law's other parts on the way up (the friction
-  /// near extension, the damping table; see simulateSwing's isSettled). Swing
-  /// time, events, bounces and bounce height are those of the full dwell (tests/swing/
-  /// settle_dwell_test.cpp, every lowering of the four Burkett participants, bouncy knees
-  /// included); the trajectory and the stop contacts end where the end was decided (a
-  /// contact still open there is closed as at the end of a dwell). Off with
-  /// trackImpactEnergy (the impact bookkeeping wants the whole dwell) and with the
-  /// measured thigh drive (the prescribed thigh's future is not bounded like a hip moment's).
-  bool earlySettleEnd = true;
-  /// Fast path (Dormand-Prince) only: stop a swing as soon as its thigh provably cannot reach
-  /// the target flexion any more, instead of integrating to the time limit (a Monte Carlo
-  /// sample with a weak hip moment spends most of its time there). Decided at a step end past
-  /// the hip moment's last breakpoint (the moment constant from there on, M), with the thigh
-  /// below its target and inside its range, when the leg's energy E = kinetic + gravity
-  /// potential + what the knee law stores (KneeLaw::calcStoredEnergy) - M hip falls more
-  /// than 0.01 J (kUnreachableEnergyMargin) below the least energy the thigh at its target needs
-  /// (LegModel::calcLeastPotentialEnergy - M target). Only with a passive knee law
-  /// (KneeLaw::isPassive): then E never rises, so the thigh never gets there; the hip's
-  /// range stop is passive in the same way (JointStop). The outcome is the time limit's:
-  /// RunError naming the cause, or with requireSwingEnd false a NaN swing time. Off with the
-  /// measured thigh drive.
-  bool earlyThighFailure = true;
-  /// Energy bookkeeping of each stop impact (StopImpact::work): integrates the work of every
-  /// knee law part and of the hip as extra states (a little slower; off in sweeps).
-  bool trackImpactEnergy = false;
-  /// Budgets of one swing, far above what any study needs (a swing of the bundled
-  /// participants takes a few hundred realizations, 15000 at accuracy 1e-12, and
-  /// milliseconds; the budget is 1 to 2 s of computing): a knee law far too
-  /// stiff for an explicit integrator at this accuracy (a damping table in N m s/rad
-  /// written 1e6 too large, an accuracy of 1e-18) would otherwise run for hours. Past
-  /// either, simulateSwing throws RunError naming the participant, the lowering and what
-  /// to change.
-  long maxRealizations = 150000;
-  double maxWallSeconds = 60;  ///< s of wall-clock time for one swing
+  double accuracy = 1e-5;           ///< relative (and absolute) accuracy of the integrator
+  SwingIntegrator integrator = SwingIntegrator::kDormandPrince;  ///< which integrator steps the leg
+  double sampleInterval = 0.002;    ///< s between trajectory samples (Hermite-interpolated between steps)
+  bool recordTrajectory = true;     ///< keep the sampled trajectory in SwingResult
+  bool simbodyEvents = false;       ///< locate events with Simbody's event handlers (plain path; not with Dormand-Prince)
+  double eventWindow = 1e-5;        ///< s, event localization window of the plain path
+  double dwellAccuracyFactor = 100; ///< accuracy multiplier of the loose settle dwell (1: none; fast path)
+  bool requireSwingEnd = true;      ///< false: a swing that does not end returns with swingTime NaN instead of RunError
+  bool earlySettleEnd = true;       ///< end the settle dwell once the knee provably stays in the zone (fast path)
+  bool earlyThighFailure = true;    ///< stop once the thigh provably cannot reach its target (fast path, passive knee)
+  bool trackImpactEnergy = false;   ///< energy bookkeeping of each stop impact (extra states; slower)
+  long maxRealizations = 150000;    ///< realizations one swing may take before RunError
+  double maxWallSeconds = 60;       ///< s of wall-clock time one swing may take before RunError
 };
 
 struct SwingEvent {
@@ -144,6 +86,25 @@ struct StopImpact {
   std::vector<ImpactWork> work;
 };
 
+/// A measured trial (SwingDrive::kThighKinematics) that ended before the swing-end rule was
+/// met: which condition was not met at the trial's end, and by how much.
+struct TrialEnd {
+  /// thigh_target (the thigh never reached its target), knee_peak (no knee peak above the
+  /// zone), knee_zone (the knee was not back in the zone), settle_dwell (back in the zone,
+  /// but for less than the settle dwell)
+  std::string unmet;
+  double time = 0;             ///< s, the trial's end
+  double kneeFlexion = 0;      ///< rad, the model's knee at the trial's end
+  double thighFlexion = 0;     ///< rad, the thigh at the trial's end
+  double thighPeak = 0;        ///< rad, highest thigh flexion of the trial
+  double thighTarget = 0;      ///< rad, SwingEndRule::thighTargetFlexion
+  double zoneOfStability = 0;  ///< rad, SwingEndRule::zoneOfStability
+  double dwellDone = 0;        ///< s the knee had been in the zone with the thigh at target (settle_dwell)
+  double settleDwell = 0;      ///< s, SwingEndRule::settleDwell
+  /// One line for people: the unmet condition and the numbers.
+  std::string describe() const;
+};
+
 struct SwingResult {
   /// s: thigh at target AND knee back in the zone after its peak, staying there for the
   /// settle dwell (SwingEndRule::settleDwell); NaN if the swing had not ended
@@ -165,13 +126,16 @@ struct SwingResult {
   /// s since toe-off when the end was decided: the swing end plus the settle dwell, or
   /// earlier where the knee could no longer leave the zone (SwingOptions::earlySettleEnd)
   double endDecidedTime = 0;
+  /// Set when a measured trial ended before the swing did (swingTime NaN, the trajectory kept).
+  std::optional<TrialEnd> trialEnd;
 };
 
-/// The participant-level inputs one swing needs, after loading.
+/// The participant-level inputs one swing needs, after loading. Built by makeSwingSetup
+/// (swing/knee_setup.h).
 struct SwingSetup {
   Participant participant;
-  const KneeLaw* knee = nullptr;  ///< full knee law (model + friction + stop)
-  double lowering = 0;            ///< m
+  std::shared_ptr<const KneeLaw> knee;  ///< full knee law (model + friction + stop), shared
+  double lowering = 0;                  ///< m
   AddedMass added;
 };
 
@@ -203,9 +167,10 @@ SwingOptions makePlainPathOptions(double accuracy, double eventWindow);
 /// diagnosed model).
 SwingOptions makeSimbodyIntegratorOptions(double accuracy = 1e-4);
 
-/// Runs one swing. Throws RunError (with the time, the state and the likely cause) if the
-/// integrator fails, the swing does not end within the time limit, or it exceeds
-/// options.maxRealizations or options.maxWallSeconds.
+/// Runs one swing (SwingRun, swing/swing_run.h). Throws RunError (with the time, the state
+/// and the likely cause) if the integrator fails, the swing does not end within the time
+/// limit, or it exceeds options.maxRealizations or options.maxWallSeconds. A measured trial
+/// that ends before the swing does is a result (SwingResult::trialEnd), not an error.
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options = {});
 
 }  // namespace swingsim

@@ -169,11 +169,8 @@ TEST(MotionFile, AcceptsCrlfBomSpacesAndUnknownHeaderKeys) {
 // Our own `swingsim simulate` output (formatTrajectorySto of a simulated swing) reads back to
 // the angles and moment it was written from.
 TEST(MotionFile, SimulateStoReadsBackToTheSameAngles) {
-  SwingSetup setup;
-  setup.participant = loadParticipant(kRoot + "/participants/p1.yaml");
-  const KneeModel model = loadKneeModel(setup.participant.kneeModelPath);
-  const KneeLawSum knee = makeKneeLaw(setup.participant, model);
-  setup.knee = &knee;
+  const Participant p1 = loadParticipant(kRoot + "/participants/p1.yaml");
+  const SwingSetup setup = makeSwingSetup(p1, loadKneeModel(p1.kneeModelPath));
   const SwingTrajectory trajectory = simulateSwing(setup).trajectory;
   ASSERT_GE(trajectory.size(), kMinSwingSamples);
 

@@ -40,10 +40,7 @@ TEST(ToeClearanceRule, TheAlarmHoldsForWalkingOrAStatedHipRise) {
 
 TEST(ToeClearanceRule, AStatedHipRiseLiftsTheFootByThatMuch) {
   auto clearance = [](const Participant& p) {
-    const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-    SwingSetup setup;
-    setup.participant = p;
-    setup.knee = &knee;
+    SwingSetup setup = makeSwingSetup(p, std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath))));
     return simulateSwing(setup).minToeClearance;
   };
   const double standing = clearance(withRule("toe_clearance: {gait: running}\n"));

@@ -144,11 +144,7 @@ TEST(MauchSwing, EnergyBookkeepingHoldsWithTheCylinder) {
 
 TEST(MauchSwing, SwingEndsWithEitherMauchModel) {
   for (const char* file : {"/models/mauch-2phase.yaml", "/models/mauch-4phase.yaml"}) {
-    SwingSetup setup;
-    setup.participant = loadP1();
-    const KneeModel model = loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + file);
-    const KneeLawSum law = makeKneeLaw(setup.participant, model);
-    setup.knee = &law;
+    const SwingSetup setup = makeSwingSetup(loadP1(), loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + file));
     const SwingResult r = simulateSwing(setup);
     EXPECT_GT(r.swingTime, 0.2) << file;
     EXPECT_LT(r.swingTime, 0.6) << file;

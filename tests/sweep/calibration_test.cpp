@@ -21,11 +21,8 @@ constexpr double kTable3Tolerance = 0.005;  // s
 
 TEST(Calibration, StoredParticipantsReproduceTable3) {
   for (const char* file : {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml"}) {
-    SwingSetup setup;
-    setup.participant = loadParticipant(file);
-    const KneeModel model = loadKneeModel(setup.participant.kneeModelPath);
-    const KneeLawSum knee = makeKneeLaw(setup.participant, model);
-    setup.knee = &knee;
+    const Participant loaded = loadParticipant(file);
+    SwingSetup setup = makeSwingSetup(loaded, loadKneeModel(loaded.kneeModelPath));
     const PublishedParticipant* pub = findPublished(setup.participant.name);
     ASSERT_NE(pub, nullptr) << file;
     const SwingResult r = simulateSwing(setup);
@@ -34,11 +31,8 @@ TEST(Calibration, StoredParticipantsReproduceTable3) {
 }
 
 TEST(Calibration, FindsTimeScaleForAnotherTargetAndScanIsMonotonic) {
-  SwingSetup setup;
-  setup.participant = loadParticipant("participants/p3.yaml");
-  const KneeModel model = loadKneeModel(setup.participant.kneeModelPath);
-  const KneeLawSum knee = makeKneeLaw(setup.participant, model);
-  setup.knee = &knee;
+  const Participant loaded = loadParticipant("participants/p3.yaml");
+  SwingSetup setup = makeSwingSetup(loaded, loadKneeModel(loaded.kneeModelPath));
   const double target = 0.450;  // not the stored one: the search must really move
   const CalibrationResult r = calibrateHipTimeScale(setup, target);
   EXPECT_NEAR(r.swingTime, target, 1e-4);
@@ -52,11 +46,8 @@ TEST(Calibration, FindsTimeScaleForAnotherTargetAndScanIsMonotonic) {
 }
 
 TEST(Calibration, UnreachableTargetIsAClearError) {
-  SwingSetup setup;
-  setup.participant = loadParticipant("participants/p1.yaml");
-  const KneeModel model = loadKneeModel(setup.participant.kneeModelPath);
-  const KneeLawSum knee = makeKneeLaw(setup.participant, model);
-  setup.knee = &knee;
+  const Participant loaded = loadParticipant("participants/p1.yaml");
+  SwingSetup setup = makeSwingSetup(loaded, loadKneeModel(loaded.kneeModelPath));
   try {
     calibrateHipTimeScale(setup, 5.0);
     FAIL() << "expected RunError";

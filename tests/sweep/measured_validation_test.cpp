@@ -27,11 +27,7 @@ SweepStudy studyOf(CalibrationTarget target) {
 
 double simulateAt(const SweepStudy& study, Participant p, double scale, double lowering) {
   p.hipMoment.timeScale = scale;
-  const KneeLawSum knee = makeKneeLaw(p, study.kneeModels.at(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
-  setup.lowering = lowering;
+  const SwingSetup setup = makeSwingSetup(p, study.kneeModels.at(p.kneeModelPath), lowering);
   return simulateSwing(setup, study.swing).swingTime;
 }
 

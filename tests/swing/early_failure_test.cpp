@@ -37,7 +37,7 @@ TEST(EarlyFailure, ChangesNoSwingOfTheMonteCarloVariants) {
   testing::compareMonteCarloSwings(
       4, 7, [](SwingOptions& o) { o.earlyThighFailure = false; },
       [&](const PlannedSwing& planned, const Outcome& a, const Outcome& b) {
-        ASSERT_TRUE(planned.knee.isPassive());
+        ASSERT_TRUE(planned.knee->isPassive());
         ASSERT_EQ(a.ok, b.ok) << a.failure << " | " << b.failure;
         if (a.ok) {
           // Nothing decided early: the same swing to the last bit.
@@ -96,10 +96,8 @@ Participant loadWeakP1() {
 
 TEST(EarlyFailure, MessageNamesTheShortfallAndOffItRunsToTheTimeLimit) {
   const Participant p = loadWeakP1();
-  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
+  const auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  SwingSetup setup = makeSwingSetup(p, knee);
   const Outcome early = run(setup, SwingOptions{});
   ASSERT_FALSE(early.ok);
   EXPECT_THAT(early.failure, HasSubstr("the swing cannot end (decided at t = "));
@@ -124,11 +122,9 @@ TEST(EarlyFailure, MessageNamesTheShortfallAndOffItRunsToTheTimeLimit) {
 TEST(EarlyFailure, NotWithALawThatIsNotPassive) {
   const Participant p = loadWeakP1();
   const KneeModel mauch = loadKneeModel("models/mauch-2phase.yaml");
-  const KneeLawSum knee = makeKneeLaw(p, mauch);
-  EXPECT_FALSE(knee.isPassive());
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
+  const auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(p, mauch));
+  EXPECT_FALSE(knee->isPassive());
+  SwingSetup setup = makeSwingSetup(p, knee);
   const Outcome o = run(setup, SwingOptions{});
   ASSERT_FALSE(o.ok);
   EXPECT_THAT(o.failure, HasSubstr("did not end within the time limit"));

@@ -53,10 +53,7 @@ std::string runErrorOf(const SwingSetup& setup) {
 constexpr const char* kStatePattern = "at t = [0-9.]+ s: hip flexion -?[0-9.]+ deg \\(-?[0-9]+ deg/s\\), knee flexion";
 
 TEST(FailingRuns, IntegratorFailureGivesTimeStateAndCause) {
-  SwingSetup setup;
-  setup.participant = loadParticipant("participants/p1.yaml");
-  BrokenKnee knee;
-  setup.knee = &knee;
+  const SwingSetup setup = makeSwingSetup(loadParticipant("participants/p1.yaml"), std::make_shared<const BrokenKnee>());
   const std::string e = runErrorOf(setup);
   EXPECT_THAT(e, HasSubstr("P1: "));
   EXPECT_THAT(e, ::testing::ContainsRegex(kStatePattern));
@@ -71,10 +68,8 @@ TEST(FailingRuns, SwingThatNeverEndsGivesTimeStateAndCause) {
   Participant p = loadParticipant("participants/p1.yaml");
   p.hipMoment.flexionAmplitude = 0;  // nothing drives the thigh to its target
   p.hipMoment.extensionAmplitude = 0;
-  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
+  const auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  SwingSetup setup = makeSwingSetup(p, knee);
   // Decided early (SwingOptions::earlyThighFailure): the leg cannot gain the energy.
   const std::string e = runErrorOf(setup);
   EXPECT_THAT(e, HasSubstr("the swing cannot end (decided at t = "));
@@ -101,10 +96,8 @@ TEST(FailingRuns, HipDrivenOutOfItsRangeGivesTimeStateAndCause) {
   Participant p = loadParticipant("participants/p1.yaml");
   p.hipMoment.flexionAmplitude = 5000;  // N m: far beyond any hip; slams the thigh into its stop
   p.swingEnd.thighTargetFlexion = 89 * kDegToRad;
-  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
+  const auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  SwingSetup setup = makeSwingSetup(p, knee);
   const std::string e = runErrorOf(setup);
   EXPECT_THAT(e, HasSubstr("left its range"));
   EXPECT_THAT(e, HasSubstr("-30 to 90 deg"));
@@ -186,19 +179,13 @@ TEST(FailingRuns, FitCliWithSingularRegressionExitsOneAndWritesNothing) {
 
 // Budgets: a swing past its realization or wall-clock budget stops with a
 // RunError naming the participant, the lowering, the integrator and what to change.
-SwingSetup p1Setup(const KneeModel& model, KneeLawSum& law) {
-  SwingSetup setup;
-  setup.participant = loadParticipant("participants/p1.yaml");
-  law = makeKneeLaw(setup.participant, model);
-  setup.knee = &law;
-  setup.lowering = 0.05;
-  return setup;
+SwingSetup p1Setup(const KneeModel& model) {
+  return makeSwingSetup(loadParticipant("participants/p1.yaml"), model, 0.05);
 }
 
 TEST(FailingRuns, RealizationBudgetStopsTheSwingAndSaysWhatToChange) {
   const KneeModel model = loadKneeModel("models/damping-table-default.yaml");
-  KneeLawSum law;
-  const SwingSetup setup = p1Setup(model, law);
+  const SwingSetup setup = p1Setup(model);
   SwingOptions options;
   options.maxRealizations = 100;  // a normal swing takes about 300
   try {
@@ -217,8 +204,7 @@ TEST(FailingRuns, RealizationBudgetStopsTheSwingAndSaysWhatToChange) {
 
 TEST(FailingRuns, WallClockBudgetStopsTheSwing) {
   const KneeModel model = loadKneeModel("models/damping-table-default.yaml");
-  KneeLawSum law;
-  const SwingSetup setup = p1Setup(model, law);
+  const SwingSetup setup = p1Setup(model);
   SwingOptions options = makeSimbodyIntegratorOptions();
   options.maxWallSeconds = 0;
   try {

@@ -25,15 +25,11 @@ constexpr double kTightEventWindow = 1e-9;  // s: plain path localization window
 // A bundled participant with its own knee, and swing setups that point at that knee.
 struct Bundled {
   Participant participant;
-  KneeLawSum knee;
+  std::shared_ptr<const KneeLawSum> knee;
   explicit Bundled(const char* file)
-      : participant(loadParticipant(file)), knee(makeKneeLaw(participant, loadKneeModel(participant.kneeModelPath))) {}
-  SwingSetup setup() const {
-    SwingSetup s;
-    s.participant = participant;
-    s.knee = &knee;
-    return s;
-  }
+      : participant(loadParticipant(file)),
+        knee(std::make_shared<const KneeLawSum>(makeKneeLaw(participant, loadKneeModel(participant.kneeModelPath)))) {}
+  SwingSetup setup() const { return makeSwingSetup(participant, knee); }
 };
 
 SweepStudy burkettStudy(const SwingOptions& swing) {
@@ -146,10 +142,8 @@ TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
     for (double restitution : {0.4, 0.6}) {
       KneeModel model = loadKneeModel(p.kneeModelPath);
       model.spec.stop.restitution = restitution;
-      const KneeLawSum knee = makeKneeLaw(p, KneeModel{model.path, model.name, model.kind, makeKneeModelLaw(model.spec), model.spec});
-      SwingSetup setup;
-      setup.participant = p;
-      setup.knee = &knee;
+      const SwingSetup setup = makeSwingSetup(
+          p, KneeModel{model.path, model.name, model.kind, makeKneeModelLaw(model.spec), model.spec});
       const SwingOptions plainOptions = makePlainPathOptions(kTightAccuracy, kTightEventWindow);
       const SwingResult fast = simulateSwing(setup);
       const SwingResult plain = simulateSwing(setup, plainOptions);

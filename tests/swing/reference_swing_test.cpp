@@ -47,11 +47,10 @@ struct Comparison {
   std::size_t samples = 0;
 };
 
-Comparison compare(const Participant& p, const KneeLaw& law, double lowering, const LegGeometry* referenceGeometry = nullptr) {
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &law;
-  setup.lowering = lowering;
+Comparison compare(const Participant& p, std::shared_ptr<const KneeLaw> shared, double lowering,
+                   const LegGeometry* referenceGeometry = nullptr) {
+  const SwingSetup setup = makeSwingSetup(p, shared, lowering);
+  const KneeLaw& law = *shared;
   // Simbody's own integrator: the reference runs on our Dormand-Prince, so the two share
   // neither equations nor integration code.
   SwingOptions options = makeSimbodyIntegratorOptions(kSimbodyAccuracy);
@@ -83,7 +82,7 @@ class ReferenceVsSimbody : public ::testing::TestWithParam<std::tuple<const char
 TEST_P(ReferenceVsSimbody, TrajectoryAndSwingTimeAgree) {
   const auto [stem, lowering] = GetParam();
   const Participant p = load(stem);
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
   const Comparison c = compare(p, law, lowering);
   ASSERT_GT(c.samples, 100u) << "the swing should be sampled every 2 ms for a few hundred ms";
   EXPECT_LT(c.maxHipDiff, kAngleTol);
@@ -106,7 +105,7 @@ TEST(ReferenceSwing, DisagreesWhenTheLegDiffers) {
   // The comparison can fail: 1 % more shank mass in the reference moves the knee by far
   // more than the tolerance.
   const Participant p = load("p1");
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
   LegGeometry heavier = calcLegGeometry(p, 0.0);
   heavier.shankMass *= 1.01;
   const Comparison c = compare(p, law, 0.0, &heavier);
@@ -136,7 +135,7 @@ TEST(ReferenceSwing, IntegratesKneeLawStatesLikeSimbody) {
   const Participant p = load("p2");
   KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
   law.add(std::make_unique<LaggedDamper>());
-  const Comparison c = compare(p, law, 0.05);
+  const Comparison c = compare(p, std::make_shared<const KneeLawSum>(std::move(law)), 0.05);
   EXPECT_LT(c.maxHipDiff, kAngleTol);
   EXPECT_LT(c.maxKneeDiff, kAngleTol);
   EXPECT_NEAR(c.referenceSwingTime, c.simbodySwingTime, kSwingTimeTol);
@@ -184,8 +183,8 @@ TEST(ReferenceSwing, SwingEndTimeOutThrows) {
   p.hipMoment.flexionAmplitude = 0;
   p.hipMoment.extensionAmplitude = 0;
   p.swingEnd.timeLimit = 0.3;
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  const ReferenceSwing reference(calcLegGeometry(p, 0.0), law, p.hipMoment, p.hipRange);
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  const ReferenceSwing reference(calcLegGeometry(p, 0.0), *law, p.hipMoment, p.hipRange);
   EXPECT_THROW(reference.calcSwingTime(p.initial, p.swingEnd, 1e-8), RunError);
 }
 
@@ -255,10 +254,9 @@ constexpr double kMovingHipKneeTol = 0.01 * kDegToRad;  // rad: the brief's agre
 
 // Simbody's swing (simulateSwing, the participant's moving hip) against the reference given
 // the same thigh spline and hip path: the largest knee difference, rad.
-double compareMovingHip(const Participant& p, const KneeLaw& law, SwingResult& sim) {
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &law;
+double compareMovingHip(const Participant& p, const std::shared_ptr<const KneeLaw>& shared, SwingResult& sim) {
+  const KneeLaw& law = *shared;
+  const SwingSetup setup = makeSwingSetup(p, shared);
   SwingOptions options = makeSimbodyIntegratorOptions(kSimbodyAccuracy);
   options.sampleInterval = 0.002;
   options.requireSwingEnd = false;  // the knee's whole course, ended or not
@@ -296,7 +294,7 @@ TEST(ReferenceSwing, MovingHipMatchesSimbodyOnARunningLikePelvis) {
   }
   p.initial.kneeFlexion = 40 * kDegToRad;
   p.initial.kneeFlexionRate = 3.0;
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
   SwingResult sim;
   const double kneeDiff = compareMovingHip(p, law, sim);
   std::printf("running-like pelvis: max |knee diff| Simbody vs reference %.2e deg over %zu samples\n",
@@ -365,7 +363,7 @@ TEST(ReferenceSwing, MovingHipMatchesSimbodyOnSubject01sMeasuredPelvis) {
   const double dt = ik.kinematics.time[1] - ik.kinematics.time[0];
   p.initial.kneeFlexion = ik.kneeFlexion[0];
   p.initial.kneeFlexionRate = (ik.kneeFlexion[1] - ik.kneeFlexion[0]) / dt;
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
   SwingResult moving;
   const double kneeDiff = compareMovingHip(p, law, moving);
   ASSERT_GT(moving.trajectory.size(), 100u);
@@ -377,9 +375,7 @@ TEST(ReferenceSwing, MovingHipMatchesSimbodyOnSubject01sMeasuredPelvis) {
   fixedHip.thighKinematics.pelvisX.clear();
   fixedHip.thighKinematics.pelvisY.clear();
   fixedHip.thighKinematics.pelvisTilt.clear();
-  SwingSetup setup;
-  setup.participant = fixedHip;
-  setup.knee = &law;
+  const SwingSetup setup = makeSwingSetup(fixedHip, law);
   SwingOptions options = makeSimbodyIntegratorOptions(kSimbodyAccuracy);
   options.sampleInterval = 0.002;
   options.requireSwingEnd = false;

@@ -48,14 +48,11 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees)
       const KneeModel& published = findStudyKneeModel(study, base);
       KneeModelSpec spec = published.spec;
       if (v.restitution >= 0) spec.stop.restitution = v.restitution;
-      const KneeLawSum knee =
-          makeKneeLaw(p, KneeModel{published.path, published.name, published.kind, makeKneeModelLaw(spec), spec});
+      const auto knee = std::make_shared<const KneeLawSum>(
+          makeKneeLaw(p, KneeModel{published.path, published.name, published.kind, makeKneeModelLaw(spec), spec}));
       for (double lowering : sweepLowerings(study, p)) {
         SCOPED_TRACE(p.name + " at " + std::to_string(lowering) + " m, " + v.name);
-        SwingSetup setup;
-        setup.participant = p;
-        setup.knee = &knee;
-        setup.lowering = lowering;
+        const SwingSetup setup = makeSwingSetup(p, knee, lowering);
         const Outcome a = run(setup, early), b = run(setup, full);
         ASSERT_EQ(a.ok, b.ok) << a.failure << b.failure;
         if (!a.ok) continue;
@@ -140,10 +137,8 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingOnTheMonteCarloVariants) {
 // Off (the full dwell) the end is decided at the swing end plus the dwell, as before.
 TEST(SettleDwell, FullDwellIsDecidedOneDwellAfterTheSwingEnd) {
   const Participant p = loadParticipant("participants/p1.yaml");
-  const KneeLawSum knee = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &knee;
+  const auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  SwingSetup setup = makeSwingSetup(p, knee);
   SwingOptions full;
   full.earlySettleEnd = false;
   const SwingResult r = simulateSwing(setup, full);

@@ -115,10 +115,8 @@ TEST(StopImpact, ABounceOutOfTheZoneLengthensTheSwing) {
     KneeModel model = loadKneeModel(p.kneeModelPath);
     model.spec.stop.restitution = e;
     model.law = makeKneeModelLaw(model.spec);
-    const KneeLawSum knee = makeKneeLaw(p, model);
-    SwingSetup setup;
-    setup.participant = p;
-    setup.knee = &knee;
+    const auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(p, model));
+    SwingSetup setup = makeSwingSetup(p, knee);
     SwingOptions options;
     options.trackImpactEnergy = true;
     return simulateSwing(setup, options);

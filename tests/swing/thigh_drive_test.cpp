@@ -100,16 +100,14 @@ TEST(ThighDrive, SimbodyMatchesTheReferenceOnWintersMeasuredThigh) {
   p.thighKinematics = readWinterHip(60);  // 0 to 0.84 s
   p.initial.kneeFlexion = 46.7 * kDegToRad;
   p.initial.kneeFlexionRate = 6.74;
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &law;
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  SwingSetup setup = makeSwingSetup(p, law);
   SwingOptions options = makeSimbodyIntegratorOptions(kSimbodyAccuracy);
   options.sampleInterval = 0.002;
   const SwingResult sim = simulateSwing(setup, options);
 
   const ThighMotion thigh(p.thighKinematics);
-  const ReferenceSwing reference(calcLegGeometry(p, 0.0), law, thigh);
+  const ReferenceSwing reference(calcLegGeometry(p, 0.0), *law, thigh);
   const ReferenceTrajectory ref = reference.integrate(p.initial, sim.trajectory.time, kReferenceTol, kReferenceTol);
   ASSERT_GT(ref.size(), 150u);
   double hipDiff = 0, kneeDiff = 0, momentDiff = 0, momentRange = 0;
@@ -145,10 +143,8 @@ TEST(ThighDrive, RoundTripGivesBackTheKneeAndTheAppliedHipMoment) {
   // second swing. The knee must follow the first swing's, and the hip moment the
   // prescription needs must be the moment the first swing applied.
   const Participant p = load("p1");
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &law;
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  SwingSetup setup = makeSwingSetup(p, law);
   SwingOptions options;
   options.sampleInterval = 0.0005;
   options.accuracy = 1e-8;
@@ -209,10 +205,8 @@ TEST(ThighDrive, RoundTripGivesBackTheKneeAndTheAppliedHipMoment) {
 TEST(ThighDrive, CalibrationRefusesAThighDrivenParticipant) {
   // No hip moment, so no time scale to calibrate: said, not silently "calibrated".
   const Participant p = load("winter");
-  const KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  SwingSetup setup;
-  setup.participant = p;
-  setup.knee = &law;
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  SwingSetup setup = makeSwingSetup(p, law);
   try {
     calibrateHipTimeScale(setup, 0.4);
     ADD_FAILURE() << "expected an InputError";

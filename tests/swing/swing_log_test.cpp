@@ -1,0 +1,58 @@
+// The settle rule (SwingLog, swing/swing_log.h) on hand-made event sequences: the swing
+// ends at the last entry into the zone that is followed by the settle dwell inside it.
+#include <gtest/gtest.h>
+
+#include "swing/swing_log.h"
+
+namespace swingsim {
+namespace {
+
+constexpr double kDwell = 0.1;   // s
+constexpr double kZone = 0.1;    // rad
+constexpr double kPeak = 1.0;    // rad, above the zone
+
+TEST(SwingEvents, EndIsTheEntryConfirmedByTheDwell) {
+  SwingLog log(kDwell);
+  log.onThighAtTarget(0.10);
+  log.onKneePeak(0.20, kPeak, kZone);
+  log.onKneeZone(0.30, true);
+  ASSERT_TRUE(log.candidate);
+  log.confirmUntil(0.30 + 0.5 * kDwell);
+  EXPECT_FALSE(log.ended);
+  log.confirmUntil(0.30 + kDwell);
+  ASSERT_TRUE(log.ended);
+  EXPECT_DOUBLE_EQ(log.endTime, 0.30);
+  EXPECT_EQ(log.events.back().name, "swing_end");
+}
+
+TEST(SwingEvents, ABounceMovesTheEndToTheNextEntry) {
+  SwingLog log(kDwell);
+  log.onThighAtTarget(0.10);
+  log.onKneePeak(0.20, kPeak, kZone);
+  log.onKneeZone(0.30, true);
+  log.onKneeZone(0.35, false);  // out again before the dwell has passed
+  EXPECT_FALSE(log.candidate);
+  log.onKneePeak(0.37, 0.2, kZone);  // the bounce's top
+  log.onKneeZone(0.40, true);
+  log.confirmUntil(0.40 + kDwell);
+  ASSERT_TRUE(log.ended);
+  EXPECT_DOUBLE_EQ(log.endTime, 0.40);
+  EXPECT_EQ(log.bounces, 1);
+  EXPECT_DOUBLE_EQ(log.bounceHeight, 0.2);
+  EXPECT_DOUBLE_EQ(log.peak, kPeak);
+}
+
+TEST(SwingEvents, KneeInTheZoneBeforeTheThighWaitsForTheThigh) {
+  SwingLog log(kDwell);
+  log.onKneePeak(0.20, kPeak, kZone);
+  log.onKneeZone(0.30, true);
+  log.confirmUntil(0.30 + 2 * kDwell);
+  EXPECT_FALSE(log.ended);  // no end without the thigh at its target
+  log.onThighAtTarget(0.50);
+  log.confirmUntil(0.50 + kDwell);
+  ASSERT_TRUE(log.ended);
+  EXPECT_DOUBLE_EQ(log.endTime, 0.50);
+}
+
+}  // namespace
+}  // namespace swingsim
