@@ -268,15 +268,19 @@ std::string formatSummaryNext(const SweepResults& results, const UncertaintyResu
   if (agreement.disagree > 0)
     next.push_back("the " + std::to_string(agreement.disagree) +
                    " Table 4 rows that differ from Burkett's model by more than 20 ms (\"Where we disagree with the paper\")");
+  std::string falling;
   for (const auto& ps : results.participants)
-    if (ps.best >= 0 && ps.best == lastEndedOnGrid(ps))
-      next.push_back(ps.name + "'s swing time, still falling at the last lowering that ends a swing (its figures)");
+    if (ps.best >= 0 && ps.best == lastEndedOnGrid(ps)) falling += (falling.empty() ? "" : ", ") + ps.name;
+  if (!falling.empty())
+    next.push_back("the swing time of " + falling + ", still falling at the last lowering that ends a swing (the figures)");
+  std::string strongest;
   for (const auto& ps : results.participants) {
     const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name);
     if (pu && !pu->sensitivity.empty())
-      next.push_back("the assumption that moves " + ps.name + "'s fastest lowering most: " + pu->sensitivity.front().name +
-                     " (its tornado figure)");
+      strongest += (strongest.empty() ? "" : "; ") + ps.name + ": " + pu->sensitivity.front().name;
   }
+  if (!strongest.empty())
+    next.push_back("the assumption that moves the fastest lowering most (the tornado figures): " + strongest);
   bool failed = false;
   for (const auto& ps : results.participants)
     for (const auto* list : {&ps.points, &ps.massPoints})
