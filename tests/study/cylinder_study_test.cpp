@@ -117,7 +117,7 @@ conditions:
     parseBench(text, "dup.yaml");
     FAIL() << "a repeated condition name was accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "dup.yaml:7: name: condition name appears twice (got normal)");
+    EXPECT_EQ(std::string(e.what()), "dup.yaml:7: conditions[1].name: condition name appears twice (got normal)");
   }
 }
 
