@@ -8,6 +8,7 @@
 #include "cli/command.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "report/diagnosis_markdown.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosed_model_writer.h"
 #include "study/diagnosis_study.h"
@@ -49,22 +50,8 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   for (const auto& w : heldWarnings) std::fprintf(stderr, "swingsim diagnose: warning: %s\n", w.c_str());
 
   const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
-  std::string md = "# swingsim diagnose: " + study.name + "\n\nCommand: `" + command + "`\n\n" +
-                   (drive.empty() ? "" : "The model's " + drive + ".\n\n") + "## Before\n\n```\n" +
-                   formatComparisonTable(before) + "```\n\n## Ranking and result\n\n```\n" + report +
-                   (check.empty() ? "" : check + "\n") + "```\n\n## After\n\n```\n" + formatComparisonTable(after) +
-                   "```\n\n## Residual plots\n\n";
-  if (held) {
-    md += "## " + heldBefore->quantity + " against the measured one (never fitted)\n\n```\n" +
-          formatHeldBackText(*heldBefore, *heldAfter) + "```\n\n![" + heldBefore->quantity + "](held-back.svg)\n\n";
-    for (const auto& w : heldWarnings) md += "Warning: " + w + "\n\n";
-    writeFileAtomic(outDir + "/held-back.svg", renderHeldBackSvg(*heldBefore, *heldAfter, heldBefore->quantity));
-  }
-  for (const auto& p : writeResidualPlots(outDir, "before", before))
-    md += "- before: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
-  for (const auto& p : writeResidualPlots(outDir, "after", after))
-    md += "- after: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
-  writeFileAtomic(outDir + "/report.md", md);
+  writeDiagnosisReport(outDir, {study.name, command, drive, &dg, &before, &after, check, heldBefore, heldAfter,
+                                 heldWarnings});
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
   if (args.json) {
     Json json = makeDiagnosisJson(dg, before, after);

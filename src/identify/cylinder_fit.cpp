@@ -1,3 +1,8 @@
+// The cylinder fit: the regression, its derivatives with respect to the switch constants,
+// the multi-start switch fit with its variable-projection polish, and the joint covariance.
+// One unit over ~600 lines because every step shares the internal TrainingSet (regressors
+// per file, each starting unlatched) and the projected residual; split, they would need a
+// header of internals that nothing else uses.
 #include "identify/cylinder_fit.h"
 
 #include <algorithm>
@@ -563,6 +568,260 @@ std::vector<double> spreadLog(const double range[2], int n) {
   return v;
 }
 
+// A phase the training data (almost) never enters has coefficients fixed by round-off:
+// the column scaling in fitLeastSquares hides it from the rank test, and the "fit" then
+// returns numbers like 1e16 N. Refuse, and say which phase and why.
+void checkPhasesEntered(const MauchCylinderParams& model, const std::vector<BenchData>& train, std::size_t rows) {
+  constexpr double kMinPhaseSamples = 3.0;  // a phase's gate summed over samples: at least its 3 coefficients
+  std::vector<double> active(static_cast<std::size_t>(MauchCylinder(model).numPhaseGates()), 0.0);
+  double xMin = 1e300, xMax = -1e300;
+  std::string files;
+  for (const auto& d : train) {
+    const CylinderTrace tr = calcCylinderTrace(MauchCylinder(model), d.time, d.position, d.velocity, 0.0);
+    for (const auto& g : tr.gates)
+      for (std::size_t ph = 0; ph < active.size() && ph < g.size(); ++ph) active[ph] += g[ph];
+    for (double x : d.position) {
+      xMin = std::min(xMin, x);
+      xMax = std::max(xMax, x);
+    }
+    files += (files.empty() ? "" : ", ") + d.path;
+  }
+  std::string idle;
+  for (std::size_t ph = 0; ph < active.size(); ++ph) {
+    if (active[ph] < kMinPhaseSamples)
+      idle += (idle.empty() ? "phase " : ", phase ") + std::to_string(ph + 1) + " in " + fmt3(active[ph]);
+  }
+  if (!idle.empty())
+    throw RunError("cannot fit the " + std::to_string(model.phases) + "-phase model: " + idle + " of " +
+                   std::to_string(rows) + " training samples (" + files + "; piston position " + fmt3(xMin * 1e3) +
+                   " to " + fmt3(xMax * 1e3) + " mm, hyperextension switch at " +
+                   fmt3(model.switches.hyperextensionPosition * 1e3) +
+                   " mm): those coefficients are not identified (singular regression). Likely cause: the training "
+                   "record never enters those phases (no hyperextension in the gait cycle, so no S2 latch either, "
+                   "or a position offset); train on a record that does, or use a model with fewer phases");
+}
+
+// The multi-start grid: widths and latch rate spread over their physical ranges, xhy at low
+// quantiles of the training positions (hyperextension is where the piston is lowest); the
+// model's own switch constants alone without options.multiStart.
+std::vector<MauchSwitchParams> makeSwitchStarts(const MauchCylinderParams& model, const std::vector<BenchData>& train,
+                                                const CylinderFitOptions& options) {
+  std::vector<double> positions;
+  for (const auto& d : train) positions.insert(positions.end(), d.position.begin(), d.position.end());
+  std::sort(positions.begin(), positions.end());
+  const SwitchConstantRanges& R = options.ranges;
+  std::vector<double> xhyStarts;
+  for (double q : {0.02, 0.05, 0.1, 0.2, 0.3}) {
+    const double v = positions[static_cast<std::size_t>(q * static_cast<double>(positions.size() - 1))];
+    xhyStarts.push_back(std::clamp(v, R.hyperextension[0], R.hyperextension[1]));
+  }
+  std::vector<double> vws = spreadLog(R.velocityWidth, 3), pws = spreadLog(R.positionWidth, 4);
+  std::vector<double> ks = options.fitLatchRate ? spreadLog(R.latchRate, 2) : std::vector<double>{model.switches.latchRate};
+  if (!options.multiStart) {
+    vws.assign(1, model.switches.velocityWidth);
+    pws.assign(1, model.switches.positionWidth);
+    xhyStarts.assign(1, model.switches.hyperextensionPosition);
+    ks.assign(1, model.switches.latchRate);
+  }
+  std::vector<MauchSwitchParams> grid;
+  for (double vw : vws)
+    for (double pw : pws)
+      for (double xh : xhyStarts)
+        for (double k : ks) grid.push_back({vw, pw, xh, k});
+  return grid;
+}
+
+// Polishes the best starts by Ceres over the switch constants (linear part projected out),
+// each on its own thread; returns the best switch constants found. `done`: starts already
+// evaluated, for the progress callback.
+MauchSwitchParams polishSwitchStarts(const MauchCylinderParams& model, const TrainingSet& set,
+                                     const std::vector<MauchSwitchParams>& sortedStarts, const CylinderFitOptions& options,
+                                     int done, CylinderFit& out) {
+  const bool latch = options.fitLatchRate;
+  BoundedFitSettings settings;
+  // A polish near a known fit (no multi-start) needs a few steps; its budget says so.
+  settings.maxIterations = options.multiStart ? 50 : 12;
+  settings.maxSeconds = 30.0;
+  settings.functionTolerance = options.multiStart ? 1e-6 : 1e-5;
+  settings.computeCovariance = false;
+  // The 2-phase model on 4-phase data has a curved, flat valley: monotone steps crept along
+  // it to the iteration budget from one of the three starts.
+  settings.nonmonotonicSteps = true;
+  auto polish = [&](const MauchSwitchParams& from) {
+    ProjectedResidual projected(model, set);
+    ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) -> Eigen::VectorXd {
+      const MauchSwitchParams switches = switchesFrom(model.switches, x.data(), latch);
+      return jacobian ? projected.calc(switches, static_cast<int>(x.size()), *jacobian) : projected.calc(switches);
+    };
+    return solveBoundedLeastSquares(f, switchParameters(from, options.ranges, latch), settings);
+  };
+  const std::size_t polished = std::min<std::size_t>(kPolishedStarts, sortedStarts.size());
+  std::vector<std::future<BoundedFitResult>> runs;
+  for (std::size_t s = 1; s < polished; ++s) runs.push_back(std::async(std::launch::async, polish, sortedStarts[s]));
+  std::vector<BoundedFitResult> results;
+  results.push_back(polish(sortedStarts[0]));
+  for (auto& r : runs) results.push_back(r.get());
+  double bestCost = std::numeric_limits<double>::infinity();
+  MauchSwitchParams bestSwitches = model.switches;
+  for (std::size_t s = 0; s < results.size(); ++s) {
+    const BoundedFitResult& r = results[s];
+    if (options.multiStart && !r.converged && r.iterations >= settings.maxIterations)
+      out.warnings.push_back("the switch-constant fit stopped at its budget of " + std::to_string(settings.maxIterations) +
+                             " iterations without converging");
+    if (r.cost < bestCost) {
+      bestCost = r.cost;
+      bestSwitches = switchesFrom(model.switches, r.x.data(), latch);
+    }
+    if (options.progress) options.progress(done + static_cast<int>(s) + 1, done + static_cast<int>(kPolishedStarts));
+  }
+  return bestSwitches;
+}
+
+// The switch constants: every start of the grid costed (on two threads, results in grid
+// order, so the fit is the same on any machine), the best ones polished.
+MauchSwitchParams fitSwitchConstants(const MauchCylinderParams& model, const std::vector<BenchData>& train,
+                                     const CylinderFitOptions& options, CylinderFit& out) {
+  struct Start {
+    double cost;
+    MauchSwitchParams switches;
+  };
+  const std::vector<MauchSwitchParams> grid = makeSwitchStarts(model, train, options);
+  const int total = static_cast<int>(grid.size());
+  const TrainingSet set(model, train);
+  const std::vector<double> costs = calcGridCosts(model, set, grid, grid.size() > 1 ? 2 : 1);
+  std::vector<Start> starts;
+  for (std::size_t i = 0; i < grid.size(); ++i) starts.push_back({costs[i], grid[i]});
+  if (options.progress) options.progress(total, total + static_cast<int>(kPolishedStarts));
+  std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
+  out.switchStarts = static_cast<int>(starts.size());
+  std::vector<MauchSwitchParams> sorted;
+  for (const auto& s : starts) sorted.push_back(s.switches);
+  return polishSwitchStarts(model, set, sorted, options, total, out);
+}
+
+// Every fitted constant's value, standard error, whether it sits on a bound, and their
+// correlation; the linear coefficients first (nLinear of them), then any switch constants.
+struct ConstantEstimates {
+  std::vector<BoundedParameter> all;
+  std::size_t nLinear = 0;
+  std::vector<double> values, errors;
+  std::vector<bool> atBound;
+  Eigen::MatrixXd correlation;
+};
+
+// The covariance of every constant (coefficients and switches) at the variable-projection
+// optimum, from Ceres' Jacobian; updates `est`, `current` and `best` with the joint solution.
+void calcJointCovariance(const std::vector<BenchData>& train, bool latch, std::size_t rows, MauchCylinderParams& current,
+                         LinearFit& best, ConstantEstimates& est) {
+  const std::size_t nLinear = est.nLinear;
+  const TrainingSet set(current, train);
+  Eigen::MatrixXd X;
+  std::array<Eigen::MatrixXd, kSwitchConstants> dX;
+  // r = y - X(switches) b: d r / d b = -X, d r / d switch k = -(d X / d switch k) b.
+  ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) {
+    MauchCylinderParams trial = current;
+    setMauchCoefficientVector(trial, std::vector<double>(x.data(), x.data() + nLinear));
+    trial.switches = switchesFrom(current.switches, x.data() + nLinear, latch);
+    Eigen::VectorXd residual = predictionResidual(trial, set, X);
+    if (jacobian) {
+      const Eigen::Index nl = static_cast<Eigen::Index>(nLinear);
+      jacobian->resize(X.rows(), x.size());
+      jacobian->leftCols(nl) = -X;
+      buildRegressorDerivatives(MauchCylinder(trial), set, dX);
+      const Eigen::Map<const Eigen::VectorXd> b(x.data(), nl);
+      for (Eigen::Index k = nl; k < x.size(); ++k) jacobian->col(k) = -(dX[static_cast<std::size_t>(k - nl)] * b);
+    }
+    return residual;
+  };
+  BoundedFitSettings settings;
+  // Variable projection (with the active set) already found the joint optimum: only the
+  // covariance of every constant at that point is needed.
+  settings.maxIterations = 0;
+  settings.maxSeconds = 30.0;
+  const BoundedFitResult r = solveBoundedLeastSquares(f, est.all, settings);
+  est.values.assign(r.x.data(), r.x.data() + r.x.size());
+  est.errors.assign(r.standardErrors.data(), r.standardErrors.data() + r.standardErrors.size());
+  for (std::size_t j = nLinear; j < r.atBound.size(); ++j) est.atBound.push_back(r.atBound[j]);
+  for (std::size_t j = 0; j < nLinear; ++j)
+    if (est.atBound[j]) est.errors[j] = std::numeric_limits<double>::quiet_NaN();
+  est.correlation = r.correlation();
+  const auto& values = est.values;
+  setMauchCoefficientVector(current, std::vector<double>(values.begin(), values.begin() + static_cast<long>(nLinear)));
+  current.switches = switchesFrom(current.switches, values.data() + nLinear, latch);
+  best.coefficients.assign(values.begin(), values.begin() + static_cast<long>(nLinear));
+  best.standardErrors.assign(est.errors.begin(), est.errors.begin() + static_cast<long>(nLinear));
+  best.residualRms = std::sqrt(r.cost / static_cast<double>(rows));
+}
+
+// Coefficients that left their physical range are put on their bound (active set). With
+// fitted switch constants, the covariance of every constant (coefficients and switches) at
+// that point comes from Ceres' Jacobian; otherwise the regression's standard errors are
+// exact.
+ConstantEstimates estimateConstants(const std::vector<BenchData>& train, const CylinderFitOptions& options,
+                                    bool switchesFitted, std::size_t rows, MauchCylinderParams& current,
+                                    LinearFit& best) {
+  const std::size_t p = static_cast<std::size_t>(MauchCylinder(current).numCoefficients());
+  const std::vector<std::string> names = mauchCoefficientNames(current);
+  const auto bounds = coefficientBounds(current);
+  bool outside = false;
+  for (std::size_t j = 0; j < bounds.size(); ++j)
+    outside = outside || best.coefficients[j] < bounds[j].first || best.coefficients[j] > bounds[j].second;
+  ConstantEstimates est;
+  est.atBound.assign(names.size(), false);
+  if (outside && best.rank == static_cast<int>(p)) {
+    const double conditionNumber = best.conditionNumber;
+    best = regressWithinBounds(current, train, bounds, est.atBound);
+    best.conditionNumber = conditionNumber;  // of the whole regression, as reported before
+    setMauchCoefficientVector(current, best.coefficients);
+  }
+  est.values = best.coefficients;
+  est.errors = best.standardErrors;
+  est.correlation = best.correlation;
+  for (std::size_t j = 0; j < names.size(); ++j) {
+    const double se = std::isfinite(best.standardErrors[j]) ? best.standardErrors[j] : 0.0;
+    est.all.push_back({names[j], best.coefficients[j], bounds[j].first, bounds[j].second, false,
+                       std::max({std::abs(best.coefficients[j]), se, 1e-6})});
+  }
+  est.nLinear = est.all.size();
+  if (switchesFitted)
+    for (const auto& b : switchParameters(current.switches, options.ranges, options.fitLatchRate)) est.all.push_back(b);
+  if (switchesFitted && best.rank == static_cast<int>(p))
+    calcJointCovariance(train, options.fitLatchRate, rows, current, best, est);
+  return est;
+}
+
+// The fitted constants into `out`, with a warning for each that sits on its physical bound
+// or that the training data do not determine.
+void addFittedConstants(const ConstantEstimates& est, CylinderFit& out) {
+  for (std::size_t j = 0; j < est.all.size(); ++j) {
+    FittedConstant c;
+    c.name = est.all[j].name;
+    c.value = est.values[j];
+    c.standardError = est.errors[j];
+    c.lower = est.all[j].lower;
+    c.upper = est.all[j].upper;
+    c.atBound = j < est.atBound.size() && est.atBound[j];
+    c.includesZero = std::isfinite(c.standardError) && j < est.nLinear && std::abs(c.value) < 1.96 * c.standardError;
+    out.constants.push_back(c);
+    if (c.atBound && j < est.nLinear)
+      out.warnings.push_back(c.name + " = " + fmt3(c.value) + " sits on its physical bound: the data ask for a value " +
+                             (c.value <= c.lower ? "below " + fmt3(c.lower) : "above " + fmt3(c.upper)) +
+                             " (a non-physical sign); the model may be missing an effect");
+    else if (j >= est.nLinear && (c.atBound || !(c.standardError < std::abs(c.value))))
+      out.warnings.push_back(c.name + " = " + fmt3(c.value) + " is not determined by the training data (" +
+                             (c.atBound ? "at the edge of its range " + fmt3(c.lower) + ".." + fmt3(c.upper)
+                                        : "standard error " + fmt3(c.standardError) + " larger than the value") +
+                             "): records that differ from the training one there (another speed, another "
+                             "hyperextension hold) may fit worse; train on more than one speed to pin it down");
+  }
+  out.correlation = est.correlation;
+  if (est.correlation.size() > 0 && out.switchesFitted) {
+    for (const auto& [i, j] : findCollinearPairs(est.correlation, kCollinearLimit))
+      out.collinear.push_back(
+          {est.all[static_cast<std::size_t>(i)].name, est.all[static_cast<std::size_t>(j)].name, est.correlation(i, j)});
+  }
+}
+
 }  // namespace
 
 CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<BenchData>& train,
@@ -575,220 +834,21 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   if (rows < p)
     throw InputError("training data: fewer samples (" + std::to_string(rows) + ") than coefficients (" +
                      std::to_string(p) + ") of a " + std::to_string(model.phases) + "-phase model");
-
-  // A phase the training data (almost) never enters has coefficients fixed by round-off:
-  // the column scaling in fitLeastSquares hides it from the rank test, and the "fit" then
-  // returns numbers like 1e16 N. Refuse, and say which phase and why.
-  {
-    constexpr double kMinPhaseSamples = 3.0;  // a phase's gate summed over samples: at least its 3 coefficients
-    std::vector<double> active(static_cast<std::size_t>(MauchCylinder(model).numPhaseGates()), 0.0);
-    double xMin = 1e300, xMax = -1e300;
-    std::string files;
-    for (const auto& d : train) {
-      const CylinderTrace tr = calcCylinderTrace(MauchCylinder(model), d.time, d.position, d.velocity, 0.0);
-      for (const auto& g : tr.gates)
-        for (std::size_t ph = 0; ph < active.size() && ph < g.size(); ++ph) active[ph] += g[ph];
-      for (double x : d.position) {
-        xMin = std::min(xMin, x);
-        xMax = std::max(xMax, x);
-      }
-      files += (files.empty() ? "" : ", ") + d.path;
-    }
-    std::string idle;
-    for (std::size_t ph = 0; ph < active.size(); ++ph) {
-      if (active[ph] < kMinPhaseSamples)
-        idle += (idle.empty() ? "phase " : ", phase ") + std::to_string(ph + 1) + " in " + fmt3(active[ph]);
-    }
-    if (!idle.empty())
-      throw RunError("cannot fit the " + std::to_string(model.phases) + "-phase model: " + idle + " of " +
-                     std::to_string(rows) + " training samples (" + files + "; piston position " + fmt3(xMin * 1e3) +
-                     " to " + fmt3(xMax * 1e3) + " mm, hyperextension switch at " +
-                     fmt3(model.switches.hyperextensionPosition * 1e3) +
-                     " mm): those coefficients are not identified (singular regression). Likely cause: the training "
-                     "record never enters those phases (no hyperextension in the gait cycle, so no S2 latch either, "
-                     "or a position offset); train on a record that does, or use a model with fewer phases");
-  }
+  checkPhasesEntered(model, train, rows);
 
   LinearFit best = regress(model, train);
   out.trainRmseAtStart = best.residualRms;
   MauchCylinderParams current = model;
-  const bool latch = options.fitLatchRate;
   if (options.fitSwitches) {
-    // Multi-start: widths and latch rate spread over their physical ranges, xhy at low
-    // quantiles of the training positions (hyperextension is where the piston is lowest).
-    std::vector<double> positions;
-    for (const auto& d : train) positions.insert(positions.end(), d.position.begin(), d.position.end());
-    std::sort(positions.begin(), positions.end());
-    const SwitchConstantRanges& R = options.ranges;
-    std::vector<double> xhyStarts;
-    for (double q : {0.02, 0.05, 0.1, 0.2, 0.3}) {
-      const double v = positions[static_cast<std::size_t>(q * static_cast<double>(positions.size() - 1))];
-      xhyStarts.push_back(std::clamp(v, R.hyperextension[0], R.hyperextension[1]));
-    }
-    std::vector<double> vws = spreadLog(R.velocityWidth, 3), pws = spreadLog(R.positionWidth, 4);
-    std::vector<double> ks = latch ? spreadLog(R.latchRate, 2) : std::vector<double>{model.switches.latchRate};
-    struct Start {
-      double cost;
-      MauchSwitchParams switches;
-    };
-    std::vector<Start> starts;
-    if (!options.multiStart) {
-      vws.assign(1, model.switches.velocityWidth);
-      pws.assign(1, model.switches.positionWidth);
-      xhyStarts.assign(1, model.switches.hyperextensionPosition);
-      ks.assign(1, model.switches.latchRate);
-    }
-    const int total = static_cast<int>(vws.size() * pws.size() * xhyStarts.size() * ks.size());
-    std::vector<MauchSwitchParams> grid;
-    for (double vw : vws)
-      for (double pw : pws)
-        for (double xh : xhyStarts)
-          for (double k : ks) grid.push_back({vw, pw, xh, k});
-    // The starts are independent: evaluated on two threads (results in grid order, so the
-    // fit is the same on any machine).
-    const TrainingSet set(model, train);
-    const std::vector<double> costs = calcGridCosts(model, set, grid, grid.size() > 1 ? 2 : 1);
-    for (std::size_t i = 0; i < grid.size(); ++i) starts.push_back({costs[i], grid[i]});
-    if (options.progress) options.progress(total, total + static_cast<int>(kPolishedStarts));
-    std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
-    out.switchStarts = static_cast<int>(starts.size());
-    // Polish the best starts by Ceres over the switch constants (linear part projected out),
-    // each on its own thread.
-    BoundedFitSettings settings;
-    // A polish near a known fit (no multi-start) needs a few steps; its budget says so.
-    settings.maxIterations = options.multiStart ? 50 : 12;
-    settings.maxSeconds = 30.0;
-    settings.functionTolerance = options.multiStart ? 1e-6 : 1e-5;
-    settings.computeCovariance = false;
-    // The 2-phase model on 4-phase data has a curved, flat valley: monotone steps crept along
-    // it to the iteration budget from one of the three starts.
-    settings.nonmonotonicSteps = true;
-    auto polish = [&](const MauchSwitchParams& from) {
-      ProjectedResidual projected(model, set);
-      ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) -> Eigen::VectorXd {
-        const MauchSwitchParams switches = switchesFrom(model.switches, x.data(), latch);
-        return jacobian ? projected.calc(switches, static_cast<int>(x.size()), *jacobian) : projected.calc(switches);
-      };
-      return solveBoundedLeastSquares(f, switchParameters(from, R, latch), settings);
-    };
-    const std::size_t polished = std::min<std::size_t>(kPolishedStarts, starts.size());
-    std::vector<std::future<BoundedFitResult>> runs;
-    for (std::size_t s = 1; s < polished; ++s) runs.push_back(std::async(std::launch::async, polish, starts[s].switches));
-    std::vector<BoundedFitResult> results;
-    results.push_back(polish(starts[0].switches));
-    for (auto& r : runs) results.push_back(r.get());
-    double bestCost = std::numeric_limits<double>::infinity();
-    MauchSwitchParams bestSwitches = model.switches;
-    for (std::size_t s = 0; s < results.size(); ++s) {
-      const BoundedFitResult& r = results[s];
-      if (options.multiStart && !r.converged && r.iterations >= settings.maxIterations)
-        out.warnings.push_back("the switch-constant fit stopped at its budget of " + std::to_string(settings.maxIterations) +
-                               " iterations without converging");
-      if (r.cost < bestCost) {
-        bestCost = r.cost;
-        bestSwitches = switchesFrom(model.switches, r.x.data(), latch);
-      }
-      if (options.progress) options.progress(total + static_cast<int>(s) + 1, total + static_cast<int>(kPolishedStarts));
-    }
-    current.switches = bestSwitches;
+    current.switches = fitSwitchConstants(model, train, options, out);
     out.switchesFitted = true;
     best = regress(current, train);
   }
   setMauchCoefficientVector(current, best.coefficients);
-
-  // Coefficients that left their physical range are put on their bound (active set). With
-  // fitted switch constants, the covariance of every constant (coefficients and switches) at
-  // that point comes from Ceres' Jacobian; otherwise the regression's standard errors are
-  // exact.
-  const std::vector<std::string> names = mauchCoefficientNames(current);
-  const auto bounds = coefficientBounds(current);
-  bool outside = false;
-  for (std::size_t j = 0; j < bounds.size(); ++j)
-    outside = outside || best.coefficients[j] < bounds[j].first || best.coefficients[j] > bounds[j].second;
-  std::vector<bool> atBound(names.size(), false);
-  if (outside && best.rank == static_cast<int>(p)) {
-    const double conditionNumber = best.conditionNumber;
-    best = regressWithinBounds(current, train, bounds, atBound);
-    best.conditionNumber = conditionNumber;  // of the whole regression, as reported before
-    setMauchCoefficientVector(current, best.coefficients);
-  }
-  std::vector<double> values = best.coefficients, errors = best.standardErrors;
-  Eigen::MatrixXd correlation = best.correlation;
-  std::vector<BoundedParameter> all;
-  for (std::size_t j = 0; j < names.size(); ++j) {
-    const double se = std::isfinite(best.standardErrors[j]) ? best.standardErrors[j] : 0.0;
-    all.push_back({names[j], best.coefficients[j], bounds[j].first, bounds[j].second, false,
-                   std::max({std::abs(best.coefficients[j]), se, 1e-6})});
-  }
-  const std::size_t nLinear = all.size();
-  if (out.switchesFitted)
-    for (const auto& b : switchParameters(current.switches, options.ranges, latch)) all.push_back(b);
-  if (out.switchesFitted && best.rank == static_cast<int>(p)) {
-    const TrainingSet set(current, train);
-    Eigen::MatrixXd X;
-    std::array<Eigen::MatrixXd, kSwitchConstants> dX;
-    // r = y - X(switches) b: d r / d b = -X, d r / d switch k = -(d X / d switch k) b.
-    ResidualJacobianFunction f = [&](const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) {
-      MauchCylinderParams trial = current;
-      setMauchCoefficientVector(trial, std::vector<double>(x.data(), x.data() + nLinear));
-      trial.switches = switchesFrom(current.switches, x.data() + nLinear, latch);
-      Eigen::VectorXd residual = predictionResidual(trial, set, X);
-      if (jacobian) {
-        const Eigen::Index nl = static_cast<Eigen::Index>(nLinear);
-        jacobian->resize(X.rows(), x.size());
-        jacobian->leftCols(nl) = -X;
-        buildRegressorDerivatives(MauchCylinder(trial), set, dX);
-        const Eigen::Map<const Eigen::VectorXd> b(x.data(), nl);
-        for (Eigen::Index k = nl; k < x.size(); ++k) jacobian->col(k) = -(dX[static_cast<std::size_t>(k - nl)] * b);
-      }
-      return residual;
-    };
-    BoundedFitSettings settings;
-    // Variable projection (with the active set) already found the joint optimum: only the
-    // covariance of every constant at that point is needed.
-    settings.maxIterations = 0;
-    settings.maxSeconds = 30.0;
-    const BoundedFitResult r = solveBoundedLeastSquares(f, all, settings);
-    values.assign(r.x.data(), r.x.data() + r.x.size());
-    errors.assign(r.standardErrors.data(), r.standardErrors.data() + r.standardErrors.size());
-    for (std::size_t j = nLinear; j < r.atBound.size(); ++j) atBound.push_back(r.atBound[j]);
-    for (std::size_t j = 0; j < nLinear; ++j)
-      if (atBound[j]) errors[j] = std::numeric_limits<double>::quiet_NaN();
-    correlation = r.correlation();
-    setMauchCoefficientVector(current, std::vector<double>(values.begin(), values.begin() + static_cast<long>(nLinear)));
-    current.switches = switchesFrom(current.switches, values.data() + nLinear, latch);
-    best.coefficients.assign(values.begin(), values.begin() + static_cast<long>(nLinear));
-    best.standardErrors.assign(errors.begin(), errors.begin() + static_cast<long>(nLinear));
-    best.residualRms = std::sqrt(r.cost / static_cast<double>(rows));
-  }
+  const ConstantEstimates est = estimateConstants(train, options, out.switchesFitted, rows, current, best);
   out.params = current;
   out.regression = best;
-  for (std::size_t j = 0; j < all.size(); ++j) {
-    FittedConstant c;
-    c.name = all[j].name;
-    c.value = values[j];
-    c.standardError = errors[j];
-    c.lower = all[j].lower;
-    c.upper = all[j].upper;
-    c.atBound = j < atBound.size() && atBound[j];
-    c.includesZero = std::isfinite(c.standardError) && j < nLinear && std::abs(c.value) < 1.96 * c.standardError;
-    out.constants.push_back(c);
-    if (c.atBound && j < nLinear)
-      out.warnings.push_back(c.name + " = " + fmt3(c.value) + " sits on its physical bound: the data ask for a value " +
-                             (c.value <= c.lower ? "below " + fmt3(c.lower) : "above " + fmt3(c.upper)) +
-                             " (a non-physical sign); the model may be missing an effect");
-    else if (j >= nLinear && (c.atBound || !(c.standardError < std::abs(c.value))))
-      out.warnings.push_back(c.name + " = " + fmt3(c.value) + " is not determined by the training data (" +
-                             (c.atBound ? "at the edge of its range " + fmt3(c.lower) + ".." + fmt3(c.upper)
-                                        : "standard error " + fmt3(c.standardError) + " larger than the value") +
-                             "): records that differ from the training one there (another speed, another "
-                             "hyperextension hold) may fit worse; train on more than one speed to pin it down");
-  }
-  out.correlation = correlation;
-  if (correlation.size() > 0 && out.switchesFitted) {
-    for (const auto& [i, j] : findCollinearPairs(correlation, kCollinearLimit))
-      out.collinear.push_back({all[static_cast<std::size_t>(i)].name, all[static_cast<std::size_t>(j)].name, correlation(i, j)});
-  }
+  addFittedConstants(est, out);
   if (best.rank < static_cast<int>(p))
     out.warnings.push_back("rank-deficient regression (rank " + std::to_string(best.rank) + " of " + std::to_string(p) +
                            "): some phase is (almost) never active in the training data; its coefficients are not identified");

@@ -134,8 +134,10 @@ void serialize(A& a, MauchPhaseCoefficients& c) {
   a.number("c_Ns_per_m", c.c);
 }
 
+namespace {
+
 template <class A>
-void serialize(A& a, MauchAddedEffects& e, int phases) {
+void serializeAddedEffects(A& a, MauchAddedEffects& e, int phases) {
   a.optionalMap("hyperextension_phase", e.hyperextension, e.hyperextensionPhase);
   a.require(!e.hyperextensionPhase || phases == 2 || phases == 0, "hyperextension_phase",
             "only a 2-phase model can add a hyperextension phase (the 4-phase model has one)",
@@ -145,6 +147,11 @@ void serialize(A& a, MauchAddedEffects& e, int phases) {
   a.optionalMap("inertia", e, e.inertia, InertiaOf{});
   a.optionalMap("position_dependent_damping", e, e.positionDependentDamping, PositionDampingOf{});
 }
+
+}  // namespace
+
+void serialize(YamlReadArchive& a, MauchAddedEffects& e, int phases) { serializeAddedEffects(a, e, phases); }
+void serialize(YamlWriteArchive& a, MauchAddedEffects& e, int phases) { serializeAddedEffects(a, e, phases); }
 
 template <class A>
 void serialize(A& a, KneeAddedEffectsParams& p, KneeCoulombOf) {

@@ -11,6 +11,8 @@
 namespace swingsim {
 
 class YamlMap;
+class YamlReadArchive;
+class YamlWriteArchive;
 
 /// Reads a knee model. Throws InputError (`file:line: key: ...`) on any bad input.
 KneeModel loadKneeModel(const std::string& path);
@@ -23,6 +25,10 @@ MauchCylinderParams loadMauchCylinder(const std::string& path);
 /// Added cylinder effects from an `effects:`-style map (also a bench study's hidden
 /// effects). `phases`: the model's phases (0: not known yet).
 MauchAddedEffects readMauchAddedEffects(YamlMap& effects, int phases);
+/// The fields of an `effects:`-style map, for the archives of io/yaml_archive.h (a bench
+/// study's hidden effects are written and read through them).
+void serialize(YamlReadArchive& a, MauchAddedEffects& e, int phases);
+void serialize(YamlWriteArchive& a, MauchAddedEffects& e, int phases);
 
 /// The YAML text of a knee model spec, with `header` lines as leading comments.
 std::string formatKneeModelYaml(const KneeModelSpec& spec, const std::string& header = "");

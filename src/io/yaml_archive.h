@@ -50,6 +50,8 @@ class YamlReadArchive {
     if (!map_.has(key)) map_.getDouble(key);  // "required key is missing"
     v = map_.getInt(key, v);
   }
+  /// Optional whole number: `v` holds its default on entry.
+  void optionalInteger(const char* key, int& v) { v = map_.getInt(key, v); }
   void optionalFlag(const char* key, bool& v) { v = map_.getBool(key, v); }
   void text(const char* key, std::string& v) { v = map_.getString(key); }
   void optionalText(const char* key, std::string& v) { v = map_.getString(key, v); }
@@ -149,6 +151,7 @@ class YamlWriteArchive {
   void angle(const char* key, double& v, const ValueCheck& = {}) { scalar(key, formatDegrees(v)); }
   void optionalAngle(const char* key, double& v, const ValueCheck& = {}) { scalar(key, formatDegrees(v)); }
   void integer(const char* key, int& v) { scalar(key, std::to_string(v)); }
+  void optionalInteger(const char* key, int& v) { scalar(key, std::to_string(v)); }
   void optionalFlag(const char* key, bool& v) { scalar(key, v ? "true" : "false"); }
   void text(const char* key, std::string& v) { out_ << YAML::Key << key << YAML::Value << v; }
   void optionalText(const char* key, std::string& v) {

@@ -232,24 +232,11 @@ void SvgPlot::calcRanges(double& x0, double& x1, double& y0, double& y1) const {
   }
 }
 
-std::string SvgPlot::renderGroup(double dx, double dy) const {
-  double x0, x1, y0, y1;
-  calcRanges(x0, x1, y0, y1);
-  const double left = marginLeft_, top = kMarginTop;
-  const double plotW = width_ - marginLeft_ - kMarginRight;
-  const double plotH = height_ - kMarginTop - kMarginBottom;
-  auto mapX = [&](double x) { return left + (x - x0) / (x1 - x0) * plotW; };
-  auto mapY = [&](double y) { return top + (y1 - y) / (y1 - y0) * plotH; };
-  const std::string clipId = "clip" + std::to_string(static_cast<long>(dx)) + "_" +
-                             std::to_string(static_cast<long>(dy));
-
+std::string SvgPlot::renderBands(const Frame& f, const std::string& clipId) const {
+  const double left = f.left, top = f.top, plotW = f.plotW, plotH = f.plotH;
+  auto mapX = [&](double x) { return f.mapX(x); };
+  auto mapY = [&](double y) { return f.mapY(y); };
   std::string s;
-  s += "<g transform=\"translate(" + px(dx) + "," + px(dy) + ")\" font-family=\"sans-serif\">\n";
-  s += "<defs><clipPath id=\"" + clipId + "\"><rect x=\"" + px(left) + "\" y=\"" + px(top) +
-       "\" width=\"" + px(plotW) + "\" height=\"" + px(plotH) + "\"/></clipPath></defs>\n";
-  s += "<rect x=\"" + px(left) + "\" y=\"" + px(top) + "\" width=\"" + px(plotW) + "\" height=\"" +
-       px(plotH) + "\" fill=\"#ffffff\" stroke=\"none\"/>\n";
-
   // Bands first, beneath everything.
   s += "<g clip-path=\"url(#" + clipId + ")\">\n";
   for (const auto& b : bands_) {
@@ -266,33 +253,40 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
          px(plotH) + "\" fill=\"" + svgEscape(b.color) + "\" fill-opacity=\"" + opacity(b.opacity) + "\"/>\n";
   }
   // Filled bands between two curves, one polygon per finite run of points.
-  for (const auto& f : fills_) {
+  for (const auto& fl : fills_) {
     std::size_t i = 0;
-    while (i < f.xs.size()) {
+    while (i < fl.xs.size()) {
       auto finite = [&](std::size_t k) {
-        return std::isfinite(f.xs[k]) && std::isfinite(f.lows[k]) && std::isfinite(f.highs[k]);
+        return std::isfinite(fl.xs[k]) && std::isfinite(fl.lows[k]) && std::isfinite(fl.highs[k]);
       };
       if (!finite(i)) {
         ++i;
         continue;
       }
       std::size_t j = i;
-      while (j < f.xs.size() && finite(j)) ++j;
+      while (j < fl.xs.size() && finite(j)) ++j;
       std::string d;
-      for (std::size_t k = i; k < j; ++k) d += (k == i ? "M" : "L") + px(mapX(f.xs[k])) + " " + px(mapY(f.highs[k]));
-      for (std::size_t k = j; k-- > i;) d += "L" + px(mapX(f.xs[k])) + " " + px(mapY(f.lows[k]));
-      s += "<path d=\"" + d + "Z\" fill=\"" + svgEscape(f.color) + "\" fill-opacity=\"" + opacity(f.opacity) +
+      for (std::size_t k = i; k < j; ++k) d += (k == i ? "M" : "L") + px(mapX(fl.xs[k])) + " " + px(mapY(fl.highs[k]));
+      for (std::size_t k = j; k-- > i;) d += "L" + px(mapX(fl.xs[k])) + " " + px(mapY(fl.lows[k]));
+      s += "<path d=\"" + d + "Z\" fill=\"" + svgEscape(fl.color) + "\" fill-opacity=\"" + opacity(fl.opacity) +
            "\" stroke=\"none\"/>\n";
       i = j;
     }
   }
   s += "</g>\n";
+  return s;
+}
 
+std::string SvgPlot::renderGrid(const Frame& f) const {
+  const double left = f.left, top = f.top, plotW = f.plotW, plotH = f.plotH;
+  auto mapX = [&](double x) { return f.mapX(x); };
+  auto mapY = [&](double y) { return f.mapY(y); };
+  std::string s;
   // Grid and ticks.
-  const auto xt = calcNiceTicks(x0, x1, std::max(3, static_cast<int>(plotW / 110)));
-  const auto yt = calcNiceTicks(y0, y1, std::max(3, static_cast<int>(plotH / 55)));
-  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : (x1 - x0);
-  const double ystep = yt.size() > 1 ? yt[1] - yt[0] : (y1 - y0);
+  const auto xt = calcNiceTicks(f.x0, f.x1, std::max(3, static_cast<int>(plotW / 110)));
+  const auto yt = calcNiceTicks(f.y0, f.y1, std::max(3, static_cast<int>(plotH / 55)));
+  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : (f.x1 - f.x0);
+  const double ystep = yt.size() > 1 ? yt[1] - yt[0] : (f.y1 - f.y0);
   for (double v : xt) {
     const double X = mapX(v);
     s += "<line x1=\"" + px(X) + "\" y1=\"" + px(top) + "\" x2=\"" + px(X) + "\" y2=\"" +
@@ -316,7 +310,14 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
          "\" font-size=\"" + px(kFontTick) + "\" text-anchor=\"end\" fill=\"#333\">" +
          svgEscape(text) + "</text>\n";
   }
+  return s;
+}
 
+std::string SvgPlot::renderData(const Frame& f, const std::string& clipId) const {
+  const double left = f.left, top = f.top, plotW = f.plotW, plotH = f.plotH;
+  auto mapX = [&](double x) { return f.mapX(x); };
+  auto mapY = [&](double y) { return f.mapY(y); };
+  std::string s;
   // Data, clipped to the plot area.
   s += "<g clip-path=\"url(#" + clipId + ")\">\n";
   for (const auto& r : refs_) {
@@ -359,7 +360,12 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
          "/>\n";
   }
   s += "</g>\n";
+  return s;
+}
 
+std::string SvgPlot::renderLabels(const Frame& f) const {
+  const double left = f.left, top = f.top, plotW = f.plotW, plotH = f.plotH;
+  std::string s;
   // Frame, labels, title.
   s += "<rect x=\"" + px(left) + "\" y=\"" + px(top) + "\" width=\"" + px(plotW) + "\" height=\"" +
        px(plotH) + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"1\"/>\n";
@@ -378,7 +384,43 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
          px(kFontTitle) + "\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"#111\">" +
          svgEscape(title_) + "</text>\n";
   }
+  return s;
+}
 
+// The corner (index into `corners`) where a legend box of boxW x boxH px covers the least
+// data: series vertices and points along line segments every few pixels (the first corner
+// wins ties).
+int SvgPlot::calcLegendCorner(const Frame& f, const double corners[4][2], double boxW, double boxH) const {
+  constexpr double kSampleSpacing = 4;  // px
+  auto mapX = [&](double x) { return f.mapX(x); };
+  auto mapY = [&](double y) { return f.mapY(y); };
+  int covered[4] = {0, 0, 0, 0};
+  auto mark = [&](double X, double Y) {
+    for (int c = 0; c < 4; ++c)
+      if (X >= corners[c][0] && X <= corners[c][0] + boxW && Y >= corners[c][1] && Y <= corners[c][1] + boxH)
+        ++covered[c];
+  };
+  for (const auto& ser : series_) {
+    for (std::size_t i = 0; i < ser.xs.size(); ++i) {
+      if (!std::isfinite(ser.xs[i]) || !std::isfinite(ser.ys[i])) continue;
+      const double X = mapX(ser.xs[i]), Y = mapY(ser.ys[i]);
+      mark(X, Y);
+      if (ser.points || i + 1 >= ser.xs.size() || !std::isfinite(ser.xs[i + 1]) || !std::isfinite(ser.ys[i + 1]))
+        continue;
+      const double X1 = mapX(ser.xs[i + 1]), Y1 = mapY(ser.ys[i + 1]);
+      const int n = static_cast<int>(std::min(1000.0, std::hypot(X1 - X, Y1 - Y) / kSampleSpacing));
+      for (int k = 1; k < n; ++k) mark(X + (X1 - X) * k / n, Y + (Y1 - Y) * k / n);
+    }
+  }
+  int best = 0;
+  for (int c = 1; c < 4; ++c)
+    if (covered[c] < covered[best]) best = c;
+  return best;
+}
+
+std::string SvgPlot::renderLegend(const Frame& f) const {
+  const double left = f.left, top = f.top, plotW = f.plotW, plotH = f.plotH;
+  std::string s;
   // Legend: labelled series, then unique band labels, then labelled reference lines.
   struct Entry {
     std::string label, color;
@@ -388,8 +430,8 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
   for (const auto& ser : series_) {
     if (!ser.label.empty()) entries.push_back({ser.label, ser.color, ser.points ? 1 : (ser.dashed ? 3 : 0)});
   }
-  for (const auto& f : fills_) {
-    if (!f.label.empty()) entries.push_back({f.label, f.color, 2});
+  for (const auto& fl : fills_) {
+    if (!fl.label.empty()) entries.push_back({fl.label, fl.color, 2});
   }
   for (const auto& b : bands_) {
     if (b.label.empty()) continue;
@@ -408,32 +450,12 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
     // The corner where the box covers the least data: series vertices and points along
     // line segments every few pixels (top right wins ties, then top left, bottom right,
     // bottom left).
-    constexpr double kInset = 6, kSampleSpacing = 4;  // px
+    constexpr double kInset = 6;  // px
     const double corners[4][2] = {{left + plotW - boxW - kInset, top + kInset},
                                   {left + kInset, top + kInset},
                                   {left + plotW - boxW - kInset, top + plotH - boxH - kInset},
                                   {left + kInset, top + plotH - boxH - kInset}};
-    int covered[4] = {0, 0, 0, 0};
-    auto mark = [&](double X, double Y) {
-      for (int c = 0; c < 4; ++c)
-        if (X >= corners[c][0] && X <= corners[c][0] + boxW && Y >= corners[c][1] && Y <= corners[c][1] + boxH)
-          ++covered[c];
-    };
-    for (const auto& ser : series_) {
-      for (std::size_t i = 0; i < ser.xs.size(); ++i) {
-        if (!std::isfinite(ser.xs[i]) || !std::isfinite(ser.ys[i])) continue;
-        const double X = mapX(ser.xs[i]), Y = mapY(ser.ys[i]);
-        mark(X, Y);
-        if (ser.points || i + 1 >= ser.xs.size() || !std::isfinite(ser.xs[i + 1]) || !std::isfinite(ser.ys[i + 1]))
-          continue;
-        const double X1 = mapX(ser.xs[i + 1]), Y1 = mapY(ser.ys[i + 1]);
-        const int n = static_cast<int>(std::min(1000.0, std::hypot(X1 - X, Y1 - Y) / kSampleSpacing));
-        for (int k = 1; k < n; ++k) mark(X + (X1 - X) * k / n, Y + (Y1 - Y) * k / n);
-      }
-    }
-    int best = 0;
-    for (int c = 1; c < 4; ++c)
-      if (covered[c] < covered[best]) best = c;
+    const int best = calcLegendCorner(f, corners, boxW, boxH);
     const double bx = corners[best][0], by = corners[best][1];
     s += "<g font-size=\"" + px(kFontTick) + "\">\n";
     s += "<rect x=\"" + px(bx) + "\" y=\"" + px(by) + "\" width=\"" + px(boxW) + "\" height=\"" +
@@ -456,6 +478,26 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
     }
     s += "</g>\n";
   }
+  return s;
+}
+
+std::string SvgPlot::renderGroup(double dx, double dy) const {
+  Frame f{};
+  calcRanges(f.x0, f.x1, f.y0, f.y1);
+  f.left = marginLeft_;
+  f.top = kMarginTop;
+  f.plotW = width_ - marginLeft_ - kMarginRight;
+  f.plotH = height_ - kMarginTop - kMarginBottom;
+  const std::string clipId = "clip" + std::to_string(static_cast<long>(dx)) + "_" +
+                             std::to_string(static_cast<long>(dy));
+
+  std::string s;
+  s += "<g transform=\"translate(" + px(dx) + "," + px(dy) + ")\" font-family=\"sans-serif\">\n";
+  s += "<defs><clipPath id=\"" + clipId + "\"><rect x=\"" + px(f.left) + "\" y=\"" + px(f.top) +
+       "\" width=\"" + px(f.plotW) + "\" height=\"" + px(f.plotH) + "\"/></clipPath></defs>\n";
+  s += "<rect x=\"" + px(f.left) + "\" y=\"" + px(f.top) + "\" width=\"" + px(f.plotW) + "\" height=\"" +
+       px(f.plotH) + "\" fill=\"#ffffff\" stroke=\"none\"/>\n";
+  s += renderBands(f, clipId) + renderGrid(f) + renderData(f, clipId) + renderLabels(f) + renderLegend(f);
   s += "</g>\n";
   return s;
 }

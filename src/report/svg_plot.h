@@ -103,6 +103,20 @@ class SvgPlot {
     bool inRange;
   };
   void calcRanges(double& x0, double& x1, double& y0, double& y1) const;
+  /// The plot area in the panel (px) and the data ranges it shows.
+  struct Frame {
+    double left, top, plotW, plotH;
+    double x0, x1, y0, y1;
+    double mapX(double x) const { return left + (x - x0) / (x1 - x0) * plotW; }
+    double mapY(double y) const { return top + (y1 - y) / (y1 - y0) * plotH; }
+  };
+  // The steps of renderGroup, in drawing order.
+  std::string renderBands(const Frame& f, const std::string& clipId) const;
+  std::string renderGrid(const Frame& f) const;
+  std::string renderData(const Frame& f, const std::string& clipId) const;
+  std::string renderLabels(const Frame& f) const;
+  std::string renderLegend(const Frame& f) const;
+  int calcLegendCorner(const Frame& f, const double corners[4][2], double boxW, double boxH) const;
 
   double width_, height_;
   std::string title_, xLabel_, yLabel_;

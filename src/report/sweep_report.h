@@ -1,11 +1,11 @@
 #pragma once
 // Reports of a knee-axis sweep: the per-participant text tables printed on stdout, the
-// JSON result, the CSV of every point, and out/<study>/report.md with SVG figures (the
-// paper's Figs. 3 and 4, stick-figure filmstrips, Tables 3 and 4 side by side).
+// JSON result and the CSV of every point; report.md and its figures: report/sweep_markdown.h.
 #include <map>
 #include <string>
 
 #include "sweep/sweep.h"
+#include "report/sweep_markdown.h"  // makeSweepReport: report.md and its figures
 #include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
@@ -25,11 +25,5 @@ std::string formatUncertaintyTables(const UncertaintyResults& uncertainty);
 /// CSV of every point: participant, lowering_m, added_mass_kg, added_mass_at_m, ok,
 /// swing_time_s, peak_knee_flexion_deg, peak_time_s, bounce, min_toe_clearance_m.
 std::string formatSweepCsv(const SweepResults& results);
-
-/// All report files, file name (relative to the output folder) -> contents.
-/// With `uncertainty`: a "How sure is the optimum" section, a tornado figure per
-/// participant and the 5-95 % band on the swing-time figure.
-std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, const SweepResults& results,
-                                                   const UncertaintyResults* uncertainty = nullptr);
 
 }  // namespace swingsim

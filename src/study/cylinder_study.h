@@ -1,6 +1,7 @@
 #pragma once
 // Study YAML for the Mauch cylinder: `kind: cylinder-bench` (swingsim generate) and
-// `kind: cylinder-fit` (swingsim fit). Paths are relative to the study file.
+// `kind: cylinder-fit` (swingsim fit), read and written through one description of their
+// fields (io/yaml_archive.h). Paths are relative to the study file.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,7 +23,8 @@ struct BenchCondition {
 /// `kind: cylinder-bench`: synthetic bench records from a cylinder model.
 struct CylinderBenchStudy {
   std::string path;
-  std::string name;
+  std::string name;             ///< `name:`, the file stem if not given
+  std::string description;      ///< free text, not used
   std::string modelPath;        ///< knee model YAML (kind: mauch): the truth
   std::string kneeAnglesPath;   ///< Winter-style CSV (frame, knee_deg)
   int strideFirstFrame = 28;    ///< heel strike
@@ -44,7 +46,8 @@ CylinderBenchStudy readCylinderBenchStudy(YamlMap& yaml);
 /// `kind: cylinder-fit`: fit cylinder models to bench files, validate on others.
 struct CylinderFitStudy {
   std::string path;
-  std::string name;
+  std::string name;                   ///< `name:`, the file stem if not given
+  std::string description;            ///< free text, not used
   std::vector<std::string> models;    ///< model YAML paths (resolved)
   std::vector<std::string> train;     ///< bench CSV paths (resolved)
   std::vector<std::string> validate;  ///< bench CSV paths (resolved)
@@ -52,6 +55,12 @@ struct CylinderFitStudy {
   double plotSeconds = 2.0;           ///< time span shown in the force plots, s
 };
 
+/// Reads the keys of a cylinder-fit study (`kind` already read). Throws InputError.
 CylinderFitStudy readCylinderFitStudy(YamlMap& yaml);
+
+/// The YAML text of a study; paths relative to `baseDir` (the folder it will be saved in)
+/// where they lie below it, else absolute.
+std::string formatCylinderBenchStudyYaml(const CylinderBenchStudy& study, const std::string& baseDir);
+std::string formatCylinderFitStudyYaml(const CylinderFitStudy& study, const std::string& baseDir);
 
 }  // namespace swingsim

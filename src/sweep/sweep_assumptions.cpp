@@ -37,9 +37,8 @@ AssumptionRange onlyForSine(const SweepVariant& v, double nominal, double low, d
   return around(nominal, low, high);
 }
 
-std::vector<SweepAssumption> makeAssumptions() {
-  std::vector<SweepAssumption> table;
-
+// The COM rule, the hip-moment time scale and its extension / flexion ratio.
+void addChoiceAndTimeScale(std::vector<SweepAssumption>& table) {
   {
     SweepAssumption a;
     a.key = "com_rule";
@@ -95,6 +94,10 @@ std::vector<SweepAssumption> makeAssumptions() {
     };
     table.push_back(a);
   }
+}
+
+// The hip moment's half-sine durations and its adaptation to the shank's inertia.
+void addHipShape(std::vector<SweepAssumption>& table) {
   {
     SweepAssumption a;
     a.key = "hip_flexion_duration";
@@ -131,6 +134,10 @@ std::vector<SweepAssumption> makeAssumptions() {
     a.apply = [](SweepVariant& v, double x) { v.hipEffortExponent = x; };
     table.push_back(a);
   }
+}
+
+// The swing-end rule's thigh target and settle dwell, and the knee friction.
+void addSwingEndAndFriction(std::vector<SweepAssumption>& table) {
   {
     SweepAssumption a;
     a.key = "thigh_target_flexion";
@@ -169,6 +176,10 @@ std::vector<SweepAssumption> makeAssumptions() {
     a.apply = [](SweepVariant& v, double x) { v.participant.swingEnd.settleDwell = x; };
     table.push_back(a);
   }
+}
+
+// The hyperextension stop's stiffness and restitution, and the integrator accuracy.
+void addStopAndIntegrator(std::vector<SweepAssumption>& table) {
   {
     SweepAssumption a;
     a.key = "stop_stiffness";
@@ -209,6 +220,15 @@ std::vector<SweepAssumption> makeAssumptions() {
     a.apply = [](SweepVariant& v, double x) { v.swing.accuracy = x; };
     table.push_back(a);
   }
+}
+
+// The table in its fixed order (the order of the Monte Carlo draws: never reorder).
+std::vector<SweepAssumption> makeAssumptions() {
+  std::vector<SweepAssumption> table;
+  addChoiceAndTimeScale(table);
+  addHipShape(table);
+  addSwingEndAndFriction(table);
+  addStopAndIntegrator(table);
   return table;
 }
 

@@ -99,7 +99,12 @@ TEST_P(ReferenceVsSimbody, TrajectoryAndSwingTimeAgree) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Participants, ReferenceVsSimbody,
-                         ::testing::Combine(::testing::Values("p1", "p2", "p3", "p4"), ::testing::Values(0.0, 0.1)));
+                         ::testing::Combine(::testing::Values("p1", "p2", "p3", "p4"), ::testing::Values(0.0, 0.1)),
+                         // Readable names (p1_lowered_100mm), not the char pointer's address.
+                         [](const ::testing::TestParamInfo<ReferenceVsSimbody::ParamType>& info) {
+                           const long mm = std::lround(std::get<1>(info.param) * 1000);
+                           return std::string(std::get<0>(info.param)) + "_lowered_" + std::to_string(mm) + "mm";
+                         });
 
 TEST(ReferenceSwing, DisagreesWhenTheLegDiffers) {
   // The comparison can fail: 1 % more shank mass in the reference moves the knee by far

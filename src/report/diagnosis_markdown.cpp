@@ -1,0 +1,29 @@
+#include "report/diagnosis_markdown.h"
+
+#include "core/output_files.h"
+#include "report/diagnosis_report.h"
+
+namespace swingsim {
+
+void writeDiagnosisReport(const std::string& outDir, const DiagnosisReportInput& in) {
+  const std::string result = formatDiagnosisText(*in.diagnosis, *in.before, *in.after);
+  std::string md = "# swingsim diagnose: " + in.studyName + "\n\nCommand: `" + in.command + "`\n\n" +
+                   (in.drive.empty() ? "" : "The model's " + in.drive + ".\n\n") + "## Before\n\n```\n" +
+                   formatComparisonTable(*in.before) + "```\n\n## Ranking and result\n\n```\n" + result +
+                   (in.check.empty() ? "" : in.check + "\n") + "```\n\n## After\n\n```\n" +
+                   formatComparisonTable(*in.after) + "```\n\n## Residual plots\n\n";
+  if (in.heldBefore && in.heldAfter) {
+    const HeldBackComparison& b = *in.heldBefore;
+    md += "## " + b.quantity + " against the measured one (never fitted)\n\n```\n" +
+          formatHeldBackText(b, *in.heldAfter) + "```\n\n![" + b.quantity + "](held-back.svg)\n\n";
+    for (const auto& w : in.heldWarnings) md += "Warning: " + w + "\n\n";
+    writeFileAtomic(outDir + "/held-back.svg", renderHeldBackSvg(b, *in.heldAfter, b.quantity));
+  }
+  for (const auto& p : writeResidualPlots(outDir, "before", *in.before))
+    md += "- before: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
+  for (const auto& p : writeResidualPlots(outDir, "after", *in.after))
+    md += "- after: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";
+  writeFileAtomic(outDir + "/report.md", md);
+}
+
+}  // namespace swingsim
