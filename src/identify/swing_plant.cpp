@@ -25,13 +25,25 @@ std::string fmt(double v, const char* f = "%.3g") {
   return buf;
 }
 
-// The measured hip angle of a record, as the thigh drive prescribes it.
-ThighKinematics thighKinematicsOf(const SwingRecord& r) {
+// The measured thigh of a record, as the thigh drive prescribes it; with `movingHip`, the
+// measured pelvis too (the hip then follows it).
+ThighKinematics thighKinematicsOf(const SwingRecord& r, bool movingHip) {
   ThighKinematics t;
   t.path = r.path;
   t.time = r.time;
   t.hipFlexion = r.hipFlexion;
+  if (movingHip) {
+    t.pelvisX = r.pelvisX;
+    t.pelvisY = r.pelvisY;
+    t.pelvisTilt = r.pelvisTilt;
+  }
   return t;
+}
+
+// The hip path of a record under the thigh drive; nullopt: the hip is fixed.
+std::optional<HipPath> hipPathOf(const SwingBase& base, const ThighKinematics& thigh) {
+  if (base.drive != SwingDrive::kThighKinematics || !HipPath::hasPelvis(thigh)) return std::nullopt;
+  return HipPath(thigh, base.participant.hipOffsetInPelvis, base.participant.path);
 }
 
 void requireSwingEffect(EffectId effect) {
@@ -134,7 +146,8 @@ Participant applyParticipantEffects(const Participant& participant, const SwingE
 }
 
 SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance, const ThighMotion* thigh) {
+                             double hipPose, double kneePose, double tolerance, const ThighMotion* thigh,
+                             const HipPath* hip) {
   const auto& e = params.effects;
   const Participant participant = applyParticipantEffects(base.participant, e);
   const LegGeometry geometry = calcLegGeometry(participant, 0.0);
@@ -142,11 +155,20 @@ SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& para
   InitialConditions initial;
   std::optional<ReferenceSwing> swing;
   std::optional<ThighMotion> ownThigh;
+  std::optional<HipPath> ownHip;
   if (base.drive == SwingDrive::kThighKinematics) {
-    if (thigh == nullptr) thigh = &ownThigh.emplace(thighKinematicsOf(record));
+    if (thigh == nullptr) {
+      const ThighKinematics kinematics = thighKinematicsOf(record, base.movingHip);
+      thigh = &ownThigh.emplace(kinematics);
+      ownHip = hipPathOf(base, kinematics);
+      if (ownHip) hip = &*ownHip;
+    }
     initial.kneeFlexion = kneePose;
     initial.kneeFlexionRate = hipPose;  // the knee's toe-off rate (the hip's is the thigh's)
-    swing.emplace(geometry, law, *thigh);
+    if (hip != nullptr)
+      swing.emplace(geometry, law, *thigh, *hip);
+    else
+      swing.emplace(geometry, law, *thigh);
   } else {
     HipMomentProfile drive;
     drive.kind = HipMomentProfile::Kind::kTable;
@@ -294,7 +316,9 @@ SwingPlant::SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vect
   if (base_.drive == SwingDrive::kThighKinematics)
     for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) {
       const SwingRecord& r = record(i);
-      thighs_.emplace_back(thighKinematicsOf(r));
+      const ThighKinematics kinematics = thighKinematicsOf(r, base_.movingHip);
+      thighs_.emplace_back(kinematics);
+      hips_.push_back(hipPathOf(base_, kinematics));
     }
 }
 
@@ -316,7 +340,7 @@ SwingPlant::PoseFit SwingPlant::fitPose(const SwingModelParams& params, std::siz
   const SwingRecord& r = record(index);
   const ThighMotion* thigh = thighOf(index);
   ResidualFunction f = [&](const Eigen::VectorXd& x) {
-    const SwingPrediction p = predictSwing(base_, params, r, x[0], x[1], tolerance_, thigh);
+    const SwingPrediction p = predictSwing(base_, params, r, x[0], x[1], tolerance_, thigh, hipOf(index));
     Eigen::VectorXd res(static_cast<Eigen::Index>(rowsPerSample() * r.time.size()));
     Eigen::Index row = 0;
     appendResiduals(r, p, res, row);
@@ -326,7 +350,7 @@ SwingPlant::PoseFit SwingPlant::fitPose(const SwingModelParams& params, std::siz
   PoseFit out;
   out.first = lm.x[0];
   out.knee = lm.x[1];
-  out.prediction = predictSwing(base_, params, r, out.first, out.knee, tolerance_, thigh);
+  out.prediction = predictSwing(base_, params, r, out.first, out.knee, tolerance_, thigh, hipOf(index));
   return out;
 }
 
@@ -371,7 +395,7 @@ PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> held
     for (std::size_t f = 0; f < train_.size(); ++f) {
       const auto& r = train_[f];
       const SwingPrediction pr = predictSwing(base_, p, r, x[g + 2 * static_cast<Eigen::Index>(f)],
-                                              x[g + 2 * static_cast<Eigen::Index>(f) + 1], tolerance_, thighOf(f));
+                                              x[g + 2 * static_cast<Eigen::Index>(f) + 1], tolerance_, thighOf(f), hipOf(f));
       appendResiduals(r, pr, res, row);
     }
     return res;
@@ -598,7 +622,7 @@ std::string SwingPlant::verify(const PlantModel& model) const {
     setup.participant.initial.kneeFlexion = pose.knee;
     if (base_.drive == SwingDrive::kThighKinematics) {
       setup.participant.drive = SwingDrive::kThighKinematics;
-      setup.participant.thighKinematics = thighKinematicsOf(r);
+      setup.participant.thighKinematics = thighKinematicsOf(r, base_.movingHip);
       setup.participant.initial.kneeFlexionRate = pose.first;
     } else {
       setup.participant.hipMoment = {};

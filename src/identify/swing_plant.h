@@ -14,6 +14,7 @@
 
 #include "identify/diagnosis_engine.h"
 #include "knee/knee_added_effects.h"
+#include "leg/hip_path.h"
 #include "leg/thigh_motion.h"
 #include "model/knee_model.h"
 #include "model/leg_parameters.h"
@@ -64,6 +65,9 @@ struct SwingBase {
   /// each record's free toe-off state is the knee's angle and rate (the hip's come from
   /// the measured thigh).
   SwingDrive drive = SwingDrive::kHipMoment;
+  /// Thigh drive: a record with the measured pelvis moves the hip along it (the participant's
+  /// hip_offset_in_pelvis_m places the hip in the pelvis); false pins the hip in space.
+  bool movingHip = true;
   /// Warnings about the records found while reading them (a flipped knee sign, a pelvis
   /// tilt left unread), each naming the key that fixes it: the plant's warnings().
   std::vector<std::string> notes;
@@ -89,7 +93,8 @@ struct SwingPrediction {
   std::vector<double> hipMoment, kneeMoment;  ///< N m, + = flexion: the drive's (or the one the thigh needs) and the knee law's
 };
 SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance = 1e-8, const ThighMotion* thigh = nullptr);
+                             double hipPose, double kneePose, double tolerance = 1e-8, const ThighMotion* thigh = nullptr,
+                             const HipPath* hip = nullptr);
 
 /// Phases from the swing events of the model's knee: early flexion (toe-off to peak knee
 /// flexion), late extension (peak to entering the zone of stability), terminal/stop contact.
@@ -145,6 +150,7 @@ class SwingPlant final : public DiagnosisPlant {
   PoseFit fitPose(const SwingModelParams& params, std::size_t record) const;
   const SwingRecord& record(std::size_t i) const { return i < train_.size() ? train_[i] : validate_[i - train_.size()]; }
   const ThighMotion* thighOf(std::size_t i) const { return thighs_.empty() ? nullptr : &thighs_[i]; }
+  const HipPath* hipOf(std::size_t i) const { return hips_.empty() || !hips_[i] ? nullptr : &*hips_[i]; }
   /// Free toe-off parameters of record i and their residual rows.
   std::vector<BoundedParameter> poseParameters(std::size_t i) const;
   void appendResiduals(const SwingRecord& r, const SwingPrediction& p, Eigen::VectorXd& res, Eigen::Index& row) const;
@@ -153,6 +159,7 @@ class SwingPlant final : public DiagnosisPlant {
   SwingBase base_;
   std::vector<SwingRecord> train_, validate_;
   std::vector<ThighMotion> thighs_;  ///< thigh drive: each record's hip spline, train then validate
+  std::vector<std::optional<HipPath>> hips_;  ///< thigh drive: each record's hip path (nullopt: fixed hip)
   double tolerance_;
 };
 

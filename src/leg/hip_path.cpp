@@ -60,7 +60,9 @@ double evaluate(const SimTK::Spline& spline, double first, double last, int orde
 }  // namespace
 
 bool HipPath::hasPelvis(const ThighKinematics& k) {
-  return !k.pelvisX.empty() || !k.pelvisY.empty() || !k.pelvisTilt.empty();
+  // The pelvis's translation moves the hip; its tilt alone only turns the thigh's angle in
+  // space (already in hipFlexion), with the hip left where Burkett fixed it.
+  return !k.pelvisX.empty() || !k.pelvisY.empty();
 }
 
 HipPath::HipPath(const ThighKinematics& k, const std::optional<std::array<double, 2>>& offset,

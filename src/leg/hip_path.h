@@ -19,7 +19,7 @@ namespace swingsim {
 
 class HipPath {
  public:
-  /// The kinematics has the pelvis (any pelvis column given): the hip moves.
+  /// The kinematics has the pelvis's translation (pelvisX or pelvisY): the hip moves.
   static bool hasPelvis(const ThighKinematics& kinematics);
   /// Fits the path. Throws InputError naming `participantPath` and hip_offset_in_pelvis_m if
   /// the offset is missing, and naming kinematics.path if a pelvis column does not have one

@@ -83,6 +83,13 @@ void serialize(A& a, StudyRecord& r) {
 }
 
 template <class A>
+void serialize(A& a, GrfSettings& g) {
+  a.path("file", g.path);
+  a.optionalText("vertical_force", g.verticalForce);
+  a.optionalNumber("threshold_N", g.thresholdN, [](double v) { return v > 0 && v < 1e4 ? "" : "must be in (0, 10000) N"; });
+}
+
+template <class A>
 void serialize(A& a, DiagnosisStudy& s) {
   a.choice("kind", s.plant, {{"cylinder-diagnosis", PlantKind::kCylinder}, {"swing-diagnosis", PlantKind::kSwing}});
   if (s.plant == PlantKind::kSwing) a.path("participant", s.participantPath);
@@ -102,6 +109,11 @@ void serialize(A& a, DiagnosisStudy& s) {
     MotionColumns motion = s.motionColumns.value_or(MotionColumns{});
     a.optionalMap("motion_columns", motion, hasMotionColumns);
     if (hasMotionColumns) s.motionColumns = motion;
+    bool hasGrf = s.grf.has_value();
+    GrfSettings grf = s.grf.value_or(GrfSettings{});
+    a.optionalMap("grf", grf, hasGrf);
+    if (hasGrf) s.grf = grf;
+    if (A::kReading || !s.movingHip) a.optionalFlag("moving_hip", s.movingHip);
     for (const auto& [key, list] : {std::pair{"train", &s.train}, std::pair{"validate", &s.validate}})
       for (const auto& r : *list) {
         const std::string& p = r.path;
@@ -171,15 +183,27 @@ DiagnosisStudy loadDiagnosisStudy(const std::string& path) {
   return s;
 }
 
-MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table) {
+MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table,
+                                 const std::optional<GrfSettings>& grf) {
   MotionColumns out = columns;
   if (record.toeOffTime) out.toeOffTime = record.toeOffTime;
   if (record.heelContactTime) out.heelContactTime = record.heelContactTime;
-  if (record.swing)
-    // The K-th swing comes from the swing events of the file (io/swing_events.h, findSwings),
-    // which this build does not have.
-    throw InputError(table.path + ": swing: " + std::to_string(*record.swing) + ": finding swings in a file needs "
-                     "io/swing_events (not in this build); give toe_off_s and heel_contact_s instead");
+  if (!record.swing) return out;
+  // The K-th complete swing of the file: events from the GRF where it covers them, else
+  // from the kinematics (io/swing_events.h).
+  const std::vector<FoundSwing> swings = findSwings(table, columns, grf);
+  const auto k = static_cast<std::size_t>(*record.swing);
+  if (k < 1 || k > swings.size()) {
+    std::string found;
+    for (std::size_t i = 0; i < swings.size(); ++i)
+      found += (i ? ", " : "") + std::to_string(i + 1) + ": " + formatNumber(swings[i].toeOff) + "-" +
+               formatNumber(swings[i].heelContact) + " s";
+    throw InputError(table.path + ": swing: expected a swing number from 1 to " + std::to_string(swings.size()) +
+                     " (the complete swings found" + (found.empty() ? "" : ": " + found) +
+                     "; `swingsim swings FILE` lists them) (got " + std::to_string(k) + ")");
+  }
+  out.toeOffTime = swings[k - 1].toeOff;
+  out.heelContactTime = swings[k - 1].heelContact;
   return out;
 }
 
@@ -187,7 +211,7 @@ SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entr
   SwingRecord r;
   if (isMotionFile(entry.path)) {
     const MotionTable table = readMotionTable(entry.path);
-    const MotionColumns columns = resolveRecordTimes(entry, *study.motionColumns, table);
+    const MotionColumns columns = resolveRecordTimes(entry, *study.motionColumns, table, study.grf);
     std::optional<MotionTable> id;
     if (!entry.inverseDynamicsPath.empty()) id = readMotionTable(entry.inverseDynamicsPath);
     r = makeSwingRecord(table, columns, id ? &*id : nullptr);
@@ -213,6 +237,7 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
   base.participant = loadParticipant(study.participantPath);
   base.knee = loadKneeModel(study.baseModelPath);
   base.drive = study.drive;
+  base.movingHip = study.movingHip;
   std::vector<SwingRecord> train, validate;
   for (const auto* entries : {&study.train, &study.validate})
     for (const auto& entry : *entries) {

@@ -22,6 +22,7 @@
 
 #include "identify/diagnosis_engine.h"
 #include "io/motion_file.h"
+#include "io/swing_events.h"
 #include "model/leg_parameters.h"
 
 namespace swingsim {
@@ -50,6 +51,12 @@ struct DiagnosisStudy {
   std::vector<StudyRecord> train;     ///< training records
   std::vector<StudyRecord> validate;  ///< held-out records
   std::optional<MotionColumns> motionColumns;  ///< swing: how .mot/.sto records are read
+  /// swing: the GRF .mot whose vertical force gives `swing: K` records their events (`grf:`
+  /// {file, vertical_force, threshold_N}); without it, or past its end, the kinematics do.
+  std::optional<GrfSettings> grf;
+  /// swing, thigh drive: a record with pelvis columns moves the hip along the measured pelvis
+  /// (`moving_hip`, default true); false pins the hip in space as Burkett did.
+  bool movingHip = true;
   EffectSelectionSettings settings;
   bool fitSwitches = false;           ///< cylinder: refit switch widths and xhy before the baseline
   double plotSeconds = 2.0;           ///< cylinder: s of each record shown in residual-vs-time plots
@@ -72,7 +79,8 @@ std::string formatDiagnosisStudyYaml(const DiagnosisStudy& study, const std::str
 
 /// The motion columns that cut `record` from its file `table`: the study's, with the
 /// entry's toe-off and heel-contact times, or those of its `swing: K`. Throws InputError.
-MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table);
+MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table,
+                                 const std::optional<GrfSettings>& grf = std::nullopt);
 
 /// One swing record of a swing study: a CSV, or cut from an OpenSim file by the study's
 /// motion_columns and the entry's times, with the knee moment of the entry's

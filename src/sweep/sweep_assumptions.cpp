@@ -185,7 +185,7 @@ void addStopAndIntegrator(std::vector<SweepAssumption>& table) {
     a.key = "stop_stiffness";
     a.name = "hyperextension-stop stiffness";
     a.unit = "N m/rad^1.5";
-    a.source = "no published bumper stiffness (literature.md); 1.25e4 keeps a 0.2 kg m^2 shank hitting at 8 rad/s "
+    a.source = "no published bumper stiffness (docs/assumptions.md); 1.25e4 keeps a 0.2 kg m^2 shank hitting at 8 rad/s "
                "within Burkett's 4 deg (p = (1.25 I v^2 / k)^0.4), 5e4 is 2.5 times the file's value "
                "(JointStopParams::stiffness)";
     a.read = [](const SweepVariant& v) { return v.knee.spec.stop.stiffness; };
@@ -200,7 +200,7 @@ void addStopAndIntegrator(std::vector<SweepAssumption>& table) {
     a.key = "stop_restitution";
     a.name = "hyperextension-stop restitution e";
     a.unit = "1";
-    a.source = "no published bumper restitution; literature.md prior 0.3-0.5 at swing impact speeds (linear "
+    a.source = "no published bumper restitution; docs/assumptions.md prior 0.3-0.5 at swing impact speeds (linear "
                "spring-dampers with damping ratio 0.2-0.3, osim-rl's knee limit, Hunt-Crossley at c v = 1-2)";
     a.read = [](const SweepVariant& v) { return v.knee.spec.stop.restitution; };
     a.calcRange = [read = a.read](const SweepVariant& v) { return around(read(v), kRestitutionLow, kRestitutionHigh); };

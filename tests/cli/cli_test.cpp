@@ -150,6 +150,9 @@ fs::path writeWinterWith(const fs::path& dir, const std::string& thigh) {
     EXPECT_NE(at, std::string::npos) << from;
     yaml.replace(at, from.size(), to);
   }
+  // The measured pelvis moves the hip: where the hip sits in the pelvis (subject01's scaled
+  // Gait2354 model, hip_r's location in the pelvis, as import-osim writes it).
+  yaml += "hip_offset_in_pelvis_m: [-0.0724, -0.0677]\n";
   std::ofstream(dir / "walk.yaml") << yaml;
   return dir / "walk.yaml";
 }
