@@ -6,6 +6,7 @@
 #include "identify/swing_plant.h"
 #include "identify/synthetic_swing.h"
 #include "io/participant_loader.h"
+#include "hidden_damper_comparison.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosis_study.h"
 
@@ -21,14 +22,8 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 TEST(SwingResidualPlot, FivePanelsWithTitlesAxisUnitsAndSwingPhaseBands) {
-  SwingBase base;
-  base.participant = loadParticipant(kRoot + "/participants/p1.yaml");
-  base.knee = loadKneeModel(kRoot + "/models/damping-table-default.yaml");
   // Data with a hidden viscous damper, compared with the plain model: a structured residual.
-  SwingModelParams truth = addSwingEffect({}, EffectId::kKneeViscousDamping, 0);
-  truth.effects.knee.viscousDamping = 0.3;
-  const std::vector<SwingRecord> train = {makeSyntheticSwing(base, truth, {"normal", 1.0, 1.0}, 0.5, 7)};
-  const Comparison cmp = SwingPlant(base, train, {}).compare(SwingModel(SwingModelParams{}));
+  const Comparison cmp = testing::compareHiddenDamperSwing();
   ASSERT_EQ(cmp.records.size(), 1u);
   const std::string svg = renderResidualSvg(cmp.records[0], cmp, "compare: normal (train)");
 

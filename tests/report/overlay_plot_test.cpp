@@ -13,12 +13,12 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "report/svg_plot.h"
+#include "hidden_damper_comparison.h"
 
 namespace swingsim {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kRoot = SWINGSIM_SOURCE_DIR;
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -37,13 +37,8 @@ std::string readText(const fs::path& path) {
 // the same stem: the figure has three panels (knee, hip, knee moment), each with the measured
 // series (black) and the model's (palette colour 1).
 TEST(OverlayPlot, WritesMeasuredAndModelForKneeHipAndKneeMoment) {
-  SwingBase base;
-  base.participant = loadParticipant(kRoot + "/participants/p1.yaml");
-  base.knee = loadKneeModel(kRoot + "/models/damping-table-default.yaml");
-  SwingModelParams truth = addSwingEffect({}, EffectId::kKneeViscousDamping, 0);
-  truth.effects.knee.viscousDamping = 0.3;
-  const std::vector<SwingRecord> train = {makeSyntheticSwing(base, truth, {"normal", 1.0, 1.0}, 0.5, 7)};
-  const Comparison cmp = SwingPlant(base, train, {}).compare(SwingModel(SwingModelParams{}));
+  // Data with a hidden viscous damper, compared with the plain model: a structured residual.
+  const Comparison cmp = testing::compareHiddenDamperSwing();
   ASSERT_EQ(cmp.records.size(), 1u);
   const RecordComparison& r = cmp.records[0];
   ASSERT_EQ(r.secondaryMeasured.size(), r.time.size());
