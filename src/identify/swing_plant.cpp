@@ -1,3 +1,5 @@
+// One unit of ~700 lines: the swing plant's model (knee law, effects, the reference swing
+// along a record), its pose fits and its comparisons share the record-level helpers here.
 #include "identify/swing_plant.h"
 
 #include <Eigen/Dense>

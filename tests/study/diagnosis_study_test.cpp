@@ -333,3 +333,45 @@ TEST(StudyRecordEntries, BadEntriesNameFileKeyExpectedAndFound) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// `swing: K` on the demo's IK file: the K-th complete swing, its events from the GRF file
+// where it covers them (swing 1) and from the kinematics past its end (swing 2), as
+// `swingsim swings` lists them; a K beyond the swings found is an error naming the range.
+const std::string kDemoData = std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/opensim-subject01/";
+
+TEST(StudyRecordSwingNumber, ResolvesToTheSwingsFoundAndRefusesOneThatDoesNotExist) {
+  const MotionTable ik = readMotionTable(kDemoData + "gait2392_subject01_walk1_ik.mot");
+  MotionColumns columns;
+  columns.hip = "hip_flexion_r";
+  columns.knee = "knee_angle_r";
+  columns.kneeSign = -1;
+  columns.pelvisTilt = "pelvis_tilt";
+  GrfSettings grf;
+  grf.path = kDemoData + "subject01_walk1_grf.mot";
+  const std::vector<FoundSwing> swings = findSwings(ik, columns, grf);
+  ASSERT_EQ(swings.size(), 2u);
+  StudyRecord entry;
+  entry.path = ik.path;
+  for (int k = 1; k <= 2; ++k) {
+    entry.swing = k;
+    const MotionColumns cut = resolveRecordTimes(entry, columns, ik, grf);
+    EXPECT_EQ(cut.toeOffTime, swings[static_cast<std::size_t>(k - 1)].toeOff);
+    EXPECT_EQ(cut.heelContactTime, swings[static_cast<std::size_t>(k - 1)].heelContact);
+  }
+  EXPECT_EQ(swings[0].toeOffSource, "grf");
+  EXPECT_EQ(swings[1].heelContactSource, "kinematics");
+  entry.swing = 3;
+  try {
+    resolveRecordTimes(entry, columns, ik, grf);
+    ADD_FAILURE() << "swing 3 of 2 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("gait2392_subject01_walk1_ik.mot: swing: expected a swing number from 1 to 2"));
+    EXPECT_THAT(e.what(), HasSubstr("(got 3)"));
+  }
+}
+
+}  // namespace
+}  // namespace swingsim
