@@ -4,7 +4,6 @@
 // Lists the complete swings of one leg in an OpenSim IK file, numbered from 1 so that a
 // study can pick one (`swing: K`): toe-off and heel contact from the GRF file's vertical
 // force where it covers the time, from the joint angles elsewhere (docs/swing-events.md).
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -55,12 +54,10 @@ Json makeSwingsJson(const SwingsArguments& a, const MotionColumns& columns, cons
 
 int runSwings(const SwingsArguments& a) {
   const MotionTable table = readMotionTable(a.kinematics);
-  MotionColumns columns;
-  columns.hip = "hip_flexion_" + a.side;
-  columns.knee = "knee_angle_" + a.side;
+  // The leg's OpenSim labels; the thigh's angle in space (hip + pelvis tilt) when the file
+  // has the tilt.
+  MotionColumns columns = openSimLegColumns(table, a.side);
   columns.kneeSign = a.kneeSign;
-  // The thigh's angle in space (hip + pelvis tilt) when the file has the tilt.
-  if (std::find(table.labels.begin(), table.labels.end(), "pelvis_tilt") != table.labels.end()) columns.pelvisTilt = "pelvis_tilt";
   std::optional<GrfSettings> grf;
   if (a.grf) grf = GrfSettings{*a.grf, a.verticalForce.value_or(defaultVerticalForce(a.side)), a.thresholdN};
   const std::vector<FoundSwing> swings = findSwings(table, columns, grf);

@@ -65,12 +65,12 @@ struct SwingBase {
   /// each record's free toe-off state is the knee's angle and rate (the hip's come from
   /// the measured thigh).
   SwingDrive drive = SwingDrive::kHipMoment;
-  /// Thigh drive: a record with the measured pelvis moves the hip along it (the participant's
-  /// hip_offset_in_pelvis_m places the hip in the pelvis); false pins the hip in space.
-  bool movingHip = true;
   /// Warnings about the records found while reading them (a flipped knee sign, a pelvis
   /// tilt left unread), each naming the key that fixes it: the plant's warnings().
   std::vector<std::string> notes;
+  /// Thigh drive: a record with the measured pelvis moves the hip along it (the participant's
+  /// hip_offset_in_pelvis_m places the hip in the pelvis); false pins the hip in space.
+  bool movingHip = true;
 };
 
 /// `params` with `effect` switched on (value 0 or scale 1; `gridValue`: the friction

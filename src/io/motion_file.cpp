@@ -254,12 +254,12 @@ void checkKneeUnit(const MotionTable& table, const std::string& label, const std
 
 }  // namespace
 
-MotionColumns openSimRightLegColumns(const MotionTable& table) {
+MotionColumns openSimLegColumns(const MotionTable& table, const std::string& side) {
   MotionColumns c;
-  c.hip = "hip_flexion_r";
-  c.knee = "knee_angle_r";
-  c.kneeSign = -1;  // OpenSim's knee_angle_r is 0 straight and negative in flexion
-  c.kneeMoment = kOpenSimKneeMoment;
+  c.hip = "hip_flexion_" + side;
+  c.knee = "knee_angle_" + side;
+  c.kneeSign = -1;  // OpenSim's knee_angle is 0 straight and negative in flexion
+  c.kneeMoment = c.knee + "_moment";
   const auto has = [&](const char* label) { return std::find(table.labels.begin(), table.labels.end(), label) != table.labels.end(); };
   if (has("pelvis_tilt")) c.pelvisTilt = "pelvis_tilt";
   if (has("pelvis_tx")) c.pelvisTx = "pelvis_tx";

@@ -52,10 +52,13 @@ MotionTable parseMotionTable(const std::string& text, const std::string& path);
 
 // MotionColumns (which columns make a swing record, and how): model/motion_columns.h.
 
-/// The labels OpenSim's gait models (Gait2354, Gait2392, Gait10dof18musc) give the right
-/// leg: hip_flexion_r, knee_angle_r (knee_sign -1: OpenSim's knee angle is negative in
-/// flexion), knee_angle_r_moment; pelvis_tilt, pelvis_tx, pelvis_ty when `table` has them.
-MotionColumns openSimRightLegColumns(const MotionTable& table);
+/// The labels OpenSim's gait models (Gait2354, Gait2392, Gait10dof18musc) give one leg,
+/// `side` "r" or "l": hip_flexion_<side>, knee_angle_<side> (knee_sign -1: OpenSim's knee
+/// angle is negative in flexion), knee_angle_<side>_moment; pelvis_tilt, pelvis_tx,
+/// pelvis_ty when `table` has them.
+MotionColumns openSimLegColumns(const MotionTable& table, const std::string& side);
+/// The right leg's (a plain .mot named as a participant's thigh_kinematics).
+inline MotionColumns openSimRightLegColumns(const MotionTable& table) { return openSimLegColumns(table, "r"); }
 
 /// Default label of the knee moment in an OpenSim inverse-dynamics .sto (right leg).
 inline const char* const kOpenSimKneeMoment = "knee_angle_r_moment";

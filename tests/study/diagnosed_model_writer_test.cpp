@@ -63,7 +63,7 @@ TEST(DiagnosedModel, SwingKneeModelAndParticipantLoadBackAndGiveTheFinalModelsKn
   EXPECT_EQ(knee.spec.kneeEffects.modelScale, final.kneeModelScale);
   // The saved knee law is the diagnosed one (model law scaled, effects, stop), sample by sample.
   const SwingBase& base = dynamic_cast<const SwingPlant&>(*plant).base();
-  SwingBase savedBase{participant, knee, SwingDrive::kHipMoment, {}};
+  SwingBase savedBase{participant, knee, SwingDrive::kHipMoment, {}, true};
   const KneeLawSum diagnosed = makeSwingKneeLaw(base, final);
   const KneeLawSum reloaded = makeSwingKneeLaw(savedBase, SwingModelParams{});
   for (double flexion : {0.02, 0.3, 1.1})
