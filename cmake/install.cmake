@@ -44,7 +44,8 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/swingsimConfig.cmake ${CMAKE_CURRENT_B
 if(NOT SWINGSIM_SANITIZE)
   add_test(NAME install_downstream_find_package
            COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${CMAKE_BINARY_DIR} -DSOURCE_DIR=${CMAKE_CURRENT_SOURCE_DIR}
-                   -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/install_test -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
+                   -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/install_test
+                   -DCMAKE_DIR=${SWINGSIM_INSTALL_CMAKEDIR} -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
                    -DCXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER}
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/install/check_downstream.cmake)
   set_tests_properties(install_downstream_find_package PROPERTIES TIMEOUT 300)

@@ -1,11 +1,11 @@
 # The install test (CTest install_downstream_find_package, cmake/install.cmake):
 #   cmake -DBUILD_DIR=<swingsim build> -DSOURCE_DIR=<checkout> -DWORK_DIR=<scratch>
-#         [-DCXX_COMPILER=...] [-DCXX_COMPILER_LAUNCHER=...] -P check_downstream.cmake
+#         -DCMAKE_DIR=<the package's folder in the prefix, lib/cmake/swingsim> [-DCXX_COMPILER=...] [-DCXX_COMPILER_LAUNCHER=...] -P check_downstream.cmake
 # installs the build into WORK_DIR/prefix, builds tests/install/downstream against that prefix
 # only, runs it on participants/p1.yaml and checks that its swing time is the installed
 # command line's (`simulate --json`), to the last digit. Any failing step fails the test.
 cmake_minimum_required(VERSION 3.22)
-foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
+foreach(var BUILD_DIR SOURCE_DIR WORK_DIR CMAKE_DIR)
   if(NOT ${var})
     message(FATAL_ERROR "check_downstream.cmake: -D${var}=... is required")
   endif()
@@ -21,7 +21,8 @@ file(MAKE_DIRECTORY ${WORK_DIR})
 function(run_step name)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
-    message(FATAL_ERROR "${name} failed (${status}):\n  ${ARGN}\n${out}\n${err}")
+    list(JOIN ARGN " " command)
+    message(FATAL_ERROR "${name} failed (${status}):\n  ${command}\n${out}\n${err}")
   endif()
   set(step_output "${out}" PARENT_SCOPE)
 endfunction()
@@ -39,8 +40,8 @@ endif()
 run_step("downstream configure" ${CMAKE_COMMAND} ${configure_args})
 # The package must come from the prefix, not from the build tree or the system.
 file(STRINGS ${downstream_build}/CMakeCache.txt found_dir REGEX "^swingsim_DIR:")
-if(NOT found_dir STREQUAL "swingsim_DIR:PATH=${prefix}/lib/cmake/swingsim")
-  message(FATAL_ERROR "downstream found swingsim elsewhere: ${found_dir} (expected ${prefix}/lib/cmake/swingsim)")
+if(NOT found_dir STREQUAL "swingsim_DIR:PATH=${prefix}/${CMAKE_DIR}")
+  message(FATAL_ERROR "downstream found swingsim elsewhere: ${found_dir} (expected ${prefix}/${CMAKE_DIR})")
 endif()
 run_step("downstream build" ${CMAKE_COMMAND} --build ${downstream_build})
 
