@@ -77,7 +77,10 @@ std::string formatDegrees(double rad) { return formatNumber(std::round(rad * kRa
 
 // ---- XML ----------------------------------------------------------------------------------
 
-std::string formatVector(const Eigen::Vector3d& v) { return formatNumber(v.x()) + " " + formatNumber(v.y()) + " " + formatNumber(v.z()); }
+// (+ 0.0 writes -0 as 0.)
+std::string formatVector(const Eigen::Vector3d& v) {
+  return formatNumber(v.x() + 0.0) + " " + formatNumber(v.y() + 0.0) + " " + formatNumber(v.z() + 0.0);
+}
 
 XMLElement* addText(XMLElement* parent, const char* name, const std::string& text) {
   XMLElement* e = parent->InsertNewChildElement(name);
@@ -108,12 +111,18 @@ void addBody(XMLElement* objects, const OsimBody& b) {
                             " " + formatNumber(i(0, 2)) + " " + formatNumber(i(1, 2)));
 }
 
+// OpenSim's orientation: body-fixed x-y-z angles (a, b, c), R = Rx(a) Ry(b) Rz(c), rad; away
+// from b = +-90 deg, which the writer never needs.
+Eigen::Vector3d calcBodyFixedXyz(const Eigen::Matrix3d& r) {
+  const double b = std::asin(std::clamp(r(0, 2), -1.0, 1.0));
+  return {std::atan2(-r(1, 2), r(2, 2)), b, std::atan2(-r(0, 1), r(0, 0))};
+}
+
 void addOffsetFrame(XMLElement* frames, const std::string& name, const std::string& body, const Eigen::Isometry3d& pose) {
   XMLElement* f = addNamed(frames, "PhysicalOffsetFrame", name);
   addText(f, "socket_parent", framePath(body));
   addText(f, "translation", formatVector(pose.translation()));
-  // Body-fixed x-y-z angles, as the reader (and OpenSim) composes them.
-  addText(f, "orientation", formatVector(pose.linear().eulerAngles(0, 1, 2)));
+  addText(f, "orientation", formatVector(calcBodyFixedXyz(pose.linear())));
 }
 
 void addCoordinate(XMLElement* coordinates, const OsimCoordinate& c) {
