@@ -7,11 +7,13 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include "core/input_error.h"
 #include "core/units.h"
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
