@@ -49,7 +49,7 @@ std::string makeHeader(const Participant& p, const std::string& kneeName, double
   return "Written by `swingsim export-osim` from " + std::filesystem::path(p.path).filename().string() + " (participant " + p.name +
          "), knee axis lowered " + formatNumber(lowering) + " m, knee model " + kneeName +
          ".\n  The planar leg swingsim simulates (docs/export-osim.md): pelvis welded to the ground with the hip at " +
-         "0.530 x height; femur_r, tibia_r: the thigh and shank (hip and knee pins); talus_r: the whole foot, welded at the ankle, "
+         "0.530 x height (plus a stated toe_clearance.hip_rise_m); femur_r, tibia_r: the thigh and shank (hip and knee pins); talus_r: the whole foot, welded at the ankle, "
          "perpendicular to the shank;\n  calcn_r and toes_r: massless, welded; toes_r's origin is the toe tip. Only Izz is swingsim's; "
          "Ixx, Iyy are a thin rod's. No muscles, no knee damper: a model to play the swing on, not to simulate it again.\n"
          "  Play the swing: File > Load Motion " + stoName + " (written by `swingsim simulate` for this participant at this lowering);"
