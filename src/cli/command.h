@@ -31,6 +31,7 @@ Command addGenerateCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
 Command addSwingsCommand(CLI::App& app);
 Command addImportOsimCommand(CLI::App& app);
+Command addExportOsimCommand(CLI::App& app);
 
 /// Declares `--flag VALUE` stored in `value` (left unset unless given), shown as `typeName`
 /// in --help. `value` must outlive the parse (a member of the command's argument struct).

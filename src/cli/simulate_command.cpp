@@ -118,17 +118,8 @@ int runSimulate(const SimulateArguments& a) {
   for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
   std::printf("\n");
 
-  const std::string stem = makeSafeFileStem(p.name);
-  const std::string out = a.out.value_or("out/simulate-" + stem);
-  // Whole millimetres as lower050mm; any other lowering in full, so two lowerings never
-  // share a file (0.4 mm is lower0.4mm, not lower000mm).
-  const double mm = setup.lowering * 1000;
-  char lowering[64];
-  if (std::fabs(mm - std::round(mm)) < 1e-9 && mm < 1e6)
-    std::snprintf(lowering, sizeof lowering, "lower%03.0fmm", mm);
-  else
-    std::snprintf(lowering, sizeof lowering, "lower%smm", formatNumber(mm).c_str());
-  const std::string tag = stem + "-" + lowering;
+  const std::string out = a.out.value_or("out/simulate-" + makeSafeFileStem(p.name));
+  const std::string tag = makeTrajectoryFileStem(p.name, setup.lowering);
   writeFileAtomic(out + "/" + tag + ".csv", formatTrajectoryCsv(r.trajectory));
   writeFileAtomic(out + "/" + tag + ".sto", formatTrajectorySto(r.trajectory, tag));
   writeFileAtomic(out + "/" + tag + "-moments.svg", formatSwingMomentsSvg(r.trajectory, p.name + ", drive: " + driveKey(p.drive)));

@@ -141,6 +141,20 @@ void readSpatialTransform(const std::string& path, const XMLElement* st, OsimJoi
   j.motionAtZero = makePose(r, t);
 }
 
+// A <Coordinate>: name, and <default_value>, <range>, <clamped> when given.
+OsimCoordinate readCoordinate(const std::string& path, const XMLElement* e) {
+  OsimCoordinate c;
+  c.name = e->Attribute("name") ? e->Attribute("name") : "";
+  if (e->FirstChildElement("default_value")) c.defaultValue = readNumbers(path, e, "default_value", 1)[0];
+  if (e->FirstChildElement("range")) {
+    const auto range = readNumbers(path, e, "range", 2);
+    c.rangeMin = range[0];
+    c.rangeMax = range[1];
+  }
+  if (const XMLElement* clamped = e->FirstChildElement("clamped")) c.clamped = textOf(clamped).find("true") != std::string::npos;
+  return c;
+}
+
 OsimJoint readJoint(const std::string& path, const XMLElement* e) {
   OsimJoint j;
   j.name = e->Attribute("name") ? e->Attribute("name") : "";
@@ -160,6 +174,9 @@ OsimJoint readJoint(const std::string& path, const XMLElement* e) {
                          vec3(readNumbers(path, f, "translation", 3)));
       }
   };
+  if (const XMLElement* coordinates = e->FirstChildElement("coordinates"))
+    for (const XMLElement* c = coordinates->FirstChildElement("Coordinate"); c; c = c->NextSiblingElement("Coordinate"))
+      j.coordinates.push_back(readCoordinate(path, c));
   resolve("socket_parent_frame", j.parentBody, j.parentFrame);
   resolve("socket_child_frame", j.childBody, j.childFrame);
   if (const XMLElement* st = e->FirstChildElement("SpatialTransform")) readSpatialTransform(path, st, j);
@@ -349,7 +366,11 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
   const std::string femurName = "femur_" + side, tibiaName = "tibia_" + side, talusName = "talus_" + side,
                     calcnName = "calcn_" + side, toesName = "toes_" + side;
   const OsimBody &femur = requireLegBody(m, femurName), &tibia = requireLegBody(m, tibiaName);
-  const OsimBody &talus = requireLegBody(m, talusName), &calcn = requireLegBody(m, calcnName), &toes = requireLegBody(m, toesName);
+  // The foot's parts may each be massless (export-osim's calcn and toes are) but not all three.
+  const OsimBody &talus = m.getBody(talusName), &calcn = m.getBody(calcnName), &toes = m.getBody(toesName);
+  if (!(talus.mass + calcn.mass + toes.mass > 0))
+    throw InputError(m.path + ":" + std::to_string(talus.line) + ": <Body name=\"" + talusName + "\">: <mass>: expected a positive mass in kg for the foot, " +
+                     talusName + " + " + calcnName + " + " + toesName + " (got 0)");
   const OsimJoint& hip = m.getJointTo(femurName);
   const OsimJoint& knee = requireJoint(m, femurName, tibiaName);
   const OsimJoint& ankle = requireJoint(m, tibiaName, talusName);

@@ -2,7 +2,8 @@
 // A scaled OpenSim model (.osim, OpenSim 4 XML) read with tinyxml2, as far as a planar
 // swing leg needs it: each body's mass, COM and inertia, each joint's parent and child
 // frames and its pose at the reference configuration (every coordinate 0), and the
-// participant built from one leg of it (`swingsim import-osim`, docs/import-osim.md).
+// participant built from one leg of it (`swingsim import-osim`, docs/import-osim.md). The
+// writer of swingsim's own leg as a model (`swingsim export-osim`) is io/osim_model_writer.h.
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,21 @@ struct OsimBody {
   Eigen::Matrix3d inertia;        ///< kg m^2, about the COM, in the body frame
 };
 
+/// The names of the exported model's hip and knee coordinates, which are also the angle
+/// columns of the trajectory .sto that `simulate` writes (io/trajectory_writer.h), so that
+/// OpenSim plays that .sto on the model.
+inline constexpr const char* kOsimHipCoordinate = "hip_flexion";
+inline constexpr const char* kOsimKneeCoordinate = "knee_flexion";
+
+/// One of a joint's coordinates (OpenSim's <Coordinate>).
+struct OsimCoordinate {
+  std::string name;
+  double defaultValue = 0;           ///< rad (a rotation) or m, <default_value>
+  double rangeMin = 0, rangeMax = 0; ///< rad or m, <range>
+  bool clamped = false;              ///< <clamped>: OpenSim holds the coordinate inside its range
+  std::string note;                  ///< written as an XML comment before it ("" = none); not read
+};
+
 struct OsimJoint {
   std::string name, type;  ///< type: the element (CustomJoint, PinJoint, WeldJoint, ...)
   int line = 0;
@@ -31,6 +47,7 @@ struct OsimJoint {
   /// so a knee whose centre moves along a spline is taken at full extension).
   Eigen::Isometry3d motionAtZero;
   bool centreMoves = false;  ///< a translation of the SpatialTransform depends on a coordinate
+  std::vector<OsimCoordinate> coordinates;  ///< the joint's <coordinates>, in file order
 
   /// The joint centre (origin of M) in the parent body frame at the reference pose.
   Eigen::Vector3d calcCentreInParent() const { return (parentFrame * motionAtZero).translation(); }

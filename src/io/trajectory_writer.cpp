@@ -1,6 +1,12 @@
 #include "io/trajectory_writer.h"
 
+#include <cmath>
+#include <cstdio>
+
+#include "core/input_error.h"
+#include "core/output_files.h"
 #include "io/csv_table.h"
+#include "io/osim_model.h"
 #include "model/leg_parameters.h"
 
 namespace swingsim {
@@ -31,12 +37,24 @@ std::string formatTrajectoryCsv(const SwingTrajectory& trajectory) {
 std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::string& name) {
   std::string out = name + "\nversion=1\nnRows=" + std::to_string(trajectory.size()) +
                     "\nnColumns=" + std::to_string(kColumns.size()) + "\ninDegrees=yes\nendheader\n";
-  // OpenSim names: 'time' first, tab-separated.
-  std::string csv = formatCsv({"time", "hip_flexion", "knee_flexion", "hip_flexion_speed", "knee_flexion_speed",
-                               "hip_moment", "knee_moment"},
+  // OpenSim names: 'time' first, tab-separated; the angles named as export-osim's coordinates.
+  const std::string hip = kOsimHipCoordinate, knee = kOsimKneeCoordinate;
+  std::string csv = formatCsv({"time", hip, knee, hip + "_speed", knee + "_speed", "hip_moment", "knee_moment"},
                               columnsOf(trajectory));
   for (char& c : csv) if (c == ',') c = '\t';
   return out + csv;
+}
+
+std::string makeTrajectoryFileStem(const std::string& participantName, double lowering) {
+  // Whole millimetres as lower050mm; any other lowering in full, so two lowerings never
+  // share a file (0.4 mm is lower0.4mm, not lower000mm).
+  const double mm = lowering * 1000;
+  char tag[64];
+  if (std::fabs(mm - std::round(mm)) < 1e-9 && mm < 1e6)
+    std::snprintf(tag, sizeof tag, "lower%03.0fmm", mm);
+  else
+    std::snprintf(tag, sizeof tag, "lower%smm", formatNumber(mm).c_str());
+  return makeSafeFileStem(participantName) + "-" + tag;
 }
 
 }  // namespace swingsim

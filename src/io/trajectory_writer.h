@@ -10,7 +10,14 @@ namespace swingsim {
 /// CSV text: time_s, hip_flexion_deg, knee_flexion_deg, hip_flexion_rate_deg_s,
 /// knee_flexion_rate_deg_s, hip_moment_Nm, knee_moment_Nm.
 std::string formatTrajectoryCsv(const SwingTrajectory& trajectory);
-/// OpenSim storage text with the same columns (angles in degrees, inDegrees=yes).
+/// OpenSim storage text with the same columns (angles in degrees, inDegrees=yes), the angle
+/// columns named as the coordinates of the model `export-osim` writes (kOsimHipCoordinate,
+/// kOsimKneeCoordinate), so OpenSim plays the file on it.
 std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::string& name);
+
+/// The file stem of one simulated swing's outputs (and of its exported model):
+/// `<participant>-lower050mm` (whole millimetres), else `-lower0.4mm` with the lowering in full.
+/// `lowering` in m.
+std::string makeTrajectoryFileStem(const std::string& participantName, double lowering);
 
 }  // namespace swingsim

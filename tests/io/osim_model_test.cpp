@@ -212,6 +212,17 @@ TEST(OsimParticipant, WrittenFileLoadsBackToTheSameParticipant) {
   EXPECT_THAT(text, HasSubstr("# thigh: femur_r <mass>"));
 }
 
+// export-osim's foot is all in talus_r, calcn_r and toes_r massless: only the three together
+// need a mass.
+TEST(OsimModelErrors, AFootNeedsMassInOneOfItsBodiesNotInEach) {
+  std::string leg = withReplaced("<mass>1.0</mass>", "<mass>0</mass>", "<mass>0.2</mass>", "<mass>0</mass>");
+  const Participant p = calcOsimParticipant(parseOsimModel(leg, "tiny.osim"), OsimImportOptions{}).participant;
+  EXPECT_DOUBLE_EQ(p.foot.mass, 0.1);  // talus_r's alone
+  leg.replace(leg.find("<mass>0.1</mass>"), std::string("<mass>0.1</mass>").size(), "<mass>0</mass>");
+  EXPECT_THAT(errorFor(leg), HasSubstr(std::string("tiny.osim:8") +  // talus_r is line 8 of kLeg
+                                       ": <Body name=\"talus_r\">: <mass>: expected a positive mass in kg for the foot, talus_r + calcn_r + toes_r (got 0)"));
+}
+
 TEST(OsimModelErrors, EachBadInputNamesFileLineElementAndWhatWasFound) {
   EXPECT_THAT(errorFor("this is not xml <"), HasSubstr("tiny.osim:1: expected an OpenSim model (.osim XML) (got text that is not XML"));
   EXPECT_THAT(errorFor(withReplaced("Version=\"40000\"", "Version=\"30000\"")),

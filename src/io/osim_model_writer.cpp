@@ -1,0 +1,212 @@
+#include "io/osim_model_writer.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "core/units.h"
+
+namespace swingsim {
+
+namespace {
+
+using tinyxml2::XMLDocument;
+using tinyxml2::XMLElement;
+
+Eigen::Isometry3d makeTranslation(double x, double y) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() = Eigen::Vector3d(x, y, 0);
+  return t;
+}
+
+// The knee pin's frames are turned half a turn about x, so that OpenSim's positive rotation
+// about the joint's z is a flexion (the shank swings backwards), as in leg/leg_model.cpp.
+Eigen::Isometry3d makeFlippedTranslation(double x, double y) {
+  Eigen::Isometry3d t = makeTranslation(x, y);
+  t.linear() = Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  return t;
+}
+
+// Izz as given; Ixx, Iyy of a thin rod along `axis` (0 = x, 1 = y): zero about the rod, Izz
+// about the other axis, so the tensor satisfies the triangle inequality OpenSim checks.
+Eigen::Matrix3d makeRodInertia(double izz, int axis) {
+  Eigen::Matrix3d i = Eigen::Matrix3d::Zero();
+  i(2, 2) = izz;
+  i(1 - axis, 1 - axis) = izz;
+  return i;
+}
+
+OsimBody makeBody(const std::string& name, double mass, const Eigen::Vector3d& com, const Eigen::Matrix3d& inertia) {
+  OsimBody b;
+  b.name = name;
+  b.mass = mass;
+  b.massCenter = com;
+  b.inertia = inertia;
+  return b;
+}
+
+OsimJoint makeJoint(const std::string& name, const std::string& type, const std::string& parent, const Eigen::Isometry3d& inParent,
+                    const std::string& child, const Eigen::Isometry3d& inChild) {
+  OsimJoint j;
+  j.name = name;
+  j.type = type;
+  j.parentBody = parent;
+  j.childBody = child;
+  j.parentFrame = inParent;
+  j.childFrame = inChild;
+  j.motionAtZero = Eigen::Isometry3d::Identity();
+  return j;
+}
+
+OsimCoordinate makeCoordinate(const std::string& name, double defaultValue, double rangeMin, double rangeMax, const std::string& note) {
+  if (!(rangeMin < rangeMax))
+    throw std::invalid_argument("makeOsimLegModel: " + name + ": empty range [" + formatNumber(rangeMin) + ", " + formatNumber(rangeMax) + "] rad");
+  OsimCoordinate c;
+  c.name = name;
+  c.defaultValue = defaultValue;
+  c.rangeMin = rangeMin;
+  c.rangeMax = rangeMax;
+  c.note = note;
+  return c;
+}
+
+std::string formatDegrees(double rad) { return formatNumber(std::round(rad * kRadToDeg * 1000) / 1000); }
+
+// ---- XML ----------------------------------------------------------------------------------
+
+// (+ 0.0 writes -0 as 0.)
+std::string formatVector(const Eigen::Vector3d& v) {
+  return formatNumber(v.x() + 0.0) + " " + formatNumber(v.y() + 0.0) + " " + formatNumber(v.z() + 0.0);
+}
+
+XMLElement* addText(XMLElement* parent, const char* name, const std::string& text) {
+  XMLElement* e = parent->InsertNewChildElement(name);
+  e->SetText(text.c_str());
+  return e;
+}
+
+XMLElement* addNamed(XMLElement* parent, const char* type, const std::string& name) {
+  XMLElement* e = parent->InsertNewChildElement(type);
+  e->SetAttribute("name", name.c_str());
+  return e;
+}
+
+// XML comment text: "--" may not occur inside a comment.
+std::string makeCommentText(std::string text) {
+  for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at)) text.replace(at, 2, "- -");
+  return " " + text + " ";
+}
+
+std::string framePath(const std::string& body) { return body == "ground" ? "/ground" : "/bodyset/" + body; }
+
+void addBody(XMLElement* objects, const OsimBody& b) {
+  XMLElement* e = addNamed(objects, "Body", b.name);
+  addText(e, "mass", formatNumber(b.mass));
+  addText(e, "mass_center", formatVector(b.massCenter));
+  const Eigen::Matrix3d& i = b.inertia;  // OpenSim's order: Ixx Iyy Izz Ixy Ixz Iyz, about the COM
+  addText(e, "inertia", formatNumber(i(0, 0)) + " " + formatNumber(i(1, 1)) + " " + formatNumber(i(2, 2)) + " " + formatNumber(i(0, 1)) +
+                            " " + formatNumber(i(0, 2)) + " " + formatNumber(i(1, 2)));
+}
+
+// OpenSim's orientation: body-fixed x-y-z angles (a, b, c), R = Rx(a) Ry(b) Rz(c), rad; away
+// from b = +-90 deg, which the writer never needs.
+Eigen::Vector3d calcBodyFixedXyz(const Eigen::Matrix3d& r) {
+  const double b = std::asin(std::clamp(r(0, 2), -1.0, 1.0));
+  return {std::atan2(-r(1, 2), r(2, 2)), b, std::atan2(-r(0, 1), r(0, 0))};
+}
+
+void addOffsetFrame(XMLElement* frames, const std::string& name, const std::string& body, const Eigen::Isometry3d& pose) {
+  XMLElement* f = addNamed(frames, "PhysicalOffsetFrame", name);
+  addText(f, "socket_parent", framePath(body));
+  addText(f, "translation", formatVector(pose.translation()));
+  addText(f, "orientation", formatVector(calcBodyFixedXyz(pose.linear())));
+}
+
+void addCoordinate(XMLElement* coordinates, const OsimCoordinate& c) {
+  if (!c.note.empty()) coordinates->InsertNewComment(makeCommentText(c.note).c_str());
+  XMLElement* e = addNamed(coordinates, "Coordinate", c.name);
+  addText(e, "default_value", formatNumber(c.defaultValue));
+  addText(e, "default_speed_value", "0");
+  addText(e, "range", formatNumber(c.rangeMin) + " " + formatNumber(c.rangeMax));
+  addText(e, "clamped", c.clamped ? "true" : "false");
+  addText(e, "locked", "false");
+}
+
+void addJoint(XMLElement* objects, const OsimJoint& j) {
+  XMLElement* e = addNamed(objects, j.type.c_str(), j.name);
+  const std::string parentFrame = j.parentBody + "_offset", childFrame = j.childBody + "_offset";
+  addText(e, "socket_parent_frame", parentFrame);
+  addText(e, "socket_child_frame", childFrame);
+  if (!j.coordinates.empty()) {
+    XMLElement* coordinates = e->InsertNewChildElement("coordinates");
+    for (const auto& c : j.coordinates) addCoordinate(coordinates, c);
+  }
+  XMLElement* frames = e->InsertNewChildElement("frames");
+  addOffsetFrame(frames, parentFrame, j.parentBody, j.parentFrame);
+  addOffsetFrame(frames, childFrame, j.childBody, j.childFrame);
+}
+
+}  // namespace
+
+OsimModel makeOsimLegModel(const LegGeometry& g, const OsimLegPlacement& place) {
+  if (g.added.mass != 0)
+    throw std::invalid_argument("makeOsimLegModel: an added shank mass is not exported (got " + formatNumber(g.added.mass) + " kg)");
+  OsimModel m;
+  m.name = place.modelName;
+  const double legMass = g.thighMass + g.shankMass + g.footMass;
+  m.bodies = {makeBody("pelvis", std::max(0.0, place.bodyMass - legMass), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()),
+              makeBody("femur_r", g.thighMass, {0, -g.thighCom, 0}, makeRodInertia(g.thighInertia, 1)),
+              makeBody("tibia_r", g.shankMass, {0, -g.shankCom, 0}, makeRodInertia(g.shankInertia, 1)),
+              makeBody("talus_r", g.footMass, {g.footComForward, 0, 0}, makeRodInertia(g.footInertia, 0)),
+              makeBody("calcn_r", 0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()),
+              makeBody("toes_r", 0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero())};
+
+  const std::array<double, 2> hipInPelvis = place.hipOffsetInPelvis.value_or(std::array<double, 2>{0, 0});
+  const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
+  OsimJoint ground = makeJoint("ground_pelvis", "WeldJoint", "ground", makeTranslation(-hipInPelvis[0], place.hipHeight - hipInPelvis[1]),
+                               "pelvis", origin);
+  OsimJoint hip = makeJoint("hip_r", "PinJoint", "pelvis", makeTranslation(hipInPelvis[0], hipInPelvis[1]), "femur_r", origin);
+  hip.coordinates.push_back(makeCoordinate(
+      kOsimHipCoordinate, place.initial.hipFlexion, place.hipRange.minFlexion, place.hipRange.maxFlexion,
+      "hip_flexion, rad: + = flexion (the thigh swings forward), counter-clockwise about +z with the subject facing +x. Range [" +
+          formatDegrees(place.hipRange.minFlexion) + ", " + formatDegrees(place.hipRange.maxFlexion) +
+          "] deg: swingsim's hip range of motion, where a smooth stop acts (not clamped)."));
+  OsimJoint knee = makeJoint("knee_r", "PinJoint", "femur_r", makeFlippedTranslation(0, -g.thighLength), "tibia_r", makeFlippedTranslation(0, 0));
+  knee.coordinates.push_back(makeCoordinate(
+      kOsimKneeCoordinate, place.initial.kneeFlexion, place.kneeMinFlexion, place.kneeMaxFlexion,
+      "knee_flexion, rad: + = FLEXION (the shank swings backwards), as swingsim's, the opposite of the Gait models' knee_angle_r;"
+      " the joint's frames are turned 180 deg about x so that OpenSim's + rotation about the joint z is a flexion. Range [" +
+          formatDegrees(place.kneeMinFlexion) + ", " + formatDegrees(place.kneeMaxFlexion) +
+          "] deg: the knee model's hyperextension stop at the low end (a simulated swing presses a few degrees past it, so not clamped)."));
+  OsimJoint ankle = makeJoint("ankle_r", "WeldJoint", "tibia_r", makeTranslation(0, -g.shankLength), "talus_r", origin);
+  OsimJoint subtalar = makeJoint("subtalar_r", "WeldJoint", "talus_r", origin, "calcn_r", origin);
+  OsimJoint mtp = makeJoint("mtp_r", "WeldJoint", "calcn_r", makeTranslation(g.footLength, 0), "toes_r", origin);
+  m.joints = {ground, hip, knee, ankle, subtalar, mtp};
+  return m;
+}
+
+std::string formatOsimModel(const OsimModel& model, const std::string& header) {
+  XMLDocument doc;
+  doc.InsertEndChild(doc.NewDeclaration(R"(xml version="1.0" encoding="UTF-8")"));
+  XMLElement* root = doc.NewElement("OpenSimDocument");
+  root->SetAttribute("Version", 40000);
+  doc.InsertEndChild(root);
+  root->InsertNewComment(makeCommentText(header).c_str());
+  XMLElement* m = addNamed(root, "Model", model.name);
+  addNamed(m, "Ground", "ground");
+  addText(m, "gravity", formatVector({0, -kGravity, 0}));
+  addText(m, "length_units", "meters");
+  addText(m, "force_units", "N");
+  XMLElement* bodies = addNamed(m, "BodySet", "bodyset")->InsertNewChildElement("objects");
+  for (const auto& b : model.bodies) addBody(bodies, b);
+  XMLElement* joints = addNamed(m, "JointSet", "jointset")->InsertNewChildElement("objects");
+  for (const auto& j : model.joints) addJoint(joints, j);
+  tinyxml2::XMLPrinter printer;
+  doc.Print(&printer);
+  return printer.CStr();
+}
+
+}  // namespace swingsim
