@@ -1,6 +1,8 @@
 #include "report/markdown_html.h"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -148,8 +150,24 @@ class MarkdownRenderer {
     const int level = static_cast<int>(std::min<std::size_t>(line.find_first_not_of('#'), 6));
     const std::string text = line.substr(std::min(line.size(), static_cast<std::size_t>(level) + 1));
     const std::string tag = "h" + std::to_string(level);
-    html_ += "<" + tag + ">" + renderInline(text) + "</" + tag + ">\n";
+    html_ += "<" + tag + " id=\"" + makeAnchor(text) + "\">" + renderInline(text) + "</" + tag + ">\n";
     if (hooks_.afterHeading) html_ += hooks_.afterHeading(level, text);
+  }
+
+  // The heading's id, for links to it (REPORT.html#p1): lower-case letters and digits, "-"
+  // between words, and "-2", "-3" on a repeat.
+  std::string makeAnchor(const std::string& text) {
+    std::string id;
+    for (char c : text) {
+      if (std::isalnum(static_cast<unsigned char>(c)))
+        id += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      else if (!id.empty() && id.back() != '-')
+        id += '-';
+    }
+    while (!id.empty() && id.back() == '-') id.pop_back();
+    if (id.empty()) id = "section";
+    const int seen = ++anchors_[id];
+    return seen == 1 ? id : id + "-" + std::to_string(seen);
   }
 
   // The first row of a table is its header; the separator row "|---|" is dropped.
@@ -171,6 +189,7 @@ class MarkdownRenderer {
   const MarkdownHtmlHooks& hooks_;
   std::string html_;
   Block block_ = Block::kNone;
+  std::map<std::string, int> anchors_;  // heading ids so far, with their counts
   bool inCode_ = false;
 };
 

@@ -109,7 +109,7 @@ TEST(SweepHtml, IsWrittenBesideTheMarkdownAndWellFormed) {
   ASSERT_EQ(files.count("report.html"), 1u);
   const std::string& html = files.at("report.html");
   EXPECT_EQ(checkTagsBalanced(html), "");
-  EXPECT_THAT(html, HasSubstr("<h1>Knee-axis sweep: "));
+  EXPECT_THAT(html, HasSubstr("<h1 id=\"knee-axis-sweep-burkett2004\">Knee-axis sweep: burkett2004</h1>"));
 }
 
 TEST(SweepHtml, CarriesTheMarkdownsHeadingsAndTables) {
@@ -124,13 +124,13 @@ TEST(SweepHtml, CarriesTheMarkdownsHeadingsAndTables) {
     if (inCode) continue;
     if (line.rfind("## ", 0) == 0) {
       ++headings;
-      EXPECT_THAT(html, HasSubstr("<h2>" + escapeHtml(line.substr(3))));
+      EXPECT_THAT(html, HasSubstr("\">" + escapeHtml(line.substr(3)) + "</h2>"));
     }
     if (!inTable && line.rfind("|", 0) == 0) ++tables;
     inTable = line.rfind("|", 0) == 0;
   }
   EXPECT_GT(headings, 3);
-  EXPECT_EQ(countOf(html, "<h2>"), headings);
+  EXPECT_EQ(countOf(html, "<h2 id="), headings);
   EXPECT_EQ(countOf(html, "<table>"), tables);
 }
 
@@ -158,7 +158,7 @@ TEST(SweepHtml, AnimatesEachParticipantsFastestSwingWithItsSegmentLengths) {
   for (const auto& ps : sweepOnce().participants) {
     ASSERT_GE(ps.best, 0) << ps.name;
     const SweepPoint& b = ps.points[static_cast<std::size_t>(ps.best)];
-    const std::size_t at = html.find("<h2>" + ps.name + "</h2>");
+    const std::size_t at = html.find("\">" + ps.name + "</h2>");
     ASSERT_NE(at, std::string::npos) << ps.name;
     const std::size_t svgAt = html.find("class=\"stick-figure\"", at);
     const std::string svg = html.substr(svgAt, html.find("</svg>", svgAt) - svgAt);
@@ -190,9 +190,10 @@ TEST(StickFigureAnimation, RunsInRealTimeAndRefusesASwingWithoutATrajectory) {
 
 TEST(MarkdownHtml, RendersTheReportsSubsetAndEscapesText) {
   const std::string html = renderMarkdownHtml(
-      "# A <b> & c\n\npara **bold** *it* and `x<y`\nsecond line\n\n- one\n- two\n\n| h1 | h2 |\n| --- | --- |\n| 1 | 2 |\n\n"
+      "# A <b> & c\n\n## A b c\n\npara **bold** *it* and `x<y`\nsecond line\n\n- one\n- two\n\n| h1 | h2 |\n| --- | --- |\n| 1 | 2 |\n\n"
       "```\ncode <here>\n```\n![alt text](figures/a.svg)\n");
-  EXPECT_THAT(html, HasSubstr("<h1>A &lt;b&gt; &amp; c</h1>"));
+  EXPECT_THAT(html, HasSubstr("<h1 id=\"a-b-c\">A &lt;b&gt; &amp; c</h1>"));
+  EXPECT_THAT(html, HasSubstr("<h2 id=\"a-b-c-2\">A b c</h2>"));
   EXPECT_THAT(html, HasSubstr("<p>para <strong>bold</strong> <em>it</em> and <code>x&lt;y</code>\nsecond line</p>"));
   EXPECT_THAT(html, HasSubstr("<ul>\n<li>one</li>\n<li>two</li>\n</ul>"));
   EXPECT_THAT(html, HasSubstr("<thead><tr><th>h1</th><th>h2</th></tr></thead>\n<tbody>\n<tr><td>1</td><td>2</td></tr>"));
