@@ -12,6 +12,7 @@
 #include "core/text_format.h"
 #include "model/leg_parameters.h"
 #include "report/markdown_html.h"
+#include "html_checks.h"
 #include "report/stick_figure_animation.h"
 #include "report/sweep_markdown.h"
 #include "report/sweep_report_parts.h"
@@ -22,6 +23,7 @@ namespace {
 
 using ::testing::HasSubstr;
 using ::testing::Not;
+using testing::checkTagsBalanced;
 
 // Endpoints are written with 2 decimals (0.005 px of rounding each), so a segment's length
 // can be off by up to 0.01 px: in metres at the figure's scale, with a margin.
@@ -54,27 +56,6 @@ int countOf(const std::string& text, const std::string& what) {
   int n = 0;
   for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
   return n;
-}
-
-// "" if every element of `html` is closed in order (self-closing "<x/>" included), else what
-// was wrong and where.
-std::string checkTagsBalanced(const std::string& html) {
-  std::vector<std::string> open;
-  for (std::size_t at = html.find('<'); at != std::string::npos; at = html.find('<', at + 1)) {
-    const std::size_t end = html.find('>', at);
-    if (end == std::string::npos) return "unterminated tag at " + std::to_string(at);
-    const std::string tag = html.substr(at + 1, end - at - 1);
-    if (tag.empty() || tag[0] == '!') continue;  // <!DOCTYPE html>
-    if (tag[0] == '/') {
-      const std::string name = tag.substr(1);
-      if (open.empty() || open.back() != name)
-        return "</" + name + "> at " + std::to_string(at) + " closes " + (open.empty() ? "nothing" : "<" + open.back() + ">");
-      open.pop_back();
-    } else if (tag.back() != '/') {
-      open.push_back(tag.substr(0, tag.find_first_of(" \n")));
-    }
-  }
-  return open.empty() ? "" : "<" + open.back() + "> never closed";
 }
 
 // The numbers of `values="a;b;c"` of the <animate> of `attribute` inside `element`.
@@ -186,20 +167,6 @@ TEST(StickFigureAnimation, RunsInRealTimeAndRefusesASwingWithoutATrajectory) {
   SwingResult empty;
   empty.swingTime = 0.5;
   EXPECT_THROW(renderStickFigureAnimation(empty, 0.9), std::invalid_argument);
-}
-
-TEST(MarkdownHtml, RendersTheReportsSubsetAndEscapesText) {
-  const std::string html = renderMarkdownHtml(
-      "# A <b> & c\n\n## A b c\n\npara **bold** *it* and `x<y`\nsecond line\n\n- one\n- two\n\n| h1 | h2 |\n| --- | --- |\n| 1 | 2 |\n\n"
-      "```\ncode <here>\n```\n![alt text](figures/a.svg)\n");
-  EXPECT_THAT(html, HasSubstr("<h1 id=\"a-b-c\">A &lt;b&gt; &amp; c</h1>"));
-  EXPECT_THAT(html, HasSubstr("<h2 id=\"a-b-c-2\">A b c</h2>"));
-  EXPECT_THAT(html, HasSubstr("<p>para <strong>bold</strong> <em>it</em> and <code>x&lt;y</code>\nsecond line</p>"));
-  EXPECT_THAT(html, HasSubstr("<ul>\n<li>one</li>\n<li>two</li>\n</ul>"));
-  EXPECT_THAT(html, HasSubstr("<thead><tr><th>h1</th><th>h2</th></tr></thead>\n<tbody>\n<tr><td>1</td><td>2</td></tr>"));
-  EXPECT_THAT(html, HasSubstr("<pre><code>code &lt;here&gt;\n</code></pre>"));
-  EXPECT_THAT(html, HasSubstr("<p>alt text</p>"));
-  EXPECT_EQ(checkTagsBalanced(html), "");
 }
 
 }  // namespace
