@@ -12,6 +12,7 @@
 #include "numerics/metrics.h"
 #include "report/svg_plot.h"
 #include "report/sweep_figures.h"
+#include "report/sweep_html.h"
 #include "report/sweep_report.h"
 #include "report/sweep_report_parts.h"
 #include "sweep/burkett_published.h"
@@ -524,6 +525,7 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
   md += formatFailuresSection(results);
   md += formatAssumptionsSection(study);
   files["report.md"] = md;
+  files["report.html"] = makeSweepReportHtml(study, results, files);
   return files;
 }
 

@@ -10,7 +10,8 @@
 
 namespace swingsim {
 
-/// All report files, file name (relative to the output folder) -> contents.
+/// All report files, file name (relative to the output folder) -> contents: report.md, its
+/// figures, sweep.csv, and report.html (report/sweep_html.h: the same content in one page).
 /// With `uncertainty`: a "How sure is the optimum" section, a tornado figure per
 /// participant and the 5-95 % band on the swing-time figure.
 std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, const SweepResults& results,
