@@ -1,6 +1,7 @@
 #include "python_values.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 #include "core/input_error.h"
@@ -24,7 +25,10 @@ py::object toPython(const Json& json) {
     case Json::value_t::boolean: return py::bool_(json.get<bool>());
     case Json::value_t::number_integer: return py::int_(json.get<long long>());
     case Json::value_t::number_unsigned: return py::int_(json.get<unsigned long long>());
-    case Json::value_t::number_float: return py::float_(json.get<double>());
+    case Json::value_t::number_float: {
+      const double v = json.get<double>();
+      return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());  // as the JSON file's null
+    }
     case Json::value_t::string: return py::str(json.get<std::string>());
     default: return py::none();
   }

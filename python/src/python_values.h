@@ -13,7 +13,8 @@
 namespace swingsim::python {
 
 /// A JSON document as Python objects: objects -> dict (key order kept), arrays -> list,
-/// numbers -> int/float, null -> None.
+/// numbers -> int/float, null and
+/// non-finite numbers -> None (as formatJson writes them).
 pybind11::object toPython(const Json& json);
 
 /// A YAML document as Python objects: maps -> dict, sequences -> list, scalars -> bool

@@ -11,12 +11,15 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "core/output_files.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
 #include "python_values.h"
+#include "report/diagnosis_report.h"
 #include "report/swing_json.h"
 #include "report/sweep_report.h"
+#include "study/diagnosis_study.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "swing/knee_setup.h"
@@ -136,6 +139,35 @@ py::object sweep(const std::string& studyPath, int uncertainty, std::optional<in
   return toPython(Json::parse(json));
 }
 
+/// The content of `swingsim compare STUDY --json`: the base model refitted on the training
+/// files, metrics overall and per phase.
+py::object compare(const std::string& studyPath) {
+  const DiagnosisStudy study = loadDiagnosisStudy(studyPath);
+  Json json;
+  {
+    py::gil_scoped_release release;
+    const auto plant = loadDiagnosisPlant(study, 1);  // as the CLI's compare
+    const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);
+    json = makeComparisonJson(fileStem(study.baseModelPath), b.comparison);
+  }
+  return toPython(json);
+}
+
+/// The content of `swingsim diagnose STUDY --json`: candidate effects ranked, the accepted
+/// ones, the error before and after.
+py::object diagnose(const std::string& studyPath) {
+  const DiagnosisStudy study = loadDiagnosisStudy(studyPath);
+  Json json;
+  {
+    py::gil_scoped_release release;
+    const auto plant = loadDiagnosisPlant(study, 8);  // as the CLI's diagnose
+    const Diagnosis dg = runDiagnosis(*plant, study.settings);
+    json = makeDiagnoseJson(dg, plant->compare(*dg.baseline.model), plant->compare(*dg.final.model),
+                            plant->compareHeldBack(*dg.baseline.model), plant->compareHeldBack(*dg.final.model));
+  }
+  return toPython(json);
+}
+
 }  // namespace
 }  // namespace swingsim::python
 
@@ -158,4 +190,6 @@ PYBIND11_MODULE(_swingsim, m) {
   m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none());
   m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
         py::arg("jobs") = 0);
+  m.def("compare", &python::compare, py::arg("study_path"));
+  m.def("diagnose", &python::diagnose, py::arg("study_path"));
 }

@@ -2,7 +2,7 @@
 
 Participants and knee models load from their YAML files into editable objects whose fields
 are the file's keys, in the file's units (``p.segments.shank.mass_kg``); `simulate` runs one
-swing and `sweep` a knee-axis sweep study, through the same C++ functions as the command
+swing, `sweep` a knee-axis sweep study, `compare` and `diagnose` a diagnosis study, through the same C++ functions as the command
 line, with the GIL released while they run. Bad input raises `InputError` (a ValueError)
 with the command line's ``file:line: key: ...`` message; a failed run raises `RunError`.
 """
@@ -13,7 +13,7 @@ from swingsim import _swingsim
 from swingsim._swingsim import InputError, RunError
 
 __all__ = ["InputError", "RunError", "Record", "Participant", "KneeModel", "SwingResult",
-           "load_participant", "load_knee", "simulate", "sweep"]
+           "load_participant", "load_knee", "simulate", "sweep", "compare", "diagnose"]
 
 
 class Record:
@@ -127,3 +127,15 @@ def sweep(study_path, uncertainty=0, seed=None, jobs=0):
     [--seed S]`: returns what the JSON file holds, as dicts and lists. jobs: worker threads,
     0 = all cores. No report or CSV is written. Ctrl-C stops it between swings."""
     return _swingsim.sweep(_os.fspath(study_path), int(uncertainty), seed, int(jobs))
+
+
+def compare(study_path):
+    """Model against measurement for a cylinder-diagnosis or swing-diagnosis study, as
+    `swingsim compare STUDY --json FILE`: returns what the JSON file holds. No plots written."""
+    return _swingsim.compare(_os.fspath(study_path))
+
+
+def diagnose(study_path):
+    """The diagnosis of a cylinder-diagnosis or swing-diagnosis study, as `swingsim diagnose
+    STUDY --json FILE`: returns what the JSON file holds. No report or model is written."""
+    return _swingsim.diagnose(_os.fspath(study_path))
