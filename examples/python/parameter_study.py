@@ -38,7 +38,7 @@ def swing_time(participant, knee, damping_scale, shank_mass_kg):
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "docs/figures/python-parameter-study.png"
     participant = swingsim.load_participant("participants/p1.yaml")
-    knee = swingsim.load_knee(participant.knee_model)
+    knee = swingsim.load_knee(participant.resolve(participant.knee_model))
     grid = [(d, m) for m in SHANK_MASSES_KG for d in DAMPING_SCALES]
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count()) as pool:
         times = list(pool.map(lambda dm: swing_time(participant, knee, *dm), grid))

@@ -68,6 +68,11 @@ class _FileRecord(Record):
         super().__init__(values)
         object.__setattr__(self, "origin", str(origin))
 
+    def resolve(self, path):
+        """A path written in the file (``p.knee_model``) as a path from the current folder:
+        relative paths in a file are relative to the file's folder."""
+        return _os.path.join(_os.path.dirname(self.origin), _os.fspath(path))
+
     def copy(self):
         """An independent copy to edit."""
         return type(self)(self.to_dict(), self.origin)
