@@ -12,6 +12,8 @@ import os as _os
 from swingsim import _swingsim
 from swingsim._swingsim import InputError, RunError
 
+InputError.__module__ = RunError.__module__ = "swingsim"  # shown as swingsim.InputError
+
 __all__ = ["InputError", "RunError", "Record", "Participant", "KneeModel", "SwingResult",
            "load_participant", "load_knee", "simulate", "sweep", "compare", "diagnose"]
 
