@@ -5,6 +5,7 @@
 // `file:line: key: ...` message; a failed run raises swingsim.RunError (a RuntimeError).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // std::optional arguments
 
 #include <filesystem>
 #include <optional>

@@ -30,9 +30,10 @@ def test_sweep_equals_cli(cli, small_study, tmp_path):
                    check=True, capture_output=True)
     expected = json.loads(out.read_text())
     result = swingsim.sweep(small_study)
-    fastest = {p["name"]: p["fastest_lowering_m"] for p in result["participants"]}
-    assert fastest == {p["name"]: p["fastest_lowering_m"] for p in expected["participants"]}
+    fastest = {p["name"]: p["best_lowering_m"] for p in result["participants"]}
+    assert fastest == {p["name"]: p["best_lowering_m"] for p in expected["participants"]}
     assert len(fastest) == 2
+    assert all(lowering is not None for lowering in fastest.values())  # each swept to an optimum
     # Everything else too: the same JSON document, number for number (None for null).
     assert result == expected
 
