@@ -2,6 +2,7 @@
 participant changing the swing."""
 import json
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -92,3 +93,28 @@ def test_more_knee_damping_lowers_the_peak_flexion(repo):
     damped.damping_table.moment_Nm = [2 * m for m in knee.damping_table.moment_Nm]
     stiffer = swingsim.simulate(participant, knee=damped)
     assert stiffer.peak_knee_flexion_deg < base.peak_knee_flexion_deg - MEASURABLE_DEG
+
+
+def test_simulate_releases_the_gil(repo):
+    # A Python thread counts while a swing runs: it can only count if simulate let go of the
+    # GIL (C++ that held it would never reach a point where Python switches threads). The
+    # extension is called directly, so no Python code runs between the two reads of count.
+    done = threading.Event()
+    count = 0
+
+    def spin():
+        nonlocal count
+        while not done.is_set():
+            count += 1
+
+    spinner = threading.Thread(target=spin)
+    spinner.start()
+    try:
+        path = str(repo / "participants" / "p1.yaml")
+        before = count
+        swingsim._swingsim.simulate(path, 0.0, None)
+        during = count - before
+    finally:
+        done.set()
+        spinner.join()
+    assert during > 0
