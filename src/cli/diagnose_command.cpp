@@ -53,11 +53,7 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   writeDiagnosisReport(outDir, {study.name, command, drive, &dg, &before, &after, check, heldBefore, heldAfter,
                                  heldWarnings});
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
-  if (args.json) {
-    Json json = makeDiagnosisJson(dg, before, after);
-    if (held) json["knee_moment_comparison"] = makeHeldBackJson(*heldBefore, *heldAfter);
-    writeJsonFile(*args.json, json);
-  }
+  if (args.json) writeJsonFile(*args.json, makeDiagnoseJson(dg, before, after, heldBefore, heldAfter));
   if (args.saveModel && !dg.explained)
     throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict + ")");
   if (args.saveModel) {

@@ -125,12 +125,7 @@ int runSimulate(const SimulateArguments& a) {
   writeFileAtomic(out + "/" + tag + "-moments.svg", formatSwingMomentsSvg(r.trajectory, p.name + ", drive: " + driveKey(p.drive)));
   std::printf("  trajectory          %s/%s.csv and .sto; hip and knee moments %s-moments.svg\n", out.c_str(), tag.c_str(),
               tag.c_str());
-  if (a.json) {
-    Json json = makeSwingResultJson(p.name, setup.lowering, r);
-    json["drive"] = driveKey(p.drive);
-    json["drive_description"] = describeDrive(p);
-    writeJsonFile(*a.json, json);
-  }
+  if (a.json) writeJsonFile(*a.json, makeSimulateJson(setup, r));
   return 0;
 }
 

@@ -9,8 +9,8 @@
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
+#include "study/sweep_run.h"
 #include "sweep/measured_validation.h"
-#include "sweep/terminal_impact.h"
 
 namespace swingsim::cli {
 
@@ -71,20 +71,9 @@ SweepResults runPlainSweep(const SweepStudy& study, const std::vector<Participan
     // Burkett's bounce and interior optimum, checked (report section "Terminal impact").
     std::fprintf(stderr, "sweep %s: terminal impact check: impact bookkeeping and a friction-free sweep per participant\n",
                  study.name.c_str());
-    checkTerminalImpact(study, results, jobs);
-    results.calibratedTo = study.calibrateTo;
-    results.calibrations = calibrations;
-    validateOnTable4(study, results);
+    completeSweepResults(study, results, calibrations, jobs);
   }
   return results;
-}
-
-UncertaintyOptions makeUncertaintyOptions(const SweepStudy& study) {
-  UncertaintyOptions options;
-  options.samples = study.uncertaintySamples;
-  options.seed = static_cast<std::uint64_t>(study.uncertaintySeed);
-  options.sensitivity = true;
-  return options;
 }
 
 std::optional<UncertaintySwingsFile> readResumableSlice(const UncertaintySwingsFile& file, const std::string& path) {

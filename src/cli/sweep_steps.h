@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "study/sweep_run.h"  // makeUncertaintyOptions, completeSweepResults
 #include "study/uncertainty_swings_file.h"
 #include "sweep/sweep.h"
 #include "sweep/sweep_uncertainty.h"
@@ -28,9 +29,6 @@ std::vector<ParticipantCalibration> calibrateForSweep(SweepStudy& study);
 /// The plain sweep with a progress bar, then (unless interrupted) the terminal impact check
 /// and the Table 4 validation.
 SweepResults runPlainSweep(const SweepStudy& study, const std::vector<ParticipantCalibration>& calibrations, int jobs);
-
-/// The uncertainty analysis's options from the study (samples, seed, with the sensitivity).
-UncertaintyOptions makeUncertaintyOptions(const SweepStudy& study);
 
 /// The file an earlier interrupted run of the same analysis and slice as `file` left at
 /// `path`, if any; one from another analysis or slice is an InputError (file, key, expected,

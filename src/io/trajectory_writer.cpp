@@ -30,6 +30,10 @@ std::vector<std::vector<double>> columnsOf(const SwingTrajectory& t) {
 
 }  // namespace
 
+TrajectoryColumns calcTrajectoryColumns(const SwingTrajectory& trajectory) {
+  return {kColumns, columnsOf(trajectory)};
+}
+
 std::string formatTrajectoryCsv(const SwingTrajectory& trajectory) {
   return formatCsv(kColumns, columnsOf(trajectory));
 }

@@ -2,10 +2,19 @@
 // Trajectory output: CSV with our column names and an OpenSim .sto (version=1 header with
 // nRows, nColumns, inDegrees=yes, endheader) so OpenSim users can open it.
 #include <string>
+#include <vector>
 
 #include "model/swing_trajectory.h"
 
 namespace swingsim {
+
+/// The CSV's columns in file units (angles in degrees): `names` as formatTrajectoryCsv
+/// writes them, `values[i]` the samples of column i.
+struct TrajectoryColumns {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> values;
+};
+TrajectoryColumns calcTrajectoryColumns(const SwingTrajectory& trajectory);
 
 /// CSV text: time_s, hip_flexion_deg, knee_flexion_deg, hip_flexion_rate_deg_s,
 /// knee_flexion_rate_deg_s, hip_moment_Nm, knee_moment_Nm.

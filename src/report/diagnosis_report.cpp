@@ -408,4 +408,12 @@ std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackCo
   return renderStackedSvg(panels);
 }
 
+Json makeDiagnoseJson(const Diagnosis& diagnosis, const Comparison& before, const Comparison& after,
+                      const std::optional<HeldBackComparison>& heldBefore,
+                      const std::optional<HeldBackComparison>& heldAfter) {
+  Json json = makeDiagnosisJson(diagnosis, before, after);
+  if (heldBefore && heldAfter) json["knee_moment_comparison"] = makeHeldBackJson(*heldBefore, *heldAfter);
+  return json;
+}
+
 }  // namespace swingsim

@@ -5,6 +5,7 @@
 // with its 99 % band), the candidate ranking of every step, the accepted effects with their
 // intervals, the before/after table, and one JSON schema (docs/diagnosis.md, "JSON").
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,11 @@ std::string formatHeldBackText(const HeldBackComparison& before, const HeldBackC
 /// `{"quantity", "unit", "note", "before": {"rmse", "correlation", "files": {"<stem>":
 /// {"training", "rmse", "correlation"}}}, "after": {...}}` (docs/diagnosis.md, "JSON").
 Json makeHeldBackJson(const HeldBackComparison& before, const HeldBackComparison& after);
+/// What `swingsim diagnose --json` writes: makeDiagnosisJson, plus "knee_moment_comparison"
+/// (makeHeldBackJson) when both held-back comparisons are there.
+Json makeDiagnoseJson(const Diagnosis& diagnosis, const Comparison& before, const Comparison& after,
+                      const std::optional<HeldBackComparison>& heldBefore,
+                      const std::optional<HeldBackComparison>& heldAfter);
 /// Measured and model (before, after) against time, one panel per record, SVG.
 std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackComparison& after, const std::string& title);
 

@@ -45,4 +45,11 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
   return json;
 }
 
+Json makeSimulateJson(const SwingSetup& setup, const SwingResult& r) {
+  Json json = makeSwingResultJson(setup.participant.name, setup.lowering, r);
+  json["drive"] = driveKey(setup.participant.drive);
+  json["drive_description"] = describeDrive(setup.participant);
+  return json;
+}
+
 }  // namespace swingsim

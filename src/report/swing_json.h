@@ -18,4 +18,8 @@ Json makeStopImpactJson(const StopImpact& im);
 
 Json makeSwingResultJson(const std::string& participant, double lowering, const SwingResult& r);
 
+/// What `swingsim simulate --json` writes: makeSwingResultJson of the setup's participant
+/// and lowering, plus "drive" (driveKey) and "drive_description" (describeDrive).
+Json makeSimulateJson(const SwingSetup& setup, const SwingResult& r);
+
 }  // namespace swingsim

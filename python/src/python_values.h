@@ -1,0 +1,29 @@
+#pragma once
+// Conversions between the module's Python values and the documents swingsim reads and
+// writes: JSON results become dicts/lists/numbers, YAML files become nested dicts (values in
+// the file's units, keys as in the file) and go back to YAML text for the loaders, which
+// check them as they check a file.
+#include <pybind11/pybind11.h>
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "io/json_file.h"
+
+namespace swingsim::python {
+
+/// A JSON document as Python objects: objects -> dict (key order kept), arrays -> list,
+/// numbers -> int/float, null and
+/// non-finite numbers -> None (as formatJson writes them).
+pybind11::object toPython(const Json& json);
+
+/// A YAML document as Python objects: maps -> dict, sequences -> list, scalars -> bool
+/// (true/false), int, float or str, whichever reads the whole scalar; null -> None.
+pybind11::object toPython(const YAML::Node& node);
+
+/// The YAML text of a Python value built of dicts, lists/tuples, bools, numbers (numpy's
+/// too) and strings; floats in their shortest form that reads back to the same double.
+/// Throws InputError naming `where` for any other type.
+std::string toYamlText(const pybind11::handle& value, const std::string& where);
+
+}  // namespace swingsim::python

@@ -1,0 +1,196 @@
+// The Python module `swingsim._swingsim` (wrapped by swingsim/__init__.py): loading
+// participants and knee models into editable dicts, one swing, and a sweep study, each
+// calling the same library functions as the command line, with the GIL released while
+// they run. Bad input raises swingsim.InputError (a ValueError) with the CLI's
+// `file:line: key: ...` message; a failed run raises swingsim.RunError (a RuntimeError).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // std::optional arguments
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/input_error.h"
+#include "core/output_files.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "io/trajectory_writer.h"
+#include "python_values.h"
+#include "report/diagnosis_report.h"
+#include "report/swing_json.h"
+#include "report/sweep_report.h"
+#include "study/diagnosis_study.h"
+#include "study/sweep_run.h"
+#include "study/sweep_study.h"
+#include "swing/knee_setup.h"
+#include "swing/swing_simulation.h"
+
+namespace py = pybind11;
+
+namespace swingsim::python {
+namespace {
+
+bool isPath(const py::handle& value) {
+  return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
+}
+
+std::string pathText(const py::handle& value) {
+  return py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>();
+}
+
+std::string folderOf(const std::string& path) {
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  return folder.empty() ? "." : folder;
+}
+
+// An object of swingsim/__init__.py (Participant, KneeModel) as the loader's input: its
+// YAML text and the name its messages carry (relative paths resolve against its origin's
+// folder).
+std::pair<std::string, std::string> objectAsYaml(const py::handle& object, const char* what) {
+  const std::string origin = object.attr("origin").cast<std::string>();
+  const std::string source = origin + " (edited in Python)";
+  return {toYamlText(object.attr("to_dict")(), source + ": " + what), source};
+}
+
+Participant readParticipant(const py::handle& participant) {
+  if (isPath(participant)) return loadParticipant(pathText(participant));
+  const auto [text, source] = objectAsYaml(participant, "participant");
+  return parseParticipant(text, source);
+}
+
+KneeModel readKnee(const py::handle& knee, const Participant& participant) {
+  if (knee.is_none()) return loadKneeModel(participant.kneeModelPath);
+  if (isPath(knee)) return loadKneeModel(pathText(knee));
+  const auto [text, source] = objectAsYaml(knee, "knee model");
+  return parseKneeModel(text, source);
+}
+
+/// The participant file at `path` as a dict in file units.
+py::object loadParticipantDict(const std::string& path) {
+  const Participant p = loadParticipant(path);
+  return toPython(YAML::Load(formatParticipantYaml(p, folderOf(path))));
+}
+
+/// The knee model file at `path` as a dict in file units, with its `name` always there.
+py::object loadKneeDict(const std::string& path) {
+  const KneeModel model = loadKneeModel(path);
+  KneeModelSpec spec = model.spec;
+  if (spec.name.empty()) spec.name = model.name;
+  return toPython(YAML::Load(formatKneeModelYaml(spec)));
+}
+
+py::dict trajectoryArrays(const SwingTrajectory& trajectory) {
+  const TrajectoryColumns columns = calcTrajectoryColumns(trajectory);
+  py::dict arrays;
+  for (std::size_t i = 0; i < columns.names.size(); ++i)
+    arrays[py::str(columns.names[i])] = py::array_t<double>(columns.values[i].size(), columns.values[i].data());
+  return arrays;
+}
+
+/// One swing as `swingsim simulate --json` describes it, plus "knee_model" and the
+/// trajectory's columns as numpy arrays under "trajectory".
+py::dict simulate(const py::object& participant, double lowering, const py::object& knee) {
+  Participant loaded = readParticipant(participant);
+  const KneeModel model = readKnee(knee, loaded);
+  std::optional<SwingSetup> setup;
+  SwingResult result;
+  {
+    py::gil_scoped_release release;
+    setup = makeSwingSetup(std::move(loaded), model, lowering);
+    SwingOptions options;
+    options.trackImpactEnergy = true;  // as the CLI's simulate: one swing, the bookkeeping is cheap
+    result = simulateSwing(*setup, options);
+  }
+  py::dict out = toPython(makeSimulateJson(*setup, result));
+  out["knee_model"] = model.name;
+  out["trajectory"] = trajectoryArrays(result.trajectory);
+  return out;
+}
+
+/// The content of `swingsim sweep STUDY --json` ([--uncertainty N] [--seed S]) as Python
+/// objects. Ctrl-C stops it between swings and raises KeyboardInterrupt.
+py::object sweep(const std::string& studyPath, int uncertainty, std::optional<int> seed, int jobs) {
+  SweepStudy study = loadSweepStudy(studyPath);
+  if (uncertainty < 0) throw InputError("uncertainty: expected 0 (none) or a whole number of samples, found " +
+                                        std::to_string(uncertainty));
+  if (uncertainty > 0) study.uncertaintySamples = uncertainty;
+  if (seed) study.uncertaintySeed = *seed;
+  volatile bool stop = false;
+  // Called from the thread that runs the sweep (this one): Python's signal handlers run
+  // there, so Ctrl-C sets the stop flag.
+  auto checkSignals = [&stop](int, int) {
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) stop = true;
+  };
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    const std::vector<ParticipantCalibration> calibrations =
+        study.calibrateTo == CalibrationTarget::kStored ? std::vector<ParticipantCalibration>{}
+                                                         : calibrateSweepParticipants(study);
+    SweepResults results = runSweep(study, jobs, checkSignals, &stop);
+    if (!stop) completeSweepResults(study, results, calibrations, jobs);
+    std::optional<UncertaintyResults> uncertaintyResults;
+    if (!stop && study.uncertaintySamples > 0)
+      uncertaintyResults = runSweepUncertainty(study, makeUncertaintyOptions(study), jobs, checkSignals, &stop);
+    if (!stop) json = formatSweepJson(results, uncertaintyResults ? &*uncertaintyResults : nullptr);
+  }
+  if (stop) throw py::error_already_set();
+  return toPython(Json::parse(json));
+}
+
+/// The content of `swingsim compare STUDY --json`: the base model refitted on the training
+/// files, metrics overall and per phase.
+py::object compare(const std::string& studyPath) {
+  const DiagnosisStudy study = loadDiagnosisStudy(studyPath);
+  Json json;
+  {
+    py::gil_scoped_release release;
+    const auto plant = loadDiagnosisPlant(study, 1);  // as the CLI's compare
+    const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);
+    json = makeComparisonJson(fileStem(study.baseModelPath), b.comparison);
+  }
+  return toPython(json);
+}
+
+/// The content of `swingsim diagnose STUDY --json`: candidate effects ranked, the accepted
+/// ones, the error before and after.
+py::object diagnose(const std::string& studyPath) {
+  const DiagnosisStudy study = loadDiagnosisStudy(studyPath);
+  Json json;
+  {
+    py::gil_scoped_release release;
+    const auto plant = loadDiagnosisPlant(study, 8);  // as the CLI's diagnose
+    const Diagnosis dg = runDiagnosis(*plant, study.settings);
+    json = makeDiagnoseJson(dg, plant->compare(*dg.baseline.model), plant->compare(*dg.final.model),
+                            plant->compareHeldBack(*dg.baseline.model), plant->compareHeldBack(*dg.final.model));
+  }
+  return toPython(json);
+}
+
+}  // namespace
+}  // namespace swingsim::python
+
+PYBIND11_MODULE(_swingsim, m) {
+  using namespace swingsim;
+  m.doc() = "swingsim's C++ core; use the swingsim package (swingsim/__init__.py)";
+  static py::exception<InputError> inputError(m, "InputError", PyExc_ValueError);
+  static py::exception<RunError> runError(m, "RunError", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      PyErr_SetString(inputError.ptr(), e.what());
+    } catch (const RunError& e) {
+      PyErr_SetString(runError.ptr(), e.what());
+    }
+  });
+  m.def("load_participant_dict", &python::loadParticipantDict, py::arg("path"));
+  m.def("load_knee_dict", &python::loadKneeDict, py::arg("path"));
+  m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none());
+  m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
+        py::arg("jobs") = 0);
+  m.def("compare", &python::compare, py::arg("study_path"));
+  m.def("diagnose", &python::diagnose, py::arg("study_path"));
+}

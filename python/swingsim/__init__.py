@@ -1,0 +1,148 @@
+"""swingsim from Python: the swing phase of an above-knee prosthetic leg (docs/python.md).
+
+Participants and knee models load from their YAML files into editable objects whose fields
+are the file's keys, in the file's units (``p.segments.shank.mass_kg``); `simulate` runs one
+swing, `sweep` a knee-axis sweep study, `compare` and `diagnose` a diagnosis study, through the same C++ functions as the command
+line, with the GIL released while they run. Bad input raises `InputError` (a ValueError)
+with the command line's ``file:line: key: ...`` message; a failed run raises `RunError`.
+"""
+import copy as _copy
+import os as _os
+
+from swingsim import _swingsim
+from swingsim._swingsim import InputError, RunError
+
+InputError.__module__ = RunError.__module__ = "swingsim"  # shown as swingsim.InputError
+
+__all__ = ["InputError", "RunError", "Record", "Participant", "KneeModel", "SwingResult",
+           "load_participant", "load_knee", "simulate", "sweep", "compare", "diagnose"]
+
+
+class Record:
+    """A mapping of a YAML file, read and edited by attribute (``r.initial.knee_flexion_deg``)
+    or by key (``r["initial"]["knee_flexion_deg"]``). Setting an attribute that the file does
+    not have is an AttributeError (a misspelt key); set a new optional key by item instead."""
+
+    def __init__(self, values):
+        object.__setattr__(self, "_values", values)
+
+    def __getattr__(self, key):
+        values = object.__getattribute__(self, "_values")
+        if key not in values:
+            raise AttributeError(f"no key {key!r}; keys: {', '.join(values)}")
+        value = values[key]
+        return Record(value) if isinstance(value, dict) else value
+
+    def __setattr__(self, key, value):
+        if key not in self._values:
+            raise AttributeError(f"no key {key!r}; keys: {', '.join(self._values)} "
+                                 f"(an optional key the file may have: r[{key!r}] = ...)")
+        self._values[key] = value.to_dict() if isinstance(value, Record) else value
+
+    def __getitem__(self, key):
+        return self.__getattr__(key) if key in self._values else self._values[key]
+
+    def __setitem__(self, key, value):
+        self._values[key] = value.to_dict() if isinstance(value, Record) else value
+
+    def __contains__(self, key):
+        return key in self._values
+
+    def __dir__(self):
+        return list(self._values)
+
+    def keys(self):
+        return self._values.keys()
+
+    def to_dict(self):
+        """A deep copy of the fields as plain dicts and lists."""
+        return _copy.deepcopy(self._values)
+
+    def __repr__(self):
+        return f"{type(self).__name__}({self._values!r})"
+
+
+class _FileRecord(Record):
+    """A Record loaded from a file: `origin` is its path (relative paths in it resolve
+    against the origin's folder; messages about edited values name it)."""
+
+    def __init__(self, values, origin):
+        super().__init__(values)
+        object.__setattr__(self, "origin", str(origin))
+
+    def resolve(self, path):
+        """A path written in the file (``p.knee_model``) as a path from the current folder:
+        relative paths in a file are relative to the file's folder."""
+        return _os.path.join(_os.path.dirname(self.origin), _os.fspath(path))
+
+    def copy(self):
+        """An independent copy to edit."""
+        return type(self)(self.to_dict(), self.origin)
+
+    def __repr__(self):
+        return f"{type(self).__name__}(origin={self.origin!r}, {self._values!r})"
+
+
+class Participant(_FileRecord):
+    """A participant file (participants/*.yaml), every key as in the file."""
+
+
+class KneeModel(_FileRecord):
+    """A knee model file (models/*.yaml), every key as in the file."""
+
+
+def load_participant(path):
+    """The participant file at `path`. Raises InputError as `swingsim simulate` would."""
+    return Participant(_swingsim.load_participant_dict(_os.fspath(path)), _os.fspath(path))
+
+
+def load_knee(path):
+    """The knee model file at `path`. Raises InputError as `swingsim simulate --knee` would."""
+    return KneeModel(_swingsim.load_knee_dict(_os.fspath(path)), _os.fspath(path))
+
+
+class SwingResult:
+    """One swing: every key of `swingsim simulate --json` as an attribute (swing_time_s,
+    peak_knee_flexion_deg, bounce, bounces, bounce_height_deg, stop_impacts,
+    min_toe_clearance_m, events, drive, ...), `events_by_name` (name -> time_s), `knee_model`,
+    and `trajectory`: the trajectory CSV's columns (time_s, hip_flexion_deg, ...) as numpy
+    arrays. `json` is the dict `--json` writes."""
+
+    def __init__(self, values):
+        self.trajectory = Record(values.pop("trajectory"))
+        self.knee_model = values.pop("knee_model")
+        self.json = values
+        for key, value in values.items():
+            setattr(self, key, value)
+        self.events_by_name = {e["name"]: e["time_s"] for e in values["events"]}
+
+    def __repr__(self):
+        return (f"SwingResult(participant={self.participant!r}, lowering_m={self.lowering_m}, "
+                f"swing_time_s={self.swing_time_s})")
+
+
+def simulate(participant, lowering_m=0.0, knee=None):
+    """One swing, as `swingsim simulate PARTICIPANT --lowering M [--knee MODEL]`.
+
+    participant: a path or a Participant; lowering_m: knee-axis lowering, m; knee: None (the
+    participant's knee_model), a path or a KneeModel. Returns a SwingResult."""
+    return SwingResult(_swingsim.simulate(participant, float(lowering_m), knee))
+
+
+def sweep(study_path, uncertainty=0, seed=None, jobs=0):
+    """A knee-axis sweep study, as `swingsim sweep STUDY --json FILE [--uncertainty N]
+    [--seed S]`: returns what the JSON file holds, as dicts and lists. jobs: worker threads,
+    0 = all cores. No report or CSV is written. Ctrl-C stops it between swings."""
+    return _swingsim.sweep(_os.fspath(study_path), int(uncertainty), seed, int(jobs))
+
+
+def compare(study_path):
+    """Model against measurement for a cylinder-diagnosis or swing-diagnosis study, as
+    `swingsim compare STUDY --json FILE`: returns what the JSON file holds. No plots written."""
+    return _swingsim.compare(_os.fspath(study_path))
+
+
+def diagnose(study_path):
+    """The diagnosis of a cylinder-diagnosis or swing-diagnosis study, as `swingsim diagnose
+    STUDY --json FILE`: returns what the JSON file holds. No report or model is written."""
+    return _swingsim.diagnose(_os.fspath(study_path))

@@ -1,0 +1,120 @@
+"""swingsim.simulate against the command line's `simulate --json`, and edits of a loaded
+participant changing the swing."""
+import json
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import swingsim
+
+# The module and the CLI call the same functions on the same inputs: results agree to the
+# last bit; this allows only for the JSON's shortest round-trip printing of doubles.
+EXACT = 1e-12
+# A change must exceed the converged integrator's 0.1 ms of swing time (README, Convergence
+# study) tenfold to count as measurable; angles likewise, far above its error.
+MEASURABLE_S = 1e-3
+MEASURABLE_DEG = 1.0
+
+
+def run_cli_simulate(cli, tmp_path, participant, *args):
+    out = tmp_path / "cli.json"
+    subprocess.run([cli, "simulate", str(participant), "--json", str(out), "--out", str(tmp_path / "traj"), *args],
+                   check=True, capture_output=True)
+    return json.loads(out.read_text())
+
+
+@pytest.mark.parametrize("lowering", [0.0, 0.05])
+def test_simulate_equals_cli(repo, cli, tmp_path, lowering):
+    participant = repo / "participants" / "p1.yaml"
+    expected = run_cli_simulate(cli, tmp_path, participant, "--lowering", str(lowering))
+    result = swingsim.simulate(participant, lowering_m=lowering)
+    assert result.swing_time_s == pytest.approx(expected["swing_time_s"], abs=EXACT)
+    assert [e["name"] for e in result.events] == [e["name"] for e in expected["events"]]
+    for got, want in zip(result.events, expected["events"]):
+        assert got["time_s"] == pytest.approx(want["time_s"], abs=EXACT)
+    assert result.bounce == expected["bounce"]
+    assert result.bounces == expected["bounces"]
+    assert result.peak_knee_flexion_deg == pytest.approx(expected["peak_knee_flexion_deg"], abs=EXACT)
+    assert result.drive == expected["drive"]
+
+
+def test_trajectory_equals_cli_csv(repo, cli, tmp_path):
+    participant = repo / "participants" / "p2.yaml"
+    run_cli_simulate(cli, tmp_path, participant)
+    csv = next((tmp_path / "traj").glob("*.csv"))
+    table = np.genfromtxt(csv, delimiter=",", names=True)
+    result = swingsim.simulate(participant)
+    assert isinstance(result.trajectory.time_s, np.ndarray)
+    for name in table.dtype.names:
+        np.testing.assert_allclose(result.trajectory[name], table[name], rtol=1e-6, atol=1e-9, err_msg=name)
+
+
+def test_loaded_object_equals_its_file(repo):
+    path = repo / "participants" / "p1.yaml"
+    participant = swingsim.load_participant(path)
+    knee = swingsim.load_knee(repo / "models" / "damping-table-default.yaml")
+    from_path = swingsim.simulate(path)
+    from_objects = swingsim.simulate(participant, knee=knee)
+    assert from_objects.swing_time_s == from_path.swing_time_s
+    assert from_objects.events == from_path.events
+
+
+def test_fields_read_in_file_units(repo):
+    participant = swingsim.load_participant(repo / "participants" / "p1.yaml")
+    assert participant.name == "P1"
+    assert participant.segments.shank.mass_kg == pytest.approx(0.785)
+    assert participant.initial.knee_flexion_deg == pytest.approx(10)
+    with pytest.raises(AttributeError, match="mass_kgg"):
+        participant.segments.shank.mass_kgg = 1.0
+
+
+def test_heavier_shank_slows_the_thigh_and_lowers_the_peak(repo):
+    # The same hip moment drives a heavier leg: the thigh reaches its target later, and the
+    # heavier shank (more inertia about the knee) flexes less.
+    participant = swingsim.load_participant(repo / "participants" / "p1.yaml")
+    base = swingsim.simulate(participant)
+    heavier = participant.copy()
+    heavier.segments.shank.mass_kg = 1.5 * participant.segments.shank.mass_kg
+    heavier.segments.shank.inertia_kgm2 = 1.5 * participant.segments.shank.inertia_kgm2
+    slower = swingsim.simulate(heavier)
+    assert participant.segments.shank.mass_kg == pytest.approx(0.785)  # the copy was edited, not the original
+    thigh = "thigh_at_target"
+    assert slower.events_by_name[thigh] > base.events_by_name[thigh] + MEASURABLE_S
+    assert slower.peak_knee_flexion_deg < base.peak_knee_flexion_deg - MEASURABLE_DEG
+
+
+def test_more_knee_damping_lowers_the_peak_flexion(repo):
+    participant = repo / "participants" / "p1.yaml"
+    knee = swingsim.load_knee(repo / "models" / "damping-table-default.yaml")
+    base = swingsim.simulate(participant, knee=knee)
+    damped = knee.copy()
+    damped.damping_table.moment_Nm = [2 * m for m in knee.damping_table.moment_Nm]
+    stiffer = swingsim.simulate(participant, knee=damped)
+    assert stiffer.peak_knee_flexion_deg < base.peak_knee_flexion_deg - MEASURABLE_DEG
+
+
+def test_simulate_releases_the_gil(repo):
+    # A Python thread counts while a swing runs: it can only count if simulate let go of the
+    # GIL (C++ that held it would never reach a point where Python switches threads). The
+    # extension is called directly, so no Python code runs between the two reads of count.
+    done = threading.Event()
+    count = 0
+
+    def spin():
+        nonlocal count
+        while not done.is_set():
+            count += 1
+
+    spinner = threading.Thread(target=spin)
+    spinner.start()
+    try:
+        path = str(repo / "participants" / "p1.yaml")
+        before = count
+        swingsim._swingsim.simulate(path, 0.0, None)
+        during = count - before
+    finally:
+        done.set()
+        spinner.join()
+    assert during > 0
