@@ -17,9 +17,12 @@
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
 #include "python_values.h"
+#include "report/cylinder_fit_report.h"
+#include "report/cylinder_fit_run.h"
 #include "report/diagnosis_report.h"
 #include "report/swing_json.h"
 #include "report/sweep_report.h"
+#include "study/cylinder_study.h"
 #include "study/diagnosis_study.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
@@ -140,6 +143,19 @@ py::object sweep(const std::string& studyPath, int uncertainty, std::optional<in
   return toPython(Json::parse(json));
 }
 
+/// The content of `swingsim fit STUDY --json`: each Mauch model's coefficients and its
+/// ME / RMSE / R^2 per bench file.
+py::object fit(const std::string& studyPath) {
+  const CylinderFitStudy study = loadCylinderFitStudy(studyPath);
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    const CylinderFitRun run = runCylinderFits(study.models, study.train, study.validate, study.fitSwitches);
+    json = formatFitJson(run.models);
+  }
+  return toPython(Json::parse(json));
+}
+
 /// The content of `swingsim compare STUDY --json`: the base model refitted on the training
 /// files, metrics overall and per phase.
 py::object compare(const std::string& studyPath) {
@@ -191,6 +207,7 @@ PYBIND11_MODULE(_swingsim, m) {
   m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none());
   m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
         py::arg("jobs") = 0);
+  m.def("fit", &python::fit, py::arg("study_path"));
   m.def("compare", &python::compare, py::arg("study_path"));
   m.def("diagnose", &python::diagnose, py::arg("study_path"));
 }

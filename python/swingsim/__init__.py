@@ -2,7 +2,8 @@
 
 Participants and knee models load from their YAML files into editable objects whose fields
 are the file's keys, in the file's units (``p.segments.shank.mass_kg``); `simulate` runs one
-swing, `sweep` a knee-axis sweep study, `compare` and `diagnose` a diagnosis study, through the same C++ functions as the command
+swing, `sweep` a knee-axis sweep study, `fit` a cylinder-fit study, `compare` and `diagnose` a
+diagnosis study, through the same C++ functions as the command
 line, with the GIL released while they run. Bad input raises `InputError` (a ValueError)
 with the command line's ``file:line: key: ...`` message; a failed run raises `RunError`.
 """
@@ -15,7 +16,7 @@ from swingsim._swingsim import InputError, RunError
 InputError.__module__ = RunError.__module__ = "swingsim"  # shown as swingsim.InputError
 
 __all__ = ["InputError", "RunError", "Record", "Participant", "KneeModel", "SwingResult",
-           "load_participant", "load_knee", "simulate", "sweep", "compare", "diagnose"]
+           "load_participant", "load_knee", "simulate", "sweep", "fit", "compare", "diagnose"]
 
 
 class Record:
@@ -134,6 +135,13 @@ def sweep(study_path, uncertainty=0, seed=None, jobs=0):
     [--seed S]`: returns what the JSON file holds, as dicts and lists. jobs: worker threads,
     0 = all cores. No report or CSV is written. Ctrl-C stops it between swings."""
     return _swingsim.sweep(_os.fspath(study_path), int(uncertainty), seed, int(jobs))
+
+
+def fit(study_path):
+    """The Mauch cylinder fit of a cylinder-fit study, as `swingsim fit STUDY --json FILE`:
+    returns what the JSON file holds (each model's coefficients and ME / RMSE / R^2 per bench
+    file). No report written."""
+    return _swingsim.fit(_os.fspath(study_path))
 
 
 def compare(study_path):

@@ -149,6 +149,15 @@ CylinderBenchStudy readCylinderBenchStudy(YamlMap& yaml) {
   return s;
 }
 
+CylinderFitStudy loadCylinderFitStudy(const std::string& path) {
+  YamlMap yaml = YamlMap::loadFile(path);
+  if (!yaml.has("kind")) yaml.getString("kind");
+  yaml.getChoice("kind", {"cylinder-fit"}, "");
+  CylinderFitStudy study = readCylinderFitStudy(yaml);
+  yaml.finish();
+  return study;
+}
+
 CylinderFitStudy readCylinderFitStudy(YamlMap& yaml) {
   CylinderFitStudy s;
   s.path = yaml.path();

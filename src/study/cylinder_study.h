@@ -57,6 +57,9 @@ struct CylinderFitStudy {
 
 /// Reads the keys of a cylinder-fit study (`kind` already read). Throws InputError.
 CylinderFitStudy readCylinderFitStudy(YamlMap& yaml);
+/// Reads a `kind: cylinder-fit` study file (`swingsim fit`, Python `swingsim.fit`): the
+/// kind checked, every key read, unknown keys refused. Throws InputError.
+CylinderFitStudy loadCylinderFitStudy(const std::string& path);
 
 /// The YAML text of a study; paths relative to `baseDir` (the folder it will be saved in)
 /// where they lie below it, else absolute.

@@ -28,7 +28,9 @@ TEST(EffectTable, DescriptorsAreConsistent) {
     EXPECT_EQ(e.degreesOfFreedom(), static_cast<int>(e.parameters.size()));
     for (double g : e.grid) EXPECT_GT(g, 0.0);
     // Only the swing's effects live in the participant.
-    if (e.participantLevel) EXPECT_EQ(e.plant, PlantKind::kSwing);
+    if (e.participantLevel) {
+      EXPECT_EQ(e.plant, PlantKind::kSwing);
+    }
   }
 }
 
