@@ -6,22 +6,11 @@
 #include <sstream>
 #include <vector>
 
+#include "report/svg_plot.h"
+
 namespace swingsim {
 
-std::string escapeHtml(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escapeHtml(const std::string& text) { return svgEscape(text); }  // the same characters as in SVG
 
 namespace {
 
