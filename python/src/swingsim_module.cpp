@@ -129,9 +129,7 @@ py::object sweep(const std::string& studyPath, int uncertainty, std::optional<in
   std::string json;
   {
     py::gil_scoped_release release;
-    const std::vector<ParticipantCalibration> calibrations =
-        study.calibrateTo == CalibrationTarget::kStored ? std::vector<ParticipantCalibration>{}
-                                                         : calibrateSweepParticipants(study);
+    const std::vector<ParticipantCalibration> calibrations = calibrateSweepParticipants(study);  // none if kStored
     SweepResults results = runSweep(study, jobs, checkSignals, &stop);
     if (!stop) completeSweepResults(study, results, calibrations, jobs);
     std::optional<UncertaintyResults> uncertaintyResults;

@@ -63,7 +63,7 @@ int runExportOsim(const ExportOsimArguments& a) {
   const std::string stem = makeTrajectoryFileStem(p.name, a.lowering);
   const std::string text =
       formatOsimModel(makeOsimLegModel(geometry, makePlacement(p, knee)), makeHeader(p, knee.name, a.lowering, stem + ".sto"));
-  const std::string path = a.out.value_or("out/simulate-" + makeSafeFileStem(p.name)) + "/" + stem + ".osim";
+  const std::string path = a.out.value_or(makeTrajectoryFolder(p.name)) + "/" + stem + ".osim";
   writeFileAtomic(path, text);
   std::printf("export-osim: wrote %s (%s, knee lowered %s m)\n", path.c_str(), p.name.c_str(), formatNumber(a.lowering).c_str());
   return 0;

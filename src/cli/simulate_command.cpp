@@ -118,7 +118,7 @@ int runSimulate(const SimulateArguments& a) {
   for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
   std::printf("\n");
 
-  const std::string out = a.out.value_or("out/simulate-" + makeSafeFileStem(p.name));
+  const std::string out = a.out.value_or(makeTrajectoryFolder(p.name));
   const std::string tag = makeTrajectoryFileStem(p.name, setup.lowering);
   writeFileAtomic(out + "/" + tag + ".csv", formatTrajectoryCsv(r.trajectory));
   writeFileAtomic(out + "/" + tag + ".sto", formatTrajectorySto(r.trajectory, tag));

@@ -61,4 +61,8 @@ std::string makeTrajectoryFileStem(const std::string& participantName, double lo
   return makeSafeFileStem(participantName) + "-" + tag;
 }
 
+std::string makeTrajectoryFolder(const std::string& participantName) {
+  return "out/simulate-" + makeSafeFileStem(participantName);
+}
+
 }  // namespace swingsim

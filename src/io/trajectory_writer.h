@@ -28,5 +28,8 @@ std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::st
 /// `<participant>-lower050mm` (whole millimetres), else `-lower0.4mm` with the lowering in full.
 /// `lowering` in m.
 std::string makeTrajectoryFileStem(const std::string& participantName, double lowering);
+/// The default folder of one simulated swing's outputs (and of its exported model):
+/// `out/simulate-<participant>`.
+std::string makeTrajectoryFolder(const std::string& participantName);
 
 }  // namespace swingsim
