@@ -36,8 +36,12 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const std::string report = formatDiagnosisText(dg, before, after);
   const std::string check = plant->verify(*dg.final.model);
   const std::string drive = describeStudyDrive(study);
-  std::printf("%s: %s, %zu training file(s)%s\n", study.name.c_str(), fileStem(study.baseModelPath).c_str(),
-              study.train.size(), drive.empty() ? "" : ("; " + drive).c_str());
+  if (study.plant == PlantKind::kSweep)
+    std::printf("%s: the sweep of %s against %s, leave one participant out\n", study.name.c_str(),
+                study.sweepStudyPath.c_str(), study.measuredPath.c_str());
+  else
+    std::printf("%s: %s, %zu training file(s)%s\n", study.name.c_str(), fileStem(study.baseModelPath).c_str(),
+                study.train.size(), drive.empty() ? "" : ("; " + drive).c_str());
   std::printf("where the base model fails (before):\n%s\n%s", formatComparisonTable(before).c_str(), report.c_str());
   if (!check.empty()) std::printf("%s\n", check.c_str());
   // An independent measurement the fit never saw (the swing's knee moment from inverse
@@ -70,7 +74,7 @@ Command addDiagnoseCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "diagnose", "rank candidate missing physical effects, add the accepted ones, report the error before and after");
   auto a = std::make_shared<DiagnoseArguments>();
-  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis or swing-diagnosis")->required()->type_name("");
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis, swing-diagnosis or sweep-diagnosis")->required()->type_name("");
   addStudyOutOption(sub, a->out);
   addJsonOption(sub, a->json);
   addTextOption(sub, "--save-model", a->saveModel,

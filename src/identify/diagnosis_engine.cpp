@@ -122,11 +122,25 @@ CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& curre
   }
   const PlantFit& s = fits[best];
   const int dof = d.degreesOfFreedom();
-  const LrTest t = calcLrTest(current.rss, s.rss, s.likelihoodResidual, dof);
+  LrTest t = calcLrTest(current.rss, s.rss, s.likelihoodResidual, dof);
+  // Cross-validated plants: significant on the training rows of every fold, so the test
+  // that counts is the least significant fold's.
+  if (!s.foldRss.empty() && s.foldRss.size() == current.foldRss.size() && s.foldResidual.size() == s.foldRss.size()) {
+    for (std::size_t f = 0; f < s.foldRss.size(); ++f) {
+      const LrTest fold = calcLrTest(current.foldRss[f], s.foldRss[f], s.foldResidual[f], dof);
+      c.foldPValues.push_back(fold.p);
+      if (f == 0 || !(fold.p <= t.p)) t = fold;  // NaN counts as the least significant
+    }
+  }
   c.model = s.model;
   c.trainRmse = s.trainRmse;
   c.validationRmse = s.validationRmse;
+  c.pooledValidationRmse = s.pooledValidationRmse;
   applyTestAndValidation(c, t, dof, current.validationRmse, settings);
+  // A pooled held-out rule (leave one participant out) replaces the per-record one.
+  if (std::isfinite(current.pooledValidationRmse) || std::isfinite(s.pooledValidationRmse))
+    c.validationImproves =
+        s.pooledValidationRmse <= current.pooledValidationRmse * (1.0 - settings.minValidationImprovement);
   const double inflate = calcStandardErrorInflation(static_cast<double>(s.samples), t.nEff);
   c.parameters = parametersWithIntervals(plant, s, id, inflate);
   if (!d.grid.empty()) {
@@ -194,6 +208,7 @@ std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const Eff
   a.dof = std::max(1, closest->dof);
   a.level = settings.alpha / applicable;
   a.recordsNow = static_cast<int>(out.final.trainResidual.size());
+  a.records = out.plant == PlantKind::kSweep ? "participants" : "swings";
   // The fitted effect's LR is the estimate of its noncentrality on these records.
   a.recordsNeeded = calcRecordsForPower(a.likelihoodRatio / std::max(1, a.recordsNow), a.dof, a.level, kPowerTarget);
   return a;
@@ -203,13 +218,13 @@ std::string describePowerAdvice(const PowerAdvice& a) {
   const std::string at = " at the acceptance rule's level (alpha " + fmtRatio(a.level) + " after Bonferroni)";
   if (a.recordsNeeded == 0)
     return " No candidate is significant, and the closest, " + a.effect + ", has no likelihood gain (LR " +
-           fmtRatio(a.likelihoodRatio) + "): more swings like these would not make it so.";
+           fmtRatio(a.likelihoodRatio) + "): more " + a.records + " like these would not make it so.";
   if (a.recordsNeeded <= a.recordsNow)
     return " The closest candidate, " + a.effect + " (LR " + fmtRatio(a.likelihoodRatio) + "), already has " +
            fmtPercent(100 * kPowerTarget) + " % power" + at + " on these records at its fitted size.";
   return " The effective sample size is too small to accept any effect: at its fitted size the closest, " + a.effect +
-         " (LR " + fmtRatio(a.likelihoodRatio) + " on " + std::to_string(a.recordsNow) + " training swing(s)), would need " +
-         std::to_string(a.recordsNeeded - a.recordsNow) + " more swings like these (" + std::to_string(a.recordsNeeded) +
+         " (LR " + fmtRatio(a.likelihoodRatio) + " on " + std::to_string(a.recordsNow) + " training " + a.records + "), would need " +
+         std::to_string(a.recordsNeeded - a.recordsNow) + " more " + a.records + " like these (" + std::to_string(a.recordsNeeded) +
          " in all) for " + fmtPercent(100 * kPowerTarget) + " % power" + at + ".";
 }
 

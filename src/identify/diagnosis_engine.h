@@ -41,6 +41,15 @@ struct PlantFit {
   std::vector<std::vector<int>> trainPhase;
   double trainRmse = 0;                 ///< of trainResidual
   std::vector<double> validationRmse;   ///< per held-out record
+  /// Cross-validated plants (the sweep: leave one participant out): per fold, the RSS and
+  /// the residual of that fold's training rows at that fold's own fit. Empty for a plant with
+  /// one fixed training/held-out split. When set, a candidate must be significant on the
+  /// training rows of every fold (the engine tests each fold and keeps the largest p).
+  std::vector<double> foldRss;
+  std::vector<ResidualSegments> foldResidual;
+  /// The held-out RMSE pooled over every held-out row of every fold (unit of the data); NaN:
+  /// the plant has no pooled rule, and a candidate must lower every held-out RMSE instead.
+  double pooledValidationRmse = std::numeric_limits<double>::quiet_NaN();
   /// Standard errors (unit of the reported parameter, before inflation for autocorrelation)
   /// of the fitted parameters of every effect in the model, by effect, in the order of the
   /// descriptor's parameters; and of the base model's own free parameters.
@@ -139,6 +148,7 @@ struct PowerAdvice {
   double level = 0;            ///< the rule's alpha, Bonferroni-corrected over the candidates
   int recordsNow = 0;          ///< training records
   int recordsNeeded = 0;       ///< in all; 0: no number of records would do (no effect at all)
+  std::string records = "swings";  ///< what a record is, for the advice ("participants" for the sweep)
 };
 constexpr double kPowerTarget = 0.8;
 

@@ -5,6 +5,7 @@
 // best accepted candidate, ambiguity advice and parameter intervals. The cylinder and the
 // swing diagnoses differ only in how a candidate model is fitted and run.
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +47,11 @@ struct EffectScore {
   std::string notApplicable;           ///< non-empty: not scored, and why
   double trainRmse = 0;                ///< units of the data (N, deg)
   std::vector<double> validationRmse;  ///< per validation file
+  /// Cross-validated plants: the held-out RMSE pooled over all folds (NaN otherwise), and
+  /// the likelihood-ratio p of each fold's training rows (empty otherwise; pValue is their
+  /// largest, the least significant fold).
+  double pooledValidationRmse = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> foldPValues;
   double effectiveSamples = 0;         ///< n_eff of its training residual
   double likelihoodRatio = 0;          ///< n_eff ln(RSS_current / RSS_candidate)
   int dof = 0;                         ///< added parameters (a profiled grid parameter counts one)

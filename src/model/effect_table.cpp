@@ -82,6 +82,61 @@ const std::vector<EffectDescriptor>& effectTable() {
        "a prosthesis is weighed whole below the knee more often than by segment; the shoe is rarely in the table",
        "weighing the prosthesis below the knee with its shoe, or swings with an added mass (Bach 1994)",
        {"scale"}, 1, {}, 1.0, true},
+      // ---- Sweep: one value shared by every participant, so a held-out participant is
+      // predicted from the others (identify/sweep_plant.cpp holds the laws and ranges) ------
+      {EffectId::kHipEffortAdaptation, P::kSweep, "hip_effort_adaptation",
+       "the hip moment changes with the knee-axis lowering in proportion to (I_knee(d) / I_knee(0))^a, "
+       "I_knee the shank + foot inertia about the knee (a < 0: more effort on the lighter-feeling lowered shank)",
+       "Hale 1990 (Prosthet Orthot Int 14:125): amputees raised hip effort 37-71 % for a heavier shank; either sign",
+       "the hip moment measured at each lowering (dynamometer or inverse dynamics)",
+       {"exponent"}, 1, {}, 1.0, true},
+      {EffectId::kHipTempoLowering, P::kSweep, "hip_tempo_lowering",
+       "the hip drive's timing changes with the lowering: time scale x (1 + c d / 0.1 m)",
+       "Burkett, Smeathers & Barker 2001 (Prosthet Orthot Int 25:210): running speed rose 26 % on the lowered knee; "
+       "a faster cadence shortens the hip drive (c < 0)",
+       "the stride time or cadence measured at each lowering",
+       {"change_per_100mm"}, 1, {}, 1.0, true},
+      {EffectId::kComRuleProportional, P::kSweep, "com_rule_proportional",
+       "the segment COMs move in proportion to the new lengths when the knee is lowered (the other reading of Burkett)",
+       "Burkett 2004's sentence on the COMs allows both readings (docs/assumptions.md, COM rule)",
+       "the segment COMs measured (balance board) on the lowered build",
+       {"proportional"}, 0, {1.0}, 1.0, true},
+      {EffectId::kKneeFrictionScale, P::kSweep, "knee_friction_scale",
+       "the knee friction near extension (Tc) is larger or smaller than Burkett's Table 2 in every knee, by one factor",
+       "Burkett 2004 Table 2 gives Tc per knee to the nearest 5 N m ('L5' for P4)",
+       "the friction moment measured on the knee (a spring balance at the shank, near extension)",
+       {"scale"}, 1, {}, 1.0, true},
+      {EffectId::kStopRestitution, P::kSweep, "stop_restitution",
+       "the hyperextension bumper returns a different share of the impact speed (coefficient of restitution e)",
+       "no published bumper restitution (docs/assumptions.md prior 0.3-0.5)",
+       "the knee's rebound off the stop filmed, or a drop test of the bumper",
+       {"restitution"}, 1, {}, 1.0, true},
+      {EffectId::kStopStiffness, P::kSweep, "stop_stiffness",
+       "the hyperextension bumper is stiffer or softer (Hunt-Crossley stiffness)",
+       "no published bumper stiffness (docs/assumptions.md)",
+       "a static load test of the bumper",
+       {"stiffness_Nm_per_rad1p5"}, 1, {}, 1.0, true},
+      {EffectId::kHipExtensionRatio, P::kSweep, "hip_extension_ratio",
+       "the terminal-swing hip extension moment is a different share of the flexion moment",
+       "not published (Burkett measured it per participant); terminal-swing hip torques rise most with running speed "
+       "(Schache 2011, Dorn 2012)",
+       "the hip moment measured by inverse dynamics",
+       {"ratio"}, 1, {}, 1.0, true},
+      {EffectId::kHipFlexionDuration, P::kSweep, "hip_flexion_duration",
+       "the hip flexion half-sine lasts longer or shorter than the assumed 0.20 s",
+       "not published; the dynamometer's flexion half-cycle at 150 deg/s over 30-40 deg of hip motion",
+       "the hip moment measured by inverse dynamics",
+       {"duration_s"}, 1, {}, 1.0, true},
+      {EffectId::kHipExtensionDuration, P::kSweep, "hip_extension_duration",
+       "the hip extension half-sine lasts longer or shorter than the assumed 0.20 s",
+       "not published; as the flexion duration",
+       "the hip moment measured by inverse dynamics",
+       {"duration_s"}, 1, {}, 1.0, true},
+      {EffectId::kThighTargetFlexion, P::kSweep, "thigh_target_flexion",
+       "the swing ended at a different thigh flexion than the assumed 20 deg (Burkett's 'defined position of flexion')",
+       "Burkett 2004 does not give the thigh angle that ends a swing",
+       "the thigh angle at heel contact measured (motion capture)",
+       {"flexion_deg"}, 1, {}, 1.0, true},
   };
   return table;
 }
@@ -105,6 +160,16 @@ const EffectDescriptor* findEffect(PlantKind plant, const std::string& name) {
   return nullptr;
 }
 
-std::string plantName(PlantKind plant) { return plant == PlantKind::kCylinder ? "cylinder" : "swing"; }
+std::string plantName(PlantKind plant) {
+  switch (plant) {
+    case PlantKind::kCylinder:
+      return "cylinder";
+    case PlantKind::kSwing:
+      return "swing";
+    case PlantKind::kSweep:
+      return "sweep";
+  }
+  return "cylinder";
+}
 
 }  // namespace swingsim

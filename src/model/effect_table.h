@@ -14,6 +14,7 @@ namespace swingsim {
 enum class PlantKind {
   kCylinder,  ///< the Mauch hydraulic cylinder on a bench (force vs piston motion)
   kSwing,     ///< the swing of a prosthetic leg (knee and hip angles vs time)
+  kSweep,     ///< the knee-axis sweep (swing time vs lowering, per participant)
 };
 
 /// Every effect of the library.
@@ -33,6 +34,18 @@ enum class EffectId {
   kHipMomentScale,
   kShankMassScale,
   kBelowKneeMassScale,
+  // Sweep (Burkett 2004's unpublished assumptions, sweep/sweep_assumptions.h), each one
+  // value shared by every participant.
+  kHipEffortAdaptation,
+  kHipTempoLowering,
+  kComRuleProportional,
+  kKneeFrictionScale,
+  kStopRestitution,
+  kStopStiffness,
+  kHipExtensionRatio,
+  kHipFlexionDuration,
+  kHipExtensionDuration,
+  kThighTargetFlexion,
 };
 
 /// One candidate effect.

@@ -57,6 +57,9 @@ std::vector<std::string> saveDiagnosedModel(const DiagnosisStudy& study, const D
   const std::string accepted = acceptedList(dg);
   const std::string header = "Written by " + command + "\nbase model: " + study.baseModelPath +
                              "\naccepted effects: " + accepted + "\nfree parameters refitted on the study's training files";
+  if (study.plant == PlantKind::kSweep)
+    throw InputError("diagnose: --save-model: a sweep diagnosis changes no single model file (its shared values act "
+                     "on every participant of the sweep study); the fitted values are in the report and --json");
   if (study.plant == PlantKind::kCylinder) {
     writeFileAtomic(path, formatKneeModelYaml(diagnosedCylinder(study, cylinderParams(*dg.final.model), accepted), header));
     return {path};

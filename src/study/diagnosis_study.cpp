@@ -3,14 +3,17 @@
 #include "core/output_files.h"
 #include "identify/cylinder_plant.h"
 #include "identify/swing_plant.h"
+#include "identify/sweep_plant.h"
 #include "io/bench_csv.h"
 #include "io/knee_model_loader.h"
 #include "io/motion_columns_yaml.h"
 #include "io/motion_file.h"
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
+#include "io/sweep_times_csv.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
+#include "study/sweep_study.h"
 
 #include <cmath>
 
@@ -90,8 +93,29 @@ void serialize(A& a, GrfSettings& g) {
 }
 
 template <class A>
+void serializeRecordStudy(A& a, DiagnosisStudy& s);
+template <class A>
+void serializeCandidates(A& a, DiagnosisStudy& s);
+
+template <class A>
 void serialize(A& a, DiagnosisStudy& s) {
-  a.choice("kind", s.plant, {{"cylinder-diagnosis", PlantKind::kCylinder}, {"swing-diagnosis", PlantKind::kSwing}});
+  a.choice("kind", s.plant,
+           {{"cylinder-diagnosis", PlantKind::kCylinder}, {"swing-diagnosis", PlantKind::kSwing},
+            {"sweep-diagnosis", PlantKind::kSweep}});
+  if (s.plant == PlantKind::kSweep) {
+    // The model is a sweep study's sweep; the measurement a table of swing times.
+    a.path("sweep", s.sweepStudyPath);
+    a.path("measured", s.measuredPath);
+    a.optionalText("name", s.name);
+    a.optionalText("description", s.description);
+  } else {
+    serializeRecordStudy(a, s);
+  }
+  serializeCandidates(a, s);
+}
+
+template <class A>
+void serializeRecordStudy(A& a, DiagnosisStudy& s) {
   if (s.plant == PlantKind::kSwing) a.path("participant", s.participantPath);
   a.path("base_model", s.baseModelPath);
   a.optionalText("name", s.name);
@@ -137,6 +161,10 @@ void serialize(A& a, DiagnosisStudy& s) {
                   [&] { return r.path; });
       names.push_back(r.displayName());
     }
+}
+
+template <class A>
+void serializeCandidates(A& a, DiagnosisStudy& s) {
   // Candidates: all of the plant's effects unless the study names some.
   bool namesCandidates = !s.settings.candidates.empty();
   if constexpr (A::kReading) namesCandidates = a.has("candidates");
@@ -232,6 +260,12 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
     for (const auto& r : study.validate) validate.push_back(readBenchCsv(r.path, 3));
     return std::make_unique<CylinderPlant>(base, std::move(train), std::move(validate), study.fitSwitches,
                                            study.plotSeconds);
+  }
+  if (study.plant == PlantKind::kSweep) {
+    const SweepStudy sweep = loadSweepStudy(study.sweepStudyPath);
+    // measurement_noise (ms) stands for the standard error of a row without sd_s.
+    return std::make_unique<SweepPlant>(sweep, readSweepTimesCsv(study.measuredPath), study.measuredPath,
+                                        study.settings.measurementNoise / 1000.0);
   }
   SwingBase base;
   base.participant = loadParticipant(study.participantPath);

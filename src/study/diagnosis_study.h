@@ -1,6 +1,6 @@
 #pragma once
 // Study YAML for `swingsim compare` and `swingsim diagnose`, one reader for both plants:
-//   kind: cylinder-diagnosis | swing-diagnosis
+//   kind: cylinder-diagnosis | swing-diagnosis | sweep-diagnosis
 //   name, description (optional), base_model (knee model YAML), train, validate (record CSV
 //   lists, relative to the study), candidates (optional; default the plant's whole library,
 //   model/effect_table.h), acceptance: {alpha, min_validation_improvement, max_effects,
@@ -13,6 +13,10 @@
 //   record's hip angle is prescribed: docs/winter.md). A swing study's train/validate item is a
 //   file name, or a map {name, file, toe_off_s, heel_contact_s | swing, inverse_dynamics}
 //   (StudyRecord; docs/measured-data.md) so that several swings of one file are records.
+//   sweep-diagnosis: sweep (a sweep study YAML: its participants, knee models and swing
+//   options are the model) and measured (CSV participant,lowering_m,swing_time_s[,sd_s,n]:
+//   io/sweep_times_csv.h) instead of base_model/train/validate; held-out data are the
+//   participants, one at a time (identify/sweep_plant.h).
 // loadDiagnosisPlant reads the records and models a study names and builds its plant.
 #include <cstddef>
 #include <memory>
@@ -48,6 +52,8 @@ struct DiagnosisStudy {
   std::string path, name, description;
   std::string baseModelPath;          ///< resolved knee model YAML
   std::string participantPath;        ///< resolved participant YAML (swing)
+  std::string sweepStudyPath;         ///< resolved sweep study YAML (sweep: the model)
+  std::string measuredPath;           ///< resolved measured swing times CSV (sweep)
   std::vector<StudyRecord> train;     ///< training records
   std::vector<StudyRecord> validate;  ///< held-out records
   std::optional<MotionColumns> motionColumns;  ///< swing: how .mot/.sto records are read

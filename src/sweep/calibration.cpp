@@ -86,7 +86,43 @@ CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, c
   }
   r.timeScale = mid;
   r.swingTime = t;
+  const double a = r.scanSwingTimes[static_cast<std::size_t>(bracket)], b = r.scanSwingTimes[static_cast<std::size_t>(bracket) + 1];
+  r.swingTimePerScale = (b - a) / (r.scanScales[static_cast<std::size_t>(bracket) + 1] - r.scanScales[static_cast<std::size_t>(bracket)]);
   return r;
+}
+
+CalibrationResult calibrateHipTimeScaleNear(const SwingSetup& base, double target, double start,
+                                            const SwingOptions& swingOptions, const CalibrationOptions& options) {
+  if (base.participant.drive == SwingDrive::kThighKinematics || !(start >= options.minScale && start <= options.maxScale))
+    return calibrateHipTimeScale(base, target, swingOptions, options);
+  SwingOptions fast = swingOptions;
+  fast.recordTrajectory = false;
+  SwingSetup setup = base;
+  setup.lowering = 0;
+  double s0 = start, t0 = swingTimeAt(setup, s0, fast);
+  if (!std::isfinite(t0) || !(t0 > 0)) return calibrateHipTimeScale(base, target, swingOptions, options);
+  // First step: swing time roughly proportional to the time scale.
+  double s1 = s0 * target / t0;
+  if (std::fabs(s1 - s0) < 1e-9 * s0) s1 = s0 * (1 + 1e-4);  // already there: one more swing for the slope
+  for (int it = 0; it < 8; ++it) {
+    if (!(s1 >= options.minScale && s1 <= options.maxScale)) break;
+    const double t1 = swingTimeAt(setup, s1, fast);
+    if (!std::isfinite(t1)) break;
+    if (std::fabs(t1 - target) < options.timeTolerance) {
+      CalibrationResult r;
+      r.timeScale = s1;
+      r.swingTime = t1;
+      r.swingTimePerScale = (t1 - t0) / (s1 - s0);
+      if (!(r.swingTimePerScale > 0)) break;  // not monotonic here: let the scan decide
+      return r;
+    }
+    const double slope = (t1 - t0) / (s1 - s0);
+    if (!(slope > 0) || !std::isfinite(slope)) break;
+    s0 = s1;
+    t0 = t1;
+    s1 = s1 + (target - t1) / slope;
+  }
+  return calibrateHipTimeScale(base, target, swingOptions, options);
 }
 
 }  // namespace swingsim

@@ -2,6 +2,7 @@
 // Calibration of the one free hip-moment parameter per participant (README "Assumptions",
 // "Calibration"): the profile's time scale, chosen so the standard-location swing time equals a
 // target (Burkett Table 3's model prediction).
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -33,6 +34,9 @@ struct CalibrationResult {
   double swingTime = 0;   ///< s, swing time at that scale (lowering 0)
   /// The scan that checked monotonicity: scale and swing time (NaN where no swing end).
   std::vector<double> scanScales, scanSwingTimes;
+  /// d(swing time)/d(scale) at the solution, s per unit scale, from the last two swings
+  /// (NaN if unknown): what a swing-time error means for the scale.
+  double swingTimePerScale = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct CalibrationOptions {
@@ -46,5 +50,13 @@ struct CalibrationOptions {
 CalibrationResult calibrateHipTimeScale(const SwingSetup& setup, double targetSwingTime,
                                     const SwingOptions& swingOptions = {},
                                     const CalibrationOptions& options = {});
+
+/// The same, starting from a scale known to be close (`start`, e.g. the solution for a
+/// slightly different model): secant steps on the scale, about 3-5 swings instead of the
+/// scan's 20-30. Falls back to calibrateHipTimeScale (the scan and its monotonicity check)
+/// when a step leaves the range, a swing does not end or the secant does not close in 8 steps.
+CalibrationResult calibrateHipTimeScaleNear(const SwingSetup& setup, double targetSwingTime, double start,
+                                            const SwingOptions& swingOptions = {},
+                                            const CalibrationOptions& options = {});
 
 }  // namespace swingsim

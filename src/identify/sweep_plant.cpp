@@ -1,0 +1,543 @@
+#include "identify/sweep_plant.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "numerics/bounded_least_squares.h"
+#include "sweep/sweep_uncertainty.h"
+#include "swing/knee_setup.h"
+
+namespace swingsim {
+
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kMs = 1000.0;               // ms per s: the compared quantity is in ms
+constexpr double kTempoReference = 0.1;      // m: the hip tempo's c is per 0.1 m of lowering
+constexpr double kPhaseSplitLowering = 0.1;  // m: the two "phases" of a sweep, near and far
+// Calibration of a time scale inside a fit: 1 us, far below a row's standard error (10-25 ms)
+// and below what a difference step of a shared value moves the swing time (0.1-1 ms).
+constexpr double kCalibrationTolerance = 1e-6;  // s
+
+// The sweep effects: their assumption, range and where the range comes from. Ranges are
+// physical limits wide enough to hold every published value, never fitted to Table 4.
+const std::vector<SweepEffectLaw>& lawTable() {
+  using E = EffectId;
+  static const std::vector<SweepEffectLaw> table = {
+      {E::kHipEffortAdaptation, "hip_effort_adaptation", false, -2.0, 2.0, false,
+       "Hale 1990's 37-71 % effort rise for a 2.5x heavier shank is an exponent of about 0.4-0.6 on the inertia "
+       "ratio; +-2 holds it with either sign"},
+      {E::kHipTempoLowering, "", false, -0.5, 0.5, false,
+       "Burkett 2001: 26 % faster running on the lowered knee; +-50 % per 0.1 m holds any cadence change a runner can make"},
+      {E::kComRuleProportional, "com_rule", false, 1.0, 1.0, false, "a two-way choice (docs/assumptions.md)"},
+      {E::kKneeFrictionScale, "knee_friction", true, 0.0, 3.0, false,
+       "0 (no friction) to 3x Table 2's 5-15 N m, past any swing-phase knee's friction"},
+      {E::kStopRestitution, "stop_restitution", false, 0.05, 0.95, false,
+       "a coefficient of restitution lies in (0, 1); the ends are left out because the stop model needs 0 < e < 1"},
+      {E::kStopStiffness, "stop_stiffness", false, 2.0e3, 2.0e5, true,
+       "a decade either side of the file's 2e4 N m/rad^1.5"},
+      {E::kHipExtensionRatio, "hip_extension_ratio", false, 0.1, 1.5, false,
+       "from almost no terminal-swing brake to one half again as strong as the flexion drive"},
+      {E::kHipFlexionDuration, "hip_flexion_duration", false, 0.10, 0.35, false,
+       "half to 1.75x the assumed 0.20 s"},
+      {E::kHipExtensionDuration, "hip_extension_duration", false, 0.10, 0.35, false,
+       "half to 1.75x the assumed 0.20 s"},
+      {E::kThighTargetFlexion, "thigh_target_flexion", false, 5.0, 35.0, false,
+       "the thigh flexion at heel contact in walking and running, 15-30 deg (Winter 2009), widened by 10 deg"},
+  };
+  return table;
+}
+
+const SweepAssumption& findAssumption(const std::string& key) {
+  for (const auto& a : sweepAssumptions())
+    if (a.key == key) return a;
+  throw std::logic_error("sweep plant: no assumption " + key);
+}
+
+double valueOf(const SweepModelParams& p, EffectId id) {
+  for (const auto& [e, v] : p.effects)
+    if (e == id) return v;
+  return kNaN;
+}
+
+double rms(const std::vector<double>& v) {
+  if (v.empty()) return kNaN;
+  double s = 0;
+  for (double x : v) s += x * x;
+  return std::sqrt(s / static_cast<double>(v.size()));
+}
+
+// Effects with a continuously fitted value (not the COM rule's choice), in model order.
+std::vector<std::size_t> fittedEffects(const SweepModelParams& p) {
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < p.effects.size(); ++k)
+    if (describeEffect(p.effects[k].first).fittedParameters > 0) out.push_back(k);
+  return out;
+}
+
+}  // namespace
+
+bool SweepModelParams::has(EffectId id) const {
+  return std::any_of(effects.begin(), effects.end(), [&](const auto& e) { return e.first == id; });
+}
+
+const SweepModelParams& sweepParams(const PlantModel& model) {
+  return dynamic_cast<const SweepModel&>(model).params;
+}
+
+const SweepEffectLaw& findSweepEffectLaw(EffectId id) {
+  for (const auto& l : lawTable())
+    if (l.id == id) return l;
+  throw std::logic_error("sweep plant: effect " + describeEffect(id).name + " has no sweep law");
+}
+
+SweepVariant applySweepEffects(const SweepVariant& variant, const SweepModelParams& params) {
+  SweepVariant v = variant;
+  for (const auto& [id, value] : params.effects) {
+    const SweepEffectLaw& law = findSweepEffectLaw(id);
+    if (law.assumption.empty()) continue;  // acts per swing
+    const SweepAssumption& a = findAssumption(law.assumption);
+    a.apply(v, law.relative ? value * a.read(variant) : value);
+  }
+  return v;
+}
+
+Participant calcSweepSwingParticipant(const SweepVariant& variant, const SweepModelParams& params, double lowering) {
+  Participant p = calcAdaptedParticipant(variant.participant, lowering, variant.hipEffortExponent);
+  const double c = valueOf(params, EffectId::kHipTempoLowering);
+  if (std::isfinite(c)) p.hipMoment.timeScale *= 1.0 + c * lowering / kTempoReference;
+  return p;
+}
+
+SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingTime>& rows,
+                       const std::string& measuredPath, double defaultStandardError, int jobs)
+    : measuredPath_(measuredPath), jobs_(jobs) {
+  std::map<std::string, std::size_t> index;
+  for (const auto& p : study.participants) {
+    index[p.name] = participants_.size();
+    SweepParticipantRows r;
+    r.nominal = makeNominalVariant(study, p);
+    r.standard.line = 0;
+    participants_.push_back(r);
+  }
+  std::vector<bool> hasStandard(participants_.size(), false);
+  for (const auto& row : rows) {
+    const auto it = index.find(row.participant);
+    if (it == index.end()) {
+      std::string known;
+      for (const auto& p : study.participants) known += (known.empty() ? "" : ", ") + p.name;
+      throw InputError(measuredPath + ":" + std::to_string(row.line) + ": participant: expected the name of a participant "
+                       "of the sweep study " + study.path + " (" + known + ") (got '" + row.participant + "')");
+    }
+    double se = std::isnan(row.sd) ? defaultStandardError : row.calcStandardError();
+    if (!(se > 0))
+      throw InputError(measuredPath + ":" + std::to_string(row.line) + ": sd_s: expected the trial-to-trial SD and n of "
+                       "every row (columns sd_s,n), or acceptance: measurement_noise (ms, the standard error of a row) "
+                       "in the study (got neither)");
+    SweepParticipantRows& p = participants_[it->second];
+    if (row.lowering == 0) {
+      p.standard = row;
+      p.standardRowError = se;
+      hasStandard[it->second] = true;
+      continue;
+    }
+    const double cap = calcMaxLowering(p.nominal.participant);
+    if (row.lowering > cap) {
+      notes_.push_back(measuredPath + ":" + std::to_string(row.line) + ": " + row.participant + " at " +
+                       formatNumber(row.lowering * kMs) + " mm is beyond the shank's physical limit of " +
+                       formatNumber(cap * kMs) + " mm (model/leg_parameters.h calcMaxLowering); row left out");
+      continue;
+    }
+    p.lowered.push_back(row);
+    p.standardErrors.push_back(se);
+  }
+  for (std::size_t i = 0; i < participants_.size(); ++i) {
+    SweepParticipantRows& p = participants_[i];
+    const std::string& name = p.nominal.participant.name;
+    // Lowered rows in order of lowering (their standard errors with them).
+    std::vector<std::size_t> order(p.lowered.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.lowered[a].lowering < p.lowered[b].lowering; });
+    std::vector<MeasuredSwingTime> lowered;
+    std::vector<double> errors;
+    for (std::size_t k : order) {
+      lowered.push_back(p.lowered[k]);
+      errors.push_back(p.standardErrors[k]);
+    }
+    p.lowered = lowered;
+    p.standardErrors = errors;
+    if (!hasStandard[i] && p.lowered.empty()) {
+      p.inModel = false;
+      p.outside = "not measured (no row in " + measuredPath + ")";
+    } else if (!hasStandard[i]) {
+      throw InputError(measuredPath + ": participant " + name + ": expected a row at lowering_m 0 (the standard "
+                       "location its hip time scale is calibrated to) (got rows only at lowered axes)");
+    } else if (p.lowered.empty()) {
+      p.inModel = false;
+      p.outside = "no lowered row to compare";
+    } else {
+      // Inside the model when some time scale in the calibration range reaches its
+      // standard-location time.
+      try {
+        const SwingSetup setup = makeSwingSetup(p.nominal.participant, std::make_shared<const KneeLawSum>(makeSweepVariantKnee(p.nominal)), 0);
+        (void)calibrateHipTimeScale(setup, p.standard.swingTime, p.nominal.swing);
+      } catch (const RunError& e) {
+        p.inModel = false;
+        p.outside = e.what();
+      }
+    }
+    if (p.inModel) {
+      inModel_.push_back(i);
+    } else {
+      notes_.push_back(name + " is outside the model and takes no part in the fits or folds: " + p.outside);
+    }
+  }
+  if (inModel_.size() < 2)
+    throw RunError("diagnose: the sweep plant needs at least two participants inside the model (leave one participant "
+                   "out trains on the others); " + std::to_string(inModel_.size()) + " of " +
+                   std::to_string(participants_.size()) + " are" + (notes_.empty() ? "" : ": " + notes_.back()));
+}
+
+SweepPlant::Prediction SweepPlant::predict(std::size_t i, const SweepModelParams& params, double startScale,
+                                           const std::vector<double>* lowerings) const {
+  const SweepParticipantRows& rows = participants_[i];
+  const SweepVariant v = applySweepEffects(rows.nominal, params);
+  std::shared_ptr<const KneeLawSum> knee;
+  try {
+    knee = std::make_shared<const KneeLawSum>(makeSweepVariantKnee(v));
+  } catch (const std::invalid_argument& e) {
+    throw RunError(v.participant.name + ": the shared values make an unusable knee law: " + e.what());
+  }
+  CalibrationOptions options;
+  options.timeTolerance = kCalibrationTolerance;
+  const SwingSetup standard = makeSwingSetup(calcSweepSwingParticipant(v, params, 0), knee, 0);
+  const CalibrationResult cal = calibrateHipTimeScaleNear(standard, rows.standard.swingTime, startScale, v.swing, options);
+  Prediction out;
+  out.timeScale = cal.timeScale;
+  out.swingTimePerScale = cal.swingTimePerScale;
+  SweepVariant calibrated = v;
+  calibrated.participant.hipMoment.timeScale = cal.timeScale;
+  SwingOptions swing = v.swing;
+  swing.recordTrajectory = false;
+  std::vector<double> rowLowerings;
+  for (const auto& row : rows.lowered) rowLowerings.push_back(row.lowering);
+  for (double d : lowerings ? *lowerings : rowLowerings) {
+    const SwingSetup setup = makeSwingSetup(calcSweepSwingParticipant(calibrated, params, d), knee, d);
+    double t = kNaN;
+    try {
+      t = simulateSwing(setup, swing).swingTime;
+    } catch (const RunError&) {
+    }
+    if (!std::isfinite(t) && !lowerings)
+      throw RunError(v.participant.name + ": no swing end at " + formatNumber(d * kMs) + " mm with these values");
+    out.times.push_back(t);
+  }
+  return out;
+}
+
+std::vector<double> SweepPlant::predictSwingTimes(std::size_t i, const SweepModelParams& params,
+                                                  const std::vector<double>& lowerings, double* timeScale) const {
+  const Prediction p = predict(i, params, participants_[i].nominal.participant.hipMoment.timeScale, &lowerings);
+  if (timeScale) *timeScale = p.timeScale;
+  return p.times;
+}
+
+std::vector<SweepPlant::Prediction> SweepPlant::predictAll(const std::vector<std::size_t>& subset,
+                                                           const SweepModelParams& params) const {
+  std::vector<Prediction> out(subset.size());
+  std::vector<std::string> errors(subset.size());
+  runParallelJobs(static_cast<int>(subset.size()), jobs_, [&](int k) {
+    const std::size_t i = subset[static_cast<std::size_t>(k)];
+    // Start each calibration from the model's last scale for this participant.
+    double start = participants_[i].nominal.participant.hipMoment.timeScale;
+    const auto pos = std::find(inModel_.begin(), inModel_.end(), i) - inModel_.begin();
+    if (static_cast<std::size_t>(pos) < params.timeScales.size()) start = params.timeScales[static_cast<std::size_t>(pos)];
+    try {
+      out[static_cast<std::size_t>(k)] = predict(i, params, start);
+    } catch (const std::exception& e) {
+      errors[static_cast<std::size_t>(k)] = e.what();
+    }
+  });
+  for (const auto& e : errors)
+    if (!e.empty()) throw RunError(e);
+  return out;
+}
+
+std::vector<double> SweepPlant::standardized(std::size_t i, const Prediction& p) const {
+  const SweepParticipantRows& rows = participants_[i];
+  std::vector<double> out;
+  for (std::size_t k = 0; k < rows.lowered.size(); ++k)
+    out.push_back((rows.lowered[k].swingTime - p.times[k]) / rows.standardErrors[k]);
+  return out;
+}
+
+SweepPlant::SubsetFit SweepPlant::fitSubset(const SweepModelParams& model, const std::vector<std::size_t>& subset) const {
+  SubsetFit out;
+  out.params = model;
+  const std::vector<std::size_t> free = fittedEffects(model);
+  if (free.empty()) {
+    out.predictions = predictAll(subset, model);
+    return out;
+  }
+  std::vector<BoundedParameter> parameters;
+  for (std::size_t k : free) {
+    const SweepEffectLaw& law = findSweepEffectLaw(model.effects[k].first);
+    BoundedParameter b;
+    b.name = describeEffect(law.id).name;
+    b.start = std::clamp(model.effects[k].second, law.lower, law.upper);
+    b.lower = law.lower;
+    b.upper = law.upper;
+    b.logScale = law.logScale;
+    b.typical = law.upper - law.lower;
+    parameters.push_back(b);
+  }
+  const auto withValues = [&](const Eigen::VectorXd& x) {
+    SweepModelParams p = model;
+    for (std::size_t j = 0; j < free.size(); ++j) p.effects[free[j]].second = x[static_cast<Eigen::Index>(j)];
+    return p;
+  };
+  const auto residual = [&](const Eigen::VectorXd& x) {
+    const SweepModelParams p = withValues(x);
+    const std::vector<Prediction> pred = predictAll(subset, p);
+    std::vector<double> r;
+    for (std::size_t s = 0; s < subset.size(); ++s) {
+      const auto z = standardized(subset[s], pred[s]);
+      r.insert(r.end(), z.begin(), z.end());
+    }
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())));
+  };
+  BoundedFitSettings settings;
+  // Steps of 0.1 % of a value's range move a swing time by 0.05-1 ms, far above the 1 us
+  // calibration tolerance; central differences, since a swing time is smooth but not
+  // quadratic in most values.
+  settings.differenceStep = 1e-3;
+  settings.centralDifferences = true;
+  settings.maxIterations = 25;
+  settings.functionTolerance = 1e-6;
+  settings.parameterTolerance = 1e-5;
+  const BoundedFitResult fit = solveBoundedLeastSquares(residual, parameters, settings);
+  out.params = withValues(fit.x);
+  out.predictions = predictAll(subset, out.params);
+  out.covariance = fit.covariance;
+  if (!fit.converged) out.notes.push_back("the shared values' fit stopped before converging (" + fit.stopReason + ")");
+  for (std::size_t j = 0; j < free.size(); ++j)
+    if (j < fit.atBound.size() && fit.atBound[j])
+      out.notes.push_back(parameters[j].name + " on its physical bound (" + formatNumber(fit.x[static_cast<Eigen::Index>(j)]) + ")");
+  return out;
+}
+
+PlantModelPtr SweepPlant::baseModel() const { return std::make_shared<SweepModel>(SweepModelParams{}); }
+
+PlantFit SweepPlant::fit(const PlantModel& model) const {
+  const SubsetFit full = fitSubset(sweepParams(model), inModel_);
+  SweepModelParams fitted = full.params;
+  fitted.timeScales.clear();
+  for (const auto& p : full.predictions) fitted.timeScales.push_back(p.timeScale);
+  PlantFit out;
+  out.notes = full.notes;
+  double squares = 0;
+  std::size_t count = 0;
+  for (std::size_t s = 0; s < inModel_.size(); ++s) {
+    const std::size_t i = inModel_[s];
+    const auto z = standardized(i, full.predictions[s]);
+    out.likelihoodResidual.push_back(z);
+    std::vector<double> ms;
+    std::vector<int> phase;
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      out.rss += z[k] * z[k];
+      ms.push_back((participants_[i].lowered[k].swingTime - full.predictions[s].times[k]) * kMs);
+      phase.push_back(participants_[i].lowered[k].lowering > kPhaseSplitLowering ? 1 : 0);
+      squares += ms.back() * ms.back();
+      ++count;
+    }
+    out.trainResidual.push_back(ms);
+    out.trainPhase.push_back(phase);
+    // The time scale's standard error from the standard row's: se_T / (dT / d scale).
+    const double se = participants_[i].standardRowError / full.predictions[s].swingTimePerScale;
+    PlantFit::FreeParameter tau;
+    tau.name = "hip_time_scale_" + participants_[i].nominal.participant.name;
+    tau.value = full.predictions[s].timeScale;
+    tau.standardError = std::isfinite(se) ? std::fabs(se) : 0.0;
+    tau.lower = CalibrationOptions{}.minScale;
+    tau.upper = CalibrationOptions{}.maxScale;
+    out.baseParameters.push_back(tau);
+  }
+  out.samples = count;
+  out.trainRmse = count ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
+  // The shared values' standard errors and correlations (reported units).
+  const std::vector<std::size_t> free = fittedEffects(fitted);
+  for (std::size_t j = 0; j < free.size(); ++j) {
+    const EffectId id = fitted.effects[free[j]].first;
+    const auto jj = static_cast<Eigen::Index>(j);
+    const double se = full.covariance.rows() > jj ? std::sqrt(std::max(0.0, full.covariance(jj, jj))) : kNaN;
+    out.effectErrors.push_back({id, {se}});
+    out.parameterNames.push_back(describeEffect(id).name + "." + describeEffect(id).parameters[0]);
+  }
+  out.correlation = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(free.size()), static_cast<Eigen::Index>(free.size()));
+  if (full.covariance.rows() == static_cast<Eigen::Index>(free.size()))
+    for (Eigen::Index a = 0; a < full.covariance.rows(); ++a)
+      for (Eigen::Index b = 0; b < full.covariance.cols(); ++b)
+        if (a != b) out.correlation(a, b) = full.covariance(a, b) / std::sqrt(full.covariance(a, a) * full.covariance(b, b));
+  // Leave one participant out: each fold fits the shared values on the others' rows; the
+  // held-out participant is calibrated on its own standard row and predicted.
+  double heldSquares = 0;
+  std::size_t heldCount = 0;
+  for (std::size_t s = 0; s < inModel_.size(); ++s) {
+    std::vector<std::size_t> others;
+    for (std::size_t o = 0; o < inModel_.size(); ++o)
+      if (o != s) others.push_back(inModel_[o]);
+    SubsetFit fold;
+    if (free.empty()) {
+      fold.params = fitted;
+      for (std::size_t o = 0; o < inModel_.size(); ++o)
+        if (o != s) fold.predictions.push_back(full.predictions[o]);
+    } else {
+      SweepModelParams start = fitted;
+      fold = fitSubset(start, others);
+    }
+    ResidualSegments segments;
+    double rss = 0;
+    for (std::size_t o = 0; o < others.size(); ++o) {
+      segments.push_back(standardized(others[o], fold.predictions[o]));
+      for (double z : segments.back()) rss += z * z;
+    }
+    out.foldRss.push_back(rss);
+    out.foldResidual.push_back(segments);
+    const std::string& name = participants_[inModel_[s]].nominal.participant.name;
+    std::vector<double> errors;
+    try {
+      const Prediction held = free.empty() ? full.predictions[s] : predictAll({inModel_[s]}, fold.params)[0];
+      for (std::size_t k = 0; k < held.times.size(); ++k)
+        errors.push_back((participants_[inModel_[s]].lowered[k].swingTime - held.times[k]) * kMs);
+    } catch (const RunError& e) {
+      // The others' values leave this participant unpredictable: an infinite held-out error,
+      // which no acceptance can pass.
+      errors.assign(participants_[inModel_[s]].lowered.size(), std::numeric_limits<double>::infinity());
+      out.notes.push_back(name + " held out: the values fitted without " + name + " cannot predict it (" + e.what() + ")");
+    }
+    for (double e : errors) heldSquares += e * e;
+    heldCount += errors.size();
+    out.validationRmse.push_back(rms(errors));
+    std::vector<double> values;
+    for (const auto& e : fold.params.effects) values.push_back(e.second);
+    fitted.heldOutValues.push_back(values);
+    for (const auto& n : fold.notes) out.notes.push_back("without " + name + ": " + n);
+  }
+  out.pooledValidationRmse = heldCount ? std::sqrt(heldSquares / static_cast<double>(heldCount)) : kNaN;
+  out.model = std::make_shared<SweepModel>(fitted);
+  return out;
+}
+
+std::string SweepPlant::checkApplicable(const PlantModel& model, EffectId effect) const {
+  if (describeEffect(effect).plant != PlantKind::kSweep) return "not a sweep effect";
+  if (sweepParams(model).has(effect)) return "already in the model";
+  const SweepEffectLaw& law = findSweepEffectLaw(effect);
+  if (law.assumption.empty()) return "";
+  const SweepAssumption& a = findAssumption(law.assumption);
+  for (std::size_t i : inModel_) {
+    const SweepVariant& v = participants_[i].nominal;
+    if (!a.calcRange(v).applicable)
+      return v.participant.name + " has no " + a.name + " (a tabulated hip moment has no half-sine shape)";
+    if (effect == EffectId::kComRuleProportional && a.read(v) >= 0.5)
+      return v.participant.name + " already uses the proportional COM rule";
+    if (law.relative && !(a.read(v) > 0)) return v.participant.name + "'s " + a.name + " is 0: nothing to scale";
+  }
+  return "";
+}
+
+PlantModelPtr SweepPlant::addEffect(const PlantModel& model, EffectId effect, double gridValue) const {
+  SweepModelParams p = sweepParams(model);
+  const SweepEffectLaw& law = findSweepEffectLaw(effect);
+  double start = 0;
+  if (!describeEffect(effect).grid.empty()) {
+    start = gridValue;
+  } else if (law.relative) {
+    start = 1.0;
+  } else if (!law.assumption.empty()) {
+    // The mean of the participants' own values: the shared value starts where they are.
+    const SweepAssumption& a = findAssumption(law.assumption);
+    for (std::size_t i : inModel_) start += a.read(participants_[i].nominal) / static_cast<double>(inModel_.size());
+  }
+  p.effects.push_back({effect, std::clamp(start, law.lower, law.upper)});
+  return std::make_shared<SweepModel>(p);
+}
+
+PlantModelPtr SweepPlant::combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const {
+  SweepModelParams p = sweepParams(a);
+  if (!p.has(effectOfB)) p.effects.push_back({effectOfB, valueOf(sweepParams(b), effectOfB)});
+  return std::make_shared<SweepModel>(p);
+}
+
+std::vector<double> SweepPlant::effectValues(const PlantModel& model, EffectId effect) const {
+  return {valueOf(sweepParams(model), effect)};
+}
+
+bool SweepPlant::checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const {
+  const SweepEffectLaw& law = findSweepEffectLaw(effect);
+  const double v = valueOf(sweepParams(model), effect);
+  note = "any value in its physical range " + formatNumber(law.lower) + " .. " + formatNumber(law.upper) + " (" +
+         law.rangeSource + "): " + formatNumber(v);
+  return v >= law.lower && v <= law.upper;
+}
+
+std::vector<std::string> SweepPlant::phaseNames(const PlantModel&) const {
+  return {"lowered up to 100 mm", "lowered beyond 100 mm"};
+}
+
+Comparison SweepPlant::compare(const PlantModel& model) const {
+  const SweepModelParams& p = sweepParams(model);
+  Comparison c;
+  c.quantity = "swing time";
+  c.unit = "ms";
+  c.phaseNames = phaseNames(model);
+  c.decimals = 1;
+  const std::vector<Prediction> full = predictAll(inModel_, p);
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t s = 0; s < inModel_.size(); ++s) {
+      const SweepParticipantRows& rows = participants_[inModel_[s]];
+      Prediction pred = full[s];
+      if (pass == 1 && s < p.heldOutValues.size()) {
+        SweepModelParams held = p;
+        for (std::size_t k = 0; k < held.effects.size() && k < p.heldOutValues[s].size(); ++k)
+          held.effects[k].second = p.heldOutValues[s][k];
+        pred = predictAll({inModel_[s]}, held)[0];
+      }
+      RecordComparison r;
+      r.stem = rows.nominal.participant.name + (pass == 1 ? " held out" : "");
+      r.training = pass == 0;
+      StateVariable lowering{"knee-axis lowering (mm)", "", {}};
+      for (std::size_t k = 0; k < rows.lowered.size(); ++k) {
+        r.time.push_back(rows.lowered[k].lowering);
+        r.measured.push_back(rows.lowered[k].swingTime * kMs);
+        r.predicted.push_back(pred.times[k] * kMs);
+        r.phase.push_back(rows.lowered[k].lowering > kPhaseSplitLowering ? 1 : 0);
+        lowering.values.push_back(rows.lowered[k].lowering * kMs);
+      }
+      r.variables.push_back(lowering);
+      finishRecordComparison(r, c.phaseNames.size());
+      c.records.push_back(r);
+    }
+  return c;
+}
+
+std::vector<std::string> SweepPlant::validationStems() const {
+  std::vector<std::string> out;
+  for (std::size_t i : inModel_) out.push_back(participants_[i].nominal.participant.name);
+  return out;
+}
+
+std::vector<NoiseEstimate> SweepPlant::estimateRecordNoise() const {
+  std::vector<NoiseEstimate> out;
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i : inModel_) {
+      const auto& e = participants_[i].standardErrors;
+      out.push_back({rms(e) * kMs, e.size()});
+    }
+  return out;
+}
+
+}  // namespace swingsim
