@@ -1,0 +1,217 @@
+// The independent sweep-table generator (tests/independent/sweep_table_generator.h) against
+// swingsim's own sweep: with no hidden effect and no noise, the generator's swing times for
+// Burkett's P1-P4 at 0, 0.05, 0.10 and 0.15 m must be swingsim's, read through the files the
+// generator writes. Two codes written from the same docs that agree say the docs define the
+// swing time; where they disagreed, one of them read the docs wrongly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "../cli/release_only.h"
+#include "../cli/run_swingsim.h"
+#include "../independent/sweep_table_generator.h"
+#include "study/sweep_study.h"
+#include "sweep/sweep.h"
+
+namespace swingsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<double> kLowerings = {0.0, 0.05, 0.10, 0.15};
+
+// Tolerance of the cross-check, s. Both sides converged: the generator's RK4 at 1e-4 s to
+// < 0.5 ms (SwingTimeConvergesWithTheStep), swingsim's Dormand-Prince at 1e-5 to 0.1 ms
+// (docs/speed.md). What is left is the docs' own slack where two readers may differ by a
+// little without either being wrong: the hip range stop's law (not acting: asserted), and
+// the crossing localization. 2 ms is four times the generator's step error and 1/15 of the
+// smallest Table 3 noise on a row (0.031 / sqrt(5) = 14 ms).
+constexpr double kAgreeS = 2e-3;
+
+// swingsim's sweep of the files the generator wrote, at kLowerings.
+SweepResults runSwingsimSweep(const fs::path& dir, const std::vector<std::string>& participantFiles) {
+  std::ostringstream list;
+  for (std::size_t i = 0; i < participantFiles.size(); ++i) list << (i ? ", " : "") << participantFiles[i];
+  std::ofstream(dir / "study.yaml") << "kind: knee-axis-sweep\nname: independent-sweep\nparticipants: [" << list.str()
+                                    << "]\nlowering: {step_m: 0.05, max_m: 0.15, include_published: false}\n";
+  const SweepStudy study = loadSweepStudy((dir / "study.yaml").string());
+  return runSweep(study, 2);
+}
+
+TEST(SweepTableGenerator, AgreesWithSwingsimsSweepWithoutHiddenEffects) {
+  SWINGSIM_RELEASE_ONLY();
+  const fs::path dir = testing::freshTempDir("swingsim_indep_sweep", "agree");
+  const auto participants = independent::burkettParticipants();
+  const independent::SweepModel model;
+  const auto files = independent::writeSweepModelFiles(participants, model, dir.string());
+  const auto rows = independent::generateSweepTable(participants, kLowerings, model, {}, 1, 0.0);
+  const SweepResults swept = runSwingsimSweep(dir, files);
+  ASSERT_EQ(swept.participants.size(), participants.size());
+  std::printf("participant lowering_m generator_ms swingsim_ms diff_ms\n");
+  std::size_t row = 0;
+  for (std::size_t i = 0; i < participants.size(); ++i) {
+    const auto& ps = swept.participants[i];
+    ASSERT_EQ(ps.points.size(), kLowerings.size()) << ps.name;
+    for (std::size_t j = 0; j < kLowerings.size(); ++j, ++row) {
+      const auto& point = ps.points[j];
+      ASSERT_TRUE(point.ok) << ps.name << " at " << point.lowering << " m: " << point.failure;
+      ASSERT_NEAR(point.lowering, rows[row].loweringM, 1e-12);
+      const double ours = point.result.swingTime, theirs = rows[row].swingTimeS;
+      std::printf("%s %.3f %.2f %.2f %+.2f\n", ps.name.c_str(), point.lowering, 1e3 * theirs, 1e3 * ours,
+                  1e3 * (theirs - ours));
+      EXPECT_NEAR(theirs, ours, kAgreeS) << ps.name << " at " << point.lowering << " m";
+      const auto s = independent::simulateSweepSwing(participants[i], model, {}, kLowerings[j]);
+      EXPECT_FALSE(s.hipRangeActed) << "the hip range stop acted: its law (ours is a guess) would matter";
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST(SweepTableGenerator, SwingTimeConvergesWithTheStep) {
+  const auto participants = independent::burkettParticipants();
+  const independent::SweepModel model;
+  for (const auto& p : {participants[0], participants[3]})
+    for (double d : {0.0, 0.15}) {
+      const double coarse = independent::simulateSweepSwing(p, model, {}, d, 2e-4).swingTime;
+      const double used = independent::simulateSweepSwing(p, model, {}, d, independent::kSweepStep).swingTime;
+      const double fine = independent::simulateSweepSwing(p, model, {}, d, 2.5e-5).swingTime;
+      std::printf("%s %.2f m: step 2e-4 %.4f ms, 1e-4 %.4f ms, 2.5e-5 %.4f ms\n", p.name.c_str(), d, 1e3 * coarse,
+                  1e3 * used, 1e3 * fine);
+      EXPECT_LT(std::abs(used - fine), 0.5e-3) << p.name << " at " << d << " m";
+    }
+}
+
+TEST(SweepTableGenerator, LoweringMovesTheKneeAxisAsBurkettDoes) {
+  const independent::Leg p1 = independent::burkettParticipants()[0].leg;
+  const auto fixed = independent::lowerKneeAxis(p1, 0.10, independent::ComRule::kFixedFromProximal);
+  EXPECT_NEAR(fixed.thigh.length, 0.510, 1e-12);
+  EXPECT_NEAR(fixed.shank.length, 0.415, 1e-12);
+  EXPECT_NEAR(fixed.thigh.length - fixed.thigh.comFromDistal, 0.410 - 0.284, 1e-12);  // from the hip
+  EXPECT_NEAR(fixed.shank.length - fixed.shank.comFromDistal, 0.515 - 0.260, 1e-12);  // from the knee
+  const auto prop = independent::lowerKneeAxis(p1, 0.10, independent::ComRule::kProportional);
+  EXPECT_NEAR(prop.thigh.comFromDistal / prop.thigh.length, 0.284 / 0.410, 1e-12);
+  EXPECT_NEAR(prop.shank.comFromDistal / prop.shank.length, 0.260 / 0.515, 1e-12);
+  for (const auto& leg : {fixed, prop}) {
+    EXPECT_EQ(leg.thigh.inertia, p1.thigh.inertia);
+    EXPECT_EQ(leg.shank.inertia, p1.shank.inertia);
+    EXPECT_EQ(leg.foot.length, p1.foot.length);
+    EXPECT_EQ(leg.foot.comFromDistal, p1.foot.comFromDistal);
+  }
+  // Less inertia below a lower knee; I_k by hand at 0 m: 0.0161 + 0.785 0.255^2 + 0.0059
+  // + 1.030 (0.100^2 + 0.515^2).
+  EXPECT_NEAR(independent::kneeInertia(p1), 0.0161 + 0.785 * 0.255 * 0.255 + 0.0059 + 1.030 * (0.01 + 0.515 * 0.515),
+              1e-12);
+  EXPECT_LT(independent::kneeInertia(fixed), independent::kneeInertia(p1));
+  EXPECT_THROW(independent::lowerKneeAxis(p1, 0.42, independent::ComRule::kProportional), std::invalid_argument);
+  EXPECT_THROW(independent::lowerKneeAxis(p1, 0.27, independent::ComRule::kFixedFromProximal), std::invalid_argument);
+}
+
+// Each hidden effect changes P1's swing time, and by an amount that grows with the lowering
+// where it acts through the lowering. Printed for the report.
+TEST(SweepTableGenerator, HiddenEffectsChangeTheSwingTimes) {
+  const auto p1 = independent::burkettParticipants()[0];
+  const independent::SweepModel model;
+  const std::vector<double> lowerings = {0.0, 0.10, 0.20};
+  auto times = [&](const independent::SweepEffects& fx) {
+    std::vector<double> t;
+    for (double d : lowerings) {
+      const auto s = independent::simulateSweepSwing(p1, model, fx, d);
+      EXPECT_TRUE(s.ended) << d;
+      t.push_back(s.swingTime);
+    }
+    return t;
+  };
+  const auto base = times({});
+  std::printf("P1 none: %.1f %.1f %.1f ms at 0, 0.1, 0.2 m\n", 1e3 * base[0], 1e3 * base[1], 1e3 * base[2]);
+  auto effect = [&](const char* name, const independent::SweepEffects& fx) {
+    const auto t = times(fx);
+    std::printf("P1 %s: %+.1f %+.1f %+.1f ms\n", name, 1e3 * (t[0] - base[0]), 1e3 * (t[1] - base[1]),
+                1e3 * (t[2] - base[2]));
+    return t;
+  };
+  independent::SweepEffects fx;
+  fx.hipEffortExponent = 1;  // less hip effort on the lowered (lighter below the knee) leg: slower
+  auto t = effect("a=+1", fx);
+  EXPECT_EQ(t[0], base[0]);
+  EXPECT_GT(t[2] - base[2], t[1] - base[1]);
+  EXPECT_GT(t[1], base[1]);
+  fx.hipEffortExponent = -1;
+  t = effect("a=-1", fx);
+  EXPECT_LT(t[1], base[1]);
+  EXPECT_LT(t[2] - base[2], t[1] - base[1]);
+  fx = {};
+  fx.timeScaleSlope = 0.1;  // a slower hip drive when lowered: longer swings
+  t = effect("c=+0.1", fx);
+  EXPECT_EQ(t[0], base[0]);
+  EXPECT_GT(t[1], base[1]);
+  EXPECT_GT(t[2] - base[2], t[1] - base[1]);
+  fx.timeScaleSlope = -0.1;
+  t = effect("c=-0.1", fx);
+  EXPECT_LT(t[2], base[2]);
+  fx = {};
+  fx.stopRestitution = 0.7;
+  t = effect("e=0.7", fx);
+  fx = {};
+  fx.kneeFrictionNm = 3.0;
+  t = effect("Tc=3", fx);
+  fx.stopRestitution = 0.7;
+  t = effect("Tc=3,e=0.7", fx);
+  fx = {};
+  fx.comRule = independent::ComRule::kProportional;
+  t = effect("com=proportional", fx);
+  EXPECT_EQ(t[0], base[0]);
+  EXPECT_NE(t[2], base[2]);
+  fx = {};
+  fx.dampingRetune = 1.0;  // the prosthetist doubles the damping at 0.1 m: outside the library
+  t = effect("retune k=1", fx);
+  EXPECT_EQ(t[0], base[0]);
+  EXPECT_NE(t[1], base[1]);
+  fx = {};
+  fx.strapStiffness = 8.0;
+  fx.strapOffset = 0.2;
+  t = effect("strap 8 N m/rad", fx);
+  EXPECT_NE(t[0], base[0]);
+}
+
+// The noise: the same seed gives the same table; rows scatter about the truth with the SD of
+// a mean of 5 trials of Table 3's SD; the CSV carries the trial SD and n.
+TEST(SweepTableGenerator, NoiseHasTheSdOfAMeanOfFiveTrials) {
+  auto participants = independent::burkettParticipants();
+  const independent::SweepModel model;
+  const std::vector<double> lowerings = {0.0, 0.05};
+  const auto clean = independent::generateSweepTable(participants, lowerings, model, {}, 1, 0.0);
+  const auto a = independent::generateSweepTable(participants, lowerings, model, {}, 7);
+  const auto b = independent::generateSweepTable(participants, lowerings, model, {}, 7);
+  const auto c = independent::generateSweepTable(participants, lowerings, model, {}, 8);
+  ASSERT_EQ(a.size(), 8u);
+  double chi2 = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].swingTimeS, b[i].swingTimeS);
+    EXPECT_NE(a[i].swingTimeS, c[i].swingTimeS);
+    const double sdMean = a[i].sdS / std::sqrt(5.0);
+    chi2 += std::pow((a[i].swingTimeS - clean[i].swingTimeS) / sdMean, 2) +
+            std::pow((c[i].swingTimeS - clean[i].swingTimeS) / sdMean, 2);
+  }
+  EXPECT_NEAR(a[0].sdS, 0.031, 1e-12);
+  EXPECT_NEAR(a[2].sdS, 0.047, 1e-12);
+  // 16 standardized residuals: chi-square with 16 degrees of freedom, 0.1 % to 99.9 %.
+  EXPECT_GT(chi2, 3.94);
+  EXPECT_LT(chi2, 39.25);
+  const fs::path dir = testing::freshTempDir("swingsim_indep_sweep", "csv");
+  independent::writeSweepCsv(a, (dir / "table.csv").string());
+  std::ifstream in(dir / "table.csv");
+  std::string header, first;
+  std::getline(in, header);
+  std::getline(in, first);
+  EXPECT_EQ(header, "participant,lowering_m,swing_time_s,sd_s,n");
+  EXPECT_EQ(first.rfind("P1,0,", 0), 0u) << first;
+  EXPECT_EQ(first.substr(first.size() - 8), ",0.031,5") << first;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace swingsim
