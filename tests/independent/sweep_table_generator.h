@@ -87,6 +87,9 @@ inline std::vector<SweepParticipant> burkettParticipants() {
 
 /// What the files say, shared by every participant (their YAML keys in brackets).
 struct SweepModel {
+  /// m/s^2: swingsim's 9.81 (docs/export-osim.md, "swingsim's value"), not the standard
+  /// 9.80665 of swing_generator.h: the difference is 0.04-0.05 ms of swing time.
+  double gravity = 9.81;
   // Knee model: a constant damping table (damping_table) and the stop (hyperextension_stop).
   double tableMomentNm = 2.0;      ///< moment_Nm at every flexion_deg sample
   double referenceDegS = 150.0;    ///< reference_speed_deg_s (Burkett's dynamometer)
@@ -158,6 +161,7 @@ struct SweepSwingLaw {
   double frictionNm, stopStiffness, restitution;
   double strapStiffness, strapOffset;
   double hipMin, hipMax;                          // rad
+  double gravity;                                 // m/s^2
 };
 
 inline SweepSwingLaw makeSweepSwingLaw(const SweepParticipant& p, const SweepModel& model, const SweepEffects& fx,
@@ -180,6 +184,7 @@ inline SweepSwingLaw makeSweepSwingLaw(const SweepParticipant& p, const SweepMod
   law.strapOffset = fx.strapOffset;
   law.hipMin = model.hipMinDeg * deg;
   law.hipMax = model.hipMaxDeg * deg;
+  law.gravity = model.gravity;
   return law;
 }
 
@@ -226,7 +231,7 @@ inline void sweepDerivatives(const SweepSwingLaw& law, double t, const double* y
                     law.strapStiffness * (theta - y[0] - law.strapOffset);
   dy[0] = y[2];
   dy[1] = y[3];
-  chainAccelerations(law.leg.thigh, law.leg.shank, law.leg.foot, y, Mh, Mk, dy + 2);
+  chainAccelerations(law.leg.thigh, law.leg.shank, law.leg.foot, y, Mh, Mk, dy + 2, law.gravity);
 }
 
 /// One swing's outcome.

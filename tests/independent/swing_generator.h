@@ -95,9 +95,9 @@ inline double strapHipMoment(const SwingTruth& m, double theta, double phi) {
 /// method: for each generalized speed u_j, the sum over bodies of m a . dv/du_j + I alpha
 /// dw/du_j equals the generalized active force. `hipMomentNm` acts on the thigh (positive
 /// flexes the hip), `kneeMomentNm` between thigh and shank (positive flexes the knee).
-/// Angles and rates in rad and rad/s (y = phi, psi, phi', psi').
+/// Angles and rates in rad and rad/s (y = phi, psi, phi', psi'); `gravity` in m/s^2.
 inline void chainAccelerations(const Segment& thigh, const Segment& shank, const Segment& foot, const double* y,
-                               double hipMomentNm, double kneeMomentNm, double* acc) {
+                               double hipMomentNm, double kneeMomentNm, double* acc, double gravity = kG) {
   const double phi = y[0], psi = y[1], phiDot = y[2], psiDot = y[3];
   // Thigh: COM a1 below the hip along the thigh.
   const double a1 = thigh.length - thigh.comFromDistal, L1 = thigh.length;
@@ -122,7 +122,7 @@ inline void chainAccelerations(const Segment& thigh, const Segment& shank, const
   const double M12 = m2 * dot(v2phi, v2psi);
   const double M22 = m2 * dot(v2psi, v2psi) + i2;
   // Generalized active forces: gravity, hip moment, knee moment.
-  const Vec2 g1{0, -thigh.mass * kG}, g2{0, -m2 * kG};
+  const Vec2 g1{0, -thigh.mass * gravity}, g2{0, -m2 * gravity};
   const double Q1 = dot(g1, v1phi) + dot(g2, v2phi) + hipMomentNm + kneeMomentNm - thigh.mass * dot(a1rest, v1phi) -
                     m2 * dot(a2rest, v2phi);
   const double Q2 = dot(g2, v2psi) - kneeMomentNm - m2 * dot(a2rest, v2psi);
