@@ -243,6 +243,8 @@ struct SweepSwing {
   double minKneeDeg = 0;            ///< deepest knee angle (negative: into the stop)
   double minHipDeg = 0, maxHipDeg = 0;
   bool hipRangeActed = false;       ///< the hip left its range (our stop law then matters)
+  double thighTargetTime = std::numeric_limits<double>::quiet_NaN();  ///< s, thigh first at its target
+  double kneeEntryTime = std::numeric_limits<double>::quiet_NaN();    ///< s, the knee's last entry into the zone
 };
 
 constexpr double kSweepStep = 1e-4;  ///< s, RK4 step (swing time converged to < 0.5 ms: the test)
@@ -294,6 +296,7 @@ inline SweepSwing simulateSweepSwing(const SweepParticipant& p, const SweepModel
       if (tn >= end + model.settleDwellS) {
         out.ended = true;
         out.swingTime = end;
+        out.kneeEntryTime = entry;
         break;
       }
     }
@@ -303,6 +306,7 @@ inline SweepSwing simulateSweepSwing(const SweepParticipant& p, const SweepModel
   out.minHipDeg = minHip / deg;
   out.maxHipDeg = maxHip / deg;
   out.hipRangeActed = minHip < law.hipMin || maxHip > law.hipMax;
+  out.thighTargetTime = thighTime;
   return out;
 }
 
@@ -313,20 +317,31 @@ struct SweepRow {
   int trials = 5;
 };
 
-/// The sweep table of `participants` at `lowerings` (m, the same for everyone) with the
-/// hidden effects `fx`. Each row's time is the truth's swing time plus Gaussian noise of
-/// SD noiseScale x trialSdS / sqrt(trials) (the SD of a mean of `trials` trials; noiseScale 0:
+/// Burkett 2004 Table 4's lowerings (m) of P1..P4, in the order of burkettParticipants().
+inline std::vector<std::vector<double>> burkettTable4Lowerings() {
+  return {{0.0, 0.050, 0.100, 0.150}, {0.0, 0.080, 0.125, 0.180}, {0.0, 0.140, 0.200, 0.240}, {0.0, 0.090, 0.130, 0.175}};
+}
+
+/// The sweep table of `participants`, participant i at `lowerings[i]` (m), with the hidden
+/// effects `fx`. Each row's time is the truth's swing time plus Gaussian noise of SD
+/// noiseScale x trialSdS / sqrt(trials) (the SD of a mean of `trials` trials; noiseScale 0:
 /// no noise), drawn from std::mt19937_64(seed) in row order. Throws std::runtime_error
-/// naming the participant and lowering if a swing does not end.
-inline std::vector<SweepRow> generateSweepTable(const std::vector<SweepParticipant>& participants,
-                                                const std::vector<double>& lowerings, const SweepModel& model,
-                                                const SweepEffects& fx, std::uint64_t seed, double noiseScale = 1.0,
-                                                double step = kSweepStep) {
+/// naming the participant and lowering if a swing does not end, std::invalid_argument if a
+/// lowering leaves too little shank or the lists do not match.
+inline std::vector<SweepRow> generateSweepTableByParticipant(const std::vector<SweepParticipant>& participants,
+                                                             const std::vector<std::vector<double>>& lowerings,
+                                                             const SweepModel& model, const SweepEffects& fx,
+                                                             std::uint64_t seed, double noiseScale = 1.0,
+                                                             double step = kSweepStep) {
+  if (lowerings.size() != participants.size())
+    throw std::invalid_argument("independent sweep: " + std::to_string(lowerings.size()) + " lowering lists for " +
+                                std::to_string(participants.size()) + " participants");
   std::mt19937_64 engine(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   std::vector<SweepRow> rows;
-  for (const auto& p : participants)
-    for (double d : lowerings) {
+  for (std::size_t i = 0; i < participants.size(); ++i) {
+    const auto& p = participants[i];
+    for (double d : lowerings[i]) {
       const SweepSwing s = simulateSweepSwing(p, model, fx, d, step);
       if (!s.ended)
         throw std::runtime_error("independent sweep: " + p.name + " at lowering " + std::to_string(d) +
@@ -334,7 +349,17 @@ inline std::vector<SweepRow> generateSweepTable(const std::vector<SweepParticipa
       const double sdMean = p.trialSdS / std::sqrt(static_cast<double>(p.trials));
       rows.push_back({p.name, d, s.swingTime + noiseScale * sdMean * normal(engine), p.trialSdS, p.trials});
     }
+  }
   return rows;
+}
+
+/// As above, every participant at the same `lowerings` (m).
+inline std::vector<SweepRow> generateSweepTable(const std::vector<SweepParticipant>& participants,
+                                                const std::vector<double>& lowerings, const SweepModel& model,
+                                                const SweepEffects& fx, std::uint64_t seed, double noiseScale = 1.0,
+                                                double step = kSweepStep) {
+  return generateSweepTableByParticipant(participants, std::vector<std::vector<double>>(participants.size(), lowerings),
+                                         model, fx, seed, noiseScale, step);
 }
 
 /// The measured-table CSV a user writes: participant,lowering_m,swing_time_s,sd_s,n

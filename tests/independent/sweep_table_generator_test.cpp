@@ -96,6 +96,22 @@ TEST(SweepTableGenerator, AgreesWithSwingsimsSweepWhenTheKneeBounces) {
   }
 }
 
+// The swing-end rule's "in whichever order": with a wide zone (35 deg) and a high thigh
+// target (26 deg) P4's knee is back in the zone at 0.15 m before his thigh reaches its
+// target, and the swing ends when the thigh does. P2's thigh never gets there (left out).
+TEST(SweepTableGenerator, AgreesWithSwingsimsSweepWhenTheThighArrivesLast) {
+  SWINGSIM_RELEASE_ONLY();
+  independent::SweepModel late;
+  late.zoneDeg = 35;
+  late.thighTargetDeg = 26;
+  auto participants = independent::burkettParticipants();
+  participants.erase(participants.begin() + 1);
+  const auto s = independent::simulateSweepSwing(participants[2], late, {}, 0.15);
+  EXPECT_GT(s.thighTargetTime, s.kneeEntryTime + 0.1);
+  EXPECT_EQ(s.swingTime, s.thighTargetTime);
+  crossCheck("thigh-last", participants, late, 1e-5);
+}
+
 TEST(SweepTableGenerator, SwingTimeConvergesWithTheStep) {
   const auto participants = independent::burkettParticipants();
   const independent::SweepModel model;
