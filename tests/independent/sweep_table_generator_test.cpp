@@ -17,8 +17,12 @@
 #include "../cli/release_only.h"
 #include "../cli/run_swingsim.h"
 #include "../independent/sweep_table_generator.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
 #include "study/sweep_study.h"
 #include "sweep/sweep.h"
+#include "sweep/sweep_assumptions.h"
+#include "swing/knee_setup.h"
 
 namespace swingsim {
 namespace {
@@ -59,25 +63,30 @@ int crossCheck(const std::string& tag, const std::vector<independent::SweepParti
                                     << list.str() << "]\nlowering: {step_m: 0.05, max_m: 0.15, include_published: false}\n"
                                     << "integrator: {method: dormand-prince, accuracy: " << accuracy << "}\n";
   const SweepResults swept = runSweep(loadSweepStudy((dir / "study.yaml").string()), 2);
-  const auto rows = independent::generateSweepTable(participants, kLowerings, model, {}, 1, 0.0);
   int bounced = 0;
   EXPECT_EQ(swept.participants.size(), participants.size());
   std::printf("%s: participant lowering_m generator_ms swingsim_ms diff_ms bounces\n", tag.c_str());
-  for (std::size_t i = 0, row = 0; i < std::min(participants.size(), swept.participants.size()); ++i) {
+  for (std::size_t i = 0; i < std::min(participants.size(), swept.participants.size()); ++i) {
     const auto& ps = swept.participants[i];
     EXPECT_EQ(ps.points.size(), kLowerings.size()) << ps.name;
-    for (std::size_t j = 0; j < std::min(kLowerings.size(), ps.points.size()); ++j, ++row) {
+    for (std::size_t j = 0; j < std::min(kLowerings.size(), ps.points.size()); ++j) {
       const auto& point = ps.points[j];
-      EXPECT_TRUE(point.ok) << ps.name << " at " << point.lowering << " m: " << point.failure;
-      EXPECT_NEAR(point.lowering, rows[row].loweringM, 1e-12);
-      const double theirs = point.result.swingTime, ours = rows[row].swingTimeS;
-      const auto s = independent::simulateSweepSwing(participants[i], model, {}, kLowerings[j]);
-      std::printf("%s %.2f %.3f %.3f %+.3f %d\n", ps.name.c_str(), point.lowering, 1e3 * ours, 1e3 * theirs,
-                  1e3 * (ours - theirs), s.bounces);
-      EXPECT_NEAR(ours, theirs, kAgreeS) << ps.name << " at " << point.lowering << " m";
-      EXPECT_EQ(s.bounces, point.result.bounces) << ps.name << " at " << point.lowering << " m";
-      EXPECT_FALSE(s.hipRangeActed) << "the hip range stop acted: its law (ours is a guess) would matter";
-      bounced += s.bounces > 0;
+      EXPECT_NEAR(point.lowering, kLowerings[j], 1e-12);
+      const auto ours = independent::simulateSweepSwing(participants[i], model, {}, kLowerings[j]);
+      EXPECT_FALSE(ours.hipRangeActed) << "the hip range stop acted: its law (ours is a guess) would matter";
+      // Both end, or neither does (the thigh no longer reaches its target).
+      EXPECT_EQ(point.ok, ours.ended) << ps.name << " at " << point.lowering << " m: " << point.failure;
+      if (!point.ok || !ours.ended) {
+        std::printf("%s %.2f %s %s\n", ps.name.c_str(), point.lowering, ours.ended ? "ends" : "no-end",
+                    point.ok ? "ends" : "no-end");
+        continue;
+      }
+      const double theirs = point.result.swingTime;
+      std::printf("%s %.2f %.3f %.3f %+.3f %d\n", ps.name.c_str(), point.lowering, 1e3 * ours.swingTime, 1e3 * theirs,
+                  1e3 * (ours.swingTime - theirs), ours.bounces);
+      EXPECT_NEAR(ours.swingTime, theirs, kAgreeS) << ps.name << " at " << point.lowering << " m";
+      EXPECT_EQ(ours.bounces, point.result.bounces) << ps.name << " at " << point.lowering << " m";
+      bounced += ours.bounces > 0;
     }
   }
   fs::remove_all(dir);
@@ -108,18 +117,56 @@ TEST(SweepTableGenerator, AgreesWithSwingsimsSweepWhenTheKneeBounces) {
 
 // The swing-end rule's "in whichever order": with a wide zone (35 deg) and a high thigh
 // target (26 deg) P4's knee is back in the zone at 0.15 m before his thigh reaches its
-// target, and the swing ends when the thigh does. P2's thigh never gets there (left out).
+// target, and the swing ends when the thigh does. P2's thigh never gets there from 0.05 m:
+// no end on either side.
 TEST(SweepTableGenerator, AgreesWithSwingsimsSweepWhenTheThighArrivesLast) {
   SWINGSIM_RELEASE_ONLY();
   independent::SweepModel late;
   late.zoneDeg = 35;
   late.thighTargetDeg = 26;
-  auto participants = independent::burkettParticipants();
-  participants.erase(participants.begin() + 1);
-  const auto s = independent::simulateSweepSwing(participants[2], late, {}, 0.15);
+  const auto participants = independent::burkettParticipants();
+  const auto s = independent::simulateSweepSwing(participants[3], late, {}, 0.15);
   EXPECT_GT(s.thighTargetTime, s.kneeEntryTime + 100 * kVisibleS);
   EXPECT_EQ(s.swingTime, s.thighTargetTime);
   crossCheck("thigh-last", participants, late, 1e-5);
+}
+
+// The other COM rule, as the files name it (docs/assumptions.md "COM rule").
+TEST(SweepTableGenerator, AgreesWithSwingsimsSweepUnderTheProportionalComRule) {
+  SWINGSIM_RELEASE_ONLY();
+  independent::SweepModel proportional;
+  proportional.comRule = independent::ComRule::kProportional;
+  crossCheck("proportional", independent::burkettParticipants(), proportional, 1e-5);
+}
+
+// The hip effort adaptation (docs/uncertainty.md `hip_effort_adaptation`) as the generator
+// reads it, against swingsim's own (calcAdaptedParticipant), for an exponent of either sign.
+TEST(SweepTableGenerator, EffortAdaptationIsSwingsims) {
+  SWINGSIM_RELEASE_ONLY();
+  const fs::path dir = testing::freshTempDir("swingsim_indep_sweep", "effort");
+  const auto participants = independent::burkettParticipants();
+  const independent::SweepModel model;
+  const auto files = independent::writeSweepModelFiles(participants, model, dir.string());
+  for (std::size_t i = 0; i < participants.size(); ++i) {
+    const Participant loaded = loadParticipant(files[i]);
+    const KneeModel knee = loadKneeModel(loaded.kneeModelPath);
+    for (double a : {-1.0, 0.5})
+      for (double d : {0.05, 0.10}) {
+        independent::SweepEffects fx;
+        fx.hipEffortExponent = a;
+        const auto ours = independent::simulateSweepSwing(participants[i], model, fx, d);
+        SwingOptions options;
+        options.requireSwingEnd = false;  // NaN where the thigh no longer reaches its target
+        const double theirs =
+            simulateSwing(makeSwingSetup(calcAdaptedParticipant(loaded, d, a), knee, d), options).swingTime;
+        EXPECT_EQ(ours.ended, !std::isnan(theirs)) << loaded.name << " a " << a << " at " << d << " m";
+        if (!ours.ended) continue;
+        std::printf("effort a=%+.1f %s %.2f m: generator %.3f ms, swingsim %.3f ms\n", a, loaded.name.c_str(), d,
+                    1e3 * ours.swingTime, 1e3 * theirs);
+        EXPECT_NEAR(ours.swingTime, theirs, kAgreeS) << loaded.name << " a " << a << " at " << d << " m";
+      }
+  }
+  fs::remove_all(dir);
 }
 
 TEST(SweepTableGenerator, SwingTimeConvergesWithTheStep) {
@@ -237,6 +284,9 @@ TEST(SweepTableGenerator, NoiseHasTheSdOfAMeanOfFiveTrials) {
   const auto b = independent::generateSweepTable(participants, lowerings, model, {}, 7);
   const auto c = independent::generateSweepTable(participants, lowerings, model, {}, 8);
   ASSERT_EQ(a.size(), 8u);
+  for (std::size_t i = 0; i < clean.size(); ++i)
+    EXPECT_EQ(clean[i].swingTimeS,
+              independent::simulateSweepSwing(participants[i / 2], model, {}, lowerings[i % 2]).swingTime);
   double chi2 = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(a[i].swingTimeS, b[i].swingTimeS);
@@ -260,6 +310,21 @@ TEST(SweepTableGenerator, NoiseHasTheSdOfAMeanOfFiveTrials) {
   EXPECT_EQ(first.rfind("P1,0,", 0), 0u) << first;
   EXPECT_EQ(first.substr(first.size() - 8), ",0.031,5") << first;
   fs::remove_all(dir);
+}
+
+// Table 4's own lowerings: P2's thigh no longer reaches its target at 0.18 m under the
+// files' time scale; the generator says who and where instead of writing a row.
+TEST(SweepTableGenerator, ASwingWithoutAnEndIsNamed) {
+  const auto participants = independent::burkettParticipants();
+  const auto lowerings = independent::burkettTable4Lowerings();
+  try {
+    independent::generateSweepTableByParticipant(participants, lowerings, independent::SweepModel{}, {}, 1);
+    ADD_FAILURE() << "P2 at 0.18 m has no swing end";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("P2 at lowering 0.18"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(independent::generateSweepTableByParticipant(participants, {{0.0}}, independent::SweepModel{}, {}, 1),
+               std::invalid_argument);
 }
 
 }  // namespace
