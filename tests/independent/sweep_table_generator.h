@@ -28,6 +28,10 @@
 //   that leaves the zone first (a bounce) ends its swing at its next entry.
 // - Hip range: the docs say only "smooth stop outside" -30..90 deg; ours is a stiff spring
 //   and damper outside the range (an assumption); SweepSwing says whether it ever acted.
+// - Gravity 9.81 m/s^2, swingsim's (docs/export-osim.md).
+// - Rows (docs: issue 26's table): the CSV's sd_s is the trial-to-trial SD (Burkett Table 3)
+//   and n the trials averaged; a row's noise is sd_s / sqrt(n).
+// Agreement with swingsim's own sweep: tests/independent/sweep_table_generator_test.cpp.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
