@@ -91,18 +91,22 @@ inline double strapHipMoment(const SwingTruth& m, double theta, double phi) {
   return m.strapStiffness * (theta - phi - m.strapOffset);
 }
 
-/// Accelerations (phi'', psi'') by Kane's method: for each generalized speed u_j, the sum
-/// over bodies of m a . dv/du_j + I alpha dw/du_j equals the generalized active force.
-inline void accelerations(const SwingTruth& m, const HipDrive& d, double t, const double* y, double* acc) {
+/// Accelerations (phi'', psi'') of the chain thigh + (shank and foot as one body) by Kane's
+/// method: for each generalized speed u_j, the sum over bodies of m a . dv/du_j + I alpha
+/// dw/du_j equals the generalized active force. `hipMomentNm` acts on the thigh (positive
+/// flexes the hip), `kneeMomentNm` between thigh and shank (positive flexes the knee).
+/// Angles and rates in rad and rad/s (y = phi, psi, phi', psi'); `gravity` in m/s^2.
+inline void chainAccelerations(const Segment& thigh, const Segment& shank, const Segment& foot, const double* y,
+                               double hipMomentNm, double kneeMomentNm, double* acc, double gravity = kG) {
   const double phi = y[0], psi = y[1], phiDot = y[2], psiDot = y[3];
   // Thigh: COM a1 below the hip along the thigh.
-  const double a1 = m.thigh.length - m.thigh.comFromDistal, L1 = m.thigh.length;
+  const double a1 = thigh.length - thigh.comFromDistal, L1 = thigh.length;
   // Shank + foot, in the shank frame (x forward along the foot, y up along the shank).
-  const double as = m.shank.length - m.shank.comFromDistal, L2 = m.shank.length;
-  const double cf = m.foot.length - m.foot.comFromDistal;
-  const double m2 = m.shank.mass + m.foot.mass;
-  const Vec2 c{m.foot.mass * cf / m2, -(m.shank.mass * as + m.foot.mass * L2) / m2};
-  const double jKnee = m.shank.inertia + m.shank.mass * as * as + m.foot.inertia + m.foot.mass * (cf * cf + L2 * L2);
+  const double as = shank.length - shank.comFromDistal, L2 = shank.length;
+  const double cf = foot.length - foot.comFromDistal;
+  const double m2 = shank.mass + foot.mass;
+  const Vec2 c{foot.mass * cf / m2, -(shank.mass * as + foot.mass * L2) / m2};
+  const double jKnee = shank.inertia + shank.mass * as * as + foot.inertia + foot.mass * (cf * cf + L2 * L2);
   const double i2 = jKnee - m2 * dot(c, c);
   // Unit vectors.
   const Vec2 e1{std::sin(phi), -std::cos(phi)}, n1{std::cos(phi), std::sin(phi)};
@@ -114,19 +118,25 @@ inline void accelerations(const SwingTruth& m, const HipDrive& d, double t, cons
   const Vec2 a1rest = (-a1 * phiDot * phiDot) * e1;
   const Vec2 a2rest = (-L1 * phiDot * phiDot) * e1 + (-psiDot * psiDot) * rc;
   // Generalized inertia.
-  const double M11 = m.thigh.mass * dot(v1phi, v1phi) + m.thigh.inertia + m2 * dot(v2phi, v2phi);
+  const double M11 = thigh.mass * dot(v1phi, v1phi) + thigh.inertia + m2 * dot(v2phi, v2phi);
   const double M12 = m2 * dot(v2phi, v2psi);
   const double M22 = m2 * dot(v2psi, v2psi) + i2;
-  // Generalized active forces: gravity, hip moment, knee moment, strap.
-  const double theta = phi - psi, thetaDot = phiDot - psiDot;
-  const double Mk = kneeMoment(m, theta, thetaDot, phi);
-  const double Mh = hipMoment(d, t) + strapHipMoment(m, theta, phi);
-  const Vec2 g1{0, -m.thigh.mass * kG}, g2{0, -m2 * kG};
-  const double Q1 = dot(g1, v1phi) + dot(g2, v2phi) + Mh + Mk - m.thigh.mass * dot(a1rest, v1phi) - m2 * dot(a2rest, v2phi);
-  const double Q2 = dot(g2, v2psi) - Mk - m2 * dot(a2rest, v2psi);
+  // Generalized active forces: gravity, hip moment, knee moment.
+  const Vec2 g1{0, -thigh.mass * gravity}, g2{0, -m2 * gravity};
+  const double Q1 = dot(g1, v1phi) + dot(g2, v2phi) + hipMomentNm + kneeMomentNm - thigh.mass * dot(a1rest, v1phi) -
+                    m2 * dot(a2rest, v2phi);
+  const double Q2 = dot(g2, v2psi) - kneeMomentNm - m2 * dot(a2rest, v2psi);
   const double det = M11 * M22 - M12 * M12;
   acc[0] = (M22 * Q1 - M12 * Q2) / det;
   acc[1] = (M11 * Q2 - M12 * Q1) / det;
+}
+
+/// Accelerations (phi'', psi'') of the truth `m` under hip drive `d` at time t (s).
+inline void accelerations(const SwingTruth& m, const HipDrive& d, double t, const double* y, double* acc) {
+  const double theta = y[0] - y[1], thetaDot = y[2] - y[3];
+  const double Mk = kneeMoment(m, theta, thetaDot, y[0]);
+  const double Mh = hipMoment(d, t) + strapHipMoment(m, theta, y[0]);
+  chainAccelerations(m.thigh, m.shank, m.foot, y, Mh, Mk, acc);
 }
 
 struct SwingSamples {
