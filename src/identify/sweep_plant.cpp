@@ -169,6 +169,24 @@ SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingT
       errors.push_back(p.standardErrors[k]);
     }
     p.lowered = lowered;
+    // A held-out row's error carries its own noise and the standard row's, which its time
+    // scale was calibrated to (swing time ~ proportional to the scale): se^2 + (T_d/T_0)^2 se_0^2.
+    // The shared part makes a participant's rows correlated: the likelihood uses them
+    // whitened by the Cholesky factor of C = diag(se^2) + v v', v_k = (T_k/T_0) se_0
+    // (generalized least squares), so a participant's rows count as independent samples.
+    const auto n = static_cast<Eigen::Index>(errors.size());
+    Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd shared(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const auto row = static_cast<std::size_t>(k);
+      shared[k] = hasStandard[i] ? p.lowered[row].swingTime / p.standard.swingTime * p.standardRowError : 0.0;
+      cov(k, k) = errors[row] * errors[row];
+    }
+    cov += shared * shared.transpose();
+    p.whitening = n > 0 ? Eigen::MatrixXd(cov.llt().matrixL().solve(Eigen::MatrixXd::Identity(n, n))) : Eigen::MatrixXd();
+    for (Eigen::Index k = 0; k < n; ++k) errors[static_cast<std::size_t>(k)] = std::sqrt(cov(k, k));
+    // How many independent samples the rows' RMS is worth (Satterthwaite: (tr C)^2 / tr C^2).
+    p.effectiveRows = n > 0 ? cov.trace() * cov.trace() / (cov * cov).trace() : 0.0;
     p.standardErrors = errors;
     if (!hasStandard[i] && p.lowered.empty()) {
       p.inModel = false;
@@ -181,10 +199,11 @@ SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingT
       p.outside = "no lowered row to compare";
     } else {
       // Inside the model when some time scale in the calibration range reaches its
-      // standard-location time.
+      // standard-location time and the calibrated base model ends a swing at every row.
       try {
         const SwingSetup setup = makeSwingSetup(p.nominal.participant, std::make_shared<const KneeLawSum>(makeSweepVariantKnee(p.nominal)), 0);
-        (void)calibrateHipTimeScale(setup, p.standard.swingTime, p.nominal.swing);
+        const CalibrationResult cal = calibrateHipTimeScale(setup, p.standard.swingTime, p.nominal.swing);
+        (void)predict(i, SweepModelParams{}, cal.timeScale);
       } catch (const RunError& e) {
         p.inModel = false;
         p.outside = e.what();
@@ -269,10 +288,10 @@ std::vector<SweepPlant::Prediction> SweepPlant::predictAll(const std::vector<std
 
 std::vector<double> SweepPlant::standardized(std::size_t i, const Prediction& p) const {
   const SweepParticipantRows& rows = participants_[i];
-  std::vector<double> out;
-  for (std::size_t k = 0; k < rows.lowered.size(); ++k)
-    out.push_back((rows.lowered[k].swingTime - p.times[k]) / rows.standardErrors[k]);
-  return out;
+  Eigen::VectorXd r(static_cast<Eigen::Index>(rows.lowered.size()));
+  for (std::size_t k = 0; k < rows.lowered.size(); ++k) r[static_cast<Eigen::Index>(k)] = rows.lowered[k].swingTime - p.times[k];
+  const Eigen::VectorXd z = rows.whitening * r;
+  return std::vector<double>(z.data(), z.data() + z.size());
 }
 
 SweepPlant::SubsetFit SweepPlant::fitSubset(const SweepModelParams& model, const std::vector<std::size_t>& subset) const {
@@ -535,7 +554,7 @@ std::vector<NoiseEstimate> SweepPlant::estimateRecordNoise() const {
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t i : inModel_) {
       const auto& e = participants_[i].standardErrors;
-      out.push_back({rms(e) * kMs, e.size()});
+      out.push_back({rms(e) * kMs, static_cast<std::size_t>(std::max(1.0, std::floor(participants_[i].effectiveRows)))});
     }
   return out;
 }

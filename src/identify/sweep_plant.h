@@ -67,7 +67,14 @@ struct SweepParticipantRows {
   SweepVariant nominal;
   MeasuredSwingTime standard;               ///< the row at lowering 0 (calibration target)
   std::vector<MeasuredSwingTime> lowered;   ///< compared rows, by lowering
-  std::vector<double> standardErrors;       ///< s, of each lowered row
+  /// s, of each lowered row's prediction error: its own standard error and the standard
+  /// row's, carried by the calibrated time scale (sqrt(se^2 + (T_d / T_0)^2 se_0^2))
+  std::vector<double> standardErrors;
+  /// L^-1, L the Cholesky factor of the rows' error covariance diag(se^2) + v v'
+  /// (v_k = (T_k / T_0) se_0): whitens a residual vector (generalized least squares).
+  Eigen::MatrixXd whitening;
+  /// The independent samples the rows' RMS error is worth, (tr C)^2 / tr C^2 (Satterthwaite).
+  double effectiveRows = 0;
   double standardRowError = 0;              ///< s, of the standard row
   bool inModel = true;
   std::string outside;                      ///< why not in the model
@@ -97,7 +104,8 @@ class SweepPlant final : public DiagnosisPlant {
   Comparison compare(const PlantModel& model) const override;
   std::vector<std::string> validationStems() const override;
   /// Per in-model participant (train, then held out): the RMS standard error of its
-  /// lowered rows, ms.
+  /// lowered rows' prediction errors, ms; `samples` the independent samples their RMS is worth
+  /// (floor of SweepParticipantRows::effectiveRows), for the engine's few-sample limit.
   std::vector<NoiseEstimate> estimateRecordNoise() const override;
   std::vector<std::string> warnings() const override { return notes_; }
 
@@ -130,7 +138,7 @@ class SweepPlant final : public DiagnosisPlant {
   };
   /// The fitted shared values of `model` on the participants in `subset`.
   SubsetFit fitSubset(const SweepModelParams& model, const std::vector<std::size_t>& subset) const;
-  /// Standardized residuals (measured - model) / standard error of participant i's lowered rows.
+  /// Participant i's lowered-row residuals (measured - model), whitened (dimensionless).
   std::vector<double> standardized(std::size_t i, const Prediction& p) const;
 
   std::vector<SweepParticipantRows> participants_;
