@@ -655,7 +655,7 @@ MauchSwitchParams polishSwitchStarts(const MauchCylinderParams& model, const Tra
     };
     return solveBoundedLeastSquares(f, switchParameters(from, options.ranges, latch), settings);
   };
-  const std::size_t polished = std::min<std::size_t>(kPolishedStarts, sortedStarts.size());
+  const std::size_t polished = std::min<std::size_t>(kPolishedStarts + options.extraStarts.size(), sortedStarts.size());
   std::vector<std::future<BoundedFitResult>> runs;
   for (std::size_t s = 1; s < polished; ++s) runs.push_back(std::async(std::launch::async, polish, sortedStarts[s]));
   std::vector<BoundedFitResult> results;
@@ -672,7 +672,7 @@ MauchSwitchParams polishSwitchStarts(const MauchCylinderParams& model, const Tra
       bestCost = r.cost;
       bestSwitches = switchesFrom(model.switches, r.x.data(), latch);
     }
-    if (options.progress) options.progress(done + static_cast<int>(s) + 1, done + static_cast<int>(kPolishedStarts));
+    if (options.progress) options.progress(done + static_cast<int>(s) + 1, done + static_cast<int>(polished));
   }
   return bestSwitches;
 }
@@ -694,7 +694,8 @@ MauchSwitchParams fitSwitchConstants(const MauchCylinderParams& model, const std
   if (options.progress) options.progress(total, total + static_cast<int>(kPolishedStarts));
   std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
   out.switchStarts = static_cast<int>(starts.size());
-  std::vector<MauchSwitchParams> sorted;
+  // The extra starts first: each is polished, then the grid's best.
+  std::vector<MauchSwitchParams> sorted = options.multiStart ? options.extraStarts : std::vector<MauchSwitchParams>{};
   for (const auto& s : starts) sorted.push_back(s.switches);
   return polishSwitchStarts(model, set, sorted, options, total, out);
 }

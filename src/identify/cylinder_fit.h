@@ -56,6 +56,9 @@ struct CylinderFitOptions {
   bool fitLatchRate = true;
   /// false: polish from the model's own switch constants only (a refit near a known fit).
   bool multiStart = true;
+  /// With multiStart: further starts, each polished besides the grid's best (a refit
+  /// starts from the solution it refits and along the grid of a parameter it frees).
+  std::vector<MauchSwitchParams> extraStarts;
   SwitchConstantRanges ranges;
   /// Called as progress(done, total) while fitting switch constants.
   std::function<void(int, int)> progress;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "core/input_error.h"
@@ -76,6 +77,48 @@ double rmsOf(const std::vector<double>& r) {
   double s = 0;
   for (double v : r) s += v * v;
   return r.empty() ? 0.0 : std::sqrt(s / static_cast<double>(r.size()));
+}
+
+// Polishes after a joint refit's multi-start fit, while the training RMSE falls by more than
+// this fraction (1e-5: far below what the likelihood ratio of one added constant can see).
+constexpr int kRefitPolishes = 4;
+constexpr double kRefitPolishFall = 1e-5;
+
+// The switch constants a fit freed (fitCylinder's constants after the coefficients) as the
+// engine's base parameters: value, standard error from the joint covariance, physical range.
+std::vector<PlantFit::FreeParameter> freedSwitchConstants(const CylinderFit& fitted) {
+  std::vector<PlantFit::FreeParameter> out;
+  for (std::size_t j = fitted.regression.coefficients.size(); j < fitted.constants.size(); ++j) {
+    const FittedConstant& c = fitted.constants[j];
+    out.push_back({c.name, c.value, c.standardError, c.lower, c.upper});
+  }
+  return out;
+}
+
+// Chien's 4-phase model produced by a hyperextension phase on a 2-phase model (Chien 2014
+// Eqs. 2 and 11): the 2-phase gates times S8 plus S7 = 1 - S8 are the 4-phase gates with
+// phases 2 (S1 S2 S8) and 3 ((1 - S1) S8) merged, so splitting the low-force phase into the
+// two gives the nesting 4-phase model (start: both at the low-force coefficients).
+MauchCylinderParams splitIntoFourPhases(const MauchCylinderParams& p) {
+  MauchCylinderParams q = p;
+  q.phases = 4;
+  q.coefficients = {p.coefficients[0], p.coefficients[1], p.coefficients[1], p.effects.hyperextension};
+  q.effects.hyperextensionPhase = false;
+  q.effects.hyperextension = {};
+  return q;
+}
+
+// Whether the 4-phase split of a 2-phase model with a hyperextension phase is supported:
+// the acceptance rule's test on its 3 more coefficients (default alpha and BIC) and every
+// held-out RMSE lower by the rule's margin.
+bool supportsSplit(const PlantFit& merged, const PlantFit& split) {
+  const EffectSelectionSettings rule;
+  constexpr int kSplitCoefficients = 3;
+  const LrTest t = calcLrTest(merged.rss, split.rss, split.likelihoodResidual, kSplitCoefficients);
+  EffectScore score;
+  score.validationRmse = split.validationRmse;
+  applyTestAndValidation(score, t, kSplitCoefficients, merged.validationRmse, rule);
+  return t.p < rule.alpha && score.bicImproves && score.validationImproves;
 }
 
 }  // namespace
@@ -176,15 +219,28 @@ CylinderPlant::CylinderPlant(const MauchCylinderParams& base, std::vector<BenchD
 
 PlantModelPtr CylinderPlant::baseModel() const { return std::make_shared<CylinderModel>(start_); }
 
+namespace {
+const CylinderModel& asCylinderModel(const PlantModel& model) { return dynamic_cast<const CylinderModel&>(model); }
+}  // namespace
+
 PlantFit CylinderPlant::fit(const PlantModel& model) const {
   // With fit_switches, every candidate refits the switch widths and xhy too (a polish from
   // the baseline's multi-start fit): a hidden effect bends them, and the candidate that
-  // explains it should get them back.
+  // explains it should get them back. After a joint refit (refitAccepted) they stay free,
+  // and so does the latch rate after switch_delay.
+  const CylinderModel& m = asCylinderModel(model);
   CylinderFitOptions options;
-  options.fitSwitches = fitSwitches_;
-  options.fitLatchRate = false;
+  options.fitSwitches = fitSwitches_ || m.switchesFree;
+  options.fitLatchRate = m.latchFree;
   options.multiStart = false;
-  const CylinderFit fitted = fitCylinder(cylinderParams(model), train_, options);
+  const CylinderFit fitted = fitCylinder(m.params, train_, options);
+  PlantFit s = summarize(fitted);
+  s.model = std::make_shared<CylinderModel>(fitted.params, m.switchesFree, m.latchFree);
+  if (m.switchesFree) s.baseParameters = freedSwitchConstants(fitted);
+  return s;
+}
+
+PlantFit CylinderPlant::summarize(const CylinderFit& fitted) const {
   PlantFit s;
   s.model = std::make_shared<CylinderModel>(fitted.params);
   const MauchCylinder cyl(fitted.params);
@@ -228,18 +284,98 @@ std::string CylinderPlant::checkApplicable(const PlantModel& model, EffectId eff
 }
 
 PlantModelPtr CylinderPlant::addEffect(const PlantModel& model, EffectId effect, double gridValue) const {
-  return std::make_shared<CylinderModel>(addCylinderEffect(cylinderParams(model), effect, gridValue));
+  const CylinderModel& m = asCylinderModel(model);
+  return std::make_shared<CylinderModel>(addCylinderEffect(m.params, effect, gridValue), m.switchesFree, m.latchFree);
+}
+
+PlantFit CylinderPlant::fitJointly(const MauchCylinderParams& params, bool fitLatchRate) const {
+  CylinderFitOptions options;
+  options.fitSwitches = true;
+  options.fitLatchRate = fitLatchRate;
+  // The projected cost is not convex in the switch constants (and a single training speed
+  // leaves the latch rate in a long shallow valley): starts from the candidate's solution,
+  // from it at every latch time constant of switch_delay's grid, and from the multi-start
+  // grid over the physical ranges, each polished; the best is kept.
+  options.multiStart = true;
+  options.extraStarts = {params.switches};
+  if (fitLatchRate)
+    for (double tau : describeEffect(EffectId::kSwitchDelay).grid) {
+      MauchSwitchParams start = params.switches;
+      start.latchRate = 1.0 / tau;
+      options.extraStarts.push_back(start);
+    }
+  CylinderFit best = fitCylinder(params, train_, options);
+  // Polished on from there while it still falls (a multi-start polish may stop at its
+  // budget in a flat valley): else the next step's candidates, each polished again, would
+  // all gain from the polish rather than from their effect.
+  options.multiStart = false;
+  options.extraStarts.clear();
+  for (int pass = 0; pass < kRefitPolishes; ++pass) {
+    CylinderFit next = fitCylinder(best.params, train_, options);
+    const bool falls = next.regression.residualRms < best.regression.residualRms * (1.0 - kRefitPolishFall);
+    if (next.regression.residualRms < best.regression.residualRms) best = std::move(next);
+    if (!falls) break;
+  }
+  PlantFit s = summarize(best);
+  s.model = std::make_shared<CylinderModel>(best.params, true, fitLatchRate);
+  s.baseParameters = freedSwitchConstants(best);
+  return s;
+}
+
+PlantFit CylinderPlant::refitAccepted(const PlantFit& candidate, EffectId effect) const {
+  if (effect != EffectId::kSwitchDelay && effect != EffectId::kHyperextensionPhase) return candidate;
+  const CylinderModel& m = asCylinderModel(*candidate.model);
+  const bool latch = m.latchFree || effect == EffectId::kSwitchDelay;
+  PlantFit out = fitJointly(m.params, latch);
+  if (effect == EffectId::kHyperextensionPhase && m.params.phases == 2 && m.params.effects.hyperextensionPhase) {
+    try {
+      PlantFit split = fitJointly(splitIntoFourPhases(m.params), latch);
+      if (supportsSplit(out, split)) out = std::move(split);
+    } catch (const RunError&) {
+      // A phase of the split the training data never enter: the merged model stays.
+    }
+  }
+  // The joint fit starts from the candidate's solution, so it is never worse than the
+  // candidate unless a polish stopped early: then the candidate stays.
+  return out.rss <= candidate.rss ? out : candidate;
+}
+
+std::optional<double> CylinderPlant::calcHeldParameterRss(const PlantModel& fitted, const std::string& parameter,
+                                                          double value) const {
+  const CylinderModel& m = asCylinderModel(fitted);
+  if (!m.switchesFree) return std::nullopt;
+  MauchCylinderParams p = m.params;
+  CylinderFitOptions options;
+  options.fitSwitches = true;
+  options.fitLatchRate = m.latchFree;
+  options.multiStart = false;
+  // Held: its range shrunk to the value (relative 1e-9, so the bounded solver keeps a box).
+  auto hold = [&](double& field, double range[2]) {
+    field = value;
+    const double eps = 1e-9 * std::max(std::abs(value), 1e-9);
+    range[0] = value - eps;
+    range[1] = value + eps;
+  };
+  SwitchConstantRanges& r = options.ranges;
+  if (parameter == "velocity_width_m_per_s") hold(p.switches.velocityWidth, r.velocityWidth);
+  else if (parameter == "position_width_m") hold(p.switches.positionWidth, r.positionWidth);
+  else if (parameter == "hyperextension_position_m") hold(p.switches.hyperextensionPosition, r.hyperextension);
+  else if (parameter == "latch_rate_per_s" && m.latchFree) hold(p.switches.latchRate, r.latchRate);
+  else return std::nullopt;
+  return summarize(fitCylinder(p, train_, options)).rss;
 }
 
 PlantModelPtr CylinderPlant::combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const {
-  MauchCylinderParams p = cylinderParams(a);
+  const CylinderModel& ma = asCylinderModel(a);
+  const CylinderModel& mb = asCylinderModel(b);
+  MauchCylinderParams p = ma.params;
   const MauchCylinderParams& q = cylinderParams(b);
   switch (effectOfB) {
     case EffectId::kSwitchDelay: p.switches.latchRate = std::min(p.switches.latchRate, q.switches.latchRate); break;
     case EffectId::kCoulombFriction: p = addCylinderEffect(p, effectOfB, q.effects.coulombWidth); break;
     default: p = addCylinderEffect(p, effectOfB, 0.0); break;
   }
-  return std::make_shared<CylinderModel>(p);
+  return std::make_shared<CylinderModel>(p, ma.switchesFree || mb.switchesFree, ma.latchFree || mb.latchFree);
 }
 
 std::vector<double> CylinderPlant::effectValues(const PlantModel& model, EffectId effect) const {

@@ -17,7 +17,13 @@ namespace swingsim {
 class CylinderModel final : public PlantModel {
  public:
   explicit CylinderModel(MauchCylinderParams params) : params(std::move(params)) {}
+  CylinderModel(MauchCylinderParams params, bool switchesFree, bool latchFree)
+      : params(std::move(params)), switchesFree(switchesFree), latchFree(latchFree) {}
   MauchCylinderParams params;
+  /// Set by CylinderPlant::refitAccepted: every later fit of this model (and of the models
+  /// built on it) keeps the switch widths and xhy, and with latchFree the latch rate, free.
+  bool switchesFree = false;
+  bool latchFree = false;
 };
 /// The parameters inside an engine model of the cylinder plant.
 const MauchCylinderParams& cylinderParams(const PlantModel& model);
@@ -55,8 +61,27 @@ class CylinderPlant final : public DiagnosisPlant {
   /// Noise of the measured force of every record (N).
   std::vector<NoiseEstimate> estimateRecordNoise() const override;
   std::vector<std::string> warnings() const override { return warnings_; }
+  /// After switch_delay or hyperextension_phase is accepted: one joint fit of every
+  /// coefficient, the switch widths, xhy and (with a slow latch) the latch rate, within their
+  /// ranges, from the candidate's solution and from the multi-start grid (the better one);
+  /// whatever the study's fit_switches. hyperextension_phase on a 2-phase model is also
+  /// refitted as the model it produces, Chien's 4-phase model (the low-force phase split
+  /// into swing flexion and extension), kept if the split passes the acceptance rule's test
+  /// (3 more coefficients) and lowers every held-out RMSE. The freed switch constants are
+  /// reported as the fit's base parameters, with the joint covariance's standard errors.
+  /// Other effects are linear: their candidate fit is already joint.
+  PlantFit refitAccepted(const PlantFit& candidate, EffectId effect) const override;
+  /// The training RSS of `fitted` refitted with the switch constant `parameter` (a
+  /// base-parameter name of refitAccepted) held at `value`, the other constants polished.
+  std::optional<double> calcHeldParameterRss(const PlantModel& fitted, const std::string& parameter,
+                                             double value) const override;
 
  private:
+  /// A fitted model as the engine takes it: residuals, held-out RMSE, named constants.
+  PlantFit summarize(const CylinderFit& fitted) const;
+  /// The joint fit of refitAccepted for one model structure.
+  PlantFit fitJointly(const MauchCylinderParams& params, bool fitLatchRate) const;
+
   MauchCylinderParams start_;
   std::vector<BenchData> train_, validate_;
   double plotSeconds_;

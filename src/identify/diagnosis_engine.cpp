@@ -400,7 +400,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
       out.steps.push_back(step);
       break;
     }
-    current = best[chosen];
+    current = plant.refitAccepted(best[chosen], ids[chosen]);
     out.accepted.push_back(names[chosen]);
     out.acceptedScores.push_back(step.candidates[chosen]);
     recordAmbiguity(step.group, [&](const std::string& e) { return findEffect(plant.kind(), e)->separatedBy; }, out.ambiguous,

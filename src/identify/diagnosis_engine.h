@@ -100,6 +100,10 @@ class DiagnosisPlant {
   /// Measurement noise of the compared quantity in every record (training first),
   /// estimated from the measured signal alone.
   virtual std::vector<NoiseEstimate> estimateRecordNoise() const = 0;
+  /// The refit after `effect` was accepted, from its candidate fit `candidate`: a plant
+  /// whose candidates are scored with some parameters held (the cylinder's switch constants)
+  /// frees here what the effect touches and couples to. The default keeps the candidate fit.
+  virtual PlantFit refitAccepted(const PlantFit& candidate, EffectId /*effect*/) const { return candidate; }
   /// Warnings of the base fit (e.g. a switch constant at the edge of its range).
   virtual std::vector<std::string> warnings() const { return {}; }
   /// An independent check of a fitted model, one line for the report ("" if the plant has

@@ -290,3 +290,52 @@ TEST(CylinderPlantFit, NamesEveryConstantAndGivesTheirCorrelation) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// After switch_delay is accepted the refit frees the latch rate with the switch constants
+// (fit_switches off for the baseline), reports them as base parameters and can hold each one
+// for its profile likelihood.
+TEST(CylinderPlantRefit, SwitchDelayRefitFreesTheLatchRateAndCanHoldEachSwitchConstant) {
+  const MauchCylinderParams base = model("mauch-4phase.yaml");
+  MauchCylinderParams truth = base;
+  truth.switches.latchRate = 1.0 / 0.03;  // s: between the grid's 20 and 50 ms
+  const Data d = makeData(truth, 61);
+  const CylinderPlant plant(base, d.train, d.validate);
+  const PlantFit candidate = plant.fit(*plant.addEffect(CylinderModel(base), EffectId::kSwitchDelay, 0.02));
+  EXPECT_FALSE(plant.calcHeldParameterRss(*candidate.model, "latch_rate_per_s", 40.0)) << "its switches are held";
+  const PlantFit refit = plant.refitAccepted(candidate, EffectId::kSwitchDelay);
+  EXPECT_LE(refit.rss, candidate.rss);
+  std::vector<std::string> names;
+  for (const auto& p : refit.baseParameters) names.push_back(p.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"velocity_width_m_per_s", "position_width_m", "hyperextension_position_m",
+                                             "latch_rate_per_s"}));
+  const double k = cylinderParams(*refit.model).switches.latchRate;
+  EXPECT_NE(k, 1.0 / 0.02) << "the latch rate is fitted, not left at the candidate's grid value";
+  // Held at its own value the RSS is the refit's; held away from it, larger.
+  const auto atFit = plant.calcHeldParameterRss(*refit.model, "latch_rate_per_s", k);
+  ASSERT_TRUE(atFit);
+  EXPECT_NEAR(*atFit, refit.rss, 1e-3 * refit.rss);
+  const auto away = plant.calcHeldParameterRss(*refit.model, "latch_rate_per_s", 3.0 * k);
+  ASSERT_TRUE(away);
+  EXPECT_GT(*away, refit.rss);
+  EXPECT_FALSE(plant.calcHeldParameterRss(*refit.model, "phase 1 f_N", 0.0));
+  // Later candidates keep the freed constants free.
+  const PlantFit next = plant.fit(*plant.addEffect(*refit.model, EffectId::kInertia, 0.0));
+  EXPECT_EQ(next.baseParameters.size(), 4u);
+}
+
+// The linear effects' candidate fit is already joint: the refit keeps it.
+TEST(CylinderPlantRefit, LinearEffectKeepsItsCandidateFit) {
+  const MauchCylinderParams base = model("mauch-4phase.yaml");
+  const Data d = makeData(base, 62);
+  const CylinderPlant plant(base, d.train, d.validate);
+  const PlantFit candidate = plant.fit(*plant.addEffect(CylinderModel(base), EffectId::kOrificeQuadratic, 0.0));
+  const PlantFit refit = plant.refitAccepted(candidate, EffectId::kOrificeQuadratic);
+  EXPECT_EQ(refit.model, candidate.model);
+  EXPECT_TRUE(refit.baseParameters.empty());
+}
+
+}  // namespace
+}  // namespace swingsim
