@@ -64,6 +64,10 @@ Json candidateJson(const CandidateScore& c, int step, const std::vector<std::str
   for (std::size_t v = 0; v < stems.size() && v < c.validationRmse.size(); ++v) validation[stems[v]] = c.validationRmse[v];
   const Json params = parametersJson(c.parameters);
   j["validation_rmse"] = validation;
+  // Cross-validated plants (the sweep): the pooled held-out RMSE the rule uses and each
+  // fold's p (the rule needs every fold significant).
+  if (std::isfinite(c.pooledValidationRmse)) j["pooled_validation_rmse"] = c.pooledValidationRmse;
+  if (!c.foldPValues.empty()) j["fold_p_values"] = c.foldPValues;
   j["train_rmse"] = c.trainRmse;
   j["delta_bic"] = c.deltaBic;
   j["likelihood_ratio"] = c.likelihoodRatio;
@@ -336,7 +340,7 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
   Json candidates = Json::array();
   for (std::size_t s = 0; s < dg.steps.size(); ++s)
     for (const auto& c : dg.steps[s].candidates) candidates.push_back(candidateJson(c, static_cast<int>(s + 1), stems));
-  return {{"plant", plantName(dg.plant)},
+  Json out = {{"plant", plantName(dg.plant)},
           {"quantity", before.quantity},
           {"unit", before.unit},
           {"baseline", summaryJson(before)},
@@ -355,6 +359,10 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"more_swings_for_power", powerJson(dg.power)},
           {"structure", dg.structureNote},
           {"warnings", dg.warnings}};
+  if (std::isfinite(dg.baseline.pooledValidationRmse))
+    out["pooled_validation_rmse"] = {{"baseline", dg.baseline.pooledValidationRmse},
+                                     {"final", dg.final.pooledValidationRmse}};
+  return out;
 }
 
 

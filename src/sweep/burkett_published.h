@@ -1,8 +1,10 @@
 #pragma once
 // Published swing times of Burkett, Smeathers & Barker (2004): Table 3 (standard knee-axis
 // location) and Table 4 (lowered knee axis), and the model's predicted optimum lowering.
-// Table 3's model predictions are the calibration targets; Table 4 is the validation set
-// and is never used to tune anything.
+// Table 3's model predictions are the calibration targets. Table 4 is the validation set of
+// the sweep, and no default of the sweep is tuned to it; in the sweep diagnosis
+// (studies/burkett2004-table4.yaml, identify/sweep_plant.h) its measured column is the
+// measurement, and every number fitted to it there is reported as fitted.
 #include <string>
 #include <vector>
 

@@ -14,7 +14,7 @@ TEST(EffectTable, EveryIdHasOneDescriptorAndNamesAreUniquePerPlant) {
     EXPECT_EQ(&describeEffect(e.id), &e) << e.name << ": its id finds another row";
     EXPECT_TRUE(names.insert({e.plant, e.name}).second) << e.name << " appears twice";
   }
-  EXPECT_EQ(effectTable().size(), static_cast<std::size_t>(EffectId::kBelowKneeMassScale) + 1);
+  EXPECT_EQ(effectTable().size(), static_cast<std::size_t>(EffectId::kThighTargetFlexion) + 1);
 }
 
 TEST(EffectTable, DescriptorsAreConsistent) {
@@ -27,9 +27,12 @@ TEST(EffectTable, DescriptorsAreConsistent) {
     EXPECT_EQ(e.parameters.size(), static_cast<std::size_t>(e.fittedParameters) + (e.grid.empty() ? 0 : 1));
     EXPECT_EQ(e.degreesOfFreedom(), static_cast<int>(e.parameters.size()));
     for (double g : e.grid) EXPECT_GT(g, 0.0);
-    // Only the swing's effects live in the participant.
+    // Only the swing's effects live in the participant; the sweep's are shared by all.
     if (e.participantLevel) {
       EXPECT_EQ(e.plant, PlantKind::kSwing);
+    }
+    if (e.plant == PlantKind::kSweep) {
+      EXPECT_FALSE(e.participantLevel);
     }
   }
 }
@@ -54,6 +57,11 @@ TEST(EffectTable, NamesPerPlantInTableOrder) {
   EXPECT_EQ(cylinder.front(), "coulomb_friction");
   EXPECT_EQ(plantName(PlantKind::kCylinder), "cylinder");
   EXPECT_EQ(plantName(PlantKind::kSwing), "swing");
+  const auto sweep = effectNames(PlantKind::kSweep);
+  ASSERT_EQ(sweep.size(), 10u);
+  EXPECT_EQ(sweep.front(), "hip_effort_adaptation");
+  EXPECT_EQ(sweep.back(), "thigh_target_flexion");
+  EXPECT_EQ(plantName(PlantKind::kSweep), "sweep");
 }
 
 }  // namespace
