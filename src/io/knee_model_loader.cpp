@@ -53,6 +53,8 @@ void serialize(A& a, DampingTableParams& p) {
       a.require(p.flexion[i] > p.flexion[i - 1], "flexion_deg", "angles must strictly increase",
                 [&] { return formatDegrees(p.flexion[i]) + " after " + formatDegrees(p.flexion[i - 1]); });
     a.require(p.moment[i] >= 0, "moment_Nm", "resisting moments must not be negative", [&] { return formatNumber(p.moment[i]); });
+    a.require(checkPlausible(p.moment[i], kJointMomentRange, "a knee moment").empty(), "moment_Nm",
+              checkPlausible(p.moment[i], kJointMomentRange, "a knee moment"), [&] { return formatNumber(p.moment[i]); });
   }
 }
 
@@ -91,9 +93,9 @@ void serialize(A& a, MauchCoefficientRow& r, RowContext context) {
     a.require(!seen[index], "phase", "phase appears twice", [&] { return std::to_string(r.phase); });
     seen[index] = true;
   }
-  a.number("f_N", r.coefficients.f);
-  a.number("k_N_per_m", r.coefficients.k);
-  a.number("c_Ns_per_m", r.coefficients.c);
+  a.number("f_N", r.coefficients.f, mustBePlausible(kForceRange, "a force"));
+  a.number("k_N_per_m", r.coefficients.k, mustBePlausible(kCylinderStiffnessRange, "a stiffness"));
+  a.number("c_Ns_per_m", r.coefficients.c, mustBePlausible(kCylinderDampingRange, "a damping"));
 }
 
 template <class A>
@@ -118,7 +120,7 @@ void serialize(A& a, MauchDialSetting& s, SettingContext context) {
 
 template <class A>
 void serialize(A& a, MauchAddedEffects& e, CoulombOf) {
-  a.number("force_N", e.coulombForce);
+  a.number("force_N", e.coulombForce, [](double v) { return v >= 0 ? checkPlausible(v, kForceRange, "a force") : "must not be negative (seal friction opposes motion)"; });
   a.optionalNumber("width_m_per_s", e.coulombWidth, mustBePositive);
 }
 template <class A>
