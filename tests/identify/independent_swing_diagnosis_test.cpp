@@ -105,6 +105,8 @@ TEST(IndependentSwingDiagnosis, StrapAtALowSamplingRateIsStillNotExplained) {
   EXPECT_LE(samples, 20u);
   EXPECT_EQ(dg.finalWhiteness.lags, static_cast<int>(samples) / kWhitenessLagDivisor);
   EXPECT_TRUE(dg.finalWhiteness.computed) << dg.finalWhiteness.note;  // a 10-row record keeps 2 lags
+  // Over the lags the record supports the strap's structure shows (p = 0.0005 over 3 lags).
+  EXPECT_FALSE(dg.finalResidualWhite) << "p = " << dg.finalWhiteness.pValue;
   EXPECT_FALSE(dg.explained);
   EXPECT_EQ(dg.verdict.rfind("NOT explained", 0), 0u) << dg.verdict;
 }
