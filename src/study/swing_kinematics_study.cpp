@@ -36,15 +36,15 @@ template <class A>
 void serialize(A& a, SwingHiddenEffects& h, AssistOf) { a.number("stiffness_Nm_per_rad", h.assistStiffness, mustBeNonNegative); }
 template <class A>
 void serialize(A& a, SwingHiddenEffects& h, ToeOffOf) {
-  a.angle("hip_rate_deg_s", h.toeOffHipRate);
-  a.angle("knee_rate_deg_s", h.toeOffKneeRate);
+  a.angle("hip_rate_deg_s", h.toeOffHipRate, mustBePlausible(kJointRateRange, "a hip rate"));
+  a.angle("knee_rate_deg_s", h.toeOffKneeRate, mustBePlausible(kJointRateRange, "a knee rate"));
 }
 template <class A>
-void serialize(A& a, SwingHiddenEffects& h, HipScaleOf) { a.number("scale", h.hipScale, mustBePositive); }
+void serialize(A& a, SwingHiddenEffects& h, HipScaleOf) { a.number("scale", h.hipScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
 template <class A>
-void serialize(A& a, SwingHiddenEffects& h, ShankScaleOf) { a.number("scale", h.shankScale, mustBePositive); }
+void serialize(A& a, SwingHiddenEffects& h, ShankScaleOf) { a.number("scale", h.shankScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
 template <class A>
-void serialize(A& a, SwingHiddenEffects& h, BelowKneeScaleOf) { a.number("scale", h.belowKneeScale, mustBePositive); }
+void serialize(A& a, SwingHiddenEffects& h, BelowKneeScaleOf) { a.number("scale", h.belowKneeScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
 
 template <class A>
 void serialize(A& a, SwingHiddenEffects& h) {
