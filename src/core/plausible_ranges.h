@@ -40,8 +40,10 @@ constexpr PlausibleRange kJointMomentRange{-2000, 2000, "N m",
                                            "a hip moment peaks near 1-2 N m/kg, some 300 N m for a 150 kg person"};
 /// Time scale of a hip moment profile: calibration searches 0.85-1.8.
 constexpr PlausibleRange kTimeScaleRange{0.2, 5, "", "calibrated scales lie in 0.85-1.8; 0.2-5 spans a 5x shorter or longer swing"};
-/// Amplitude scale of a generated condition's hip moment: 0.2-5 x the participant's.
-constexpr PlausibleRange kAmplitudeScaleRange{0.2, 5, "", "a condition's hip moment is a fraction to a few times the participant's"};
+/// Scale of a generated condition's hip moment or of a hidden effect's mass or moment:
+/// 0.2-5 x the participant's.
+constexpr PlausibleRange kAmplitudeScaleRange{
+    0.2, 5, "", "a condition or hidden effect scales the participant's value by a fraction to a few times"};
 /// Duration of a hip moment phase (s): a swing lasts 0.3-0.6 s.
 constexpr PlausibleRange kPhaseDurationRange{0.01, 10, "s", "a swing lasts 0.3-0.6 s"};
 /// Damping of a Mauch cylinder phase (N s/m): a hydraulic cylinder dissipates (>= 0); Mauch
