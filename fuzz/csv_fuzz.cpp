@@ -13,6 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       spec.required = {"time_s", "position_m", "force_N"};
       spec.strictlyIncreasing = "time_s";
       spec.minRows = 3;
+      spec.minStep = kMinSampleStep;  // as readBenchCsv
+      spec.ranges = {{"time_s", kRecordTimeRange, "a sample time"}, {"force_N", kForceRange, "a force"}};
       break;
     case 1:
       spec.required = {"frame", "knee_deg"};
@@ -22,6 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       spec.required = {"time_s", "hip_flexion_deg", "knee_flexion_deg"};
       spec.optional = {"hip_moment_Nm", "knee_moment_Nm"};
       spec.strictlyIncreasing = "time_s";
+      spec.minStep = kMinSampleStep;  // as readSwingRecord
+      spec.ranges = {{"knee_flexion_deg", kJointAngleRange, "a knee angle"}, {"hip_moment_Nm", kJointMomentRange, "a hip moment"}};
       break;
   }
   if (data[0] & 0x80) spec.maxRows = 8;

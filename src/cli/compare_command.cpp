@@ -33,9 +33,14 @@ int runCompare(const CompareArguments& args) {
   for (const auto& p : b.parameters) std::printf("%s", formatBaseParameter("base model: ", " refitted to", p).c_str());
   std::printf("%s", formatComparisonTable(b.comparison).c_str());
   const WhitenessTest& wt = b.whiteness;
-  std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g), %d lags outside the 99 %% band: %s\n",
-              wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand,
-              wt.pValue < study.settings.alpha ? "structure left (not white)" : "consistent with white noise");
+  if (wt.computed)
+    std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g), %d lags outside the 99 %% band: %s\n",
+                wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand,
+                judgeWhiteness(wt, study.settings.alpha) == Whiteness::kWhite ? "consistent with white noise"
+                                                                               : "structure left (not white)");
+  else
+    std::printf("training residual: Ljung-Box test cannot tell (%s)\n", wt.note.c_str());
+  if (wt.computed && !wt.note.empty()) std::printf("  (%s)\n", wt.note.c_str());
   const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   // The knee moment against the measured one, when the records have it (never fitted).
   const std::optional<HeldBackComparison> moment = plant->compareHeldBack(*b.fit.model);

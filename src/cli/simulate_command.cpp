@@ -11,6 +11,7 @@
 #include "cli/option_checks.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/plausible_ranges.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
@@ -150,11 +151,11 @@ Command addSimulateCommand(CLI::App& app) {
   sub->add_option_function<double>("--hip-rate-deg-s", [a](double v) { a->hipRateDegS = v; },
                                    "hip flexion rate at toe-off, deg/s (default: the participant's, 0)")
       ->type_name("DEG/S")
-      ->check(finiteNumber());
+      ->check(finiteNumber([](double v) { return checkPlausible(v, kJointRateRange, "a hip rate"); }));
   sub->add_option_function<double>("--knee-rate-deg-s", [a](double v) { a->kneeRateDegS = v; },
                                    "knee flexion rate at toe-off, deg/s (default: the participant's, 0)")
       ->type_name("DEG/S")
-      ->check(finiteNumber());
+      ->check(finiteNumber([](double v) { return checkPlausible(v, kJointRateRange, "a knee rate"); }));
   sub->add_option_function<std::string>("--integrator", [a](const std::string& v) { a->integrator = v; },
                                         "integration method, one of " + integrators + " (default " +
                                             integratorKeys().front() + "), at its converged accuracy")

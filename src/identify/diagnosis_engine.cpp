@@ -241,7 +241,8 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
   double worstRatio = 0, worstLimit = settings.explainedNoiseRatio, worstExcess = 0;
   for (std::size_t v = 0; v < stems.size() && v < out.final.validationRmse.size(); ++v) {
     const double noise = out.recordNoise[firstValidation + v];
-    const double ratio = noise > 0 ? out.final.validationRmse[v] / noise : std::numeric_limits<double>::infinity();
+    double ratio = noise > 0 ? out.final.validationRmse[v] / noise : std::numeric_limits<double>::infinity();
+    if (std::isnan(ratio)) ratio = std::numeric_limits<double>::infinity();  // a NaN error never passes
     // A record of few samples (the sweep's 2-4 rows a participant): the RMS of k noise
     // samples alone exceeds 1.2 x their SD often; the limit is then the 99 % point of that
     // RMS, sqrt(chi^2_0.99(k) / k). Records of 60 samples or more keep the study's ratio.
@@ -297,7 +298,10 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                    std::string(settings.measurementNoise > 0 ? "set in the study" : "estimated from the data") +
                    "; limit " + fmtRatio(worstLimit) + " x)";
   if (!atNoise && !out.finalResidualWhite) out.verdict += ", and ";
-  if (!out.finalResidualWhite) out.verdict += "the final residual is not white";
+  if (!out.finalResidualWhite)
+    out.verdict += out.finalWhiteness.computed ? "the final residual is not white"
+                                               : "whether the final residual is white cannot be told (" +
+                                                     out.finalWhiteness.note + ")";
   out.verdict += ". What remains: " + out.structureNote + ".";
   if (!tried.empty())
     out.verdict += " Tried on top of the final model: " + tried + "; the closest, " + closest +
@@ -415,7 +419,8 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
       out.warnings.push_back("final fit: " + note);
   out.finalParameters = baseIntervals(plant, current);
   out.finalWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
-  out.finalResidualWhite = out.finalWhiteness.pValue >= settings.alpha;
+  // A whiteness test that cannot be computed is "cannot tell", never a pass.
+  out.finalResidualWhite = judgeWhiteness(out.finalWhiteness, settings.alpha) == Whiteness::kWhite;
   judgeExplained(plant, settings, out);
   return out;
 }

@@ -53,8 +53,10 @@ int applyAcceptanceRule(std::vector<EffectScore*> scores, double alpha) {
   for (std::size_t i = 0; i < scores.size(); ++i) {
     EffectScore& c = *scores[i];
     if (!c.notApplicable.empty()) continue;
-    c.pAdjusted = std::min(1.0, c.pValue * applicable);  // Bonferroni
-    c.significant = c.pAdjusted < alpha;
+    // Bonferroni; a p, BIC or held-out error that is not finite never passes.
+    c.pAdjusted = std::isfinite(c.pValue) ? std::min(1.0, c.pValue * applicable) : 1.0;
+    c.significant = std::isfinite(c.pValue) && c.pAdjusted < alpha;
+    c.bicImproves = c.bicImproves && std::isfinite(c.deltaBic);
     c.accepted = c.significant && c.bicImproves && c.validationImproves && c.physical;
     if (c.accepted && (chosen < 0 || c.deltaBic < scores[static_cast<std::size_t>(chosen)]->deltaBic))
       chosen = static_cast<int>(i);

@@ -16,6 +16,8 @@ BenchData readBenchCsv(const std::string& path, std::size_t minRows) {
   spec.required = {"time_s", "position_m", "force_N"};
   spec.strictlyIncreasing = "time_s";
   spec.minRows = std::max<std::size_t>(minRows, 3);
+  spec.minStep = kMinSampleStep;
+  spec.ranges = {{"time_s", kRecordTimeRange, "a sample time"}, {"force_N", kForceRange, "a force"}};
   const CsvTable table = readCsv(path, spec);
   BenchData d;
   d.path = path;
@@ -44,6 +46,7 @@ KneeAngleStride readKneeAngleStride(const std::string& csvPath, int firstFrame, 
   CsvSpec spec;
   spec.required = {"frame", "knee_deg"};
   spec.strictlyIncreasing = "frame";
+  spec.ranges = {{"knee_deg", kJointAngleRange, "a knee angle"}};
   const CsvTable table = readCsv(csvPath, spec);
   const auto& frames = table.column("frame");
   const auto& knee = table.column("knee_deg");

@@ -82,7 +82,8 @@ CsvTable readCsvStream(std::istream& in, const std::string& path, const CsvSpec&
       out.push_back(static_cast<char>(c));
       if (out.size() > spec.maxLineBytes)
         throw InputError(path + ":" + std::to_string(linesRead + 1) + ": line longer than " + formatByteCount(spec.maxLineBytes) +
-                         " (the limit; is this a CSV file with line breaks?)");
+                         (out.find('\r') != std::string::npos ? " (the limit; the file has CR-only line ends: save it with LF or CRLF line ends)"
+                                                              : " (the limit; is this a CSV file with line breaks?)"));
     }
     if (!any) return false;
     ++linesRead;
@@ -93,6 +94,10 @@ CsvTable readCsvStream(std::istream& in, const std::string& path, const CsvSpec&
     first = false;
     if (out.find('\0') != std::string::npos) throw notText();
     if (!out.empty() && out.back() == '\r') out.pop_back();
+    // A classic Mac OS export ends lines with CR alone: the whole file reads as one line.
+    if (out.find('\r') != std::string::npos)
+      throw InputError(path + ":" + std::to_string(linesRead) +
+                       ": CR-only line ends (a carriage return inside a line): save the file with LF or CRLF line ends");
     return true;
   };
 
@@ -129,6 +134,10 @@ CsvTable readCsvStream(std::istream& in, const std::string& path, const CsvSpec&
     if (target[i] < 0) table.ignored.push_back(header[i]);
   }
   table.columns.assign(table.names.size(), {});
+  std::vector<const CsvSpec::ColumnRange*> rangeOf(header.size(), nullptr);
+  for (const auto& r : spec.ranges)
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (target[i] >= 0 && header[i] == r.column) rangeOf[i] = &r;
   // Reserve from an upper bound of the row count (a row takes at least 2 bytes a column),
   // never more than maxRows.
   const std::size_t estimate = std::min(spec.maxRows, sizeHint / (2 * header.size()) + 1);
@@ -164,12 +173,19 @@ CsvTable readCsvStream(std::istream& in, const std::string& path, const CsvSpec&
         throw InputError(path + ":" + std::to_string(lineNo) + ": " + header[i] +
                          ": expected a finite number (got '" + s + "')");
       }
+      if (rangeOf[i])
+        if (const std::string bad = checkPlausible(v, rangeOf[i]->range, rangeOf[i]->what); !bad.empty())
+          throw InputError(path + ":" + std::to_string(lineNo) + ": " + header[i] + ": " + bad + " (got " + s + ")");
       auto& col = table.columns[static_cast<std::size_t>(target[i])];
       if (header[i] == spec.strictlyIncreasing && !col.empty() && !(v > col.back())) {
         throw InputError(path + ":" + std::to_string(lineNo) + ": " + header[i] +
                          ": must be strictly increasing (got " + s + " after " +
                          formatNumber(col.back()) + ")");
       }
+      if (header[i] == spec.strictlyIncreasing && !col.empty() && v - col.back() < spec.minStep)
+        throw InputError(path + ":" + std::to_string(lineNo) + ": " + header[i] + ": expected steps of at least " +
+                         formatNumber(spec.minStep) + " (got " + s + " after " + formatNumber(col.back()) +
+                         ", a step of " + formatNumber(v - col.back()) + ")");
       col.push_back(v);
     }
   }

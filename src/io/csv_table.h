@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/plausible_ranges.h"
+
 namespace swingsim {
 
 /// Column-major numeric table with named columns.
@@ -27,6 +29,16 @@ struct CsvSpec {
   std::vector<std::string> required;  ///< columns that must be present
   std::vector<std::string> optional;  ///< columns read if present
   std::string strictlyIncreasing;     ///< column that must strictly increase ("" = none)
+  /// Least step of the strictlyIncreasing column, in its unit (0: any step > 0).
+  double minStep = 0;
+  /// A column's plausible range (core/plausible_ranges.h), checked on every value read:
+  /// `what` names the quantity in the message ("a force").
+  struct ColumnRange {
+    std::string column;
+    PlausibleRange range;
+    std::string what;
+  };
+  std::vector<ColumnRange> ranges;
   std::size_t minRows = 1;
   /// Refuse files with more rows than this: 2,000,000 rows of 3 columns is 48 MB. Files
   /// are read line by line, so a larger file is refused after maxRows rows, at about that

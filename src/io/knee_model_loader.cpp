@@ -91,9 +91,9 @@ void serialize(A& a, MauchCoefficientRow& r, RowContext context) {
     a.require(!seen[index], "phase", "phase appears twice", [&] { return std::to_string(r.phase); });
     seen[index] = true;
   }
-  a.number("f_N", r.coefficients.f);
-  a.number("k_N_per_m", r.coefficients.k);
-  a.number("c_Ns_per_m", r.coefficients.c);
+  a.number("f_N", r.coefficients.f, mustBePlausible(kForceRange, "a force"));
+  a.number("k_N_per_m", r.coefficients.k, mustBePlausible(kCylinderStiffnessRange, "a stiffness"));
+  a.number("c_Ns_per_m", r.coefficients.c, mustBePlausible(kCylinderDampingRange, "a damping"));
 }
 
 template <class A>
@@ -118,7 +118,7 @@ void serialize(A& a, MauchDialSetting& s, SettingContext context) {
 
 template <class A>
 void serialize(A& a, MauchAddedEffects& e, CoulombOf) {
-  a.number("force_N", e.coulombForce);
+  a.number("force_N", e.coulombForce, [](double v) { return v >= 0 ? checkPlausible(v, kForceRange, "a force") : "must not be negative (seal friction opposes motion)"; });
   a.optionalNumber("width_m_per_s", e.coulombWidth, mustBePositive);
 }
 template <class A>

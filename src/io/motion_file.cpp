@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "core/input_error.h"
+#include "core/plausible_ranges.h"
 #include "core/output_files.h"
 #include "core/units.h"
 #include "io/swing_record_csv.h"
@@ -184,6 +185,12 @@ MotionTable parseMotionTable(const std::string& text, const std::string& path) {
         throw InputError(at(lines.number) + table.labels[c] + ": expected a finite number (got '" + s + "')");
       if (c == 0 && !time.empty() && !(v > time.back()))
         throw InputError(at(lines.number) + "time: must strictly increase (got " + s + " after " + formatNumber(time.back()) + ")");
+      if (c == 0 && !time.empty() && v - time.back() < kMinSampleStep)
+        throw InputError(at(lines.number) + "time: expected steps of at least " + formatNumber(kMinSampleStep) + " s (got " + s +
+                         " after " + formatNumber(time.back()) + ")");
+      if (c == 0)
+        if (const std::string bad = checkPlausible(v, kRecordTimeRange, "a sample time"); !bad.empty())
+          throw InputError(at(lines.number) + table.labels[c] + ": " + bad + " (got " + s + ")");
       table.columns[c].push_back(v);
     }
     table.rowLines.push_back(lines.number);
@@ -299,8 +306,24 @@ std::vector<double> calcKneeMoment(const MotionTable& id, const MotionColumns& c
 
 }  // namespace
 
+namespace {
+
+// Every value of `label` within `range` (given in degrees for an angle column of a file in
+// radians: converted before the check); throws InputError with the row's line.
+void checkColumnPlausible(const MotionTable& table, const std::string& label, const PlausibleRange& range,
+                          const std::string& what, double toRangeUnit) {
+  const std::vector<double>& values = table.column(label);
+  for (std::size_t r = 0; r < values.size(); ++r)
+    if (const std::string bad = checkPlausible(values[r] * toRangeUnit, range, what); !bad.empty())
+      throw InputError(table.path + ":" + std::to_string(r < table.rowLines.size() ? table.rowLines[r] : 0) + ": " + label +
+                       ": " + bad + " (got " + formatNumber(values[r]) + (toRangeUnit == 1.0 ? "" : " rad") + ")");
+}
+
+}  // namespace
+
 SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns, const MotionTable* inverseDynamics) {
   const std::vector<double>& time = table.columns.front();
+
   if (time.size() < kMinSwingSamples)
     throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) + " rows for a swing (got " +
                      std::to_string(time.size()) + ")");
@@ -342,6 +365,11 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
 
   const std::vector<double> knee = interpolate(time, kneeValues, at);
   checkKneeUnit(table, columns.knee, knee);
+  // After the unit check, whose message is the better one for degrees read as radians.
+  const double toDeg = table.inDegrees ? 1.0 : kRadToDeg;
+  checkColumnPlausible(table, columns.hip, kJointAngleRange, "a hip angle", toDeg);
+  checkColumnPlausible(table, columns.knee, kJointAngleRange, "a knee angle", toDeg);
+  if (!columns.hipMoment.empty()) checkColumnPlausible(table, columns.hipMoment, kJointMomentRange, "a hip moment", 1.0);
   const std::vector<double> hip = interpolate(time, hipValues, at);
   const double toRad = table.inDegrees ? kDegToRad : 1.0;
   SwingRecord r;

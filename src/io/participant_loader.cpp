@@ -54,23 +54,23 @@ void serialize(A& a, Participant& p, SegmentsOf) {
 
 template <class A>
 void serialize(A& a, InitialConditions& c) {
-  a.optionalAngle("hip_flexion_deg", c.hipFlexion);
-  a.optionalAngle("knee_flexion_deg", c.kneeFlexion);
-  a.optionalAngle("hip_flexion_rate_deg_s", c.hipFlexionRate);
-  a.optionalAngle("knee_flexion_rate_deg_s", c.kneeFlexionRate);
+  a.optionalAngle("hip_flexion_deg", c.hipFlexion, mustBePlausible(kJointAngleRange, "a hip angle"));
+  a.optionalAngle("knee_flexion_deg", c.kneeFlexion, mustBePlausible(kInitialKneeRange, "an initial knee angle"));
+  a.optionalAngle("hip_flexion_rate_deg_s", c.hipFlexionRate, mustBePlausible(kJointRateRange, "a hip rate"));
+  a.optionalAngle("knee_flexion_rate_deg_s", c.kneeFlexionRate, mustBePlausible(kJointRateRange, "a knee rate"));
 }
 
 template <class A>
 void serialize(A& a, HipRange& r) {
-  a.optionalAngle("min_flexion_deg", r.minFlexion);
-  a.optionalAngle("max_flexion_deg", r.maxFlexion);
+  a.optionalAngle("min_flexion_deg", r.minFlexion, mustBePlausible(kJointAngleRange, "a hip angle"));
+  a.optionalAngle("max_flexion_deg", r.maxFlexion, mustBePlausible(kJointAngleRange, "a hip angle"));
   a.require(r.maxFlexion > r.minFlexion, "max_flexion_deg", "must exceed min_flexion_deg",
             [&] { return formatNumber(r.maxFlexion * kRadToDeg); });
 }
 
 template <class A>
 void serialize(A& a, SwingEndRule& e) {
-  a.optionalAngle("thigh_target_flexion_deg", e.thighTargetFlexion);
+  a.optionalAngle("thigh_target_flexion_deg", e.thighTargetFlexion, mustBePlausible(kJointAngleRange, "a hip angle"));
   a.optionalAngle("zone_of_stability_deg", e.zoneOfStability, mustBePositive);
   // A swing lasts well under a second; a limit of hours would make a stuck run look hung.
   a.optionalNumber("time_limit_s", e.timeLimit,
@@ -96,6 +96,12 @@ void serialize(A& a, HipMomentProfile& h) {
   if (h.kind == K::kTable) {
     a.numbers("time_s", h.times);
     a.numbers("moment_Nm", h.moments);
+    for (double m : h.moments)
+      a.require(checkPlausible(m, kJointMomentRange, "a hip moment").empty(), "moment_Nm",
+                checkPlausible(m, kJointMomentRange, "a hip moment"), [m] { return formatNumber(m); });
+    for (double t : h.times)
+      a.require(checkPlausible(t, kRecordTimeRange, "a sample time").empty(), "time_s",
+                checkPlausible(t, kRecordTimeRange, "a sample time"), [t] { return formatNumber(t); });
     a.require(h.times.size() >= 2, "time_s", "expected at least 2 times",
               [&] { return std::to_string(h.times.size()) + " values"; });
     a.require(h.moments.size() == h.times.size(), "moment_Nm",
@@ -105,12 +111,13 @@ void serialize(A& a, HipMomentProfile& h) {
       a.require(h.times[i] > h.times[i - 1], "time_s", "times must strictly increase",
                 [&] { return formatNumber(h.times[i]) + " after " + formatNumber(h.times[i - 1]); });
   } else {
-    a.number("flexion_amplitude_Nm", h.flexionAmplitude, mustBeNonNegative);
-    a.number("flexion_duration_s", h.flexionDuration, mustBePositive);
-    a.number("extension_amplitude_Nm", h.extensionAmplitude, mustBeNonNegative);
-    a.number("extension_duration_s", h.extensionDuration, mustBePositive);
+    const auto amplitude = [](double v) { return v >= 0 ? checkPlausible(v, kJointMomentRange, "a hip moment") : "must not be negative"; };
+    a.number("flexion_amplitude_Nm", h.flexionAmplitude, amplitude);
+    a.number("flexion_duration_s", h.flexionDuration, mustBePlausible(kPhaseDurationRange, "a phase duration"));
+    a.number("extension_amplitude_Nm", h.extensionAmplitude, amplitude);
+    a.number("extension_duration_s", h.extensionDuration, mustBePlausible(kPhaseDurationRange, "a phase duration"));
   }
-  a.optionalNumber("time_scale", h.timeScale, mustBePositive);
+  a.optionalNumber("time_scale", h.timeScale, mustBePlausible(kTimeScaleRange, "a time scale"));
 }
 
 /// The map form of thigh_kinematics: {file: F, <motion_columns keys>}.
@@ -226,7 +233,9 @@ Participant readParticipant(YamlMap& yaml) {
 
 // The comment lines (and blank lines) a file starts with: its provenance, kept on rewrite.
 std::string leadingComments(const std::string& text) {
-  std::istringstream in(text);
+  // A UTF-8 byte-order mark (the reader accepts it) would hide the first comment line.
+  const bool bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+  std::istringstream in(bom ? text.substr(3) : text);
   std::string line, out;
   while (std::getline(in, line)) {
     const auto first = line.find_first_not_of(" \t\r");

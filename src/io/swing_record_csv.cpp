@@ -15,6 +15,12 @@ SwingRecord readSwingRecord(const std::string& path) {
   spec.optional = {"hip_moment_Nm", "knee_moment_Nm"};
   spec.strictlyIncreasing = "time_s";
   spec.minRows = 10;
+  spec.minStep = kMinSampleStep;
+  spec.ranges = {{"time_s", kRecordTimeRange, "a sample time"},
+                 {"hip_flexion_deg", kJointAngleRange, "a hip angle"},
+                 {"knee_flexion_deg", kJointAngleRange, "a knee angle"},
+                 {"hip_moment_Nm", kJointMomentRange, "a hip moment"},
+                 {"knee_moment_Nm", kJointMomentRange, "a knee moment"}};
   const CsvTable t = readCsv(path, spec);
   SwingRecord r;
   r.path = path;

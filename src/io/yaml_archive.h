@@ -18,12 +18,19 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "core/plausible_ranges.h"
 #include "core/units.h"
 #include "io/yaml_reader.h"
 
 namespace swingsim {
 
 using ValueCheck = std::function<std::string(double)>;
+
+/// The check of a value against its plausible range (core/plausible_ranges.h); `what` names
+/// the quantity in the message ("an initial knee angle").
+inline ValueCheck mustBePlausible(const PlausibleRange& range, std::string what) {
+  return [range, what = std::move(what)](double v) { return checkPlausible(v, range, what); };
+}
 
 /// The shortest decimal degrees that read back (times kDegToRad) to exactly `radians`.
 std::string formatDegrees(double radians);

@@ -40,7 +40,13 @@ constexpr long kMaxYamlSourceNodes = 100000;
 class NodeCounter final : public YAML::EventHandler {
  public:
   explicit NodeCounter(const std::string& path) : path_(path) {}
-  void OnDocumentStart(const YAML::Mark&) override {}
+  // yaml-cpp's Load reads the first document only: a second one would be silently ignored.
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ > 1)
+      throw InputError(path_ + ":" + std::to_string(mark.line + 1) +
+                       ": a second YAML document starts here (after a '---' line); a participant, model or study file "
+                       "holds one document: merge the two or split them into two files");
+  }
   void OnDocumentEnd() override {}
   void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { count(mark); }
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { count(mark); }
@@ -66,6 +72,7 @@ class NodeCounter final : public YAML::EventHandler {
   }
   const std::string& path_;
   long count_ = 0;
+  int documents_ = 0;
 };
 
 // yaml-cpp keeps both entries of a duplicated key; a user who writes a key twice has

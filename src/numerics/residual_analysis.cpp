@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -58,7 +59,9 @@ double calcChiSquaredQuantile(double p, double dof) {
 }
 
 double calcChiSquaredSurvival(double x, double dof) {
+  if (std::isnan(x) || !(dof > 0)) return std::numeric_limits<double>::quiet_NaN();
   if (!(x > 0)) return 1.0;
+  if (std::isinf(x)) return 0.0;
   // Q(dof/2, x/2), the regularised upper incomplete gamma function (Boost.Math).
   return boost::math::gamma_q(0.5 * dof, 0.5 * x);
 }
@@ -81,21 +84,65 @@ int calcRecordsForPower(double lambdaPerRecord, double dof, double alpha, double
   return hi;
 }
 
+int calcWhitenessLags(const ResidualSegments& residuals, int requested) {
+  std::size_t shortest = 0;
+  for (const auto& s : residuals)
+    if (!s.empty() && (shortest == 0 || s.size() < shortest)) shortest = s.size();
+  const auto limit = static_cast<int>(std::min<std::size_t>(shortest / kWhitenessLagDivisor, 1000000));
+  return std::max(0, std::min(requested, limit));
+}
+
 WhitenessTest calcWhitenessTest(const ResidualSegments& residuals, int lags) {
   WhitenessTest t;
-  t.lags = lags;
-  std::size_t n = 0;
-  for (const auto& s : residuals) n += s.size();
-  const auto acf = calcAutocorrelation(residuals, lags);
+  t.requestedLags = lags;
+  t.lags = calcWhitenessLags(residuals, lags);
+  std::size_t n = 0, shortest = 0;
+  for (const auto& s : residuals) {
+    n += s.size();
+    if (!s.empty() && (shortest == 0 || s.size() < shortest)) shortest = s.size();
+    for (double v : s)
+      if (!std::isfinite(v)) {
+        t.note = "the residual holds a non-finite value";
+        return t;
+      }
+  }
+  if (t.lags < kMinWhitenessLags) {
+    t.note = "the shortest record has " + std::to_string(shortest) + " samples, too few for " +
+             std::to_string(kMinWhitenessLags) + " lags (at most 1 lag per " + std::to_string(kWhitenessLagDivisor) +
+             " samples)";
+    return t;
+  }
+  const auto acf = calcAutocorrelation(residuals, t.lags);
   const double N = static_cast<double>(n), band = kZ99 / std::sqrt(N);
-  for (int k = 1; k <= lags; ++k) {
+  for (int k = 1; k <= t.lags; ++k) {
     const double r = acf[static_cast<std::size_t>(k)];
     t.q += r * r / (N - k);
     if (std::fabs(r) > band) ++t.lagsOutsideBand;
   }
   t.q *= N * (N + 2);
-  t.pValue = calcChiSquaredSurvival(t.q, lags);
+  t.pValue = calcChiSquaredSurvival(t.q, t.lags);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& s : residuals)
+    for (double v : s) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  if (!(hi > lo)) {
+    t.note = "the residual is constant";
+  } else if (!std::isfinite(t.q) || !std::isfinite(t.pValue)) {
+    t.note = "the statistic is not finite (Q = " + std::to_string(t.q) + ")";
+  } else {
+    t.computed = true;
+    if (t.lags < lags)
+      t.note = std::to_string(t.lags) + " of the " + std::to_string(lags) + " lags asked for: at most 1 lag per " +
+               std::to_string(kWhitenessLagDivisor) + " samples of the shortest record (" + std::to_string(shortest) + ")";
+  }
   return t;
+}
+
+Whiteness judgeWhiteness(const WhitenessTest& test, double alpha) {
+  if (!test.computed) return Whiteness::kCannotTell;
+  return test.pValue >= alpha ? Whiteness::kWhite : Whiteness::kNotWhite;
 }
 
 BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std::vector<double>& residual, int bins,

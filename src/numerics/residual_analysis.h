@@ -23,15 +23,37 @@ double calcEffectiveSampleSize(const ResidualSegments& residuals);
 
 /// Ljung-Box portmanteau test of whiteness over lags 1..lags: Q = n (n + 2) sum rho_k^2 /
 /// (n - k) and its p-value under chi^2(lags).
+///
+/// The lags scale with the record: at most a fifth of the shortest segment
+/// (kWhitenessLagDivisor), so every record contributes pairs at every lag and the sum stays
+/// a chi^2 (Ljung & Box 1978 assume lags well below n; more lags than samples give Q < 0 or
+/// NaN). A short swing keeps a test with fewer lags. A test that cannot be computed (fewer
+/// than kMinWhitenessLags usable lags, a non-finite or constant residual, a non-finite Q or
+/// p) has `computed` false and says why in `note`: it is "cannot tell", never a pass.
 struct WhitenessTest {
   double q = 0;
   double pValue = 1;
-  int lags = 0;
+  int lags = 0;             ///< lags used (<= requestedLags)
+  int requestedLags = 0;    ///< lags the study asked for
   int lagsOutsideBand = 0;  ///< lags with |rho| above the 99 % band 2.576 / sqrt(n)
+  bool computed = false;    ///< q and pValue are finite and mean something
+  std::string note;         ///< why it was not computed, or that the lags were reduced
 };
+/// The lags a record of segments supports: at most shortest segment / kWhitenessLagDivisor.
+constexpr int kWhitenessLagDivisor = 5;
+/// Fewest usable lags for a whiteness test (a record of under 10 samples has none).
+constexpr int kMinWhitenessLags = 2;
+/// min(requested, shortest non-empty segment / kWhitenessLagDivisor); 0 with no sample.
+int calcWhitenessLags(const ResidualSegments& residuals, int requested);
 WhitenessTest calcWhitenessTest(const ResidualSegments& residuals, int lags);
 
-/// Upper tail probability of chi^2 with `dof` degrees of freedom at `x` (>= 0).
+/// White, not white, or cannot tell (a test that was not computed).
+enum class Whiteness { kWhite, kNotWhite, kCannotTell };
+/// The test's outcome at level `alpha`: kWhite only for a computed test with p >= alpha.
+Whiteness judgeWhiteness(const WhitenessTest& test, double alpha);
+
+/// Upper tail probability of chi^2 with `dof` degrees of freedom at `x` (1 for x <= 0; NaN
+/// for a NaN x or dof <= 0, so that a statistic that could not be computed never passes).
 double calcChiSquaredSurvival(double x, double dof);
 /// The `p` quantile of the standard normal distribution (0 < p < 1).
 double calcNormalQuantile(double p);

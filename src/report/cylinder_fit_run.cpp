@@ -1,7 +1,9 @@
 #include "report/cylinder_fit_run.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "io/bench_csv.h"
@@ -9,6 +11,23 @@
 #include "io/yaml_reader.h"
 
 namespace swingsim {
+
+namespace {
+
+// A fitted constant or an error metric that is not finite is never reported as a result:
+// the fit failed on these data (the loaders' plausible ranges catch absurd inputs first).
+void checkFitFinite(const ModelEvaluation& r) {
+  for (const auto& c : r.fit.constants)
+    if (!std::isfinite(c.value))
+      throw RunError(r.name + ": the fit gave a non-finite " + c.name + " (" + formatNumber(c.value) +
+                     "): the training files do not determine the model");
+  for (const auto& f : r.files)
+    if (!std::isfinite(f.metrics.rmse) || !std::isfinite(f.metrics.maxError))
+      throw RunError(r.name + ": " + (f.data ? f.data->path : std::string("a bench file")) +
+                     ": the fitted model's force error is not finite (RMSE " + formatNumber(f.metrics.rmse) + " N)");
+}
+
+}  // namespace
 
 CylinderFitRun runCylinderFits(const std::vector<std::string>& modelPaths,
                               const std::vector<std::string>& trainPaths,
@@ -37,7 +56,10 @@ CylinderFitRun runCylinderFits(const std::vector<std::string>& modelPaths,
     e.fit = fitCylinder(models[i], run.train, options);
     run.models.push_back(std::move(e));
   }
-  for (auto& r : run.models) r.files = evaluateFiles(MauchCylinder(r.fit.params), run.train, run.validate);
+  for (auto& r : run.models) {
+    r.files = evaluateFiles(MauchCylinder(r.fit.params), run.train, run.validate);
+    checkFitFinite(r);
+  }
   return run;
 }
 

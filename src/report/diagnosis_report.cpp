@@ -315,9 +315,13 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
                d, b.overall.maxError, d + 1, b.overall.rmse, 100 * b.overall.r2, d, a.overall.maxError, d + 1,
                a.overall.rmse, 100 * a.overall.r2);
   }
-  out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g, %d lags outside the 99 %% band: ",
-             dg.finalWhiteness.q, dg.finalWhiteness.lags, dg.finalWhiteness.pValue, dg.finalWhiteness.lagsOutsideBand);
-  out += dg.finalResidualWhite ? "consistent with white noise\n" : "NOT white\n";
+  const WhitenessTest& wt = dg.finalWhiteness;
+  if (wt.computed)
+    out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g, %d lags outside the 99 %% band: %s\n",
+               wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand, dg.finalResidualWhite ? "consistent with white noise" : "NOT white");
+  else
+    out += "\nfinal training residual: Ljung-Box test cannot tell (" + wt.note + "): not counted as white\n";
+  if (wt.computed && !wt.note.empty()) out += "  (" + wt.note + ")\n";
   out += "measurement noise (" + dg.noiseSource + "):";
   for (std::size_t i = 0; i < before.records.size() && i < dg.recordNoise.size(); ++i)
     out += fmt(" %s %.*f %s", before.records[i].stem.c_str(), d + 1, dg.recordNoise[i], u.c_str());
@@ -353,6 +357,10 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"final", summaryJson(after)},
           {"final_parameters", parametersJson(dg.finalParameters)},
           {"residual_white", dg.finalResidualWhite},
+          {"residual_whiteness", dg.finalResidualWhite         ? "white"
+                                 : dg.finalWhiteness.computed ? "not white"
+                                                              : "cannot tell"},
+          {"residual_whiteness_note", dg.finalWhiteness.note},
           {"noise", noiseJson(dg, before)},
           {"explained", dg.explained},
           {"verdict", dg.verdict},

@@ -99,7 +99,7 @@ void serialize(A& a, CylinderBenchStudy& s) {
   a.optionalInteger("hold_samples", p.holdSamples);
   a.require(p.holdSamples >= 0 && p.holdSamples <= 1000, "hold_samples", "must be from 0 to 1000",
             [&] { return std::to_string(p.holdSamples); });
-  a.optionalNumber("noise_N", s.noise, mustBeNonNegative);
+  a.optionalNumber("noise_N", s.noise, mustBePlausible(kForceNoiseRange, "a force noise"));
   double seed = static_cast<double>(s.seed);
   a.optionalNumber("seed", seed, [](double v) {
     return v >= 0 && v == std::floor(v) && v < 9e15 ? "" : "must be a whole number >= 0";

@@ -36,15 +36,15 @@ template <class A>
 void serialize(A& a, SwingHiddenEffects& h, AssistOf) { a.number("stiffness_Nm_per_rad", h.assistStiffness, mustBeNonNegative); }
 template <class A>
 void serialize(A& a, SwingHiddenEffects& h, ToeOffOf) {
-  a.angle("hip_rate_deg_s", h.toeOffHipRate);
-  a.angle("knee_rate_deg_s", h.toeOffKneeRate);
+  a.angle("hip_rate_deg_s", h.toeOffHipRate, mustBePlausible(kJointRateRange, "a hip rate"));
+  a.angle("knee_rate_deg_s", h.toeOffKneeRate, mustBePlausible(kJointRateRange, "a knee rate"));
 }
 template <class A>
-void serialize(A& a, SwingHiddenEffects& h, HipScaleOf) { a.number("scale", h.hipScale, mustBePositive); }
+void serialize(A& a, SwingHiddenEffects& h, HipScaleOf) { a.number("scale", h.hipScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
 template <class A>
-void serialize(A& a, SwingHiddenEffects& h, ShankScaleOf) { a.number("scale", h.shankScale, mustBePositive); }
+void serialize(A& a, SwingHiddenEffects& h, ShankScaleOf) { a.number("scale", h.shankScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
 template <class A>
-void serialize(A& a, SwingHiddenEffects& h, BelowKneeScaleOf) { a.number("scale", h.belowKneeScale, mustBePositive); }
+void serialize(A& a, SwingHiddenEffects& h, BelowKneeScaleOf) { a.number("scale", h.belowKneeScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
 
 template <class A>
 void serialize(A& a, SwingHiddenEffects& h) {
@@ -60,8 +60,8 @@ void serialize(A& a, SwingHiddenEffects& h) {
 template <class A>
 void serialize(A& a, SwingCondition& c) {
   a.text("name", c.name);
-  a.optionalNumber("time_scale", c.timeScale, mustBePositive);
-  a.optionalNumber("amplitude_scale", c.amplitudeScale, mustBePositive);
+  a.optionalNumber("time_scale", c.timeScale, mustBePlausible(kTimeScaleRange, "a time scale"));
+  a.optionalNumber("amplitude_scale", c.amplitudeScale, mustBePlausible(kAmplitudeScaleRange, "an amplitude scale"));
 }
 
 template <class A>
@@ -75,7 +75,7 @@ void serialize(A& a, SwingKinematicsStudy& s) {
   if constexpr (A::kReading) s.base.knee = loadKneeModel(s.modelPath);
   a.optionalText("name", s.name);
   a.optionalText("description", s.description);
-  a.number("noise_deg", s.noiseDeg, mustBeNonNegative);
+  a.number("noise_deg", s.noiseDeg, mustBePlausible(kAngleNoiseRange, "an angle noise"));
   double seed = static_cast<double>(s.seed);
   a.optionalNumber("seed", seed, [](double v) {
     return v >= 0 && v < 9e15 && v == std::floor(v) ? "" : "must be a whole number >= 0";

@@ -133,7 +133,8 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
     const Participant& p = study.participants[job.participant];
     ParticipantSweep& ps = results.participants[job.participant];
     SweepPoint& pt = job.withMass ? ps.massPoints[job.index] : ps.points[job.index];
-    const SwingSetup setup = makeSwingSetup(p, knees[job.participant], pt.lowering, pt.added);
+    SwingSetup setup = makeSwingSetup(p, knees[job.participant], pt.lowering, pt.added);
+    setup.participant.kneeModelPath = studyKneeModelPath(study, p);  // the file actually used, for messages
     SwingOptions options = study.swing;
     options.recordTrajectory = !job.withMass;
     try {

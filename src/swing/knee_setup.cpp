@@ -25,6 +25,9 @@ SwingSetup makeSwingSetup(Participant participant, std::shared_ptr<const KneeLaw
 
 SwingSetup makeSwingSetup(Participant participant, const KneeModel& model, double lowering, const AddedMass& added) {
   auto knee = std::make_shared<const KneeLawSum>(makeKneeLaw(participant, model));
+  // The knee file actually used (an override such as `simulate --knee` replaces the
+  // participant's): a late failure names it, not the participant's knee_model.
+  if (!model.path.empty()) participant.kneeModelPath = model.path;
   return makeSwingSetup(std::move(participant), std::move(knee), lowering, added);
 }
 

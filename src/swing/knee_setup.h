@@ -20,7 +20,8 @@ KneeLawSum makeKneeLaw(const Participant& participant, const KneeModel& model,
 /// serve many swings), the knee-axis lowering (m) and the added shank mass.
 SwingSetup makeSwingSetup(Participant participant, std::shared_ptr<const KneeLaw> knee, double lowering = 0,
                           const AddedMass& added = {});
-/// As above, with the participant's knee law built from `model` (makeKneeLaw).
+/// As above, with the participant's knee law built from `model` (makeKneeLaw); the setup's
+/// participant.kneeModelPath becomes model.path, the file actually used.
 SwingSetup makeSwingSetup(Participant participant, const KneeModel& model, double lowering = 0,
                           const AddedMass& added = {});
 

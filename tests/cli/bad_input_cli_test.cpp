@@ -87,6 +87,39 @@ TEST(BadInputCli, DampingTableOneMillionTimesTooLargeStopsWithinSecondsSayingWha
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// The same too-stiff model given with --knee: the message names that file, not the
+// participant's knee_model (issue 29: the file actually used).
+TEST(BadInputCli, TooStiffKneeGivenWithKneeOptionIsTheFileNamed) {
+  const fs::path dir = freshDir("stiffknee");
+  std::string model = slurp(kRoot + "/models/damping-table-default.yaml");
+  model = std::regex_replace(model, std::regex("moment_Nm: +\\[[^\\]]*\\]"), "moment_Nm: [1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6]");
+  std::ofstream(dir / "stiff.yaml") << model;
+  const auto r = runSwingsim("simulate participants/p1.yaml --knee " + (dir / "stiff.yaml").string() + " --out " +
+                             (dir / "out").string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("check the knee model " + (dir / "stiff.yaml").string()));
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("damping-table-default.yaml")));
+}
+
+// A lab export's missing-data marker in a bench file stops `fit` at load (rc 1), naming the
+// file, line and column, instead of a fit with 1e35 coefficients and rc 0.
+TEST(BadInputCli, FitOnABenchFileWithAMissingDataMarkerExitsOneNamingTheLine) {
+  const fs::path dir = freshDir("marker");
+  std::string bench = slurp(kRoot + "/studies/data/mauch2014/normal.csv");
+  const auto third = bench.find('\n', bench.find('\n', bench.find('\n') + 1) + 1);  // end of line 3
+  const auto comma = bench.rfind(',', third);
+  bench.replace(comma + 1, third - comma - 1, "9.9e37");
+  std::ofstream(dir / "normal.csv") << bench;
+  std::ofstream(dir / "study.yaml") << "kind: cylinder-fit\nname: marker\nmodels: [" << kRoot
+                                    << "/models/mauch-2phase.yaml]\ntrain: [normal.csv]\nvalidate: [" << kRoot
+                                    << "/studies/data/mauch2014/slow.csv]\n";
+  const auto r = runSwingsim("fit " + (dir / "study.yaml").string() + " --json " + (dir / "fit.json").string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr((dir / "normal.csv").string() + ":3: force_N: expected a force in [-100000, 100000] N"));
+  EXPECT_THAT(r.output, HasSubstr("missing-data marker"));
+  EXPECT_FALSE(fs::exists(dir / "fit.json"));
+}
+
 TEST(BadInputCli, AccuracyOf1e18WithRungeKutta3IsAUsageErrorNotAnHourLongRun) {
   const auto r = runSwingsim("simulate participants/p1.yaml --integrator runge-kutta-3 --accuracy 1e-18 --out /nonexistent/x");
   EXPECT_EQ(r.code, 2) << r.output;

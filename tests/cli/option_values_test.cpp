@@ -22,6 +22,8 @@ TEST(OptionValues, BadValuesAreUsageErrorsNamingTheOption) {
       {"simulate participants/p1.yaml --lowering abc", "--lowering: expected a number (got 'abc')"},
       {"simulate participants/p1.yaml --lowering inf", "--lowering: expected a number (got 'inf')"},
       {"simulate participants/p1.yaml --hip-rate-deg-s 1,5", "--hip-rate-deg-s: expected a number (got '1,5')"},
+      {"simulate participants/p1.yaml --knee-rate-deg-s 1e9",
+       "--knee-rate-deg-s: expected a knee rate in [-3000, 3000] deg/s (a swinging knee peaks near 500 deg/s)"},
       {"simulate participants/p1.yaml --add-mass 0.5", "--add-mass: expected KG@METRES below the knee, e.g. 0.5@0.20 (got '0.5')"},
       {"simulate participants/p1.yaml --add-mass -1@0.2", "--add-mass: expected KG@METRES"},
       {"sweep studies/burkett2004.yaml --jobs -1", "--jobs: expected 0 (all cores) or a positive whole number (got '-1')"},

@@ -121,5 +121,58 @@ TEST(DiagnosisEngine, ABaseParameterFarFromItsBoundKeepsTheWaldInterval) {
   EXPECT_NEAR(p.value - p.lower, calcNormalQuantile(0.975) * se, 1e-12);
 }
 
+// A plant whose fitted model leaves pure white noise (sigma 1) on a training record of
+// `samples` samples and a held-out error at the noise: the data are explained exactly when
+// the whiteness test can say the residual is white.
+class WhiteNoisePlant final : public DiagnosisPlant {
+ public:
+  explicit WhiteNoisePlant(int samples) {
+    std::mt19937_64 rng(21);
+    std::normal_distribution<double> noise(0.0, 1.0);
+    for (int i = 0; i < samples; ++i) residual_.push_back(noise(rng));
+  }
+  PlantKind kind() const override { return PlantKind::kCylinder; }
+  PlantModelPtr baseModel() const override { return std::make_shared<LineModel>(); }
+  PlantFit fit(const PlantModel&) const override {
+    PlantFit f;
+    f.model = baseModel();
+    f.likelihoodResidual = {residual_};
+    f.trainResidual = {residual_};
+    f.trainPhase = {std::vector<int>(residual_.size(), 0)};
+    for (double r : residual_) f.rss += r * r;
+    f.samples = residual_.size();
+    f.trainRmse = std::sqrt(f.rss / static_cast<double>(f.samples));
+    f.validationRmse = {1.0};
+    return f;
+  }
+  std::string checkApplicable(const PlantModel&, EffectId) const override { return "not in this test"; }
+  PlantModelPtr addEffect(const PlantModel&, EffectId, double) const override { return baseModel(); }
+  PlantModelPtr combine(const PlantModel&, const PlantModel&, EffectId) const override { return baseModel(); }
+  std::vector<double> effectValues(const PlantModel&, EffectId) const override { return {}; }
+  bool checkPhysical(const PlantModel&, EffectId, std::string&) const override { return true; }
+  std::vector<std::string> phaseNames(const PlantModel&) const override { return {"all"}; }
+  Comparison compare(const PlantModel&) const override { return {}; }
+  std::vector<std::string> validationStems() const override { return {"held"}; }
+  std::vector<NoiseEstimate> estimateRecordNoise() const override { return {{1.0, 100}, {1.0, 100}}; }
+
+ private:
+  std::vector<double> residual_;
+};
+
+// White noise on 200 samples is explained; on 8 samples the whiteness test cannot be
+// computed (too few samples for 2 lags), which is "cannot tell": never explained.
+TEST(DiagnosisEngine, AWhitenessTestThatCannotBeComputedNeverExplainsTheData) {
+  const Diagnosis enough = runDiagnosis(WhiteNoisePlant(200), EffectSelectionSettings{});
+  EXPECT_TRUE(enough.finalWhiteness.computed);
+  EXPECT_TRUE(enough.explained) << enough.verdict;
+  const Diagnosis tooShort = runDiagnosis(WhiteNoisePlant(8), EffectSelectionSettings{});
+  EXPECT_FALSE(tooShort.finalWhiteness.computed);
+  EXPECT_FALSE(tooShort.finalResidualWhite);
+  EXPECT_FALSE(tooShort.explained);
+  EXPECT_EQ(tooShort.verdict.rfind("NOT explained", 0), 0u) << tooShort.verdict;
+  EXPECT_NE(tooShort.verdict.find("whether the final residual is white cannot be told"), std::string::npos)
+      << tooShort.verdict;
+}
+
 }  // namespace
 }  // namespace swingsim

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,26 @@ TEST(EffectSelection, AmbiguityGroupHoldsTheAcceptedCandidatesTheChosenOneAddsNo
     return j == 1 ? std::optional<double>(0.4) : std::nullopt;
   });
   EXPECT_EQ(edge, (std::vector<std::string>{"a", "b"}));
+}
+
+// A candidate whose likelihood ratio turned into NaN (a residual with a NaN) has a NaN p and
+// BIC: it is never significant nor accepted, and the finite one is chosen.
+TEST(EffectSelection, ANanStatisticNeverPassesTheAcceptanceRule) {
+  std::vector<EffectScore> s(2);
+  for (auto& c : s) {
+    c.bicImproves = c.validationImproves = c.physical = true;
+    c.deltaBic = -50;
+    c.pValue = 1e-12;
+  }
+  const LrTest nan = calcLrTest(10.0, std::nan(""), {{0.1, std::nan(""), 0.3}}, 1);
+  s[0].pValue = nan.p;
+  s[0].deltaBic = nan.deltaBic;
+  EXPECT_TRUE(std::isnan(s[0].pValue));
+  std::vector<EffectScore*> scores{&s[0], &s[1]};
+  EXPECT_EQ(applyAcceptanceRule(scores, 0.01), 1);
+  EXPECT_FALSE(s[0].significant);
+  EXPECT_FALSE(s[0].accepted);
+  EXPECT_TRUE(s[1].accepted);
 }
 
 TEST(EffectSelection, RecordAmbiguityKeepsGroupsOfTwoOrMoreWithAdvice) {

@@ -1,20 +1,22 @@
 // A catalogue of the ways users get input files wrong, for every loader: each
 // case either gives a clear InputError naming the file (and line and key where there is
 // one) or is a documented, tested acceptance. Acceptances: a UTF-8 byte-order mark and
-// CRLF line ends simply work; YAML numbers that are finite but absurdly large are refused
-// only where a physical bound exists (see README "Robustness").
+// CRLF line ends simply work. Numbers that are finite but absurd are refused at load by
+// their plausible range (core/plausible_ranges.h, docs/robustness.md).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <csignal>
 #include <thread>
 
@@ -34,6 +36,7 @@
 #include "io/yaml_reader.h"
 #include "study/sweep_study.h"
 #include "sweep/sweep.h"
+#include "swing/knee_setup.h"
 
 namespace swingsim {
 namespace {
@@ -367,8 +370,9 @@ TEST(BadInputCatalogue, CsvNanInfinityHugeAndGaps) {
               HasSubstr("gap.csv:3: position_m: expected a number (got '')"));
   EXPECT_THAT(benchError("text.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,n/a,12\n"),
               HasSubstr("text.csv:3: position_m: expected a number (got 'n/a')"));
-  // Documented acceptance: huge finite numbers are numbers (1e300 N is the user's business).
-  EXPECT_EQ(benchError("huge.csv", "time_s,position_m,force_N\n0,0.001,1e300\n0.01,0.002,-1e300\n0.02,0.004,1\n"), "");
+  // Huge finite numbers are outside the plausible range (section "Plausibility ranges").
+  EXPECT_THAT(benchError("huge.csv", "time_s,position_m,force_N\n0,0.001,1e300\n0.01,0.002,-1e300\n0.02,0.004,1\n"),
+              HasSubstr("huge.csv:2: force_N: expected a force in [-100000, 100000] N"));
 }
 
 // A file with more rows than CsvSpec::maxRows is refused while reading, before the whole
@@ -642,6 +646,23 @@ std::string swingRecordText(double kneeScale) {
   return text;
 }
 
+// The swing record of swingRecordText(1) with `column` on its second data row set to `value`.
+std::string readSwingRecordError(const std::string& text, const std::string& column, const std::string& value) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  const std::vector<std::string> names = {"time_s", "hip_flexion_deg", "knee_flexion_deg", "hip_moment_Nm"};
+  const auto at = static_cast<std::size_t>(std::find(names.begin(), names.end(), column) - names.begin());
+  std::vector<std::string> cells;
+  std::istringstream row(lines[2]);
+  for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+  cells[at] = value;
+  lines[2] = cells[0] + "," + cells[1] + "," + cells[2] + "," + cells[3];
+  std::string out;
+  for (const auto& l : lines) out += l + "\n";
+  return loadError([&] { readSwingRecord(writeTemp("bigknee.csv", out)); });
+}
+
 TEST(BadInputCatalogue, SwingRecordAnglesInRadiansAreNamed) {
   const std::string path = writeTemp("radians.csv", swingRecordText(kDegToRad));
   EXPECT_THAT(loadError([&] { readSwingRecord(path); }),
@@ -669,6 +690,110 @@ TEST(BadInputCatalogue, SweepStudyAccuracyBelowRoundOffIsRefused) {
   EXPECT_THAT(errorOf(sweep, withValue(sweep, "1e-300")),
               HasSubstr("accuracy: expected a relative accuracy in [1e-14, 0.01] (got 1e-300)"));
   EXPECT_EQ(errorOf(sweep, withValue(sweep, "1e-14")), "");
+}
+
+// ---------------------------------------------------------------------------------------
+// Plausibility ranges (core/plausible_ranges.h): finite but absurd numbers are refused at
+// load with the file, line, key, the range and its reason, before a fit or a swing runs.
+// ---------------------------------------------------------------------------------------
+
+TEST(BadInputCatalogue, BenchForcesOutsideThePlausibleRangeAreRefusedWithTheirLine) {
+  EXPECT_THAT(benchError("force.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,1e300\n0.02,0.004,15\n"),
+              HasSubstr("force.csv:3: force_N: expected a force in [-100000, 100000] N (a knee cylinder carries at most a "
+                        "few kN (150 N m on a 2 cm lever is 7.5 kN))"));
+  EXPECT_THAT(benchError("force.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,2e5\n0.02,0.004,15\n"),
+              HasSubstr("force.csv:3: force_N: expected a force in [-100000, 100000] N (a knee cylinder carries at most a "
+                        "few kN (150 N m on a 2 cm lever is 7.5 kN)) (got 2e5)"));
+  // The missing-data marker of lab exports is named as such.
+  EXPECT_THAT(benchError("marker.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,9.9e37\n0.02,0.004,15\n"),
+              HasSubstr("marker.csv:3: force_N: expected a force in [-100000, 100000] N"));
+  EXPECT_THAT(benchError("marker.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,9.9e37\n0.02,0.004,15\n"),
+              HasSubstr("usually a missing-data marker"));
+  // At the bound it still reads.
+  EXPECT_EQ(benchError("bound.csv", "time_s,position_m,force_N\n0,0.001,1e5\n0.01,0.002,-1e5\n0.02,0.004,15\n"), "");
+}
+
+TEST(BadInputCatalogue, BenchTimeStepsAndTimesOutsideTheirRangeAreRefused) {
+  EXPECT_THAT(benchError("step.csv", "time_s,position_m,force_N\n0,0.001,10\n1e-200,0.002,12\n0.02,0.004,15\n"),
+              HasSubstr("step.csv:3: time_s: expected steps of at least 1e-06 (got 1e-200 after 0, a step of 1e-200)"));
+  EXPECT_THAT(benchError("time.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,12\n1e300,0.004,15\n"),
+              HasSubstr("time.csv:4: time_s: expected a sample time in [-1e+07, 1e+07] s"));
+}
+
+TEST(BadInputCatalogue, SwingRecordAnglesAndMomentsOutsideTheirRangeAreRefused) {
+  std::string text = swingRecordText(1);
+  const std::string knee = readSwingRecordError(text, "knee_flexion_deg", "1e6");
+  EXPECT_THAT(knee, HasSubstr("bigknee.csv:3: knee_flexion_deg: expected a knee angle in [-360, 360] deg"));
+  EXPECT_THAT(readSwingRecordError(text, "hip_moment_Nm", "1e300"),
+              HasSubstr("bigknee.csv:3: hip_moment_Nm: expected a hip moment in [-2000, 2000] N m"));
+}
+
+TEST(BadInputCatalogue, ParticipantInitialStateAndTimeScaleOutsideTheirRangeAreRefused) {
+  EXPECT_THAT(participantWith("knee_flexion_deg: 10", "knee_flexion_deg: 1e6"),
+              HasSubstr("participants/p1.yaml:19: initial.knee_flexion_deg: expected an initial knee angle in [-30, 180] deg"));
+  EXPECT_THAT(participantWith("time_scale: 1.088747", "time_scale: 1e-300"),
+              HasSubstr("participants/p1.yaml:38: hip_moment.time_scale: expected a time scale in [0.2, 5] (calibrated "
+                        "scales lie in 0.85-1.8"));
+  EXPECT_EQ(participantWith("knee_flexion_deg: 10", "knee_flexion_deg: 180"), "");
+}
+
+TEST(BadInputCatalogue, NegativeMauchDampingIsRefusedAtLoadNotBlamedOnTheHipLater) {
+  std::string text = readFile("models/mauch-4phase.yaml");
+  text.replace(text.find("c_Ns_per_m: 17087.9"), 19, "c_Ns_per_m: -500");
+  EXPECT_THAT(loadError([&] { parseKneeModel(text, "models/mauch-4phase.yaml"); }),
+              HasSubstr("models/mauch-4phase.yaml:42: settings[0].coefficients[0].c_Ns_per_m: expected a damping in "
+                        "[0, 1e+06] N s/m (a hydraulic cylinder dissipates, and fitted phases have 500-17,700 N s/m) (got -500)"));
+}
+
+TEST(BadInputCatalogue, GeneratorNoiseOutsideItsRangeIsRefused) {
+  const YamlLoader bench = yamlLoaders()[5];
+  EXPECT_THAT(errorOf(bench, withValue(bench, "1e300")),
+              HasSubstr("studies/mauch2014-bench.yaml:21: noise_N: expected a force noise in [0, 1000] N (a bench load cell "
+                        "is good to a few N)"));
+  EXPECT_EQ(errorOf(bench, withValue(bench, "1000")), "");
+}
+
+// ---------------------------------------------------------------------------------------
+// Messages that point at the right thing
+// ---------------------------------------------------------------------------------------
+
+TEST(BadInputCatalogue, CrOnlyLineEndsAreNamedNotADuplicatedColumn) {
+  EXPECT_THAT(benchError("mac.csv", "time_s,position_m,force_N\r0,0.001,10\r0.01,0.002,12\r0.02,0.004,15\r"),
+              HasSubstr("mac.csv:1: CR-only line ends"));
+  // CRLF still reads.
+  EXPECT_EQ(benchError("crlf.csv", "time_s,position_m,force_N\r\n0,0.001,10\r\n0.01,0.002,12\r\n0.02,0.004,15\r\n"), "");
+}
+
+TEST(BadInputCatalogue, YamlSecondDocumentIsRefusedWithItsLine) {
+  for (const auto& l : yamlLoaders()) {
+    const std::string text = readFile(l.file);
+    const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+    EXPECT_THAT(errorOf(l, text + "---\nname: second\n"),
+                HasSubstr(l.file + ":" + std::to_string(lines + 1) + ": a second YAML document starts here"))
+        << l.name;
+    // The line of the '---'. A document-start line at the top is one document.
+    EXPECT_EQ(errorOf(l, "---\n" + text), "") << l.name;
+  }
+}
+
+TEST(BadInputCatalogue, AByteOrderMarkKeepsTheCommentBlockOnRewrite) {
+  const std::string original = readFile("participants/p1.yaml");
+  const std::string path = writeTemp("bom-participant.yaml", "\xEF\xBB\xBF" + original);
+  Participant p = loadParticipant(path);
+  p.hipMoment.timeScale = 1.2;
+  storeParticipants({{path, p}});
+  const std::string rewritten = readFile(path);
+  EXPECT_THAT(rewritten, HasSubstr("# Participant P1: Burkett, Smeathers & Barker (2004)"));
+  EXPECT_EQ(loadParticipant(path).hipMoment.timeScale, 1.2);
+}
+
+// A knee model given in place of the participant's (simulate --knee, a study's knee_model)
+// is the one a late failure names.
+TEST(BadInputCatalogue, ASwingSetupNamesTheKneeFileActuallyUsed) {
+  const Participant p = loadParticipant("participants/p1.yaml");
+  const KneeModel other = loadKneeModel("models/mauch-4phase.yaml");
+  ASSERT_NE(p.kneeModelPath, other.path);
+  EXPECT_EQ(makeSwingSetup(p, other).participant.kneeModelPath, other.path);
 }
 
 }  // namespace

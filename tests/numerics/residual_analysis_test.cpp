@@ -39,6 +39,54 @@ TEST(ResidualAnalysis, WhiteNoisePassesAndAStrongAr1MisfitFails) {
   EXPECT_NEAR(calcEffectiveSampleSize({ar1}), 4000 * 0.1 / 1.9, 60);
 }
 
+// The lags scale with the record: at most one per kWhitenessLagDivisor samples of the
+// shortest segment. A 15-sample record asked for 20 lags (Q was NaN there, read as white)
+// gets 3 and a finite test; a strong AR(1) misfit of 60 samples still fails with its 12.
+TEST(ResidualAnalysis, WhitenessLagsScaleWithTheShortestRecord) {
+  std::mt19937_64 rng(12);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<double> shortRecord, ar1;
+  double last = 0;
+  for (int i = 0; i < 60; ++i) {
+    if (i < 15) shortRecord.push_back(noise(rng));
+    last = 0.95 * last + noise(rng);
+    ar1.push_back(last);
+  }
+  const WhitenessTest t = calcWhitenessTest({shortRecord}, 20);
+  EXPECT_EQ(t.lags, 15 / kWhitenessLagDivisor);
+  EXPECT_EQ(t.requestedLags, 20);
+  EXPECT_TRUE(t.computed) << t.note;
+  EXPECT_TRUE(std::isfinite(t.q));
+  EXPECT_NE(t.note.find("3 of the 20 lags"), std::string::npos) << t.note;
+  const WhitenessTest misfit = calcWhitenessTest({ar1, ar1}, 20);
+  EXPECT_EQ(misfit.lags, 60 / kWhitenessLagDivisor);
+  EXPECT_EQ(judgeWhiteness(misfit, 0.01), Whiteness::kNotWhite) << misfit.pValue;
+  // The shortest segment sets the lags.
+  EXPECT_EQ(calcWhitenessLags({ar1, shortRecord}, 20), 3);
+  EXPECT_EQ(calcWhitenessLags({ar1}, 4), 4);
+}
+
+// A test that cannot be computed is "cannot tell", never white: too short a record, a NaN
+// in the residual, a constant residual; a NaN statistic has a NaN tail probability.
+TEST(ResidualAnalysis, AWhitenessTestThatCannotBeComputedIsNeverAPass) {
+  const std::vector<double> nine{0.3, -1.2, 0.8, 0.1, -0.5, 1.4, -0.9, 0.2, 0.6};
+  const WhitenessTest tooShort = calcWhitenessTest({nine}, 20);
+  EXPECT_FALSE(tooShort.computed);
+  EXPECT_EQ(judgeWhiteness(tooShort, 0.01), Whiteness::kCannotTell);
+  EXPECT_NE(tooShort.note.find("9 samples"), std::string::npos) << tooShort.note;
+  std::vector<double> withNan(100, 0.0);
+  for (std::size_t i = 0; i < withNan.size(); ++i) withNan[i] = std::sin(0.7 * static_cast<double>(i * i));
+  withNan[50] = std::nan("");
+  const WhitenessTest nan = calcWhitenessTest({withNan}, 20);
+  EXPECT_EQ(judgeWhiteness(nan, 0.01), Whiteness::kCannotTell);
+  EXPECT_NE(nan.note.find("non-finite"), std::string::npos) << nan.note;
+  const WhitenessTest constant = calcWhitenessTest({std::vector<double>(100, 0.25)}, 20);
+  EXPECT_EQ(judgeWhiteness(constant, 0.01), Whiteness::kCannotTell);
+  EXPECT_NE(constant.note.find("constant"), std::string::npos) << constant.note;
+  EXPECT_TRUE(std::isnan(calcChiSquaredSurvival(std::nan(""), 20)));
+  EXPECT_DOUBLE_EQ(calcChiSquaredSurvival(INFINITY, 20), 0.0);
+}
+
 // A residual that is nonzero only above 55 (of a variable spread over 0..80): the run of
 // significant bins starts near 55 and reaches the top; below it the means are noise.
 TEST(ResidualAnalysis, BinnedRunFindsWhereInTheRangeTheResidualSits) {

@@ -83,5 +83,29 @@ conditions: []
   }
 }
 
+// Generator inputs outside their plausible range (core/plausible_ranges.h) are refused at
+// load: absurd noise once gave rc 0 and files that crashed `fit`.
+TEST(SwingKinematicsStudy, NoiseAndRatesOutsideTheirPlausibleRangeAreRefused) {
+  const auto errorOf = [](const std::string& noise, const std::string& rate) {
+    const std::string text = "kind: swing-kinematics\nparticipant: ../participants/p1.yaml\n"
+                             "model: ../models/damping-table-default.yaml\nnoise_deg: " + noise +
+                             "\noutput_dir: out\nconditions: [{name: normal}]\nhidden_effects:\n"
+                             "  toe_off_velocity: {hip_rate_deg_s: 90, knee_rate_deg_s: " + rate + "}\n";
+    try {
+      parse(text, "studies/inline.yaml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(errorOf("0.5", "-45"), "");
+  EXPECT_EQ(errorOf("1e300", "-45").rfind("studies/inline.yaml:4: noise_deg: expected an angle noise in [0, 10] deg "
+                                          "(motion capture angles are good to about 1 deg)", 0), 0u)
+      << errorOf("1e300", "-45");
+  EXPECT_EQ(errorOf("0.5", "1e9").rfind("studies/inline.yaml:8: hidden_effects.toe_off_velocity.knee_rate_deg_s: expected "
+                                        "a knee rate in [-3000, 3000] deg/s", 0), 0u)
+      << errorOf("0.5", "1e9");
+}
+
 }  // namespace
 }  // namespace swingsim
