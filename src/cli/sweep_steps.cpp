@@ -59,10 +59,10 @@ void addMaxSwingsOption(CLI::App* sub, long long& maxSwings) {
 }
 
 void announceSweepGrid(const SweepStudy& study, std::uint64_t maxSwings, int jobs) {
-  // CPU seconds a sweep swing takes, measured (docs/files.md, "Large grids": the Burkett
-  // study, `time swingsim sweep studies/burkett2004.yaml --jobs 1`); a swing with a stiff
-  // knee can take a few times longer, so the estimate is a rough lower bound.
-  constexpr double kSecondsPerSwing = 0.05;
+  // Seconds a sweep swing takes on one core, measured (docs/robustness.md, "Large grids":
+  // 435 swings of `swingsim sweep studies/burkett2004.yaml --jobs 1` in 2.7 s); a swing with
+  // a stiff knee or a tight accuracy can take several times longer: a rough estimate.
+  constexpr double kSecondsPerSwing = 0.006;
   const std::uint64_t swings = countSweepSwings(study);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const double threads = static_cast<double>(
@@ -76,9 +76,12 @@ void announceSweepGrid(const SweepStudy& study, std::uint64_t maxSwings, int job
   else
     std::snprintf(estimate, sizeof estimate, "%.3g hours", seconds / 3600);
   const std::size_t people = study.participants.size();
-  const std::string grid = std::to_string(people) + (people == 1 ? " participant, " : " participants, ") +
-                           std::to_string(study.addedMasses.size()) + " added masses x " +
-                           std::to_string(study.addedMassDistances.size()) + " distances";
+  const auto masses = std::count_if(study.addedMasses.begin(), study.addedMasses.end(), [](double m) { return m > 0; });
+  const std::string grid =
+      std::to_string(people) + (people == 1 ? " participant" : " participants") +
+      (masses == 0 ? std::string(", no added mass")
+                   : ", " + std::to_string(masses) + " added masses above 0 kg x " +
+                         std::to_string(study.addedMassDistances.size()) + " distances");
   std::fprintf(stderr, "sweep %s: %llu swings (%s), about %s on %d threads\n", study.name.c_str(),
                static_cast<unsigned long long>(swings), grid.c_str(), estimate, static_cast<int>(threads));
   if (swings > maxSwings)

@@ -1,5 +1,5 @@
 #pragma once
-// Checks of where a command will write, run before any work (docs/files.md, "Where output
+// Checks of where a command will write, run before any work (docs/robustness.md, "Where output
 // goes"): a place that cannot be written, or a path too long for the file system, must fail
 // at once, not after a run whose results then cannot be kept.
 #include <cstddef>

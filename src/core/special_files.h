@@ -2,7 +2,7 @@
 // Files that are not plain files: FIFOs (named pipes), devices and links to them, as a shell
 // loop or a container hands them over (`--json /dev/stdout`, `<(...)`, `mkfifo`). Opening
 // one never blocks for ever: a FIFO is opened non-blocking and waited on for at most
-// kFifoWaitSeconds for its other end (docs/files.md, "Pipes, devices and links").
+// kFifoWaitSeconds for its other end (docs/robustness.md, "Pipes, devices and links").
 #include <cstddef>
 #include <string>
 

@@ -149,10 +149,11 @@ const KneeModel& findStudyKneeModel(const SweepStudy& study, const Participant& 
 /// shortened shank. Counted without listing them, so a grid of billions is counted at once.
 std::uint64_t countSweepSwings(const SweepStudy& study);
 
-/// Largest plain sweep run unless the user raises the limit (`sweep --max-swings N`):
-/// about ten times the Burkett study with an added-mass grid, a few minutes on a laptop; a
-/// grid of millions of swings (long added-mass lists) would run for days.
-constexpr std::uint64_t kDefaultMaxSweepSwings = 20000;
+/// Largest plain sweep run unless the user raises the limit (`sweep --max-swings N`): about
+/// 230 times the Burkett study (435 swings), some 10 min on one core at the measured 6 ms a
+/// swing (docs/robustness.md, "Large grids"); a grid of millions of swings (long added-mass
+/// lists) would run for hours to days.
+constexpr std::uint64_t kDefaultMaxSweepSwings = 100000;
 
 /// Starts up to `threads` threads running `worker`. A thread that cannot start (std::thread
 /// throws std::system_error under a memory or process limit) ends the starting with a

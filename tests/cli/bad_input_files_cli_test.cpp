@@ -58,7 +58,7 @@ TEST(BadInputFilesCli, SweepGridAboveTheLimitIsCountedAndRefusedBeforeAnyWork) {
   double seconds = 0;
   const auto r = timedRun("sweep " + study.string() + " --out " + (dir / "out").string(), seconds);
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("sweep tiny: " + swings + " swings (1 participant, 201 added masses x 200 distances), about "));
+  EXPECT_THAT(r.output, HasSubstr("sweep tiny: " + swings + " swings (1 participant, 200 added masses above 0 kg x 200 distances), about "));
   EXPECT_THAT(r.output, HasSubstr(study.string() + ": the sweep has " + swings + " swings"));
   EXPECT_THAT(r.output, HasSubstr("more than the limit of " + std::to_string(kDefaultMaxSweepSwings)));
   EXPECT_THAT(r.output, HasSubstr("--max-swings " + swings + " if you mean it"));
