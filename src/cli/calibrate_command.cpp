@@ -10,6 +10,7 @@
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
+#include "core/output_paths.h"
 #include "io/participant_loader.h"
 #include "sweep/burkett_published.h"
 #include "sweep/calibration.h"
@@ -34,6 +35,7 @@ std::optional<CalibrationTarget> findTableColumn(const std::string& word) {
 
 int runCalibrate(const CalibrateArguments& a) {
   if (a.target && a.participants.size() != 1) throw CLI::ValidationError("--target", "applies to one participant file");
+  checkDistinctFiles(a.participants, "give each participant file once (it would be calibrated and rewritten twice)");
   // Every file is loaded and calibrated before any is written; storeParticipants then checks
   // each rewritten file loads back before replacing any.
   std::vector<ParticipantEdit> edits;

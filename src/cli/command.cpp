@@ -1,6 +1,8 @@
 #include "cli/command.h"
 
 #include "cli/option_checks.h"
+#include "core/output_files.h"
+#include "core/output_paths.h"
 
 namespace swingsim::cli {
 
@@ -21,6 +23,14 @@ CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json) {
 
 CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out) {
   return addTextOption(sub, "--out", out, "output folder (default out/<study name>/)", "DIR");
+}
+
+std::string chooseStudyOutputFolder(const std::optional<std::string>& out, const std::string& studyName,
+                                    const std::string& studyPath) {
+  if (out) return *out;
+  const std::string folder = "out/" + makeSafeFileStem(studyName);
+  checkOutputFolder(folder, "the default output folder of " + studyPath + " (no --out)");
+  return folder;
 }
 
 std::string formatCommandLine(const CLI::App& command) {

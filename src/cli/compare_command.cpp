@@ -24,6 +24,7 @@ struct CompareArguments {
 // The work: read the study, refit the base model, print and write the comparison.
 int runCompare(const CompareArguments& args) {
   const DiagnosisStudy study = loadDiagnosisStudy(args.study);
+  const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
   const auto plant = loadDiagnosisPlant(study, 1);
   const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);
   for (const auto& w : plant->warnings()) std::fprintf(stderr, "swingsim compare: warning: %s\n", w.c_str());
@@ -41,7 +42,6 @@ int runCompare(const CompareArguments& args) {
   else
     std::printf("training residual: Ljung-Box test cannot tell (%s)\n", wt.note.c_str());
   if (wt.computed && !wt.note.empty()) std::printf("  (%s)\n", wt.note.c_str());
-  const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   // The knee moment against the measured one, when the records have it (never fitted).
   const std::optional<HeldBackComparison> moment = plant->compareHeldBack(*b.fit.model);
   for (const auto& p : writeResidualPlots(outDir, "compare", b.comparison, moment ? &*moment : nullptr))

@@ -27,6 +27,7 @@ struct DiagnoseArguments {
 // `command`: the command line, for the report and the saved model.
 int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const DiagnosisStudy study = loadDiagnosisStudy(args.study);
+  const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
   const auto plant = loadDiagnosisPlant(study, 8);
 
   const Diagnosis dg = runDiagnosis(*plant, study.settings);
@@ -53,7 +54,6 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const std::vector<std::string> heldWarnings = held ? checkHeldBackComparison(*heldAfter) : std::vector<std::string>{};
   for (const auto& w : heldWarnings) std::fprintf(stderr, "swingsim diagnose: warning: %s\n", w.c_str());
 
-  const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   writeDiagnosisReport(outDir, {study.name, command, drive, &dg, &before, &after, check, heldBefore, heldAfter,
                                  heldWarnings});
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());

@@ -23,6 +23,7 @@ struct FitArguments {
 
 int runFit(const FitArguments& args, const std::string& command) {
   const CylinderFitStudy study = loadCylinderFitStudy(args.study);
+  const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
   const CylinderFitRun run = runCylinderFits(study.models, study.train, study.validate, study.fitSwitches);
   const std::vector<ModelEvaluation>& results = run.models;
 
@@ -30,7 +31,6 @@ int runFit(const FitArguments& args, const std::string& command) {
   for (const auto& r : results)
     for (const auto& w : r.fit.warnings) std::fprintf(stderr, "swingsim fit: warning: %s: %s\n", r.name.c_str(), w.c_str());
 
-  const std::string outDir = args.out.value_or("out/" + makeSafeFileStem(study.name));
   writeFitReport(outDir, study.name, command, results, study.plotSeconds);
   if (args.json) writeFileAtomic(*args.json, formatFitJson(results));
   std::printf("report: %s/report.md\n", outDir.c_str());

@@ -16,6 +16,7 @@
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "core/output_files.h"
+#include "core/output_paths.h"
 #include "io/yaml_reader.h"
 
 namespace swingsim::cli {
@@ -28,6 +29,7 @@ int generateCylinderBench(YamlMap& yaml, const std::optional<std::string>& outDi
   CylinderBenchStudy study = readCylinderBenchStudy(yaml);
   yaml.finish();
   if (outDir) study.outputDir = *outDir;
+  else checkOutputFolder(study.outputDir, study.path + ": output_dir");  // before any work
   MauchCylinderParams truthParams = loadMauchCylinder(study.modelPath);
   // Hidden effects: the truth gets them, the fitted models do not know.
   truthParams.effects = study.hiddenEffects;

@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/output_paths.h"
 #include "core/units.h"
 #include "identify/synthetic_swing.h"
 #include "io/swing_record_csv.h"
@@ -20,6 +21,7 @@ int generateSwingKinematics(YamlMap& yaml, const std::optional<std::string>& out
   const std::vector<SwingCondition>& conditions = study.conditions;
   const double noise = study.noiseDeg, interval = study.sampleInterval;
   const std::string outDir = outDirGiven.value_or(study.outputDir);
+  if (!outDirGiven) checkOutputFolder(outDir, study.path + ": output_dir");  // before any work
   std::vector<std::string> hiddenNames;
   const SwingModelParams truth = makeHiddenTruth(study.hidden, hiddenNames);
   const std::uint64_t seed = study.seed;

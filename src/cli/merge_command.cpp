@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 #include "cli/option_checks.h"
 #include "cli/sweep_steps.h"
 #include "core/input_error.h"
+#include "core/output_paths.h"
 #include "report/sweep_report.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
@@ -28,11 +30,13 @@ struct MergeArguments {
   std::vector<std::string> shards;
   std::optional<std::string> out, json;
   int jobs = 0;
+  long long maxSwings = static_cast<long long>(kDefaultMaxSweepSwings);  ///< --max-swings
 };
 
 int runMergeCommand(const MergeArguments& a) {
   // Every shard is read and checked (missing, duplicate, partial, another analysis) before any
   // swing runs or any file is written.
+  checkDistinctFiles(a.shards, "give each shard file once");
   std::vector<UncertaintySwingsFile> shards;
   for (const auto& path : a.shards) shards.push_back(readUncertaintySwingsFile(path));
   const UncertaintySwingTimes times = mergeUncertaintyShards(shards);
@@ -42,9 +46,20 @@ int runMergeCommand(const MergeArguments& a) {
   if (head.run.seed > kMaxSeed)
     throw InputError(head.path + ": seed: expected a seed from 0 to 1000000000 (what sweep --seed accepts), found " +
                      std::to_string(head.run.seed));
+  // The shards name the study as their sweep command line gave it, relative to the folder
+  // they ran in: from another folder that path may lead nowhere, and the user must know
+  // where the path came from.
+  std::error_code ec;
+  if (!std::filesystem::exists(head.run.studyPath, ec))
+    throw InputError(head.path + ": study_path: the shards name the study file \"" + head.run.studyPath +
+                     "\" (as their sweep command gave it), which is not there from this folder (" +
+                     std::filesystem::current_path(ec).string() +
+                     "); run merge from the folder the shards were run in, or put the study there");
   SweepStudy study = loadSweepStudy(head.run.studyPath);
   study.uncertaintySamples = head.run.samples;
   study.uncertaintySeed = static_cast<int>(head.run.seed);
+  const std::string out = chooseSweepOutputFolder(study, a.out);
+  announceSweepGrid(study, static_cast<std::uint64_t>(a.maxSwings), a.jobs);  // before any work
   const std::vector<ParticipantCalibration> calibrations = calibrateForSweep(study);
   const UncertaintyPlan plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
   const UncertaintyRunIdentity now = makeUncertaintyRunIdentity(study, plan, SWINGSIM_VERSION);
@@ -52,7 +67,6 @@ int runMergeCommand(const MergeArguments& a) {
   std::fprintf(stderr, "merge %s: %zu shards, %zu swings of %d samples, seed %llu\n", study.name.c_str(), shards.size(),
                plan.swingCount, study.uncertaintySamples, static_cast<unsigned long long>(head.run.seed));
 
-  const std::string out = chooseSweepOutputFolder(study, a.out);
   catchInterrupts();
   const SweepResults results = runPlainSweep(study, calibrations, a.jobs);
   if (gInterrupted) {
@@ -83,6 +97,7 @@ Command addMergeCommand(CLI::App& app) {
   sub->add_option("--jobs", a->jobs, "worker threads of the plain sweep, 0 = all cores (default 0)")
       ->type_name("N")
       ->check(wholeNumberFrom(0, "expected 0 (all cores) or a positive whole number"));
+  addMaxSwingsOption(sub, a->maxSwings);
   return {sub, [a] { return runMergeCommand(*a); }};
 }
 

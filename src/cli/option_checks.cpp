@@ -1,10 +1,9 @@
 #include "cli/option_checks.h"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
+
+#include "core/output_paths.h"
 
 namespace swingsim::cli {
 
@@ -18,30 +17,13 @@ std::optional<double> readFinite(const std::string& text) {
   return v;
 }
 
-// "" if `folder`, or the nearest folder above it that exists, is a folder we may write in;
-// else what is wrong.
-std::string checkFolderWritable(const std::filesystem::path& folder) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::path p = fs::absolute(folder.empty() ? fs::path(".") : folder, ec);
-  while (!fs::exists(p, ec) && p.has_relative_path()) p = p.parent_path();
-  if (!fs::is_directory(p, ec)) return "'" + p.string() + "' is not a folder, so nothing can be written below it";
-  if (::access(p.c_str(), W_OK | X_OK) != 0) return "cannot write in the folder '" + p.string() + "' (permissions)";
-  return "";
-}
-
 }  // namespace
 
 CLI::Validator writableFilePath() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        namespace fs = std::filesystem;
         if (text.empty()) return "";  // main() says "expected a value"
-        std::error_code ec;
-        if (fs::is_directory(text, ec))
-          return "expected a file to write, got the directory '" + text + "' (give a file name inside it)";
-        const std::string folder = checkFolderWritable(fs::path(text).parent_path());
-        return folder.empty() ? "" : "cannot write '" + text + "': " + folder;
+        return findOutputFileProblem(text);
       },
       "");
 }
@@ -49,13 +31,8 @@ CLI::Validator writableFilePath() {
 CLI::Validator writableFolderPath() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        namespace fs = std::filesystem;
         if (text.empty()) return "";  // main() says "expected a value"
-        std::error_code ec;
-        if (fs::exists(text, ec) && !fs::is_directory(text, ec))
-          return "expected an output folder, got the existing file '" + text + "'";
-        const std::string folder = checkFolderWritable(text);
-        return folder.empty() ? "" : "cannot write into '" + text + "': " + folder;
+        return findOutputFolderProblem(text);
       },
       "");
 }

@@ -22,10 +22,13 @@ CLI::Validator oneOf(const std::vector<std::string>& keys);
 
 /// A file the command will write (--json, --save-model): not a directory, and inside a
 /// folder that exists or can be made (the nearest existing one is a folder we may write
-/// in). Checked while parsing, so a bad place fails before any computation or output.
+/// in), or a FIFO or device we may write; a path within NAME_MAX and PATH_MAX
+/// (findOutputFileProblem). Checked while parsing, so a bad place fails before any
+/// computation or output.
 CLI::Validator writableFilePath();
 /// A folder the command will write into (--out): not an existing file, and either a
-/// writable folder or one that can be made.
+/// writable folder or one that can be made, with room below PATH_MAX for its files
+/// (findOutputFolderProblem).
 CLI::Validator writableFolderPath();
 
 /// "0.5@0.2": 0.5 kg at 0.2 m below the knee (both finite, >= 0); nullopt if malformed.

@@ -51,6 +51,7 @@ struct SweepArguments {
   std::optional<AddedMass> added;
   std::optional<int> uncertaintySamples, seed;  ///< override the study's `uncertainty:` map
   std::optional<ShardSpec> shard;
+  long long maxSwings = static_cast<long long>(kDefaultMaxSweepSwings);  ///< --max-swings
 };
 
 /// `--shard K/N`: this shard's slice of the uncertainty swings only, into its shard file.
@@ -98,6 +99,7 @@ int runSweepCommand(const SweepArguments& a) {
                      study.path + " (got --shard " + std::to_string(a.shard->index) + "/" +
                      std::to_string(a.shard->count) + " alone)");
   const std::string out = chooseSweepOutputFolder(study, a.out);
+  if (!a.shard) announceSweepGrid(study, static_cast<std::uint64_t>(a.maxSwings), a.jobs);  // before any work
   const std::vector<ParticipantCalibration> calibrations = calibrateForSweep(study);
   if (a.shard) return runShard(study, *a.shard, out, a.jobs);
 
@@ -176,6 +178,7 @@ Command addSweepCommand(CLI::App& app) {
                                         "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)")
       ->type_name("KG@M")
       ->check(addedMassSpec());
+  addMaxSwingsOption(sub, a->maxSwings);
   sub->add_option("--uncertainty", a->uncertaintySamples,
                   "after the sweep, how sure the fastest lowering is: N Monte Carlo samples over the unpublished "
                   "assumptions and each at both ends of its range (docs/uncertainty.md; default: the study's "

@@ -3,10 +3,16 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <thread>
 
 #include "core/input_error.h"
+#include "cli/command.h"
+#include "cli/option_checks.h"
 #include "core/output_files.h"
+#include "core/output_paths.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
 #include "study/sweep_run.h"
@@ -44,8 +50,52 @@ void restoreInterrupts() {
   std::signal(SIGTERM, SIG_DFL);
 }
 
+void addMaxSwingsOption(CLI::App* sub, long long& maxSwings) {
+  sub->add_option("--max-swings", maxSwings,
+                  "refuse a plain sweep of more swings than this (default " + std::to_string(kDefaultMaxSweepSwings) +
+                      "; the count and a time estimate are printed before it starts)")
+      ->type_name("N")
+      ->check(wholeNumberFrom(1, "expected a whole number of swings from 1"));
+}
+
+void announceSweepGrid(const SweepStudy& study, std::uint64_t maxSwings, int jobs) {
+  // Seconds a sweep swing takes on one core, measured (docs/robustness.md, "Large grids":
+  // 435 swings of `swingsim sweep studies/burkett2004.yaml --jobs 1` in 2.7 s); a swing with
+  // a stiff knee or a tight accuracy can take several times longer: a rough estimate.
+  constexpr double kSecondsPerSwing = 0.006;
+  const std::uint64_t swings = countSweepSwings(study);
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const double threads = static_cast<double>(
+      std::max<std::uint64_t>(1, std::min<std::uint64_t>(jobs > 0 ? static_cast<std::uint64_t>(jobs) : cores, swings)));
+  const double seconds = static_cast<double>(swings) * kSecondsPerSwing / std::min(threads, static_cast<double>(cores));
+  char estimate[64];
+  if (seconds < 120)
+    std::snprintf(estimate, sizeof estimate, "%.0f s", std::ceil(seconds));
+  else if (seconds < 7200)
+    std::snprintf(estimate, sizeof estimate, "%.0f min", std::ceil(seconds / 60));
+  else
+    std::snprintf(estimate, sizeof estimate, "%.3g hours", seconds / 3600);
+  const std::size_t people = study.participants.size();
+  const auto masses = std::count_if(study.addedMasses.begin(), study.addedMasses.end(), [](double m) { return m > 0; });
+  const std::string grid =
+      std::to_string(people) + (people == 1 ? " participant" : " participants") +
+      (masses == 0 ? std::string(", no added mass")
+                   : ", " + std::to_string(masses) + " added masses above 0 kg x " +
+                         std::to_string(study.addedMassDistances.size()) + " distances");
+  std::fprintf(stderr, "sweep %s: %llu swings (%s), about %s on %d threads\n", study.name.c_str(),
+               static_cast<unsigned long long>(swings), grid.c_str(), estimate, static_cast<int>(threads));
+  if (swings > maxSwings)
+    throw InputError(study.path + ": the sweep has " + std::to_string(swings) + " swings (" + grid + "; about " +
+                     estimate + "), more than the limit of " + std::to_string(maxSwings) +
+                     ": shorten the added_mass lists or the lowering grid, or raise the limit with --max-swings " +
+                     std::to_string(swings) + " if you mean it");
+}
+
 std::string chooseSweepOutputFolder(const SweepStudy& study, const std::optional<std::string>& out) {
-  return out.value_or(study.outputDir.empty() ? "out/" + makeSafeFileStem(study.name) : study.outputDir);
+  if (out) return *out;  // checked while parsing
+  if (study.outputDir.empty()) return chooseStudyOutputFolder(out, study.name, study.path);
+  checkOutputFolder(study.outputDir, study.path + ": output_dir");
+  return study.outputDir;
 }
 
 std::vector<ParticipantCalibration> calibrateForSweep(SweepStudy& study) {

@@ -3,6 +3,9 @@
 // writes what one sweep run does: Ctrl-C handling, the calibration before the sweep, the
 // plain sweep with its checks, the uncertainty swings with resume and partial results, and
 // the staged write of the report and JSON.
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +23,16 @@ extern volatile bool gInterrupted;
 void catchInterrupts();
 void restoreInterrupts();
 
-/// The output folder: `out` if given, else the study's output_dir, else out/<study name>.
+/// Prints the plain sweep's swing count and an estimate of its time on `jobs` threads (0 =
+/// all cores) to stderr, before anything runs; throws InputError if the count is above
+/// `maxSwings` (--max-swings, default kDefaultMaxSweepSwings), naming the grid's sizes.
+void announceSweepGrid(const SweepStudy& study, std::uint64_t maxSwings, int jobs);
+
+/// `--max-swings N`: the largest plain sweep to run (default kDefaultMaxSweepSwings).
+void addMaxSwingsOption(CLI::App* sub, long long& maxSwings);
+
+/// The output folder: `out` if given, else the study's output_dir, else out/<study name>;
+/// the last two checked for writability and length first (checkOutputFolder): InputError.
 std::string chooseSweepOutputFolder(const SweepStudy& study, const std::optional<std::string>& out);
 
 /// Calibrates the hip time scales if the study asks (`calibrate_to:`), saying so on stderr.

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/special_files.h"
 
 namespace swingsim {
 
@@ -35,10 +36,13 @@ std::string writeTemporaryBeside(const std::string& path, const std::string& con
 }
 
 void writeFileAtomic(const std::string& path, const std::string& contents) {
-  std::filesystem::path p(path);
+  // A FIFO, a device or /dev/stdout is written through: a new file there would replace it.
+  if (isWriteThroughTarget(path)) return writeThrough(path, contents);
+  const std::string target = resolveReplaceTarget(path);  // a link stays a link
+  std::filesystem::path p(target);
   if (p.has_parent_path()) makeDirectories(p.parent_path().string());
-  const std::string tmp = writeTemporaryBeside(path, contents);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+  const std::string tmp = writeTemporaryBeside(target, contents);
+  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
     std::remove(tmp.c_str());
     throw RunError(path + ": cannot rename temporary file into place");
   }
@@ -59,9 +63,14 @@ void StagedOutput::add(const std::string& name, const std::string& contents) {
 }
 
 void StagedOutput::addBeside(const std::string& path, const std::string& contents) {
-  const std::filesystem::path p(path);
+  if (isWriteThroughTarget(path)) {
+    streams_.push_back({path, contents});  // written through at commit
+    return;
+  }
+  const std::string target = resolveReplaceTarget(path);
+  const std::filesystem::path p(target);
   if (p.has_parent_path()) makeDirectories(p.parent_path().string());
-  beside_.push_back({writeTemporaryBeside(path, contents), path});
+  beside_.push_back({writeTemporaryBeside(target, contents), target});
 }
 
 void StagedOutput::commit(const std::vector<std::string>& stale) {
@@ -75,8 +84,10 @@ void StagedOutput::commit(const std::vector<std::string>& stale) {
   for (const auto& [tmp, target] : beside_)
     if (std::rename(tmp.c_str(), target.c_str()) != 0)
       throw RunError(target + ": cannot move the finished file into place from " + tmp);
+  for (const auto& [target, contents] : streams_) writeThrough(target, contents);
   names_.clear();
   beside_.clear();
+  streams_.clear();
   discard();
   for (const auto& name : stale) {
     std::error_code ec;
@@ -91,6 +102,7 @@ void StagedOutput::discard() {
   names_.clear();
   for (const auto& [tmp, target] : beside_) std::remove(tmp.c_str());
   beside_.clear();
+  streams_.clear();
 }
 
 std::string formatByteCount(std::uintmax_t bytes) {
@@ -108,22 +120,13 @@ std::string formatByteCount(std::uintmax_t bytes) {
 }
 
 std::string readFile(const std::string& path, std::size_t maxBytes) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!ec && std::filesystem::is_directory(status)) throw InputError(path + ": is a directory (expected a file)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
-  // Read in chunks up to one byte past the limit: a file's stated size can lie (a device, a
-  // pipe, /proc) and reading the whole of /dev/zero would never end.
-  std::string text;
-  char chunk[1 << 16];
-  while (in && text.size() <= maxBytes) {
-    in.read(chunk, static_cast<std::streamsize>(std::min<std::size_t>(sizeof chunk, maxBytes + 1 - text.size())));
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) throw InputError(path + ": read error");
+  // Read up to one byte past the limit: a file's stated size can lie (a device, a pipe,
+  // /proc) and reading the whole of /dev/zero would never end; a FIFO nobody writes is not
+  // waited on for ever (special_files.h).
+  const std::string text = readWithoutBlocking(path, maxBytes);
   if (text.size() > maxBytes) {
-    const bool regular = !ec && std::filesystem::is_regular_file(status);
+    std::error_code ec;
+    const bool regular = std::filesystem::is_regular_file(path, ec);
     const std::string size = regular ? formatByteCount(std::filesystem::file_size(path, ec))
                                      : "more than " + formatByteCount(maxBytes) + " read and not at its end (a device or a pipe?)";
     throw InputError(path + ": file too large for an input file (" + size + "; the limit is " + formatByteCount(maxBytes) +

@@ -9,8 +9,10 @@
 
 namespace swingsim {
 
-/// Writes `contents` to `path` atomically, creating parent directories. Throws
-/// RunError if the file cannot be written.
+/// Writes `contents` to `path` atomically, creating parent directories. A FIFO, a device or
+/// a link under /dev (`/dev/stdout`) is written through instead, never replaced by a file;
+/// a link to a plain file keeps being a link (its target is replaced). Throws RunError if
+/// the file cannot be written.
 void writeFileAtomic(const std::string& path, const std::string& contents);
 
 /// Writes `contents` to `path.tmp-PID` (the folder must exist) and returns that name; the
@@ -34,6 +36,8 @@ class StagedOutput {
   void add(const std::string& name, const std::string& contents);
   /// Stages a file outside the folder (a `--json` path) beside its target, as
   /// `path.tmp-PID` (parent folders created); commit() moves it into place with the others.
+  /// A FIFO or a device (`--json /dev/stdout`) is kept in memory and written through at
+  /// commit(), after the files.
   void addBeside(const std::string& path, const std::string& contents);
   /// Moves every added file into the folder, replacing older ones, and removes the staging
   /// folder; `stale` files (relative names) are removed from the folder afterwards.
@@ -47,6 +51,7 @@ class StagedOutput {
   std::string folder_, staging_;
   std::vector<std::string> names_;
   std::vector<std::pair<std::string, std::string>> beside_;  ///< (temporary, target)
+  std::vector<std::pair<std::string, std::string>> streams_;  ///< (FIFO or device, contents)
 };
 
 /// Creates a directory and its parents (like `mkdir -p`).

@@ -22,6 +22,10 @@ namespace swingsim {
 
 namespace {
 
+// A thread where one can start, else the work runs in the caller at get() (libstdc++ falls
+// back to deferred when std::thread throws resource_unavailable_try_again).
+constexpr std::launch kAsyncOrHere = std::launch::async | std::launch::deferred;
+
 // Singular values below this fraction of the largest count as zero (rank detection):
 // well above double round-off accumulated over a few thousand rows.
 constexpr double kRankTolerance = 1e-12;
@@ -438,10 +442,12 @@ std::vector<double> calcGridCosts(const MauchCylinderParams& model, const Traini
     }
   };
   if (threads > 1) {
-    auto other = std::async(std::launch::async, fill, 1, 2);
+    // async | deferred: where a thread cannot start (a memory or process limit), the half
+    // runs in this thread at get() instead of throwing std::system_error.
+    auto other = std::async(kAsyncOrHere, fill, 1, 2);
     fill(0, 2);
     other.get();
-    auto second = std::async(std::launch::async, evaluate, 1, 2);
+    auto second = std::async(kAsyncOrHere, evaluate, 1, 2);
     evaluate(0, 2);
     second.get();
   } else {
@@ -657,7 +663,7 @@ MauchSwitchParams polishSwitchStarts(const MauchCylinderParams& model, const Tra
   };
   const std::size_t polished = std::min<std::size_t>(kPolishedStarts + options.extraStarts.size(), sortedStarts.size());
   std::vector<std::future<BoundedFitResult>> runs;
-  for (std::size_t s = 1; s < polished; ++s) runs.push_back(std::async(std::launch::async, polish, sortedStarts[s]));
+  for (std::size_t s = 1; s < polished; ++s) runs.push_back(std::async(kAsyncOrHere, polish, sortedStarts[s]));  // see kAsyncOrHere
   std::vector<BoundedFitResult> results;
   results.push_back(polish(sortedStarts[0]));
   for (auto& r : runs) results.push_back(r.get());

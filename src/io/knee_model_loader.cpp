@@ -1,5 +1,6 @@
 #include "io/knee_model_loader.h"
 
+#include <set>
 #include <stdexcept>
 
 #include "core/output_files.h"
@@ -30,7 +31,7 @@ struct RowContext {
 // Reading the list of dial settings: the model's phase count and the settings seen.
 struct SettingContext {
   int phases;
-  std::vector<std::pair<double, double>>* seen;
+  std::set<std::pair<double, double>>* seen;  // a set: linear-time check of long lists
 };
 
 }  // namespace
@@ -101,10 +102,8 @@ void serialize(A& a, MauchDialSetting& s, SettingContext context) {
   a.number("flexion_dial_deg", s.flexionDial, mustBeDialSetting);
   a.number("extension_dial_deg", s.extensionDial, mustBeDialSetting);
   if (A::kReading) {
-    for (const auto& fe : *context.seen)
-      a.require(!(fe.first == s.flexionDial && fe.second == s.extensionDial), "flexion_dial_deg", "dial setting appears twice",
-                [&] { return "F" + formatNumber(s.flexionDial) + "E" + formatNumber(s.extensionDial); });
-    context.seen->emplace_back(s.flexionDial, s.extensionDial);
+    a.require(context.seen->emplace(s.flexionDial, s.extensionDial).second, "flexion_dial_deg", "dial setting appears twice",
+              [&] { return "F" + formatNumber(s.flexionDial) + "E" + formatNumber(s.extensionDial); });
   }
   std::vector<bool> seen(static_cast<std::size_t>(context.phases), false);
   a.mapList("coefficients", s.rows, RowContext{context.phases, &seen});
@@ -199,7 +198,7 @@ void serialize(A& a, KneeModelSpec& k) {
     a.map("switches", c, SwitchesOf{});
     a.number("flexion_dial_deg", k.flexionDial, mustBeDialSetting);
     a.number("extension_dial_deg", k.extensionDial, mustBeDialSetting);
-    std::vector<std::pair<double, double>> seen;
+    std::set<std::pair<double, double>> seen;
     a.mapList("settings", k.settings, SettingContext{c.phases, &seen});
     if (A::kReading) {
       bool found = false;

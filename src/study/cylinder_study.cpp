@@ -1,6 +1,7 @@
 #include "study/cylinder_study.h"
 
 #include <cmath>
+#include <set>
 
 #include "core/output_files.h"
 #include "core/units.h"
@@ -21,7 +22,7 @@ struct HiddenEffectsOf {};
 // it is read into (for repeated names).
 struct ConditionContext {
   const BenchProfileParams* profile;
-  const std::vector<BenchCondition>* all;
+  std::set<std::string>* names;  ///< names read so far (a set: linear-time check of long lists)
 };
 
 // The hidden effects change the truth only where they act.
@@ -38,10 +39,7 @@ void serialize(A& a, BenchCondition& b, ConditionContext context) {
   a.text("name", b.name);
   a.require(!b.name.empty() && b.name.find_first_of("/\\ ") == std::string::npos, "name",
             "must be a plain file stem without spaces or slashes", [&] { return "'" + b.name + "'"; });
-  for (const auto& other : *context.all) {
-    if (&other == &b) break;
-    a.require(other.name != b.name, "name", "condition name appears twice", [&] { return b.name; });
-  }
+  a.require(context.names->insert(b.name).second, "name", "condition name appears twice", [&] { return b.name; });
   a.number("stride_s", b.strideTime,
            [](double v) { return v > 0 && v <= 10 ? "" : "expected a stride time above 0 and at most 10 s"; });
   constexpr double kMaxSamples = 1e7;  // per condition: 80 MB a column
@@ -108,7 +106,8 @@ void serialize(A& a, CylinderBenchStudy& s) {
   a.path("output_dir", s.outputDir);
   bool hidden = hasHiddenEffects(s);
   a.optionalMap("hidden_effects", s, hidden, HiddenEffectsOf{});
-  a.mapList("conditions", s.conditions, ConditionContext{&p, &s.conditions});
+  std::set<std::string> conditionNames;
+  a.mapList("conditions", s.conditions, ConditionContext{&p, &conditionNames});
   a.require(!s.conditions.empty(), "conditions", "expected at least one condition",
             [] { return std::string("an empty list"); });
 }

@@ -1,5 +1,6 @@
 #include "study/sweep_study.h"
 
+#include <set>
 #include <string>
 
 #include "core/input_error.h"
@@ -86,11 +87,11 @@ void serialize(A& a, SweepStudy& s) {
   a.require(!s.participants.empty(), "participants", "expected at least one participant file",
             [] { return std::string("an empty list"); });
   // Results, figures and table rows are keyed by participant name.
-  for (std::size_t i = 0; i < s.participants.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      a.require(s.participants[i].name != s.participants[j].name, "participants",
-                "two participant files have the same name '" + s.participants[i].name + "' (results are keyed by name)",
-                [&] { return s.participants[i].path; });
+  std::set<std::string> names;  // a set: linear-time check of long lists
+  for (const auto& p : s.participants)
+    a.require(names.insert(p.name).second, "participants",
+              "two participant files have the same name '" + p.name + "' (results are keyed by name)",
+              [&] { return p.path; });
   bool overridesKnee = !s.kneeModelOverride.empty();
   if constexpr (A::kReading) overridesKnee = a.has("knee_model");
   if (overridesKnee) a.path("knee_model", s.kneeModelOverride);

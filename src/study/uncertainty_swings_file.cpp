@@ -19,7 +19,11 @@ namespace swingsim {
 namespace {
 
 constexpr const char* kFormat = "swingsim uncertainty swings";
-constexpr int kFormatVersion = 1;
+// 2: swing_times_checksum added.
+constexpr int kFormatVersion = 2;
+// s: no swing outlasts its participant's time_limit_s, which a participant file takes up to
+// 10 s (participant_loader.cpp); a longer time in a file was not computed by a swing.
+constexpr double kMaxSwingTime = 10;
 // A shard of the largest analysis (100,000 samples of a few participants) holds millions of
 // swing times at about 20 bytes each: far above the 16 MiB of an input file.
 constexpr std::size_t kMaxSwingsFileBytes = std::size_t{512} << 20;
@@ -45,6 +49,23 @@ class Fingerprint {
  private:
   std::uint64_t hash_ = 0xcbf29ce484222325ULL;
 };
+
+// FNV-1a 64 over the slice's swings, exact (%a): which ran and their times. A shard edited
+// by hand, or cut and spliced, no longer matches the checksum written with it.
+std::string calcSwingTimesChecksum(const UncertaintySwingsFile& file) {
+  Fingerprint f;
+  f.add(std::to_string(file.first) + ".." + std::to_string(file.last));
+  for (std::size_t k = 0; k < file.times.swingTimes.size(); ++k) {
+    const double t = file.times.swingTimes[k];
+    if (!file.times.finished[k])
+      f.add(std::string("not run"));
+    else if (std::isfinite(t))
+      f.add(t);
+    else
+      f.add(std::string("null"));
+  }
+  return f.hex();
+}
 
 std::string absolutePath(const std::string& path) {
   std::error_code ec;
@@ -172,6 +193,7 @@ std::string formatUncertaintySwingsJson(const UncertaintySwingsFile& file) {
   j["last_swing"] = file.last;
   j["swings_finished"] = file.times.countFinished();
   j["samples_finished"] = file.samplesFinished;
+  j["swing_times_checksum"] = calcSwingTimesChecksum(file);
   // The two lists are written as text into placeholders: as a Json tree they would take
   // about 100 bytes a swing (86,100 swings for --uncertainty 1000), as text about 25.
   // 17 significant digits read back to the same double.
@@ -252,10 +274,13 @@ UncertaintySwingsFile readUncertaintySwingsFile(const std::string& path) {
   f.times = UncertaintySwingTimes::makeEmpty(f.last - f.first);
   for (std::size_t k = 0; k < times.size(); ++k) {
     const Json& t = times[k];
-    if (t.is_number() && std::isfinite(t.get<double>()) && t.get<double>() > 0)
+    if (t.is_number() && std::isfinite(t.get<double>()) && t.get<double>() > 0 && t.get<double>() <= kMaxSwingTime)
       f.times.swingTimes[k] = t.get<double>();
     else if (!t.is_null())
-      r.fail("swing_times_s[" + std::to_string(k) + "]", "a positive swing time in s or null", Reader::describe(t));
+      r.fail("swing_times_s[" + std::to_string(k) + "]",
+             "a swing time above 0 and at most " + formatNumber(kMaxSwingTime) +
+                 " s (the largest time_limit_s a participant takes), or null",
+             Reader::describe(t));
     f.times.finished[k] = 1;
   }
   const Json& notRun = r.at("not_run");
@@ -274,6 +299,11 @@ UncertaintySwingsFile readUncertaintySwingsFile(const std::string& path) {
     r.fail("partial", f.isPartial() ? "true (not_run lists swings)" : "false (no swing is in not_run)",
            f.isPartial() ? "false" : "true");
   f.samplesFinished = static_cast<int>(r.whole("samples_finished", static_cast<std::uint64_t>(f.run.samples)));
+  const std::string checksum = calcSwingTimesChecksum(f);
+  if (r.text("swing_times_checksum") != checksum)
+    r.fail("swing_times_checksum", checksum + " (computed from swing_times_s and not_run)",
+           "\"" + r.text("swing_times_checksum") + "\": the swing times were changed after swingsim wrote them; "
+           "rerun the shard (or the sweep) that wrote this file");
   return f;
 }
 

@@ -27,6 +27,22 @@ const KneeModel& findStudyKneeModel(const SweepStudy& study, const Participant& 
   return model->second;
 }
 
+std::vector<std::thread> startWorkerThreads(int threads, const std::function<void()>& worker) {
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) {
+    try {
+      pool.emplace_back(worker);
+    } catch (const std::exception& e) {
+      // std::system_error (EAGAIN) under a memory, address-space or process limit (ulimit -v,
+      // ulimit -u, a container's pids.max): fewer threads do the same work, only slower.
+      std::fprintf(stderr, "swingsim: could start only %d of %d worker threads (%s); continuing with %s\n", t, threads,
+                   e.what(), t > 0 ? (std::to_string(t) + (t == 1 ? " thread" : " threads")).c_str() : "the main thread alone");
+      break;
+    }
+  }
+  return pool;
+}
+
 int runParallelJobs(int total, int jobs, const std::function<void(int)>& runOne,
                     const std::function<void(int, int)>& progress, const volatile bool* stopFlag) {
   std::atomic<int> next{0}, done{0};
@@ -42,8 +58,9 @@ int runParallelJobs(int total, int jobs, const std::function<void(int)>& runOne,
   int threads = jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::min(threads, std::max(1, total));
   // Workers pull jobs by index; the calling thread only reports progress.
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  std::vector<std::thread> pool = startWorkerThreads(threads, worker);
+  // Not one thread could start: the calling thread does the work (no progress bar meanwhile).
+  if (pool.empty()) worker();
   while (progress && done.load() < total && !(stopFlag && *stopFlag)) {
     progress(done.load(), total);
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -74,6 +91,23 @@ std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p
     }
   }
   return out;
+}
+
+std::uint64_t countSweepSwings(const SweepStudy& study) {
+  std::vector<double> distances = study.addedMassDistances;
+  std::sort(distances.begin(), distances.end());
+  const auto masses = static_cast<std::uint64_t>(
+      std::count_if(study.addedMasses.begin(), study.addedMasses.end(), [](double m) { return m > 0; }));
+  std::uint64_t swings = 0;
+  for (const Participant& p : study.participants) {
+    for (double d : sweepLowerings(study, p)) {
+      // The distances at most shank - d below the knee, as runSweep places them.
+      const auto fitting = static_cast<std::uint64_t>(
+          std::upper_bound(distances.begin(), distances.end(), p.shank.length - d) - distances.begin());
+      swings += 1 + masses * fitting;
+    }
+  }
+  return swings;
 }
 
 namespace {

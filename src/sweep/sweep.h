@@ -3,8 +3,10 @@
 // steps from the standard location and simulate a swing at each step; optionally also
 // add a shank mass (Bach 1994) at each step. Runs on a thread pool; results are stored by
 // job index, so they are identical whatever the number of threads.
+#include <cstdint>
 #include <functional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <map>
@@ -142,10 +144,28 @@ std::string studyKneeModelPath(const SweepStudy& study, const Participant& p);
 /// That knee model, as the study reader loaded it; throws RunError if it was not loaded.
 const KneeModel& findStudyKneeModel(const SweepStudy& study, const Participant& p);
 
+/// Swings of the plain sweep (runSweep): per participant, each lowering of sweepLowerings
+/// once without added mass and once per added mass above 0 kg and distance that fits on the
+/// shortened shank. Counted without listing them, so a grid of billions is counted at once.
+std::uint64_t countSweepSwings(const SweepStudy& study);
+
+/// Largest plain sweep run unless the user raises the limit (`sweep --max-swings N`): about
+/// 230 times the Burkett study (435 swings), some 10 min on one core at the measured 6 ms a
+/// swing (docs/robustness.md, "Large grids"); a grid of millions of swings (long added-mass
+/// lists) would run for hours to days.
+constexpr std::uint64_t kDefaultMaxSweepSwings = 100000;
+
+/// Starts up to `threads` threads running `worker`. A thread that cannot start (std::thread
+/// throws std::system_error under a memory or process limit) ends the starting with a
+/// message on stderr ("could start only N of M worker threads"): the threads started are
+/// returned, possibly none (then the caller runs `worker` itself).
+std::vector<std::thread> startWorkerThreads(int threads, const std::function<void()>& worker);
+
 /// Runs runOne(0) .. runOne(total - 1) on `jobs` worker threads (0 = all cores), each index
 /// once, in no set order (results stored by index are the same whatever the thread count).
 /// progress(done, total) is called from the calling thread about every 0.1 s and at the end.
-/// A stop flag (SIGINT) ends it early. Returns how many ran.
+/// A stop flag (SIGINT) ends it early. Fewer threads, down to the calling thread alone, run
+/// the jobs when threads cannot start (startWorkerThreads). Returns how many ran.
 int runParallelJobs(int total, int jobs, const std::function<void(int)>& runOne,
                     const std::function<void(int, int)>& progress = {}, const volatile bool* stopFlag = nullptr);
 

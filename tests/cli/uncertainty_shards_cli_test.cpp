@@ -230,7 +230,13 @@ TEST(UncertaintyShards, WrongShardSetsAreRefusedAndNothingIsWritten) {
   EXPECT_THAT(missing.output, HasSubstr("merge: expected all 3 shards of tiny (K = 0 to 2), found 2; missing K = 1"));
   const CliRun duplicate = merge(s0 + " " + s1 + " " + s0 + " " + s2);
   EXPECT_EQ(duplicate.code, 1);
-  EXPECT_THAT(duplicate.output, HasSubstr(s0 + ": shard.index: expected each shard once, found shard 0/3 again (also in " + s0));
+  EXPECT_THAT(duplicate.output, HasSubstr(s0 + ": the same file as " + s0 + " (arguments 1 and 3): give each shard file once"));
+  // A copy of a shard is another file, with the same shard in it.
+  const std::string copy = (dir / "copy-of-shard-0.json").string();
+  fs::copy_file(s0, copy, fs::copy_options::overwrite_existing);
+  const CliRun copied = merge(s0 + " " + s1 + " " + copy + " " + s2);
+  EXPECT_EQ(copied.code, 1);
+  EXPECT_THAT(copied.output, HasSubstr(copy + ": shard.index: expected each shard once, found shard 0/3 again (also in " + s0));
   const CliRun seed = merge(s0 + " " + seed6 + " " + s2);
   EXPECT_EQ(seed.code, 1);
   EXPECT_THAT(seed.output, HasSubstr(seed6 + ": seed: expected 5 (the first shard, " + s0 + "), found 6"));

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -118,8 +119,36 @@ TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
               HasSubstr(p + "e.json: shard.index: expected a whole number from 0 to 1, found 2"));
   EXPECT_THAT(refuse("f.json", replace("\"last_swing\": 5", "\"last_swing\": 6")),
               HasSubstr(p + "f.json: swing_times_s: expected a list of 6 swing times (last_swing - first_swing), found a list of 5"));
-  EXPECT_THAT(refuse("g.json", replace("\"format_version\": 1", "\"format_version\": 2")),
-              HasSubstr(p + "g.json: format_version: expected 1, found 2"));
+  EXPECT_THAT(refuse("g.json", replace("\"format_version\": 2", "\"format_version\": 3")),
+              HasSubstr(p + "g.json: format_version: expected 2, found 3"));
+}
+
+TEST(UncertaintySwingsFile, EditedSwingTimesAreRefusedByRangeAndChecksum) {
+  const std::string text = formatUncertaintySwingsJson(makeShard(0, 2));
+  char first[40];
+  std::snprintf(first, sizeof first, "%.17g", 1.0 / 3.0);  // the shard's first swing time, as written
+  auto refuse = [&](const std::string& name, const std::string& to) {
+    std::string t = text;
+    const auto at = t.find(first);
+    EXPECT_NE(at, std::string::npos) << first;
+    t.replace(at, std::string(first).size(), to);
+    const std::string path = scratch(name);
+    std::ofstream(path) << t;
+    try {
+      readUncertaintySwingsFile(path);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string p = scratch("");
+  // A finite but absurd time: no swing outlasts the 10 s a participant's time_limit_s allows.
+  EXPECT_THAT(refuse("h.json", "1e300"),
+              HasSubstr(p + "h.json: swing_times_s[0]: expected a swing time above 0 and at most 10 s"));
+  // A plausible time that is not the one computed: only the checksum tells.
+  EXPECT_THAT(refuse("i.json", "0.5"), HasSubstr(p + "i.json: swing_times_checksum: expected "));
+  EXPECT_THAT(refuse("i.json", "0.5"), HasSubstr("the swing times were changed after swingsim wrote them"));
+  EXPECT_EQ(refuse("j.json", first), "accepted");
 }
 
 TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {

@@ -1,0 +1,91 @@
+#include "core/output_paths.h"
+
+#include <limits.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <map>
+#include <utility>
+
+#include "core/input_error.h"
+#include "core/special_files.h"
+
+namespace swingsim {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Room for the `.tmp-PID` suffix of a file written atomically (a pid has at most 7 digits).
+constexpr std::size_t kTemporarySuffix = 12;
+
+// "" if `folder`, or the nearest folder above it that exists, is a folder we may write in.
+std::string checkFolderWritable(const fs::path& folder) {
+  std::error_code ec;
+  fs::path p = fs::absolute(folder.empty() ? fs::path(".") : folder, ec);
+  while (!fs::exists(p, ec) && p.has_relative_path()) p = p.parent_path();
+  if (!fs::is_directory(p, ec)) return "'" + p.string() + "' is not a folder, so nothing can be written below it";
+  if (::access(p.c_str(), W_OK | X_OK) != 0) return "cannot write in the folder '" + p.string() + "' (permissions)";
+  return "";
+}
+
+// "" if no component of `path` is longer than NAME_MAX - `lastExtra` (the last) and the
+// absolute path leaves `reserve` bytes below PATH_MAX.
+std::string checkLengths(const std::string& path, std::size_t lastExtra, std::size_t reserve) {
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(path, ec).lexically_normal();
+  for (const auto& part : fs::path(path)) {
+    const std::size_t extra = part == fs::path(path).filename() ? lastExtra : 0;
+    if (part.string().size() + extra > NAME_MAX)
+      return "the name '" + part.string().substr(0, 40) + "...' has " + std::to_string(part.string().size()) +
+             " bytes; a file system takes at most " + std::to_string(NAME_MAX - extra) + " here (NAME_MAX " +
+             std::to_string(NAME_MAX) + (extra ? ", less the temporary suffix" : "") + ")";
+  }
+  if (absolute.string().size() + reserve > PATH_MAX)
+    return "the path has " + std::to_string(absolute.string().size()) + " bytes as an absolute path; at most " +
+           std::to_string(PATH_MAX - reserve) + " leave room for the files written " +
+           (reserve > kTemporarySuffix ? "inside it" : "beside it") + " (PATH_MAX " + std::to_string(PATH_MAX) + ")";
+  return "";
+}
+
+}  // namespace
+
+std::string findOutputFileProblem(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) return "expected a file to write, got the directory '" + path + "' (give a file name inside it)";
+  if (isWriteThroughTarget(path))
+    return ::access(path.c_str(), W_OK) == 0 ? "" : "cannot write '" + path + "' (permissions)";
+  if (const std::string length = checkLengths(path, kTemporarySuffix, kTemporarySuffix); !length.empty())
+    return "cannot write '" + path + "': " + length;
+  const std::string folder = checkFolderWritable(fs::path(path).parent_path());
+  return folder.empty() ? "" : "cannot write '" + path + "': " + folder;
+}
+
+std::string findOutputFolderProblem(const std::string& path) {
+  std::error_code ec;
+  if (fs::exists(path, ec) && !fs::is_directory(path, ec)) return "expected an output folder, got the existing file '" + path + "'";
+  if (const std::string length = checkLengths(path, 0, kOutputNameReserve); !length.empty())
+    return "cannot write into '" + path + "': " + length;
+  const std::string folder = checkFolderWritable(path);
+  return folder.empty() ? "" : "cannot write into '" + path + "': " + folder;
+}
+
+void checkOutputFolder(const std::string& path, const std::string& where) {
+  const std::string problem = findOutputFolderProblem(path);
+  if (!problem.empty()) throw InputError(where + ": " + problem);
+}
+
+void checkDistinctFiles(const std::vector<std::string>& paths, const std::string& why) {
+  std::map<std::pair<dev_t, ino_t>, std::size_t> seen;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    struct stat st {};
+    if (::stat(paths[i].c_str(), &st) != 0) continue;
+    const auto [it, added] = seen.emplace(std::make_pair(st.st_dev, st.st_ino), i);
+    if (!added)
+      throw InputError(paths[i] + ": the same file as " + paths[it->second] + " (arguments " +
+                       std::to_string(it->second + 1) + " and " + std::to_string(i + 1) + "): " + why);
+  }
+}
+
+}  // namespace swingsim
