@@ -13,11 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "cli/cohort_steps.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/sweep_steps.h"
 #include "core/input_error.h"
 #include "report/sweep_report.h"
+#include "study/cohort_results_file.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
 
@@ -31,6 +33,8 @@ struct MergeArguments {
 };
 
 int runMergeCommand(const MergeArguments& a) {
+  // Shards of a cohort study (docs/cohort.md) hold whole participants' results.
+  if (isCohortResultsFile(a.shards.front())) return runCohortMerge(a.shards, a.out, a.json);
   // Every shard is read and checked (missing, duplicate, partial, another analysis) before any
   // swing runs or any file is written.
   std::vector<UncertaintySwingsFile> shards;

@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "cli/cohort_steps.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/sweep_steps.h"
@@ -13,6 +14,7 @@
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
+#include "study/cohort_study.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
 #include "sweep/sweep.h"
@@ -81,6 +83,14 @@ int runShard(const SweepStudy& study, const ShardSpec& shard, const std::string&
 }
 
 int runSweepCommand(const SweepArguments& a) {
+  if (isCohortStudyFile(a.study)) {
+    // A cohort study: drawn participants, each calibrated and swept (docs/cohort.md).
+    if (a.added || a.uncertaintySamples || a.seed)
+      throw InputError(a.study + ": kind: cohort-sweep: expected no --add-mass, --uncertainty or --seed (the study's "
+                       "seed draws its participants), found " + (a.added ? "--add-mass" : a.seed ? "--seed" : "--uncertainty"));
+    return runCohortSweep({a.study, a.out, a.json, a.jobs, a.shard.has_value(), a.shard ? a.shard->index : 0,
+                           a.shard ? a.shard->count : 1});
+  }
   SweepStudy study = loadSweepStudy(a.study);
   if (a.added) {
     study.addedMasses = {0.0, a.added->mass};

@@ -20,6 +20,12 @@ extern volatile bool gInterrupted;
 void catchInterrupts();
 void restoreInterrupts();
 
+/// Test hook: SWINGSIM_TEST_STOP_AFTER_SWINGS=N stops a resumable run after N swings (a
+/// cohort run: N participants), as Ctrl-C would (the CLI tests of interrupted and resumed
+/// runs; not an option, since no user needs it); -1 if unset. Throws InputError if not a
+/// whole number.
+long stopAfterSwingsForTests();
+
 /// The output folder: `out` if given, else the study's output_dir, else out/<study name>.
 std::string chooseSweepOutputFolder(const SweepStudy& study, const std::optional<std::string>& out);
 

@@ -33,6 +33,7 @@ struct CalibrationResult {
   double swingTime = 0;   ///< s, swing time at that scale (lowering 0)
   /// The scan that checked monotonicity: scale and swing time (NaN where no swing end).
   std::vector<double> scanScales, scanSwingTimes;
+  int swings = 0;  ///< swings simulated: the scan and the bisection
 };
 
 struct CalibrationOptions {
