@@ -90,8 +90,8 @@ TEST(CohortStudy, RefusesBadDistributionsWithFileLineKeyExpectedAndFound) {
               HasSubstr("distributions.stature_m.sd: expected a positive standard deviation (got -0.1)"));
   EXPECT_THAT(errorOf(studyText("mean: 1.759", "mean: 1.9")),
               HasSubstr("distributions.stature_m.mean: expected a mean inside [1.649, 1.869] (got 1.9)"));
-  // No source.
-  EXPECT_THAT(errorOf(studyText("source: Baum 2008", "source: \"\"")),
+  // No source (blank; an empty text is refused by the reader already).
+  EXPECT_THAT(errorOf(studyText("source: Baum 2008", "source: \"   \"")),
               HasSubstr("distributions.residual_limb_fraction.source: expected the published source"));
   // An unknown distribution, a missing property, an unknown property.
   EXPECT_THAT(errorOf(studyText("{distribution: uniform, min: 20", "{distribution: lognormal, min: 20")),
