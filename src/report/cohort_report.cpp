@@ -59,7 +59,7 @@ double chooseBinWidth(const std::vector<double>& values, double scale, double mi
 SvgPlot makePredictorFigure(const CohortSummary& s) {
   const std::size_t n = s.predictors.size();
   SvgPlot plot(800, 120 + 28 * static_cast<double>(n));
-  plot.setTitle("Which participant properties predict the time gained by lowering the knee");
+  plot.setTitle("What predicts the time gained by lowering the knee");
   plot.setXLabel("Spearman's rho with the time gained (dot), 95 % Fisher-z interval (bar)");
   std::vector<std::pair<double, std::string>> labels;
   for (std::size_t i = 0; i < n; ++i) {
