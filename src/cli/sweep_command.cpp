@@ -176,7 +176,7 @@ int runSweepCommand(const SweepArguments& a) {
 Command addSweepCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("sweep", "knee-axis lowering sweep per participant: tables, report with figures, JSON");
   auto a = std::make_shared<SweepArguments>();
-  sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep")->required()->type_name("");
+  sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep or cohort-sweep (docs/cohort.md)")->required()->type_name("");
   addTextOption(sub, "--out", a->out, "output folder (default: the study's output_dir, else out/<study name>/)", "DIR");
   addJsonOption(sub, a->json);
   sub->add_option("--jobs", a->jobs, "worker threads, 0 = all cores (default 0)")
@@ -203,7 +203,8 @@ Command addSweepCommand(CLI::App& app) {
            a->shard = spec;
          },
          "compute only shard K of N (K from 0 to N - 1) of the uncertainty analysis's swings and write them to "
-         "OUT/uncertainty-shard-K-of-N.json, without the plain sweep or a report; `swingsim merge` combines the N "
+         "OUT/uncertainty-shard-K-of-N.json (a cohort study: its participants, to OUT/cohort-shard-K-of-N.json), "
+         "without the plain sweep or a report; `swingsim merge` combines the N "
          "shard files into the report and JSON of one run (README, Population studies across machines)")
           ->type_name("K/N")
           ->check(CLI::Validator([](std::string& v) { return checkShardSpec(v); }, "K/N", "shard"));

@@ -84,6 +84,7 @@ CohortParticipantResult runCohortParticipant(const Cohort& cohort, std::size_t i
     r.calibrated = true;
   } catch (const std::exception& e) {  // a target no time scale reaches, or a failed swing
     r.failure = e.what();
+    r.calibrationSwings = CalibrationOptions{}.scanPoints;  // the scan that found it ran in full
     return r;
   }
   p.hipMoment.timeScale = r.timeScale;

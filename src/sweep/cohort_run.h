@@ -47,7 +47,7 @@ struct CohortParticipantResult {
   std::string failure;      ///< why not calibrated ("" if calibrated)
   double timeScale = 0;     ///< the calibrated hip time scale (NaN if not calibrated)
   LoweringSweepSummary sweep;  ///< the grid and its swing times (empty if not calibrated)
-  int calibrationSwings = 0;   ///< swings the calibration simulated (0 if it failed)
+  int calibrationSwings = 0;   ///< swings the calibration simulated (its scan, if it failed)
   /// s, swing time at the standard location (lowering 0); NaN if none.
   double calcStandardTime() const;
   /// s, standard-location swing time minus the fastest one (>= 0); NaN if either is missing.

@@ -1,4 +1,4 @@
-// Cohort studies end to end with the real binary: a tiny cohort (6 participants, lowerings
+// Cohort studies end to end with the real binary: a tiny cohort (4 participants, lowerings
 // 0, 0.05 and 0.10 m) run whole, run as 3 shards and merged (report, CSV, figures and JSON
 // byte for byte the whole run's), interrupted (the test hook stops it after 2 participants,
 // as Ctrl-C would) and resumed to the same result, and a shard set with a shard missing or
@@ -33,7 +33,7 @@ fs::path writeTinyCohort(const fs::path& dir, int seed) {
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
   };
-  swap("participants: 120", "participants: 6");
+  swap("participants: 120", "participants: 4");
   swap("seed: 2004", "seed: " + std::to_string(seed));
   swap("template: ../participants/p1.yaml", "template: " + kRoot + "/participants/p1.yaml");
   swap("max_m: 0.200", "max_m: 0.100");
@@ -66,7 +66,7 @@ TEST(CohortCli, ShardsMergeAndResumeToTheWholeRunByteForByte) {
 
   const auto one = runSwingsim("sweep " + study + " --out " + whole.string() + " --json " + (whole / "cohort.json").string() + " --jobs 2");
   ASSERT_EQ(one.code, 0) << one.output;
-  EXPECT_THAT(one.output, HasSubstr("cohort cohort-example: 6 participants (seed 5)"));
+  EXPECT_THAT(one.output, HasSubstr("cohort cohort-example: 4 participants (seed 5)"));
   const auto wholeFiles = readTree(whole);
   for (const char* name : {"report.md", "cohort.csv", "cohort-fastest-lowering.svg", "cohort-time-gained.svg",
                            "cohort-predictors.svg", "cohort.json"})
