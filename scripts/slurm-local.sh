@@ -37,12 +37,15 @@ export SLURM_CONF="$work/slurm.conf"
 started=()  # pid files of the daemons this script started
 
 stop_daemons() {
-  local f
+  local f pids=() p
   for f in "${started[@]}"; do
-    [ -f "$f" ] && kill "$(cat "$f")" 2>/dev/null || true
+    [ -f "$f" ] && pids+=("$(cat "$f")")
   done
-  sleep 1
-  echo "slurm-local: stopped the daemons it started (${#started[@]}); logs in $work"
+  for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
+  for p in "${pids[@]}"; do  # wait (up to 30 s each) until they are gone
+    for _ in $(seq 1 150); do kill -0 "$p" 2>/dev/null || break; sleep 0.2; done
+  done
+  echo "slurm-local: stopped the daemons it started (${#pids[@]}); logs in $work"
 }
 trap stop_daemons EXIT
 

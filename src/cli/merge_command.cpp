@@ -76,7 +76,7 @@ int runMergeCommand(const MergeArguments& a) {
 
 Command addMergeCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
-      "merge", "combine the shard files of `sweep --uncertainty N --shard K/N` into the report and JSON of one sweep run");
+      "merge", "combine the shard files of `sweep --uncertainty N --shard K/N` (or of a cohort study's `sweep --shard K/N`) into the report and JSON of one sweep run");
   auto a = std::make_shared<MergeArguments>();
   sub->add_option("SHARD_FILES", a->shards,
                   "every shard file (OUT/uncertainty-shard-K-of-N.json, K = 0 .. N-1) of one analysis")
