@@ -162,8 +162,12 @@ done
 t4=$(now)
 task=$(sbatch --parsable --array="$k" "$root/examples/slurm/shard.sbatch")
 task=${task%%;*}
-while [ "$(job_state "$task")" != RUNNING ]; do sleep 0.5; done
-sleep 3  # let it finish a few participants
+# Cancel it once its progress line shows a participant or more done (none = nothing to resume).
+log="$work/slurm-swingsim-shard-${task}_$k.out"
+for _ in $(seq 1 600); do
+  grep -Eq ' [1-9][0-9]*/[0-9]+ participants' "$log" 2>/dev/null && break
+  sleep 0.1
+done
 scancel "${task}_$k" 2>/dev/null || scancel "$task"
 wait_jobs "$task"
 shardfile=$(ls "$OUT"/shards/cohort-shard-*"$k"-of-"$shards".json)
