@@ -119,8 +119,10 @@ std::string formatMarkdown(const Cohort& cohort, const std::vector<CohortPartici
   const Interval& l = s.fastestLoweringInterval;
   const Interval& g = s.timeGainedInterval;
   md += "| | median | 5 % | 95 % | participants |\n|---|---|---|---|---|\n";
-  md += fmt("| fastest lowering (mm) | %.0f | %.0f | %.0f | %d |\n", l.median * kMs, l.p05 * kMs, l.p95 * kMs, l.count);
-  md += fmt("| time gained (ms) | %.1f | %.1f | %.1f | %d |\n\n", g.median * kMs, g.p05 * kMs, g.p95 * kMs, g.count);
+  md += "| fastest lowering (mm) | " + numberOrDash(l.median * kMs, "%.0f") + " | " + numberOrDash(l.p05 * kMs, "%.0f") +
+        " | " + numberOrDash(l.p95 * kMs, "%.0f") + " | " + std::to_string(l.count) + " |\n";
+  md += "| time gained (ms) | " + numberOrDash(g.median * kMs, "%.1f") + " | " + numberOrDash(g.p05 * kMs, "%.1f") + " | " +
+        numberOrDash(g.p95 * kMs, "%.1f") + " | " + std::to_string(g.count) + " |\n\n";
   int atMax = 0;
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].sweep.best >= 0 && results[i].sweep.best + 1 == static_cast<int>(results[i].sweep.lowerings.size()))
@@ -189,8 +191,10 @@ std::string formatCohortSummary(const Cohort& cohort, const CohortSummary& s) {
   const Interval& g = s.timeGainedInterval;
   std::string out = fmt("cohort %s: %d participants (seed %llu), %d calibrated\n", cohort.study.name.c_str(),
                         cohort.count, static_cast<unsigned long long>(cohort.seed), s.calibrated);
-  out += fmt("  fastest lowering  median %.0f mm (5-95 %%: %.0f .. %.0f mm)\n", l.median * kMs, l.p05 * kMs, l.p95 * kMs);
-  out += fmt("  time gained       median %.1f ms (5-95 %%: %.1f .. %.1f ms)\n", g.median * kMs, g.p05 * kMs, g.p95 * kMs);
+  out += "  fastest lowering  median " + numberOrDash(l.median * kMs, "%.0f") + " mm (5-95 %: " +
+         numberOrDash(l.p05 * kMs, "%.0f") + " .. " + numberOrDash(l.p95 * kMs, "%.0f") + " mm)\n";
+  out += "  time gained       median " + numberOrDash(g.median * kMs, "%.1f") + " ms (5-95 %: " +
+         numberOrDash(g.p05 * kMs, "%.1f") + " .. " + numberOrDash(g.p95 * kMs, "%.1f") + " ms)\n";
   for (std::size_t i = 0; i < std::min<std::size_t>(3, s.predictors.size()); ++i) {
     const auto& p = s.predictors[i];
     out += fmt("  predictor %zu       %s: rho %s (95 %%: %s .. %s)\n", i + 1, p.what.c_str(),
