@@ -42,7 +42,8 @@ CohortRunIdentity makeCohortRunIdentity(const Cohort& cohort, const std::string&
 
 /// The JSON text of a file ("partial": true while participants are missing).
 std::string formatCohortResultsJson(const CohortResultsFile& file);
-/// True if the JSON file at `path` says it is a cohort results file (merge's dispatch).
+/// True if the file at `path` begins as a cohort results file does (its "format" key, the
+/// first this writer puts): merge's dispatch; the reader then checks it all.
 bool isCohortResultsFile(const std::string& path);
 /// Reads a file written by formatCohortResultsJson. Throws InputError naming the file, the
 /// key, what was expected and what was found.
