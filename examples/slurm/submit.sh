@@ -8,6 +8,11 @@
 #   STUDY=studies/burkett2004.yaml SAMPLES=1000 SEED=1 SHARDS=20 OUT=out/burkett2004-slurm \
 #     bash examples/slurm/submit.sh
 #
+# A cohort study (kind: cohort-sweep, docs/cohort.md) takes SAMPLES=0: its own seed draws its
+# participants, and each shard computes whole participants:
+#
+#   STUDY=studies/cohort-example.yaml SAMPLES=0 SHARDS=4 OUT=out/cohort-slurm bash examples/slurm/submit.sh
+#
 # The result is $OUT/report.md and $OUT/sweep.json, the same as one
 # `swingsim sweep $STUDY --uncertainty $SAMPLES --seed $SEED --out $OUT --json $OUT/sweep.json`.
 # Queue, account and time limits are the cluster's: add them to the #SBATCH lines or here.

@@ -14,12 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "cli/cohort_steps.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/sweep_steps.h"
 #include "core/input_error.h"
 #include "core/output_paths.h"
 #include "report/sweep_report.h"
+#include "study/cohort_results_file.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
 
@@ -34,6 +36,8 @@ struct MergeArguments {
 };
 
 int runMergeCommand(const MergeArguments& a) {
+  // Shards of a cohort study (docs/cohort.md) hold whole participants' results.
+  if (isCohortResultsFile(a.shards.front())) return runCohortMerge(a.shards, a.out, a.json);
   // Every shard is read and checked (missing, duplicate, partial, another analysis) before any
   // swing runs or any file is written.
   checkDistinctFiles(a.shards, "give each shard file once");
@@ -86,7 +90,7 @@ int runMergeCommand(const MergeArguments& a) {
 
 Command addMergeCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
-      "merge", "combine the shard files of `sweep --uncertainty N --shard K/N` into the report and JSON of one sweep run");
+      "merge", "combine the shard files of `sweep --uncertainty N --shard K/N` (or of a cohort study's `sweep --shard K/N`) into the report and JSON of one sweep run");
   auto a = std::make_shared<MergeArguments>();
   sub->add_option("SHARD_FILES", a->shards,
                   "every shard file (OUT/uncertainty-shard-K-of-N.json, K = 0 .. N-1) of one analysis")

@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "cli/cohort_steps.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/sweep_steps.h"
@@ -13,6 +14,7 @@
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
+#include "study/cohort_study.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
 #include "sweep/sweep.h"
@@ -82,6 +84,14 @@ int runShard(const SweepStudy& study, const ShardSpec& shard, const std::string&
 }
 
 int runSweepCommand(const SweepArguments& a) {
+  if (isCohortStudyFile(a.study)) {
+    // A cohort study: drawn participants, each calibrated and swept (docs/cohort.md).
+    if (a.added || a.uncertaintySamples || a.seed)
+      throw InputError(a.study + ": kind: cohort-sweep: expected no --add-mass, --uncertainty or --seed (the study's "
+                       "seed draws its participants), found " + (a.added ? "--add-mass" : a.seed ? "--seed" : "--uncertainty"));
+    return runCohortSweep({a.study, a.out, a.json, a.jobs, a.shard.has_value(), a.shard ? a.shard->index : 0,
+                           a.shard ? a.shard->count : 1});
+  }
   SweepStudy study = loadSweepStudy(a.study);
   if (a.added) {
     study.addedMasses = {0.0, a.added->mass};
@@ -168,7 +178,7 @@ int runSweepCommand(const SweepArguments& a) {
 Command addSweepCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("sweep", "knee-axis lowering sweep per participant: tables, report with figures, JSON");
   auto a = std::make_shared<SweepArguments>();
-  sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep")->required()->type_name("");
+  sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep or cohort-sweep (docs/cohort.md)")->required()->type_name("");
   addTextOption(sub, "--out", a->out, "output folder (default: the study's output_dir, else out/<study name>/)", "DIR");
   addJsonOption(sub, a->json);
   sub->add_option("--jobs", a->jobs, "worker threads, 0 = all cores (default 0)")
@@ -196,7 +206,8 @@ Command addSweepCommand(CLI::App& app) {
            a->shard = spec;
          },
          "compute only shard K of N (K from 0 to N - 1) of the uncertainty analysis's swings and write them to "
-         "OUT/uncertainty-shard-K-of-N.json, without the plain sweep or a report; `swingsim merge` combines the N "
+         "OUT/uncertainty-shard-K-of-N.json (a cohort study: its participants, to OUT/cohort-shard-K-of-N.json), "
+         "without the plain sweep or a report; `swingsim merge` combines the N "
          "shard files into the report and JSON of one run (README, Population studies across machines)")
           ->type_name("K/N")
           ->check(CLI::Validator([](std::string& v) { return checkShardSpec(v); }, "K/N", "shard"));

@@ -26,8 +26,8 @@ namespace {
 
 extern "C" void onInterrupt(int) { gInterrupted = true; }
 
-// Test hook: stop the uncertainty swings after this many, as Ctrl-C would (the CLI test of
-// the interrupted and resumed run; not an option, since no user needs it).
+}  // namespace
+
 long stopAfterSwingsForTests() {
   const char* v = std::getenv("SWINGSIM_TEST_STOP_AFTER_SWINGS");
   if (!v || !*v) return -1;
@@ -37,8 +37,6 @@ long stopAfterSwingsForTests() {
     throw InputError(std::string("SWINGSIM_TEST_STOP_AFTER_SWINGS: expected a whole number of swings, found \"") + v + "\"");
   return n;
 }
-
-}  // namespace
 
 void catchInterrupts() {
   std::signal(SIGINT, onInterrupt);

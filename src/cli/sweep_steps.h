@@ -23,6 +23,12 @@ extern volatile bool gInterrupted;
 void catchInterrupts();
 void restoreInterrupts();
 
+/// Test hook: SWINGSIM_TEST_STOP_AFTER_SWINGS=N stops a resumable run after N swings (a
+/// cohort run: N participants), as Ctrl-C would (the CLI tests of interrupted and resumed
+/// runs; not an option, since no user needs it); -1 if unset. Throws InputError if not a
+/// whole number.
+long stopAfterSwingsForTests();
+
 /// Prints the plain sweep's swing count and an estimate of its time on `jobs` threads (0 =
 /// all cores) to stderr, before anything runs; throws InputError if the count is above
 /// `maxSwings` (--max-swings, default kDefaultMaxSweepSwings), naming the grid's sizes.

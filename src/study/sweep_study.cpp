@@ -8,6 +8,7 @@
 #include "io/participant_loader.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
+#include "study/sweep_study_format.h"
 #include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
@@ -16,28 +17,11 @@ namespace swingsim {
 
 namespace {
 
-struct LoweringOf {};
 struct AddedMassOf {};
 struct UncertaintyOf {};
 
 
-std::vector<std::pair<std::string, SwingIntegrator>> integratorChoices() {
-  std::vector<std::pair<std::string, SwingIntegrator>> choices;
-  for (const auto& key : integratorKeys()) choices.emplace_back(key, *findIntegrator(key));
-  return choices;
-}
-
 }  // namespace
-
-template <class A>
-void serialize(A& a, SweepStudy& s, LoweringOf) {
-  // The grid is rounded to 1 um (sweepLowerings): a smaller step would never advance. With
-  // lowerings capped by the shank (calcMaxLowering), this also bounds a sweep to a few
-  // thousand swings per participant.
-  a.optionalNumber("step_m", s.loweringStep, [](double v) { return v >= 1e-4 ? "" : "expected a step of at least 0.0001 m"; });
-  a.optionalNumber("max_m", s.loweringMax, mustBeNonNegative);
-  a.optionalFlag("include_published", s.includePublishedLowerings);
-}
 
 template <class A>
 void serialize(A& a, SweepStudy& s, AddedMassOf) {
@@ -62,14 +46,6 @@ void serialize(A& a, SweepStudy& s, UncertaintyOf) {
   if (seeded) a.integer("seed", s.uncertaintySeed);
   a.require(s.uncertaintySeed >= 0, "seed", "expected a seed from 0 to 1000000000",
             [&] { return std::to_string(s.uncertaintySeed); });
-}
-
-template <class A>
-void serialize(A& a, SwingOptions& o) {
-  a.choice("method", o.integrator, integratorChoices(), true);
-  a.optionalNumber("accuracy", o.accuracy, [](double v) { return checkAccuracy(v); });
-  a.optionalNumber("sample_interval_s", o.sampleInterval,
-                   [](double v) { return v >= 1e-5 && v <= 0.1 ? "" : "expected a sample interval from 0.00001 to 0.1 s"; });
 }
 
 template <class A>

@@ -78,9 +78,11 @@ CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, c
   // Bisection on log(scale): robust, and the scan proved monotonicity in the bracket.
   double lo = r.scanScales[static_cast<std::size_t>(bracket)], hi = r.scanScales[static_cast<std::size_t>(bracket) + 1];
   double mid = lo, t = 0;
+  r.swings = options.scanPoints;
   for (int it = 0; it < 60; ++it) {
     mid = std::sqrt(lo * hi);
     t = swingTimeAt(setup, mid, fast);
+    ++r.swings;
     if (std::fabs(t - target) < options.timeTolerance) break;
     if (t < target) lo = mid; else hi = mid;
   }

@@ -37,6 +37,7 @@ struct CalibrationResult {
   /// d(swing time)/d(scale) at the solution, s per unit scale, from the last two swings
   /// (NaN if unknown): what a swing-time error means for the scale.
   double swingTimePerScale = std::numeric_limits<double>::quiet_NaN();
+  int swings = 0;  ///< swings simulated: the scan and the bisection
 };
 
 struct CalibrationOptions {

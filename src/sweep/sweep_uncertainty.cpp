@@ -28,15 +28,6 @@ std::vector<double> gridLowerings(const SweepStudy& study, const Participant& p)
   return sweepLowerings(grid, p);
 }
 
-void pickBest(LoweringSweepSummary& s) {
-  s.best = -1;
-  for (std::size_t k = 0; k < s.swingTimes.size(); ++k) {
-    if (!std::isfinite(s.swingTimes[k])) continue;
-    if (s.best < 0 || s.swingTimes[k] < s.swingTimes[static_cast<std::size_t>(s.best)] - kSameSwingTime)
-      s.best = static_cast<int>(k);
-  }
-}
-
 double percentileSorted(const std::vector<double>& v, double q) {
   const double h = q * static_cast<double>(v.size() - 1);
   const auto lo = static_cast<std::size_t>(std::floor(h));
@@ -45,6 +36,15 @@ double percentileSorted(const std::vector<double>& v, double q) {
 }
 
 }  // namespace
+
+void pickBest(LoweringSweepSummary& s) {
+  s.best = -1;
+  for (std::size_t k = 0; k < s.swingTimes.size(); ++k) {
+    if (!std::isfinite(s.swingTimes[k])) continue;
+    if (s.best < 0 || s.swingTimes[k] < s.swingTimes[static_cast<std::size_t>(s.best)] - kSameSwingTime)
+      s.best = static_cast<int>(k);
+  }
+}
 
 double LoweringSweepSummary::calcFastestLowering() const {
   return best >= 0 ? lowerings[static_cast<std::size_t>(best)] : kNaN;

@@ -44,6 +44,9 @@ struct LoweringSweepSummary {
   double calcFastestLowering() const;
   double calcFastestTime() const;
 };
+/// Sets `s.best` to the fastest finite swing time (ties within 1e-12 s keep the smaller
+/// lowering), -1 if none ended.
+void pickBest(LoweringSweepSummary& s);
 
 /// One assumption at the two ends of its range, the others nominal, for one participant.
 struct SensitivityRow {

@@ -1,0 +1,142 @@
+#include "cli/cohort_steps.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <tuple>
+
+#include "cli/sweep_steps.h"
+#include "core/input_error.h"
+#include "core/output_files.h"
+#include "core/progress_reporter.h"
+#include "report/cohort_report.h"
+#include "study/cohort_results_file.h"
+#include "study/cohort_study.h"
+#include "sweep/cohort_run.h"
+
+namespace swingsim::cli {
+
+namespace {
+
+std::string describeShard(const CohortResultsFile& f) {
+  return f.sharded ? std::to_string(f.shardIndex) + "/" + std::to_string(f.shardCount) : std::string("null");
+}
+
+/// Takes the results an earlier interrupted run of the same slice left at `path`; one of
+/// another run or slice is an InputError (file, key, expected, found). Returns how many.
+std::size_t resumeFrom(const std::string& path, CohortResultsFile& file) {
+  if (!std::filesystem::exists(path)) return 0;
+  const CohortResultsFile earlier = readCohortResultsFile(path);
+  checkSameCohortRun(file.run, earlier, "this run");
+  if (describeShard(earlier) != describeShard(file))
+    throw InputError(path + ": shard: expected " + describeShard(file) + " (this run), found " + describeShard(earlier));
+  file.results = earlier.results;
+  return earlier.countFinished();
+}
+
+/// Runs the participants of `file`'s slice that have not run; false if interrupted (then
+/// the finished ones are written to `path`, marked partial).
+bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& path, const std::string& label,
+              int jobs) {
+  const std::size_t resumed = resumeFrom(path, file);
+  const std::size_t slice = file.last - file.first;
+  std::vector<CohortParticipantResult> results(static_cast<std::size_t>(cohort.count));
+  std::copy(file.results.begin(), file.results.end(), results.begin() + static_cast<std::ptrdiff_t>(file.first));
+  bool complete = false;
+  {
+    ProgressReporter progress(label, "participants");
+    progress.setShowRate(true);
+    progress.setResumedFrom(static_cast<int>(resumed));
+    if (resumed > 0)
+      progress.note("resuming from " + path + ": " + std::to_string(resumed) + " of " + std::to_string(slice) +
+                    " participants done by an earlier run");
+    CohortRunControl control;
+    control.stopFlag = &gInterrupted;
+    control.stopAfterParticipants = stopAfterSwingsForTests();
+    control.progress = [&](int done, int) { progress.update(static_cast<int>(resumed) + done, static_cast<int>(slice)); };
+    complete = runCohortParticipants(cohort, file.first, file.last, results, jobs, control);
+  }
+  std::copy(results.begin() + static_cast<std::ptrdiff_t>(file.first),
+            results.begin() + static_cast<std::ptrdiff_t>(file.last), file.results.begin());
+  if (complete && !gInterrupted) return true;
+  writeFileAtomic(path, formatCohortResultsJson(file));
+  std::fprintf(stderr, "swingsim: interrupted; %zu of %zu participants are kept in %s; run the same command again to resume\n",
+               file.countFinished(), slice, path.c_str());
+  return false;
+}
+
+/// The report, cohort.csv, figures and --json, staged and moved into `out` together.
+int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
+                       const std::string& out, const std::optional<std::string>& json) {
+  const CohortSummary summary = summarizeCohort(cohort, results);
+  std::printf("%s", formatCohortSummary(cohort, summary).c_str());
+  StagedOutput staged(out);
+  for (const auto& [name, contents] : makeCohortReport(cohort, results, summary)) staged.add(name, contents);
+  if (json) staged.addBeside(*json, formatCohortJson(cohort, results, summary));
+  if (gInterrupted) {
+    staged.discard();
+    std::fprintf(stderr, "swingsim: interrupted while writing the report; nothing in %s was changed\n", out.c_str());
+    return 1;
+  }
+  staged.commit({cohortPartialFileName()});
+  std::printf("\nreport: %s/report.md\n", out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int runCohortSweep(const CohortSweepArguments& a) {
+  const Cohort cohort = loadCohortStudy(a.study);
+  const std::string out = chooseSweepOutputFolder(cohort.study, a.out);
+  CohortResultsFile file;
+  file.run = makeCohortRunIdentity(cohort, SWINGSIM_VERSION);
+  file.sharded = a.sharded;
+  file.shardIndex = a.shardIndex;
+  file.shardCount = a.shardCount;
+  std::tie(file.first, file.last) = a.sharded ? calcShardSwings(static_cast<std::size_t>(cohort.count), a.shardIndex, a.shardCount)
+                                              : std::make_pair(std::size_t{0}, static_cast<std::size_t>(cohort.count));
+  file.results.resize(file.last - file.first);
+  const std::string path = out + "/" + (a.sharded ? cohortShardFileName(a.shardIndex, a.shardCount) : cohortPartialFileName());
+  std::string label = "cohort " + cohort.study.name;
+  if (a.sharded) label += " shard " + std::to_string(a.shardIndex) + "/" + std::to_string(a.shardCount);
+  std::fprintf(stderr, "%s: participants %zu to %zu of %d (seed %llu): calibration to each drawn swing time, then the "
+               "lowering sweep\n", label.c_str(), file.first + 1, file.last, cohort.count,
+               static_cast<unsigned long long>(cohort.seed));
+  makeDirectories(out);
+  catchInterrupts();
+  const bool complete = runSlice(cohort, file, path, label, a.jobs);
+  if (!complete) {
+    restoreInterrupts();
+    return 1;
+  }
+  if (a.sharded) {
+    writeFileAtomic(path, formatCohortResultsJson(file));
+    restoreInterrupts();
+    std::printf("shard %d/%d of %s: %zu participants -> %s\n(when all %d have run: swingsim merge %s/cohort-shard-*-of-%d.json)\n",
+                a.shardIndex, a.shardCount, cohort.study.name.c_str(), file.last - file.first, path.c_str(), a.shardCount,
+                out.c_str(), a.shardCount);
+    return 0;
+  }
+  const int code = writeCohortOutputs(cohort, file.results, out, a.json);
+  restoreInterrupts();
+  return code;
+}
+
+int runCohortMerge(const std::vector<std::string>& shardFiles, const std::optional<std::string>& out,
+                   const std::optional<std::string>& json) {
+  // Every shard is read and checked before anything is written.
+  std::vector<CohortResultsFile> shards;
+  for (const auto& path : shardFiles) shards.push_back(readCohortResultsFile(path));
+  const std::vector<CohortParticipantResult> results = mergeCohortShards(shards);
+  const CohortResultsFile& head = shards.front();
+  const Cohort cohort = loadCohortStudy(head.run.studyPath);
+  const CohortRunIdentity now = makeCohortRunIdentity(cohort, SWINGSIM_VERSION);
+  for (const auto& s : shards) checkSameCohortRun(now, s, "the study " + cohort.study.path + " as it is now");
+  std::fprintf(stderr, "merge %s: %zu shards, %d participants, seed %llu\n", cohort.study.name.c_str(), shards.size(),
+               cohort.count, static_cast<unsigned long long>(cohort.seed));
+  catchInterrupts();
+  const int code = writeCohortOutputs(cohort, results, chooseSweepOutputFolder(cohort.study, out), json);
+  restoreInterrupts();
+  return code;
+}
+
+}  // namespace swingsim::cli
