@@ -361,7 +361,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
   PlantFit current = plant.fit(*plant.baseModel());
   out.baseline = current;
   out.baselineParameters = baseIntervals(plant, current);
-  out.baselineWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
+  out.baselineWhiteness = calcWhitenessTest(plant.whitenessResidual(current.likelihoodResidual), settings.whitenessLags);
 
   for (int stepNo = 0; stepNo < settings.maxEffects; ++stepNo) {
     DiagnosisStep step;
@@ -418,7 +418,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     if (std::find(out.warnings.begin(), out.warnings.end(), note) == out.warnings.end())
       out.warnings.push_back("final fit: " + note);
   out.finalParameters = baseIntervals(plant, current);
-  out.finalWhiteness = calcWhitenessTest(current.likelihoodResidual, settings.whitenessLags);
+  out.finalWhiteness = calcWhitenessTest(plant.whitenessResidual(current.likelihoodResidual), settings.whitenessLags);
   // A whiteness test that cannot be computed is "cannot tell", never a pass.
   out.finalResidualWhite = judgeWhiteness(out.finalWhiteness, settings.alpha) == Whiteness::kWhite;
   judgeExplained(plant, settings, out);
@@ -430,7 +430,7 @@ BaselineComparison compareBaseline(const DiagnosisPlant& plant, int whitenessLag
   out.fit = plant.fit(*plant.baseModel());
   out.parameters = baseIntervals(plant, out.fit);
   out.comparison = plant.compare(*out.fit.model);
-  out.whiteness = calcWhitenessTest(out.fit.likelihoodResidual, whitenessLags);
+  out.whiteness = calcWhitenessTest(plant.whitenessResidual(out.fit.likelihoodResidual), whitenessLags);
   return out;
 }
 

@@ -106,6 +106,13 @@ class DiagnosisPlant {
   virtual PlantFit refitAccepted(const PlantFit& candidate, EffectId /*effect*/) const { return candidate; }
   /// Warnings of the base fit (e.g. a switch constant at the edge of its range).
   virtual std::vector<std::string> warnings() const { return {}; }
+  /// The residual the whiteness test reads, from a fit's likelihood residual: by default its
+  /// records as they are. A plant whose records are too short for lags of their own (the
+  /// sweep: 2-5 rows a participant) joins them, so that a residual that keeps its sign
+  /// along a record shows as correlation at short lags.
+  virtual ResidualSegments whitenessResidual(const ResidualSegments& likelihoodResidual) const {
+    return likelihoodResidual;
+  }
   /// An independent check of a fitted model, one line for the report ("" if the plant has
   /// none): the swing reruns the model with Simbody, since its refits use the reference
   /// integrator.

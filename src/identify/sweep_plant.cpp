@@ -526,7 +526,7 @@ Comparison SweepPlant::compare(const PlantModel& model) const {
         pred = predictAll({inModel_[s]}, held)[0];
       }
       RecordComparison r;
-      r.stem = rows.nominal.participant.name + (pass == 1 ? " held out" : "");
+      r.stem = rows.nominal.participant.name + (pass == 1 ? "-held-out" : "");
       r.training = pass == 0;
       StateVariable lowering{"knee-axis lowering (mm)", "", {}};
       for (std::size_t k = 0; k < rows.lowered.size(); ++k) {
@@ -541,6 +541,12 @@ Comparison SweepPlant::compare(const PlantModel& model) const {
       c.records.push_back(r);
     }
   return c;
+}
+
+ResidualSegments SweepPlant::whitenessResidual(const ResidualSegments& likelihoodResidual) const {
+  ResidualSegments joined(1);
+  for (const auto& segment : likelihoodResidual) joined[0].insert(joined[0].end(), segment.begin(), segment.end());
+  return joined;
 }
 
 std::vector<std::string> SweepPlant::validationStems() const {

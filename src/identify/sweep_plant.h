@@ -100,7 +100,7 @@ class SweepPlant final : public DiagnosisPlant {
   bool checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const override;
   std::vector<std::string> phaseNames(const PlantModel&) const override;
   /// Training records: the in-model participants at the full fit; then the same
-  /// participants as held out ("P1 held out"), each at the fit without it.
+  /// participants as held out ("P1-held-out"), each at the fit without it.
   Comparison compare(const PlantModel& model) const override;
   std::vector<std::string> validationStems() const override;
   /// Per in-model participant (train, then held out): the RMS standard error of its
@@ -108,6 +108,9 @@ class SweepPlant final : public DiagnosisPlant {
   /// (floor of SweepParticipantRows::effectiveRows), for the engine's few-sample limit.
   std::vector<NoiseEstimate> estimateRecordNoise() const override;
   std::vector<std::string> warnings() const override { return notes_; }
+  /// The participants' whitened rows joined in study order, each in lowering order: a model
+  /// that misses the trend with lowering leaves runs of one sign, seen at lag 1.
+  ResidualSegments whitenessResidual(const ResidualSegments& likelihoodResidual) const override;
 
   const std::vector<SweepParticipantRows>& participants() const { return participants_; }
   /// Indices (into participants()) of the participants inside the model.

@@ -207,7 +207,7 @@ std::vector<std::string> writeResidualPlots(const std::string& outDir, const std
                                             const HeldBackComparison* heldBack) {
   std::vector<std::string> paths;
   for (const auto& r : c.records) {
-    const std::string path = outDir + "/" + prefix + "-" + r.stem + "-residual.svg";
+    const std::string path = outDir + "/" + prefix + "-" + makeSafeFileStem(r.stem) + "-residual.svg";
     writeFileAtomic(path, renderResidualSvg(r, c,
                                             prefix + ": " + r.stem + (r.training ? " (train)" : " (validate)") + ", " +
                                                 c.quantity + " RMSE " + num(r.overall.rmse, c.decimals) + " " + c.unit));

@@ -53,7 +53,7 @@ std::vector<std::string> writeOverlayPlots(const std::string& outDir, const std:
     if (heldBack)
       for (const auto& m : heldBack->records)
         if (m.stem == r.stem) moment = &m;
-    const std::string path = outDir + "/" + prefix + "-" + r.stem + "-overlay.svg";
+    const std::string path = outDir + "/" + prefix + "-" + makeSafeFileStem(r.stem) + "-overlay.svg";
     writeFileAtomic(path, renderOverlaySvg(r, c, moment, heldBack ? heldBack->unit : "",
                                            prefix + ": " + r.stem + (r.training ? " (train)" : " (validate)") +
                                                ", measured and model"));

@@ -41,6 +41,8 @@ TEST(SweepProgress, StderrInAFileGetsOneWholeLinePerReport) {
     std::smatch m;
     if (!std::regex_match(line, m, progressLine)) {
       if (line.rfind("sweep burkett2004: terminal impact check: ", 0) == 0) continue;  // the step after the sweep
+      // The grid announced before anything runs: its swing count and estimated time.
+      if (std::regex_match(line, std::regex(R"(sweep burkett2004: \d+ swings \(.*\), about .* on \d+ threads?)"))) continue;
       EXPECT_EQ(line, "sweep burkett2004: 4 participants (studies/burkett2004.yaml)");
       continue;
     }

@@ -58,7 +58,7 @@ Diagnosis diagnoseTable(const independent::SweepEffects& fx, std::uint64_t seed,
     std::ofstream study(dir / "study.yaml");
     study << "kind: sweep-diagnosis\nname: indep-" << tag << "\nsweep: sweep.yaml\nmeasured: measured.csv\n"
           << "candidates: [hip_effort_adaptation, hip_tempo_lowering, com_rule_proportional]\n"
-          << "acceptance: {max_effects: 1, whiteness_lags: 1}\n";
+          << "acceptance: {max_effects: 1, whiteness_lags: 2}\n";
   }
   const DiagnosisStudy study = loadDiagnosisStudy((dir / "study.yaml").string());
   const auto plant = loadDiagnosisPlant(study, 0);
