@@ -306,7 +306,7 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
   if (!tried.empty())
     out.verdict += " Tried on top of the final model: " + tried + "; the closest, " + closest +
                    (closestParameters.empty() ? "" : " (" + closestParameters + ")") + ", left a held-out error of " +
-                   fmtRatio(closestRmse) + " (largest over the held-out records).";
+                   fmtRatio(closestRmse) + " " + training.unit + " (largest over the held-out records).";
   out.power = adviseRecordsForPower(out, settings);
   if (out.power) out.verdict += describePowerAdvice(*out.power);
   out.verdict += " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";

@@ -194,7 +194,9 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
   for (int k = 0; k < 3; ++k) all.push_back("");
   md += mdRow(all);
   md += "\nShortening: standard location minus the largest Table 4 lowering simulated here (positive = faster when "
-        "lowered).\n\n";
+        "lowered).\n\n"
+        "Which physical effect, shared by every runner, would explain these rows, tested on held-out runners: "
+        "`swingsim diagnose studies/burkett2004-table4.yaml` (docs/diagnosis.md, \"The sweep\").\n\n";
   return md;
 }
 
