@@ -1,14 +1,19 @@
 // libFuzzer target: the CSV reader with each spec the program uses (bench data, Winter knee
-// angles, swing kinematics). The first byte picks the spec and a small row limit half the
-// time, so the too-many-rows path is exercised too.
+// angles, swing kinematics), and the measured sweep times reader. The first byte picks the
+// reader and a small row limit half the time, so the too-many-rows path is exercised too.
 #include "fuzz_common.h"
 #include "io/csv_table.h"
+#include "io/sweep_times_csv.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace swingsim;
   if (size == 0) return 0;
+  if (data[0] % 4 == 3) {
+    fuzz::expectOnlyInputErrors([&] { parseSweepTimesCsv(fuzz::asText(data + 1, size - 1), "fuzz.csv"); });
+    return 0;
+  }
   CsvSpec spec;
-  switch (data[0] % 3) {
+  switch (data[0] % 4) {
     case 0:
       spec.required = {"time_s", "position_m", "force_N"};
       spec.strictlyIncreasing = "time_s";

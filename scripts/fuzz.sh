@@ -44,6 +44,7 @@ for f in studies/data/mauch2014/*.csv tests/data/*.csv; do
   { printf '\000'; head -n 40 "$f"; } >"build-fuzz/seeds/csv_fuzz/bench_$(basename "$f")"
 done
 { printf '\001'; head -n 40 studies/data/winter-natural-cadence.csv; } >build-fuzz/seeds/csv_fuzz/winter.csv
+{ printf '\003'; cat studies/data/burkett2004-table4.csv; } >build-fuzz/seeds/csv_fuzz/burkett2004-table4.csv
 printf '\002time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\r\n0,-10,40,20\r\n0.01,-9,45,21\r\n' \
   >build-fuzz/seeds/csv_fuzz/kinematics.csv
 # Motion files: the first byte picks the column map (motion_file_fuzz.cpp).

@@ -30,7 +30,10 @@ std::vector<std::string> splitFields(const std::string& line) {
   while (std::getline(in, field, ',')) {
     const auto first = field.find_first_not_of(" \t");
     const auto last = field.find_last_not_of(" \t");
-    out.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
+    std::string f = first == std::string::npos ? "" : field.substr(first, last - first + 1);
+    // A spreadsheet's quoted field ("P1"): the quotes are not part of the value.
+    if (f.size() >= 2 && f.front() == '"' && f.back() == '"') f = f.substr(1, f.size() - 2);
+    out.push_back(f);
   }
   if (!line.empty() && line.back() == ',') out.emplace_back();
   return out;
@@ -67,6 +70,9 @@ std::vector<MeasuredSwingTime> parseSweepTimesCsv(const std::string& text, const
     std::string l;
     while (std::getline(in, l)) {
       if (!l.empty() && l.back() == '\r') l.pop_back();
+      if (l.find('\r') != std::string::npos)
+        throw InputError(path + ":" + std::to_string(lines.size() + 1) +
+                         ": CR-only line ends (a carriage return inside a line): save the file with LF or CRLF line ends");
       lines.push_back(l);
     }
   }
@@ -85,7 +91,7 @@ std::vector<MeasuredSwingTime> parseSweepTimesCsv(const std::string& text, const
       const std::vector<std::string> full{"participant", "lowering_m", "swing_time_s", "sd_s", "n"};
       if (header != plain && header != full)
         throw InputError(w.at("header") + "expected 'participant,lowering_m,swing_time_s' or "
-                         "'participant,lowering_m,swing_time_s,sd_s,n' (got '" + l + "')");
+                         "'participant,lowering_m,swing_time_s,sd_s,n' (got '" + (l.size() > 120 ? l.substr(0, 120) + "..." : l) + "')");
       continue;
     }
     const std::vector<std::string> f = splitFields(l);

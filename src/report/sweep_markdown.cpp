@@ -196,7 +196,8 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
   md += "\nShortening: standard location minus the largest Table 4 lowering simulated here (positive = faster when "
         "lowered).\n\n"
         "Which physical effect, shared by every runner, would explain these rows, tested on held-out runners: "
-        "`swingsim diagnose studies/burkett2004-table4.yaml` (docs/diagnosis.md, \"The sweep\").\n\n";
+        "`swingsim diagnose studies/burkett2004-table4.yaml` (docs/diagnosis.md, \"The sweep\"; `scripts/main-job.sh` "
+        "runs it after this sweep and writes out/burkett2004-table4/report.md).\n\n";
   return md;
 }
 

@@ -53,6 +53,17 @@ TEST(SweepTimesCsv, RefusesNonsenseWithFileLineAndColumn) {
             std::string::npos);
   EXPECT_NE(errorOf(h).find("expected at least one row"), std::string::npos);
   EXPECT_NE(errorOf("").find("expected a header"), std::string::npos);
+  EXPECT_NE(errorOf("participant,lowering_m,swing_time_s\rP1,0,0.4\r").find("t.csv:1: CR-only line ends"),
+            std::string::npos);
+  const std::string longHeader = "x" + std::string(100000, ',');
+  EXPECT_LT(errorOf(longHeader).size(), 400u) << "a header is echoed cut, not whole";
+}
+
+TEST(SweepTimesCsv, SpreadsheetQuotesAroundAFieldAreNotPartOfIt) {
+  const auto rows = parseSweepTimesCsv("\"participant\",\"lowering_m\",\"swing_time_s\"\n\"P1\",0,\"0.4\"\n", "t.csv");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].participant, "P1");
+  EXPECT_DOUBLE_EQ(rows[0].swingTime, 0.4);
 }
 
 }  // namespace
