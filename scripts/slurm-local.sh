@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A real one-node Slurm cluster on this machine, to prove the examples/slurm/ job array and
-# its dependent merge job (docs/slurm-local.md). It installs Debian's slurm-wlm and munge if
+# its dependent merge job (examples/slurm/README.md). It installs Debian's slurm-wlm and munge if
 # missing, writes a private configuration under WORK (localhost, 2 CPUs; no systemd or
 # cgroups: proctrack/linuxproc, task/none; a munge key made here), starts munged, slurmctld
 # and slurmd itself (loopback only, ports PORT and PORT+1), then:

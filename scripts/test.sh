@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CI: install, build and run the whole test suite (CTest over GoogleTest) twice:
-#   1. build/       Release, as users build it;
+#   1. build/       Release, as users build it; then the Slurm proof (scripts/slurm-local.sh);
 #   2. build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (RelWithDebInfo): any
 #                   report (memory error, leak, undefined behaviour) fails the run.
 # Sanitizer reports exit with code 86, so a CLI test expecting exit code 1 (bad input)
@@ -11,6 +11,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+
+# The cohort example through a real one-node Slurm (examples/slurm/README.md): installs
+# slurm-wlm and munge, starts the daemons itself, submits the job array and the merge, checks
+# the merged result equals the one-machine run byte for byte, cancels and resumes one task,
+# stops the daemons. About 1 min on 2 cores; needs root (CI runs as root).
+echo "== Slurm: the cohort example on a one-node cluster (scripts/slurm-local.sh)" >&2
+bash scripts/slurm-local.sh
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)" >&2
 # At most 2 jobs: sanitized compiles and tests take 2-3x the memory of plain ones.
