@@ -215,10 +215,13 @@ SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingT
       notes_.push_back(name + " is outside the model and takes no part in the fits or folds: " + p.outside);
     }
   }
-  if (inModel_.size() < 2)
+  if (inModel_.size() < 2) {
+    std::string why;
+    for (const auto& note : notes_) why += (why.empty() ? ": " : "; ") + note;
     throw RunError("diagnose: the sweep plant needs at least two participants inside the model (leave one participant "
                    "out trains on the others); " + std::to_string(inModel_.size()) + " of " +
-                   std::to_string(participants_.size()) + " are" + (notes_.empty() ? "" : ": " + notes_.back()));
+                   std::to_string(participants_.size()) + " are" + why);
+  }
 }
 
 SweepPlant::Prediction SweepPlant::predict(std::size_t i, const SweepModelParams& params, double startScale,
