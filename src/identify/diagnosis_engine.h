@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "identify/comparison.h"
@@ -27,6 +28,19 @@ class PlantModel {
   virtual ~PlantModel() = default;
 };
 using PlantModelPtr = std::shared_ptr<const PlantModel>;
+
+/// A plant's model that is its parameter struct and nothing else (the swing's, the sweep's).
+template <class Params>
+class PlantModelOf final : public PlantModel {
+ public:
+  explicit PlantModelOf(Params params) : params(std::move(params)) {}
+  Params params;
+};
+/// The parameters inside `model`, a PlantModelOf<Params> (std::bad_cast for another plant's).
+template <class Params>
+const Params& plantModelParams(const PlantModel& model) {
+  return dynamic_cast<const PlantModelOf<Params>&>(model).params;
+}
 
 /// A model with all its free parameters fitted to the training records and run along the
 /// held-out ones.

@@ -85,9 +85,7 @@ bool SweepModelParams::has(EffectId id) const {
   return std::any_of(effects.begin(), effects.end(), [&](const auto& e) { return e.first == id; });
 }
 
-const SweepModelParams& sweepParams(const PlantModel& model) {
-  return dynamic_cast<const SweepModel&>(model).params;
-}
+const SweepModelParams& sweepParams(const PlantModel& model) { return plantModelParams<SweepModelParams>(model); }
 
 const SweepEffectLaw& findSweepEffectLaw(EffectId id) {
   for (const auto& l : lawTable())

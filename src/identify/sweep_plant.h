@@ -34,11 +34,7 @@ struct SweepModelParams {
   bool has(EffectId id) const;
 };
 
-class SweepModel final : public PlantModel {
- public:
-  explicit SweepModel(SweepModelParams params) : params(std::move(params)) {}
-  SweepModelParams params;
-};
+using SweepModel = PlantModelOf<SweepModelParams>;
 /// The parameters inside an engine model of the sweep plant.
 const SweepModelParams& sweepParams(const PlantModel& model);
 

@@ -68,7 +68,7 @@ bool SwingEffects::has(EffectId effect) const {
   }
 }
 
-const SwingModelParams& swingParams(const PlantModel& model) { return dynamic_cast<const SwingModel&>(model).params; }
+const SwingModelParams& swingParams(const PlantModel& model) { return plantModelParams<SwingModelParams>(model); }
 
 SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect, double gridValue) {
   requireSwingEffect(effect);

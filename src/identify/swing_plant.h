@@ -46,11 +46,7 @@ struct SwingModelParams {
 };
 
 /// A swing model as the engine carries it.
-class SwingModel final : public PlantModel {
- public:
-  explicit SwingModel(SwingModelParams params) : params(std::move(params)) {}
-  SwingModelParams params;
-};
+using SwingModel = PlantModelOf<SwingModelParams>;
 /// The parameters inside an engine model of the swing plant.
 const SwingModelParams& swingParams(const PlantModel& model);
 
