@@ -1,13 +1,16 @@
 // swingsim diagnose STUDY.yaml [--out DIR] [--json FILE] [--save-model FILE]: compare, rank
 // candidate missing physical effects, add the accepted ones, refit, and report the error
-// before and after, for either plant (docs/diagnosis.md). All inputs are read before any output.
+// before and after, for any plant (docs/diagnosis.md), with a progress bar per step on stderr. All inputs are read before any output.
+#include <chrono>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "cli/command.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/progress_reporter.h"
 #include "report/diagnosis_markdown.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosed_model_writer.h"
@@ -30,7 +33,21 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
   const auto plant = loadDiagnosisPlant(study, 8);
 
-  const Diagnosis dg = runDiagnosis(*plant, study.settings);
+  // A bar per step of the forward selection (candidates scored), on stderr, once the run has
+  // taken a second (a bench diagnosis ends before that and prints nothing).
+  std::unique_ptr<ProgressReporter> bar;
+  int barStep = -1;
+  const auto start = std::chrono::steady_clock::now();
+  const Diagnosis dg = runDiagnosis(*plant, study.settings, [&](int step, int done, int total) {
+    if (!bar && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 1.0) return;
+    if (step != barStep) {
+      bar = std::make_unique<ProgressReporter>("diagnose " + study.name + ": step " + std::to_string(step + 1),
+                                               "candidates scored");
+      barStep = step;
+    }
+    bar->update(done, total);
+  });
+  bar.reset();
   for (const auto& w : dg.warnings) std::fprintf(stderr, "swingsim diagnose: warning: %s\n", w.c_str());
   const Comparison before = plant->compare(*dg.baseline.model);
   const Comparison after = plant->compare(*dg.final.model);

@@ -348,7 +348,8 @@ std::string describeConfound(const PlantFit& fit, EffectId added, bool withBase)
 
 }  // namespace
 
-Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings) {
+Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings,
+                       const DiagnosisProgress& progress) {
   if (plant.validationStems().empty())
     throw InputError("diagnose: the acceptance rule needs at least one validation file (validate:)");
   const std::vector<EffectId> ids = resolveEffects(plant.kind(), settings.candidates);
@@ -369,9 +370,12 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     step.currentValidationRmse = current.validationRmse;
     std::vector<PlantFit> best(ids.size());
     int applicable = 0;
+    const int total = static_cast<int>(ids.size());
+    if (progress) progress(stepNo, 0, total);
     for (std::size_t i = 0; i < ids.size(); ++i) {
       step.candidates.push_back(scoreCandidate(plant, current, ids[i], settings, &best[i]));
       if (step.candidates.back().notApplicable.empty()) ++applicable;
+      if (progress) progress(stepNo, static_cast<int>(i) + 1, total);
     }
     std::vector<EffectScore*> scores;
     for (auto& c : step.candidates) scores.push_back(&c);

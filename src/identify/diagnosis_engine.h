@@ -7,6 +7,7 @@
 // in the DiagnosisPlant they implement; docs/diagnosis.md explains the statistics.
 #include <Eigen/Dense>
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -212,7 +213,11 @@ struct Diagnosis {
 /// Forward stepwise diagnosis with the acceptance rule of `settings`. Throws InputError for
 /// an unknown candidate name (listing the plant's effects) or no held-out record (the rule
 /// needs held-out data), RunError if the base model cannot run.
-Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings);
+/// `progress` (optional) is called before a step's first candidate and after each, with the
+/// step (0-based) and the candidates scored of the step's total: a progress bar's feed.
+using DiagnosisProgress = std::function<void(int step, int done, int total)>;
+Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings,
+                       const DiagnosisProgress& progress = {});
 
 /// The base model fitted (no candidate): what `swingsim compare` shows. Whiteness of its
 /// likelihood residual with `whitenessLags` lags.
