@@ -402,6 +402,13 @@ PlantFit SweepPlant::fit(const PlantModel& model) const {
     for (Eigen::Index a = 0; a < full.covariance.rows(); ++a)
       for (Eigen::Index b = 0; b < full.covariance.cols(); ++b)
         if (a != b) out.correlation(a, b) = full.covariance(a, b) / std::sqrt(full.covariance(a, a) * full.covariance(b, b));
+  addHeldOutFolds(full, free, fitted, out);
+  out.model = std::make_shared<SweepModel>(fitted);
+  return out;
+}
+
+void SweepPlant::addHeldOutFolds(const SubsetFit& full, const std::vector<std::size_t>& free, SweepModelParams& fitted,
+                                 PlantFit& out) const {
   // Leave one participant out: each fold fits the shared values on the others' rows; the
   // held-out participant is calibrated on its own standard row and predicted.
   double heldSquares = 0;
@@ -448,8 +455,6 @@ PlantFit SweepPlant::fit(const PlantModel& model) const {
     for (const auto& n : fold.notes) out.notes.push_back("without " + name + ": " + n);
   }
   out.pooledValidationRmse = heldCount ? std::sqrt(heldSquares / static_cast<double>(heldCount)) : kNaN;
-  out.model = std::make_shared<SweepModel>(fitted);
-  return out;
 }
 
 std::string SweepPlant::checkApplicable(const PlantModel& model, EffectId effect) const {

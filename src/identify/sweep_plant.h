@@ -137,6 +137,12 @@ class SweepPlant final : public DiagnosisPlant {
   };
   /// The fitted shared values of `model` on the participants in `subset`.
   SubsetFit fitSubset(const SweepModelParams& model, const std::vector<std::size_t>& subset) const;
+  /// Leave one participant out, into `out` (foldRss, foldResidual, validationRmse,
+  /// pooledValidationRmse, notes) and `fitted.heldOutValues`: each fold fits the shared values
+  /// (`free`: indices of the fitted ones) on the others' rows; the held-out participant is
+  /// calibrated on its own standard row and predicted.
+  void addHeldOutFolds(const SubsetFit& full, const std::vector<std::size_t>& free, SweepModelParams& fitted,
+                       PlantFit& out) const;
   /// Participant i's lowered-row residuals (measured - model), whitened (dimensionless).
   std::vector<double> standardized(std::size_t i, const Prediction& p) const;
 
