@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <new>
 #include <exception>
 #include <string>
 #include <vector>
@@ -50,6 +51,10 @@ int main(int argc, char** argv) {
       return command.run();
     } catch (const CLI::ParseError& e) {
       return usageExit(e);
+    } catch (const std::bad_alloc&) {
+      std::fprintf(stderr, "swingsim: out of memory (a memory limit such as ulimit -v, or a container's): run with "
+                           "fewer --jobs or a higher limit; nothing was written\n");
+      return 1;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "swingsim: %s\n", e.what());
       return 1;

@@ -165,7 +165,10 @@ std::vector<std::thread> startWorkerThreads(int threads, const std::function<voi
 /// once, in no set order (results stored by index are the same whatever the thread count).
 /// progress(done, total) is called from the calling thread about every 0.1 s and at the end.
 /// A stop flag (SIGINT) ends it early. Fewer threads, down to the calling thread alone, run
-/// the jobs when threads cannot start (startWorkerThreads). Returns how many ran.
+/// the jobs when threads cannot start (startWorkerThreads) or an address-space limit
+/// (ulimit -v) leaves room for fewer (each says so on stderr). An exception a job throws
+/// (std::bad_alloc included) stops the workers after their current job and is rethrown
+/// here, never std::terminate. Returns how many ran.
 int runParallelJobs(int total, int jobs, const std::function<void(int)>& runOne,
                     const std::function<void(int, int)>& progress = {}, const volatile bool* stopFlag = nullptr);
 

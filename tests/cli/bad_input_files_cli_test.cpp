@@ -4,15 +4,18 @@
 // (`--json /dev/stdout` streams the JSON and leaves the link as it was).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <tuple>
 
 #include "core/output_files.h"
+#include "release_only.h"
 #include "run_swingsim.h"
 #include "study/uncertainty_swings_file.h"
 #include "sweep/sweep.h"
@@ -155,6 +158,26 @@ TEST(BadInputFilesCli, MergeFromAnotherFolderSaysTheStudyPathCameFromTheShards) 
   const auto twice = runSwingsim("merge " + shard.string() + " " + (dir / "." / shard.filename()).string());
   EXPECT_EQ(twice.code, 1) << twice.output;
   EXPECT_THAT(twice.output, HasSubstr("the same file as " + shard.string() + " (arguments 1 and 2): give each shard file once"));
+}
+
+// A large --jobs under an address-space limit (ulimit -v): before issue 29 the threads that
+// started ran out of memory in their first swing and std::bad_alloc aborted the run (exit
+// 134). The pool now starts only the threads the limit leaves room for and says so; the
+// sweep ends normally. (Not under the sanitizers: their shadow memory needs terabytes of
+// address space.)
+TEST(BadInputFilesCli, LargeJobsUnderAnAddressSpaceLimitRunOnTheThreadsThatFit) {
+  SWINGSIM_RELEASE_ONLY();
+  const fs::path dir = freshDir("ulimit");
+  const std::string cmd = "ulimit -v 500000 && " + std::string(SWINGSIM_BINARY) + " sweep " + kRoot +
+                          "/studies/burkett2004.yaml --jobs 64 --out " + (dir / "out").string() + " >/dev/null 2>" +
+                          (dir / "err.txt").string();
+  const int status = std::system(("bash -c '" + cmd + "'").c_str());
+  const std::string err = slurp((dir / "err.txt").string());
+  ASSERT_TRUE(WIFEXITED(status)) << err;
+  EXPECT_EQ(WEXITSTATUS(status), 0) << err;
+  EXPECT_THAT(err, HasSubstr("the address-space limit (ulimit -v 500000 kB) leaves room for"));
+  EXPECT_THAT(err, ::testing::Not(HasSubstr("bad_alloc")));
+  EXPECT_TRUE(fs::exists(dir / "out" / "report.md"));
 }
 
 }  // namespace
