@@ -29,6 +29,8 @@ std::string describe(const YAML::Node& node) {
 // No input of ours comes near this many nodes; an alias of an alias of ... ("billion
 // laughs") does, and walking it would take exponential time.
 constexpr long kMaxYamlNodes = 1000000;
+// Deepest nesting of maps and lists a file may have (ours nest 4 levels at most).
+constexpr int kMaxYamlDepth = 64;
 
 // Values written in the file (aliases counted once): our largest file has a few hundred.
 // Counted on the parser's events before any node is built, so a long list under any key
@@ -77,7 +79,14 @@ class NodeCounter final : public YAML::EventHandler {
 
 // yaml-cpp keeps both entries of a duplicated key; a user who writes a key twice has
 // made a mistake we must not paper over by silently taking one of them.
-void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, long& budget) {
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, long& budget, int depth = 0) {
+  // An alias inside the value it names (`key: &a [*a]`) makes a cycle that no depth ends;
+  // no file of ours nests deeper than a few levels.
+  if (depth > kMaxYamlDepth) {
+    throw InputError(path + ":" + std::to_string(node.Mark().line + 1) + ": values nested more than " +
+                     std::to_string(kMaxYamlDepth) +
+                     " levels deep (does an alias (*name) refer to the value that holds it?)");
+  }
   if (--budget < 0) {
     throw InputError(path + ":" + std::to_string(node.Mark().line + 1) + ": more than " +
                      std::to_string(kMaxYamlNodes) +
@@ -91,10 +100,10 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, long& 
         throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) + ": " +
                          key + ": key appears twice in the same mapping");
       }
-      rejectDuplicateKeys(kv.second, path, budget);
+      rejectDuplicateKeys(kv.second, path, budget, depth + 1);
     }
   } else if (node.IsSequence()) {
-    for (const auto& item : node) rejectDuplicateKeys(item, path, budget);
+    for (const auto& item : node) rejectDuplicateKeys(item, path, budget, depth + 1);
   }
 }
 

@@ -110,5 +110,18 @@ TEST(FuzzRegression, BenchRecordSizeIsBounded) {
   EXPECT_EQ(cylinderStudyError(kBenchHead), "(no error)");
 }
 
+// Fuzz (cylinder_study_fuzz, 2026-11-24): an alias inside the list its anchor names
+// (`key: &a [*a]`) is a cycle; the duplicate-key walk recursed until the stack overflowed.
+TEST(FuzzRegression, AnAliasInsideItsOwnValueIsAnInputErrorNotAStackOverflow) {
+  const std::string error = inputErrorOf([] {
+    YamlMap::loadString("model: &loop\n  - *loop\n", SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml");
+  });
+  EXPECT_THAT(error, HasSubstr("levels deep (does an alias (*name) refer to the value that holds it?)"));
+  // The fuzzer's own input.
+  const std::string found = "# Chie&data/ma^^^`mn-  \n: &data/mauch21^^^^^^^^`ml\n  -  *data/mauch21^^^^^^^^`ml\n"
+                            "  - ../h0\x9ephase.Runo\n";
+  EXPECT_NE(inputErrorOf([&] { YamlMap::loadString(found, SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml"); }), "(no error)");
+}
+
 }  // namespace
 }  // namespace swingsim
