@@ -52,8 +52,8 @@ void readShardKey(const ResultsFileFields& shard, int& index, int& count) {
   index = static_cast<int>(shard.whole("index", static_cast<std::uint64_t>(count - 1)));
 }
 
-SameRunCheck::SameRunCheck(const std::string& path, const std::string& what, const std::string& otherRun)
-    : path_(path), what_(what), otherRun_(otherRun) {}
+SameRunCheck::SameRunCheck(std::string path, std::string what, std::string otherRun)
+    : path_(std::move(path)), what_(std::move(what)), otherRun_(std::move(otherRun)) {}
 
 void SameRunCheck::differ(const std::string& key, const std::string& expected, const std::string& found) const {
   throw InputError(path_ + ": " + key + ": expected " + expected + " (" + what_ + "), found " + found + ": " +

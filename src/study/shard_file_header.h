@@ -51,7 +51,7 @@ class SameRunCheck {
  public:
   /// `path`: the file; `what`: the expected side ("this run", "the first shard, FILE");
   /// `otherRun`: what a difference means ("these swings belong to another analysis").
-  SameRunCheck(const std::string& path, const std::string& what, const std::string& otherRun);
+  SameRunCheck(std::string path, std::string what, std::string otherRun);
   [[noreturn]] void differ(const std::string& key, const std::string& expected, const std::string& found) const;
   /// The "study" key (names quoted).
   void study(const ShardFileRun& expected, const ShardFileRun& found) const;
@@ -67,9 +67,9 @@ class SameRunCheck {
   }
 
  private:
-  const std::string& path_;
-  const std::string& what_;
-  const std::string& otherRun_;
+  std::string path_;
+  std::string what_;
+  std::string otherRun_;
 };
 
 /// What merge checks of one shard file.
