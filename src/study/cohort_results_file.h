@@ -12,18 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "study/shard_file_header.h"
 #include "sweep/cohort_run.h"
 
 namespace swingsim {
 
-/// Identifies the run a file's results belong to; files combine only if all of these agree.
-struct CohortRunIdentity {
-  std::string study;              ///< the study's name
-  std::string studyPath;          ///< the study file as the command line gave it
-  std::string inputsFingerprint;  ///< calcStudyInputsFingerprint of the drawn study
+/// Identifies the run a file's results belong to; files combine only if all of these agree
+/// (study, study path, calcStudyInputsFingerprint of the drawn study and version: ShardFileRun).
+struct CohortRunIdentity : ShardFileRun {
   int participants = 0;
   std::uint64_t seed = 0;
-  std::string version;            ///< swingsim version that computed them
 };
 
 struct CohortResultsFile {

@@ -5,13 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
-#include <map>
 
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "io/json_file.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "study/results_file_fields.h"
+#include "study/shard_file_header.h"
 #include "study/sweep_study.h"
 
 namespace swingsim {
@@ -75,47 +76,20 @@ std::string absolutePath(const std::string& path) {
 
 // ---- Reading, with file: key: expected ..., found ... messages ----------------------------
 
-class Reader {
+const std::string kNotComplete = "this file is not a complete uncertainty swings file";
+
+/// Reads keys of the file's JSON object (or of its "shard" object, with prefix "shard.").
+class Reader : public ResultsFileFields {
  public:
-  Reader(std::string path, const Json& doc) : path_(std::move(path)), doc_(doc) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& expected, const std::string& found) const {
-    throw InputError(path_ + ": " + key + ": expected " + expected + ", found " + found);
-  }
-  static std::string describe(const Json& v) {
-    std::string s = v.dump();
-    if (s.size() > 60) s = s.substr(0, 57) + "...";
-    return s;
-  }
-  const Json& at(const std::string& key) const {
-    if (!doc_.contains(key)) fail(key, "the key (this file is not a complete uncertainty swings file)", "it missing");
-    return doc_.at(key);
-  }
-  std::string text(const std::string& key) const {
-    const Json& v = at(key);
-    if (!v.is_string()) fail(key, "a string", describe(v));
-    return v.get<std::string>();
-  }
-  bool flag(const std::string& key) const {
-    const Json& v = at(key);
-    if (!v.is_boolean()) fail(key, "true or false", describe(v));
-    return v.get<bool>();
-  }
-  std::uint64_t whole(const std::string& key, const Json& v, std::uint64_t max) const {
-    if (!v.is_number_unsigned() || v.get<std::uint64_t>() > max)
-      fail(key, "a whole number from 0 to " + std::to_string(max), describe(v));
-    return v.get<std::uint64_t>();
-  }
-  std::uint64_t whole(const std::string& key, std::uint64_t max) const { return whole(key, at(key), max); }
-
- private:
-  std::string path_;
-  const Json& doc_;
+  Reader(const std::string& path, const Json& doc, std::string prefix = "")
+      : ResultsFileFields(path, doc, kNotComplete, std::move(prefix)) {}
 };
 
 std::string describeCount(std::size_t finished, std::size_t total) {
   return std::to_string(finished) + " of " + std::to_string(total) + " swings";
 }
+
+ShardSlice describeSlice(const UncertaintySwingsFile& s) { return describeShardSlice(s, s.run.swingCount); }
 
 }  // namespace
 
@@ -159,35 +133,23 @@ std::string calcAssumptionsFingerprint(const UncertaintyPlan& plan) {
 UncertaintyRunIdentity makeUncertaintyRunIdentity(const SweepStudy& study, const UncertaintyPlan& plan,
                                                   const std::string& version) {
   UncertaintyRunIdentity id;
-  id.study = study.name;
-  id.studyPath = study.path;  // as given: merge loads it from there (shards and merge share a working folder)
-  id.inputsFingerprint = calcStudyInputsFingerprint(study);
+  static_cast<ShardFileRun&>(id) = makeShardFileRun(study, version);
   id.assumptionsFingerprint = calcAssumptionsFingerprint(plan);
   id.samples = plan.options.samples;
   id.seed = plan.options.seed;
   id.sensitivity = plan.options.sensitivity;
   id.swingCount = plan.swingCount;
-  id.version = version;
   return id;
 }
 
 std::string formatUncertaintySwingsJson(const UncertaintySwingsFile& file) {
   Json j;
-  j["format"] = kFormat;
-  j["format_version"] = kFormatVersion;
-  j["partial"] = file.isPartial();
-  j["study"] = file.run.study;
-  j["study_path"] = file.run.studyPath;
-  j["swingsim_version"] = file.run.version;
-  j["inputs_fingerprint"] = file.run.inputsFingerprint;
+  formatShardFileHead(j, kFormat, kFormatVersion, file.isPartial(), file.run);
   j["assumptions_fingerprint"] = file.run.assumptionsFingerprint;
   j["samples"] = file.run.samples;
   j["seed"] = file.run.seed;
   j["sensitivity"] = file.run.sensitivity;
-  if (file.sharded)
-    j["shard"] = {{"index", file.shardIndex}, {"count", file.shardCount}};
-  else
-    j["shard"] = nullptr;
+  j["shard"] = formatShardKey(file.sharded, file.shardIndex, file.shardCount);
   j["swings_total"] = file.run.swingCount;
   j["first_swing"] = file.first;
   j["last_swing"] = file.last;
@@ -237,17 +199,11 @@ UncertaintySwingsFile readUncertaintySwingsFile(const std::string& path) {
                      "sweep --uncertainty), found text that is not JSON (" + e.what() + ")");
   }
   if (!doc.is_object())
-    throw InputError(path + ": expected a JSON object (an uncertainty swings file), found " + Reader::describe(doc));
+    throw InputError(path + ": expected a JSON object (an uncertainty swings file), found " + describeJsonValue(doc));
   const Reader r(path, doc);
-  if (r.text("format") != kFormat) r.fail("format", std::string("\"") + kFormat + "\"", Reader::describe(doc.at("format")));
-  if (r.whole("format_version", 1000) != kFormatVersion)
-    r.fail("format_version", std::to_string(kFormatVersion), Reader::describe(doc.at("format_version")));
   UncertaintySwingsFile f;
   f.path = path;
-  f.run.study = r.text("study");
-  f.run.studyPath = r.text("study_path");
-  f.run.version = r.text("swingsim_version");
-  f.run.inputsFingerprint = r.text("inputs_fingerprint");
+  static_cast<ShardFileRun&>(f.run) = readShardFileHead(r, doc, kFormat, kFormatVersion);
   f.run.assumptionsFingerprint = r.text("assumptions_fingerprint");
   f.run.samples = static_cast<int>(r.whole("samples", static_cast<std::uint64_t>(kMaxUncertaintySamples)));
   f.run.seed = r.whole("seed", std::numeric_limits<std::uint64_t>::max());
@@ -255,11 +211,9 @@ UncertaintySwingsFile readUncertaintySwingsFile(const std::string& path) {
   const Json& shard = r.at("shard");
   if (!shard.is_null()) {
     if (!shard.is_object() || !shard.contains("index") || !shard.contains("count"))
-      r.fail("shard", "null or {\"index\": K, \"count\": N}", Reader::describe(shard));
+      r.fail("shard", "null or {\"index\": K, \"count\": N}", describeJsonValue(shard));
     f.sharded = true;
-    f.shardCount = static_cast<int>(r.whole("shard.count", shard.at("count"), 1000000));
-    if (f.shardCount < 1) r.fail("shard.count", "a shard count of at least 1", "0");
-    f.shardIndex = static_cast<int>(r.whole("shard.index", shard.at("index"), static_cast<std::uint64_t>(f.shardCount - 1)));
+    readShardKey(Reader(path, shard, "shard."), f.shardIndex, f.shardCount);
   }
   constexpr std::uint64_t kMaxSwings = std::uint64_t{1} << 40;
   f.run.swingCount = r.whole("swings_total", kMaxSwings);
@@ -270,7 +224,7 @@ UncertaintySwingsFile readUncertaintySwingsFile(const std::string& path) {
   const Json& times = r.at("swing_times_s");
   if (!times.is_array() || times.size() != f.last - f.first)
     r.fail("swing_times_s", "a list of " + std::to_string(f.last - f.first) + " swing times (last_swing - first_swing)",
-           times.is_array() ? "a list of " + std::to_string(times.size()) : Reader::describe(times));
+           times.is_array() ? "a list of " + std::to_string(times.size()) : describeJsonValue(times));
   f.times = UncertaintySwingTimes::makeEmpty(f.last - f.first);
   for (std::size_t k = 0; k < times.size(); ++k) {
     const Json& t = times[k];
@@ -280,15 +234,15 @@ UncertaintySwingsFile readUncertaintySwingsFile(const std::string& path) {
       r.fail("swing_times_s[" + std::to_string(k) + "]",
              "a swing time above 0 and at most " + formatNumber(kMaxSwingTime) +
                  " s (the largest time_limit_s a participant takes), or null",
-             Reader::describe(t));
+             describeJsonValue(t));
     f.times.finished[k] = 1;
   }
   const Json& notRun = r.at("not_run");
-  if (!notRun.is_array()) r.fail("not_run", "a list of swing indices", Reader::describe(notRun));
+  if (!notRun.is_array()) r.fail("not_run", "a list of swing indices", describeJsonValue(notRun));
   for (const Json& s : notRun) {
     if (!s.is_number_unsigned() || s.get<std::uint64_t>() < f.first || s.get<std::uint64_t>() >= f.last)
       r.fail("not_run", "swing indices from first_swing to last_swing - 1 (" + std::to_string(f.first) + " to " +
-                            std::to_string(f.last) + " - 1)", Reader::describe(s));
+                            std::to_string(f.last) + " - 1)", describeJsonValue(s));
     f.times.finished[s.get<std::size_t>() - f.first] = 0;
   }
   const std::size_t finished = static_cast<std::size_t>(r.whole("swings_finished", kMaxSwings));
@@ -309,27 +263,19 @@ UncertaintySwingsFile readUncertaintySwingsFile(const std::string& path) {
 
 void checkSameUncertaintyRun(const UncertaintyRunIdentity& expected, const UncertaintySwingsFile& found,
                              const std::string& what) {
-  auto differ = [&](const std::string& key, const std::string& e, const std::string& f) {
-    throw InputError(found.path + ": " + key + ": expected " + e + " (" + what + "), found " + f +
-                     ": these swings belong to another analysis");
-  };
+  const SameRunCheck check(found.path, what, "these swings belong to another analysis");
   const UncertaintyRunIdentity& got = found.run;
-  if (got.study != expected.study) differ("study", "\"" + expected.study + "\"", "\"" + got.study + "\"");
-  if (got.samples != expected.samples)
-    differ("samples", std::to_string(expected.samples), std::to_string(got.samples));
-  if (got.seed != expected.seed) differ("seed", std::to_string(expected.seed), std::to_string(got.seed));
+  check.study(expected, got);
+  check.count("samples", expected.samples, got.samples);
+  check.count("seed", expected.seed, got.seed);
   if (got.sensitivity != expected.sensitivity)
-    differ("sensitivity", expected.sensitivity ? "true" : "false", got.sensitivity ? "true" : "false");
-  if (got.inputsFingerprint != expected.inputsFingerprint)
-    differ("inputs_fingerprint", expected.inputsFingerprint + " (" + expected.studyPath + ")",
-           got.inputsFingerprint + " (" + got.studyPath +
-               "): the study, a participant or a knee model differs (edited, or calibrated otherwise)");
+    check.differ("sensitivity", expected.sensitivity ? "true" : "false", got.sensitivity ? "true" : "false");
+  check.inputs(expected, got, ": the study, a participant or a knee model differs (edited, or calibrated otherwise)");
   if (got.assumptionsFingerprint != expected.assumptionsFingerprint)
-    differ("assumptions_fingerprint", expected.assumptionsFingerprint,
-           got.assumptionsFingerprint + ": the assumption table or its ranges differ (another swingsim version?)");
-  if (got.swingCount != expected.swingCount)
-    differ("swings_total", std::to_string(expected.swingCount), std::to_string(got.swingCount));
-  if (got.version != expected.version) differ("swingsim_version", expected.version, got.version);
+    check.differ("assumptions_fingerprint", expected.assumptionsFingerprint,
+                 got.assumptionsFingerprint + ": the assumption table or its ranges differ (another swingsim version?)");
+  check.count("swings_total", expected.swingCount, got.swingCount);
+  check.version(expected, got);
 }
 
 void copyFinishedSwings(const UncertaintySwingsFile& file, UncertaintySwingTimes& times) {
@@ -343,41 +289,26 @@ void copyFinishedSwings(const UncertaintySwingsFile& file, UncertaintySwingTimes
 UncertaintySwingTimes mergeUncertaintyShards(const std::vector<UncertaintySwingsFile>& shards) {
   if (shards.empty()) throw InputError("merge: expected at least one shard file, found none");
   const UncertaintySwingsFile& head = shards.front();
-  std::map<int, const UncertaintySwingsFile*> byIndex;
+  ShardIndexSet byIndex;
   for (const auto& s : shards) {
-    if (!s.sharded)
-      throw InputError(s.path + ": shard: expected {\"index\": K, \"count\": N} (a file written by sweep --shard K/N), "
-                       "found null (the partial result of a whole run: rerun its sweep command to resume it)");
+    requireShardFile(describeSlice(s));
     if (s.isPartial())
       throw InputError(s.path + ": partial: expected false (a finished shard), found true (" +
                        describeCount(s.times.countFinished(), s.last - s.first) + " of shard " +
                        std::to_string(s.shardIndex) + "/" + std::to_string(s.shardCount) +
                        " ran): rerun that shard's sweep --shard command to finish it");
     if (&s != &head) checkSameUncertaintyRun(head.run, s, "the first shard, " + head.path);
-    if (s.shardCount != head.shardCount)
-      throw InputError(s.path + ": shard.count: expected " + std::to_string(head.shardCount) + " (the first shard, " +
-                       head.path + "), found " + std::to_string(s.shardCount));
-    const auto expected = calcShardSwings(s.run.swingCount, s.shardIndex, s.shardCount);
-    if (s.first != expected.first || s.last != expected.second)
-      throw InputError(s.path + ": first_swing, last_swing: expected " + std::to_string(expected.first) + ", " +
-                       std::to_string(expected.second) + " (shard " + std::to_string(s.shardIndex) + "/" +
-                       std::to_string(s.shardCount) + "), found " + std::to_string(s.first) + ", " +
-                       std::to_string(s.last));
-    const auto [it, added] = byIndex.emplace(s.shardIndex, &s);
-    if (!added)
+    checkShardSlice(describeSlice(s), describeSlice(head), "first_swing, last_swing");
+    if (const std::string* also = byIndex.add(s.shardIndex, s.path))
       throw InputError(s.path + ": shard.index: expected each shard once, found shard " + std::to_string(s.shardIndex) +
-                       "/" + std::to_string(s.shardCount) + " again (also in " + it->second->path + ")");
+                       "/" + std::to_string(s.shardCount) + " again (also in " + *also + ")");
   }
-  std::string missing;
   int missingCount = 0;
-  for (int k = 0; k < head.shardCount; ++k) {
-    if (byIndex.count(k)) continue;
-    if (++missingCount <= 20) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
-  }
+  const std::string missing = byIndex.listMissing(head.shardCount, 20, missingCount);
   if (missingCount > 0)
     throw InputError("merge: expected all " + std::to_string(head.shardCount) + " shards of " + head.run.study +
                      " (K = 0 to " + std::to_string(head.shardCount - 1) + "), found " + std::to_string(byIndex.size()) +
-                     "; missing K = " + missing + (missingCount > 20 ? ", ..." : "") + " (files " +
+                     "; missing K = " + missing + " (files " +
                      uncertaintyShardFileName(0, head.shardCount) + " and the like)");
   UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(head.run.swingCount);
   for (const auto& s : shards) copyFinishedSwings(s, times);
@@ -387,10 +318,7 @@ UncertaintySwingTimes mergeUncertaintyShards(const std::vector<UncertaintySwings
 std::string uncertaintyPartialFileName() { return "uncertainty.partial.json"; }
 
 std::string uncertaintyShardFileName(int index, int shards) {
-  const int width = static_cast<int>(std::to_string(std::max(0, shards - 1)).size());
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "uncertainty-shard-%0*d-of-%d.json", width, index, shards);
-  return buf;
+  return formatShardFileName("uncertainty", index, shards);
 }
 
 }  // namespace swingsim

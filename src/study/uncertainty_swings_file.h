@@ -12,23 +12,21 @@
 #include <string>
 #include <vector>
 
+#include "study/shard_file_header.h"
 #include "sweep/sweep.h"
 #include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
 
 /// Identifies the analysis a file's swings belong to; two files can be combined (or one
-/// resumed) only if all of these agree.
-struct UncertaintyRunIdentity {
-  std::string study;             ///< the study's name
-  std::string studyPath;         ///< the study file as the command line gave it
-  std::string inputsFingerprint;       ///< calcStudyInputsFingerprint
+/// resumed) only if all of these agree (study, study path, calcStudyInputsFingerprint and
+/// version: ShardFileRun).
+struct UncertaintyRunIdentity : ShardFileRun {
   std::string assumptionsFingerprint;  ///< calcAssumptionsFingerprint
   int samples = 0;               ///< Monte Carlo samples asked
   std::uint64_t seed = 0;
   bool sensitivity = true;       ///< the one-at-a-time runs are part of the swings
   std::size_t swingCount = 0;    ///< swings of the whole analysis (UncertaintyPlan::swingCount)
-  std::string version;           ///< swingsim version that computed them
 };
 
 /// One file: the identity, which slice of the swings it covers, and their times.

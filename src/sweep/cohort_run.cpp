@@ -15,15 +15,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The study's grid lowerings for a participant (no Table 4 extras).
-std::vector<double> gridLowerings(const SweepStudy& study, const Participant& p) {
-  SweepStudy grid;
-  grid.loweringStep = study.loweringStep;
-  grid.loweringMax = study.loweringMax;
-  grid.includePublishedLowerings = false;
-  return sweepLowerings(grid, p);
-}
-
 double swingTimeOrNaN(const SwingSetup& setup, const SwingOptions& options) {
   try {
     return simulateSwing(setup, options).swingTime;
@@ -90,7 +81,7 @@ CohortParticipantResult runCohortParticipant(const Cohort& cohort, std::size_t i
   p.hipMoment.timeScale = r.timeScale;
   SwingOptions options = study.swing;
   options.recordTrajectory = false;
-  r.sweep.lowerings = gridLowerings(study, p);
+  r.sweep.lowerings = sweepGridLowerings(study, p);
   for (double d : r.sweep.lowerings) r.sweep.swingTimes.push_back(swingTimeOrNaN(makeSwingSetup(p, model, d), options));
   pickBest(r.sweep);
   return r;

@@ -153,6 +153,14 @@ std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p
   return out;
 }
 
+std::vector<double> sweepGridLowerings(const SweepStudy& study, const Participant& p) {
+  SweepStudy grid;
+  grid.loweringStep = study.loweringStep;
+  grid.loweringMax = study.loweringMax;
+  grid.includePublishedLowerings = false;
+  return sweepLowerings(grid, p);
+}
+
 std::uint64_t countSweepSwings(const SweepStudy& study) {
   std::vector<double> distances = study.addedMassDistances;
   std::sort(distances.begin(), distances.end());

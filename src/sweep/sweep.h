@@ -175,6 +175,10 @@ int runParallelJobs(int total, int jobs, const std::function<void(int)>& runOne,
 /// Lowerings for a participant: 0, step, 2 step, ... up to min(max, cap), plus the
 /// Table 4 lowerings if requested, sorted.
 std::vector<double> sweepLowerings(const SweepStudy& study, const Participant& p);
+/// The on-grid lowerings of sweepLowerings for a participant (m): 0, step, 2 step, ... up to
+/// min(max, cap), without the Table 4 extras (they are never the "fastest" in runSweep
+/// either); the lowerings each uncertainty run and each cohort participant sweeps.
+std::vector<double> sweepGridLowerings(const SweepStudy& study, const Participant& p);
 
 /// Runs the sweep on `jobs` threads (0 = all cores). `progress(done, total)` is called
 /// from the calling thread only. A stop flag (SIGINT) ends it early: unfinished points

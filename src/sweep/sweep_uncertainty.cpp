@@ -18,16 +18,6 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 constexpr double kSameSwingTime = 1e-12;  // s: a later lowering must be faster than this to win (as runSweep)
 
-// The study's on-grid lowerings for a participant (no Table 4 extras: they are never the
-// "fastest" in runSweep either).
-std::vector<double> gridLowerings(const SweepStudy& study, const Participant& p) {
-  SweepStudy grid;
-  grid.loweringStep = study.loweringStep;
-  grid.loweringMax = study.loweringMax;
-  grid.includePublishedLowerings = false;
-  return sweepLowerings(grid, p);
-}
-
 double percentileSorted(const std::vector<double>& v, double q) {
   const double h = q * static_cast<double>(v.size() - 1);
   const auto lo = static_cast<std::size_t>(std::floor(h));
@@ -156,7 +146,7 @@ UncertaintyPlan planSweepUncertainty(const SweepStudy& study, const UncertaintyO
       throw RunError("sweep " + study.name + ": participant " + variant.participant.name +
                      ": an assumption's value makes an unusable knee law: " + e.what());
     }
-    run.lowerings = gridLowerings(study, variant.participant);
+    run.lowerings = sweepGridLowerings(study, variant.participant);
     run.firstSwing = plan.swingCount;
     plan.swingCount += run.lowerings.size();
     plan.runs.push_back(std::move(run));

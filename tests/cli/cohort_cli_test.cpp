@@ -20,6 +20,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
+using swingsim::testing::ScopedEnv;
 using swingsim::testing::slurp;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
@@ -49,15 +50,6 @@ std::map<std::string, std::string> readTree(const fs::path& dir) {
     if (e.is_regular_file()) files[e.path().filename().string()] = slurp(e.path());
   return files;
 }
-
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
-  ~ScopedEnv() { unsetenv(name_); }
-
- private:
-  const char* name_;
-};
 
 TEST(CohortCli, ShardsMergeAndResumeToTheWholeRunByteForByte) {
   const fs::path dir = freshTempDir(kSuite, "shards");

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -71,5 +72,18 @@ inline std::filesystem::path writeTinySweepStudy(const std::filesystem::path& di
                       << extra;
   return path;
 }
+
+/// Sets an environment variable for the runs of one scope (popen passes it on to the
+/// binary) and unsets it at the end of the scope.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
+  ~ScopedEnv() { unsetenv(name_); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+};
 
 }  // namespace swingsim::testing

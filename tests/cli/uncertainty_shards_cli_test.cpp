@@ -30,6 +30,7 @@ using ::testing::Not;
 using swingsim::testing::CliRun;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
+using swingsim::testing::ScopedEnv;
 using swingsim::testing::slurp;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
@@ -38,16 +39,6 @@ const std::string kSuite = "swingsim-uncertainty-shards";
 fs::path writeTinyStudy(const fs::path& dir) {
   return swingsim::testing::writeTinySweepStudy(dir, 0.1, "output_dir: " + (dir / "default-out").string() + "\n");
 }
-
-// Sets an environment variable for the runs of one scope (popen passes it on).
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
-  ~ScopedEnv() { unsetenv(name_); }
-
- private:
-  const char* name_;
-};
 
 // Every file under `dir`, relative name -> contents.
 std::map<std::string, std::string> readTree(const fs::path& dir) {

@@ -1,0 +1,126 @@
+#pragma once
+// What the two resumable, shardable results files (cohort_results_file.h,
+// uncertainty_swings_file.h) have in common: the header keys they begin with and their
+// "shard" key, the check that a file belongs to the same run, and the checks merge makes of
+// a set of shard files (each a finished shard of the same count, its slice the one
+// calcShardSwings gives its K, each K once, none missing). The wording of a message that
+// one format words otherwise stays with that format.
+#include <cstddef>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/json_file.h"
+#include "study/results_file_fields.h"
+#include "sweep/sweep.h"
+
+namespace swingsim {
+
+/// The part of a run's identity every results file names; files combine only if it agrees
+/// (and the format's own keys do).
+struct ShardFileRun {
+  std::string study;              ///< the study's name
+  std::string studyPath;          ///< the study file as the command line gave it
+  std::string inputsFingerprint;  ///< calcStudyInputsFingerprint of the study
+  std::string version;            ///< swingsim version that computed the results
+};
+
+/// The run part of `study` as given (its path as the command line gave it: merge loads it
+/// from there, shards and merge sharing a working folder), computed by swingsim `version`.
+ShardFileRun makeShardFileRun(const SweepStudy& study, const std::string& version);
+
+/// Writes the keys a results file begins with, in this order: format, format_version,
+/// partial, study, study_path, swingsim_version, inputs_fingerprint. "format" comes first
+/// (isCohortResultsFile reads only a file's head).
+void formatShardFileHead(Json& j, const char* format, int formatVersion, bool partial, const ShardFileRun& run);
+/// The value of the "shard" key: {"index": K, "count": N}, or null for a whole run's
+/// partial result (`sharded` false).
+Json formatShardKey(bool sharded, int index, int count);
+
+/// Reads and checks format and format_version, then reads study, study_path,
+/// swingsim_version and inputs_fingerprint (in that order, so the first bad key is named).
+ShardFileRun readShardFileHead(const ResultsFileFields& f, const Json& doc, const char* format, int formatVersion);
+/// Reads a non-null "shard" value (`shard` reads it, prefix "shard."): count (at least 1),
+/// then index (0 to count - 1), into `count` and `index`.
+void readShardKey(const ResultsFileFields& shard, int& index, int& count);
+
+/// Compares a file's run with the run expected, key by key in the caller's order; the first
+/// key that differs throws InputError `FILE: KEY: expected E (WHAT), found F: OTHER_RUN`.
+class SameRunCheck {
+ public:
+  /// `path`: the file; `what`: the expected side ("this run", "the first shard, FILE");
+  /// `otherRun`: what a difference means ("these swings belong to another analysis").
+  SameRunCheck(std::string path, std::string what, std::string otherRun);
+  [[noreturn]] void differ(const std::string& key, const std::string& expected, const std::string& found) const;
+  /// The "study" key (names quoted).
+  void study(const ShardFileRun& expected, const ShardFileRun& found) const;
+  /// The "inputs_fingerprint" key, each with its study path; `why` follows the found side
+  /// (": the study, ... differs").
+  void inputs(const ShardFileRun& expected, const ShardFileRun& found, const std::string& why) const;
+  /// The "swingsim_version" key.
+  void version(const ShardFileRun& expected, const ShardFileRun& found) const;
+  /// A whole-number key (participants, samples, seed, swings_total).
+  template <class T>
+  void count(const std::string& key, T expected, T found) const {
+    if (found != expected) differ(key, std::to_string(expected), std::to_string(found));
+  }
+
+ private:
+  std::string path_;
+  std::string what_;
+  std::string otherRun_;
+};
+
+/// What merge checks of one shard file.
+struct ShardSlice {
+  const std::string* path = nullptr;
+  bool sharded = false;
+  int index = 0, count = 1;         ///< K and N of `--shard K/N`
+  std::size_t first = 0, last = 0;  ///< the items it covers, [first, last)
+  std::size_t total = 0;            ///< items of the whole run (participants, swings)
+};
+
+/// The slice of a results file (CohortResultsFile, UncertaintySwingsFile: path, sharded,
+/// shardIndex, shardCount, first, last) of a run of `total` items.
+template <class ResultsFile>
+ShardSlice describeShardSlice(const ResultsFile& file, std::size_t total) {
+  ShardSlice slice;
+  slice.path = &file.path;
+  slice.sharded = file.sharded;
+  slice.index = file.shardIndex;
+  slice.count = file.shardCount;
+  slice.first = file.first;
+  slice.last = file.last;
+  slice.total = total;
+  return slice;
+}
+
+/// Throws InputError `FILE: shard: expected {"index": K, "count": N} ..., found null ...`
+/// if the file is a whole run's partial result, not a shard.
+void requireShardFile(const ShardSlice& s);
+/// The checks of a shard against the first of its set, in this order: the same shard count
+/// as `head` (key shard.count), then the slice calcShardSwings gives its K (key
+/// `sliceKeys`, e.g. "first_swing, last_swing"). Throws InputError naming file and key.
+void checkShardSlice(const ShardSlice& s, const ShardSlice& head, const std::string& sliceKeys);
+
+/// The file name of shard K of N: `STEM-shard-K-of-N.json`, K zero-padded to the width of
+/// N - 1 ("cohort-shard-03-of-12.json").
+std::string formatShardFileName(const std::string& stem, int index, int shards);
+
+/// The K of a shard set as merge meets them, each with its file.
+class ShardIndexSet {
+ public:
+  /// Records shard K of the file at `path` (kept by reference); returns the file that had
+  /// this K already, or nullptr.
+  const std::string* add(int index, const std::string& path);
+  std::size_t size() const { return byIndex_.size(); }
+  /// The K from 0 to count - 1 that no file had, in order: "0, 3" (at most `listed`, then
+  /// ", ..."), and how many they are in `missingCount`.
+  std::string listMissing(int count, int listed, int& missingCount) const;
+
+ private:
+  std::map<int, const std::string*> byIndex_;
+};
+
+}  // namespace swingsim
