@@ -110,7 +110,7 @@ TEST(FuzzRegression, BenchRecordSizeIsBounded) {
   EXPECT_EQ(cylinderStudyError(kBenchHead), "(no error)");
 }
 
-// Fuzz (cylinder_study_fuzz, 2026-11-24): an alias inside the list its anchor names
+// Fuzz (cylinder_study_fuzz and diagnosis_study_fuzz, 2026-11-24): an alias inside the list its anchor names
 // (`key: &a [*a]`) is a cycle; the duplicate-key walk recursed until the stack overflowed.
 TEST(FuzzRegression, AnAliasInsideItsOwnValueIsAnInputErrorNotAStackOverflow) {
   const std::string error = inputErrorOf([] {
@@ -121,6 +121,11 @@ TEST(FuzzRegression, AnAliasInsideItsOwnValueIsAnInputErrorNotAStackOverflow) {
   const std::string found = "# Chie&data/ma^^^`mn-  \n: &data/mauch21^^^^^^^^`ml\n  -  *data/mauch21^^^^^^^^`ml\n"
                             "  - ../h0\x9ephase.Runo\n";
   EXPECT_NE(inputErrorOf([&] { YamlMap::loadString(found, SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml"); }), "(no error)");
+  // diagnosis_study_fuzz's: the anchor on the whole file, its alias under one of its keys.
+  EXPECT_THAT(inputErrorOf([] {
+                YamlMap::loadString(" &./paemo-swing\npast: *./paemo-swing\naswg \n", SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml");
+              }),
+              HasSubstr("levels deep"));
 }
 
 }  // namespace
