@@ -136,11 +136,7 @@ CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& curre
   c.trainRmse = s.trainRmse;
   c.validationRmse = s.validationRmse;
   c.pooledValidationRmse = s.pooledValidationRmse;
-  applyTestAndValidation(c, t, dof, current.validationRmse, settings);
-  // A pooled held-out rule (leave one participant out) replaces the per-record one.
-  if (std::isfinite(current.pooledValidationRmse) || std::isfinite(s.pooledValidationRmse))
-    c.validationImproves =
-        s.pooledValidationRmse <= current.pooledValidationRmse * (1.0 - settings.minValidationImprovement);
+  applyTestAndValidation(c, t, dof, current.validationRmse, settings, current.pooledValidationRmse);
   const double inflate = calcStandardErrorInflation(static_cast<double>(s.samples), t.nEff);
   c.parameters = parametersWithIntervals(plant, s, id, inflate);
   if (!d.grid.empty()) {

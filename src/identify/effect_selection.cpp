@@ -22,13 +22,17 @@ LrTest calcLrTest(double rssSmaller, double rssBigger, const ResidualSegments& b
 }
 
 void applyTestAndValidation(EffectScore& c, const LrTest& t, int dof, const std::vector<double>& currentValidationRmse,
-                            const EffectSelectionSettings& settings) {
+                            const EffectSelectionSettings& settings, double currentPooledValidationRmse) {
   c.dof = dof;
   c.effectiveSamples = t.nEff;
   c.likelihoodRatio = t.lr;
   c.pValue = t.p;
   c.deltaBic = t.deltaBic;
   c.bicImproves = c.deltaBic < 0;
+  if (std::isfinite(currentPooledValidationRmse) || std::isfinite(c.pooledValidationRmse)) {
+    c.validationImproves = c.pooledValidationRmse <= currentPooledValidationRmse * (1.0 - settings.minValidationImprovement);
+    return;
+  }
   c.validationImproves = !currentValidationRmse.empty() && c.validationRmse.size() == currentValidationRmse.size();
   for (std::size_t v = 0; v < c.validationRmse.size() && v < currentValidationRmse.size(); ++v) {
     if (!(c.validationRmse[v] <= currentValidationRmse[v] * (1.0 - settings.minValidationImprovement)))

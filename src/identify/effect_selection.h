@@ -72,10 +72,13 @@ struct LrTest {
 };
 LrTest calcLrTest(double rssSmaller, double rssBigger, const ResidualSegments& biggerResidual, int dof);
 
-/// Writes the test into `score` (n_eff, LR, dof, p, delta BIC, bicImproves) and whether every
-/// held-out RMSE fell by at least the settings' margin from `currentValidationRmse`.
-void applyTestAndValidation(EffectScore& score, const LrTest& test, int dof,
-                            const std::vector<double>& currentValidationRmse, const EffectSelectionSettings& settings);
+/// Writes the test into `score` (n_eff, LR, dof, p, delta BIC, bicImproves) and whether the
+/// held-out error fell by at least the settings' margin: every record's RMSE from
+/// `currentValidationRmse`; or, for a cross-validated plant (leave one participant out: a
+/// finite `currentPooledValidationRmse` or `score.pooledValidationRmse`), the pooled RMSE.
+void applyTestAndValidation(EffectScore& score, const LrTest& test, int dof, const std::vector<double>& currentValidationRmse,
+                            const EffectSelectionSettings& settings,
+                            double currentPooledValidationRmse = std::numeric_limits<double>::quiet_NaN());
 
 /// Standard error inflation for autocorrelated residuals: sqrt(n / n_eff).
 double calcStandardErrorInflation(double samples, double effectiveSamples);

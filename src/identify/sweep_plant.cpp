@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "numerics/bounded_least_squares.h"
+#include "numerics/metrics.h"
 #include "sweep/sweep_uncertainty.h"
 #include "swing/knee_setup.h"
 
@@ -62,13 +63,6 @@ double valueOf(const SweepModelParams& p, EffectId id) {
   for (const auto& [e, v] : p.effects)
     if (e == id) return v;
   return kNaN;
-}
-
-double rms(const std::vector<double>& v) {
-  if (v.empty()) return kNaN;
-  double s = 0;
-  for (double x : v) s += x * x;
-  return std::sqrt(s / static_cast<double>(v.size()));
 }
 
 // Effects with a continuously fitted value (not the COM rule's choice), in model order.
@@ -448,7 +442,7 @@ void SweepPlant::addHeldOutFolds(const SubsetFit& full, const std::vector<std::s
     }
     for (double e : errors) heldSquares += e * e;
     heldCount += errors.size();
-    out.validationRmse.push_back(rms(errors));
+    out.validationRmse.push_back(calcRms(errors));
     std::vector<double> values;
     for (const auto& e : fold.params.effects) values.push_back(e.second);
     fitted.heldOutValues.push_back(values);
@@ -566,7 +560,7 @@ std::vector<NoiseEstimate> SweepPlant::estimateRecordNoise() const {
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t i : inModel_) {
       const auto& e = participants_[i].standardErrors;
-      out.push_back({rms(e) * kMs, static_cast<std::size_t>(std::max(1.0, std::floor(participants_[i].effectiveRows)))});
+      out.push_back({calcRms(e) * kMs, static_cast<std::size_t>(std::max(1.0, std::floor(participants_[i].effectiveRows)))});
     }
   return out;
 }
