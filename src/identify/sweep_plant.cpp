@@ -20,6 +20,10 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMs = 1000.0;               // ms per s: the compared quantity is in ms
 constexpr double kTempoReference = 0.1;      // m: the hip tempo's c is per 0.1 m of lowering
 constexpr double kPhaseSplitLowering = 0.1;  // m: the two "phases" of a sweep, near and far
+
+// The phase of a row at `lowering` (m): 0 up to kPhaseSplitLowering, 1 beyond (phaseNames).
+int loweringPhase(double lowering) { return lowering > kPhaseSplitLowering ? 1 : 0; }
+
 // Calibration of a time scale inside a fit: 1 us, far below a row's standard error (10-25 ms)
 // and below what a difference step of a shared value moves the swing time (0.1-1 ms).
 constexpr double kCalibrationTolerance = 1e-6;  // s
@@ -364,7 +368,7 @@ PlantFit SweepPlant::fit(const PlantModel& model) const {
     for (std::size_t k = 0; k < z.size(); ++k) {
       out.rss += z[k] * z[k];
       ms.push_back((participants_[i].lowered[k].swingTime - full.predictions[s].times[k]) * kMs);
-      phase.push_back(participants_[i].lowered[k].lowering > kPhaseSplitLowering ? 1 : 0);
+      phase.push_back(loweringPhase(participants_[i].lowered[k].lowering));
       squares += ms.back() * ms.back();
       ++count;
     }
@@ -533,7 +537,7 @@ Comparison SweepPlant::compare(const PlantModel& model) const {
         r.time.push_back(rows.lowered[k].lowering);
         r.measured.push_back(rows.lowered[k].swingTime * kMs);
         r.predicted.push_back(pred.times[k] * kMs);
-        r.phase.push_back(rows.lowered[k].lowering > kPhaseSplitLowering ? 1 : 0);
+        r.phase.push_back(loweringPhase(rows.lowered[k].lowering));
         lowering.values.push_back(rows.lowered[k].lowering * kMs);
       }
       r.variables.push_back(lowering);
