@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 reps="${1:-10}"
 build=build-perf
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+bash scripts/configure.sh "$build" -DCMAKE_BUILD_TYPE=Release
 make -C "$build" -j2 swingsim_bench >/dev/null
 mkdir -p out/bench
 json=out/bench/bench.json

@@ -3,9 +3,9 @@
 # Usage: bash scripts/bootstrap.sh [extra cmake args]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-packages=(build-essential cmake libsimbody-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
+packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
           nlohmann-json3-dev libboost-math-dev libcli11-dev libceres-dev libtinyxml2-dev
           pybind11-dev python3-dev python3-numpy python3-pytest)
 bash scripts/install-packages.sh "${packages[@]}"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+bash scripts/configure.sh build -DCMAKE_BUILD_TYPE=Release "$@"
 cmake --build build -j"$(nproc)"

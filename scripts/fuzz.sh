@@ -18,10 +18,10 @@ targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
 
 # clang and its sanitizer/fuzzer runtimes (Debian 12: clang-14, libclang-rt-14-dev).
-packages=(clang libclang-rt-dev build-essential cmake libsimbody-dev libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev)
+packages=(clang libclang-rt-dev build-essential cmake libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev)
 bash scripts/install-packages.sh "${packages[@]}"
 
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DSWINGSIM_FUZZ=ON -DSWINGSIM_BUILD_BENCH=OFF \
+CC=clang CXX=clang++ bash scripts/configure.sh build-fuzz -DSWINGSIM_FUZZ=ON -DSWINGSIM_BUILD_BENCH=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 nice -n 10 cmake --build build-fuzz -j2 --target "${targets[@]}"
 

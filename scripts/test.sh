@@ -3,6 +3,9 @@
 #   1. build/       Release, as users build it; then the Slurm proof (scripts/slurm-local.sh);
 #   2. build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (RelWithDebInfo): any
 #                   report (memory error, leak, undefined behaviour) fails the run.
+#                   Our code is compiled with NDEBUG there too (as everything that includes
+#                   Simbody's headers must be) and linked to the same Release Simbody of
+#                   scripts/simbody.sh: the sanitizers instrument our code, not Simbody's.
 # Sanitizer reports exit with code 86, so a CLI test expecting exit code 1 (bad input)
 # cannot mistake a crashed child for a clean refusal.
 # Known reports from outside our code are suppressed, one documented line each, in
@@ -22,7 +25,7 @@ bash scripts/slurm-local.sh
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)" >&2
 # At most 2 jobs: sanitized compiles and tests take 2-3x the memory of plain ones.
 jobs=$(( $(nproc) < 2 ? $(nproc) : 2 ))
-cmake -S . -B build-asan -DSWINGSIM_SANITIZE=ON -DSWINGSIM_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+bash scripts/configure.sh build-asan -DSWINGSIM_SANITIZE=ON -DSWINGSIM_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 supp="$PWD/scripts/sanitizer-suppressions"
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:exitcode=86"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:exitcode=86:suppressions=$supp/ubsan.supp"

@@ -28,11 +28,12 @@ fs::path freshDir(const std::string& name) { return swingsim::testing::freshTemp
 using swingsim::testing::slurp;
 
 // A one-participant study; `step` sets how many swings it runs.
-fs::path writeStudy(const fs::path& dir, const std::string& name, double step, double max) {
+// `extra`: more study lines (e.g. a slow integrator accuracy for the interrupt tests).
+fs::path writeStudy(const fs::path& dir, const std::string& name, double step, double max, const std::string& extra = "") {
   const fs::path study = dir / (name + ".yaml");
   std::ofstream(study) << "kind: knee-axis-sweep\nname: " << name << "\nparticipants: ["
                        << fs::absolute("participants/p1.yaml").string() << "]\nlowering: {step_m: " << step
-                       << ", max_m: " << max << ", include_published: false}\n";
+                       << ", max_m: " << max << ", include_published: false}\n" << extra;
   return study;
 }
 
@@ -75,8 +76,10 @@ int swingsDone(const std::string& log) {
 
 TEST(SweepRobustness, SigintKeepsFinishedRowsReadableNamesTheMissingAndWritesNoReport) {
   const fs::path dir = freshDir("sigint");
-  // 201 swings of 1 mm lowering steps: long enough to interrupt after the first 10 %.
-  const fs::path study = writeStudy(dir, "interrupted", 0.001, 0.2);
+  // 201 swings of 1 mm lowering steps at accuracy 1e-10 (about 50 ms a swing): seconds of
+  // work remain after the first progress line however late the signal comes on a loaded
+  // machine (at the default 1e-5 the whole sweep takes 0.3 s).
+  const fs::path study = writeStudy(dir, "interrupted", 0.001, 0.2, "integrator: {accuracy: 1e-10}\n");
   const fs::path out = dir / "out";
   const fs::path log = dir / "log.txt";
   const pid_t pid = spawn({"sweep", study.string(), "--out", out.string(), "--jobs", "1", "--json",

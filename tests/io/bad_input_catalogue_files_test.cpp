@@ -25,6 +25,7 @@
 
 #include "../cli/release_only.h"
 #include "../cli/run_swingsim.h"
+#include "../core/cpu_time.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/output_paths.h"
@@ -41,7 +42,7 @@ using ::testing::HasSubstr;
 using ::testing::StartsWith;
 namespace fs = std::filesystem;
 
-constexpr double kLinearCheck = 3.0;  // s: labels hashed once; pairwise would take minutes to hours
+constexpr double kLinearCheck = 3.0;  // CPU s (1.0-1.4 s): labels hashed once; pairwise would take minutes to hours
 
 fs::path scratch(const std::string& name) { return swingsim::testing::freshTempDir("catalogue-files", name); }
 
@@ -69,7 +70,7 @@ TEST(BadInputCatalogueFiles, MotionHeaderOfMillionsOfLabelsIsCheckedInLinearTime
   for (int i = 0; i < kLabels; ++i) text += " c" + std::to_string(i);
   text += " c0\n";  // the repeat is the last label: a pairwise check reaches it after 5e11 comparisons
   std::string e;
-  EXPECT_LT(secondsOf([&] { e = errorOf([&] { parseMotionTable(text, "wide.mot"); }); }), kLinearCheck);
+  EXPECT_LT(swingsim::testing::cpuSecondsOf([&] { e = errorOf([&] { parseMotionTable(text, "wide.mot"); }); }), kLinearCheck);
   EXPECT_THAT(e, StartsWith("wide.mot:4: c0: column label appears twice"));
 }
 
@@ -82,14 +83,14 @@ TEST(BadInputCatalogueFiles, CsvHeaderOfMillionsOfColumnsIsCheckedInLinearTime) 
   CsvSpec spec;
   spec.required = {"time_s"};
   std::string e;
-  EXPECT_LT(secondsOf([&] { e = errorOf([&] { parseCsv(text, "wide.csv", spec); }); }), kLinearCheck);
+  EXPECT_LT(swingsim::testing::cpuSecondsOf([&] { e = errorOf([&] { parseCsv(text, "wide.csv", spec); }); }), kLinearCheck);
   EXPECT_THAT(e, StartsWith("wide.csv:1: c0: column appears twice in the header"));
 }
 
 // ---- Opens that cannot block -------------------------------------------------------------
 
 // The wait on a FIFO nobody serves: kFifoWaitSeconds, and not much more.
-constexpr double kWaitSlack = 3.0;  // s: thread start-up and a loaded CI machine
+constexpr double kWaitSlack = 25.0;  // s: a hang guard (a wait that does not stop at the limit); load adds seconds, never 25
 
 TEST(BadInputCatalogueFiles, FifoThatNobodyWritesIsRefusedAfterTheDocumentedWait) {
   const fs::path fifo = scratch("fifo-in") / "study.yaml";
@@ -271,7 +272,7 @@ TEST(BadInputCatalogueFiles, AMillionPointAddedMassGridIsCountedAtOnce) {
       dir, 0.1, "added_mass: {mass_kg: [0, " + masses + "], distance_below_knee_m: [" + distances + "]}\n");
   const SweepStudy s = loadSweepStudy(study.string());
   std::uint64_t swings = 0;
-  EXPECT_LT(secondsOf([&] { swings = countSweepSwings(s); }), 1.0);
+  EXPECT_LT(swingsim::testing::cpuSecondsOf([&] { swings = countSweepSwings(s); }), 1.0);
   // Lowerings 0, 0.05 and 0.1 m; every distance (at most 0.1 m) fits on the shortened shank.
   const std::uint64_t lowerings = sweepLowerings(s, s.participants.front()).size();
   EXPECT_EQ(lowerings, 3u);

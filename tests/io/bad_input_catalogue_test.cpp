@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "../cli/run_swingsim.h"
+#include "../core/cpu_time.h"
 #include "io/bench_csv.h"
 #include "identify/bench_data.h"
 #include "knee/bench_profile.h"
@@ -234,10 +235,10 @@ TEST(BadInputCatalogue, YamlAliasBombIsRefusedQuickly) {
     for (int k = 0; k < 10; ++k) text += (k ? ", *a" : "*a") + std::to_string(i - 1);
     text += "]\n";
   }
-  const auto start = std::chrono::steady_clock::now();
-  for (const auto& l : yamlLoaders()) EXPECT_THAT(errorOf(l, text), StartsWith(l.file + ":")) << l.name;
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  constexpr double kQuick = 10.0;  // s, for all loaders under sanitizers; 10^12 nodes would take days
+  const double seconds = swingsim::testing::cpuSecondsOf([&] {
+    for (const auto& l : yamlLoaders()) EXPECT_THAT(errorOf(l, text), StartsWith(l.file + ":")) << l.name;
+  });
+  constexpr double kQuick = 10.0;  // CPU s, for all loaders under sanitizers (1.4 s); 10^12 nodes would take days
   EXPECT_LT(seconds, kQuick);
 }
 
@@ -390,18 +391,18 @@ TEST(BadInputCatalogue, CsvTenMillionRowsAreRefusedQuickly) {
     }
     std::fclose(f);
   }
-  const auto start = std::chrono::steady_clock::now();
   std::string error;
-  try {
-    readBenchCsv(path.string(), 3);
-  } catch (const InputError& e) {
-    error = e.what();
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = swingsim::testing::cpuSecondsOf([&] {
+    try {
+      readBenchCsv(path.string(), 3);
+    } catch (const InputError& e) {
+      error = e.what();
+    }
+  });
   fs::remove(path);
   EXPECT_THAT(error, HasSubstr("ten-million.csv: too many rows (more than 2000000"));
   EXPECT_THAT(error, HasSubstr("split the file or resample it"));
-  constexpr double kQuick = 30.0;  // s, under sanitizers on a loaded 2-core machine (plain build: < 1 s)
+  constexpr double kQuick = 30.0;  // CPU s, under sanitizers (13.5 s; plain build: < 1 s)
   EXPECT_LT(seconds, kQuick);
 }
 
@@ -502,13 +503,9 @@ std::string loadError(const std::function<void()>& load) {
   return "";
 }
 
-double secondsOf(const std::function<void()>& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using swingsim::testing::cpuSecondsOf;
 
-constexpr double kQuickRefusal = 2.0;  // s: a refusal reads at most 16 MiB, never the whole input
+constexpr double kQuickRefusal = 2.0;  // CPU s (0.5 s under sanitizers): a refusal reads at most 16 MiB, never the whole input
 
 TEST(BadInputCatalogue, YamlFileOverTheSizeLimitIsRefusedNamingItsSizeAndTheLimit) {
   const fs::path path = tempDir() / "huge.yaml";
@@ -518,7 +515,7 @@ TEST(BadInputCatalogue, YamlFileOverTheSizeLimitIsRefusedNamingItsSizeAndTheLimi
     for (int i = 0; i < 17 * 1024; ++i) out << line << '\n';  // 17 MiB of comments
   }
   std::string e;
-  EXPECT_LT(secondsOf([&] { e = loadError([&] { loadParticipant(path.string()); }); }), kQuickRefusal);
+  EXPECT_LT(cpuSecondsOf([&] { e = loadError([&] { loadParticipant(path.string()); }); }), kQuickRefusal);
   fs::remove(path);
   EXPECT_THAT(e, StartsWith(path.string() + ": file too large"));
   EXPECT_THAT(e, HasSubstr("(17 MiB; the limit is 16 MiB"));
@@ -526,7 +523,7 @@ TEST(BadInputCatalogue, YamlFileOverTheSizeLimitIsRefusedNamingItsSizeAndTheLimi
 
 TEST(BadInputCatalogue, DevZeroIsRefusedByTheBoundedReaderNotReadForever) {
   std::string e;
-  EXPECT_LT(secondsOf([&] { e = loadError([] { loadParticipant("/dev/zero"); }); }), kQuickRefusal);
+  EXPECT_LT(cpuSecondsOf([&] { e = loadError([] { loadParticipant("/dev/zero"); }); }), kQuickRefusal);
   EXPECT_THAT(e, StartsWith("/dev/zero: file too large"));
   EXPECT_THAT(e, HasSubstr("not at its end (a device or a pipe?)"));
   EXPECT_THAT(e, HasSubstr("the limit is 16 MiB"));
@@ -563,7 +560,7 @@ TEST(BadInputCatalogue, LongFlowListUnderAnUnknownKeyIsRefusedQuickly) {
   for (int i = 0; i < 5'000'000; ++i) text += ",0";  // 5 million values, 10 MB
   text += "]\n";
   std::string e;
-  EXPECT_LT(secondsOf([&] { e = loadError([&] { parseParticipant(text, "participants/p1.yaml"); }); }), kQuickRefusal);
+  EXPECT_LT(cpuSecondsOf([&] { e = loadError([&] { parseParticipant(text, "participants/p1.yaml"); }); }), kQuickRefusal);
   EXPECT_THAT(e, StartsWith("participants/p1.yaml:"));
   EXPECT_THAT(e, HasSubstr("more than 100000 YAML values in one file"));
 }
@@ -572,7 +569,7 @@ TEST(BadInputCatalogue, LongBlockListIsRefusedQuicklyWithItsLine) {
   std::string text = "kind: knee-axis-sweep\nname: bomb\njunk:\n";
   for (int i = 0; i < 2'000'000; ++i) text += "- 0\n";
   std::string e;
-  EXPECT_LT(secondsOf([&] { e = loadError([&] { parseSweepStudy(text, "bomb.yaml"); }); }), kQuickRefusal);
+  EXPECT_LT(cpuSecondsOf([&] { e = loadError([&] { parseSweepStudy(text, "bomb.yaml"); }); }), kQuickRefusal);
   // Keys count as values: the top map, three keys, two values and the list are 7, so the
   // 100001st value is list item 99994, on line 3 + 99994.
   EXPECT_THAT(e, StartsWith("bomb.yaml:99997: more than 100000 YAML values"));
