@@ -15,7 +15,11 @@ bash scripts/configure.sh "$build" -DCMAKE_BUILD_TYPE=Release
 make -C "$build" -j2 swingsim_bench >/dev/null
 mkdir -p out/bench
 json=out/bench/bench.json
-"$build"/swingsim_bench --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
+# Random interleaving: the repetitions of all benchmarks run in a shuffled order, so a drift of
+# the machine's speed (up to 1.6x from minute to minute here) falls on all of them alike and the
+# ratios below compare like with like.
+"$build"/swingsim_bench --benchmark_repetitions="$reps" --benchmark_enable_random_interleaving=true \
+  --benchmark_report_aggregates_only=true \
   --benchmark_out="$json" --benchmark_out_format=json ${BENCH_ARGS:-} >/dev/null
 python3 - "$json" <<'EOF'
 import json, sys

@@ -14,7 +14,8 @@
 # holds the source version and a hash of the build flags and the compiler, so another clone or
 # a CI run on the same machine finds it; a changed version or flag builds a new one. A build
 # is installed into a temporary folder and renamed into place only when complete, so an
-# interrupted build is never mistaken for a finished one.
+# interrupted build is never mistaken for a finished one; a lock file in the cache lets one
+# build run at a time.
 set -euo pipefail
 unset CC CXX CFLAGS CXXFLAGS LDFLAGS  # always the system g++, whatever the caller builds with
 cd "$(dirname "$0")/.."
@@ -32,7 +33,20 @@ if [ -f "$prefix/.complete" ]; then
   exit 0
 fi
 
-echo "== Simbody $version (Release) is not in the cache: fetching Debian's source package and building it into $prefix (about 12 min on 2 cores, once)" >&2
+# One build at a time per cache (two clones set up at once): the second waits for the first
+# and then finds its result.
+mkdir -p "$cache"
+exec 9>"$cache/.simbody.lock"
+if ! flock -n 9; then
+  echo "== waiting for another build of Simbody into $cache to finish" >&2
+  flock 9
+fi
+if [ -f "$prefix/.complete" ]; then
+  echo "$prefix"
+  exit 0
+fi
+
+echo "== Simbody $version (Release) is not in the cache: fetching Debian's source package and building it into $prefix (about 6 min on 2 cores, once)" >&2
 bash scripts/install-packages.sh build-essential cmake dpkg-dev liblapack-dev libblas-dev
 
 # A deb-src entry for the Debian mirror the machine already uses, in a file of our own.
@@ -46,7 +60,6 @@ if ! apt-get source --print-uris "simbody=$version" >/dev/null 2>&1; then
   $SUDO apt-get update -qq
 fi
 
-mkdir -p "$cache"
 work="$(mktemp -d "$cache/.simbody-build-XXXXXX")"
 trap 'rm -rf "$work"' EXIT
 (cd "$work" && apt-get source -qq "simbody=$version" >/dev/null 2>&1) || {

@@ -15,14 +15,6 @@ MassProperties segmentMassProperties(double m, const Vec3& com, double izz) {
   return MassProperties(m, com, Inertia(izz).shiftFromMassCenter(com, m));
 }
 
-// Two rigid parts of one body, each given in the body frame: masses add, the mass centre is
-// the mass-weighted mean, the inertias about the body origin add.
-MassProperties combineMassProperties(const MassProperties& a, const MassProperties& b) {
-  const double m = a.getMass() + b.getMass();
-  const Vec3 com = (a.getMass() * a.getMassCenter() + b.getMass() * b.getMassCenter()) / m;
-  return MassProperties(m, com, a.getInertia() + b.getInertia());
-}
-
 // The measured thigh angle on the hip pin (q = hip flexion): position, rate and
 // acceleration from the same quintic spline, so each is the exact derivative of the last.
 class PrescribedThighImpl final : public Motion::Custom::Implementation {
@@ -82,13 +74,12 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
                    const HipPath* hipPath)
     : matter_(system_),
       forces_(system_),
-      footLength_(g.footLength),
-      shankLength_(g.shankLength) {
+      footLength_(g.footLength) {
   Force::UniformGravity(forces_, matter_, Vec3(0, -kGravity, 0));
 
-  // The orientation link of Burkett's DH chain: no mass, places the hip in space. As a
-  // massless weld it is a frame on Ground: the hip's inboard frame.
-  const Transform orientation(Vec3(0, hipHeight, 0));
+  // The orientation link of Burkett's DH chain: no mass, places the hip in space.
+  orientation_ = MobilizedBody::Weld(matter_.Ground(), Transform(Vec3(0, hipHeight, 0)),
+                                     Body::Massless(), Transform());
 
   if (hipPath != nullptr && prescribedThigh == nullptr)
     throw std::invalid_argument("LegModel: a moving hip needs the measured thigh drive");
@@ -97,12 +88,12 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
   // solved).
   movingHip_ = hipPath != nullptr;
   if (movingHip_) {
-    carrier_ = MobilizedBody::Translation(matter_.Ground(), orientation, Body::Massless(), Transform());
+    carrier_ = MobilizedBody::Translation(orientation_, Transform(), Body::Massless(), Transform());
     Motion::Custom(carrier_, new PrescribedHipImpl(*hipPath));
     kneeCoordinate_ = 4;
   }
-  MobilizedBody& hipParent = movingHip_ ? static_cast<MobilizedBody&>(carrier_) : matter_.Ground();
-  thigh_ = MobilizedBody::Pin(hipParent, movingHip_ ? Transform() : orientation,
+  MobilizedBody& hipParent = movingHip_ ? static_cast<MobilizedBody&>(carrier_) : static_cast<MobilizedBody&>(orientation_);
+  thigh_ = MobilizedBody::Pin(hipParent, Transform(),
                               Body::Rigid(segmentMassProperties(g.thighMass, Vec3(0, -g.thighCom, 0), g.thighInertia)),
                               Transform());
 
@@ -115,13 +106,14 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
         shankProps.getInertia() + Inertia::pointMassAt(Vec3(0, -g.added.distanceBelowKnee, 0), g.added.mass);
     shankProps = MassProperties(m, com, inertiaAboutKnee);
   }
-  // Foot welded at the ankle at 90 deg to the shank, pointing forward (+x of the shank): part
-  // of the shank body, its mass centre at the ankle plus footComForward along +x.
-  shankProps = combineMassProperties(
-      shankProps, segmentMassProperties(g.footMass, Vec3(g.footComForward, -g.shankLength, 0), g.footInertia));
   const Rotation flip(Pi, XAxis);  // makes the knee pin's +q a flexion (see header)
   shank_ = MobilizedBody::Pin(thigh_, Transform(flip, Vec3(0, -g.thighLength, 0)), Body::Rigid(shankProps),
                               Transform(flip, Vec3(0)));
+
+  // Foot welded at the ankle at 90 deg to the shank, pointing forward (+x of the shank).
+  foot_ = MobilizedBody::Weld(shank_, Transform(Vec3(0, -g.shankLength, 0)),
+                              Body::Rigid(segmentMassProperties(g.footMass, Vec3(g.footComForward, 0, 0), g.footInertia)),
+                              Transform());
 
   JointStopParams range;
   range.lower = hipRange.minFlexion;
@@ -195,8 +187,8 @@ LegPose LegModel::calcPose(const State& s) const {
   LegPose pose;
   pose.hip = at(thigh_, Vec3(0));
   pose.knee = at(shank_, Vec3(0));
-  pose.ankle = at(shank_, Vec3(0, -shankLength_, 0));
-  pose.toe = at(shank_, Vec3(footLength_, -shankLength_, 0));
+  pose.ankle = at(foot_, Vec3(0));
+  pose.toe = at(foot_, Vec3(footLength_, 0, 0));
   return pose;
 }
 

@@ -2,11 +2,6 @@
 // The Simbody model of the prosthetic leg (Burkett 2004 Fig. 2): Ground -> orientation
 // (welded frame placing the hip) -> thigh (pin at the hip) -> shank (pin at the knee) ->
 // foot (welded at the ankle, perpendicular to the shank). Planar, gravity -y, x forward.
-// The two welds are frames, not bodies of their own (a weld adds no dynamics, and Simbody
-// realizes every body at every stage: 0.85x the swing's cost, docs/speed.md): the
-// orientation link is massless, so it is the hip pin's inboard frame on Ground; the foot is
-// part of the shank body's mass properties (shankWithFoot), and the ankle and toe are
-// stations of the shank. The chain, its outputs and the exported .osim keep all four links.
 //
 // With a measured pelvis (a HipPath) a hip carrier sits between the orientation frame and the
 // thigh: a massless body on a Translation mobilizer whose x, y follow the hip's path (z held
@@ -103,13 +98,14 @@ class LegModel {
   SimTK::MultibodySystem system_;
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;
+  SimTK::MobilizedBody::Weld orientation_;
   SimTK::MobilizedBody::Translation carrier_;  // only with a moving hip
   SimTK::MobilizedBody::Pin thigh_;
-  SimTK::MobilizedBody::Pin shank_;  // shank and foot (welded at the ankle) as one body
+  SimTK::MobilizedBody::Pin shank_;
+  SimTK::MobilizedBody::Weld foot_;
   const KneeForceElement* knee_ = nullptr;    // owned by forces_
   const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_; null with a prescribed thigh
-  double footLength_;   // m, ankle to toe (for calcPose)
-  double shankLength_;  // m, knee to ankle (for calcPose)
+  double footLength_;  // m, ankle to toe (for calcPose)
   int kneeCoordinate_ = 1;
   bool movingHip_ = false;
 };
