@@ -23,6 +23,9 @@ cd "$(dirname "$0")/.."
 version="3.7+dfsg-3"   # Debian bookworm's simbody source package
 flags=(-DCMAKE_BUILD_TYPE=Release -DBUILD_EXAMPLES=OFF -DBUILD_TESTING=OFF -DBUILD_VISUALIZER=OFF
        -DBUILD_STATIC_LIBRARIES=OFF)
+# What the build needs (installed only when missing, so a cache hit costs a dpkg query); first,
+# because the cache key names the compiler.
+bash scripts/install-packages.sh build-essential cmake dpkg-dev liblapack-dev libblas-dev >&2
 cache="${SWINGSIM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/swingsim}"
 compiler="$(c++ --version 2>/dev/null | head -1)"
 hash="$(printf '%s\n' "$version" "${flags[@]}" "$compiler" | sha256sum | cut -c1-10)"
@@ -47,7 +50,6 @@ if [ -f "$prefix/.complete" ]; then
 fi
 
 echo "== Simbody $version (Release) is not in the cache: fetching Debian's source package and building it into $prefix (about 6 min on 2 cores, once)" >&2
-bash scripts/install-packages.sh build-essential cmake dpkg-dev liblapack-dev libblas-dev
 
 # A deb-src entry for the Debian mirror the machine already uses, in a file of our own.
 src_list=/etc/apt/sources.list.d/swingsim-deb-src.sources
