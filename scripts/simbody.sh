@@ -31,10 +31,9 @@ compiler="$(c++ --version 2>/dev/null | head -1)"
 hash="$(printf '%s\n' "$version" "${flags[@]}" "$compiler" | sha256sum | cut -c1-10)"
 prefix="$cache/simbody-$version-$hash"
 
-if [ -f "$prefix/.complete" ]; then
-  echo "$prefix"
-  exit 0
-fi
+# Prints the prefix and ends the script when a finished build is there.
+take_if_built() { if [ -f "$prefix/.complete" ]; then echo "$prefix"; exit 0; fi; }
+take_if_built
 
 # One build at a time per cache (two clones set up at once): the second waits for the first
 # and then finds its result.
@@ -44,10 +43,7 @@ if ! flock -n 9; then
   echo "== waiting for another build of Simbody into $cache to finish" >&2
   flock 9
 fi
-if [ -f "$prefix/.complete" ]; then
-  echo "$prefix"
-  exit 0
-fi
+take_if_built
 
 echo "== Simbody $version (Release) is not in the cache: fetching Debian's source package and building it into $prefix (about 6 min on 2 cores, once)" >&2
 

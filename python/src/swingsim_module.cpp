@@ -56,26 +56,22 @@ std::pair<std::string, std::string> objectAsYaml(const py::handle& object, const
   return {toYamlText(object.attr("to_dict")(), source + ": " + what), source};
 }
 
-/// Files are read with the GIL released (a slow disk or a FIFO does not stop Python's threads).
-Participant loadParticipantReleasingGil(const std::string& path) {
+/// load(path) with the GIL released: a slow disk or a FIFO does not stop Python's threads.
+template <class Load>
+auto loadWithoutGil(Load load, const std::string& path) {
   py::gil_scoped_release release;
-  return loadParticipant(path);
-}
-
-KneeModel loadKneeModelReleasingGil(const std::string& path) {
-  py::gil_scoped_release release;
-  return loadKneeModel(path);
+  return load(path);
 }
 
 Participant readParticipant(const py::handle& participant) {
-  if (isPath(participant)) return loadParticipantReleasingGil(pathText(participant));
+  if (isPath(participant)) return loadWithoutGil(loadParticipant, pathText(participant));
   const auto [text, source] = objectAsYaml(participant, "participant");
   return parseParticipant(text, source);
 }
 
 KneeModel readKnee(const py::handle& knee, const Participant& participant) {
-  if (knee.is_none()) return loadKneeModelReleasingGil(participant.kneeModelPath);
-  if (isPath(knee)) return loadKneeModelReleasingGil(pathText(knee));
+  if (knee.is_none()) return loadWithoutGil(loadKneeModel, participant.kneeModelPath);
+  if (isPath(knee)) return loadWithoutGil(loadKneeModel, pathText(knee));
   const auto [text, source] = objectAsYaml(knee, "knee model");
   return parseKneeModel(text, source);
 }

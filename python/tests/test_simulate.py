@@ -100,7 +100,7 @@ def test_more_knee_damping_lowers_the_peak_flexion(repo):
 # second Python thread writes, and only once the swing's call has opened it. Were the GIL held
 # through the call, that thread could never write and the call would wait forever.
 GIL_CHILD = r"""
-import os, sys, threading
+import sys, threading
 sys.path[:0] = [sys.argv[3]]
 import swingsim
 fifo, text = sys.argv[1], open(sys.argv[2]).read()
