@@ -1,9 +1,12 @@
 // swingsim swings FILE.mot [--side r|l] [--grf GRF.mot] [--vertical-force LABEL]
-//   [--threshold-N N] [--knee-sign S] [--json FILE]
+//   [--threshold-N N] [--fallback-to-kinematics] [--gait walking|running] [--knee-sign S]
+//   [--json FILE]
 //
 // Lists the complete swings of one leg in an OpenSim IK file, numbered from 1 so that a
 // study can pick one (`swing: K`): toe-off and heel contact from the GRF file's vertical
-// force where it covers the time, from the joint angles elsewhere (docs/swing-events.md).
+// force where it covers the time, from the joint angles elsewhere, by a rule per gait; a force
+// file is checked and its events against the kinematics (docs/swing-events.md).
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -24,15 +27,27 @@ struct SwingsArguments {
   std::string side = "r";
   std::optional<std::string> grf, verticalForce, json;
   double thresholdN = 20;  ///< N
+  bool fallbackToKinematics = false;
+  std::optional<std::string> gait;  ///< "walking" or "running"; nullopt: detected
   double kneeSign = -1;
 };
+
+/// A disagreement for the table, ms, or "-" where there is none.
+std::string disagreementText(const std::optional<double>& d) {
+  if (!d) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%+.1f", *d * 1000);
+  return buf;
+}
+Json disagreementJson(const std::optional<double>& d) { return d ? Json(*d * 1000) : Json(); }
 
 /// OpenSim's example GRF files name the right foot's columns `ground_force_*` and the left
 /// foot's `1_ground_force_*`.
 std::string defaultVerticalForce(const std::string& side) { return side == "l" ? "1_ground_force_vy" : "ground_force_vy"; }
 
 Json makeSwingsJson(const SwingsArguments& a, const MotionColumns& columns, const std::optional<GrfSettings>& grf,
-                    const std::vector<FoundSwing>& swings) {
+                    const SwingList& list) {
+  const std::vector<FoundSwing>& swings = list.swings;
   Json j;
   j["file"] = a.kinematics;
   j["side"] = a.side;
@@ -40,7 +55,16 @@ Json makeSwingsJson(const SwingsArguments& a, const MotionColumns& columns, cons
   j["knee"] = columns.knee;
   j["knee_sign"] = columns.kneeSign;
   j["pelvis_tilt"] = columns.pelvisTilt.empty() ? Json() : Json(columns.pelvisTilt);
-  j["grf"] = grf ? Json{{"file", grf->path}, {"vertical_force", grf->verticalForce}, {"threshold_N", grf->thresholdN}} : Json();
+  j["grf"] = grf ? Json{{"file", grf->path},
+                        {"vertical_force", grf->verticalForce},
+                        {"threshold_N", grf->thresholdN},
+                        {"fallback_to_kinematics", grf->fallbackToKinematics}}
+                  : Json();
+  j["gait"] = gaitName(list.gait);
+  j["gait_basis"] = list.gaitBasis;
+  j["kinematic_accuracy_ms"] = list.kinematicAccuracy * 1000;
+  j["kinematic_accuracy_beyond_two_frames"] = list.kinematicAccuracyBeyondTwoFrames;
+  j["notes"] = list.notes;
   j["swings"] = Json::array();
   for (std::size_t i = 0; i < swings.size(); ++i)
     j["swings"].push_back({{"swing", i + 1},
@@ -48,7 +72,9 @@ Json makeSwingsJson(const SwingsArguments& a, const MotionColumns& columns, cons
                            {"heel_contact_s", swings[i].heelContact},
                            {"duration_s", swings[i].duration()},
                            {"toe_off_source", swings[i].toeOffSource},
-                           {"heel_contact_source", swings[i].heelContactSource}});
+                           {"heel_contact_source", swings[i].heelContactSource},
+                           {"toe_off_force_minus_kinematics_ms", disagreementJson(swings[i].toeOffDisagreement)},
+                           {"heel_contact_force_minus_kinematics_ms", disagreementJson(swings[i].heelContactDisagreement)}});
   return j;
 }
 
@@ -59,8 +85,11 @@ int runSwings(const SwingsArguments& a) {
   MotionColumns columns = openSimLegColumns(table, a.side);
   columns.kneeSign = a.kneeSign;
   std::optional<GrfSettings> grf;
-  if (a.grf) grf = GrfSettings{*a.grf, a.verticalForce.value_or(defaultVerticalForce(a.side)), a.thresholdN};
-  const std::vector<FoundSwing> swings = findSwings(table, columns, grf);
+  if (a.grf) grf = GrfSettings{*a.grf, a.verticalForce.value_or(defaultVerticalForce(a.side)), a.thresholdN, a.fallbackToKinematics};
+  std::optional<Gait> gait;
+  if (a.gait) gait = *a.gait == "running" ? Gait::kRunning : Gait::kWalking;
+  const SwingList list = listSwings(table, columns, grf, gait);
+  const std::vector<FoundSwing>& swings = list.swings;
 
   std::printf("%s: %s leg (%s, %s x %g%s); events from %s\n", a.kinematics.c_str(), a.side == "l" ? "left" : "right",
               columns.hip.c_str(), columns.knee.c_str(), columns.kneeSign,
@@ -68,15 +97,23 @@ int runSwings(const SwingsArguments& a) {
               grf ? (grf->path + " (" + grf->verticalForce + " below " + formatNumber(grf->thresholdN) +
                      " N) where it covers the time, the kinematics elsewhere").c_str()
                   : "the kinematics (no --grf)");
+  const double frame = table.rows() > 1 ? (table.columns.front().back() - table.columns.front().front()) / double(table.rows() - 1) : 0;
+  std::printf("gait: %s (%s); kinematic events: within %.0f ms of the force plates after their bias is removed (docs/swing-events.md)%s\n",
+              gaitName(list.gait), list.gaitBasis.c_str(), list.kinematicAccuracy * 1000,
+              list.kinematicAccuracyBeyondTwoFrames
+                  ? (", more than 2 frames at this file's " + formatNumber(std::round(1 / frame)) + " Hz: the kinematics alone cannot place an event within 2 frames").c_str()
+                  : "");
+  for (const std::string& note : list.notes) std::printf("note: %s\n", note.c_str());
   if (swings.empty()) {
     std::printf("no complete swing (toe-off and heel contact both inside the file)\n");
   } else {
-    std::printf("swing  toe-off s  heel contact s  duration s  toe-off from  heel contact from\n");
+    std::printf("swing  toe-off s  heel contact s  duration s  toe-off from  heel contact from  force-kinematics ms: toe-off  heel contact\n");
     for (std::size_t i = 0; i < swings.size(); ++i)
-      std::printf("%5zu  %9.4f  %14.4f  %10.4f  %-12s  %s\n", i + 1, swings[i].toeOff, swings[i].heelContact,
-                  swings[i].duration(), swings[i].toeOffSource.c_str(), swings[i].heelContactSource.c_str());
+      std::printf("%5zu  %9.4f  %14.4f  %10.4f  %-12s  %-17s  %28s  %12s\n", i + 1, swings[i].toeOff, swings[i].heelContact,
+                  swings[i].duration(), swings[i].toeOffSource.c_str(), swings[i].heelContactSource.c_str(),
+                  disagreementText(swings[i].toeOffDisagreement).c_str(), disagreementText(swings[i].heelContactDisagreement).c_str());
   }
-  if (a.json) writeJsonFile(*a.json, makeSwingsJson(a, columns, grf, swings));
+  if (a.json) writeJsonFile(*a.json, makeSwingsJson(a, columns, grf, list));
   return 0;
 }
 
@@ -98,6 +135,11 @@ Command addSwingsCommand(CLI::App& app) {
   sub->add_option("--threshold-N", a->thresholdN, "vertical force below which the foot is in the air, N (default 20)")
       ->type_name("N")
       ->check(finiteNumber([](double v) { return v > 0 ? "" : "expected a positive force"; }));
+  sub->add_flag("--fallback-to-kinematics", a->fallbackToKinematics,
+                "a force file that fails its checks gives way to the kinematics' events (said in the listing) instead of an error");
+  addTextOption(sub, "--gait", a->gait, "walking or running: which kinematic event rules (default: detected from the stride)",
+                "walking|running")
+      ->check(oneOf({"walking", "running"}));
   sub->add_option("--knee-sign", a->kneeSign, "+1 or -1: knee flexion = sign * knee_angle (default -1, OpenSim's knee_angle is negative in flexion)")
       ->type_name("S")
       ->check(finiteNumber([](double v) { return v == 1 || v == -1 ? "" : "expected +1 or -1"; }));

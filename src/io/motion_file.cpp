@@ -246,16 +246,18 @@ constexpr double kSameTime = 1e-9;
 constexpr double kMinKneeRangeDeg = 3;
 constexpr double kMaxKneeRangeRad = 6;
 
-void checkKneeUnit(const MotionTable& table, const std::string& label, const std::vector<double>& knee) {
+void checkKneeUnit(const MotionTable& table, const std::string& label, const std::vector<double>& knee,
+                   const char* over = "the swing") {
+  if (knee.empty()) return;
   const auto [lo, hi] = std::minmax_element(knee.begin(), knee.end());
   const double range = *hi - *lo;
   const std::string where = table.path + (table.inDegreesLine ? ":" + std::to_string(table.inDegreesLine) : "") + ": " + label + ": ";
   const std::string span = " (from " + formatNumber(*lo) + " to " + formatNumber(*hi) + "; a swing flexes it by tens of degrees)";
   if (table.inDegrees && range < kMinKneeRangeDeg)
-    throw InputError(where + "the knee moves through only " + formatNumber(range) + " deg over the swing" + span +
+    throw InputError(where + "the knee moves through only " + formatNumber(range) + " deg over " + over + span +
                      ": the column looks like radians, but the header says inDegrees=yes");
   if (!table.inDegrees && range > kMaxKneeRangeRad)
-    throw InputError(where + "the knee moves through " + formatNumber(range) + " rad over the swing" + span +
+    throw InputError(where + "the knee moves through " + formatNumber(range) + " rad over " + over + span +
                      ": the column looks like degrees, but " +
                      (table.inDegreesLine ? std::string("the header says inDegrees=no")
                                           : std::string("the header has no inDegrees line, read as no (radians) as OpenSim does; add inDegrees=yes")));
@@ -321,7 +323,34 @@ void checkColumnPlausible(const MotionTable& table, const std::string& label, co
                        ": " + bad + " (got " + formatNumber(values[r]) + (toRangeUnit == 1.0 ? "" : " rad") + ")");
 }
 
+/// Refuses knee flexion that is hyperextended on (nearly) every sample: a flipped sign.
+void checkKneeSign(const std::string& path, const std::string& label, const std::vector<double>& flexion, double kneeSign,
+                   const char* over) {
+  const auto low = std::count_if(flexion.begin(), flexion.end(), [](double v) { return v < kHyperextendedKnee; });
+  if (flexion.empty() || static_cast<double>(low) < kHyperextendedShare * static_cast<double>(flexion.size())) return;
+  const std::string fix = formatNumber(-kneeSign);
+  throw InputError(path + ": " + label + ": expected knee flexion, positive when bent (got " + std::to_string(low) + " of " +
+                   std::to_string(flexion.size()) + " samples over " + over + " below " +
+                   formatNumber(kHyperextendedKnee * kRadToDeg) + " deg, hyperextended, read with knee_sign " +
+                   formatNumber(kneeSign) + "): the sign is flipped; set knee_sign: " + fix + " (motion_columns, thigh_kinematics) or --knee-sign " +
+                   fix + " (swingsim swings). OpenSim's gait models' knee_angle is negative in flexion, Rajagopal's positive");
+}
+
 }  // namespace
+
+void checkLegKinematics(const MotionTable& table, const MotionColumns& columns) {
+  if (table.rows() == 0) return;
+  table.column(columns.hip);  // a missing label fails here first, naming those there are
+  const std::vector<double>& knee = table.column(columns.knee);
+  checkKneeUnit(table, columns.knee, knee, "the file");
+  const double toDeg = table.inDegrees ? 1.0 : kRadToDeg;
+  checkColumnPlausible(table, columns.hip, kJointAngleRange, "a hip angle", toDeg);
+  checkColumnPlausible(table, columns.knee, kJointAngleRange, "a knee angle", toDeg);
+  const double toRad = table.inDegrees ? kDegToRad : 1.0;
+  std::vector<double> flexion;
+  for (double v : knee) flexion.push_back(columns.kneeSign * v * toRad + columns.kneeOffset);
+  checkKneeSign(table.path, columns.knee, flexion, columns.kneeSign, "the file");
+}
 
 SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns, const MotionTable* inverseDynamics) {
   const std::vector<double>& time = table.columns.front();
@@ -382,6 +411,7 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
     r.hipFlexion.push_back(columns.hipSign * hip[k] * toRad + columns.hipOffset);
     r.kneeFlexion.push_back(columns.kneeSign * knee[k] * toRad + columns.kneeOffset);
   }
+  checkKneeSign(table.path, columns.knee, r.kneeFlexion, columns.kneeSign, "the swing");
   if (momentValues) r.hipMoment = interpolate(time, *momentValues, at);
   if (!columns.pelvisTilt.empty()) {
     // OpenSim's pelvis_tilt and hip_flexion both turn about +z (forward tilt and flexion

@@ -72,7 +72,8 @@ constexpr std::size_t kMinSwingSamples = 10;
 /// linearly interpolated at toe-off + k * interval. Throws InputError for a missing column,
 /// a cut outside the file's time or fewer than kMinSwingSamples samples, and for a knee
 /// whose range says the unit is wrong (under 3 "deg" with inDegrees=yes: radians; over
-/// 6 "rad" with inDegrees=no: degrees).
+/// 6 "rad" with inDegrees=no: degrees), and a knee hyperextended on kHyperextendedShare of
+/// the swing's samples (a flipped knee_sign).
 /// Pelvis columns, when labelled, fill pelvisX/Y/Tilt; with pelvis tilt the record's hip
 /// angle is the thigh's angle in space (hip flexion + pelvis tilt). With `inverseDynamics`
 /// (an OpenSim ID .sto), its `columns.kneeMoment` column (default kOpenSimKneeMoment),
@@ -84,6 +85,17 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
 /// A knee angle below this is hyperextension no swing reaches: many samples there mean a
 /// flipped sign (OpenSim's knee_angle is negative in flexion), rad.
 constexpr double kHyperextendedKnee = -5 * kDegToRad;
+
+/// At least this share of knee samples below kHyperextendedKnee is a flipped sign, refused
+/// (between half and this a warning): no knee is hyperextended for 90 % of a recording.
+constexpr double kHyperextendedShare = 0.9;
+
+/// The leg's columns over the whole file, the checks every command runs on kinematics before
+/// taking events or records from them: the knee's range against the header's unit (under 3
+/// "deg" with inDegrees=yes: radians; over 6 "rad" with inDegrees=no: degrees), hip and knee
+/// angles physically plausible, and the knee's sign (kHyperextendedShare of the samples
+/// hyperextended). Throws InputError naming the file, the column and the fix.
+void checkLegKinematics(const MotionTable& table, const MotionColumns& columns);
 
 /// Warnings about a record cut from `table` by `columns`, each naming the likely cause and
 /// the motion_columns key that fixes it: more than half of the knee samples below

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/input_error.h"
 #include "core/units.h"
@@ -17,6 +18,7 @@ struct Event {
   Kind kind;
   const char* source;
 };
+
 
 /// The time of a crossing of `level` between rows k-1 and k, by linear interpolation.
 double crossingTime(const std::vector<double>& t, const std::vector<double>& f, std::size_t k, double level) {
@@ -80,12 +82,18 @@ LegAngles calcLegAngles(const MotionTable& table, const MotionColumns& columns) 
 /// under 30 deg is stance only.
 constexpr double kMinSwingKneeRange = 30 * kDegToRad;
 
-/// Rows of the knee's swing peaks: in each run of rows flexed beyond the middle of the
-/// file's knee range, the most flexed (a stance's loading flexion stays well below it).
+/// Where a swing peak must reach in the file's knee range (0 its least flexion, 1 its most):
+/// on the public trials the stance's loading flexion reaches 0.31-0.52 of it in running (the
+/// knee flexes 40-58 deg under load) and below 0.35 in walking, each swing's peak 0.90-1.0.
+constexpr double kSwingPeakLevel = 0.65;
+
+/// Rows of the knee's swing peaks: in each run of rows flexed beyond kSwingPeakLevel of the
+/// file's knee range, the most flexed (a stance's loading flexion stays below it).
 std::vector<std::size_t> findSwingPeaks(const std::vector<double>& knee) {
-  const auto [lo, hi] = std::minmax_element(knee.begin(), knee.end());
-  const double middle = 0.5 * (*lo + *hi);
   std::vector<std::size_t> peaks;
+  if (knee.empty()) return peaks;
+  const auto [lo, hi] = std::minmax_element(knee.begin(), knee.end());
+  const double middle = *lo + kSwingPeakLevel * (*hi - *lo);
   if (*hi - *lo < kMinSwingKneeRange) return peaks;
   for (std::size_t k = 0; k < knee.size(); ++k) {
     if (knee[k] <= middle) continue;
@@ -97,12 +105,64 @@ std::vector<std::size_t> findSwingPeaks(const std::vector<double>& knee) {
   return peaks;
 }
 
-/// Toe-off before the swing peak at row `peak`: the fastest knee flexion on the rise to
-/// it from the stance's last extension minimum. nullopt if that rise starts at the first row
-/// (the swing is cut by the file's start). A peak on the last row is the file's end mid-rise.
-std::optional<double> findKinematicToeOff(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak) {
+/// The median time between successive swing peaks (one stride), s; nullopt with fewer than two.
+std::optional<double> medianStride(const std::vector<double>& t, const std::vector<std::size_t>& peaks) {
+  if (peaks.size() < 2) return std::nullopt;
+  std::vector<double> strides;
+  for (std::size_t i = 1; i < peaks.size(); ++i) strides.push_back(t[peaks[i]] - t[peaks[i - 1]]);
+  std::nth_element(strides.begin(), strides.begin() + static_cast<std::ptrdiff_t>(strides.size() / 2), strides.end());
+  return strides[strides.size() / 2];
+}
+
+std::string ms(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f ms", s * 1000);
+  return buf;
+}
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4f s", s);
+  return buf;
+}
+
+struct GaitChoice {
+  Gait gait = Gait::kWalking;
+  std::string basis;
+};
+
+/// The stated gait, else running for a stride under kRunningStrideS (or, with one swing, a
+/// knee peak above kRunningKneePeak), else walking.
+GaitChoice chooseGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks,
+                      std::optional<Gait> stated) {
+  if (stated) return {*stated, "stated"};
+  if (const auto stride = medianStride(t, peaks)) {
+    const bool running = *stride < kRunningStrideS;
+    return {running ? Gait::kRunning : Gait::kWalking,
+            "detected: median stride " + formatNumber(std::round(*stride * 1000) / 1000) + " s, " + (running ? "under " : "over ") +
+                formatNumber(kRunningStrideS) + " s"};
+  }
+  if (peaks.empty()) return {Gait::kWalking, "no swing to detect it from"};
+  const double peak = knee[peaks.front()];
+  const bool running = peak > kRunningKneePeak;
+  return {running ? Gait::kRunning : Gait::kWalking,
+          "detected from one swing: knee peak " + formatNumber(std::round(peak * kRadToDeg)) + " deg, " +
+              (running ? "above " : "below ") + formatNumber(std::round(kRunningKneePeak * kRadToDeg)) +
+              " deg (no stride to measure; state the gait if this is wrong)"};
+}
+
+/// The row where the knee's rise into the swing peak at `peak` starts (the stance's last
+/// extension minimum); 0 if the rise starts at the first row (the swing is cut by the file's start).
+std::size_t riseStart(const std::vector<double>& knee, std::size_t peak) {
   std::size_t start = peak;
   while (start > 0 && knee[start - 1] < knee[start]) --start;
+  return start;
+}
+
+/// Walking toe-off before the swing peak at row `peak`: the fastest knee flexion on the rise
+/// to it from the stance's last extension minimum. nullopt if the rise starts at the first
+/// row or is still speeding up where the file ends.
+std::optional<double> findWalkingToeOff(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak) {
+  const std::size_t start = riseStart(knee, peak);
   // Central differences need a row either side; a peak on the last row still has its rise.
   const std::size_t last = std::min(peak, knee.size() - 2);
   if (start == 0 || last < start + 2) return std::nullopt;
@@ -115,11 +175,20 @@ std::optional<double> findKinematicToeOff(const std::vector<double>& t, const st
   return vertexTime(t, rate, fastest);
 }
 
-/// Heel contact after the swing peak at row `peak`, before row `end`: the first maximum of
-/// the ankle's forward distance from the hip, sin(thigh) + sin(thigh - knee) in thigh
-/// lengths (thigh and shank of equal length). nullopt if the file ends first.
-std::optional<double> findKinematicHeelContact(const std::vector<double>& t, const LegAngles& a, std::size_t peak,
-                                               std::size_t end) {
+/// Running toe-off before the swing peak at row `peak`: the knee's extension minimum at the
+/// end of the stance, where its rise into the swing starts (after Fellin et al. 2010, J Sci
+/// Med Sport 13:646, toe-off at peak knee extension). nullopt if that is the first row.
+std::optional<double> findRunningToeOff(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak) {
+  const std::size_t start = riseStart(knee, peak);
+  if (start == 0 || start + 1 >= knee.size()) return std::nullopt;
+  return vertexTime(t, knee, start);
+}
+
+/// Walking heel contact after the swing peak at row `peak`, before row `end`: the first
+/// maximum of the ankle's forward distance from the hip, sin(thigh) + sin(thigh - knee) in
+/// thigh lengths (thigh and shank of equal length). nullopt if the file ends first.
+std::optional<double> findWalkingHeelContact(const std::vector<double>& t, const LegAngles& a, std::size_t peak,
+                                             std::size_t end) {
   const auto forward = [&](std::size_t k) { return std::sin(a.thigh[k]) + std::sin(a.thigh[k] - a.knee[k]); };
   std::vector<double> x(t.size(), 0.0);
   for (std::size_t k = peak; k < end && k < t.size(); ++k) x[k] = forward(k);
@@ -128,43 +197,51 @@ std::optional<double> findKinematicHeelContact(const std::vector<double>& t, con
   return std::nullopt;
 }
 
-/// Toe-off and heel contact from the joint angles alone (docs/swing-events.md). Toe-off:
-/// the knee's fastest flexion on its rise into the swing (an assumption, checked against the
-/// force plates). Heel contact: after Zeni et al. 2008 (Gait Posture 27:710), the heel's
-/// most forward position relative to the pelvis, with the ankle for the heel, placed by the
-/// thigh's and the knee's angles with thigh and shank of equal length (Winter 2009,
-/// Biomechanics and Motor Control of Human Movement, Table 4.1: 0.245 H and 0.246 H).
-std::vector<Event> calcKinematicEvents(const MotionTable& table, const MotionColumns& columns) {
-  const LegAngles a = calcLegAngles(table, columns);
-  const std::vector<double>& t = table.columns.front();
-  std::vector<Event> events;
-  if (t.size() < 3) return events;
-  const std::vector<std::size_t> peaks = findSwingPeaks(a.knee);
-  for (std::size_t p = 0; p < peaks.size(); ++p) {
-    if (auto toeOff = findKinematicToeOff(t, a.knee, peaks[p])) events.push_back({*toeOff, Kind::ToeOff, "kinematics"});
-    const std::size_t end = p + 1 < peaks.size() ? peaks[p + 1] : t.size();
-    if (auto heel = findKinematicHeelContact(t, a, peaks[p], end)) events.push_back({*heel, Kind::HeelContact, "kinematics"});
-  }
-  return events;
+/// Running heel contact after the swing peak at row `peak`, before row `end`: the knee's
+/// first extension minimum (the end of its extension in the late swing; it flexes again as
+/// the foot lands). nullopt if the file ends first.
+std::optional<double> findRunningHeelContact(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak,
+                                             std::size_t end) {
+  for (std::size_t k = peak + 1; k + 1 < end && k + 1 < t.size(); ++k)
+    if (knee[k] <= knee[k - 1] && knee[k] < knee[k + 1]) return vertexTime(t, knee, k);
+  return std::nullopt;
 }
 
-/// The events: the force's within the kinematics' time, and the kinematics' where the force
-/// does not decide (no force event of the kind within kEventMatchS, and not inside the
-/// force's time by more than that), in time order.
-std::vector<Event> mergeEvents(const std::vector<Event>& force, const std::vector<Event>& kinematic, double t0, double t1,
-                               double forceStart, double forceEnd) {
+/// Kinematic events with the rule's bias removed, the swing peaks and the gait.
+struct KinematicEvents {
   std::vector<Event> events;
-  for (const Event& e : force)
-    if (e.time >= t0 && e.time <= t1) events.push_back(e);
-  for (const Event& e : kinematic) {
-    const bool matched = std::any_of(force.begin(), force.end(), [&](const Event& f) {
-      return f.kind == e.kind && std::abs(f.time - e.time) <= kEventMatchS;
-    });
-    const bool decidedByForce = e.time > forceStart + kEventMatchS && e.time < forceEnd - kEventMatchS;
-    if (!matched && !decidedByForce) events.push_back(e);
+  std::vector<double> peakTimes;
+  std::optional<double> stride;  ///< s
+  GaitChoice gait;
+};
+
+/// Toe-off and heel contact from the joint angles alone (docs/swing-events.md). Walking:
+/// toe-off at the knee's fastest flexion on its rise into the swing (an assumption, checked
+/// against the force plates); heel contact after Zeni et al. 2008 (Gait Posture 27:710), the
+/// heel's most forward position relative to the pelvis, with the ankle for the heel, placed
+/// by the thigh's and the knee's angles with thigh and shank of equal length (Winter 2009,
+/// Biomechanics and Motor Control of Human Movement, Table 4.1: 0.245 H and 0.246 H).
+/// Running: toe-off at the knee's extension minimum before its rise, heel contact at its
+/// extension minimum after the swing peak. Each with its measured bias removed.
+KinematicEvents calcKinematicEvents(const MotionTable& table, const MotionColumns& columns, std::optional<Gait> stated) {
+  const LegAngles a = calcLegAngles(table, columns);
+  const std::vector<double>& t = table.columns.front();
+  KinematicEvents out;
+  const std::vector<std::size_t> peaks = t.size() < 3 ? std::vector<std::size_t>{} : findSwingPeaks(a.knee);
+  out.gait = chooseGait(t, a.knee, peaks, stated);
+  out.stride = medianStride(t, peaks);
+  const bool running = out.gait.gait == Gait::kRunning;
+  const double toeOffBias = running ? kRunningToeOffBiasS : kWalkingToeOffBiasS;
+  const double heelBias = running ? kRunningHeelContactBiasS : kWalkingHeelContactBiasS;
+  for (std::size_t p = 0; p < peaks.size(); ++p) {
+    out.peakTimes.push_back(t[peaks[p]]);
+    const auto toeOff = running ? findRunningToeOff(t, a.knee, peaks[p]) : findWalkingToeOff(t, a.knee, peaks[p]);
+    if (toeOff) out.events.push_back({*toeOff - toeOffBias, Kind::ToeOff, "kinematics"});
+    const std::size_t end = p + 1 < peaks.size() ? peaks[p + 1] : t.size();
+    const auto heel = running ? findRunningHeelContact(t, a.knee, peaks[p], end) : findWalkingHeelContact(t, a, peaks[p], end);
+    if (heel) out.events.push_back({*heel - heelBias, Kind::HeelContact, "kinematics"});
   }
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.time < b.time; });
-  return events;
+  return out;
 }
 
 /// Each toe-off followed directly by a heel contact.
@@ -172,7 +249,7 @@ std::vector<FoundSwing> pairSwings(const std::vector<Event>& events) {
   std::vector<FoundSwing> swings;
   for (std::size_t i = 0; i + 1 < events.size(); ++i)
     if (events[i].kind == Kind::ToeOff && events[i + 1].kind == Kind::HeelContact)
-      swings.push_back({events[i].time, events[i + 1].time, events[i].source, events[i + 1].source});
+      swings.push_back({events[i].time, events[i + 1].time, events[i].source, events[i + 1].source, {}, {}});
   return swings;
 }
 
@@ -188,38 +265,242 @@ void checkThreshold(const MotionTable& grf, const GrfSettings& settings) {
                      formatNumber(settings.thresholdN) + ")");
 }
 
+/// The median step of a time column, s.
+double medianStep(const std::vector<double>& t) {
+  std::vector<double> steps;
+  for (std::size_t k = 1; k < t.size(); ++k) steps.push_back(t[k] - t[k - 1]);
+  if (steps.empty()) return 0;
+  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+  return steps[steps.size() / 2];
+}
+
+/// A force plate's zero drifts by a few newtons; a vertical force that pulls below zero by
+/// more than this (and a tenth of its peak) is not a vertical force, N.
+constexpr double kMaxForceOffsetN = 20;
+
+/// Steps of one clock that agree with another's to round-off of the written times.
+constexpr double kSameRateFraction = 1.05;
+
+/// What a force file must hold before an event is taken from it: a rate at least the
+/// kinematics', a time in seconds on their clock, a vertical force in newtons. "" if it
+/// holds, else what was found (for the message after "file: column: ").
+std::string checkForceFile(const MotionTable& grf, const std::vector<double>& force, const MotionTable& kinematics) {
+  const std::vector<double>& g = grf.columns.front();
+  const std::vector<double>& t = kinematics.columns.front();
+  const double forceStep = medianStep(g), frame = medianStep(t);
+  if (forceStep > frame * kSameRateFraction) {
+    std::string hint;
+    if (forceStep > 0.1 && g.front() / 1000 < t.back() && g.back() / 1000 > t.front())
+      hint = "; its time, read as ms, would overlap the kinematics': is the time column in ms? OpenSim's is in s";
+    return "expected a force sampled at least as often as the kinematics (" + formatNumber(std::round(1 / frame)) +
+           " Hz), so that an event lands within a frame (got a step of " + formatNumber(forceStep) + " s, " +
+           formatNumber(1 / forceStep) + " Hz" + hint + ")";
+  }
+  // The force over the kinematics' time (the whole file if they do not overlap).
+  double peak = -1e300, lowest = 1e300;
+  bool any = false;
+  for (std::size_t k = 0; k < g.size(); ++k)
+    if (g[k] >= t.front() && g[k] <= t.back()) {
+      peak = std::max(peak, force[k]);
+      lowest = std::min(lowest, force[k]);
+      any = true;
+    }
+  if (!any) return "";  // the clock check after this says what is wrong
+  if (peak < kMinStancePeakN && lowest < -kMinStancePeakN)
+    return "expected a vertical force, positive upwards, N: a stance peaks at 1-3 body weights (got " + formatNumber(lowest) +
+           " to " + formatNumber(peak) + " N: negated? OpenSim's vertical force pushes up, +y)";
+  // A vertical force pulls below zero by no more than its offset; a horizontal one by as much as it pushes.
+  if (lowest < -std::max(kMaxForceOffsetN, 0.1 * peak))
+    return "expected a vertical force, which never pulls the foot down (got " + formatNumber(lowest) + " to " +
+           formatNumber(peak) + " N: a horizontal component, e.g. the fore-aft force, or a lab frame with z up?)";
+  if (peak < kMinStancePeakN)
+    return "expected a vertical force in newtons: a stance peaks at 1-3 body weights, at least " + formatNumber(kMinStancePeakN) +
+           " N (got a peak of " + formatNumber(peak) + " N over the kinematics' time" +
+           (peak > 0 && peak * 1000 >= kMinStancePeakN ? ": in kN?" : peak <= 0 ? ": no load at all" : "") + ")";
+  if (peak > kMaxStancePeakN)
+    return "expected a vertical force in newtons: a stance peaks at 1-3 body weights, at most " + formatNumber(kMaxStancePeakN) +
+           " N (got a peak of " + formatNumber(peak) + " N: another unit?)";
+  return "";
+}
+
+/// The first way the force's events contradict the kinematics', "" if none: an event more
+/// than kEventToleranceS from the kinematic one of its kind (within 0.6 strides), a knee swing
+/// peak inside the force's stance, a force swing without a knee swing peak.
+std::string findContradiction(const std::vector<Event>& force, const KinematicEvents& kin, double t0, double t1,
+                              double forceStart, double forceEnd) {
+  const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
+  for (const Event& f : force) {
+    if (f.time < t0 || f.time > t1) continue;
+    const Event* nearest = nullptr;
+    for (const Event& k : kin.events)
+      if (k.kind == f.kind && (!nearest || std::abs(k.time - f.time) < std::abs(nearest->time - f.time))) nearest = &k;
+    if (!nearest || std::abs(nearest->time - f.time) > 0.6 * stride) continue;  // the kinematics see no such event here
+    if (std::abs(nearest->time - f.time) > kEventToleranceS)
+      return std::string(f.kind == Kind::ToeOff ? "toe-off" : "heel contact") + " at " + seconds(f.time) + " is " +
+             ms(f.time - nearest->time) + " from the kinematics' (" + seconds(nearest->time) + "; at most " +
+             ms(kEventToleranceS) + " expected)";
+  }
+  // Stance from the force at a time: before the first event, the opposite of its kind.
+  const auto inStance = [&](double time) {
+    bool stance = !force.empty() && force.front().kind == Kind::ToeOff;
+    for (const Event& f : force) {
+      if (f.time > time) break;
+      stance = f.kind == Kind::HeelContact;
+    }
+    return stance;
+  };
+  for (double peak : kin.peakTimes)
+    if (peak > forceStart && peak < forceEnd && inStance(peak))
+      return "the knee's swing peak at " + seconds(peak) + " falls in a stance of the force";
+  for (std::size_t i = 0; i + 1 < force.size(); ++i) {
+    if (force[i].kind != Kind::ToeOff || force[i].time < t0 || force[i + 1].time > t1) continue;
+    const bool hasPeak = std::any_of(kin.peakTimes.begin(), kin.peakTimes.end(),
+                                     [&](double p) { return p > force[i].time && p < force[i + 1].time; });
+    if (!hasPeak)
+      return "the force's swing " + seconds(force[i].time) + " to " + seconds(force[i + 1].time) +
+             " holds no swing of the knee (no flexion peak)";
+  }
+  return "";
+}
+
+/// The other leg's columns (`_r` and `_l` swapped at the end of the hip and knee labels),
+/// when the file has them.
+std::optional<MotionColumns> otherLegColumns(const MotionTable& table, const MotionColumns& columns) {
+  const auto swap = [](const std::string& label) -> std::optional<std::string> {
+    if (label.size() < 2) return std::nullopt;
+    const std::string end = label.substr(label.size() - 2);
+    if (end != "_r" && end != "_l") return std::nullopt;
+    return label.substr(0, label.size() - 2) + (end == "_r" ? "_l" : "_r");
+  };
+  const auto hip = swap(columns.hip), knee = swap(columns.knee);
+  if (!hip || !knee) return std::nullopt;
+  for (const std::string* label : {&*hip, &*knee})
+    if (std::find(table.labels.begin(), table.labels.end(), *label) == table.labels.end()) return std::nullopt;
+  MotionColumns other = columns;
+  other.hip = *hip;
+  other.knee = *knee;
+  return other;
+}
+
+/// The events: the force's within the kinematics' time, and the kinematics' outside the
+/// force's time (nearer its ends than kEventToleranceS counts as inside only where the force
+/// has an event of that kind there), in time order, with each force event's disagreement.
+std::vector<FoundSwing> mergeEvents(const std::vector<Event>& force, const KinematicEvents& kin, double t0, double t1,
+                                    double forceStart, double forceEnd) {
+  std::vector<Event> events;
+  for (const Event& e : force)
+    if (e.time >= t0 && e.time <= t1) events.push_back(e);
+  for (const Event& e : kin.events) {
+    const bool matched = std::any_of(force.begin(), force.end(), [&](const Event& f) {
+      return f.kind == e.kind && std::abs(f.time - e.time) <= kEventToleranceS;
+    });
+    const bool decidedByForce = e.time > forceStart + kEventToleranceS && e.time < forceEnd - kEventToleranceS;
+    if (!matched && !decidedByForce) events.push_back(e);
+  }
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.time < b.time; });
+  std::vector<FoundSwing> swings = pairSwings(events);
+  const auto disagreement = [&](double time, Kind kind, const std::string& source) -> std::optional<double> {
+    if (source != "grf") return std::nullopt;
+    std::optional<double> best;
+    for (const Event& k : kin.events)
+      if (k.kind == kind && std::abs(k.time - time) <= kEventToleranceS && (!best || std::abs(time - k.time) < std::abs(*best)))
+        best = time - k.time;
+    return best;
+  };
+  for (FoundSwing& s : swings) {
+    s.toeOffDisagreement = disagreement(s.toeOff, Kind::ToeOff, s.toeOffSource);
+    s.heelContactDisagreement = disagreement(s.heelContact, Kind::HeelContact, s.heelContactSource);
+  }
+  return swings;
+}
+
+SwingList makeList(std::vector<FoundSwing> swings, const KinematicEvents& kin, const MotionTable& kinematics) {
+  SwingList out;
+  out.swings = std::move(swings);
+  out.gait = kin.gait.gait;
+  out.gaitBasis = kin.gait.basis;
+  out.kinematicAccuracy = out.gait == Gait::kRunning ? kRunningAccuracyS : kWalkingAccuracyS;
+  out.kinematicAccuracyBeyondTwoFrames = out.kinematicAccuracy > 2 * medianStep(kinematics.columns.front());
+  return out;
+}
+
 }  // namespace
+
+const char* gaitName(Gait gait) { return gait == Gait::kRunning ? "running" : "walking"; }
 
 SwingEventTimes findGrfEvents(const MotionTable& grf, const GrfSettings& settings) {
   checkThreshold(grf, settings);
   return splitByKind(calcGrfEvents(grf, settings));
 }
 
-SwingEventTimes findKinematicEvents(const MotionTable& kinematics, const MotionColumns& columns) {
-  return splitByKind(calcKinematicEvents(kinematics, columns));
+SwingEventTimes findKinematicEvents(const MotionTable& kinematics, const MotionColumns& columns, std::optional<Gait> gait) {
+  return splitByKind(calcKinematicEvents(kinematics, columns, gait).events);
+}
+
+SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns, const std::optional<GrfSettings>& grf,
+                     std::optional<Gait> gait) {
+  if (grf) return listSwings(kinematics, columns, readMotionTable(grf->path), *grf, gait);
+  checkLegKinematics(kinematics, columns);
+  const KinematicEvents kin = calcKinematicEvents(kinematics, columns, gait);
+  if (kinematics.rows() == 0) return makeList({}, kin, kinematics);
+  const std::vector<double>& t = kinematics.columns.front();
+  return makeList(mergeEvents({}, kin, t.front(), t.back(), 0, 0), kin, kinematics);
+}
+
+SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns, const MotionTable& grf,
+                     const GrfSettings& settings, std::optional<Gait> gait) {
+  const std::size_t force = grf.index(settings.verticalForce);  // throws, listing the labels, if missing
+  checkThreshold(grf, settings);
+  checkLegKinematics(kinematics, columns);
+  const KinematicEvents kin = calcKinematicEvents(kinematics, columns, gait);
+  const std::vector<double>& t = kinematics.columns.front();
+  const std::vector<double>& g = grf.columns.front();
+  if (t.empty() || grf.columns[force].empty()) return makeList({}, kin, kinematics);
+  const std::string where = grf.path + ": " + settings.verticalForce + ": ";
+  const auto kinematicsOnly = [&](const std::string& why) {
+    SwingList out = makeList(mergeEvents({}, kin, t.front(), t.back(), 0, 0), kin, kinematics);
+    out.notes.push_back("events from the kinematics, not the force (fallback_to_kinematics): " + where + why);
+    return out;
+  };
+  if (const std::string bad = checkForceFile(grf, grf.columns[force], kinematics); !bad.empty()) {
+    if (settings.fallbackToKinematics) return kinematicsOnly(bad);
+    throw InputError(where + bad);
+  }
+  if (g.back() <= t.front() || g.front() >= t.back()) {
+    const std::string bad = "time: expected times overlapping the kinematics' (" + kinematics.path + ": " +
+                            formatNumber(t.front()) + " to " + formatNumber(t.back()) + " s) (got " + formatNumber(g.front()) +
+                            " to " + formatNumber(g.back()) + " s)";
+    if (settings.fallbackToKinematics) return kinematicsOnly(bad);
+    throw InputError(grf.path + ":" + std::to_string(grf.rowLines.front()) + ": " + bad);
+  }
+  const std::vector<Event> forceEvents = calcGrfEvents(grf, settings);
+  if (const std::string contradiction = findContradiction(forceEvents, kin, t.front(), t.back(), g.front(), g.back());
+      !contradiction.empty()) {
+    std::string other;
+    if (const auto otherLeg = otherLegColumns(kinematics, columns)) {
+      const KinematicEvents otherKin = calcKinematicEvents(kinematics, *otherLeg, kin.gait.gait);
+      if (findContradiction(forceEvents, otherKin, t.front(), t.back(), g.front(), g.back()).empty())
+        other = "; they match the other leg's (" + otherLeg->hip + ", " + otherLeg->knee + "): is " + settings.verticalForce +
+                " the other foot's force? (OpenSim's example files: ground_force_vy right, 1_ground_force_vy left)";
+    }
+    const std::string bad = "expected the force's stance and swing to match the leg's kinematics (" + kinematics.path + ": " +
+                            columns.hip + ", " + columns.knee + ", " + gaitName(kin.gait.gait) + " rules) (got: " +
+                            contradiction + ")" +
+                            (other.empty() ? ": another trial's force file, a clock offset, or the other foot's column?" : other);
+    if (settings.fallbackToKinematics) return kinematicsOnly(bad);
+    throw InputError(where + bad);
+  }
+  return makeList(mergeEvents(forceEvents, kin, t.front(), t.back(), g.front(), g.back()), kin, kinematics);
 }
 
 std::vector<FoundSwing> findSwings(const MotionTable& kinematics, const MotionColumns& columns,
                                    const std::optional<GrfSettings>& grf) {
-  if (grf) return findSwings(kinematics, columns, readMotionTable(grf->path), *grf);
-  if (kinematics.rows() == 0) return {};
-  const std::vector<double>& t = kinematics.columns.front();
-  return pairSwings(mergeEvents({}, calcKinematicEvents(kinematics, columns), t.front(), t.back(), 0, 0));
+  return listSwings(kinematics, columns, grf).swings;
 }
 
 std::vector<FoundSwing> findSwings(const MotionTable& kinematics, const MotionColumns& columns, const MotionTable& grf,
                                    const GrfSettings& settings) {
-  const std::size_t force = grf.index(settings.verticalForce);  // throws, listing the labels, if missing
-  checkThreshold(grf, settings);
-  const std::vector<Event> kinematic = calcKinematicEvents(kinematics, columns);  // checks the hip and knee labels
-  const std::vector<double>& t = kinematics.columns.front();
-  const std::vector<double>& g = grf.columns.front();
-  if (t.empty() || grf.columns[force].empty()) return {};
-  if (g.back() <= t.front() || g.front() >= t.back())
-    throw InputError(grf.path + ":" + std::to_string(grf.rowLines.front()) + ": time: expected times overlapping the kinematics' (" +
-                     kinematics.path + ": " + formatNumber(t.front()) + " to " + formatNumber(t.back()) + " s) (got " +
-                     formatNumber(g.front()) + " to " + formatNumber(g.back()) + " s)");
-  return pairSwings(mergeEvents(calcGrfEvents(grf, settings), kinematic, t.front(), t.back(), g.front(), g.back()));
+  return listSwings(kinematics, columns, grf, settings).swings;
 }
 
 }  // namespace swingsim

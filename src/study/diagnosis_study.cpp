@@ -16,6 +16,7 @@
 #include "study/sweep_study.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace swingsim {
 
@@ -90,6 +91,7 @@ void serialize(A& a, GrfSettings& g) {
   a.path("file", g.path);
   a.optionalText("vertical_force", g.verticalForce);
   a.optionalNumber("threshold_N", g.thresholdN, [](double v) { return v > 0 && v < 1e4 ? "" : "must be in (0, 10000) N"; });
+  if (A::kReading || g.fallbackToKinematics) a.optionalFlag("fallback_to_kinematics", g.fallbackToKinematics);
 }
 
 template <class A>
@@ -137,6 +139,13 @@ void serializeRecordStudy(A& a, DiagnosisStudy& s) {
     GrfSettings grf = s.grf.value_or(GrfSettings{});
     a.optionalMap("grf", grf, hasGrf);
     if (hasGrf) s.grf = grf;
+    bool statesGait = s.gait.has_value();
+    if constexpr (A::kReading) statesGait = a.has("gait");
+    if (statesGait) {
+      Gait gait = s.gait.value_or(Gait::kWalking);
+      a.choice("gait", gait, {{"walking", Gait::kWalking}, {"running", Gait::kRunning}});
+      s.gait = gait;
+    }
     if (A::kReading || !s.movingHip) a.optionalFlag("moving_hip", s.movingHip);
     for (const auto& [key, list] : {std::pair{"train", &s.train}, std::pair{"validate", &s.validate}})
       for (const auto& r : *list) {
@@ -212,23 +221,32 @@ DiagnosisStudy loadDiagnosisStudy(const std::string& path) {
 }
 
 MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table,
-                                 const std::optional<GrfSettings>& grf) {
+                                 const std::optional<GrfSettings>& grf, std::optional<Gait> gait,
+                                 std::vector<std::string>* notes) {
   MotionColumns out = columns;
   if (record.toeOffTime) out.toeOffTime = record.toeOffTime;
   if (record.heelContactTime) out.heelContactTime = record.heelContactTime;
   if (!record.swing) return out;
   // The K-th complete swing of the file: events from the GRF where it covers them, else
   // from the kinematics (io/swing_events.h).
-  const std::vector<FoundSwing> swings = findSwings(table, columns, grf);
+  const SwingList list = listSwings(table, columns, grf, gait);
+  if (notes)
+    for (const std::string& n : list.notes) notes->push_back(record.displayName() + ": " + n);
+  const std::vector<FoundSwing>& swings = list.swings;
   const auto k = static_cast<std::size_t>(*record.swing);
+  if (swings.empty())
+    throw InputError(table.path + ": swing: " + std::to_string(k) + ": the file holds no complete swing of " + columns.knee +
+                     " (toe-off and heel contact both inside it; " + gaitName(list.gait) + " rules, " + list.gaitBasis +
+                     "); `swingsim swings FILE` lists what it finds");
   if (k < 1 || k > swings.size()) {
     std::string found;
-    for (std::size_t i = 0; i < swings.size(); ++i)
-      found += (i ? ", " : "") + std::to_string(i + 1) + ": " + formatNumber(swings[i].toeOff) + "-" +
-               formatNumber(swings[i].heelContact) + " s";
+    char buf[64];
+    for (std::size_t i = 0; i < swings.size(); ++i) {
+      std::snprintf(buf, sizeof buf, "%zu: %.4f-%.4f s", i + 1, swings[i].toeOff, swings[i].heelContact);
+      found += (i ? ", " : "") + std::string(buf);
+    }
     throw InputError(table.path + ": swing: expected a swing number from 1 to " + std::to_string(swings.size()) +
-                     " (the complete swings found" + (found.empty() ? "" : ": " + found) +
-                     "; `swingsim swings FILE` lists them) (got " + std::to_string(k) + ")");
+                     " (the complete swings found: " + found + "; `swingsim swings FILE` lists them) (got " + std::to_string(k) + ")");
   }
   out.toeOffTime = swings[k - 1].toeOff;
   out.heelContactTime = swings[k - 1].heelContact;
@@ -239,7 +257,7 @@ SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entr
   SwingRecord r;
   if (isMotionFile(entry.path)) {
     const MotionTable table = readMotionTable(entry.path);
-    const MotionColumns columns = resolveRecordTimes(entry, *study.motionColumns, table, study.grf);
+    const MotionColumns columns = resolveRecordTimes(entry, *study.motionColumns, table, study.grf, study.gait, &notes);
     std::optional<MotionTable> id;
     if (!entry.inverseDynamicsPath.empty()) id = readMotionTable(entry.inverseDynamicsPath);
     r = makeSwingRecord(table, columns, id ? &*id : nullptr);

@@ -60,6 +60,9 @@ struct DiagnosisStudy {
   /// swing: the GRF .mot whose vertical force gives `swing: K` records their events (`grf:`
   /// {file, vertical_force, threshold_N}); without it, or past its end, the kinematics do.
   std::optional<GrfSettings> grf;
+  /// swing: the gait of the `swing: K` records (`gait:` walking or running), which picks the
+  /// kinematic event rules; nullopt: detected from each file's stride (io/swing_events.h).
+  std::optional<Gait> gait;
   /// swing, thigh drive: a record with pelvis columns moves the hip along the measured pelvis
   /// (`moving_hip`, default true); false pins the hip in space as Burkett did.
   bool movingHip = true;
@@ -84,9 +87,12 @@ DiagnosisStudy loadDiagnosisStudy(const std::string& path);
 std::string formatDiagnosisStudyYaml(const DiagnosisStudy& study, const std::string& baseDir);
 
 /// The motion columns that cut `record` from its file `table`: the study's, with the
-/// entry's toe-off and heel-contact times, or those of its `swing: K`. Throws InputError.
+/// entry's toe-off and heel-contact times, or those of its `swing: K` (events checked as
+/// listSwings does, at `gait` or the one detected). Notes about the events (a force file that
+/// gave way to the kinematics) go to `notes` when given. Throws InputError.
 MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns& columns, const MotionTable& table,
-                                 const std::optional<GrfSettings>& grf = std::nullopt);
+                                 const std::optional<GrfSettings>& grf = std::nullopt,
+                                 std::optional<Gait> gait = std::nullopt, std::vector<std::string>* notes = nullptr);
 
 /// One swing record of a swing study: a CSV, or cut from an OpenSim file by the study's
 /// motion_columns and the entry's times, with the knee moment of the entry's

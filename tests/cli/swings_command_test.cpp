@@ -52,6 +52,47 @@ TEST(SwingsCommand, TheLeftLegReadsTheSecondFootsForce) {
   EXPECT_THAT(r.output, HasSubstr("    1     0.7882          1.2452      0.4570  grf           grf"));
 }
 
+const std::string kRunIk = kRoot + "/tests/data/opensim-running/rajagopal_subject01_run_ik.mot";
+const std::string kRunGrf = kRoot + "/tests/data/opensim-running/rajagopal_grf_run.mot";
+
+TEST(SwingsCommand, ARunGetsTheRunningRulesAndEachEventsDisagreement) {
+  const auto dir = scratch("run");
+  const CliRun r = runSwingsim("swings " + kRunIk + " --knee-sign 1 --grf " + kRunGrf + " --vertical-force R_ground_force_vy --json " +
+                               (dir / "s.json").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("gait: running (detected: median stride 0.69 s, under 0.85 s)"));
+  EXPECT_THAT(r.output, HasSubstr("more than 2 frames at this file's 100 Hz: the kinematics alone cannot place an event within 2 frames"));
+  // The right foot's force: toe-off 0.4178 s, heel contact 0.8678 s; the kinematics' 0.3 ms later and 9.1 ms earlier.
+  EXPECT_THAT(r.output, HasSubstr("    1     0.4178          0.8678      0.4500  grf           grf"));
+  EXPECT_THAT(r.output, HasSubstr("-0.3          +9.1"));
+  const Json j = Json::parse(slurp(dir / "s.json"));
+  EXPECT_EQ(j["gait"], "running");
+  EXPECT_NEAR(j["swings"][0]["toe_off_force_minus_kinematics_ms"].get<double>(), -0.3, 0.05);
+  // Stated walking on a run: the walking rules' toe-offs land 60-120 ms late, so the force is refused.
+  const CliRun walking = runSwingsim("swings " + kRunIk + " --knee-sign 1 --gait walking --grf " + kRunGrf +
+                                     " --vertical-force R_ground_force_vy");
+  EXPECT_EQ(walking.code, 1);
+  EXPECT_THAT(walking.output, HasSubstr("walking rules"));
+}
+
+TEST(SwingsCommand, TheOtherFootsColumnIsRefusedOrGivesWayWhenAsked) {
+  const auto dir = scratch("other");
+  const std::string json = (dir / "s.json").string();
+  const CliRun refused = runSwingsim("swings " + kIk + " --grf " + kGrf + " --vertical-force 1_ground_force_vy --json " + json);
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_THAT(refused.output, HasSubstr("they match the other leg's (hip_flexion_l, knee_angle_l): is 1_ground_force_vy the other foot's force?"));
+  EXPECT_FALSE(fs::exists(json));
+  const CliRun fallback =
+      runSwingsim("swings " + kIk + " --grf " + kGrf + " --vertical-force 1_ground_force_vy --fallback-to-kinematics --json " + json);
+  ASSERT_EQ(fallback.code, 0) << fallback.output;
+  EXPECT_THAT(fallback.output, HasSubstr("note: events from the kinematics, not the force (fallback_to_kinematics): "));
+  EXPECT_THAT(fallback.output, HasSubstr("kinematics    kinematics"));
+  const Json j = Json::parse(slurp(json));
+  ASSERT_EQ(j["notes"].size(), 1u);
+  EXPECT_EQ(j["swings"][0]["toe_off_source"], "kinematics");
+  EXPECT_TRUE(j["swings"][0]["toe_off_force_minus_kinematics_ms"].is_null());
+}
+
 TEST(SwingsCommand, BadInputExitsWithAMessageAndWritesNothing) {
   const auto dir = scratch("bad");
   const std::string json = (dir / "s.json").string();

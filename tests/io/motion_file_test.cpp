@@ -199,13 +199,22 @@ TEST(MotionFile, SignAndOffsetGiveClinicalFlexion) {
   c.hipSign = -1;
   c.hipOffset = 10 * kDegToRad;
   c.kneeSign = -1;
-  c.kneeOffset = -5 * kDegToRad;
+  c.kneeOffset = 80 * kDegToRad;  // keeps the flipped knee flexed: a knee hyperextended throughout is refused
   const SwingRecord r = makeSwingRecord(table, c);
   constexpr double kDegRoundTrip = 1e-12;  // deg: degrees -> radians -> degrees of values under 100 deg
   for (int k = 0; k < kRows; k += 7) {
     const auto i = static_cast<std::size_t>(k);
     EXPECT_NEAR(r.hipFlexion[i] * kRadToDeg, -hipDeg(frameTime(k)) + 10, kDegRoundTrip) << k;
-    EXPECT_NEAR(r.kneeFlexion[i] * kRadToDeg, -kneeDeg(frameTime(k)) - 5, kDegRoundTrip) << k;
+    EXPECT_NEAR(r.kneeFlexion[i] * kRadToDeg, -kneeDeg(frameTime(k)) + 80, kDegRoundTrip) << k;
+  }
+  c.kneeOffset = -5 * kDegToRad;  // every sample hyperextended: a flipped sign
+  try {
+    makeSwingRecord(table, c);
+    ADD_FAILURE() << "a knee hyperextended on every sample was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("trial.sto: knee_angle_r: expected knee flexion, positive when bent (got 51 of 51 "
+                                               "samples over the swing below -5 deg"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("set knee_sign: 1"));
   }
 }
 

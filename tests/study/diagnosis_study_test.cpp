@@ -2,6 +2,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <functional>
 #include <unistd.h>
 
 #include <cmath>
@@ -369,8 +371,68 @@ TEST(StudyRecordSwingNumber, ResolvesToTheSwingsFoundAndRefusesOneThatDoesNotExi
     ADD_FAILURE() << "swing 3 of 2 was accepted";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("gait2392_subject01_walk1_ik.mot: swing: expected a swing number from 1 to 2"));
+    EXPECT_THAT(e.what(), HasSubstr("(the complete swings found: 1: 1.4086-1.8522 s, 2: "));  // 0.1 ms, not 16 digits
     EXPECT_THAT(e.what(), HasSubstr("(got 3)"));
   }
+}
+
+/// The InputError message of `f`, "" if none.
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(StudyRecordSwingNumber, AForceFileThatFailsItsChecksIsBlamedNotTheKinematics) {
+  // The other foot's column in a study: the message names the force file and column, and the
+  // leg it matches, not "swing: expected a swing number from 1 to 0" on the IK file.
+  const MotionTable ik = readMotionTable(kDemoData + "gait2392_subject01_walk1_ik.mot");
+  MotionColumns columns;
+  columns.hip = "hip_flexion_r";
+  columns.knee = "knee_angle_r";
+  columns.kneeSign = -1;
+  columns.pelvisTilt = "pelvis_tilt";
+  GrfSettings grf;
+  grf.path = kDemoData + "subject01_walk1_grf.mot";
+  grf.verticalForce = "1_ground_force_vy";
+  StudyRecord entry;
+  entry.path = ik.path;
+  entry.swing = 1;
+  EXPECT_THAT(errorOf([&] { resolveRecordTimes(entry, columns, ik, grf); }),
+              HasSubstr("subject01_walk1_grf.mot: 1_ground_force_vy: expected the force's stance and swing to match the leg's "
+                        "kinematics"));
+  // Asked for, the kinematics give the events and the study's notes say so.
+  grf.fallbackToKinematics = true;
+  std::vector<std::string> notes;
+  const MotionColumns cut = resolveRecordTimes(entry, columns, ik, grf, std::nullopt, &notes);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_THAT(notes[0], HasSubstr("gait2392_subject01_walk1_ik: events from the kinematics, not the force (fallback_to_kinematics)"));
+  EXPECT_EQ(cut.toeOffTime, findSwings(ik, columns, std::nullopt).front().toeOff);
+  // A stance-only cut of the file holds no swing: said as such, with the rules used.
+  MotionTable stance = ik;
+  for (auto& column : stance.columns) column.resize(20);  // 0.5-0.82 s: the right leg in stance
+  stance.rowLines.resize(20);
+  EXPECT_THAT(errorOf([&] { resolveRecordTimes(entry, columns, stance, std::nullopt); }),
+              HasSubstr("swing: 1: the file holds no complete swing of knee_angle_r"));
+}
+
+TEST(StudyRecordSwingNumber, AStudyStatesTheGaitAndTheFallbackAndTheyRoundTrip) {
+  const std::string grf = "grf: {file: " + kDemoData + "subject01_walk1_grf.mot, fallback_to_kinematics: true}\ngait: running\n";
+  const std::string path = writeMotionStudy("gait", entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: "
+                                                                           "knee_angle_r, knee_sign: -1}\n" + grf));
+  const DiagnosisStudy study = loadDiagnosisStudy(path);
+  ASSERT_TRUE(study.gait.has_value());
+  EXPECT_EQ(*study.gait, Gait::kRunning);
+  ASSERT_TRUE(study.grf.has_value());
+  EXPECT_TRUE(study.grf->fallbackToKinematics);
+  const std::string yaml = formatDiagnosisStudyYaml(study, fs::path(path).parent_path().string());
+  EXPECT_THAT(yaml, HasSubstr("gait: running"));
+  EXPECT_THAT(yaml, HasSubstr("fallback_to_kinematics: true"));
+  EXPECT_THAT(errorOfStudy("gait", entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r}\ngait: jogging\n")),
+              HasSubstr("study.yaml:6: gait: expected one of: walking, running (got 'jogging')"));
 }
 
 }  // namespace
