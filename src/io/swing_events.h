@@ -34,7 +34,7 @@ constexpr double kMinGaitPhaseS = 0.05;
 /// A force event and the kinematic event of its kind may differ by this much before the two
 /// are taken to describe different steps, s. The kinematic rules land within 23 ms of the
 /// force plates on the public walks and runs after their bias is removed (docs/swing-events.md:
-/// worst 22 ms, 88 events); 50 ms is twice that and 3 frames at 60 Hz, while the other foot's
+/// worst 22 ms, 100 events); 50 ms is twice that and 3 frames at 60 Hz, while the other foot's
 /// events lie a half stride (300-600 ms) away.
 constexpr double kEventToleranceS = 0.050;
 /// A stride shorter than this is running, longer walking: the public runs have 0.67-0.70 s,
@@ -52,9 +52,9 @@ constexpr double kMaxStancePeakN = 9000;
 // Each kinematic rule's mean error against the force plates (kinematic minus force), s,
 // removed from its events: measured on the public OpenSim trials (docs/swing-events.md,
 // `SwingEvents.KinematicRulesAgainstTheForcePlatesPerGait`). Walking: one subject's walk seen
-// through three IK pipelines (8 toe-offs, 9 heel contacts); running: two subjects (42 events
-// of each kind), whose toe-off means (-4.0 and +4.0 ms) differ in sign, so that rule is left
-// uncorrected.
+// through three IK pipelines (8 toe-offs, 9 heel contacts); running: two subjects (41
+// toe-offs, 42 heel contacts), whose toe-off means (-3.0 and +3.9 ms) differ in sign, so that
+// rule is left uncorrected.
 constexpr double kWalkingToeOffBiasS = -0.0275;
 constexpr double kWalkingHeelContactBiasS = -0.0248;
 constexpr double kRunningToeOffBiasS = 0;
