@@ -1,5 +1,6 @@
 // swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M]
-//   [--hip-rate-deg-s DEG/S] [--knee-rate-deg-s DEG/S] [--integrator METHOD] [--accuracy A]
+//   [--hip-rate-deg-s DEG/S] [--knee-rate-deg-s DEG/S] [--knee-start measured|initial]
+//   [--integrator METHOD] [--accuracy A]
 //   [--json FILE] [--out DIR]
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
 #include "io/trajectory_writer.h"
+#include "leg/toe_off_state.h"
 #include "report/swing_json.h"
 #include "report/swing_plot.h"
 #include "swing/knee_setup.h"
@@ -31,6 +33,7 @@ struct SimulateArguments {
   std::optional<std::string> knee;
   std::optional<AddedMass> added;
   std::optional<double> hipRateDegS, kneeRateDegS;  ///< deg/s
+  std::optional<std::string> kneeStart;              ///< "measured" or "initial"
   std::optional<std::string> integrator;
   std::optional<double> accuracy;
   std::optional<std::string> json, out;
@@ -77,6 +80,13 @@ int runSimulate(const SimulateArguments& a) {
   if (a.accuracy) options.accuracy = *a.accuracy;
   Participant loaded = loadParticipant(a.participant);
   if (a.hipRateDegS) loaded.initial.hipFlexionRate = *a.hipRateDegS * kDegToRad;
+  if (a.kneeStart) loaded.initial.kneeStart = *a.kneeStart == "initial" ? KneeStart::kInitial : KneeStart::kMeasured;
+  const bool kneeFromRecord = loaded.drive == SwingDrive::kThighKinematics && loaded.initial.kneeStart == KneeStart::kMeasured &&
+                              !loaded.thighKinematics.kneeFlexion.empty();
+  if (a.kneeRateDegS && kneeFromRecord)
+    throw InputError("--knee-rate-deg-s: under the measured thigh drive the knee starts at the record's angle and rate at "
+                     "toe-off (" + loaded.thighKinematics.path + "); add --knee-start initial to start it from the participant's "
+                     "initial knee_flexion_deg and this rate");
   if (a.kneeRateDegS) loaded.initial.kneeFlexionRate = *a.kneeRateDegS * kDegToRad;
   const KneeModel model = loadKneeModel(a.knee.value_or(loaded.kneeModelPath));
   const SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
@@ -86,6 +96,21 @@ int runSimulate(const SimulateArguments& a) {
 
   std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
   std::printf("  drive               %s\n", describeDrive(p).c_str());
+  const InitialConditions start = calcToeOffState(p, nullptr);
+  if (p.drive == SwingDrive::kThighKinematics) {
+    const ThighMotion thigh(p.thighKinematics);
+    const InitialConditions measured = calcToeOffState(p, &thigh);
+    const bool fromRecord = p.initial.kneeStart == KneeStart::kMeasured && !p.thighKinematics.kneeFlexion.empty();
+    std::printf("  toe-off             knee %.1f deg, %.1f deg/s (%s); thigh %.1f deg, %.1f deg/s (the record's)\n",
+                measured.kneeFlexion * kRadToDeg, measured.kneeFlexionRate * kRadToDeg,
+                fromRecord ? "the record's, smoothing-spline value and slope"
+                           : p.thighKinematics.kneeFlexion.empty() ? "initial: the record has no knee"
+                                                                   : "initial: knee_start: initial",
+                measured.hipFlexion * kRadToDeg, measured.hipFlexionRate * kRadToDeg);
+  } else {
+    std::printf("  toe-off             knee %.1f deg, %.1f deg/s; hip %.1f deg, %.1f deg/s (initial)\n", start.kneeFlexion * kRadToDeg,
+                start.kneeFlexionRate * kRadToDeg, start.hipFlexion * kRadToDeg, start.hipFlexionRate * kRadToDeg);
+  }
   if (r.trialEnd)
     printTrialEnd(*r.trialEnd, p);
   else
@@ -152,6 +177,11 @@ Command addSimulateCommand(CLI::App& app) {
                                    "hip flexion rate at toe-off, deg/s (default: the participant's, 0)")
       ->type_name("DEG/S")
       ->check(finiteNumber([](double v) { return checkPlausible(v, kJointRateRange, "a hip rate"); }));
+  addTextOption(sub, "--knee-start", a->kneeStart,
+                "under the measured thigh drive, where the knee starts: measured (the record's angle and rate at toe-off) or initial "
+                "(the participant's initial values); default: the participant's initial.knee_start, measured if absent",
+                "measured|initial")
+      ->check(oneOf({"measured", "initial"}));
   sub->add_option_function<double>("--knee-rate-deg-s", [a](double v) { a->kneeRateDegS = v; },
                                    "knee flexion rate at toe-off, deg/s (default: the participant's, 0)")
       ->type_name("DEG/S")

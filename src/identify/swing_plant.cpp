@@ -12,6 +12,7 @@
 
 #include "core/input_error.h"
 #include "core/units.h"
+#include "leg/toe_off_state.h"
 #include "numerics/bounded_least_squares.h"
 #include "swing/knee_setup.h"
 #include "swing/reference_swing.h"
@@ -298,8 +299,17 @@ BoundedFitSettings modelFitSettings() {
 
 // The knee's toe-off rate under the thigh drive: within 20 rad/s of the measured knee's
 // first difference (Winter's toe-off knee moves at 6.7 rad/s).
+/// The record's knee at toe-off as a measured-thigh swing starts from it (leg/toe_off_state.h).
+MeasuredKneeStart measuredKneeStart(const SwingRecord& r) {
+  ThighKinematics k;
+  k.path = r.path;
+  k.time = r.time;
+  k.kneeFlexion = r.kneeFlexion;
+  return calcMeasuredKneeStart(k);
+}
+
 BoundedParameter kneeRateParameter(const SwingRecord& r) {
-  const double measured = r.time.size() > 1 ? (r.kneeFlexion[1] - r.kneeFlexion[0]) / (r.time[1] - r.time[0]) : 0.0;
+  const double measured = measuredKneeStart(r).kneeFlexionRate;
   return {"", measured, measured - 20.0, measured + 20.0, false, 1.0};
 }
 
@@ -326,7 +336,8 @@ SwingPlant::SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vect
 
 std::vector<BoundedParameter> SwingPlant::poseParameters(std::size_t i) const {
   const SwingRecord& r = record(i);
-  if (base_.drive == SwingDrive::kThighKinematics) return {kneeRateParameter(r), poseParameter(r.kneeFlexion.front())};
+  // The fit starts where a measured-thigh simulation does: the record's knee at toe-off.
+  if (base_.drive == SwingDrive::kThighKinematics) return {kneeRateParameter(r), poseParameter(measuredKneeStart(r).kneeFlexion)};
   return {poseParameter(r.hipFlexion.front()), poseParameter(r.kneeFlexion.front())};
 }
 
@@ -622,6 +633,7 @@ std::string SwingPlant::verify(const PlantModel& model) const {
     const PoseFit pose = fitPose(params, index);
     SwingSetup setup = makeSwingSetup(participant, law);
     setup.participant.initial.kneeFlexion = pose.knee;
+    setup.participant.initial.kneeStart = KneeStart::kInitial;  // the fitted pose, not the record's
     if (base_.drive == SwingDrive::kThighKinematics) {
       setup.participant.drive = SwingDrive::kThighKinematics;
       setup.participant.thighKinematics = thighKinematicsOf(r, base_.movingHip);

@@ -338,6 +338,19 @@ void checkKneeSign(const std::string& path, const std::string& label, const std:
 
 }  // namespace
 
+void requireNamedColumns(const MotionTable& table, const MotionColumns& columns, const std::string& askedBy) {
+  const std::pair<const char*, const std::string*> named[] = {
+      {"hip", &columns.hip},           {"knee", &columns.knee},           {"hip_moment", &columns.hipMoment},
+      {"pelvis_tilt", &columns.pelvisTilt}, {"pelvis_tx", &columns.pelvisTx}, {"pelvis_ty", &columns.pelvisTy}};
+  for (const auto& [key, label] : named) {
+    if (label->empty() || std::find(table.labels.begin(), table.labels.end(), *label) != table.labels.end()) continue;
+    std::string available;
+    for (const std::string& l : table.labels) available += (available.empty() ? "" : ", ") + l;
+    throw InputError(askedBy + "." + key + ": expected a column of " + table.path + ":" + std::to_string(table.labelLine) + " (got '" + *label +
+                     "', which it does not have; available: " + available + ")");
+  }
+}
+
 void checkLegKinematics(const MotionTable& table, const MotionColumns& columns) {
   if (table.rows() == 0) return;
   table.column(columns.hip);  // a missing label fails here first, naming those there are

@@ -86,6 +86,12 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
 /// flipped sign (OpenSim's knee_angle is negative in flexion), rad.
 constexpr double kHyperextendedKnee = -5 * kDegToRad;
 
+/// Checks that every column `columns` names (hip, knee, hip_moment, pelvis_*) is in `table`.
+/// Throws InputError `<askedBy>.<key>: expected a column of <file> (got '<label>', which it
+/// does not have; available: ...)`, `askedBy` naming the file and map that asked for it (e.g.
+/// "study.yaml: motion_columns").
+void requireNamedColumns(const MotionTable& table, const MotionColumns& columns, const std::string& askedBy);
+
 /// At least this share of knee samples below kHyperextendedKnee is a flipped sign, refused
 /// (between half and this a warning): no knee is hyperextended for 90 % of a recording.
 constexpr double kHyperextendedShare = 0.9;

@@ -7,6 +7,7 @@
 #include "core/output_files.h"
 #include "io/motion_columns_yaml.h"
 #include "io/motion_file.h"
+#include "io/swing_events.h"
 #include "io/swing_record_csv.h"
 #include "io/yaml_archive.h"
 
@@ -58,6 +59,9 @@ void serialize(A& a, InitialConditions& c) {
   a.optionalAngle("knee_flexion_deg", c.kneeFlexion, mustBePlausible(kInitialKneeRange, "an initial knee angle"));
   a.optionalAngle("hip_flexion_rate_deg_s", c.hipFlexionRate, mustBePlausible(kJointRateRange, "a hip rate"));
   a.optionalAngle("knee_flexion_rate_deg_s", c.kneeFlexionRate, mustBePlausible(kJointRateRange, "a knee rate"));
+  // Under the measured thigh drive: the record's knee at toe-off (measured) or the two above.
+  if (A::kReading || c.kneeStart != KneeStart::kMeasured)
+    a.choice("knee_start", c.kneeStart, {{"measured", KneeStart::kMeasured}, {"initial", KneeStart::kInitial}}, true);
 }
 
 template <class A>
@@ -129,6 +133,16 @@ void serialize(A& a, ThighKinematics& t) {
   MotionColumns columns = t.columns.value_or(MotionColumns{});
   serialize(a, columns);
   t.columns = columns;
+  // The K-th complete swing found in the file (events from the kinematics), as a study's record takes it.
+  std::optional<double> swing;
+  if (t.swing) swing = *t.swing;
+  optionalSeconds(a, "swing", swing, [](double v) {
+    return v >= 1 && v <= 1000 && v == std::floor(v) ? "" : "expected a whole number from 1 (the first swing in the file)";
+  });
+  if (swing) t.swing = static_cast<int>(*swing);
+  a.require(!t.swing || (!columns.toeOffTime && !columns.heelContactTime), "swing",
+            "either swing (the K-th swing found in the file) or toe_off_s and heel_contact_s, not both",
+            [&] { return std::to_string(t.swing.value_or(0)) + " with times"; });
 }
 
 template <class A>
@@ -201,7 +215,16 @@ namespace {
 /// name read with OpenSim's right-leg labels (a missing one names the map form).
 SwingRecord readThighMotion(const ThighKinematics& t, const YamlMap& yaml) {
   const MotionTable table = readMotionTable(t.path);
-  if (t.columns) return makeSwingRecord(table, *t.columns);
+  if (t.columns) {
+    requireNamedColumns(table, *t.columns, yaml.path() + ": thigh_kinematics");
+    MotionColumns columns = *t.columns;
+    if (t.swing) {
+      const FoundSwing swing = selectSwing(listSwings(table, columns, std::nullopt), table, columns.knee, *t.swing);
+      columns.toeOffTime = swing.toeOff;
+      columns.heelContactTime = swing.heelContact;
+    }
+    return makeSwingRecord(table, columns);
+  }
   try {
     return makeSwingRecord(table, openSimRightLegColumns(table));
   } catch (const InputError& e) {
@@ -219,7 +242,7 @@ Participant readParticipant(YamlMap& yaml) {
   serialize(a, p);
   yaml.finish();
   if (p.drive == SwingDrive::kThighKinematics) {
-    // Only the hip (and the pelvis) of the record is used.
+    // The hip (and the pelvis) drive; the knee gives the state at toe-off (leg/toe_off_state.h).
     ThighKinematics& t = p.thighKinematics;
     const SwingRecord record = isMotionFile(t.path) ? readThighMotion(t, yaml) : readSwingRecord(t.path);
     t.time = record.time;
@@ -227,6 +250,7 @@ Participant readParticipant(YamlMap& yaml) {
     t.pelvisX = record.pelvisX;
     t.pelvisY = record.pelvisY;
     t.pelvisTilt = record.pelvisTilt;
+    t.kneeFlexion = record.kneeFlexion;
   }
   return p;
 }

@@ -493,6 +493,25 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
   return makeList(mergeEvents(forceEvents, kin, t.front(), t.back(), g.front(), g.back()), kin, kinematics);
 }
 
+FoundSwing selectSwing(const SwingList& list, const MotionTable& table, const std::string& knee, int k) {
+  const std::vector<FoundSwing>& swings = list.swings;
+  if (swings.empty())
+    throw InputError(table.path + ": swing: " + std::to_string(k) + ": the file holds no complete swing of " + knee +
+                     " (toe-off and heel contact both inside it; " + gaitName(list.gait) + " rules, " + list.gaitBasis +
+                     "); `swingsim swings FILE` lists what it finds");
+  if (k < 1 || static_cast<std::size_t>(k) > swings.size()) {
+    std::string found;
+    char buf[64];
+    for (std::size_t i = 0; i < swings.size(); ++i) {
+      std::snprintf(buf, sizeof buf, "%zu: %.4f-%.4f s", i + 1, swings[i].toeOff, swings[i].heelContact);
+      found += (i ? ", " : "") + std::string(buf);
+    }
+    throw InputError(table.path + ": swing: expected a swing number from 1 to " + std::to_string(swings.size()) +
+                     " (the complete swings found: " + found + "; `swingsim swings FILE` lists them) (got " + std::to_string(k) + ")");
+  }
+  return swings[static_cast<std::size_t>(k - 1)];
+}
+
 std::vector<FoundSwing> findSwings(const MotionTable& kinematics, const MotionColumns& columns,
                                    const std::optional<GrfSettings>& grf) {
   return listSwings(kinematics, columns, grf).swings;

@@ -121,6 +121,11 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
 /// Same, with the GRF table already read (`settings.path` is not read again).
 SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns, const MotionTable& grf,
                      const GrfSettings& settings, std::optional<Gait> gait = std::nullopt);
+/// The K-th (1-based) of the swings listed from `table`, whose knee column is `knee`.
+/// Throws InputError `file: swing: ...` naming the swings there are (times to 0.1 ms), or
+/// that there is none and which rules found none.
+FoundSwing selectSwing(const SwingList& list, const MotionTable& table, const std::string& knee, int k);
+
 /// listSwings(...).swings.
 std::vector<FoundSwing> findSwings(const MotionTable& kinematics, const MotionColumns& columns,
                                    const std::optional<GrfSettings>& grf);

@@ -36,12 +36,21 @@ enum class ComRule {
 /// Where the foot's COM distance in Table 2 is measured from.
 enum class FootComFrom { kToe, kAnkle };
 
+/// Where a swing under the measured thigh drive starts its knee (`initial: knee_start:`).
+enum class KneeStart {
+  kMeasured,  ///< the record's knee angle and rate at toe-off, when the record has the knee
+  kInitial,   ///< the participant's initial knee_flexion_deg and knee_flexion_rate_deg_s
+};
+
 /// Initial conditions at toe-off.
 struct InitialConditions {
   double hipFlexion = -15 * kDegToRad;  ///< rad
   double kneeFlexion = 10 * kDegToRad;  ///< rad
   double hipFlexionRate = 0;            ///< rad/s (Burkett assumed zero)
   double kneeFlexionRate = 0;           ///< rad/s (Burkett assumed zero)
+  /// Under the measured thigh drive the knee starts where the record does; a hip-moment
+  /// swing always starts from kneeFlexion and kneeFlexionRate.
+  KneeStart kneeStart = KneeStart::kMeasured;
 };
 
 /// The swing-end rule: the thigh has reached its defined flexion position AND the knee,
@@ -106,6 +115,12 @@ struct ThighKinematics {
   /// The measured pelvis at the same times: translation in the ground frame, m (x forward,
   /// y up), and tilt about +z, rad. Empty = the hip is fixed in space (Burkett's assumption).
   std::vector<double> pelvisX, pelvisY, pelvisTilt;
+  /// The measured knee flexion at the same times, rad; empty = not measured. It never drives
+  /// the leg: it gives the knee's state at toe-off (leg/toe_off_state.h).
+  std::vector<double> kneeFlexion;
+  /// The K-th complete swing (1-based) found in the .mot/.sto (`swing: K` in the map form),
+  /// instead of toe_off_s and heel_contact_s.
+  std::optional<int> swing;
   /// How a .mot/.sto was read, when the file gave it as a map ({file, motion_columns keys,
   /// toe_off_s, heel_contact_s}); nullopt: a plain file name (OpenSim right-leg labels).
   std::optional<MotionColumns> columns;

@@ -232,24 +232,9 @@ MotionColumns resolveRecordTimes(const StudyRecord& record, const MotionColumns&
   const SwingList list = listSwings(table, columns, grf, gait);
   if (notes)
     for (const std::string& n : list.notes) notes->push_back(record.displayName() + ": " + n);
-  const std::vector<FoundSwing>& swings = list.swings;
-  const auto k = static_cast<std::size_t>(*record.swing);
-  if (swings.empty())
-    throw InputError(table.path + ": swing: " + std::to_string(k) + ": the file holds no complete swing of " + columns.knee +
-                     " (toe-off and heel contact both inside it; " + gaitName(list.gait) + " rules, " + list.gaitBasis +
-                     "); `swingsim swings FILE` lists what it finds");
-  if (k < 1 || k > swings.size()) {
-    std::string found;
-    char buf[64];
-    for (std::size_t i = 0; i < swings.size(); ++i) {
-      std::snprintf(buf, sizeof buf, "%zu: %.4f-%.4f s", i + 1, swings[i].toeOff, swings[i].heelContact);
-      found += (i ? ", " : "") + std::string(buf);
-    }
-    throw InputError(table.path + ": swing: expected a swing number from 1 to " + std::to_string(swings.size()) +
-                     " (the complete swings found: " + found + "; `swingsim swings FILE` lists them) (got " + std::to_string(k) + ")");
-  }
-  out.toeOffTime = swings[k - 1].toeOff;
-  out.heelContactTime = swings[k - 1].heelContact;
+  const FoundSwing swing = selectSwing(list, table, columns.knee, *record.swing);
+  out.toeOffTime = swing.toeOff;
+  out.heelContactTime = swing.heelContact;
   return out;
 }
 
@@ -257,6 +242,7 @@ SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entr
   SwingRecord r;
   if (isMotionFile(entry.path)) {
     const MotionTable table = readMotionTable(entry.path);
+    requireNamedColumns(table, *study.motionColumns, study.path + ": motion_columns");
     const MotionColumns columns = resolveRecordTimes(entry, *study.motionColumns, table, study.grf, study.gait, &notes);
     std::optional<MotionTable> id;
     if (!entry.inverseDynamicsPath.empty()) id = readMotionTable(entry.inverseDynamicsPath);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "leg/toe_off_state.h"
 
 namespace swingsim {
 
@@ -61,12 +62,7 @@ SwingRun::SwingRun(const SwingSetup& setup, const SwingOptions& options)
     throw std::invalid_argument("simulateSwing: Simbody's event handlers need one of Simbody's integrators");
   MultibodySystem& system = leg_.updSystem();
   if (options.simbodyEvents) addSwingEventHandlers(system, leg_, log_, rule_, options.eventWindow);
-  InitialConditions initialConditions = p_.initial;
-  if (thighMotion_) {
-    initialConditions.hipFlexion = thighMotion_->calcAngle(0);
-    initialConditions.hipFlexionRate = thighMotion_->calcRate(0);
-  }
-  const State initial = leg_.makeInitialState(initialConditions);
+  const State initial = leg_.makeInitialState(calcToeOffState(p_, thighMotion_ ? &*thighMotion_ : nullptr));
   if (options.integrator == SwingIntegrator::kDormandPrince) {
     // End steps on the hip moment's kinks; the thigh spline is smooth (C4).
     auto dp = std::make_unique<DormandPrinceStepper>(system, initial, options.accuracy,

@@ -10,6 +10,7 @@
 #include "core/output_files.h"
 #include "core/units.h"
 #include "io/motion_file.h"
+#include "io/swing_events.h"
 #include "../cli/run_swingsim.h"
 
 namespace swingsim {
@@ -237,6 +238,27 @@ TEST(ParticipantThighMotion, MapFormCutsTheFileAndRoundTrips) {
   EXPECT_EQ(back.thighKinematics.columns->heelContactTime, 1.8);
 }
 
+TEST(ParticipantThighMotion, SwingNumberCutsTheKthSwingAndKeepsTheKnee) {
+  // `swing: K` as a study's record takes it: the K-th complete swing the file holds.
+  const std::string map = "{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt";
+  const Participant p = parseParticipant(winterWith(map + ", swing: 1}"), kRoot + "/participants/w.yaml");
+  const ThighKinematics& t = p.thighKinematics;
+  MotionColumns columns = *t.columns;
+  const MotionTable table = readMotionTable(kGait10Ik);
+  const FoundSwing first = listSwings(table, columns, std::nullopt).swings.at(0);
+  EXPECT_NEAR(t.time.back(), first.duration(), 1e-12);
+  EXPECT_EQ(t.swing, 1);
+  // The measured knee comes with the thigh: the knee's state at toe-off (leg/toe_off_state.h).
+  ASSERT_EQ(t.kneeFlexion.size(), t.time.size());
+  EXPECT_GT(t.kneeFlexion.front(), 20 * kDegToRad);  // the knee has begun to flex at toe-off
+  const std::string dir = kRoot + "/participants";
+  const std::string text = formatParticipantYaml(p, dir);
+  EXPECT_THAT(text, HasSubstr("swing: 1}"));
+  EXPECT_EQ(parseParticipant(text, dir + "/roundtrip.yaml").thighKinematics.time, t.time);
+  EXPECT_THAT(thighError(map + ", swing: 1, toe_off_s: 0.2}"), HasSubstr("thigh_kinematics.swing: either swing"));
+  EXPECT_THAT(thighError(map + ", swing: 4}"), HasSubstr("subject01_walk_IK.mot: swing: expected a swing number from 1 to 1"));
+}
+
 TEST(ParticipantThighMotion, BadInputNamesTheMapFormAndTheLabelsThere) {
   // A .mot without OpenSim's right-leg labels, given by name: the message names the map form.
   std::string rows;
@@ -249,7 +271,8 @@ TEST(ParticipantThighMotion, BadInputNamesTheMapFormAndTheLabelsThere) {
   EXPECT_THAT(plain, HasSubstr("{file: F, hip: LABEL, knee: LABEL"));
   // The map form: a label the file lacks lists those it has; times outside the file; a CSV.
   EXPECT_THAT(thighError("{file: " + kGait10Ik + ", hip: hip_flexion, knee: knee_angle_r}"),
-              HasSubstr("subject01_walk_IK.mot:11: hip_flexion: column is missing (available: time, pelvis_tilt, pelvis_tx,"));
+              HasSubstr("w.yaml: thigh_kinematics.hip: expected a column of " + kGait10Ik + ":11 (got 'hip_flexion', which it does not "
+                        "have; available: time, pelvis_tilt, pelvis_tx,"));
   EXPECT_THAT(thighError("{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, toe_off_s: 3, heel_contact_s: 3.5}"),
               HasSubstr("subject01_walk_IK.mot: toe_off_s: expected a time within the file, before its last row; the file's "
                         "time runs from 0 to 2.5 s (got 3 s)"));

@@ -202,7 +202,9 @@ TEST(MotionColumnsStudy, BadMotionColumnsNameTheKey) {
     loadDiagnosisPlant(study, 0);
     FAIL() << "a missing column was not noticed";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("train.sto:7: hip_flexion_l: column is missing (available: time, hip_flexion_r, "
+    // The study key that named it, and the file's label line.
+    EXPECT_THAT(e.what(), HasSubstr("study.yaml: motion_columns.hip: expected a column of "));
+    EXPECT_THAT(e.what(), HasSubstr("train.sto:7 (got 'hip_flexion_l', which it does not have; available: time, hip_flexion_r, "
                                     "knee_angle_r, hip_moment)"));
   }
 }
