@@ -125,6 +125,7 @@ bool SwingRun::takeStep() {
 
 void SwingRun::recordStep(const StepEnd& now, const State& s) {
   if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) throw errors_.diverged(s);
+  if (const auto passed = findKneeRisingAbove(previous_, now, kKneeFlexionLimit)) throw errors_.kneeLeftRange(s, *passed);
   if (!options_.simbodyEvents) handleStepEvents(previous_, now, rule_, log_);
   log_.confirmUntil(now.t);
   if (impacts_) impacts_->onStep(previous_, now);

@@ -55,6 +55,11 @@ struct SwingOptions {
   double maxWallSeconds = 60;       ///< s of wall-clock time one swing may take before RunError
 };
 
+/// rad: where the knee's physical flexion range ends (180 deg: the shank folded onto the
+/// thigh). No knee model has a flexion stop, so nothing in the model holds the knee below it;
+/// a simulated knee that passes it is a failed run (RunError), never a result.
+constexpr double kKneeFlexionLimit = kPi;
+
 struct SwingEvent {
   /// toe_off, thigh_at_target, knee_peak_flexion, knee_enters_zone, knee_leaves_zone,
   /// knee_bounce_peak (a flexion peak above the zone after a bounce), swing_end
@@ -168,7 +173,8 @@ SwingOptions makePlainPathOptions(double accuracy, double eventWindow);
 SwingOptions makeSimbodyIntegratorOptions(double accuracy = 1e-4);
 
 /// Runs one swing (SwingRun, swing/swing_run.h). Throws RunError (with the time, the state
-/// and the likely cause) if the integrator fails, the swing does not end within the time
+/// and the likely cause) if the integrator fails, the knee passes its physical range
+/// (kKneeFlexionLimit), the swing does not end within the time
 /// limit, or it exceeds options.maxRealizations or options.maxWallSeconds. A measured trial
 /// that ends before the swing does is a result (SwingResult::trialEnd), not an error.
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options = {});
