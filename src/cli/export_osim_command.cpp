@@ -41,7 +41,8 @@ OsimLegPlacement makePlacement(const Participant& p, const KneeModel& knee) {
   place.initial = p.initial;
   place.hipRange = p.hipRange;
   place.kneeMinFlexion = knee.spec.stop.lower;
-  place.kneeMaxFlexion = std::min(knee.spec.stop.upper, kPi);  // no flexion stop (upper = 1e9): 180 deg
+  // No flexion stop: the knee's physical range, 180 deg.
+  place.kneeMaxFlexion = std::min(knee.spec.stop.upper.value_or(kKneeFlexionLimit), kKneeFlexionLimit);
   return place;
 }
 

@@ -31,8 +31,8 @@ int generateSwingKinematics(YamlMap& yaml, const std::optional<std::string>& out
   for (std::size_t i = 0; i < conditions.size(); ++i) {
     const auto& c = conditions[i];
     SwingRecord r = makeSyntheticSwing(base, truth, c, noise, seed + i, interval);
-    double peak = -1e9;
-    for (double k : r.kneeFlexion) peak = std::max(peak, k * kRadToDeg);
+    // A synthetic record is sampled from toe-off on: never empty.
+    const double peak = *std::max_element(r.kneeFlexion.begin(), r.kneeFlexion.end()) * kRadToDeg;
     std::printf("%-8s %8.3f %9.3f %8zu %10.3f %14.1f", c.name.c_str(), c.timeScale, c.amplitudeScale, r.time.size(),
                 r.time.back(), peak);
     if (!hiddenNames.empty()) {

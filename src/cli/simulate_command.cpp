@@ -13,6 +13,7 @@
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/plausible_ranges.h"
+#include "core/text_format.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
@@ -115,10 +116,14 @@ int runSimulate(const SimulateArguments& a) {
     printTrialEnd(*r.trialEnd, p);
   else
     std::printf("  swing time          %.4f s\n", r.swingTime);
-  std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion * kRadToDeg, r.peakKneeFlexionTime);
+  if (r.peakKneeFlexion)
+    std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion->flexion * kRadToDeg,
+                r.peakKneeFlexion->time);
+  else
+    std::printf("  peak knee flexion   none (no knee peak above the zone of stability)\n");
   if (r.bounce)
-    std::printf("  bounce              yes: the knee left the zone of stability %d time%s, up to %.1f deg\n", r.bounces,
-                r.bounces == 1 ? "" : "s", r.bounceHeight * kRadToDeg);
+    std::printf("  bounce              yes: the knee left the zone of stability %d time%s, up to %s\n", r.bounces,
+                r.bounces == 1 ? "" : "s", fmtOrNone("%.1f deg", r.bounceHeight, kRadToDeg).c_str());
   else
     std::printf("  bounce              no\n");
   for (std::size_t i = 0; i < r.impacts.size(); ++i) {
@@ -132,12 +137,15 @@ int runSimulate(const SimulateArguments& a) {
     for (const auto& w : im.work) std::printf(" %s %+.3f J;", w.cause.c_str(), w.work);
     std::printf("\n");
   }
-  if (p.toeClearance.alarmHolds())
-    std::printf("  min toe clearance   %.3f m%s\n", r.minToeClearance, r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
+  const std::string clearance = fmtOrNone("%.3f m", r.minToeClearance);
+  if (!r.minToeClearance)
+    std::printf("  min toe clearance   none (no knee peak to measure it from)\n");
+  else if (p.toeClearance.alarmHolds())
+    std::printf("  min toe clearance   %s%s\n", clearance.c_str(), *r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
   else
-    std::printf("  min toe clearance   %.3f m relative to standing hip height (running: no strike alarm without "
+    std::printf("  min toe clearance   %s relative to standing hip height (running: no strike alarm without "
                 "toe_clearance.hip_rise_m)\n",
-                r.minToeClearance);
+                clearance.c_str());
   std::printf("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
               options.accuracy, r.realizations);
   std::printf("  events:");

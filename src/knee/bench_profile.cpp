@@ -33,28 +33,29 @@ struct Landmarks {
 
 constexpr int kGrid = 4000;
 
+// The first grid index in [first, last) (first < last) where sign * f(s) is largest.
+template <class F>
+int findExtreme(const F& f, int first, int last, double sign) {
+  int best = first;
+  for (int i = first + 1; i < last; ++i)
+    if (sign * f(static_cast<double>(i) / kGrid) > sign * f(static_cast<double>(best) / kGrid)) best = i;
+  return best;
+}
+
 Landmarks findLandmarks(const std::vector<double>& v, double scale, double offset) {
   auto f = [&](double s) { return scale * interpolate(v, s) + offset; };
-  Landmarks m{0, -1e9, 0, 1e9, 0, -1e9};
-  for (int i = 0; i < kGrid; ++i) {
-    const double s = static_cast<double>(i) / kGrid;
-    if (s < 0.3 && f(s) > m.stancePeak) { m.stancePeak = f(s); m.stancePeakS = s; }
-  }
-  for (int i = 0; i < kGrid; ++i) {
-    const double s = static_cast<double>(i) / kGrid;
-    if (s > m.stancePeakS && s < 0.6 && f(s) < m.stanceMin) { m.stanceMin = f(s); m.stanceMinS = s; }
-  }
-  for (int i = 0; i < kGrid; ++i) {
-    const double s = static_cast<double>(i) / kGrid;
-    if (s > m.stanceMinS && f(s) > m.swingPeak) { m.swingPeak = f(s); m.swingPeakS = s; }
-  }
-  return m;
+  // Grid ends of the windows: s < 0.3 and s < 0.6; each window below holds grid points.
+  constexpr int kStanceEnd = static_cast<int>(0.3 * kGrid), kMinimumEnd = static_cast<int>(0.6 * kGrid);
+  const int peak = findExtreme(f, 0, kStanceEnd, 1);
+  const int minimum = findExtreme(f, peak + 1, kMinimumEnd, -1);
+  const int swing = findExtreme(f, minimum + 1, kGrid, 1);
+  auto at = [](int i) { return static_cast<double>(i) / kGrid; };
+  return {at(peak), f(at(peak)), at(minimum), f(at(minimum)), at(swing), f(at(swing))};
 }
 
 double calcOffset(const std::vector<double>& v, double scale, double target) {
-  double lowest = 1e9;
-  for (int i = 0; i < kGrid; ++i) lowest = std::min(lowest, scale * interpolate(v, static_cast<double>(i) / kGrid));
-  return target - lowest;
+  auto f = [&](double s) { return scale * interpolate(v, s); };
+  return target - f(static_cast<double>(findExtreme(f, 0, kGrid, -1)) / kGrid);
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 namespace swingsim {
 
 JointStop::JointStop(JointStopParams params) : p_(params) {
-  if (!(p_.upper > p_.lower)) throw std::invalid_argument("joint stop: upper limit must exceed lower limit");
+  if (p_.upper && !(*p_.upper > p_.lower)) throw std::invalid_argument("joint stop: upper limit must exceed lower limit");
   if (!(p_.stiffness > 0)) throw std::invalid_argument("joint stop: stiffness must be positive");
   if (!(p_.restitution >= 0 && p_.restitution <= 1))
     throw std::invalid_argument("joint stop: restitution must be in [0, 1]");
@@ -22,12 +22,12 @@ double JointStop::calcPushingMoment(double p, double pdot) const {
 
 double JointStop::calcJointMoment(double angle, double rate) const {
   if (angle < p_.lower) return calcPushingMoment(p_.lower - angle, -rate);
-  if (angle > p_.upper) return -calcPushingMoment(angle - p_.upper, rate);
+  if (p_.upper && angle > *p_.upper) return -calcPushingMoment(angle - *p_.upper, rate);
   return 0.0;
 }
 
 double JointStop::calcJointStoredEnergy(double angle) const {
-  const double p = angle < p_.lower ? p_.lower - angle : angle > p_.upper ? angle - p_.upper : 0.0;
+  const double p = angle < p_.lower ? p_.lower - angle : p_.upper && angle > *p_.upper ? angle - *p_.upper : 0.0;
   const double e2 = p_.restitution * p_.restitution;
   return 0.5 * (1.0 + e2) * p_.stiffness * p * p * std::sqrt(p) / 2.5;
 }

@@ -11,13 +11,15 @@
 // c p^1.5 pdot, used before, returns e = 0.49 at c v = 1 but 0.13 at c v = 5: Simbody
 // HuntCrossleyForce integrated alone: docs/assumptions.md). The switch between the two
 // springs is a tanh in the penetration rate, so the moment is smooth for the integrator.
+#include <optional>
+
 #include "knee/knee_law.h"
 
 namespace swingsim {
 
 struct JointStopParams {
   double lower = 0;  ///< angle where the lower stop engages, rad
-  double upper = 1e9;  ///< angle where the upper stop engages, rad (huge = none)
+  std::optional<double> upper;  ///< angle where the upper stop engages, rad; absent: no upper stop
   /// k in M = k p^1.5, N m / rad^1.5. 2e4 keeps the overshoot of a 0.2 kg m^2 shank hitting
   /// at 8 rad/s at 3.3 deg, within Burkett 2004's "within 4 deg of full extension"
   /// (p = (1.25 I v^2 / k)^0.4); no published bumper stiffness exists (docs/assumptions.md), so

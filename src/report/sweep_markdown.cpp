@@ -3,6 +3,7 @@
 #include "report/sweep_markdown.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <vector>
 
@@ -76,9 +77,10 @@ std::string formatUncertaintySection(const UncertaintyResults& u) {
 namespace {
 
 // The fastest-lowering table's strike cell: only where the clearance's assumption holds.
-std::string toeStrikeCell(const Participant* p, double clearance) {
-  if (p != nullptr && !p->toeClearance.alarmHolds()) return "n/a (running; clearance " + fmt("%+.3f", clearance) + " m vs standing hip)";
-  return clearance < 0 ? "yes" : "no";
+std::string toeStrikeCell(const Participant* p, const std::optional<double>& clearance) {
+  if (!clearance) return "none (no clearance)";
+  if (p != nullptr && !p->toeClearance.alarmHolds()) return "n/a (running; clearance " + fmt("%+.3f", *clearance) + " m vs standing hip)";
+  return *clearance < 0 ? "yes" : "no";
 }
 
 // Burkett's terminal-impact findings, per participant (sweep/terminal_impact.h); "" if the

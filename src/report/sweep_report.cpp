@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "io/csv_table.h"
 #include "core/input_error.h"
@@ -21,7 +22,14 @@ using namespace sweep_report_parts;
 
 namespace {
 
+// The JSON arrays and CSV columns hold NaN for an absent value: null in JSON, an empty field
+// in CSV.
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// rad, the swing's peak knee flexion, if it had one (every ended swing has).
+std::optional<double> peakFlexion(const SwingResult& r) {
+  return r.peakKneeFlexion ? std::optional<double>(r.peakKneeFlexion->flexion) : std::nullopt;
+}
 
 }  // namespace
 
@@ -76,11 +84,12 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
       }
       char line[256];
       if (pt.ok) {
-        std::snprintf(line, sizeof line, "  %10.3f  %12.4f  %13.1f  %6s  %15.3f  %13s  %16s%s%s\n", pt.lowering,
-                      pt.result.swingTime, pt.result.peakKneeFlexion * kRadToDeg, pt.result.bounce ? "yes" : "no",
-                      pt.result.minToeClearance, paperModel.c_str(), paperMeasured.c_str(),
-                      static_cast<int>(k) == ps.best ? "  <- fastest" : "",
-                      pt.result.minToeClearance < 0 && strikeAlarm ? "  (toe strikes)" : "");
+        const std::optional<double>& clearance = pt.result.minToeClearance;
+        std::snprintf(line, sizeof line, "  %10.3f  %12.4f  %13s  %6s  %15s  %13s  %16s%s%s\n", pt.lowering,
+                      pt.result.swingTime, fmtOrNone("%.1f", peakFlexion(pt.result), kRadToDeg).c_str(),
+                      pt.result.bounce ? "yes" : "no", fmtOrNone("%.3f", clearance).c_str(), paperModel.c_str(),
+                      paperMeasured.c_str(), static_cast<int>(k) == ps.best ? "  <- fastest" : "",
+                      clearance && *clearance < 0 && strikeAlarm ? "  (toe strikes)" : "");
       } else {
         std::snprintf(line, sizeof line, "  %10.3f  %-44s  %13s  %16s\n", pt.lowering, shortFailure(pt).c_str(),
                       paperModel.c_str(), paperMeasured.c_str());
@@ -134,11 +143,11 @@ std::string formatSweepJson(const SweepResults& results, const UncertaintyResult
     for (const auto& pt : ps.points) {
       lowering.push_back(pt.lowering);
       swing.push_back(pt.ok ? pt.result.swingTime : kNaN);
-      peak.push_back(pt.ok ? pt.result.peakKneeFlexion * kRadToDeg : kNaN);
-      clearance.push_back(pt.ok ? pt.result.minToeClearance : kNaN);
+      peak.push_back(pt.ok ? peakFlexion(pt.result).value_or(kNaN) * kRadToDeg : kNaN);
+      clearance.push_back(pt.ok ? pt.result.minToeClearance.value_or(kNaN) : kNaN);
       bounce.push_back(pt.ok && pt.result.bounce);
       bounces.push_back(pt.ok ? pt.result.bounces : 0);
-      bounceHeight.push_back(pt.ok && pt.result.bounce ? pt.result.bounceHeight * kRadToDeg : kNaN);
+      bounceHeight.push_back(pt.ok ? pt.result.bounceHeight.value_or(kNaN) * kRadToDeg : kNaN);
       ok.push_back(pt.ok);
     }
     Json j = {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing}, {"peak_knee_flexion_deg", peak},
@@ -246,6 +255,9 @@ std::string csvNumber(double v, int decimals) {
   return buf;
 }
 
+// An empty field for an absent (NaN) value, else csvNumber.
+std::string csvOptional(double v, int decimals) { return std::isnan(v) ? "" : csvNumber(v, decimals); }
+
 }  // namespace
 
 std::string formatSweepCsv(const SweepResults& results) {
@@ -259,9 +271,10 @@ std::string formatSweepCsv(const SweepResults& results) {
         out += csvField(ps.name) + "," + csvNumber(pt.lowering, 3) + "," + csvNumber(pt.added.mass, 3) + "," +
                csvNumber(pt.added.distanceBelowKnee, 3) + ",";
         if (pt.ok) {
-          out += "1," + csvNumber(pt.result.swingTime, 6) + "," + csvNumber(pt.result.peakKneeFlexion * kRadToDeg, 3) + "," +
-                 csvNumber(pt.result.peakKneeFlexionTime, 6) + "," + (pt.result.bounce ? "1" : "0") + "," +
-                 csvNumber(pt.result.minToeClearance, 4) + ",ended\n";
+          const std::optional<KneePeak>& peak = pt.result.peakKneeFlexion;
+          out += "1," + csvNumber(pt.result.swingTime, 6) + "," + csvOptional(peak ? peak->flexion * kRadToDeg : kNaN, 3) +
+                 "," + csvOptional(peak ? peak->time : kNaN, 6) + "," + (pt.result.bounce ? "1" : "0") + "," +
+                 csvOptional(pt.result.minToeClearance.value_or(kNaN), 4) + ",ended\n";
         } else {
           out += std::string("0,,,,,,") + (pt.ran ? "failed" : "not_run") + "\n";
         }

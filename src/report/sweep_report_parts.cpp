@@ -22,6 +22,8 @@ const Participant* participantNamed(const SweepStudy& study, const std::string& 
 std::string shortFailure(const SweepPoint& pt) {
   if (pt.failure.find("thigh never reached") != std::string::npos) return "no end: thigh short of target";
   if (pt.failure.find("never came back") != std::string::npos) return "no end: knee stays flexed";
+  if (pt.failure.find("knee flexion passed") != std::string::npos)
+    return "failed: knee past " + fmt("%.0f", kKneeFlexionLimit * kRadToDeg) + " deg";
   if (!pt.ran) return "not run (interrupted)";
   return "failed";
 }

@@ -1,5 +1,8 @@
 #include "report/swing_json.h"
 
+#include <cmath>
+#include <optional>
+
 namespace swingsim {
 
 Json makeStopImpactJson(const StopImpact& im) {
@@ -20,16 +23,18 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
   for (const auto& e : r.events) events.push_back({{"name", e.name}, {"time_s", e.time}});
   Json impacts = Json::array();
   for (const auto& im : r.impacts) impacts.push_back(makeStopImpactJson(im));
+  // Absent quantities are null (swing time: NaN when the swing did not end).
+  const std::optional<KneePeak>& peak = r.peakKneeFlexion;
   Json json = {{"participant", participant},
           {"lowering_m", lowering},
-          {"swing_time_s", r.swingTime},
-          {"peak_knee_flexion_deg", r.peakKneeFlexion * kRadToDeg},
-          {"peak_knee_flexion_time_s", r.peakKneeFlexionTime},
+          {"swing_time_s", std::isfinite(r.swingTime) ? Json(r.swingTime) : Json(nullptr)},
+          {"peak_knee_flexion_deg", peak ? Json(peak->flexion * kRadToDeg) : Json(nullptr)},
+          {"peak_knee_flexion_time_s", peak ? Json(peak->time) : Json(nullptr)},
           {"bounce", r.bounce},
           {"bounces", r.bounces},
-          {"bounce_height_deg", r.bounceHeight * kRadToDeg},
+          {"bounce_height_deg", jsonOrNull(r.bounceHeight, kRadToDeg)},
           {"stop_impacts", impacts},
-          {"min_toe_clearance_m", r.minToeClearance},
+          {"min_toe_clearance_m", jsonOrNull(r.minToeClearance)},
           {"events", events}};
   if (const auto& e = r.trialEnd) {
     json["trial_end"] = {{"unmet", e->unmet},
@@ -39,7 +44,7 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
                          {"thigh_peak_deg", e->thighPeak * kRadToDeg},
                          {"thigh_target_deg", e->thighTarget * kRadToDeg},
                          {"zone_of_stability_deg", e->zoneOfStability * kRadToDeg},
-                         {"settle_dwell_done_s", e->dwellDone},
+                         {"settle_dwell_done_s", jsonOrNull(e->dwellDone)},
                          {"description", e->describe()}};
   }
   return json;

@@ -11,7 +11,11 @@ namespace swingsim {
 /// "peak_knee_flexion_time_s", "bounce", "bounces", "bounce_height_deg", "stop_impacts":
 /// [{time_s, impact_rate_rad_s, rebound_rate_rad_s, restitution, max_penetration_deg,
 /// rebound_height_deg, kinetic_energy_at_contact_J, work_to_rebound_top_J: {cause: J}}],
-/// "min_toe_clearance_m", "events": [{name, time_s}]}.
+/// "min_toe_clearance_m", "events": [{name, time_s}], "trial_end" (a measured trial cut
+/// before the swing ended)}. A quantity the swing did not have is null, never a marker:
+/// swing_time_s (no swing end), peak_knee_flexion_deg and _time_s (no knee peak),
+/// bounce_height_deg (no bounce peak), min_toe_clearance_m (no knee peak),
+/// trial_end.settle_dwell_done_s (unless the unmet condition is the settle dwell).
 /// {time_s, impact_rate_rad_s, rebound_rate_rad_s, restitution, max_penetration_deg,
 /// rebound_height_deg, kinetic_energy_at_contact_J, work_to_rebound_top_J: {cause: J}}.
 Json makeStopImpactJson(const StopImpact& im);

@@ -234,8 +234,7 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
     zoneValue = zone - eq.calcKneeFlexion(y);
   };
 
-  ReferenceSwingEnd result;
-  result.peakKneeFlexion = -1e9;
+  ReferenceSwingEnd result;  // returned only once the swing ended, so after a peak: every field set
   bool thighReached = false, peakSeen = false, kneeInZone = false;
   double thigh0, rate0, zone0;
   signals(dp.getState(), thigh0, rate0, zone0);
@@ -274,11 +273,11 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
         case kPeak: {
           const double knee = kneeFlexionAt(t);
           if (knee <= zone) break;  // wiggles inside the zone are not the swing's peak
-          peakSeen = true;
-          if (knee > result.peakKneeFlexion) {
+          if (!peakSeen || knee > result.peakKneeFlexion) {
             result.peakKneeFlexion = knee;
             result.peakKneeFlexionTime = t;
           }
+          peakSeen = true;
           break;
         }
         case kZone:

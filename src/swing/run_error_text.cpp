@@ -64,6 +64,17 @@ RunError RunErrorText::hipLeftRange(const State& s) const {
                   " (likely cause: a hip moment far too large for this leg, or a hip_range that excludes the swing)");
 }
 
+RunError RunErrorText::kneeLeftRange(const State& s, double crossingTime) const {
+  const bool thighMotion = setup_.participant.drive == SwingDrive::kThighKinematics;
+  return RunError(who() + ": the knee flexion passed " + formatDegrees(kKneeFlexionLimit) + " deg at " +
+                  formatTo4Places(crossingTime) + " s, beyond the knee's physical range (the shank folded onto the "
+                  "thigh); the run is stopped " + describeState(leg_, s) +
+                  (thighMotion ? " (likely cause: a measured thigh motion far more violent than a swing's, e.g. a "
+                                 "trial cut at the wrong events, or too little knee resistance for it)"
+                               : " (likely cause: a hip moment far too large for this leg, or too little knee "
+                                 "resistance: a knee model value far too small, a unit mistake?)"));
+}
+
 RunError RunErrorText::cannotEnd(const State& s, double hipMomentFinal, double constantFrom, double shortfall) const {
   const SwingEndRule& rule = setup_.participant.swingEnd;
   return RunError(who() + ": the swing cannot end (decided " + describeState(leg_, s) + ", before the time limit of " +

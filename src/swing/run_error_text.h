@@ -30,6 +30,9 @@ class RunErrorText {
   RunError diverged(const SimTK::State& s) const;
   /// The thigh left the hip's range (plus its slack).
   RunError hipLeftRange(const SimTK::State& s) const;
+  /// The knee flexion passed kKneeFlexionLimit at `crossingTime` s; `s` is the state at the
+  /// end of the step in which it did.
+  RunError kneeLeftRange(const SimTK::State& s, double crossingTime) const;
   /// The thigh cannot reach its target any more (EarlyThighFailure): the hip moment
   /// `hipMomentFinal` N m constant from `constantFrom` s, the energy `shortfall` J short.
   RunError cannotEnd(const SimTK::State& s, double hipMomentFinal, double constantFrom, double shortfall) const;

@@ -16,14 +16,15 @@ bool SettleDwell::mustRedo(const StepEnd& previous, const StepEnd& now, const Sw
   if (!loose_) return false;
   // The knee back near the zone's edge (or out of it): a bounce may decide the swing end.
   // (The knee enters the zone falling: only where it rises again does the edge matter.)
-  double highest = now.kneeRate > 0 ? now.knee : -1e9;
+  const double edge = zone_ - kLooseDwellMargin;
+  bool nearEdge = now.kneeRate > 0 && now.knee > edge;
   if (previous.kneeRate > 0 && now.kneeRate < 0) {
     const double h = now.t - previous.t;
     const double top = findRoot(
         [&](double x) { return calcHermite(previous.kneeRate, previous.kneeAcc, now.kneeRate, now.kneeAcc, h, x); }, h);
-    highest = std::max(highest, calcHermite(previous.knee, previous.kneeRate, now.knee, now.kneeRate, h, top));
+    nearEdge = nearEdge || calcHermite(previous.knee, previous.kneeRate, now.knee, now.kneeRate, h, top) > edge;
   }
-  return highest > zone_ - kLooseDwellMargin || !log.candidate;
+  return nearEdge || !log.candidate;
 }
 
 const DwellCheckpoint& SettleDwell::redo(DormandPrinceStepper& stepper) {

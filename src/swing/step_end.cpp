@@ -58,4 +58,18 @@ void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, doubl
 }
 
 
+std::optional<double> findKneeRisingAbove(const StepEnd& a, const StepEnd& b, double level) {
+  if (a.knee > level) return a.t;  // already above at the step's start
+  const double h = b.t - a.t;
+  if (!(h > 0)) return b.knee > level ? std::optional<double>(b.t) : std::nullopt;
+  auto above = [&](double s) { return calcHermite(a.knee, a.kneeRate, b.knee, b.kneeRate, h, s) - level; };
+  double end = 1;  // where the interpolant is above the level, if anywhere
+  if (!(b.knee > level)) {
+    if (!(a.kneeRate > 0 && b.kneeRate < 0)) return std::nullopt;
+    end = findRoot([&](double s) { return calcHermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, h, s); }, h);
+    if (!(above(end) > 0)) return std::nullopt;
+  }
+  return a.t + findRoot(above, h, 0, end) * h;
+}
+
 }  // namespace swingsim

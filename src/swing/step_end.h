@@ -4,6 +4,7 @@
 #include <Simbody.h>
 
 #include <array>
+#include <optional>
 
 #include "leg/leg_model.h"
 #include "model/leg_parameters.h"
@@ -75,5 +76,10 @@ inline double findRoot(const F& f, double h, double lo = 0, double hi = 1) {
   }
   return 0.5 * (s0 + s1);
 }
+
+/// The time (s) in (a.t, b.t] at which the knee, on the Hermite interpolant of the step a-b,
+/// first rises above `level` (rad), or nullopt if it stays at or below it. A knee that
+/// rises above and comes back within the step (its interpolated peak above `level`) counts.
+std::optional<double> findKneeRisingAbove(const StepEnd& a, const StepEnd& b, double level);
 
 }  // namespace swingsim

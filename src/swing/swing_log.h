@@ -4,6 +4,7 @@
 #include <Simbody.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,9 @@ struct SwingLog {
   double candidateTime = 0;
   bool ended = false;
   int bounces = 0;
-  double bounceHeight = 0;   // rad: highest knee flexion after leaving the zone
+  std::optional<double> bounceHeight;  // rad: highest knee peak after leaving the zone, if any
   double endTime = 0;
-  double peak = -1e9, peakTime = 0;
+  std::optional<KneePeak> peak;        // the highest knee peak above the zone, if any
 
   void add(const std::string& name, double t) { events.push_back({name, t}); }
   // The end is decided once the knee has stayed in the zone for the dwell; every handler
@@ -73,12 +74,9 @@ struct SwingLog {
     confirmUntil(t);
     if (knee <= zone || ended) return;  // wiggles inside the zone are not the swing's peak
     add(enteredOnce ? "knee_bounce_peak" : "knee_peak_flexion", t);
-    if (enteredOnce) bounceHeight = std::max(bounceHeight, knee);
+    if (enteredOnce) bounceHeight = std::max(bounceHeight.value_or(knee), knee);
     peakSeen = true;
-    if (knee > peak) {
-      peak = knee;
-      peakTime = t;
-    }
+    if (!peak || knee > peak->flexion) peak = KneePeak{knee, t};
   }
   // The knee flexion crossed the zone boundary (entering: falling below it).
   void onKneeZone(double t, bool entering) {

@@ -121,6 +121,7 @@ bool SwingRun::takeStep() {
 
 void SwingRun::recordStep(const StepEnd& now, const State& s) {
   if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) throw errors_.diverged(s);
+  if (const auto passed = findKneeRisingAbove(previous_, now, kKneeFlexionLimit)) throw errors_.kneeLeftRange(s, *passed);
   if (!options_.simbodyEvents) handleStepEvents(previous_, now, rule_, log_);
   log_.confirmUntil(now.t);
   if (impacts_) impacts_->onStep(previous_, now);
@@ -214,18 +215,18 @@ SwingResult SwingRun::run() {
 
 SwingResult SwingRun::finish() {
   // Lowest ankle or toe from peak knee flexion (mid-swing) to the swing end; before the
-  // peak the foot is still leaving the ground it pushed off from.
+  // peak the foot is still leaving the ground it pushed off from, so without a peak there
+  // is no clearance.
   const SwingTrajectory& tr = result_.trajectory;
-  double minClearance = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < tr.size(); ++k) {
-    if (tr.time[k] >= log_.peakTime && tr.time[k] <= (log_.ended ? log_.endTime : previous_.t))
-      minClearance = std::min({minClearance, tr.ankleY[k], tr.toeY[k]});
+  std::optional<double> minClearance;
+  for (std::size_t k = 0; log_.peak && k < tr.size(); ++k) {
+    if (tr.time[k] >= log_.peak->time && tr.time[k] <= (log_.ended ? log_.endTime : previous_.t))
+      minClearance = std::min({minClearance.value_or(tr.ankleY[k]), tr.ankleY[k], tr.toeY[k]});
   }
   SwingResult result = std::move(result_);
   if (!options_.recordTrajectory) result.trajectory = SwingTrajectory{};
   result.swingTime = log_.ended ? log_.endTime : std::numeric_limits<double>::quiet_NaN();
   result.peakKneeFlexion = log_.peak;
-  result.peakKneeFlexionTime = log_.peakTime;
   result.bounces = log_.bounces;
   result.bounce = log_.bounces > 0;
   result.bounceHeight = log_.bounceHeight;

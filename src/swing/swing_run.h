@@ -73,7 +73,7 @@ class SwingRun {
   std::optional<StopImpactTracker> impacts_;
   double nextSample_ = 0;      // s
   double candidateTime_ = -1;  // s: the swing end candidate whose realizations were counted
-  double thighPeak_ = -1e9;    // rad: highest thigh flexion at a step end (TrialEnd)
+  double thighPeak_ = 0;       // rad: highest thigh flexion at a step end (TrialEnd); from toe-off on
 };
 
 }  // namespace swingsim

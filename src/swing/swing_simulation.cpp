@@ -114,7 +114,7 @@ std::string TrialEnd::describe() const {
                   thighFlexion * kRadToDeg, thighTarget * kRadToDeg);
   else
     std::snprintf(buf, sizeof buf, "the knee was back in the zone for %.3f s of the settle dwell of %.3f s (knee %.1f deg at the end)",
-                  dwellDone, settleDwell, kneeFlexion * kRadToDeg);
+                  dwellDone.value_or(0), settleDwell, kneeFlexion * kRadToDeg);
   return "the measured trial ended at " + formatNumber(std::round(time * 1e4) / 1e4) + " s before the swing did: " + buf;
 }
 

@@ -55,6 +55,11 @@ struct SwingOptions {
   double maxWallSeconds = 60;       ///< s of wall-clock time one swing may take before RunError
 };
 
+/// rad: where the knee's physical flexion range ends (180 deg: the shank folded onto the
+/// thigh). No knee model has a flexion stop, so nothing in the model holds the knee below it;
+/// a simulated knee that passes it is a failed run (RunError), never a result.
+constexpr double kKneeFlexionLimit = kPi;
+
 struct SwingEvent {
   /// toe_off, thigh_at_target, knee_peak_flexion, knee_enters_zone, knee_leaves_zone,
   /// knee_bounce_peak (a flexion peak above the zone after a bounce), swing_end
@@ -99,24 +104,38 @@ struct TrialEnd {
   double thighPeak = 0;        ///< rad, highest thigh flexion of the trial
   double thighTarget = 0;      ///< rad, SwingEndRule::thighTargetFlexion
   double zoneOfStability = 0;  ///< rad, SwingEndRule::zoneOfStability
-  double dwellDone = 0;        ///< s the knee had been in the zone with the thigh at target (settle_dwell)
+  /// s the knee had been in the zone with the thigh at target; set only when unmet is settle_dwell
+  std::optional<double> dwellDone;
   double settleDwell = 0;      ///< s, SwingEndRule::settleDwell
   /// One line for people: the unmet condition and the numbers.
   std::string describe() const;
 };
 
+/// A flexion peak of the knee: its angle and when.
+struct KneePeak {
+  double flexion = 0;  ///< rad
+  double time = 0;     ///< s since toe-off
+};
+
+/// What one swing did. A quantity the swing did not have is absent (nullopt), never a
+/// marker value: printers write "none" (text), null (JSON), None (Python).
 struct SwingResult {
   /// s: thigh at target AND knee back in the zone after its peak, staying there for the
   /// settle dwell (SwingEndRule::settleDwell); NaN if the swing had not ended
   /// (SwingOptions::requireSwingEnd false)
   double swingTime = 0;
-  double peakKneeFlexion = 0;      ///< rad
-  double peakKneeFlexionTime = 0;  ///< s
+  /// The highest knee flexion peak above the zone of stability; absent if the knee had none
+  /// (a measured trial cut before it). Always set when the swing ended.
+  std::optional<KneePeak> peakKneeFlexion;
   bool bounce = false;             ///< knee left the zone after entering it (bounces > 0)
   int bounces = 0;                 ///< times the knee left the zone after entering it
-  double bounceHeight = 0;         ///< rad, highest knee flexion after leaving the zone (0: no bounce)
+  /// rad, highest knee flexion peak after leaving the zone; absent if it had none (no bounce,
+  /// or a run that stopped before the bouncing knee peaked)
+  std::optional<double> bounceHeight;
   std::vector<StopImpact> impacts; ///< contacts with the hyperextension stop, in time order (at most 20)
-  double minToeClearance = 0;      ///< m, lowest ankle or toe height above ground from peak knee flexion to the swing end
+  /// m, lowest ankle or toe height above ground from peak knee flexion to the swing end (or
+  /// the run's end); absent without a knee peak or without a trajectory sample in that span
+  std::optional<double> minToeClearance;
   std::vector<SwingEvent> events;
   SwingTrajectory trajectory;
   int steps = 0;                   ///< integrator steps taken
@@ -168,7 +187,8 @@ SwingOptions makePlainPathOptions(double accuracy, double eventWindow);
 SwingOptions makeSimbodyIntegratorOptions(double accuracy = 1e-4);
 
 /// Runs one swing (SwingRun, swing/swing_run.h). Throws RunError (with the time, the state
-/// and the likely cause) if the integrator fails, the swing does not end within the time
+/// and the likely cause) if the integrator fails, the knee passes its physical range
+/// (kKneeFlexionLimit), the swing does not end within the time
 /// limit, or it exceeds options.maxRealizations or options.maxWallSeconds. A measured trial
 /// that ends before the swing does is a result (SwingResult::trialEnd), not an error.
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options = {});

@@ -1,5 +1,7 @@
 // `swingsim simulate` on a measured trial that ends before the swing does (Winter's walking
-// subject, cut at heel contact with the knee still flexed): a result, written and exit 0.
+// subject, cut at heel contact with the knee still flexed): a result, written and exit 0;
+// what the swing did not have prints "none" and is null in the JSON; a knee flung past
+// 180 deg is a failed run.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -13,6 +15,7 @@
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using swingsim::Json;
 namespace fs = std::filesystem;
 
@@ -35,6 +38,49 @@ TEST(SimulateCommand, MeasuredTrialEndingBeforeTheSwingIsAResult) {
   // The knee above its zone of stability at the trial's end, by the amount printed.
   EXPECT_GT(j["trial_end"]["knee_flexion_deg"].get<double>(), j["trial_end"]["zone_of_stability_deg"].get<double>());
   EXPECT_TRUE(j["swing_time_s"].is_null());  // NaN: no swing end
+}
+
+// Winter's subject with a zone of stability above anything the walking knee reaches: the
+// knee never peaks above it, so the swing has no peak knee flexion and no toe clearance.
+std::string writeWinterWithoutAKneePeak() {
+  std::string text = swingsim::testing::slurp("participants/winter.yaml");
+  const fs::path folder = fs::absolute("participants");
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("zone_of_stability_deg: 6", "zone_of_stability_deg: 150");
+  replace("../models/", (folder / "../models/").string());
+  replace("../studies/", (folder / "../studies/").string());
+  return swingsim::testing::writeSuiteTempFile("swingsim_simulate_command_test", "winter-no-peak.yaml", text);
+}
+
+TEST(SimulateCommand, NoKneePeakPrintsNoneAndWritesNull) {
+  const std::string participant = writeWinterWithoutAKneePeak();
+  const fs::path out = swingsim::testing::freshTempDir("swingsim_simulate_command_test", "no-peak");
+  const auto r = swingsim::testing::runSwingsim("simulate " + participant + " --out " + out.string() + " --json " +
+                                                (out / "r.json").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("swing time          not reached (knee_peak)"));
+  EXPECT_THAT(r.output, HasSubstr("peak knee flexion   none"));
+  EXPECT_THAT(r.output, HasSubstr("min toe clearance   none"));
+  EXPECT_THAT(r.output, Not(HasSubstr("e+")));  // no marker number in any notation
+  std::ifstream js(out / "r.json");
+  const Json j = Json::parse(js);
+  for (const char* key : {"swing_time_s", "peak_knee_flexion_deg", "peak_knee_flexion_time_s", "bounce_height_deg",
+                          "min_toe_clearance_m"})
+    EXPECT_TRUE(j[key].is_null()) << key << ": " << j[key];
+  EXPECT_TRUE(j["trial_end"]["settle_dwell_done_s"].is_null());
+}
+
+TEST(SimulateCommand, KneePastItsRangeFailsWithWhatAndWhen) {
+  const fs::path out = swingsim::testing::freshTempDir("swingsim_simulate_command_test", "knee-past-range");
+  const auto r = swingsim::testing::runSwingsim("simulate participants/winter.yaml --knee-rate-deg-s 3000 --out " +
+                                                out.string() + " --json " + (out / "r.json").string());
+  EXPECT_NE(r.code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("swingsim: winter at lowering 0 m: the knee flexion passed 180 deg at "));
+  EXPECT_FALSE(fs::exists(out / "r.json"));  // a failed run writes no result
 }
 
 }  // namespace

@@ -25,6 +25,13 @@ TEST(JsonFile, KeepsKeyOrderWritesNullForNonFiniteAndParsesBack) {
   EXPECT_EQ(text.back(), '\n');
 }
 
+TEST(JsonFile, AnAbsentValueIsNullAPresentOneIsScaled) {
+  EXPECT_TRUE(jsonOrNull(std::nullopt).is_null());
+  EXPECT_TRUE(jsonOrNull(std::nullopt, 57.3).is_null());
+  EXPECT_EQ(jsonOrNull(2.0, 3.0).get<double>(), 6.0);
+  EXPECT_EQ(jsonOrNull(-1.0).get<double>(), -1.0);  // a real value, whatever its sign
+}
+
 // A participant name typed in Latin-1 ("Jos\xe9") is not valid UTF-8: the file stays valid,
 // the bad byte becomes U+FFFD.
 TEST(JsonFile, InvalidUtf8InAStringIsReplacedSoTheFileStaysValid) {

@@ -110,7 +110,7 @@ TEST(JointStop, StoredEnergyMakesItPassive) {
     const JointStop stop(params);
     EXPECT_TRUE(stop.isPassive());
     EXPECT_EQ(stop.calcJointStoredEnergy(5 * kDeg), 0.0);
-    for (double edge : {params.lower, params.upper}) {
+    for (double edge : {params.lower, *params.upper}) {
       for (double depth = 0.01 * kDeg; depth < 10 * kDeg; depth *= 1.7) {
         const double angle = edge == params.lower ? edge - depth : edge + depth;
         const double h = 1e-7;
@@ -127,6 +127,16 @@ TEST(JointStop, StoredEnergyMakesItPassive) {
 TEST(JointStop, AsKneeLawUsesFlexionAndRate) {
   JointStop stop = makeStop();
   EXPECT_EQ(stop.calcMoment({-1 * kDeg, -0.5}, nullptr), stop.calcJointMoment(-1 * kDeg, -0.5));
+}
+
+// The knee's stop has no upper side (JointStopParams::upper absent): free however far it flexes.
+TEST(JointStop, NoUpperStopIsFreeAtAnyFlexion) {
+  JointStopParams p;
+  EXPECT_FALSE(p.upper);  // the default
+  const JointStop stop(p);
+  for (double a : {10 * kDeg, 179 * kDeg, 1e3})
+    for (double rate : {-5.0, 0.0, 5.0}) EXPECT_EQ(stop.calcJointMoment(a, rate), 0.0) << a;
+  EXPECT_EQ(stop.calcJointStoredEnergy(1e3), 0.0);
 }
 
 TEST(JointStop, RejectsBadParameters) {

@@ -70,9 +70,10 @@ Comparison compare(const Participant& p, std::shared_ptr<const KneeLaw> shared, 
   const ReferenceSwingEnd end = reference.calcSwingEnd(p.initial, p.swingEnd, kReferenceTol, kReferenceTol);
   c.simbodySwingTime = sim.swingTime;
   c.referenceSwingTime = end.swingTime;
-  c.simbodyPeakTime = sim.peakKneeFlexionTime;
+  EXPECT_TRUE(sim.peakKneeFlexion);  // every ended swing has its peak
+  c.simbodyPeakTime = sim.peakKneeFlexion.value_or(KneePeak{}).time;
   c.referencePeakTime = end.peakKneeFlexionTime;
-  c.simbodyPeak = sim.peakKneeFlexion;
+  c.simbodyPeak = sim.peakKneeFlexion.value_or(KneePeak{}).flexion;
   c.referencePeak = end.peakKneeFlexion;
   return c;
 }

@@ -68,7 +68,9 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees)
         EXPECT_EQ(x.bounces, y.bounces);
         EXPECT_EQ(x.bounce, y.bounce);
         EXPECT_EQ(x.bounceHeight, y.bounceHeight);
-        EXPECT_EQ(x.peakKneeFlexion, y.peakKneeFlexion);
+        ASSERT_TRUE(x.peakKneeFlexion && y.peakKneeFlexion);
+        EXPECT_EQ(x.peakKneeFlexion->flexion, y.peakKneeFlexion->flexion);
+        EXPECT_EQ(x.peakKneeFlexion->time, y.peakKneeFlexion->time);
         EXPECT_EQ(x.minToeClearance, y.minToeClearance);
         EXPECT_EQ(x.looseDwellRetries, y.looseDwellRetries);
         ASSERT_EQ(x.events.size(), y.events.size());

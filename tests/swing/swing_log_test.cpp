@@ -38,8 +38,30 @@ TEST(SwingEvents, ABounceMovesTheEndToTheNextEntry) {
   ASSERT_TRUE(log.ended);
   EXPECT_DOUBLE_EQ(log.endTime, 0.40);
   EXPECT_EQ(log.bounces, 1);
-  EXPECT_DOUBLE_EQ(log.bounceHeight, 0.2);
-  EXPECT_DOUBLE_EQ(log.peak, kPeak);
+  EXPECT_EQ(log.bounceHeight, 0.2);
+  ASSERT_TRUE(log.peak);
+  EXPECT_DOUBLE_EQ(log.peak->flexion, kPeak);
+  EXPECT_DOUBLE_EQ(log.peak->time, 0.20);
+}
+
+TEST(SwingEvents, NoPeakAboveTheZoneLeavesThePeakAbsent) {
+  SwingLog log(kDwell);
+  log.onThighAtTarget(0.10);
+  log.onKneePeak(0.20, 0.5 * kZone, kZone);  // a wiggle inside the zone is not a peak
+  EXPECT_FALSE(log.peak);
+  EXPECT_FALSE(log.bounceHeight);
+}
+
+TEST(SwingEvents, NoBouncePeakLeavesTheBounceHeightAbsent) {
+  SwingLog log(kDwell);
+  log.onThighAtTarget(0.10);
+  log.onKneePeak(0.20, kPeak, kZone);
+  log.onKneeZone(0.30, true);
+  log.onKneeZone(0.35, false);  // out of the zone, and the run stops before the knee peaks
+  EXPECT_EQ(log.bounces, 1);
+  EXPECT_FALSE(log.bounceHeight);
+  ASSERT_TRUE(log.peak);
+  EXPECT_DOUBLE_EQ(log.peak->flexion, kPeak);
 }
 
 TEST(SwingEvents, KneeInTheZoneBeforeTheThighWaitsForTheThigh) {

@@ -1,6 +1,7 @@
 // SwingRun (swing/swing_run.h): a measured trial that ends before the swing-end rule is met is
 // a result that says which condition was not met and by how much; a hip-moment swing that
-// does not end is still an error.
+// does not end is still an error, and so is a knee folded past 180 deg. What the swing did
+// not have (a knee peak, a clearance) is absent.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -66,6 +67,47 @@ TEST(SwingRun, HipMomentSwingThatDoesNotEndIsStillAnError) {
     ADD_FAILURE() << "expected a RunError";
   } catch (const RunError& e) {
     EXPECT_THAT(e.what(), HasSubstr("the swing cannot end"));
+  }
+}
+
+// A zone of stability above anything the knee reaches: the knee never peaks above it, so
+// the swing has no peak and no toe clearance (measured from the peak), and says so: absent,
+// never a marker number.
+TEST(SwingRun, KneeWithoutAPeakAboveTheZoneHasNoPeakAndNoClearance) {
+  SwingSetup setup = winter();
+  setup.participant.swingEnd.zoneOfStability = 150 * kDegToRad;
+  const SwingResult r = simulateSwing(setup);
+  ASSERT_TRUE(r.trialEnd.has_value());
+  EXPECT_EQ(r.trialEnd->unmet, "knee_peak");
+  EXPECT_FALSE(r.peakKneeFlexion);
+  EXPECT_FALSE(r.minToeClearance);
+  EXPECT_FALSE(r.bounceHeight);
+  EXPECT_FALSE(r.trialEnd->dwellDone);  // only the settle_dwell condition has it
+}
+
+TEST(SwingRun, AnEndedSwingHasItsPeakAndClearance) {
+  Participant p = loadParticipant("participants/p1.yaml");
+  const SwingResult r = simulateSwing(makeSwingSetup(p, loadKneeModel(p.kneeModelPath)));
+  ASSERT_TRUE(r.peakKneeFlexion);
+  EXPECT_GT(r.peakKneeFlexion->flexion, p.swingEnd.zoneOfStability);
+  EXPECT_GT(r.peakKneeFlexion->time, 0);
+  EXPECT_LT(r.peakKneeFlexion->time, r.swingTime);
+  EXPECT_TRUE(r.minToeClearance);
+}
+
+// A knee flung from toe-off far faster than any swing's folds past 180 deg: a failed run
+// that says what happened and when, not a result. (The measured thigh drive: under a hip
+// moment the flung shank throws the thigh out of the hip's range first.)
+TEST(SwingRun, KneePastItsPhysicalRangeIsAFailedRun) {
+  SwingSetup setup = winter();
+  setup.participant.initial.kneeFlexionRate = 3000 * kDegToRad;  // the most the CLI accepts
+  try {
+    const SwingResult r = simulateSwing(setup);
+    ADD_FAILURE() << "expected a RunError; the swing had " << r.trajectory.size() << " samples";
+  } catch (const RunError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("winter at lowering 0 m: the knee flexion passed 180 deg at "));
+    EXPECT_THAT(e.what(), HasSubstr("beyond the knee's physical range"));
+    EXPECT_THAT(e.what(), HasSubstr("likely cause: a measured thigh motion"));
   }
 }
 
