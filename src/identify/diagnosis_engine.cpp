@@ -118,7 +118,7 @@ constexpr double kEnormousRanges = 100;
 // Whether the candidate fit `fit` of effect `id` (likelihood ratio `lr` against `current`)
 // carries information in these records. It does not when no fitted parameter's 95 % interval
 // (`wald`, before the grid's union) excludes a value of its physical range (the interval is
-// degenerate, not finite, or covers the whole range) and its fit moves no residual: every
+// degenerate or covers the whole range) and its fit moves no residual: every
 // fitted value stays at the neutral value it started from (what moved was the base model's
 // refit), or the fit gains no likelihood, or every interval is enormous (kEnormousRanges).
 bool carriesInformation(const DiagnosisPlant& plant, const PlantFit& current, const PlantFit& fit, EffectId id,
@@ -134,7 +134,9 @@ bool carriesInformation(const DiagnosisPlant& plant, const PlantFit& current, co
   for (std::size_t k = 0; k < wald.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
     if (k >= neutral.size() || wald[k].value != neutral[k]) atNeutral = false;
     const double se = errors && k < errors->size() ? (*errors)[k] * inflate : std::numeric_limits<double>::quiet_NaN();
-    const bool degenerate = !(se > 0) || !std::isfinite(se);
+    // NaN: not computed (a coefficient the active set holds at its bound), which says nothing
+    // either way; 0 or infinite: a column of the Jacobian the covariance dropped or cannot fix.
+    const bool degenerate = se == 0 || std::isinf(se);
     const bool hasRange = bounds && k < bounds->size() && std::isfinite((*bounds)[k].second - (*bounds)[k].first);
     const bool coversRange = hasRange && wald[k].lower <= (*bounds)[k].first && wald[k].upper >= (*bounds)[k].second;
     if (!degenerate && !coversRange) saysNothing = false;
