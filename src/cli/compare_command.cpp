@@ -35,8 +35,9 @@ int runCompare(const CompareArguments& args) {
   std::printf("%s", formatComparisonTable(b.comparison).c_str());
   const WhitenessTest& wt = b.whiteness;
   if (wt.computed)
-    std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g), %d lags outside the 99 %% band: %s\n",
-                wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand,
+    std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g; white when p >= %.3g, the acceptance "
+                "rule's alpha), %d lags outside the 99 %% band: %s\n",
+                wt.q, wt.lags, wt.pValue, study.settings.alpha, wt.lagsOutsideBand,
                 judgeWhiteness(wt, study.settings.alpha) == Whiteness::kWhite ? "consistent with white noise"
                                                                                : "structure left (not white)");
   else

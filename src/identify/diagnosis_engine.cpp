@@ -48,6 +48,17 @@ std::vector<EffectParameter> parametersWithIntervals(const DiagnosisPlant& plant
   return out;
 }
 
+// Which physical bound ends a profile interval, with its value: ", one-sided: cut by its
+// upper bound 20"; both: the records exclude no value of the physical range.
+std::string describeBoundCut(const ProfileInterval& pi, const PlantFit::FreeParameter& free) {
+  const std::string lower = "its lower bound " + fmtRatio(free.lower), upper = "its upper bound " + fmtRatio(free.upper);
+  if (pi.lowerAtBound && pi.upperAtBound)
+    return ", cut by " + lower + " and " + upper + ": the whole physical range, these records exclude no value of it";
+  if (pi.lowerAtBound) return ", one-sided: cut by " + lower;
+  if (pi.upperAtBound) return ", one-sided: cut by " + upper;
+  return "";
+}
+
 // Refits per side of a profile interval after the bracket is found: each is a full refit
 // (a swing simulation per record per iteration); 8 halvings pin the end to 1/256 of the last
 // bracket step, well inside what a 95 % interval on 1-5 effective samples means.
@@ -80,9 +91,7 @@ void setProfileInterval(const DiagnosisPlant& plant, const PlantFit& fit, const 
   p.lower = pi.lower;
   p.upper = pi.upper;
   p.intervalNote = "profile likelihood (" + std::to_string(pi.evaluations) + " refits)";
-  if (pi.lowerAtBound || pi.upperAtBound)
-    p.intervalNote += ", one-sided: the physical bound " + fmtRatio(pi.lowerAtBound ? free.lower : free.upper) +
-                      " cuts it" + (pi.lowerAtBound && pi.upperAtBound ? " on both sides" : "");
+  p.intervalNote += describeBoundCut(pi, free);
 }
 
 std::vector<EffectParameter> baseIntervals(const DiagnosisPlant& plant, const PlantFit& fit) {
@@ -96,6 +105,46 @@ std::vector<EffectParameter> baseIntervals(const DiagnosisPlant& plant, const Pl
     out.push_back(p);
   }
   return out;
+}
+
+// A likelihood gain below this is none: the chi^2(1) tail at 0.1 is 0.75, and the refits'
+// own convergence (each record's pose refitted from its start) moves an LR by ~0.01.
+constexpr double kNoLikelihoodGain = 0.1;
+// A Wald interval wider than this many physical ranges comes from a Jacobian column that is
+// round-off: across its whole range the parameter moves the fit by less than a hundredth of
+// what the interval's edge means.
+constexpr double kEnormousRanges = 100;
+
+// Whether the candidate fit `fit` of effect `id` (likelihood ratio `lr` against `current`)
+// carries information in these records. It does not when no fitted parameter's 95 % interval
+// (`wald`, before the grid's union) excludes a value of its physical range (the interval is
+// degenerate or covers the whole range) and its fit moves no residual: every
+// fitted value stays at the neutral value it started from (what moved was the base model's
+// refit), or the fit gains no likelihood, or every interval is enormous (kEnormousRanges).
+bool carriesInformation(const DiagnosisPlant& plant, const PlantFit& current, const PlantFit& fit, EffectId id,
+                        double gridValue, double lr, const std::vector<EffectParameter>& wald, double inflate) {
+  const EffectDescriptor& d = describeEffect(id);
+  if (d.fittedParameters == 0) return true;  // a grid alone: its profile is the information
+  const std::vector<double> neutral = plant.effectValues(*plant.addEffect(*current.model, id, gridValue), id);
+  const std::vector<double>* errors = findErrors(fit, id);
+  const std::vector<std::pair<double, double>>* bounds = nullptr;
+  for (const auto& [effect, b] : fit.effectBounds)
+    if (effect == id) bounds = &b;
+  bool atNeutral = true, saysNothing = true, enormous = true;
+  for (std::size_t k = 0; k < wald.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
+    if (k >= neutral.size() || wald[k].value != neutral[k]) atNeutral = false;
+    const double se = errors && k < errors->size() ? (*errors)[k] * inflate : std::numeric_limits<double>::quiet_NaN();
+    // NaN: not computed (a coefficient the active set holds at its bound), which says nothing
+    // either way; 0 or infinite: a column of the Jacobian the covariance dropped or cannot fix.
+    const bool degenerate = se == 0 || std::isinf(se);
+    const bool hasRange = bounds && k < bounds->size() && std::isfinite((*bounds)[k].second - (*bounds)[k].first);
+    const bool coversRange = hasRange && wald[k].lower <= (*bounds)[k].first && wald[k].upper >= (*bounds)[k].second;
+    if (!degenerate && !coversRange) saysNothing = false;
+    if (!degenerate && !(hasRange && wald[k].upper - wald[k].lower > kEnormousRanges * ((*bounds)[k].second - (*bounds)[k].first)))
+      enormous = false;
+  }
+  const bool movesNothing = atNeutral || !(std::abs(lr) > kNoLikelihoodGain) || enormous;
+  return !(saysNothing && movesNothing);
 }
 
 // Scores one candidate on top of `current`: every parameter refitted with it, its grid
@@ -139,7 +188,14 @@ CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& curre
   applyTestAndValidation(c, t, dof, current.validationRmse, settings, current.pooledValidationRmse);
   const double inflate = calcStandardErrorInflation(static_cast<double>(s.samples), t.nEff);
   c.parameters = parametersWithIntervals(plant, s, id, inflate);
-  if (!d.grid.empty()) {
+  c.informative = carriesInformation(plant, current, s, id, grid[best], t.lr, c.parameters, inflate);
+  if (!c.informative) {
+    // No interval: any value of the physical range fits these records as well as any other.
+    for (auto& p : c.parameters) {
+      p.lower = p.upper = std::numeric_limits<double>::quiet_NaN();
+      p.intervalNote = kNoInformation;
+    }
+  } else if (!d.grid.empty()) {
     // The grid parameter's interval: the grid values inside the profile likelihood's 95 %
     // region. The fitted parameters' intervals are conditional on the grid value: take their
     // union over every grid value in that region, so the grid choice cannot narrow them.
@@ -184,19 +240,18 @@ std::vector<EffectId> resolveEffects(PlantKind plant, const std::vector<std::str
   return ids;
 }
 
-// The closest candidate of the last step that is not significant (largest LR), and how many
-// records like the training ones would give it kPowerTarget power; nullopt if a candidate
-// was significant (the sample size was not the limit) or none was scored.
+// How many records like the training ones would give the closest candidate of the last step
+// kPowerTarget power; nullopt if a candidate was significant (the sample size was not the
+// limit) or none carries information.
 std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const EffectSelectionSettings& settings) {
   if (out.steps.empty() || out.steps.back().chosen >= 0) return std::nullopt;
-  const CandidateScore* closest = nullptr;
   int applicable = 0;
   for (const auto& c : out.steps.back().candidates) {
     if (!c.notApplicable.empty()) continue;
     ++applicable;
     if (c.significant) return std::nullopt;
-    if (!closest || c.likelihoodRatio > closest->likelihoodRatio) closest = &c;
   }
+  const CandidateScore* closest = findClosestCandidate(out.steps.back());
   if (!closest) return std::nullopt;
   PowerAdvice a;
   a.effect = closest->effect;
@@ -210,18 +265,48 @@ std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const Eff
   return a;
 }
 
+// The power advice for the closest candidate, which the sentence before has named.
 std::string describePowerAdvice(const PowerAdvice& a) {
   const std::string at = " at the acceptance rule's level (alpha " + fmtRatio(a.level) + " after Bonferroni)";
   if (a.recordsNeeded == 0)
-    return " No candidate is significant, and the closest, " + a.effect + ", has no likelihood gain (LR " +
-           fmtRatio(a.likelihoodRatio) + "): more " + a.records + " like these would not make it so.";
+    return " No candidate is significant, and the closest has no likelihood gain: more " + a.records +
+           " like these would not make it so.";
   if (a.recordsNeeded <= a.recordsNow)
-    return " The closest candidate, " + a.effect + " (LR " + fmtRatio(a.likelihoodRatio) + "), already has " +
-           fmtPercent(100 * kPowerTarget) + " % power" + at + " on these records at its fitted size.";
-  return " The effective sample size is too small to accept any effect: at its fitted size the closest, " + a.effect +
-         " (LR " + fmtRatio(a.likelihoodRatio) + " on " + std::to_string(a.recordsNow) + " training " + a.records + "), would need " +
-         std::to_string(a.recordsNeeded - a.recordsNow) + " more " + a.records + " like these (" + std::to_string(a.recordsNeeded) +
-         " in all) for " + fmtPercent(100 * kPowerTarget) + " % power" + at + ".";
+    return " The closest already has " + fmtPercent(100 * kPowerTarget) + " % power" + at +
+           " on these records at its fitted size.";
+  return " The effective sample size is too small to accept any effect: at its fitted size the closest would need " +
+         std::to_string(a.recordsNeeded - a.recordsNow) + " more " + a.records + " like these (" +
+         std::to_string(a.recordsNeeded) + " in all, " + std::to_string(a.recordsNow) + " now) for " +
+         fmtPercent(100 * kPowerTarget) + " % power" + at + ".";
+}
+
+// "name value (95 % CI lower .. upper[; how])" for each parameter of a candidate.
+std::string describeCandidateParameters(const CandidateScore& c) {
+  std::string out;
+  for (const auto& p : c.parameters)
+    out += std::string(out.empty() ? "" : ", ") + p.name + " " + fmtRatio(p.value) + " (95 % CI " + fmtRatio(p.lower) +
+           " .. " + fmtRatio(p.upper) + (p.intervalNote.empty() ? "" : "; " + p.intervalNote) + ")";
+  return out;
+}
+
+// What was tried on top of the final model, and the closest candidate, named once.
+std::string describeTried(const DiagnosisStep& step, const std::string& unit) {
+  std::string tried, silent;
+  for (const auto& c : step.candidates) {
+    if (!c.notApplicable.empty()) continue;
+    std::string& list = c.informative ? tried : silent;
+    list += (list.empty() ? "" : ", ") + c.effect;
+  }
+  if (tried.empty() && silent.empty()) return "";
+  std::string out = " Tried on top of the final model: " + (tried.empty() ? std::string("none with information") : tried) +
+                    (silent.empty() ? "" : "; " + std::string(kNoInformation) + ": " + silent) + ".";
+  const CandidateScore* closest = findClosestCandidate(step);
+  if (!closest) return out;
+  double worst = 0;
+  for (double v : closest->validationRmse) worst = std::max(worst, v);
+  return out + " The closest (largest likelihood ratio on the training records) is " + closest->effect + " (LR " +
+         fmtRatio(closest->likelihoodRatio) + "; " + describeCandidateParameters(*closest) +
+         "); it leaves a held-out error of " + fmtRatio(worst) + " " + unit + " (largest over the held-out records).";
 }
 
 // The verdict: is what remains measurement noise? Noise per record from the study or the
@@ -269,25 +354,6 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                                         [](const RecordComparison& r) { return !r.training; }),
                          training.records.end());
   out.structureNote = describeResidualStructure(training, nEffRatio);
-  std::string tried, closest, closestParameters;
-  double closestRmse = std::numeric_limits<double>::infinity();
-  if (!out.steps.empty()) {
-    for (const auto& c : out.steps.back().candidates) {
-      if (!c.notApplicable.empty()) continue;
-      tried += (tried.empty() ? "" : ", ") + c.effect;
-      double worst = 0;
-      for (double v : c.validationRmse) worst = std::max(worst, v);
-      if (worst < closestRmse) {
-        closestRmse = worst;
-        closest = c.effect;
-        // Its fitted parameters with their 95 % intervals, so a user can judge it.
-        closestParameters.clear();
-        for (const auto& p : c.parameters)
-          closestParameters += std::string(closestParameters.empty() ? "" : ", ") + p.name + " " + fmtRatio(p.value) +
-                               " (95 % CI " + fmtRatio(p.lower) + " .. " + fmtRatio(p.upper) + ")";
-      }
-    }
-  }
   out.verdict = "NOT explained: ";
   if (!atNoise)
     out.verdict += "the held-out error on " + worstStem + " is " + fmtRatio(worstRatio) + " x the measurement noise (" +
@@ -299,10 +365,7 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                                                : "whether the final residual is white cannot be told (" +
                                                      out.finalWhiteness.note + ")";
   out.verdict += ". What remains: " + out.structureNote + ".";
-  if (!tried.empty())
-    out.verdict += " Tried on top of the final model: " + tried + "; the closest, " + closest +
-                   (closestParameters.empty() ? "" : " (" + closestParameters + ")") + ", left a held-out error of " +
-                   fmtRatio(closestRmse) + " " + training.unit + " (largest over the held-out records).";
+  if (!out.steps.empty()) out.verdict += describeTried(out.steps.back(), training.unit);
   out.power = adviseRecordsForPower(out, settings);
   if (out.power) out.verdict += describePowerAdvice(*out.power);
   out.verdict += " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";
@@ -343,6 +406,14 @@ std::string describeConfound(const PlantFit& fit, EffectId added, bool withBase)
 }
 
 }  // namespace
+
+const CandidateScore* findClosestCandidate(const DiagnosisStep& step) {
+  const CandidateScore* closest = nullptr;
+  for (const auto& c : step.candidates)
+    if (c.notApplicable.empty() && c.informative && (!closest || c.likelihoodRatio > closest->likelihoodRatio))
+      closest = &c;
+  return closest;
+}
 
 Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSettings& settings,
                        const DiagnosisProgress& progress) {
@@ -420,7 +491,8 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
   out.finalParameters = baseIntervals(plant, current);
   out.finalWhiteness = calcWhitenessTest(plant.whitenessResidual(current.likelihoodResidual), settings.whitenessLags);
   // A whiteness test that cannot be computed is "cannot tell", never a pass.
-  out.finalResidualWhite = judgeWhiteness(out.finalWhiteness, settings.alpha) == Whiteness::kWhite;
+  out.whitenessLevel = settings.alpha;
+  out.finalResidualWhite = judgeWhiteness(out.finalWhiteness, out.whitenessLevel) == Whiteness::kWhite;
   judgeExplained(plant, settings, out);
   return out;
 }

@@ -69,6 +69,9 @@ struct PlantFit {
   /// of the fitted parameters of every effect in the model, by effect, in the order of the
   /// descriptor's parameters; and of the base model's own free parameters.
   std::vector<std::pair<EffectId, std::vector<double>>> effectErrors;
+  /// The physical bounds (lower, upper; reported unit) of the same parameters, in the same
+  /// order; an effect missing here has bounds the engine cannot judge an interval against.
+  std::vector<std::pair<EffectId, std::vector<std::pair<double, double>>>> effectBounds;
   /// The base model's own free parameters (the swing's knee model scale), with standard errors.
   struct FreeParameter {
     std::string name;  ///< with unit
@@ -163,8 +166,14 @@ struct DiagnosisStep {
 /// Correlation of two fitted parameters above which they count as one confounded group.
 constexpr double kConfoundLimit = 0.95;
 
+/// The closest candidate of a step: of the candidates that were scored and carry information
+/// in these records (EffectScore::informative), the one with the largest likelihood ratio on
+/// the training records; nullptr if there is none. The one definition the verdict and the
+/// power advice use (docs/diagnosis.md, "The closest candidate").
+const CandidateScore* findClosestCandidate(const DiagnosisStep& step);
+
 /// When no candidate is significant: how many swings (records) like the training ones the
-/// closest candidate (largest likelihood ratio) would need, at its fitted size, for
+/// closest candidate (findClosestCandidate) would need, at its fitted size, for
 /// kPowerTarget power at the acceptance rule's level. The likelihood ratio is taken to
 /// grow in proportion to the number of training records (docs/diagnosis.md).
 struct PowerAdvice {
@@ -194,6 +203,9 @@ struct Diagnosis {
   /// measurement that would separate them.
   std::vector<std::string> confounds;
   WhitenessTest baselineWhiteness, finalWhiteness;
+  /// The Ljung-Box test's level: the residual counts as white when its p is at least this
+  /// (the acceptance rule's alpha, EffectSelectionSettings::alpha).
+  double whitenessLevel = 0.01;
   bool finalResidualWhite = true;
   std::string structureNote;  ///< where the remaining structure is, if not explained
   std::vector<std::string> warnings;

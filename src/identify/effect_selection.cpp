@@ -61,7 +61,7 @@ int applyAcceptanceRule(std::vector<EffectScore*> scores, double alpha) {
     c.pAdjusted = std::isfinite(c.pValue) ? std::min(1.0, c.pValue * applicable) : 1.0;
     c.significant = std::isfinite(c.pValue) && c.pAdjusted < alpha;
     c.bicImproves = c.bicImproves && std::isfinite(c.deltaBic);
-    c.accepted = c.significant && c.bicImproves && c.validationImproves && c.physical;
+    c.accepted = c.informative && c.significant && c.bicImproves && c.validationImproves && c.physical;
     if (c.accepted && (chosen < 0 || c.deltaBic < scores[static_cast<std::size_t>(chosen)]->deltaBic))
       chosen = static_cast<int>(i);
   }

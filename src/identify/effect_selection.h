@@ -59,11 +59,18 @@ struct EffectScore {
   double deltaBic = 0;                 ///< -LR + dof ln(n_eff) (< 0: better)
   std::vector<EffectParameter> parameters;
   bool significant = false, bicImproves = false, validationImproves = false, physical = false;
+  /// False: the candidate's fit moves no residual (its parameters' intervals say nothing
+  /// within their physical range); reported as kNoInformation, without intervals, and never
+  /// accepted or named as the closest candidate.
+  bool informative = true;
   std::string physicalNote;            ///< the sign rule and whether it held
   bool accepted = false;
   std::string where;                   ///< phase where the squared error fell most, with its share
   std::vector<double> trainResidual;   ///< concatenated training files
 };
+
+/// What the report says of a candidate whose fit moves no residual (EffectScore::informative).
+inline constexpr const char* kNoInformation = "no information in these records";
 
 /// Likelihood-ratio statistics of a bigger model against a nested smaller one (`dof` more
 /// parameters), with n_eff from the bigger model's own residual (docs/diagnosis.md).
@@ -87,7 +94,7 @@ void setNormalInterval(EffectParameter& p, double standardError);
 
 /// Bonferroni over the applicable candidates, the four-part acceptance rule, and the index of
 /// the accepted candidate with the lowest delta BIC (-1 if none). Only scores with an empty
-/// notApplicable take part.
+/// notApplicable take part; one without information (informative false) is never accepted.
 int applyAcceptanceRule(std::vector<EffectScore*> scores, double alpha);
 
 /// The ambiguity group of the candidate `chosen` in one step: its name, then the name of

@@ -393,6 +393,7 @@ PlantFit SweepPlant::fit(const PlantModel& model) const {
     const auto jj = static_cast<Eigen::Index>(j);
     const double se = full.covariance.rows() > jj ? std::sqrt(std::max(0.0, full.covariance(jj, jj))) : kNaN;
     out.effectErrors.push_back({id, {se}});
+    out.effectBounds.push_back({id, {{findSweepEffectLaw(id).lower, findSweepEffectLaw(id).upper}}});
     out.parameterNames.push_back(describeEffect(id).name + "." + describeEffect(id).parameters[0]);
   }
   out.correlation = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(free.size()), static_cast<Eigen::Index>(free.size()));

@@ -456,10 +456,15 @@ PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> held
     }
     auto it = std::find_if(s.effectErrors.begin(), s.effectErrors.end(),
                            [&](const auto& entry) { return entry.first == *slots[k].effect; });
-    if (it == s.effectErrors.end()) it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
+    if (it == s.effectErrors.end()) {
+      it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
+      s.effectBounds.push_back({*slots[k].effect, {}});
+    }
     const auto& d = describeEffect(*slots[k].effect);
     const std::string name = d.name + "." + d.parameters[it->second.size()];  // the effect's parameters in order
     it->second.push_back(se);
+    s.effectBounds[static_cast<std::size_t>(it - s.effectErrors.begin())].second.push_back(
+        {slots[k].bounds.lower * slots[k].reportScale, slots[k].bounds.upper * slots[k].reportScale});
     s.parameterNames.push_back(name);
     if (lm.atBound[k])
       s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +

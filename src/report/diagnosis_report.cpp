@@ -18,6 +18,11 @@ const double kZ99 = calcNormalQuantile(0.995);  // two-sided 99 % normal quantil
 constexpr int kResidualBins = 12;            // equal-count bins for the binned residual
 constexpr double kAcfSeconds = 0.5;          // autocorrelation shown up to this lag, s
 
+// What the metric tables' columns mean, printed under each table.
+const char* const kMetricLegend =
+    "  ME: the largest |measured - model| (maximum absolute error); RMSE: root mean square of measured - model; "
+    "R^2: 1 - residual / measured sum of squares about the mean\n";
+
 // A number with the comparison's decimals.
 std::string num(double v, int decimals) { return fmt("%.*f", decimals, v); }
 
@@ -75,6 +80,10 @@ Json candidateJson(const CandidateScore& c, int step, const std::vector<std::str
   j["effective_samples"] = c.effectiveSamples;
   j["parameters"] = params["values"];
   j["confidence_intervals"] = params["confidence_intervals"];
+  // A candidate whose fit moves no residual has no interval (null) and is never accepted.
+  j["informative"] = c.informative;
+  if (!c.informative)
+    for (const auto& p : c.parameters) j["confidence_intervals"][p.name] = nullptr;
   j["significant"] = c.significant;
   j["bic_improves"] = c.bicImproves;
   j["validation_improves"] = c.validationImproves;
@@ -117,6 +126,9 @@ std::string formatComparisonTable(const Comparison& c) {
                  m.bias, 100 * r.phaseShare[ph], 100 * r.sampleShare[ph]);
     }
   }
+  if (!c.records.empty())
+    out += std::string(kMetricLegend) +
+           "  bias: mean of measured - model; sq.err %: the phase's share of the record's squared error\n";
   return out;
 }
 
@@ -244,7 +256,9 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
     std::string val;
     for (double v : c.validationRmse) val += num(v, decimals + 1) + " ";
     std::string verdict = c.accepted ? "ACCEPTED" : "rejected:";
-    if (!c.accepted) {
+    if (!c.informative) {
+      verdict += std::string(" ") + kNoInformation;
+    } else if (!c.accepted) {
       if (!c.significant) verdict += " not significant;";
       if (!c.bicImproves) verdict += " BIC worse;";
       if (!c.validationImproves) verdict += " validation did not fall enough;";
@@ -285,12 +299,16 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   const std::string& u = before.unit;
   std::string out;
   for (const auto& p : dg.baselineParameters) out += formatBaseParameter("base model: ", " refitted to", p);
-  std::vector<std::string> stems;
-  for (const auto& r : before.records)
-    if (!r.training) stems.push_back(r.stem);
+  std::vector<std::string> stems, trainStems;
+  for (const auto& r : before.records) (r.training ? trainStems : stems).push_back(r.stem);
+  // The step lines and the before/after table print the same quantities under the same
+  // labels: the RMSE of every training sample pooled, and each held-out record's.
+  std::string trainLabel;
+  for (const auto& t : trainStems) trainLabel += (trainLabel.empty() ? "" : ", ") + t;
+  trainLabel = trainStems.size() > 1 ? "train pooled (" + trainLabel + ")" : "train (" + trainLabel + ")";
   for (std::size_t s = 0; s < dg.steps.size(); ++s) {
     const auto& st = dg.steps[s];
-    out += fmt("step %zu: current model train %s RMSE %s %s", s + 1, before.quantity.c_str(),
+    out += fmt("step %zu: current model, %s RMSE: %s %s %s", s + 1, before.quantity.c_str(), trainLabel.c_str(),
                num(st.currentTrainRmse, d + 1).c_str(), u.c_str());
     for (std::size_t v = 0; v < stems.size() && v < st.currentValidationRmse.size(); ++v)
       out += fmt(", %s %s %s", stems[v].c_str(), num(st.currentValidationRmse[v], d + 1).c_str(), u.c_str());
@@ -315,10 +333,18 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
                d, b.overall.maxError, d + 1, b.overall.rmse, 100 * b.overall.r2, d, a.overall.maxError, d + 1,
                a.overall.rmse, 100 * a.overall.r2);
   }
+  if (trainStems.size() > 1) {
+    const ErrorMetrics b = pooled(before, true), a = pooled(after, true);
+    out += fmt("%-16s |   %10.*f %9.*f %6.1f  |   %9.*f %9.*f %6.1f\n", "train pooled", d, b.maxError, d + 1, b.rmse,
+               100 * b.r2, d, a.maxError, d + 1, a.rmse, 100 * a.r2);
+  }
+  out += kMetricLegend;
   const WhitenessTest& wt = dg.finalWhiteness;
   if (wt.computed)
-    out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g, %d lags outside the 99 %% band: %s\n",
-               wt.q, wt.lags, wt.pValue, wt.lagsOutsideBand, dg.finalResidualWhite ? "consistent with white noise" : "NOT white");
+    out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g (white when p >= %.3g, the acceptance "
+               "rule's alpha), %d lags outside the 99 %% band: %s\n",
+               wt.q, wt.lags, wt.pValue, dg.whitenessLevel, wt.lagsOutsideBand,
+               dg.finalResidualWhite ? "consistent with white noise" : "NOT white");
   else
     out += "\nfinal training residual: Ljung-Box test cannot tell (" + wt.note + "): not counted as white\n";
   if (wt.computed && !wt.note.empty()) out += "  (" + wt.note + ")\n";
@@ -361,6 +387,7 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
                                  : dg.finalWhiteness.computed ? "not white"
                                                               : "cannot tell"},
           {"residual_whiteness_note", dg.finalWhiteness.note},
+          {"residual_whiteness_level", dg.whitenessLevel},
           {"noise", noiseJson(dg, before)},
           {"explained", dg.explained},
           {"verdict", dg.verdict},

@@ -13,16 +13,18 @@
 namespace swingsim {
 namespace {
 
-// A plant whose model is a straight line y = a + b x with a physical bound b >= bLower: the
+// A plant whose model is a straight line y = a + b x with physical bounds bLower <= b <= bUpper: the
 // engine's intervals of its base parameter b can be checked against the closed form of a
 // linear model (numerics/profile_likelihood_test.cpp).
 struct LineModel : PlantModel {};
 
 class LinePlant final : public DiagnosisPlant {
  public:
-  LinePlant(double trueSlope, double bLower) : bLower_(bLower) {
+  LinePlant(double trueSlope, double bLower, double bUpper = std::numeric_limits<double>::infinity(),
+            double noiseSd = 0.5)
+      : bLower_(bLower), bUpper_(bUpper) {
     std::mt19937_64 rng(9);
-    std::normal_distribution<double> noise(0.0, 0.5);
+    std::normal_distribution<double> noise(0.0, noiseSd);
     for (int i = 0; i < 40; ++i) {
       x_.push_back(0.1 * i);
       y_.push_back(1.0 + trueSlope * x_.back() + noise(rng));
@@ -37,7 +39,7 @@ class LinePlant final : public DiagnosisPlant {
     }
   }
   double freeSlope() const { return sxy_ / sxx_; }
-  double fittedSlope() const { return std::max(freeSlope(), bLower_); }
+  double fittedSlope() const { return std::clamp(freeSlope(), bLower_, bUpper_); }
   std::vector<double> residualAt(double b) const {  // the intercept refitted
     std::vector<double> r;
     for (std::size_t i = 0; i < x_.size(); ++i) r.push_back(y_[i] - ybar_ - b * (x_[i] - xbar_));
@@ -61,7 +63,7 @@ class LinePlant final : public DiagnosisPlant {
     f.rss = rssAt(b);
     f.samples = x_.size();
     const double se = std::sqrt(rssAt(freeSlope()) / (n() - 2) / sxx_);
-    f.baseParameters.push_back({"slope", b, se, bLower_, std::numeric_limits<double>::infinity()});
+    f.baseParameters.push_back({"slope", b, se, bLower_, bUpper_});
     return f;
   }
   std::optional<double> calcHeldParameterRss(const PlantModel&, const std::string& name, double v) const override {
@@ -80,7 +82,7 @@ class LinePlant final : public DiagnosisPlant {
 
  private:
   std::vector<double> x_, y_;
-  double xbar_ = 0, ybar_ = 0, sxx_ = 0, sxy_ = 0, bLower_;
+  double xbar_ = 0, ybar_ = 0, sxx_ = 0, sxy_ = 0, bLower_, bUpper_;
 };
 
 // Steps from se / 4, doubling, then 8 halvings: the last bracket is at most 2 se wide for an
@@ -105,7 +107,37 @@ TEST(DiagnosisEngine, ABaseParameterOnItsBoundGetsAOneSidedProfileInterval) {
   EXPECT_DOUBLE_EQ(p.lower, 1.0);
   EXPECT_NEAR(p.upper, upper, kProfileTolerance * se);
   EXPECT_NE(p.intervalNote.find("profile likelihood"), std::string::npos) << p.intervalNote;
-  EXPECT_NE(p.intervalNote.find("one-sided: the physical bound 1 cuts it"), std::string::npos) << p.intervalNote;
+  EXPECT_NE(p.intervalNote.find("one-sided: cut by its lower bound 1"), std::string::npos) << p.intervalNote;
+}
+
+// The slope held by its upper bound b <= 1 (free estimate about 1.2): the note names the
+// upper bound and its value, never the lower one.
+TEST(DiagnosisEngine, AProfileIntervalCutByTheUpperBoundSaysWhichBound) {
+  const LinePlant plant(1.2, 0.05, 1.0);
+  ASSERT_GT(plant.freeSlope(), 1.0);
+  const BaselineComparison b = compareBaseline(plant, 5);
+  ASSERT_EQ(b.parameters.size(), 1u);
+  const EffectParameter& p = b.parameters[0];
+  EXPECT_DOUBLE_EQ(p.value, 1.0);
+  EXPECT_DOUBLE_EQ(p.upper, 1.0);
+  EXPECT_GT(p.lower, 0.05);
+  EXPECT_NE(p.intervalNote.find("one-sided: cut by its upper bound 1"), std::string::npos) << p.intervalNote;
+  EXPECT_EQ(p.intervalNote.find("lower bound"), std::string::npos) << p.intervalNote;
+  EXPECT_EQ(p.intervalNote.find("0.05"), std::string::npos) << p.intervalNote;
+}
+
+// Noise so large that no slope in [0.9, 1] is excluded: the note names both bounds with their
+// values (not "the bound 0.9 cuts it on both sides").
+TEST(DiagnosisEngine, AProfileIntervalCutByBothBoundsNamesBoth) {
+  const LinePlant plant(1.2, 0.9, 1.0, 20.0);
+  const BaselineComparison b = compareBaseline(plant, 5);
+  ASSERT_EQ(b.parameters.size(), 1u);
+  const EffectParameter& p = b.parameters[0];
+  EXPECT_DOUBLE_EQ(p.lower, 0.9);
+  EXPECT_DOUBLE_EQ(p.upper, 1.0);
+  EXPECT_NE(p.intervalNote.find("cut by its lower bound 0.9 and its upper bound 1"), std::string::npos)
+      << p.intervalNote;
+  EXPECT_EQ(p.intervalNote.find("both sides"), std::string::npos) << p.intervalNote;
 }
 
 // Far from its bound the slope keeps the Wald interval value +- 1.96 se (inflated), no note.
@@ -172,6 +204,138 @@ TEST(DiagnosisEngine, AWhitenessTestThatCannotBeComputedNeverExplainsTheData) {
   EXPECT_EQ(tooShort.verdict.rfind("NOT explained", 0), 0u) << tooShort.verdict;
   EXPECT_NE(tooShort.verdict.find("whether the final residual is white cannot be told"), std::string::npos)
       << tooShort.verdict;
+}
+
+// A plant of white noise (sigma 1, 200 samples) left by a base model whose held-out error is
+// twice the noise, with two candidates: "inertia" lowers the training RSS a little and has a
+// narrow interval inside its range; "orifice_quadratic" lowers it more (larger likelihood
+// ratio) but its parameter's interval is a million times its physical range, a Jacobian
+// column of round-off: it carries no information in these records.
+struct TwoCandidateModel : PlantModel {
+  std::vector<EffectId> effects;
+  bool fitted = false;
+  bool has(EffectId id) const { return std::find(effects.begin(), effects.end(), id) != effects.end(); }
+};
+
+class TwoCandidatePlant final : public DiagnosisPlant {
+ public:
+  TwoCandidatePlant() {
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> noise(0.0, 1.0);
+    for (int i = 0; i < 200; ++i) residual_.push_back(noise(rng));
+  }
+  PlantKind kind() const override { return PlantKind::kCylinder; }
+  PlantModelPtr baseModel() const override { return std::make_shared<TwoCandidateModel>(); }
+  PlantFit fit(const PlantModel& model) const override {
+    auto m = std::make_shared<TwoCandidateModel>(dynamic_cast<const TwoCandidateModel&>(model));
+    m->fitted = true;
+    // Shares of the residual left: LR = n_eff ln(RSS_base / RSS) of about 2 and 4.
+    const double left = m->has(EffectId::kInertia) ? 0.995 : m->has(EffectId::kOrificeQuadratic) ? 0.99 : 1.0;
+    PlantFit f;
+    f.model = m;
+    std::vector<double> r;
+    for (double v : residual_) r.push_back(left * v);
+    f.likelihoodResidual = {r};
+    f.trainResidual = {r};
+    f.trainPhase = {std::vector<int>(r.size(), 0)};
+    for (double v : r) f.rss += v * v;
+    f.samples = r.size();
+    f.trainRmse = std::sqrt(f.rss / static_cast<double>(f.samples));
+    f.validationRmse = {2.0};
+    if (m->has(EffectId::kInertia)) {
+      f.effectErrors.push_back({EffectId::kInertia, {0.1}});
+      f.effectBounds.push_back({EffectId::kInertia, {{0.0, 10.0}}});
+    }
+    if (m->has(EffectId::kOrificeQuadratic)) {
+      f.effectErrors.push_back({EffectId::kOrificeQuadratic, {1e6}});
+      f.effectBounds.push_back({EffectId::kOrificeQuadratic, {{0.0, 10.0}}});
+    }
+    return f;
+  }
+  std::string checkApplicable(const PlantModel& model, EffectId id) const override {
+    return dynamic_cast<const TwoCandidateModel&>(model).has(id) ? "already in the model" : "";
+  }
+  PlantModelPtr addEffect(const PlantModel& model, EffectId id, double) const override {
+    auto m = std::make_shared<TwoCandidateModel>(dynamic_cast<const TwoCandidateModel&>(model));
+    m->effects.push_back(id);
+    m->fitted = false;
+    return m;
+  }
+  PlantModelPtr combine(const PlantModel& a, const PlantModel&, EffectId id) const override { return addEffect(a, id, 0); }
+  std::vector<double> effectValues(const PlantModel& model, EffectId id) const override {
+    const auto& m = dynamic_cast<const TwoCandidateModel&>(model);
+    if (!m.fitted) return {0.0};  // neutral
+    return {id == EffectId::kInertia ? 1.0 : 0.5};
+  }
+  bool checkPhysical(const PlantModel&, EffectId, std::string&) const override { return true; }
+  std::vector<std::string> phaseNames(const PlantModel&) const override { return {"all"}; }
+  Comparison compare(const PlantModel&) const override {
+    Comparison c;
+    c.quantity = "force";
+    c.unit = "N";
+    return c;
+  }
+  std::vector<std::string> validationStems() const override { return {"held"}; }
+  std::vector<NoiseEstimate> estimateRecordNoise() const override { return {{1.0, 200}, {1.0, 200}}; }
+
+ private:
+  std::vector<double> residual_;
+};
+
+std::size_t countOf(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + what.size())) ++n;
+  return n;
+}
+
+// The candidate whose fit moves no residual gets no interval and the words "no information
+// in these records"; it is never accepted nor the closest, although its likelihood ratio is
+// the larger. The verdict names one closest candidate, once, with its definition, and the
+// power advice is for that one.
+TEST(DiagnosisEngine, ACandidateWithoutInformationHasNoIntervalAndIsNeverTheClosest) {
+  EffectSelectionSettings settings;
+  settings.candidates = {"inertia", "orifice_quadratic"};
+  const Diagnosis dg = runDiagnosis(TwoCandidatePlant(), settings);
+  ASSERT_EQ(dg.steps.size(), 1u);
+  const auto& candidates = dg.steps[0].candidates;
+  ASSERT_EQ(candidates.size(), 2u);
+  const CandidateScore& inertia = candidates[0];
+  const CandidateScore& orifice = candidates[1];
+  ASSERT_EQ(orifice.effect, "orifice_quadratic");
+  ASSERT_GT(orifice.likelihoodRatio, inertia.likelihoodRatio);
+  EXPECT_TRUE(inertia.informative);
+  EXPECT_FALSE(orifice.informative);
+  EXPECT_FALSE(orifice.accepted);
+  ASSERT_EQ(orifice.parameters.size(), 1u);
+  EXPECT_TRUE(std::isnan(orifice.parameters[0].lower));
+  EXPECT_TRUE(std::isnan(orifice.parameters[0].upper));
+  EXPECT_EQ(orifice.parameters[0].intervalNote, "no information in these records");
+  EXPECT_EQ(findClosestCandidate(dg.steps[0]), &inertia);
+  ASSERT_TRUE(dg.power.has_value());
+  EXPECT_EQ(dg.power->effect, "inertia");
+
+  const std::string& v = dg.verdict;
+  EXPECT_NE(v.find("no information in these records: orifice_quadratic"), std::string::npos) << v;
+  EXPECT_NE(v.find("The closest (largest likelihood ratio on the training records) is inertia"), std::string::npos) << v;
+  EXPECT_EQ(countOf(v, "orifice_quadratic"), 1u) << v;  // only in the list, never with an interval
+  EXPECT_EQ(countOf(v, "inertia"), 2u) << v;  // in the list tried, and once as the closest
+  EXPECT_EQ(countOf(v, "the closest, "), 0u) << v;  // the power advice names no other one
+  EXPECT_EQ(countOf(v, "(largest likelihood ratio"), 1u) << v;  // defined once
+}
+
+// A step with only candidates without information has no closest one and no power advice.
+TEST(DiagnosisEngine, NoClosestCandidateWhenNoneCarriesInformation) {
+  EffectSelectionSettings settings;
+  settings.candidates = {"orifice_quadratic"};
+  const Diagnosis dg = runDiagnosis(TwoCandidatePlant(), settings);
+  ASSERT_EQ(dg.steps.size(), 1u);
+  EXPECT_EQ(findClosestCandidate(dg.steps[0]), nullptr);
+  EXPECT_FALSE(dg.power.has_value());
+  EXPECT_EQ(dg.verdict.find("closest"), std::string::npos) << dg.verdict;
+  EXPECT_NE(dg.verdict.find("Tried on top of the final model: none with information; no information in these records: "
+                            "orifice_quadratic."),
+            std::string::npos)
+      << dg.verdict;
 }
 
 }  // namespace

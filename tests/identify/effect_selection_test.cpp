@@ -58,6 +58,23 @@ TEST(EffectSelection, ANanStatisticNeverPassesTheAcceptanceRule) {
   EXPECT_TRUE(s[1].accepted);
 }
 
+// A candidate without information in these records is never accepted, however its
+// statistics look; the informative one is chosen.
+TEST(EffectSelection, ACandidateWithoutInformationIsNeverAccepted) {
+  std::vector<EffectScore> s(2);
+  for (auto& c : s) {
+    c.bicImproves = c.validationImproves = c.physical = true;
+    c.pValue = 1e-12;
+  }
+  s[0].deltaBic = -80;
+  s[0].informative = false;
+  s[1].deltaBic = -50;
+  std::vector<EffectScore*> scores{&s[0], &s[1]};
+  EXPECT_EQ(applyAcceptanceRule(scores, 0.01), 1);
+  EXPECT_FALSE(s[0].accepted);
+  EXPECT_TRUE(s[1].accepted);
+}
+
 TEST(EffectSelection, RecordAmbiguityKeepsGroupsOfTwoOrMoreWithAdvice) {
   std::vector<std::vector<std::string>> ambiguous;
   std::vector<std::string> advice;

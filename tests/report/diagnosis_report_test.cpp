@@ -1,11 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "io/knee_model_loader.h"
 #include "identify/swing_plant.h"
 #include "identify/synthetic_swing.h"
 #include "io/participant_loader.h"
+#include "core/text_format.h"
 #include "hidden_damper_comparison.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosis_study.h"
@@ -82,6 +85,88 @@ TEST(DiagnosisJson, CylinderAndSwingShareOneSchema) {
   EXPECT_EQ(docs[1]["accepted"], Json({"extension_assist_spring"}));
   EXPECT_TRUE(docs[1]["final_parameters"]["values"].contains("knee_model_scale"));
   EXPECT_TRUE(docs[0]["final_parameters"]["values"].empty());
+}
+
+// One record of a comparison: measured and model series, with the metrics the table prints.
+RecordComparison makeRecord(const std::string& stem, bool training, const std::vector<double>& measured,
+                            const std::vector<double>& predicted) {
+  RecordComparison r;
+  r.stem = stem;
+  r.training = training;
+  r.measured = measured;
+  r.predicted = predicted;
+  r.overall = calcErrorMetrics(measured, predicted);
+  return r;
+}
+
+// Two training records and one held out, the same before and after (no effect accepted).
+Comparison makeTwoTrainComparison() {
+  Comparison c;
+  c.quantity = "knee flexion";
+  c.unit = "deg";
+  c.decimals = 2;
+  c.records = {makeRecord("normal", true, {1, 2, 3, 4}, {1, 2, 3, 5}),
+               makeRecord("slow", true, {1, 2, 3, 4}, {3, 4, 5, 6}),
+               makeRecord("fast", false, {1, 2, 3, 4}, {1, 3, 3, 4})};
+  return c;
+}
+
+// The step line prints the pooled training RMSE under the label the before/after table uses
+// for its own pooled row, with the same number; ME is defined under the table; the whiteness
+// p is printed with the level it is judged at.
+TEST(DiagnosisText, StepLineAndTablePrintThePooledTrainingRmseAndDefineMeAndTheWhitenessLevel) {
+  const Comparison c = makeTwoTrainComparison();
+  // Pooled over the 8 training samples: residuals 0 0 0 -1 and -2 -2 -2 -2.
+  const double pooledRmse = std::sqrt(17.0 / 8.0);
+  Diagnosis dg;
+  DiagnosisStep step;
+  step.currentTrainRmse = pooledRmse;
+  step.currentValidationRmse = {c.records[2].overall.rmse};
+  dg.steps.push_back(step);
+  dg.finalWhiteness.computed = true;
+  dg.finalWhiteness.q = 3.2;
+  dg.finalWhiteness.lags = 2;
+  dg.finalWhiteness.pValue = 0.2;
+  dg.whitenessLevel = 0.05;
+  dg.finalResidualWhite = true;
+  const std::string text = formatDiagnosisText(dg, c, c);
+  const std::string number = fmt("%.3f", pooledRmse);
+  EXPECT_NE(text.find("step 1: current model, knee flexion RMSE: train pooled (normal, slow) " + number + " deg, fast "),
+            std::string::npos)
+      << text;
+  const auto row = text.find("train pooled     |");
+  ASSERT_NE(row, std::string::npos) << text;
+  EXPECT_NE(text.substr(row, text.find('\n', row) - row).find(" " + number + " "), std::string::npos) << text;
+  EXPECT_NE(text.find("ME: the largest |measured - model| (maximum absolute error)"), std::string::npos) << text;
+  EXPECT_NE(text.find("p = 0.2 (white when p >= 0.05, the acceptance rule's alpha)"), std::string::npos) << text;
+  // The per-phase tables of `compare` and report.md define ME as well.
+  EXPECT_NE(formatComparisonTable(c).find("ME: the largest |measured - model|"), std::string::npos);
+}
+
+// A candidate without information: the ranking says so and gives no other reason.
+TEST(DiagnosisText, TheRankingSaysACandidateWithoutInformationHasNone) {
+  EffectScore silent;
+  silent.effect = "knee_viscous_damping";
+  silent.informative = false;
+  silent.validationRmse = {2.0};
+  silent.parameters = {{"damping_Nm_s_per_rad", 0.01, std::numeric_limits<double>::quiet_NaN(),
+                        std::numeric_limits<double>::quiet_NaN(), kNoInformation}};
+  const std::string table = formatCandidateRanking({&silent}, "deg", 2);
+  EXPECT_NE(table.find("rejected: no information in these records\n"), std::string::npos) << table;
+  EXPECT_EQ(table.find("not significant"), std::string::npos) << table;
+  // The JSON: "informative": false and a null interval.
+  Diagnosis dg;
+  DiagnosisStep step;
+  CandidateScore candidate;
+  static_cast<EffectScore&>(candidate) = silent;
+  step.candidates.push_back(candidate);
+  dg.steps.push_back(step);
+  dg.whitenessLevel = 0.05;
+  const Json j = makeDiagnosisJson(dg, Comparison{}, Comparison{});
+  ASSERT_EQ(j["candidates"].size(), 1u);
+  EXPECT_EQ(j["candidates"][0]["informative"], false);
+  EXPECT_TRUE(j["candidates"][0]["confidence_intervals"]["damping_Nm_s_per_rad"].is_null());
+  EXPECT_EQ(j["residual_whiteness_level"], 0.05);
 }
 
 }  // namespace
