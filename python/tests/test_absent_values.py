@@ -36,10 +36,11 @@ def test_ended_swing_has_its_numbers(repo):
 def test_knee_past_180_deg_is_a_run_error(repo, cli, tmp_path):
     participant = swingsim.load_participant(repo / "participants" / "winter.yaml")
     participant.initial.knee_flexion_rate_deg_s = 3000.0  # far faster than any swing's
+    participant.initial["knee_start"] = "initial"  # from these values, not the record's knee at toe-off
     with pytest.raises(swingsim.RunError, match=r"the knee flexion passed 180 deg at \d+(\.\d+)? s") as error:
         swingsim.simulate(participant)
     # the same message as the command line prints, with a non-zero exit
-    cli_run = subprocess.run([cli, "simulate", str(repo / "participants" / "winter.yaml"), "--knee-rate-deg-s", "3000",
+    cli_run = subprocess.run([cli, "simulate", str(repo / "participants" / "winter.yaml"), "--knee-start", "initial", "--knee-rate-deg-s", "3000",
                               "--out", str(tmp_path / "out")], capture_output=True, text=True)
     assert cli_run.returncode != 0
     assert str(error.value) in cli_run.stderr

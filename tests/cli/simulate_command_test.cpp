@@ -76,7 +76,7 @@ TEST(SimulateCommand, NoKneePeakPrintsNoneAndWritesNull) {
 
 TEST(SimulateCommand, KneePastItsRangeFailsWithWhatAndWhen) {
   const fs::path out = swingsim::testing::freshTempDir("swingsim_simulate_command_test", "knee-past-range");
-  const auto r = swingsim::testing::runSwingsim("simulate participants/winter.yaml --knee-rate-deg-s 3000 --out " +
+  const auto r = swingsim::testing::runSwingsim("simulate participants/winter.yaml --knee-start initial --knee-rate-deg-s 3000 --out " +
                                                 out.string() + " --json " + (out / "r.json").string());
   EXPECT_NE(r.code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("swingsim: winter at lowering 0 m: the knee flexion passed 180 deg at "));
