@@ -171,6 +171,7 @@ py::object compare(const std::string& studyPath) {
     const auto plant = loadDiagnosisPlant(study, 1);  // as the CLI's compare
     const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);
     json = makeComparisonJson(fileStem(study.baseModelPath), b.comparison);
+    json["warnings"] = plant->warnings();
   }
   return toPython(json);
 }

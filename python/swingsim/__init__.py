@@ -5,17 +5,19 @@ are the file's keys, in the file's units (``p.segments.shank.mass_kg``); `simula
 swing, `sweep` a knee-axis sweep study, `fit` a cylinder-fit study, `compare` and `diagnose` a
 diagnosis study, through the same C++ functions as the command
 line, with the GIL released while they run. Bad input raises `InputError` (a ValueError)
-with the command line's ``file:line: key: ...`` message; a failed run raises `RunError`.
+with the command line's ``file:line: key: ...`` message; a failed run raises `RunError`; a
+warning about the data is issued with `warnings.warn` as a `SwingsimWarning`.
 """
 import copy as _copy
 import os as _os
+import warnings as _warnings
 
 from swingsim import _swingsim
 from swingsim._swingsim import InputError, RunError
 
 InputError.__module__ = RunError.__module__ = "swingsim"  # shown as swingsim.InputError
 
-__all__ = ["InputError", "RunError", "Record", "Participant", "KneeModel", "SwingResult",
+__all__ = ["InputError", "RunError", "SwingsimWarning", "Record", "Participant", "KneeModel", "SwingResult",
            "load_participant", "load_knee", "simulate", "sweep", "fit", "compare", "diagnose"]
 
 
@@ -137,20 +139,32 @@ def sweep(study_path, uncertainty=0, seed=None, jobs=0):
     return _swingsim.sweep(_os.fspath(study_path), int(uncertainty), seed, int(jobs))
 
 
+class SwingsimWarning(UserWarning):
+    """A warning about the data a swingsim call read (a flipped sign, a column read without
+    the pelvis tilt, a force file left to the kinematics, ...): the same text the command
+    line prints on stderr and the JSON keeps under "warnings"."""
+
+
+def _warn_about(result):
+    for message in result.get("warnings", []) if isinstance(result, dict) else []:
+        _warnings.warn(message, SwingsimWarning, stacklevel=3)
+    return result
+
+
 def fit(study_path):
     """The Mauch cylinder fit of a cylinder-fit study, as `swingsim fit STUDY --json FILE`:
     returns what the JSON file holds (each model's coefficients and ME / RMSE / R^2 per bench
     file). No report written."""
-    return _swingsim.fit(_os.fspath(study_path))
+    return _warn_about(_swingsim.fit(_os.fspath(study_path)))
 
 
 def compare(study_path):
     """Model against measurement for a cylinder-diagnosis or swing-diagnosis study, as
     `swingsim compare STUDY --json FILE`: returns what the JSON file holds. No plots written."""
-    return _swingsim.compare(_os.fspath(study_path))
+    return _warn_about(_swingsim.compare(_os.fspath(study_path)))
 
 
 def diagnose(study_path):
     """The diagnosis of a cylinder-diagnosis or swing-diagnosis study, as `swingsim diagnose
     STUDY --json FILE`: returns what the JSON file holds. No report or model is written."""
-    return _swingsim.diagnose(_os.fspath(study_path))
+    return _warn_about(_swingsim.diagnose(_os.fspath(study_path)))

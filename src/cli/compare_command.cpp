@@ -47,8 +47,11 @@ int runCompare(const CompareArguments& args) {
   const std::optional<HeldBackComparison> moment = plant->compareHeldBack(*b.fit.model);
   for (const auto& p : writeResidualPlots(outDir, "compare", b.comparison, moment ? &*moment : nullptr))
     std::printf("plot: %s\n", p.c_str());
-  if (args.json)
-    writeJsonFile(*args.json, makeComparisonJson(fileStem(study.baseModelPath), b.comparison));
+  if (args.json) {
+    Json j = makeComparisonJson(fileStem(study.baseModelPath), b.comparison);
+    j["warnings"] = plant->warnings();
+    writeJsonFile(*args.json, j);
+  }
   return 0;
 }
 

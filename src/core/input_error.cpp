@@ -1,5 +1,6 @@
 #include "core/input_error.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -13,5 +14,7 @@ std::string formatNumber(double value) {
   }
   return buf;
 }
+
+std::string formatSeconds(double seconds) { return formatNumber(std::round(seconds * 1e4) / 1e4); }
 
 }  // namespace swingsim

@@ -22,5 +22,8 @@ class RunError : public std::runtime_error {
 
 /// Formats a double for messages: shortest representation that round-trips.
 std::string formatNumber(double value);
+/// A time for a message, s, to 0.1 ms (formatNumber of the rounded value): a time computed
+/// from events or samples would otherwise print 16 digits.
+std::string formatSeconds(double seconds);
 
 }  // namespace swingsim

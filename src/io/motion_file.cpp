@@ -376,15 +376,15 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
   const std::vector<double>* momentValues = columns.hipMoment.empty() ? nullptr : &table.column(columns.hipMoment);
   for (const std::string* label : {&columns.pelvisTilt, &columns.pelvisTx, &columns.pelvisTy})
     if (!label->empty()) table.index(*label);  // a missing label fails here, naming those there are
-  const std::string range = "the file's time runs from " + formatNumber(time.front()) + " to " + formatNumber(time.back()) + " s";
+  const std::string range = "the file's time runs from " + formatSeconds(time.front()) + " to " + formatSeconds(time.back()) + " s";
   const double toeOff = columns.toeOffTime.value_or(time.front());
   const double heelContact = columns.heelContactTime.value_or(time.back());
   if (toeOff < time.front() || toeOff >= time.back())
     throw InputError(table.path + ": toe_off_s: expected a time within the file, before its last row; " + range +
-                     " (got " + formatNumber(toeOff) + " s)");
+                     " (got " + formatSeconds(toeOff) + " s)");
   if (heelContact <= toeOff || heelContact > time.back())
-    throw InputError(table.path + ": heel_contact_s: expected a time after toe-off (" + formatNumber(toeOff) +
-                     " s) and within the file; " + range + " (got " + formatNumber(heelContact) + " s)");
+    throw InputError(table.path + ": heel_contact_s: expected a time after toe-off (" + formatSeconds(toeOff) +
+                     " s) and within the file; " + range + " (got " + formatSeconds(heelContact) + " s)");
 
   // Sample times, in file time.
   std::vector<double> at;
@@ -404,7 +404,7 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
   }
   if (at.size() < kMinSwingSamples)
     throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) + " samples between toe-off (" +
-                     formatNumber(toeOff) + " s) and heel contact (" + formatNumber(heelContact) + " s) (got " +
+                     formatSeconds(toeOff) + " s) and heel contact (" + formatSeconds(heelContact) + " s) (got " +
                      std::to_string(at.size()) + ")");
 
   const std::vector<double> knee = interpolate(time, kneeValues, at);

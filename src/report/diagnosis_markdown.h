@@ -24,6 +24,9 @@ struct DiagnosisReportInput {
   std::vector<std::string> heldWarnings;  ///< checkHeldBackComparison's warnings, written under it
 };
 
+/// The "## Warnings" section of a report (a bullet per warning), "" when there are none.
+std::string formatWarningsSection(const std::vector<std::string>& warnings);
+
 /// Writes report.md, held-back.svg (when both held-back comparisons are given) and the
 /// residual plots before-*.svg and after-*.svg into `outDir`, each atomically.
 void writeDiagnosisReport(const std::string& outDir, const DiagnosisReportInput& input);

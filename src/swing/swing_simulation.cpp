@@ -21,7 +21,7 @@ std::string describeDrive(const Participant& p) {
   const ThighKinematics& k = p.thighKinematics;
   std::string text = "measured thigh angle prescribed on the hip (" + (k.path.empty() ? std::string("given in code") : k.path) +
                      ", " + std::to_string(k.time.size()) + " samples over " +
-                     formatNumber(k.time.empty() ? 0.0 : k.time.back()) + " s";
+                     formatSeconds(k.time.empty() ? 0.0 : k.time.back()) + " s";
   try {
     const ThighMotion motion(k);
     char buf[96];
@@ -115,7 +115,7 @@ std::string TrialEnd::describe() const {
   else
     std::snprintf(buf, sizeof buf, "the knee was back in the zone for %.3f s of the settle dwell of %.3f s (knee %.1f deg at the end)",
                   dwellDone.value_or(0), settleDwell, kneeFlexion * kRadToDeg);
-  return "the measured trial ended at " + formatNumber(std::round(time * 1e4) / 1e4) + " s before the swing did: " + buf;
+  return "the measured trial ended at " + formatSeconds(time) + " s before the swing did: " + buf;
 }
 
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) { return SwingRun(setup, options).run(); }
