@@ -264,8 +264,9 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
       if (!c.validationImproves) verdict += " validation did not fall enough;";
       if (!c.physical) verdict += " wrong sign;";
     }
+    // A refit no better than the current model has LR 0; round-off may make it -1e-12 ("-0.0").
     out += fmt("  %-27s %8s %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(), num(c.trainRmse, decimals + 1).c_str(),
-               c.effectiveSamples, c.likelihoodRatio, c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
+               c.effectiveSamples, std::max(0.0, c.likelihoodRatio), c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
   }
   return out;
 }
