@@ -12,19 +12,20 @@
 #include "core/input_error.h"
 #include "core/units.h"
 #include "io/swing_events.h"
+#include "opensim_trials.h"
 
 namespace swingsim {
 namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kRoot = SWINGSIM_SOURCE_DIR;
-const std::string kWalkGrf = kRoot + "/studies/data/opensim-subject01/subject01_walk1_grf.mot";
-const std::string kWalkIk = kRoot + "/studies/data/opensim-subject01/gait2392_subject01_walk1_ik.mot";
-const std::string kRunIk = kRoot + "/tests/data/opensim-running/rajagopal_subject01_run_ik.mot";
-const std::string kRunGrf = kRoot + "/tests/data/opensim-running/rajagopal_grf_run.mot";
-const std::string kHamnerIk = kRoot + "/tests/data/opensim-running/hamner_subject02_running_ik.mot";
-const std::string kHamnerGrf = kRoot + "/tests/data/opensim-running/hamner_subject02_running_grf.mot";
+using testing::inputErrorOf;
+const std::string& kWalkGrf = testing::kWalkGrf;
+const std::string& kWalkIk = testing::kWalkIk2392;
+const std::string& kRunIk = testing::kRajagopalRunIk;
+const std::string& kRunGrf = testing::kRajagopalRunGrf;
+const std::string& kHamnerIk = testing::kHamnerRunIk;
+const std::string& kHamnerGrf = testing::kHamnerRunGrf;
 
 MotionColumns leg(const std::string& side, double kneeSign) {
   MotionColumns c;
@@ -39,15 +40,6 @@ GrfSettings force(const std::string& column, const std::string& path) {
   g.path = path;
   g.verticalForce = column;
   return g;
-}
-
-std::string inputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
 }
 
 /// The right leg of the public walk against `grf` (its right foot's column unless named).

@@ -16,17 +16,18 @@
 
 #include "core/input_error.h"
 #include "core/units.h"
+#include "opensim_trials.h"
 
 namespace swingsim {
 namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kRoot = SWINGSIM_SOURCE_DIR;
-const std::string kGrf = kRoot + "/studies/data/opensim-subject01/subject01_walk1_grf.mot";
-const std::string kIk2392 = kRoot + "/studies/data/opensim-subject01/gait2392_subject01_walk1_ik.mot";
-const std::string kIk2354 = kRoot + "/studies/data/opensim-subject01/gait2354_subject01_walk1_ik.mot";
-const std::string kIk10dof = kRoot + "/tests/data/opensim-gait10dof/subject01_walk_IK.mot";
+using testing::inputErrorOf;
+const std::string& kGrf = testing::kWalkGrf;
+const std::string& kIk2392 = testing::kWalkIk2392;
+const std::string& kIk2354 = testing::kWalkIk2354;
+const std::string& kIk10dof = testing::kWalkIk10dof;
 
 /// The brief's target for a kinematic event: within 2 frames of the force's at 60 Hz, s.
 constexpr double kTwoFrames = 2.0 / 60.0;
@@ -212,11 +213,10 @@ std::vector<double> eventDistances(const std::vector<double>& force, const std::
   return d;
 }
 
-const std::string kRun = kRoot + "/tests/data/opensim-running/";
-const std::string kRajagopalIk = kRun + "rajagopal_subject01_run_ik.mot";
-const std::string kRajagopalGrf = kRun + "rajagopal_grf_run.mot";
-const std::string kHamnerIk = kRun + "hamner_subject02_running_ik.mot";
-const std::string kHamnerGrf = kRun + "hamner_subject02_running_grf.mot";
+const std::string& kRajagopalIk = testing::kRajagopalRunIk;
+const std::string& kRajagopalGrf = testing::kRajagopalRunGrf;
+const std::string& kHamnerIk = testing::kHamnerRunIk;
+const std::string& kHamnerGrf = testing::kHamnerRunGrf;
 
 struct TrialCase {
   std::string subject, ik, grf, side, force;
@@ -340,15 +340,6 @@ TEST(SwingEvents, TheShippedWalkGivesForceSwingsThenKinematicOnes) {
     EXPECT_EQ(swings[i].toeOffSource, "kinematics");
     EXPECT_EQ(swings[i].heelContactSource, "kinematics");
   }
-}
-
-std::string inputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
 }
 
 TEST(SwingEvents, BadInputNamesFileKeyExpectedAndFound) {

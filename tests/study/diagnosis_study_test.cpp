@@ -348,11 +348,7 @@ const std::string kDemoData = std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/
 
 TEST(StudyRecordSwingNumber, ResolvesToTheSwingsFoundAndRefusesOneThatDoesNotExist) {
   const MotionTable ik = readMotionTable(kDemoData + "gait2392_subject01_walk1_ik.mot");
-  MotionColumns columns;
-  columns.hip = "hip_flexion_r";
-  columns.knee = "knee_angle_r";
-  columns.kneeSign = -1;
-  columns.pelvisTilt = "pelvis_tilt";
+  const MotionColumns columns = openSimLegColumns(ik, "r");  // hip_flexion_r, knee_angle_r x -1, pelvis_tilt
   GrfSettings grf;
   grf.path = kDemoData + "subject01_walk1_grf.mot";
   const std::vector<FoundSwing> swings = findSwings(ik, columns, grf);
@@ -392,11 +388,7 @@ TEST(StudyRecordSwingNumber, AForceFileThatFailsItsChecksIsBlamedNotTheKinematic
   // The other foot's column in a study: the message names the force file and column, and the
   // leg it matches, not "swing: expected a swing number from 1 to 0" on the IK file.
   const MotionTable ik = readMotionTable(kDemoData + "gait2392_subject01_walk1_ik.mot");
-  MotionColumns columns;
-  columns.hip = "hip_flexion_r";
-  columns.knee = "knee_angle_r";
-  columns.kneeSign = -1;
-  columns.pelvisTilt = "pelvis_tilt";
+  const MotionColumns columns = openSimLegColumns(ik, "r");  // hip_flexion_r, knee_angle_r x -1, pelvis_tilt
   GrfSettings grf;
   grf.path = kDemoData + "subject01_walk1_grf.mot";
   grf.verticalForce = "1_ground_force_vy";
