@@ -84,3 +84,47 @@ TEST(SimulateCommand, KneePastItsRangeFailsWithWhatAndWhen) {
 }
 
 }  // namespace
+
+namespace {
+
+// The case: a measured-thigh participant cut to one running swing (the public
+// Rajagopal run, `swing: 1`) starts its knee where the record does and prints the real peak,
+// never a marker number; the old start stays available (and here fails, the knee passing
+// 180 deg), and a knee rate given on top of the record's is refused with the option that
+// allows it.
+std::string writeWinterOnARunningSwing() {
+  std::string text = swingsim::testing::slurp("participants/winter.yaml");
+  const fs::path root = fs::absolute(".");
+  const std::string from = "thigh_kinematics: ../studies/data/winter-swing/swing1.csv";
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, from.size(), "thigh_kinematics: {file: " + (root / "tests/data/opensim-running/rajagopal_subject01_run_ik.mot").string() +
+                                    ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: 1, pelvis_tilt: pelvis_tilt, swing: 1}");
+  const auto model = text.find("../models/");
+  EXPECT_NE(model, std::string::npos);
+  text.replace(model, 10, (root / "models/").string());
+  return swingsim::testing::writeSuiteTempFile("swingsim_simulate_command_test", "winter-run.yaml", text);
+}
+
+TEST(SimulateCommand, AMeasuredSwingStartsWhereTheRecordDoesAndPrintsNoMarker) {
+  const std::string participant = writeWinterOnARunningSwing();
+  const fs::path out = swingsim::testing::freshTempDir("swingsim_simulate_command_test", "run");
+  const auto r = swingsim::testing::runSwingsim("simulate " + participant + " --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  // The record's knee at toe-off (Rajagopal's runner: 17.9 deg, flexing at 103 deg/s), not the participant's 46.7 deg.
+  EXPECT_THAT(r.output, HasSubstr("toe-off             knee 17.9 deg, 103.5 deg/s (the record's, smoothing-spline value and slope)"));
+  EXPECT_THAT(r.output, HasSubstr("peak knee flexion   132.9 deg at 0.3020 s"));
+  EXPECT_THAT(r.output, Not(HasSubstr("e+")));
+  EXPECT_THAT(r.output, HasSubstr("samples over 0.4406 s"));  // a time to 0.1 ms, not 16 digits
+  const auto refused = swingsim::testing::runSwingsim("simulate " + participant + " --knee-rate-deg-s 100 --out " + out.string());
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_THAT(refused.output, HasSubstr("--knee-rate-deg-s: under the measured thigh drive the knee starts at the record's"));
+  EXPECT_THAT(refused.output, HasSubstr("add --knee-start initial"));
+  // The old start (the participant's 46.7 deg at 386 deg/s) flings the knee past 180 deg, the
+  // issue's "knee reached 181 deg": now a failed run saying what and when, not a result.
+  const auto initial = swingsim::testing::runSwingsim("simulate " + participant + " --knee-start initial --out " + out.string());
+  EXPECT_EQ(initial.code, 1);
+  EXPECT_THAT(initial.output, HasSubstr("the knee flexion passed 180 deg at 0.2518 s, beyond the knee's physical range"));
+}
+
+}  // namespace
