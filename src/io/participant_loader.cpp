@@ -87,6 +87,7 @@ template <class A>
 void serialize(A& a, ToeClearanceRule& t) {
   using G = ToeClearanceRule::Gait;
   a.choice("gait", t.gait, {{"walking", G::kWalking}, {"running", G::kRunning}}, true);
+  if constexpr (A::kReading) t.gaitGiven = a.has("gait");
   if constexpr (A::kReading) t.hipRiseGiven = a.has("hip_rise_m");
   if (t.hipRiseGiven)
     a.number("hip_rise_m", t.hipRise,
@@ -213,13 +214,17 @@ namespace {
 
 /// The swing record of a .mot/.sto thigh_kinematics: with the map's columns, or a plain
 /// name read with OpenSim's right-leg labels (a missing one names the map form).
-SwingRecord readThighMotion(const ThighKinematics& t, const YamlMap& yaml) {
+SwingRecord readThighMotion(const ThighKinematics& t, const ToeClearanceRule& toeClearance, const YamlMap& yaml) {
   const MotionTable table = readMotionTable(t.path);
   if (t.columns) {
     requireNamedColumns(table, *t.columns, yaml.path() + ": thigh_kinematics");
     MotionColumns columns = *t.columns;
     if (t.swing) {
-      const FoundSwing swing = selectSwing(listSwings(table, columns, std::nullopt), table, columns.knee, *t.swing);
+      // The gait toe_clearance states picks the event rules; unstated, it is detected.
+      std::optional<Gait> gait;
+      if (toeClearance.gaitGiven)
+        gait = toeClearance.gait == ToeClearanceRule::Gait::kRunning ? Gait::kRunning : Gait::kWalking;
+      const FoundSwing swing = selectSwing(listSwings(table, columns, std::nullopt, gait), table, columns.knee, *t.swing);
       columns.toeOffTime = swing.toeOff;
       columns.heelContactTime = swing.heelContact;
     }
@@ -244,7 +249,7 @@ Participant readParticipant(YamlMap& yaml) {
   if (p.drive == SwingDrive::kThighKinematics) {
     // The hip (and the pelvis) drive; the knee gives the state at toe-off (leg/toe_off_state.h).
     ThighKinematics& t = p.thighKinematics;
-    const SwingRecord record = isMotionFile(t.path) ? readThighMotion(t, yaml) : readSwingRecord(t.path);
+    const SwingRecord record = isMotionFile(t.path) ? readThighMotion(t, p.toeClearance, yaml) : readSwingRecord(t.path);
     t.time = record.time;
     t.hipFlexion = record.hipFlexion;
     t.pelvisX = record.pelvisX;

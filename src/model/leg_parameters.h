@@ -75,6 +75,7 @@ struct SwingEndRule {
 struct ToeClearanceRule {
   enum class Gait { kWalking, kRunning };
   Gait gait = Gait::kWalking;
+  bool gaitGiven = false;  ///< `gait:` was written (it then also picks a thigh_kinematics swing's event rules)
   /// m, the hip's height above standing hip height during the swing (a user's measured
   /// pelvis, e.g. from motion capture); applied as a constant offset.
   double hipRise = 0;

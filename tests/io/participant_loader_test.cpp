@@ -259,6 +259,28 @@ TEST(ParticipantThighMotion, SwingNumberCutsTheKthSwingAndKeepsTheKnee) {
   EXPECT_THAT(thighError(map + ", swing: 4}"), HasSubstr("subject01_walk_IK.mot: swing: expected a swing number from 1 to 1"));
 }
 
+TEST(ParticipantThighMotion, TheStatedGaitPicksTheSwingsEventRules) {
+  // One running swing of the public Rajagopal run: stated running, the running rules (toe-off
+  // at the knee's extension minimum); stated walking, the walking rules, whose toe-off lands
+  // 60-120 ms later in a run, so the swing is shorter.
+  const std::string map = "{file: " + kRoot + "/tests/data/opensim-running/rajagopal_subject01_run_ik.mot, hip: hip_flexion_r, "
+                          "knee: knee_angle_r, knee_sign: 1, pelvis_tilt: pelvis_tilt, swing: 1}";
+  const auto durationAt = [&](const std::string& gait) {
+    std::string text = winterWith(map);
+    const std::string stated = "toe_clearance:\n  gait: walking";
+    const auto at = text.find(stated);
+    EXPECT_NE(at, std::string::npos);
+    text.replace(at, stated.size(), "toe_clearance:\n  gait: " + gait);
+    return parseParticipant(text, kRoot + "/participants/w.yaml").thighKinematics.time.back();
+  };
+  const MotionTable table = readMotionTable(kRoot + "/tests/data/opensim-running/rajagopal_subject01_run_ik.mot");
+  MotionColumns columns = openSimLegColumns(table, "r");
+  columns.kneeSign = 1;
+  EXPECT_NEAR(durationAt("running"), listSwings(table, columns, std::nullopt, Gait::kRunning).swings.at(0).duration(), 1e-12);
+  EXPECT_NEAR(durationAt("walking"), listSwings(table, columns, std::nullopt, Gait::kWalking).swings.at(0).duration(), 1e-12);
+  EXPECT_LT(durationAt("walking"), durationAt("running") - 0.05);
+}
+
 TEST(ParticipantThighMotion, BadInputNamesTheMapFormAndTheLabelsThere) {
   // A .mot without OpenSim's right-leg labels, given by name: the message names the map form.
   std::string rows;
