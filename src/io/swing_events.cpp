@@ -326,8 +326,8 @@ std::string checkForceFile(const MotionTable& grf, const std::vector<double>& fo
 /// The first way the force's events contradict the kinematics', "" if none: an event more
 /// than kEventToleranceS from the kinematic one of its kind (within 0.6 strides), a knee swing
 /// peak inside the force's stance, a force swing without a knee swing peak.
-std::string findContradiction(const std::vector<Event>& force, const KinematicEvents& kin, double t0, double t1,
-                              double forceStart, double forceEnd) {
+std::string findContradiction(const std::vector<Event>& force, bool loadedAtStart, const KinematicEvents& kin, double t0,
+                              double t1, double forceStart, double forceEnd) {
   const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
   for (const Event& f : force) {
     if (f.time < t0 || f.time > t1) continue;
@@ -340,9 +340,10 @@ std::string findContradiction(const std::vector<Event>& force, const KinematicEv
              ms(f.time - nearest->time) + " from the kinematics' (" + seconds(nearest->time) + "; at most " +
              ms(kEventToleranceS) + " expected)";
   }
-  // Stance from the force at a time: before the first event, the opposite of its kind.
+  // Stance from the force at a time: as at the file's first row, then as each event says (a
+  // force that never falls below the threshold, e.g. both feet on one plate, is stance throughout).
   const auto inStance = [&](double time) {
-    bool stance = !force.empty() && force.front().kind == Kind::ToeOff;
+    bool stance = loadedAtStart;
     for (const Event& f : force) {
       if (f.time > time) break;
       stance = f.kind == Kind::HeelContact;
@@ -351,7 +352,8 @@ std::string findContradiction(const std::vector<Event>& force, const KinematicEv
   };
   for (double peak : kin.peakTimes)
     if (peak > forceStart && peak < forceEnd && inStance(peak))
-      return "the knee's swing peak at " + seconds(peak) + " falls in a stance of the force";
+      return "the knee's swing peak at " + seconds(peak) + " falls in a stance of the force" +
+             (force.empty() ? " (the force never falls below the threshold: both feet on one plate, or a total force?)" : "");
   for (std::size_t i = 0; i + 1 < force.size(); ++i) {
     if (force[i].kind != Kind::ToeOff || force[i].time < t0 || force[i + 1].time > t1) continue;
     const bool hasPeak = std::any_of(kin.peakTimes.begin(), kin.peakTimes.end(),
@@ -474,12 +476,14 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
     throw InputError(grf.path + ":" + std::to_string(grf.rowLines.front()) + ": " + bad);
   }
   const std::vector<Event> forceEvents = calcGrfEvents(grf, settings);
-  if (const std::string contradiction = findContradiction(forceEvents, kin, t.front(), t.back(), g.front(), g.back());
+  const bool loadedAtStart = grf.columns[force].front() >= settings.thresholdN;
+  if (const std::string contradiction =
+          findContradiction(forceEvents, loadedAtStart, kin, t.front(), t.back(), g.front(), g.back());
       !contradiction.empty()) {
     std::string other;
     if (const auto otherLeg = otherLegColumns(kinematics, columns)) {
       const KinematicEvents otherKin = calcKinematicEvents(kinematics, *otherLeg, kin.gait.gait);
-      if (findContradiction(forceEvents, otherKin, t.front(), t.back(), g.front(), g.back()).empty())
+      if (findContradiction(forceEvents, loadedAtStart, otherKin, t.front(), t.back(), g.front(), g.back()).empty())
         other = "; they match the other leg's (" + otherLeg->hip + ", " + otherLeg->knee + "): is " + settings.verticalForce +
                 " the other foot's force? (OpenSim's example files: ground_force_vy right, 1_ground_force_vy left)";
     }

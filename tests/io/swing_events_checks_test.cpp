@@ -88,6 +88,21 @@ TEST(SwingEventChecks, AClockOffsetIsRefused) {
   EXPECT_THAT(runError(runLate), HasSubstr("expected the force's stance and swing to match the leg's kinematics"));
 }
 
+TEST(SwingEventChecks, AForceThatNeverLetsGoIsRefused) {
+  // Both feet's forces summed (a treadmill's one plate): never below 20 N while walking.
+  MotionTable total = readMotionTable(kWalkGrf);
+  std::vector<double>& right = total.columns[total.index("ground_force_vy")];
+  const std::vector<double>& left = total.column("1_ground_force_vy");
+  for (std::size_t k = 0; k < right.size(); ++k) right[k] += left[k];
+  // Inside the time both feet were on the plates (0.5-2.5 s of the 0-2.5 s file).
+  MotionTable cut = total;
+  for (auto& column : cut.columns) column.erase(column.begin(), column.begin() + 300);
+  cut.rowLines.erase(cut.rowLines.begin(), cut.rowLines.begin() + 300);
+  const std::string e = walkError(cut);
+  EXPECT_THAT(e, HasSubstr("falls in a stance of the force (the force never falls below the threshold: both feet on one plate, "
+                           "or a total force?)"));
+}
+
 TEST(SwingEventChecks, AForceInKilonewtonsNegatedOrAllZeroIsRefused) {
   const MotionTable grf = readMotionTable(kWalkGrf);
   EXPECT_THAT(walkError(scaled(grf, "ground_force_vy", 1e-3)),
