@@ -103,6 +103,11 @@ std::string writeWinterOnARunningSwing() {
   const auto model = text.find("../models/");
   EXPECT_NE(model, std::string::npos);
   text.replace(model, 10, (root / "models/").string());
+  // A runner's swing: the running event rules (Winter's file states walking).
+  const std::string walking = "toe_clearance:\n  gait: walking";
+  const auto gait = text.find(walking);
+  EXPECT_NE(gait, std::string::npos);
+  text.replace(gait, walking.size(), "toe_clearance:\n  gait: running");
   return swingsim::testing::writeSuiteTempFile("swingsim_simulate_command_test", "winter-run.yaml", text);
 }
 
