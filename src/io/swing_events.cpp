@@ -488,9 +488,11 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
                 " the other foot's force? (OpenSim's example files: ground_force_vy right, 1_ground_force_vy left)";
     }
     const std::string bad = "expected the force's stance and swing to match the leg's kinematics (" + kinematics.path + ": " +
-                            columns.hip + ", " + columns.knee + ", " + gaitName(kin.gait.gait) + " rules) (got: " +
-                            contradiction + ")" +
-                            (other.empty() ? ": another trial's force file, a clock offset, or the other foot's column?" : other);
+                            columns.hip + ", " + columns.knee + ", " + gaitName(kin.gait.gait) + " rules, " + kin.gait.basis +
+                            ") (got: " + contradiction + ")" +
+                            (other.empty() ? ": another trial's force file, a clock offset, the other foot's column, or the "
+                                             "wrong gait's rules (state it: --gait, a study's gait:)?"
+                                           : other);
     if (settings.fallbackToKinematics) return kinematicsOnly(bad);
     throw InputError(where + bad);
   }
