@@ -82,9 +82,7 @@ int runSimulate(const SimulateArguments& a) {
   Participant loaded = loadParticipant(a.participant);
   if (a.hipRateDegS) loaded.initial.hipFlexionRate = *a.hipRateDegS * kDegToRad;
   if (a.kneeStart) loaded.initial.kneeStart = *a.kneeStart == "initial" ? KneeStart::kInitial : KneeStart::kMeasured;
-  const bool kneeFromRecord = loaded.drive == SwingDrive::kThighKinematics && loaded.initial.kneeStart == KneeStart::kMeasured &&
-                              !loaded.thighKinematics.kneeFlexion.empty();
-  if (a.kneeRateDegS && kneeFromRecord)
+  if (a.kneeRateDegS && startsKneeFromRecord(loaded))
     throw InputError("--knee-rate-deg-s: under the measured thigh drive the knee starts at the record's angle and rate at "
                      "toe-off (" + loaded.thighKinematics.path + "); add --knee-start initial to start it from the participant's "
                      "initial knee_flexion_deg and this rate");
@@ -97,21 +95,18 @@ int runSimulate(const SimulateArguments& a) {
 
   std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
   std::printf("  drive               %s\n", describeDrive(p).c_str());
-  const InitialConditions start = calcToeOffState(p, nullptr);
-  if (p.drive == SwingDrive::kThighKinematics) {
-    const ThighMotion thigh(p.thighKinematics);
-    const InitialConditions measured = calcToeOffState(p, &thigh);
-    const bool fromRecord = p.initial.kneeStart == KneeStart::kMeasured && !p.thighKinematics.kneeFlexion.empty();
-    std::printf("  toe-off             knee %.1f deg, %.1f deg/s (%s); thigh %.1f deg, %.1f deg/s (the record's)\n",
-                measured.kneeFlexion * kRadToDeg, measured.kneeFlexionRate * kRadToDeg,
-                fromRecord ? "the record's, smoothing-spline value and slope"
-                           : p.thighKinematics.kneeFlexion.empty() ? "initial: the record has no knee"
-                                                                   : "initial: knee_start: initial",
-                measured.hipFlexion * kRadToDeg, measured.hipFlexionRate * kRadToDeg);
-  } else {
-    std::printf("  toe-off             knee %.1f deg, %.1f deg/s; hip %.1f deg, %.1f deg/s (initial)\n", start.kneeFlexion * kRadToDeg,
-                start.kneeFlexionRate * kRadToDeg, start.hipFlexion * kRadToDeg, start.hipFlexionRate * kRadToDeg);
-  }
+  // The state the swing started from (calcToeOffState) is the trajectory's first sample.
+  const SwingTrajectory& tr = r.trajectory;
+  const double knee = tr.kneeFlexion.front() * kRadToDeg, kneeRate = tr.kneeFlexionRate.front() * kRadToDeg;
+  const double hip = tr.hipFlexion.front() * kRadToDeg, hipRate = tr.hipFlexionRate.front() * kRadToDeg;
+  if (p.drive == SwingDrive::kThighKinematics)
+    std::printf("  toe-off             knee %.1f deg, %.1f deg/s (%s); thigh %.1f deg, %.1f deg/s (the record's)\n", knee, kneeRate,
+                startsKneeFromRecord(p)                 ? "the record's, smoothing-spline value and slope"
+                : p.thighKinematics.kneeFlexion.empty() ? "initial: the record has no knee"
+                                                        : "initial: knee_start: initial",
+                hip, hipRate);
+  else
+    std::printf("  toe-off             knee %.1f deg, %.1f deg/s; hip %.1f deg, %.1f deg/s (initial)\n", knee, kneeRate, hip, hipRate);
   if (r.trialEnd)
     printTrialEnd(*r.trialEnd, p);
   else

@@ -300,13 +300,7 @@ BoundedFitSettings modelFitSettings() {
 // The knee's toe-off rate under the thigh drive: within 20 rad/s of the measured knee's
 // first difference (Winter's toe-off knee moves at 6.7 rad/s).
 /// The record's knee at toe-off as a measured-thigh swing starts from it (leg/toe_off_state.h).
-MeasuredKneeStart measuredKneeStart(const SwingRecord& r) {
-  ThighKinematics k;
-  k.path = r.path;
-  k.time = r.time;
-  k.kneeFlexion = r.kneeFlexion;
-  return calcMeasuredKneeStart(k);
-}
+MeasuredKneeStart measuredKneeStart(const SwingRecord& r) { return calcMeasuredKneeStart(r.path, r.time, r.kneeFlexion); }
 
 BoundedParameter kneeRateParameter(const SwingRecord& r) {
   const double measured = measuredKneeStart(r).kneeFlexionRate;

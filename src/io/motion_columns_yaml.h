@@ -2,6 +2,7 @@
 // The `motion_columns:` keys (model/motion_columns.h), described once for every file that
 // names the columns of an OpenSim .mot/.sto: a study's motion_columns map and a
 // participant's thigh_kinematics map (io/yaml_archive.h for the pattern).
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -19,6 +20,12 @@ void optionalSeconds(A& a, const char* key, std::optional<double>& v, const Valu
   double x = v.value_or(0);
   a.optionalNumber(key, x, check);
   v = x;
+}
+
+/// `swing: K`: the K-th complete swing found in a .mot/.sto (a study's record, a participant's
+/// thigh_kinematics).
+inline std::string mustBeSwingNumber(double v) {
+  return v >= 1 && v <= 1000 && v == std::floor(v) ? "" : "expected a whole number from 1 (the first swing in the file)";
 }
 
 inline std::string mustBeSign(double v) { return v == 1 || v == -1 ? "" : "must be 1 or -1"; }

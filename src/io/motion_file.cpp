@@ -14,6 +14,7 @@
 #include "core/output_files.h"
 #include "core/units.h"
 #include "io/swing_record_csv.h"
+#include "numerics/metrics.h"
 
 namespace swingsim {
 
@@ -90,12 +91,6 @@ struct HeaderValue {
   std::string value;
   int line = 0;
 };
-
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 }  // namespace
 
@@ -207,7 +202,7 @@ MotionTable parseMotionTable(const std::string& text, const std::string& path) {
   if (table.rows() >= 3) {
     std::vector<double> steps;
     for (std::size_t r = 1; r < time.size(); ++r) steps.push_back(time[r] - time[r - 1]);
-    const double typical = median(steps);
+    const double typical = calcMedian(steps);
     for (std::size_t r = 1; r < time.size(); ++r)
       if (steps[r - 1] > kMaxStepOverMedian * typical)
         throw InputError(path + ":" + std::to_string(table.rowLines[r]) + ": time: a gap of " + formatNumber(steps[r - 1]) +

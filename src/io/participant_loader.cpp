@@ -137,9 +137,7 @@ void serialize(A& a, ThighKinematics& t) {
   // The K-th complete swing found in the file (events from the kinematics), as a study's record takes it.
   std::optional<double> swing;
   if (t.swing) swing = *t.swing;
-  optionalSeconds(a, "swing", swing, [](double v) {
-    return v >= 1 && v <= 1000 && v == std::floor(v) ? "" : "expected a whole number from 1 (the first swing in the file)";
-  });
+  optionalSeconds(a, "swing", swing, mustBeSwingNumber);
   if (swing) t.swing = static_cast<int>(*swing);
   a.require(!t.swing || (!columns.toeOffTime && !columns.heelContactTime), "swing",
             "either swing (the K-th swing found in the file) or toe_off_s and heel_contact_s, not both",
@@ -222,8 +220,7 @@ SwingRecord readThighMotion(const ThighKinematics& t, const ToeClearanceRule& to
     if (t.swing) {
       // The gait toe_clearance states picks the event rules; unstated, it is detected.
       std::optional<Gait> gait;
-      if (toeClearance.gaitGiven)
-        gait = toeClearance.gait == ToeClearanceRule::Gait::kRunning ? Gait::kRunning : Gait::kWalking;
+      if (toeClearance.gaitGiven) gait = toeClearance.gait;
       const FoundSwing swing = selectSwing(listSwings(table, columns, std::nullopt, gait), table, columns.knee, *t.swing);
       columns.toeOffTime = swing.toeOff;
       columns.heelContactTime = swing.heelContact;

@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/input_error.h"
+#include "core/text_format.h"
 #include "core/units.h"
+#include "numerics/metrics.h"
 
 namespace swingsim {
 
@@ -110,20 +111,11 @@ std::optional<double> medianStride(const std::vector<double>& t, const std::vect
   if (peaks.size() < 2) return std::nullopt;
   std::vector<double> strides;
   for (std::size_t i = 1; i < peaks.size(); ++i) strides.push_back(t[peaks[i]] - t[peaks[i - 1]]);
-  std::nth_element(strides.begin(), strides.begin() + static_cast<std::ptrdiff_t>(strides.size() / 2), strides.end());
-  return strides[strides.size() / 2];
+  return calcMedian(strides);
 }
 
-std::string ms(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f ms", s * 1000);
-  return buf;
-}
-std::string seconds(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4f s", s);
-  return buf;
-}
+std::string ms(double s) { return fmt("%.1f ms", s * 1000); }
+std::string seconds(double s) { return fmt("%.4f s", s); }
 
 struct GaitChoice {
   Gait gait = Gait::kWalking;
@@ -265,13 +257,19 @@ void checkThreshold(const MotionTable& grf, const GrfSettings& settings) {
                      formatNumber(settings.thresholdN) + ")");
 }
 
-/// The median step of a time column, s.
+/// The median step of a time column, s; 0 for fewer than two rows.
 double medianStep(const std::vector<double>& t) {
   std::vector<double> steps;
   for (std::size_t k = 1; k < t.size(); ++k) steps.push_back(t[k] - t[k - 1]);
-  if (steps.empty()) return 0;
-  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
-  return steps[steps.size() / 2];
+  return steps.empty() ? 0 : calcMedian(steps);
+}
+
+/// The event of `kind` in `events` nearest to `time`; nullptr if there is none.
+const Event* findNearest(const std::vector<Event>& events, Kind kind, double time) {
+  const Event* nearest = nullptr;
+  for (const Event& e : events)
+    if (e.kind == kind && (!nearest || std::abs(e.time - time) < std::abs(nearest->time - time))) nearest = &e;
+  return nearest;
 }
 
 /// A force plate's zero drifts by a few newtons; a vertical force that pulls below zero by
@@ -331,9 +329,7 @@ std::string findContradiction(const std::vector<Event>& force, bool loadedAtStar
   const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
   for (const Event& f : force) {
     if (f.time < t0 || f.time > t1) continue;
-    const Event* nearest = nullptr;
-    for (const Event& k : kin.events)
-      if (k.kind == f.kind && (!nearest || std::abs(k.time - f.time) < std::abs(nearest->time - f.time))) nearest = &k;
+    const Event* nearest = findNearest(kin.events, f.kind, f.time);
     if (!nearest || std::abs(nearest->time - f.time) > 0.6 * stride) continue;  // the kinematics see no such event here
     if (std::abs(nearest->time - f.time) > kEventToleranceS)
       return std::string(f.kind == Kind::ToeOff ? "toe-off" : "heel contact") + " at " + seconds(f.time) + " is " +
@@ -393,21 +389,17 @@ std::vector<FoundSwing> mergeEvents(const std::vector<Event>& force, const Kinem
   for (const Event& e : force)
     if (e.time >= t0 && e.time <= t1) events.push_back(e);
   for (const Event& e : kin.events) {
-    const bool matched = std::any_of(force.begin(), force.end(), [&](const Event& f) {
-      return f.kind == e.kind && std::abs(f.time - e.time) <= kEventToleranceS;
-    });
+    const Event* f = findNearest(force, e.kind, e.time);
+    const bool matched = f && std::abs(f->time - e.time) <= kEventToleranceS;
     const bool decidedByForce = e.time > forceStart + kEventToleranceS && e.time < forceEnd - kEventToleranceS;
     if (!matched && !decidedByForce) events.push_back(e);
   }
   std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.time < b.time; });
   std::vector<FoundSwing> swings = pairSwings(events);
   const auto disagreement = [&](double time, Kind kind, const std::string& source) -> std::optional<double> {
-    if (source != "grf") return std::nullopt;
-    std::optional<double> best;
-    for (const Event& k : kin.events)
-      if (k.kind == kind && std::abs(k.time - time) <= kEventToleranceS && (!best || std::abs(time - k.time) < std::abs(*best)))
-        best = time - k.time;
-    return best;
+    const Event* k = findNearest(kin.events, kind, time);
+    if (source != "grf" || !k || std::abs(time - k->time) > kEventToleranceS) return std::nullopt;
+    return time - k->time;
   };
   for (FoundSwing& s : swings) {
     s.toeOffDisagreement = disagreement(s.toeOff, Kind::ToeOff, s.toeOffSource);
@@ -507,11 +499,8 @@ FoundSwing selectSwing(const SwingList& list, const MotionTable& table, const st
                      "); `swingsim swings FILE` lists what it finds");
   if (k < 1 || static_cast<std::size_t>(k) > swings.size()) {
     std::string found;
-    char buf[64];
-    for (std::size_t i = 0; i < swings.size(); ++i) {
-      std::snprintf(buf, sizeof buf, "%zu: %.4f-%.4f s", i + 1, swings[i].toeOff, swings[i].heelContact);
-      found += (i ? ", " : "") + std::string(buf);
-    }
+    for (std::size_t i = 0; i < swings.size(); ++i)
+      found += (i ? ", " : "") + fmt("%zu: %.4f-%.4f s", i + 1, swings[i].toeOff, swings[i].heelContact);
     throw InputError(table.path + ": swing: expected a swing number from 1 to " + std::to_string(swings.size()) +
                      " (the complete swings found: " + found + "; `swingsim swings FILE` lists them) (got " + std::to_string(k) + ")");
   }

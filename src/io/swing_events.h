@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "io/motion_file.h"
+#include "model/leg_parameters.h"
 
 namespace swingsim {
 
-/// The gait a recording holds: the kinematic event rules differ (docs/swing-events.md).
-enum class Gait { kWalking, kRunning };
-/// "walking" or "running".
+/// "walking" or "running" (Gait: model/leg_parameters.h; the kinematic event rules differ,
+/// docs/swing-events.md).
 const char* gaitName(Gait gait);
 
 /// How to read one foot's vertical force in an OpenSim GRF .mot (the study's `grf:` map).

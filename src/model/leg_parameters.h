@@ -67,13 +67,17 @@ struct SwingEndRule {
   double settleDwell = 0.15;
 };
 
+/// The gait a swing belongs to: where the toe clearance is measured against, and which
+/// kinematic rules find a recording's swing events (io/swing_events.h).
+enum class Gait { kWalking, kRunning };
+
 /// What the toe clearance is measured against. The foot's height is computed with the hip at
 /// standing hip height (0.530 x height) plus `hipRise`; whether a negative clearance means
 /// the foot strikes the ground depends on the gait: in walking the swing happens over the
 /// stance leg with the hip near standing height, in running the body is in flight for much
 /// of the swing and the hip is higher by an amount nobody here measured.
 struct ToeClearanceRule {
-  enum class Gait { kWalking, kRunning };
+  using Gait = swingsim::Gait;
   Gait gait = Gait::kWalking;
   bool gaitGiven = false;  ///< `gait:` was written (it then also picks a thigh_kinematics swing's event rules)
   /// m, the hip's height above standing hip height during the swing (a user's measured

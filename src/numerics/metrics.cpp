@@ -67,4 +67,11 @@ double calcCorrelation(const std::vector<double>& a, const std::vector<double>& 
   return sab / std::sqrt(saa * sbb);
 }
 
+double calcMedian(std::vector<double> values) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+
 }  // namespace swingsim

@@ -26,6 +26,10 @@ ErrorMetrics calcErrorMetrics(const std::vector<double>& measured, const std::ve
 ErrorMetrics calcErrorMetrics(const std::vector<double>& measured, const std::vector<double>& predicted,
                               const std::vector<bool>& mask);
 
+/// The median of a series (the upper of the two middle values for an even count); NaN if it
+/// is empty.
+double calcMedian(std::vector<double> values);
+
 /// Root mean square of a series of errors (residuals); NaN if it is empty.
 double calcRms(const std::vector<double>& errors);
 

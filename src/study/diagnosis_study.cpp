@@ -56,8 +56,6 @@ bool isPlainRecord(const StudyRecord& r) {
   return r.name.empty() && !r.toeOffTime && !r.heelContactTime && !r.swing && r.inverseDynamicsPath.empty();
 }
 
-std::string mustBeSwingNumber(double v) { return v >= 1 && v <= 1000 && v == std::floor(v) ? "" : "expected a whole number from 1 (the first swing in the file)"; }
-
 }  // namespace
 
 /// One train/validate entry in its map form: {name, file, toe_off_s, heel_contact_s | swing, inverse_dynamics}.

@@ -42,7 +42,8 @@ constexpr double kAngleTol = 0.01 * kDegToRad;
 constexpr double kRateTol = 1 * kDegToRad;
 
 TEST(ToeOffState, TheMeasuredKneeIsTheSplinesValueAndSlopeAtToeOff) {
-  const MeasuredKneeStart start = calcMeasuredKneeStart(smoothRecord());
+  const ThighKinematics k = smoothRecord();
+  const MeasuredKneeStart start = calcMeasuredKneeStart(k.path, k.time, k.kneeFlexion);
   EXPECT_NEAR(start.kneeFlexion, knee(0), kAngleTol);
   EXPECT_NEAR(start.kneeFlexionRate, kKneeRateAtToeOff, kRateTol);
 }
@@ -78,7 +79,8 @@ TEST(ToeOffState, ASimulatedMeasuredSwingsFirstSampleIsTheRecordsKnee) {
   SwingOptions options;
   options.requireSwingEnd = false;
   const SwingResult measured = simulateSwing(makeSwingSetup(p, knee), options);
-  const MeasuredKneeStart record = calcMeasuredKneeStart(p.thighKinematics);
+  const ThighKinematics& k = p.thighKinematics;
+  const MeasuredKneeStart record = calcMeasuredKneeStart(k.path, k.time, k.kneeFlexion);
   EXPECT_NEAR(measured.trajectory.kneeFlexion.front(), record.kneeFlexion, 1e-9);
   EXPECT_NEAR(measured.trajectory.kneeFlexionRate.front(), record.kneeFlexionRate, 1e-9);
   EXPECT_GT(record.kneeFlexion, 30 * kDegToRad);  // Winter's knee at toe-off: 46.7 deg

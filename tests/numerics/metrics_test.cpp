@@ -8,6 +8,12 @@
 namespace swingsim {
 namespace {
 
+TEST(Median, OddEvenAndEmpty) {
+  EXPECT_EQ(calcMedian({3, 1, 2}), 2);
+  EXPECT_EQ(calcMedian({4, 1, 3, 2}), 3);  // the upper of the two middle values
+  EXPECT_TRUE(std::isnan(calcMedian({})));
+}
+
 TEST(ErrorMetrics, MatchHandComputedValues) {
   // measured mean 2.5, SS_tot = 5; residuals 0, 1, -1, 2: SS_res = 6.
   const auto m = calcErrorMetrics({1, 2, 3, 4}, {1, 1, 4, 2});

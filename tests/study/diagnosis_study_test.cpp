@@ -3,7 +3,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <unistd.h>
 
 #include <cmath>
@@ -15,6 +14,7 @@
 #include "core/input_error.h"
 #include "core/units.h"
 #include "io/yaml_reader.h"
+#include "../io/opensim_trials.h"
 
 namespace swingsim {
 namespace {
@@ -374,16 +374,6 @@ TEST(StudyRecordSwingNumber, ResolvesToTheSwingsFoundAndRefusesOneThatDoesNotExi
   }
 }
 
-/// The InputError message of `f`, "" if none.
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(StudyRecordSwingNumber, AForceFileThatFailsItsChecksIsBlamedNotTheKinematics) {
   // The other foot's column in a study: the message names the force file and column, and the
   // leg it matches, not "swing: expected a swing number from 1 to 0" on the IK file.
@@ -395,7 +385,7 @@ TEST(StudyRecordSwingNumber, AForceFileThatFailsItsChecksIsBlamedNotTheKinematic
   StudyRecord entry;
   entry.path = ik.path;
   entry.swing = 1;
-  EXPECT_THAT(errorOf([&] { resolveRecordTimes(entry, columns, ik, grf); }),
+  EXPECT_THAT(swingsim::testing::inputErrorOf([&] { resolveRecordTimes(entry, columns, ik, grf); }),
               HasSubstr("subject01_walk1_grf.mot: 1_ground_force_vy: expected the force's stance and swing to match the leg's "
                         "kinematics"));
   // Asked for, the kinematics give the events and the study's notes say so.
@@ -409,7 +399,7 @@ TEST(StudyRecordSwingNumber, AForceFileThatFailsItsChecksIsBlamedNotTheKinematic
   MotionTable stance = ik;
   for (auto& column : stance.columns) column.resize(20);  // 0.5-0.82 s: the right leg in stance
   stance.rowLines.resize(20);
-  EXPECT_THAT(errorOf([&] { resolveRecordTimes(entry, columns, stance, std::nullopt); }),
+  EXPECT_THAT(swingsim::testing::inputErrorOf([&] { resolveRecordTimes(entry, columns, stance, std::nullopt); }),
               HasSubstr("swing: 1: the file holds no complete swing of knee_angle_r"));
 }
 
