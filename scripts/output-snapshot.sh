@@ -13,13 +13,15 @@ rm -rf "$snap"
 mkdir -p "$snap"
 snap="$(cd "$snap" && pwd)"
 
-# run NAME ARGS...: stdout, stderr (with the snapshot folder's path blanked) and exit code.
+# run NAME ARGS...: stdout, stderr and exit code, with the snapshot folder's path blanked and the
+# progress lines (which count what finished by a time, so vary run to run) left out.
 run() {
   local name="$1"; shift
   local rc=0
   "$bin" "$@" >"$snap/$name.stdout" 2>"$snap/$name.stderr" || rc=$?
   echo "$rc" >"$snap/$name.rc"
   sed -i "s|$snap|SNAP|g" "$snap/$name.stdout" "$snap/$name.stderr"
+  sed -i -E '/\([0-9]+ %\)/d' "$snap/$name.stderr"
 }
 
 for s in burkett2004 burkett2004-mauch burkett2004-measured burkett2004-proportional-com; do
