@@ -129,20 +129,20 @@ py::object sweep(const std::string& studyPath, int uncertainty, std::optional<in
   volatile bool stop = false;
   // Called from the thread that runs the sweep (this one): Python's signal handlers run
   // there, so Ctrl-C sets the stop flag.
-  auto checkSignals = [&stop](int, int) {
+  auto checkSignals = [&stop] {
     py::gil_scoped_acquire acquire;
     if (PyErr_CheckSignals() != 0) stop = true;
   };
+  SweepRunControl control;
+  control.stop = &stop;
+  control.poll = checkSignals;
   std::string json;
   {
     py::gil_scoped_release release;
-    const std::vector<ParticipantCalibration> calibrations = calibrateSweepParticipants(study);  // none if kStored
-    SweepResults results = runSweep(study, jobs, checkSignals, &stop);
-    if (!stop) completeSweepResults(study, results, calibrations, jobs);
-    std::optional<UncertaintyResults> uncertaintyResults;
-    if (!stop && study.uncertaintySamples > 0)
-      uncertaintyResults = runSweepUncertainty(study, makeUncertaintyOptions(study), jobs, checkSignals, &stop);
-    if (!stop) json = formatSweepJson(results, uncertaintyResults ? &*uncertaintyResults : nullptr);
+    SweepRun run(std::move(study), jobs, control);
+    run.calibrate();
+    run.planUncertainty("");  // no partial file: a stopped analysis raises KeyboardInterrupt
+    if (run.sweep() && run.runUncertainty()) json = run.formatJson();
   }
   if (stop) throw py::error_already_set();
   return toPython(Json::parse(json));

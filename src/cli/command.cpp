@@ -25,14 +25,6 @@ CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out) {
   return addTextOption(sub, "--out", out, "output folder (default out/<study name>/)", "DIR");
 }
 
-std::string chooseStudyOutputFolder(const std::optional<std::string>& out, const std::string& studyName,
-                                    const std::string& studyPath) {
-  if (out) return *out;
-  const std::string folder = "out/" + makeSafeFileStem(studyName);
-  checkOutputFolder(folder, "the default output folder of " + studyPath + " (no --out)");
-  return folder;
-}
-
 std::string formatCommandLine(const CLI::App& command) {
   std::string positionals, options;
   for (const CLI::Option* o : command.get_options()) {

@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 
+#include "core/output_paths.h"  // chooseStudyOutputFolder
+
 namespace swingsim::cli {
 
 /// A declared subcommand and its work. `run` returns the exit code; it throws InputError,
@@ -42,11 +44,6 @@ CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json);
 /// `--out DIR` of the study commands: default out/<study name>/.
 CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out);
 
-/// The output folder of a study command: `out` (--out, checked while parsing), else
-/// out/<safe study name>/, checked here (checkOutputFolder) so an unwritable or over-long
-/// folder fails before any work. Throws InputError naming where the path came from.
-std::string chooseStudyOutputFolder(const std::optional<std::string>& out, const std::string& studyName,
-                                    const std::string& studyPath);
 
 /// The command line as parsed, for reports: "swingsim fit STUDY.yaml --out DIR --json FILE"
 /// (the positionals, then each option given, in the order the command declares them).

@@ -14,14 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "cli/cohort_steps.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/sweep_steps.h"
 #include "core/input_error.h"
 #include "core/output_paths.h"
-#include "report/sweep_report.h"
 #include "study/cohort_results_file.h"
+#include "study/cohort_sweep_run.h"
+#include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
 
@@ -37,7 +37,10 @@ struct MergeArguments {
 
 int runMergeCommand(const MergeArguments& a) {
   // Shards of a cohort study (docs/cohort.md) hold whole participants' results.
-  if (isCohortResultsFile(a.shards.front())) return runCohortMerge(a.shards, a.out, a.json);
+  if (isCohortResultsFile(a.shards.front())) {
+    InterruptScope interrupts;
+    return runCohortMerge(a.shards, a.out, a.json, makeTerminalControl());
+  }
   // Every shard is read and checked (missing, duplicate, partial, another analysis) before any
   // swing runs or any file is written.
   checkDistinctFiles(a.shards, "give each shard file once");
@@ -64,26 +67,16 @@ int runMergeCommand(const MergeArguments& a) {
   study.uncertaintySeed = static_cast<int>(head.run.seed);
   const std::string out = chooseSweepOutputFolder(study, a.out);
   announceSweepGrid(study, static_cast<std::uint64_t>(a.maxSwings), a.jobs);  // before any work
-  const std::vector<ParticipantCalibration> calibrations = calibrateForSweep(study);
-  const UncertaintyPlan plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
-  const UncertaintyRunIdentity now = makeUncertaintyRunIdentity(study, plan, SWINGSIM_VERSION);
-  for (const auto& s : shards) checkSameUncertaintyRun(now, s, "the study " + study.path + " as it is now");
-  std::fprintf(stderr, "merge %s: %zu shards, %zu swings of %d samples, seed %llu\n", study.name.c_str(), shards.size(),
-               plan.swingCount, study.uncertaintySamples, static_cast<unsigned long long>(head.run.seed));
-
-  catchInterrupts();
-  const SweepResults results = runPlainSweep(study, calibrations, a.jobs);
-  if (gInterrupted) {
-    std::fprintf(stderr, "swingsim: interrupted during the plain sweep; nothing in %s was written\n", out.c_str());
-    restoreInterrupts();
-    return 1;
-  }
-  std::printf("%s", formatSweepTables(study, results).c_str());
-  const UncertaintyResults uncertainty = assembleUncertaintyResults(study, plan, times);
-  std::printf("%s", formatUncertaintyTables(uncertainty).c_str());
-  const int code = writeSweepOutputs(study, results, &uncertainty, out, a.json);
-  restoreInterrupts();
-  return code;
+  SweepRun run(std::move(study), a.jobs, makeTerminalControl());
+  run.calibrate();
+  run.planUncertainty("");
+  const SweepStudy& ran = run.study();
+  for (const auto& s : shards) checkSameUncertaintyRun(run.uncertaintyRun(), s, "the study " + ran.path + " as it is now");
+  std::fprintf(stderr, "merge %s: %zu shards, %zu swings of %d samples, seed %llu\n", ran.name.c_str(), shards.size(),
+               run.uncertaintyRun().swingCount, ran.uncertaintySamples, static_cast<unsigned long long>(head.run.seed));
+  run.takeUncertaintySwings(times);
+  InterruptScope interrupts;
+  return run.runToOutputs(out, a.json);
 }
 
 }  // namespace

@@ -1,24 +1,19 @@
 // swingsim sweep STUDY.yaml [--out DIR] [--json FILE] [--jobs N] [--add-mass KG@METRES]
 //                          [--uncertainty N [--seed S] [--shard K/N]]
 
-#include <cstdio>
+#include <cstdint>
 #include <optional>
 #include <string>
-#include <tuple>
 
-#include "cli/cohort_steps.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/sweep_steps.h"
 #include "core/input_error.h"
-#include "core/output_files.h"
-#include "core/progress_reporter.h"
-#include "report/sweep_report.h"
 #include "study/cohort_study.h"
+#include "study/cohort_sweep_run.h"
+#include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
-#include "sweep/sweep.h"
-#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim::cli {
 namespace {
@@ -56,41 +51,16 @@ struct SweepArguments {
   long long maxSwings = static_cast<long long>(kDefaultMaxSweepSwings);  ///< --max-swings
 };
 
-/// `--shard K/N`: this shard's slice of the uncertainty swings only, into its shard file.
-int runShard(const SweepStudy& study, const ShardSpec& shard, const std::string& out, int jobs) {
-  const UncertaintyPlan plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
-  UncertaintySwingsFile file;
-  file.run = makeUncertaintyRunIdentity(study, plan, SWINGSIM_VERSION);
-  file.sharded = true;
-  file.shardIndex = shard.index;
-  file.shardCount = shard.count;
-  std::tie(file.first, file.last) = calcShardSwings(plan.swingCount, shard.index, shard.count);
-  const std::string path = out + "/" + uncertaintyShardFileName(shard.index, shard.count);
-  const std::string label = "uncertainty " + study.name + " shard " + std::to_string(shard.index) + "/" +
-                            std::to_string(shard.count);
-  std::fprintf(stderr, "%s: %zu swings, %zu to %zu of the %zu (%d samples, seed %d, and each assumption at both ends)\n",
-               label.c_str(), file.last - file.first, file.first, file.last - 1, plan.swingCount, study.uncertaintySamples,
-               study.uncertaintySeed);
-  readResumableSlice(file, path);  // another analysis's file there: refused before any swing
-  catchInterrupts();
-  const bool complete = runUncertaintySlice(plan, file, path, label, jobs);
-  restoreInterrupts();
-  if (!complete) return 1;
-  writeFileAtomic(path, formatUncertaintySwingsJson(file));
-  std::printf("shard %d/%d of %s: %zu swings -> %s\n(when all %d have run: swingsim merge %s/uncertainty-shard-*-of-%d.json)\n",
-              shard.index, shard.count, study.name.c_str(), file.last - file.first, path.c_str(), shard.count,
-              out.c_str(), shard.count);
-  return 0;
-}
-
 int runSweepCommand(const SweepArguments& a) {
   if (isCohortStudyFile(a.study)) {
     // A cohort study: drawn participants, each calibrated and swept (docs/cohort.md).
     if (a.added || a.uncertaintySamples || a.seed)
       throw InputError(a.study + ": kind: cohort-sweep: expected no --add-mass, --uncertainty or --seed (the study's "
                        "seed draws its participants), found " + (a.added ? "--add-mass" : a.seed ? "--seed" : "--uncertainty"));
+    InterruptScope interrupts;
     return runCohortSweep({a.study, a.out, a.json, a.jobs, a.shard.has_value(), a.shard ? a.shard->index : 0,
-                           a.shard ? a.shard->count : 1});
+                           a.shard ? a.shard->count : 1},
+                          makeTerminalControl());
   }
   SweepStudy study = loadSweepStudy(a.study);
   if (a.added) {
@@ -110,67 +80,15 @@ int runSweepCommand(const SweepArguments& a) {
                      std::to_string(a.shard->count) + " alone)");
   const std::string out = chooseSweepOutputFolder(study, a.out);
   if (!a.shard) announceSweepGrid(study, static_cast<std::uint64_t>(a.maxSwings), a.jobs);  // before any work
-  const std::vector<ParticipantCalibration> calibrations = calibrateForSweep(study);
-  if (a.shard) return runShard(study, *a.shard, out, a.jobs);
-
-  // How sure is the optimum: after the plain sweep, over all its swings with one bar; an
-  // interrupted analysis keeps its finished swings in uncertainty.partial.json, and the same
-  // command resumes from there. A partial file of another analysis is refused before anything runs.
-  std::optional<UncertaintyPlan> plan;
-  UncertaintySwingsFile file;
-  const std::string partialPath = out + "/" + uncertaintyPartialFileName();
-  if (study.uncertaintySamples > 0) {
-    plan = planSweepUncertainty(study, makeUncertaintyOptions(study));
-    file.run = makeUncertaintyRunIdentity(study, *plan, SWINGSIM_VERSION);
-    file.first = 0;
-    file.last = plan->swingCount;
-    readResumableSlice(file, partialPath);
-  }
-
-  catchInterrupts();
-  const SweepResults results = runPlainSweep(study, calibrations, a.jobs);
-  std::printf("%s", formatSweepTables(study, results).c_str());
-  std::optional<UncertaintyResults> uncertainty;
-  if (plan && !gInterrupted) {
-    std::fprintf(stderr, "uncertainty %s: %d samples, seed %d, and each assumption at both ends of its range "
-                 "(docs/uncertainty.md)\n", study.name.c_str(), study.uncertaintySamples, study.uncertaintySeed);
-    if (!runUncertaintySlice(*plan, file, partialPath, "uncertainty " + study.name, a.jobs)) {
-      // The sweep itself finished, but a report without the analysis asked for would look complete.
-      std::fprintf(stderr, "swingsim: no report, CSV or JSON in %s was written\n", out.c_str());
-      restoreInterrupts();
-      return 1;
-    }
-    UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan->swingCount);
-    copyFinishedSwings(file, times);
-    uncertainty = assembleUncertaintyResults(study, *plan, times);
-    std::printf("%s", formatUncertaintyTables(*uncertainty).c_str());
-  }
-  if (gInterrupted) {
-    // Keep what finished, readable, under a name that cannot be mistaken for a result.
-    writeFileAtomic(out + "/sweep.partial.csv", formatSweepCsv(results));
-    std::string missing;
-    char point[96];
-    for (const auto& ps : results.participants) {
-      for (const auto* list : {&ps.points, &ps.massPoints}) {
-        for (const auto& pt : *list) {
-          if (pt.ran) continue;
-          if (pt.added.mass > 0)
-            std::snprintf(point, sizeof point, " %s@%.3f+%gkg@%.2fm", ps.name.c_str(), pt.lowering, pt.added.mass,
-                          pt.added.distanceBelowKnee);
-          else
-            std::snprintf(point, sizeof point, " %s@%.3f", ps.name.c_str(), pt.lowering);
-          missing += point;
-        }
-      }
-    }
-    std::fprintf(stderr, "swingsim: interrupted; finished rows are in %s/sweep.partial.csv; not run:%s\n", out.c_str(),
-                 missing.c_str());
-    restoreInterrupts();
-    return 1;
-  }
-  const int code = writeSweepOutputs(study, results, uncertainty ? &*uncertainty : nullptr, out, a.json);
-  restoreInterrupts();
-  return code;
+  SweepRun run(std::move(study), a.jobs, makeTerminalControl());
+  run.calibrate();
+  // An interrupted run keeps its finished swings (a shard: in its shard file; the analysis: in
+  // uncertainty.partial.json), and the same command resumes from there.
+  InterruptScope interrupts;
+  if (a.shard) return run.runShard(a.shard->index, a.shard->count, out);
+  // A partial file of another analysis is refused before anything runs.
+  run.planUncertainty(out + "/" + uncertaintyPartialFileName());
+  return run.runToOutputs(out, a.json);
 }
 
 }  // namespace

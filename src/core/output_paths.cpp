@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/input_error.h"
+#include "core/output_files.h"
 #include "core/special_files.h"
 
 namespace swingsim {
@@ -86,6 +87,14 @@ void checkDistinctFiles(const std::vector<std::string>& paths, const std::string
       throw InputError(paths[i] + ": the same file as " + paths[it->second] + " (arguments " +
                        std::to_string(it->second + 1) + " and " + std::to_string(i + 1) + "): " + why);
   }
+}
+
+std::string chooseStudyOutputFolder(const std::optional<std::string>& out, const std::string& studyName,
+                                    const std::string& studyPath) {
+  if (out) return *out;
+  const std::string folder = "out/" + makeSafeFileStem(studyName);
+  checkOutputFolder(folder, "the default output folder of " + studyPath + " (no --out)");
+  return folder;
 }
 
 }  // namespace swingsim

@@ -3,6 +3,7 @@
 // goes"): a place that cannot be written, or a path too long for the file system, must fail
 // at once, not after a run whose results then cannot be kept.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,5 +33,11 @@ void checkOutputFolder(const std::string& path, const std::string& where);
 /// `a.yaml`, `./a.yaml` and a link to it count as one): "SECOND: the same file as FIRST
 /// (arguments I and J): `why`". Paths that do not exist are left to their reader. Linear time.
 void checkDistinctFiles(const std::vector<std::string>& paths, const std::string& why);
+
+/// The output folder of a study command: `out` (--out, checked while parsing), else
+/// out/<safe study name>/, checked here (checkOutputFolder) so an unwritable or over-long
+/// folder fails before any work. Throws InputError naming where the path came from.
+std::string chooseStudyOutputFolder(const std::optional<std::string>& out, const std::string& studyName,
+                                    const std::string& studyPath);
 
 }  // namespace swingsim

@@ -1,10 +1,9 @@
-#include "cli/cohort_steps.h"
+#include "study/cohort_sweep_run.h"
 
 #include <cstdio>
 #include <filesystem>
 #include <tuple>
 
-#include "cli/sweep_steps.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
@@ -13,7 +12,7 @@
 #include "study/cohort_study.h"
 #include "sweep/cohort_run.h"
 
-namespace swingsim::cli {
+namespace swingsim {
 
 namespace {
 
@@ -36,7 +35,7 @@ std::size_t resumeFrom(const std::string& path, CohortResultsFile& file) {
 /// Runs the participants of `file`'s slice that have not run; false if interrupted (then
 /// the finished ones are written to `path`, marked partial).
 bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& path, const std::string& label,
-              int jobs) {
+              int jobs, const SweepRunControl& run) {
   const std::size_t resumed = resumeFrom(path, file);
   const std::size_t slice = file.last - file.first;
   std::vector<CohortParticipantResult> results(static_cast<std::size_t>(cohort.count));
@@ -50,14 +49,14 @@ bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& 
       progress.note("resuming from " + path + ": " + std::to_string(resumed) + " of " + std::to_string(slice) +
                     " participants done by an earlier run");
     CohortRunControl control;
-    control.stopFlag = &gInterrupted;
-    control.stopAfterParticipants = stopAfterSwingsForTests();
+    control.stopFlag = run.stop;
+    control.stopAfterParticipants = run.stopAfterSwings;
     control.progress = [&](int done, int) { progress.update(static_cast<int>(resumed) + done, static_cast<int>(slice)); };
     complete = runCohortParticipants(cohort, file.first, file.last, results, jobs, control);
   }
   std::copy(results.begin() + static_cast<std::ptrdiff_t>(file.first),
             results.begin() + static_cast<std::ptrdiff_t>(file.last), file.results.begin());
-  if (complete && !gInterrupted) return true;
+  if (complete && !run.stopped()) return true;
   writeFileAtomic(path, formatCohortResultsJson(file));
   std::fprintf(stderr, "swingsim: interrupted; %zu of %zu participants are kept in %s; run the same command again to resume\n",
                file.countFinished(), slice, path.c_str());
@@ -66,13 +65,14 @@ bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& 
 
 /// The report, cohort.csv, figures and --json, staged and moved into `out` together.
 int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
-                       const std::string& out, const std::optional<std::string>& json) {
+                       const std::string& out, const std::optional<std::string>& json,
+                       const SweepRunControl& control) {
   const CohortSummary summary = summarizeCohort(cohort, results);
   std::printf("%s", formatCohortSummary(cohort, summary).c_str());
   StagedOutput staged(out);
   for (const auto& [name, contents] : makeCohortReport(cohort, results, summary)) staged.add(name, contents);
   if (json) staged.addBeside(*json, formatCohortJson(cohort, results, summary));
-  if (gInterrupted) {
+  if (control.stopped()) {
     staged.discard();
     std::fprintf(stderr, "swingsim: interrupted while writing the report; nothing in %s was changed\n", out.c_str());
     return 1;
@@ -84,7 +84,7 @@ int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipant
 
 }  // namespace
 
-int runCohortSweep(const CohortSweepArguments& a) {
+int runCohortSweep(const CohortSweepArguments& a, const SweepRunControl& control) {
   const Cohort cohort = loadCohortStudy(a.study);
   const std::string out = chooseSweepOutputFolder(cohort.study, a.out);
   CohortResultsFile file;
@@ -102,27 +102,19 @@ int runCohortSweep(const CohortSweepArguments& a) {
                "lowering sweep\n", label.c_str(), file.first + 1, file.last, cohort.count,
                static_cast<unsigned long long>(cohort.seed));
   makeDirectories(out);
-  catchInterrupts();
-  const bool complete = runSlice(cohort, file, path, label, a.jobs);
-  if (!complete) {
-    restoreInterrupts();
-    return 1;
-  }
+  if (!runSlice(cohort, file, path, label, a.jobs, control)) return 1;
   if (a.sharded) {
     writeFileAtomic(path, formatCohortResultsJson(file));
-    restoreInterrupts();
     std::printf("shard %d/%d of %s: %zu participants -> %s\n(when all %d have run: swingsim merge %s/cohort-shard-*-of-%d.json)\n",
                 a.shardIndex, a.shardCount, cohort.study.name.c_str(), file.last - file.first, path.c_str(), a.shardCount,
                 out.c_str(), a.shardCount);
     return 0;
   }
-  const int code = writeCohortOutputs(cohort, file.results, out, a.json);
-  restoreInterrupts();
-  return code;
+  return writeCohortOutputs(cohort, file.results, out, a.json, control);
 }
 
 int runCohortMerge(const std::vector<std::string>& shardFiles, const std::optional<std::string>& out,
-                   const std::optional<std::string>& json) {
+                   const std::optional<std::string>& json, const SweepRunControl& control) {
   // Every shard is read and checked before anything is written.
   std::vector<CohortResultsFile> shards;
   for (const auto& path : shardFiles) shards.push_back(readCohortResultsFile(path));
@@ -133,10 +125,7 @@ int runCohortMerge(const std::vector<std::string>& shardFiles, const std::option
   for (const auto& s : shards) checkSameCohortRun(now, s, "the study " + cohort.study.path + " as it is now");
   std::fprintf(stderr, "merge %s: %zu shards, %d participants, seed %llu\n", cohort.study.name.c_str(), shards.size(),
                cohort.count, static_cast<unsigned long long>(cohort.seed));
-  catchInterrupts();
-  const int code = writeCohortOutputs(cohort, results, chooseSweepOutputFolder(cohort.study, out), json);
-  restoreInterrupts();
-  return code;
+  return writeCohortOutputs(cohort, results, chooseSweepOutputFolder(cohort.study, out), json, control);
 }
 
-}  // namespace swingsim::cli
+}  // namespace swingsim
