@@ -37,10 +37,10 @@ SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps, const ParticipantUncerta
                  svgPaletteColor(0));
   plot.addLine(x, y, "this model", svgPaletteColor(0), 2.0);
   double xMax = x.empty() ? 0.2 : x.back();
-  if (const PublishedParticipant* pub = findPublished(ps.name))
+  if (const PublishedParticipant* pub = ps.published)
     for (const auto& row : pub->table4) xMax = std::max(xMax, row.lowering);
   plot.setXRange(-0.005, xMax + 0.01);
-  if (const PublishedParticipant* pub = findPublished(ps.name)) {
+  if (const PublishedParticipant* pub = ps.published) {
     std::vector<double> px, pm, pp;
     for (const auto& row : pub->table4) {
       px.push_back(row.lowering);

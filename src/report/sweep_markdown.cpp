@@ -225,7 +225,7 @@ struct PaperAgreement {
 PaperAgreement calcPaperAgreement(const SweepResults& results) {
   PaperAgreement a;
   for (const auto& ps : results.participants) {
-    const PublishedParticipant* pub = findPublished(ps.name);
+    const PublishedParticipant* pub = ps.published;
     if (!pub) continue;
     for (const auto& row : pub->table4) {
       const SweepPoint* ours = pointAt(ps, row.lowering);
@@ -260,7 +260,7 @@ std::string formatSummaryFastest(const SweepResults& results, const UncertaintyR
         md += ", 5-95 % over the assumptions " + fmt("%.3f", pu->fastestLowering.p05) + " - " +
               fmt("%.3f", pu->fastestLowering.p95) + " m";
     }
-    if (const PublishedParticipant* pub = findPublished(ps.name))
+    if (const PublishedParticipant* pub = ps.published)
       md += "; Burkett's model: " + fmt("%.3f", pub->predictedBestLowering) + " m";
     md += ".\n";
   }
@@ -321,7 +321,7 @@ std::string formatTables34Rows(const SweepResults& results) {
                           "ours - paper model", "ours - measured"});
   md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
   for (const auto& ps : results.participants) {
-    const PublishedParticipant* pub = findPublished(ps.name);
+    const PublishedParticipant* pub = ps.published;
     if (!pub) continue;
     for (const auto& row : pub->table4) {
       const SweepPoint* ours = pointAt(ps, row.lowering);
@@ -352,7 +352,7 @@ std::string formatSweepShape(const SweepResults& results) {
     } else {
       shape += "fastest at " + fmt("%.3f", bestLowering) + " m, slower beyond it (as in the paper)";
     }
-    if (const PublishedParticipant* pub = findPublished(ps.name))
+    if (const PublishedParticipant* pub = ps.published)
       shape += "; Burkett's model: fastest at " + fmt("%.3f", pub->predictedBestLowering) + " m";
     shape += ".\n";
   }
@@ -385,7 +385,7 @@ std::string formatFastestSection(const SweepStudy& study, const SweepResults& re
   md += mdRow({"participant", "ours (m)", "ours swing time (s)", "Burkett model (m)", "difference (m)", "bounce at ours", "toe strikes at ours"});
   md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
   for (const auto& ps : results.participants) {
-    const PublishedParticipant* pub = findPublished(ps.name);
+    const PublishedParticipant* pub = ps.published;
     if (ps.best < 0) {
       md += mdRow({ps.name, "none ended", "", pub ? fmt("%.3f", pub->predictedBestLowering) : "", "", "", ""});
       continue;

@@ -64,7 +64,7 @@ std::string formatUncertaintyTables(const UncertaintyResults& u) {
 std::string formatSweepTables(const SweepStudy& study, const SweepResults& results) {
   std::string out;
   for (const auto& ps : results.participants) {
-    const PublishedParticipant* pub = findPublished(ps.name);
+    const PublishedParticipant* pub = ps.published;
     const Participant* participant = participantNamed(study, ps.name);
     const bool strikeAlarm = participant == nullptr || participant->toeClearance.alarmHolds();
     out += "\n" + ps.name + " — swing time vs knee-axis lowering (study " + study.name + ")\n";
@@ -206,7 +206,7 @@ std::string formatSweepJson(const SweepResults& results, const UncertaintyResult
                                    {"distance_below_knee_m", b.added.distanceBelowKnee},
                                    {"swing_time_s", b.result.swingTime}};
     }
-    if (const PublishedParticipant* pub = findPublished(ps.name)) {
+    if (const PublishedParticipant* pub = ps.published) {
       Json table4 = Json::array();
       for (const auto& row : pub->table4) {
         const SweepPoint* ours = pointAt(ps, row.lowering);

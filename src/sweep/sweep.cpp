@@ -200,6 +200,7 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
 
     ParticipantSweep ps;
     ps.name = p.name;
+    ps.published = findPublished(p.name);
     const auto lowerings = sweepLowerings(study, p);
     ps.loweringCap = std::min(study.loweringMax, calcMaxLowering(p));
     if (study.loweringMax > calcMaxLowering(p) + 1e-9) {

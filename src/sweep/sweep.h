@@ -12,6 +12,7 @@
 #include <map>
 
 #include "model/knee_model.h"
+#include "sweep/burkett_published.h"
 #include "sweep/calibration.h"
 #include "swing/swing_simulation.h"
 
@@ -63,6 +64,9 @@ struct SweepPoint {
 
 struct ParticipantSweep {
   std::string name;
+  /// Burkett 2004's published rows for this participant (Tables 3 and 4), looked up once by
+  /// name when the sweep runs; nullptr if he is not one of Burkett's.
+  const PublishedParticipant* published = nullptr;
   double loweringCap = 0;        ///< largest lowering simulated, m
   std::string capNote;           ///< non-empty if the study's maximum was capped
   std::vector<SweepPoint> points;       ///< the plain sweep (no added mass), by lowering
