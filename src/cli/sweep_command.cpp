@@ -126,7 +126,7 @@ Command addSweepCommand(CLI::App& app) {
          "compute only shard K of N (K from 0 to N - 1) of the uncertainty analysis's swings and write them to "
          "OUT/uncertainty-shard-K-of-N.json (a cohort study: its participants, to OUT/cohort-shard-K-of-N.json), "
          "without the plain sweep or a report; `swingsim merge` combines the N "
-         "shard files into the report and JSON of one run (README, Population studies across machines)")
+         "shard files into the report and JSON of one run (docs/clusters.md)")
           ->type_name("K/N")
           ->check(CLI::Validator([](std::string& v) { return checkShardSpec(v); }, "K/N", "shard"));
   // The shard file is the result: the JSON and the added-mass sweep come from the merge.
