@@ -18,7 +18,7 @@
 #include "io/trajectory_writer.h"
 #include "python_values.h"
 #include "report/cylinder_fit_report.h"
-#include "report/cylinder_fit_run.h"
+#include "study/cylinder_fit_run.h"
 #include "report/diagnosis_report.h"
 #include "report/swing_json.h"
 #include "report/sweep_report.h"

@@ -9,7 +9,7 @@
 #include "study/cylinder_study.h"
 #include "core/output_files.h"
 #include "report/cylinder_fit_report.h"
-#include "report/cylinder_fit_run.h"
+#include "study/cylinder_fit_run.h"
 
 namespace swingsim::cli {
 

@@ -1,4 +1,4 @@
-#include "report/cylinder_fit_run.h"
+#include "study/cylinder_fit_run.h"
 
 #include <algorithm>
 #include <cmath>
