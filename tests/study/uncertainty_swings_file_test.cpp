@@ -88,6 +88,46 @@ TEST(UncertaintySwingsFile, ReadsBackBitForBit) {
   EXPECT_THAT(formatUncertaintySwingsJson(f), HasSubstr("\"partial\": true"));
 }
 
+// The text is the one swingsim has always written (key order, indent, 17 significant digits,
+// null for a swing without an end or not run), so files of earlier runs resume and merge.
+TEST(UncertaintySwingsFile, WritesTheTextItAlwaysHas) {
+  UncertaintySwingsFile f = makeShard(1, 3);
+  f.times.swingTimes[1] = std::numeric_limits<double>::quiet_NaN();  // ran, no swing end
+  f.times.finished[2] = 0;                                            // not run
+  EXPECT_EQ(formatUncertaintySwingsJson(f), R"({
+  "format": "swingsim uncertainty swings",
+  "format_version": 2,
+  "partial": true,
+  "study": "tiny",
+  "study_path": "studies/tiny.yaml",
+  "swingsim_version": "0.test",
+  "inputs_fingerprint": "0123456789abcdef",
+  "assumptions_fingerprint": "fedcba9876543210",
+  "samples": 2,
+  "seed": 5,
+  "sensitivity": true,
+  "shard": {
+    "index": 1,
+    "count": 3
+  },
+  "swings_total": 10,
+  "first_swing": 3,
+  "last_swing": 6,
+  "swings_finished": 2,
+  "samples_finished": 0,
+  "swing_times_checksum": "09797eed484621f0",
+  "swing_times_s": [
+    0.76190476190476186,
+    null,
+    null
+  ],
+  "not_run": [
+    5
+  ]
+}
+)");
+}
+
 TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
   const UncertaintySwingsFile good = makeShard(0, 2);
   const std::string text = formatUncertaintySwingsJson(good);
