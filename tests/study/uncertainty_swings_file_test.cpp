@@ -15,7 +15,6 @@
 
 #include "core/input_error.h"
 #include "core/output_files.h"
-#include "study/sweep_study.h"
 
 namespace swingsim {
 namespace {
@@ -161,6 +160,15 @@ TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
               HasSubstr(p + "f.json: swing_times_s: expected a list of 6 swing times (last_swing - first_swing), found a list of 5"));
   EXPECT_THAT(refuse("g.json", replace("\"format_version\": 2", "\"format_version\": 3")),
               HasSubstr(p + "g.json: format_version: expected 2, found 3"));
+  EXPECT_THAT(refuse("g2.json", replace("\"shard\": {", "\"shard\": 3, \"x\": {")),
+              HasSubstr(p + "g2.json: shard: expected null or {\"index\": K, \"count\": N}, found 3"));
+  UncertaintySwingsFile partial = makeShard(1, 3);
+  partial.times.finished[2] = 0;
+  std::string notRun = formatUncertaintySwingsJson(partial);
+  notRun.replace(notRun.rfind("    5\n"), 6, "    9\n");
+  EXPECT_THAT(refuse("g3.json", notRun),
+              HasSubstr(p + "g3.json: not_run[0]: expected a swing index from first_swing to last_swing - 1 (3 to 6 - 1), "
+                        "found 9"));
 }
 
 TEST(UncertaintySwingsFile, EditedSwingTimesAreRefusedByRangeAndChecksum) {
@@ -229,25 +237,6 @@ TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {
   UncertaintySwingsFile moved = set[1];
   moved.first += 1;
   EXPECT_THAT(refusal({set[0], moved, set[2]}), HasSubstr(": first_swing, last_swing: expected "));
-}
-
-// The inputs fingerprint covers a measured thigh drive's samples, not only its file name:
-// shards run against different contents of the same CSV must not merge. A hip-moment study
-// keeps the fingerprint it had (no samples, nothing added).
-TEST(UncertaintySwingsFile, InputsFingerprintCoversTheThighDrivesSamples) {
-  SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
-  const std::string hipMoment = calcStudyInputsFingerprint(study);
-  study.participants[0].thighKinematics.path = "thigh.csv";
-  study.participants[0].thighKinematics.time = {0.0, 0.1, 0.2};
-  study.participants[0].thighKinematics.hipFlexion = {-0.2, 0.1, 0.3};
-  const std::string measured = calcStudyInputsFingerprint(study);
-  EXPECT_NE(measured, hipMoment);
-  study.participants[0].thighKinematics.hipFlexion[1] = 0.1000001;  // one sample edited in place
-  EXPECT_NE(calcStudyInputsFingerprint(study), measured);
-  study.participants[0].thighKinematics.hipFlexion[1] = 0.1;
-  EXPECT_EQ(calcStudyInputsFingerprint(study), measured);
-  study.participants[0].thighKinematics = ThighKinematics{};
-  EXPECT_EQ(calcStudyInputsFingerprint(study), hipMoment);
 }
 
 }  // namespace
