@@ -20,9 +20,11 @@
 // calls: the reader applies them, the writer skips them. A value the writer derives from
 // others (a count, a checksum) is written from the record and, on reading, compared by a
 // require with what the rest of the file gives.
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -80,6 +82,7 @@ class JsonReadArchive {
   template <class T>
   void whole(const char* key, T& v, std::uint64_t max, const JsonCheck<std::uint64_t>& check = {}) {
     static_assert(std::is_integral_v<T>, "a whole number is read into an integer");
+    assert(max <= static_cast<std::uint64_t>(std::numeric_limits<T>::max()));  // the format's own bound
     v = static_cast<T>(readWhole(key, max, check));
   }
   /// A number, or null for NaN (a quantity that does not exist).
