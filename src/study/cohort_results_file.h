@@ -5,8 +5,9 @@
 // (`cohort-shard-K-of-N.json`, combined by `swingsim merge`), as the uncertainty analysis's
 // swings files do (uncertainty_swings_file.h). The file names the run it belongs to (study,
 // a fingerprint of every drawn participant and its target, count, seed, version), so a
-// resume or a merge refuses results of another run. Numbers are written with 17 significant
-// digits, so they read back bit for bit and a merge reports what one run does.
+// resume or a merge refuses results of another run. Numbers are written in the shortest form
+// that reads back to the same double, so a merge reports what one run does. Its keys are
+// listed once, for writing and reading (io/json_archive.h).
 #include <cstddef>
 #include <cstdint>
 #include <string>

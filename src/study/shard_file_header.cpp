@@ -2,12 +2,60 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "core/input_error.h"
-#include "study/uncertainty_swings_file.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "study/sweep_study.h"
 #include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
+
+void Fingerprint::add(const std::string& text) {
+  for (unsigned char c : text) hash_ = (hash_ ^ c) * 0x100000001b3ULL;
+  hash_ = (hash_ ^ 0xffU) * 0x100000001b3ULL;  // a separator, so "ab"+"c" != "a"+"bc"
+}
+
+void Fingerprint::add(double value) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%a", value);  // exact
+  add(std::string(buf));
+}
+
+std::string Fingerprint::hex() const {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash_));
+  return buf;
+}
+
+namespace {
+
+std::string absolutePath(const std::string& path) {
+  std::error_code ec;
+  const auto p = std::filesystem::absolute(path, ec);
+  return ec ? path : p.lexically_normal().string();
+}
+
+}  // namespace
+
+std::string calcStudyInputsFingerprint(const SweepStudy& study) {
+  const std::string folder = std::filesystem::path(absolutePath(study.path)).parent_path().string();
+  Fingerprint f;
+  f.add(formatSweepStudyYaml(study, folder));
+  for (const Participant& p : study.participants) {
+    f.add(formatParticipantYaml(p, folder));
+    // A measured thigh drive's samples: the YAML names only their file (nothing is added
+    // for a hip-moment drive, so such studies keep their fingerprints).
+    for (double t : p.thighKinematics.time) f.add(t);
+    for (double q : p.thighKinematics.hipFlexion) f.add(q);
+  }
+  for (const auto& [path, model] : study.kneeModels) {
+    f.add(std::filesystem::path(path).filename().string());
+    f.add(formatKneeModelYaml(model.spec));
+  }
+  return f.hex();
+}
 
 ShardFileRun makeShardFileRun(const SweepStudy& study, const std::string& version) {
   ShardFileRun run;
@@ -16,40 +64,6 @@ ShardFileRun makeShardFileRun(const SweepStudy& study, const std::string& versio
   run.inputsFingerprint = calcStudyInputsFingerprint(study);
   run.version = version;
   return run;
-}
-
-void formatShardFileHead(Json& j, const char* format, int formatVersion, bool partial, const ShardFileRun& run) {
-  j["format"] = format;
-  j["format_version"] = formatVersion;
-  j["partial"] = partial;
-  j["study"] = run.study;
-  j["study_path"] = run.studyPath;
-  j["swingsim_version"] = run.version;
-  j["inputs_fingerprint"] = run.inputsFingerprint;
-}
-
-Json formatShardKey(bool sharded, int index, int count) {
-  if (!sharded) return nullptr;
-  return {{"index", index}, {"count", count}};
-}
-
-ShardFileRun readShardFileHead(const ResultsFileFields& f, const Json& doc, const char* format, int formatVersion) {
-  if (f.text("format") != format)
-    f.fail("format", std::string("\"") + format + "\"", describeJsonValue(doc.at("format")));
-  if (f.whole("format_version", 1000) != static_cast<std::uint64_t>(formatVersion))
-    f.fail("format_version", std::to_string(formatVersion), describeJsonValue(doc.at("format_version")));
-  ShardFileRun run;
-  run.study = f.text("study");
-  run.studyPath = f.text("study_path");
-  run.version = f.text("swingsim_version");
-  run.inputsFingerprint = f.text("inputs_fingerprint");
-  return run;
-}
-
-void readShardKey(const ResultsFileFields& shard, int& index, int& count) {
-  count = static_cast<int>(shard.whole("count", 1000000));
-  if (count < 1) shard.fail("count", "a shard count of at least 1", "0");
-  index = static_cast<int>(shard.whole("index", static_cast<std::uint64_t>(count - 1)));
 }
 
 SameRunCheck::SameRunCheck(std::string path, std::string what, std::string otherRun)
@@ -82,14 +96,14 @@ void requireShardFile(const ShardSlice& s) {
 
 void checkShardSlice(const ShardSlice& s, const ShardSlice& head, const std::string& sliceKeys) {
   if (s.count != head.count)
-    failResultsFileKey(*s.path, "shard.count", std::to_string(head.count) + " (the first shard, " + *head.path + ")",
-                       std::to_string(s.count));
+    failJsonFileKey(*s.path, "shard.count", std::to_string(head.count) + " (the first shard, " + *head.path + ")",
+                    std::to_string(s.count));
   const auto slice = calcShardSwings(s.total, s.index, s.count);
   if (s.first != slice.first || s.last != slice.second)
-    failResultsFileKey(*s.path, sliceKeys,
-                       std::to_string(slice.first) + ", " + std::to_string(slice.second) + " (shard " +
-                           std::to_string(s.index) + "/" + std::to_string(s.count) + ")",
-                       std::to_string(s.first) + ", " + std::to_string(s.last));
+    failJsonFileKey(*s.path, sliceKeys,
+                    std::to_string(slice.first) + ", " + std::to_string(slice.second) + " (shard " +
+                        std::to_string(s.index) + "/" + std::to_string(s.count) + ")",
+                    std::to_string(s.first) + ", " + std::to_string(s.last));
 }
 
 std::string formatShardFileName(const std::string& stem, int index, int shards) {

@@ -1,18 +1,19 @@
 #pragma once
 // What the two resumable, shardable results files (cohort_results_file.h,
 // uncertainty_swings_file.h) have in common: the header keys they begin with and their
-// "shard" key, the check that a file belongs to the same run, and the checks merge makes of
-// a set of shard files (each a finished shard of the same count, its slice the one
-// calcShardSwings gives its K, each K once, none missing). The wording of a message that
-// one format words otherwise stays with that format.
+// "shard" key (fields of their one list for io/json_archive.h), the fingerprint of the
+// study's inputs that names their run, the check that a file belongs to the same run, and
+// the checks merge makes of a set of shard files (each a finished shard of the same count,
+// its slice the one calcShardSwings gives its K, each K once, none missing). The wording of
+// a message that one format words otherwise stays with that format.
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "io/json_file.h"
-#include "study/results_file_fields.h"
+#include "io/json_archive.h"
 #include "sweep/sweep.h"
 
 namespace swingsim {
@@ -26,24 +27,70 @@ struct ShardFileRun {
   std::string version;            ///< swingsim version that computed the results
 };
 
+/// FNV-1a 64 over text fed piece by piece: the fingerprints and checksums of results files.
+class Fingerprint {
+ public:
+  void add(const std::string& text);
+  /// The exact value (hexadecimal floating point).
+  void add(double value);
+  /// 16 hex digits.
+  std::string hex() const;
+
+ private:
+  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+/// Fingerprint (16 hex digits, FNV-1a 64) of everything in the study that a run's results
+/// depend on, after any calibration: the study, every participant and every knee model as
+/// swingsim would write them (paths relative to the study's folder), and the samples of a
+/// measured thigh drive (its CSV's contents, not only its name).
+std::string calcStudyInputsFingerprint(const SweepStudy& study);
+
 /// The run part of `study` as given (its path as the command line gave it: merge loads it
 /// from there, shards and merge sharing a working folder), computed by swingsim `version`.
 ShardFileRun makeShardFileRun(const SweepStudy& study, const std::string& version);
 
-/// Writes the keys a results file begins with, in this order: format, format_version,
-/// partial, study, study_path, swingsim_version, inputs_fingerprint. "format" comes first
-/// (isCohortResultsFile reads only a file's head).
-void formatShardFileHead(Json& j, const char* format, int formatVersion, bool partial, const ShardFileRun& run);
-/// The value of the "shard" key: {"index": K, "count": N}, or null for a whole run's
-/// partial result (`sharded` false).
-Json formatShardKey(bool sharded, int index, int count);
+/// Largest "format_version" a results file may name.
+constexpr std::uint64_t kMaxResultsFormatVersion = 1000;
+/// Largest N of `--shard K/N` a results file may name.
+constexpr std::uint64_t kMaxShardCount = 1000000;
 
-/// Reads and checks format and format_version, then reads study, study_path,
-/// swingsim_version and inputs_fingerprint (in that order, so the first bad key is named).
-ShardFileRun readShardFileHead(const ResultsFileFields& f, const Json& doc, const char* format, int formatVersion);
-/// Reads a non-null "shard" value (`shard` reads it, prefix "shard."): count (at least 1),
-/// then index (0 to count - 1), into `count` and `index`.
-void readShardKey(const ResultsFileFields& shard, int& index, int& count);
+/// The keys a results file begins with, in this order: format (must be `format`),
+/// format_version (must be `formatVersion`), partial, study, study_path, swingsim_version,
+/// inputs_fingerprint. "format" comes first (isCohortResultsFile reads only a file's head).
+template <class Archive>
+void serializeShardFileHead(Archive& a, const char* format, int formatVersion, bool& partial, ShardFileRun& run) {
+  std::string name = format;
+  a.text("format", name, mustBeText(format));
+  int version = formatVersion;
+  a.whole("format_version", version, kMaxResultsFormatVersion, mustBeWhole(static_cast<std::uint64_t>(formatVersion)));
+  a.flag("partial", partial);
+  a.text("study", run.study);
+  a.text("study_path", run.studyPath);
+  a.text("swingsim_version", run.version);
+  a.text("inputs_fingerprint", run.inputsFingerprint);
+}
+
+/// Tag of the "shard" object's keys (serialize below).
+struct ShardKeyOf {};
+
+/// The "shard" object of a results file (CohortResultsFile, UncertaintySwingsFile:
+/// shardIndex, shardCount): index (0 to count - 1), count (at least 1).
+template <class Archive, class ResultsFile>
+void serialize(Archive& a, ResultsFile& f, ShardKeyOf) {
+  a.whole("index", f.shardIndex, kMaxShardCount - 1);
+  a.whole("count", f.shardCount, kMaxShardCount,
+          [](const std::uint64_t& n) { return n >= 1 ? std::string() : "a shard count of at least 1"; });
+  a.require(f.shardIndex < f.shardCount, "index", "a whole number from 0 to " + std::to_string(f.shardCount - 1),
+            [&f] { return std::to_string(f.shardIndex); });
+}
+
+/// The "shard" key of a results file: {"index": K, "count": N} for a shard (`f.sharded`),
+/// null for a whole run's partial result.
+template <class Archive, class ResultsFile>
+void serializeShardKey(Archive& a, ResultsFile& f) {
+  a.nullOrObject("shard", f, f.sharded, "{\"index\": K, \"count\": N}", ShardKeyOf{});
+}
 
 /// Compares a file's run with the run expected, key by key in the caller's order; the first
 /// key that differs throws InputError `FILE: KEY: expected E (WHAT), found F: OTHER_RUN`.

@@ -6,7 +6,8 @@
 // the run it belongs to (study, fingerprints of its inputs and of the assumption table,
 // samples, seed, slice), so a resume or a merge refuses swings from another run. Swing times
 // are written with 17 significant digits, so they read back bit for bit (docs/uncertainty.md,
-// "Interrupted runs and shards").
+// "Interrupted runs and shards"). Its keys are listed once, for writing and reading
+// (io/json_archive.h).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -44,11 +45,6 @@ struct UncertaintySwingsFile {
   bool isPartial() const { return times.countFinished() < last - first; }
 };
 
-/// Fingerprint (16 hex digits, FNV-1a 64) of everything in the study that the swings
-/// depend on, after any calibration: the study, every participant and every knee model as
-/// swingsim would write them (paths relative to the study's folder), and the samples of a
-/// measured thigh drive (its CSV's contents, not only its name).
-std::string calcStudyInputsFingerprint(const SweepStudy& study);
 /// Fingerprint of the assumption table as applied: keys, units, kinds and each participant's
 /// range (exact values), and the plan's run layout (lowerings per run).
 std::string calcAssumptionsFingerprint(const UncertaintyPlan& plan);

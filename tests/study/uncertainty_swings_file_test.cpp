@@ -15,7 +15,6 @@
 
 #include "core/input_error.h"
 #include "core/output_files.h"
-#include "study/sweep_study.h"
 
 namespace swingsim {
 namespace {
@@ -88,6 +87,46 @@ TEST(UncertaintySwingsFile, ReadsBackBitForBit) {
   EXPECT_THAT(formatUncertaintySwingsJson(f), HasSubstr("\"partial\": true"));
 }
 
+// The text is the one swingsim has always written (key order, indent, 17 significant digits,
+// null for a swing without an end or not run), so files of earlier runs resume and merge.
+TEST(UncertaintySwingsFile, WritesTheTextItAlwaysHas) {
+  UncertaintySwingsFile f = makeShard(1, 3);
+  f.times.swingTimes[1] = std::numeric_limits<double>::quiet_NaN();  // ran, no swing end
+  f.times.finished[2] = 0;                                            // not run
+  EXPECT_EQ(formatUncertaintySwingsJson(f), R"({
+  "format": "swingsim uncertainty swings",
+  "format_version": 2,
+  "partial": true,
+  "study": "tiny",
+  "study_path": "studies/tiny.yaml",
+  "swingsim_version": "0.test",
+  "inputs_fingerprint": "0123456789abcdef",
+  "assumptions_fingerprint": "fedcba9876543210",
+  "samples": 2,
+  "seed": 5,
+  "sensitivity": true,
+  "shard": {
+    "index": 1,
+    "count": 3
+  },
+  "swings_total": 10,
+  "first_swing": 3,
+  "last_swing": 6,
+  "swings_finished": 2,
+  "samples_finished": 0,
+  "swing_times_checksum": "09797eed484621f0",
+  "swing_times_s": [
+    0.76190476190476186,
+    null,
+    null
+  ],
+  "not_run": [
+    5
+  ]
+}
+)");
+}
+
 TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
   const UncertaintySwingsFile good = makeShard(0, 2);
   const std::string text = formatUncertaintySwingsJson(good);
@@ -121,6 +160,15 @@ TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
               HasSubstr(p + "f.json: swing_times_s: expected a list of 6 swing times (last_swing - first_swing), found a list of 5"));
   EXPECT_THAT(refuse("g.json", replace("\"format_version\": 2", "\"format_version\": 3")),
               HasSubstr(p + "g.json: format_version: expected 2, found 3"));
+  EXPECT_THAT(refuse("g2.json", replace("\"shard\": {", "\"shard\": 3, \"x\": {")),
+              HasSubstr(p + "g2.json: shard: expected null or {\"index\": K, \"count\": N}, found 3"));
+  UncertaintySwingsFile partial = makeShard(1, 3);
+  partial.times.finished[2] = 0;
+  std::string notRun = formatUncertaintySwingsJson(partial);
+  notRun.replace(notRun.rfind("    5\n"), 6, "    9\n");
+  EXPECT_THAT(refuse("g3.json", notRun),
+              HasSubstr(p + "g3.json: not_run[0]: expected a swing index from first_swing to last_swing - 1 (3 to 6 - 1), "
+                        "found 9"));
 }
 
 TEST(UncertaintySwingsFile, EditedSwingTimesAreRefusedByRangeAndChecksum) {
@@ -189,25 +237,6 @@ TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {
   UncertaintySwingsFile moved = set[1];
   moved.first += 1;
   EXPECT_THAT(refusal({set[0], moved, set[2]}), HasSubstr(": first_swing, last_swing: expected "));
-}
-
-// The inputs fingerprint covers a measured thigh drive's samples, not only its file name:
-// shards run against different contents of the same CSV must not merge. A hip-moment study
-// keeps the fingerprint it had (no samples, nothing added).
-TEST(UncertaintySwingsFile, InputsFingerprintCoversTheThighDrivesSamples) {
-  SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
-  const std::string hipMoment = calcStudyInputsFingerprint(study);
-  study.participants[0].thighKinematics.path = "thigh.csv";
-  study.participants[0].thighKinematics.time = {0.0, 0.1, 0.2};
-  study.participants[0].thighKinematics.hipFlexion = {-0.2, 0.1, 0.3};
-  const std::string measured = calcStudyInputsFingerprint(study);
-  EXPECT_NE(measured, hipMoment);
-  study.participants[0].thighKinematics.hipFlexion[1] = 0.1000001;  // one sample edited in place
-  EXPECT_NE(calcStudyInputsFingerprint(study), measured);
-  study.participants[0].thighKinematics.hipFlexion[1] = 0.1;
-  EXPECT_EQ(calcStudyInputsFingerprint(study), measured);
-  study.participants[0].thighKinematics = ThighKinematics{};
-  EXPECT_EQ(calcStudyInputsFingerprint(study), hipMoment);
 }
 
 }  // namespace
