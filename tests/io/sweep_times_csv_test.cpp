@@ -45,7 +45,7 @@ TEST(SweepTimesCsv, RefusesNonsenseWithFileLineAndColumn) {
   EXPECT_NE(errorOf(h + "P1,0,0.4,0.031,2.5\n").find("t.csv:2: n: expected a whole number"), std::string::npos);
   EXPECT_NE(errorOf(h + "P1,0,0.4,0,5\n").find("t.csv:2: sd_s"), std::string::npos);
   EXPECT_NE(errorOf(h + "P1,0,nan,0.031,5\n").find("expected a finite number (got 'nan')"), std::string::npos);
-  EXPECT_NE(errorOf(h + "P1,0,0.4,0.031\n").find("t.csv:2: row: expected 5 comma-separated fields (got 4)"),
+  EXPECT_NE(errorOf(h + "P1,0,0.4,0.031\n").find("t.csv:2: expected 5 comma-separated values (got 4)"),
             std::string::npos);
   EXPECT_NE(errorOf(h + ",0,0.4,0.031,5\n").find("t.csv:2: participant"), std::string::npos);
   EXPECT_NE(errorOf(h + "P1,0,0.4,0.031,5\nP1,0.0,0.41,0.031,5\n").find("t.csv:3: lowering_m: participant P1 already has "
@@ -57,6 +57,16 @@ TEST(SweepTimesCsv, RefusesNonsenseWithFileLineAndColumn) {
             std::string::npos);
   const std::string longHeader = "x" + std::string(100000, ',');
   EXPECT_LT(errorOf(longHeader).size(), 400u) << "a header is echoed cut, not whole";
+}
+
+TEST(SweepTimesCsv, ChecksAfterParsingNameTheRowsOwnLinePastComments) {
+  const std::string text = "# source\nparticipant,lowering_m,swing_time_s\n# P1 first\nP1,0,0.4\n\n# again\nP1,0.6,0.4\n";
+  EXPECT_EQ(errorOf(text),
+            "t.csv:7: lowering_m: expected 0 to 0.5 (m below the standard knee-axis location) (got 0.6)");
+  EXPECT_EQ(errorOf("# only a comment\nparticipant,lowering_m,swing_time_s\n# none\n"),
+            "t.csv:2: expected at least one row after the header (got none)");
+  EXPECT_EQ(errorOf("participant,lowering_m,swing_time_s,sd_s,n\nP1,0,0.4,0.03,1e3\nP2,0,0.4,0.03,1001\n"),
+            "t.csv:3: n: expected a whole number of trials from 1 to 1000 (got 1001)");
 }
 
 TEST(SweepTimesCsv, SpreadsheetQuotesAroundAFieldAreNotPartOfIt) {
