@@ -10,6 +10,8 @@
 #include <limits>
 #include <string>
 
+#include "sweep/burkett_published.h"
+
 namespace swingsim {
 namespace {
 
@@ -42,6 +44,7 @@ SweepPoint endedAt(double lowering, double swingTime) {
 ParticipantSweep sweepNamed(const std::string& name) {
   ParticipantSweep ps;
   ps.name = name;
+  ps.published = findPublished(name);  // as runSweep looks it up
   SweepPoint failed;
   failed.lowering = 0.1;
   failed.ran = true;

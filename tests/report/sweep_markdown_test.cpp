@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "sweep/burkett_published.h"
 #include "study/sweep_study.h"
 
 namespace swingsim {
@@ -35,6 +36,7 @@ SweepPoint failedAt(double lowering, const std::string& failure) {
 SweepResults makeResults() {
   ParticipantSweep p1;
   p1.name = "P1";
+  p1.published = findPublished("P1");  // as runSweep looks it up
   p1.points = {endedAt(0, 0.430), endedAt(0.05, 0.420), endedAt(0.10, 0.425),
                failedAt(0.15, "the knee never came back into the zone of stability")};
   p1.best = 1;
