@@ -49,65 +49,13 @@ std::optional<HipPath> hipPathOf(const SwingBase& base, const ThighKinematics& t
   return HipPath(thigh, base.participant.hipOffsetInPelvis, base.participant.path);
 }
 
-void requireSwingEffect(EffectId effect) {
-  if (describeEffect(effect).plant != PlantKind::kSwing)
-    throw std::invalid_argument("not a swing effect: " + describeEffect(effect).name);
-}
-
 }  // namespace
-
-bool SwingEffects::has(EffectId effect) const {
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction: return coulomb;
-    case EffectId::kKneeViscousDamping: return viscous;
-    case EffectId::kExtensionAssistSpring: return assist;
-    case EffectId::kToeOffVelocity: return toeOff;
-    case EffectId::kHipMomentScale: return hipScale;
-    case EffectId::kShankMassScale: return shankScale;
-    case EffectId::kBelowKneeMassScale: return belowKneeScale;
-    default: return false;
-  }
-}
 
 const SwingModelParams& swingParams(const PlantModel& model) { return plantModelParams<SwingModelParams>(model); }
 
 SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect, double gridValue) {
-  requireSwingEffect(effect);
   SwingModelParams p = params;
-  auto& e = p.effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction:
-      e.coulomb = true;
-      e.knee.coulombMoment = 0;
-      e.knee.coulombSmoothingRate = gridValue;
-      break;
-    case EffectId::kKneeViscousDamping:
-      e.viscous = true;
-      e.knee.viscousDamping = 0;
-      break;
-    case EffectId::kExtensionAssistSpring:
-      e.assist = true;
-      e.knee.assistStiffness = 0;
-      break;
-    case EffectId::kToeOffVelocity:
-      e.toeOff = true;
-      e.toeOffHipRate = e.toeOffKneeRate = 0;
-      break;
-    case EffectId::kHipMomentScale:
-      e.hipScale = true;
-      e.hipMomentScale = 1;
-      break;
-    case EffectId::kShankMassScale:
-      e.shankScale = true;
-      e.shankMassScale = 1;
-      break;
-    case EffectId::kBelowKneeMassScale:
-      e.belowKneeScale = true;
-      e.belowKneeMassScale = 1;
-      break;
-    default:
-      break;
-  }
+  p.effects = addSwingEffectTo(params.effects, effect, gridValue);
   return p;
 }
 
@@ -122,30 +70,6 @@ KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& param
   KneeModel stopless;  // makeKneeLaw adds the participant's Tc
   stopless.law = law;
   return makeKneeLaw(base.participant, stopless);
-}
-
-Participant applyParticipantEffects(const Participant& participant, const SwingEffects& e) {
-  Participant p = participant;
-  if (e.shankScale) {
-    p.shank.mass *= e.shankMassScale;
-    p.shank.inertia *= e.shankMassScale;
-  }
-  if (e.belowKneeScale) {
-    p.shank.mass *= e.belowKneeMassScale;
-    p.shank.inertia *= e.belowKneeMassScale;
-    p.foot.mass *= e.belowKneeMassScale;
-    p.foot.inertia *= e.belowKneeMassScale;
-  }
-  if (e.toeOff) {
-    p.initial.hipFlexionRate = e.toeOffHipRate;
-    p.initial.kneeFlexionRate = e.toeOffKneeRate;
-  }
-  if (e.hipScale) {
-    p.hipMoment.flexionAmplitude *= e.hipMomentScale;
-    p.hipMoment.extensionAmplitude *= e.hipMomentScale;
-    for (double& m : p.hipMoment.moments) m *= e.hipMomentScale;
-  }
-  return p;
 }
 
 SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
@@ -176,13 +100,13 @@ SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& para
     HipMomentProfile drive;
     drive.kind = HipMomentProfile::Kind::kTable;
     drive.times = record.time;
-    drive.moments = record.hipMoment;
-    if (e.hipScale)
-      for (double& m : drive.moments) m *= e.hipMomentScale;
+    drive.moments = applyHipDriveEffects(e, record.hipMoment);
     initial.hipFlexion = hipPose;
     initial.kneeFlexion = kneePose;
-    initial.hipFlexionRate = e.toeOff ? e.toeOffHipRate : 0.0;
-    initial.kneeFlexionRate = e.toeOff ? e.toeOffKneeRate : 0.0;
+    initial.hipFlexionRate = 0.0;
+    initial.kneeFlexionRate = 0.0;
+    for (const auto& r : swingEffectRecords())
+      if (r.applyToToeOff && e.has(r.id)) r.applyToToeOff(e, initial.hipFlexionRate, initial.kneeFlexionRate);
     swing.emplace(geometry, law, drive, participant.hipRange);
   }
   ReferenceTrajectory tr;
@@ -198,19 +122,8 @@ std::vector<std::string> swingPhaseNames() { return {"early flexion", "late exte
 
 double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, EffectId effect,
                           const SwingRecord& record) {
-  requireSwingEffect(effect);
   SwingModelParams without = truth;
-  auto& e = without.effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction: e.coulomb = false, e.knee.coulombMoment = 0; break;
-    case EffectId::kKneeViscousDamping: e.viscous = false, e.knee.viscousDamping = 0; break;
-    case EffectId::kExtensionAssistSpring: e.assist = false, e.knee.assistStiffness = 0; break;
-    case EffectId::kToeOffVelocity: e.toeOff = false; break;
-    case EffectId::kHipMomentScale: e.hipScale = false; break;
-    case EffectId::kShankMassScale: e.shankScale = false; break;
-    case EffectId::kBelowKneeMassScale: e.belowKneeScale = false; break;
-    default: break;
-  }
+  without.effects = removeSwingEffect(truth.effects, effect);
   const auto& init = base.participant.initial;
   const double first = base.drive == SwingDrive::kThighKinematics ? init.kneeFlexionRate : init.hipFlexion;
   const auto a = predictSwing(base, truth, record, first, init.kneeFlexion);
@@ -223,9 +136,7 @@ double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, 
 namespace {
 
 // ---- The free parameters as one vector ------------------------------------------------
-// Bounds are physics, not data: a friction, damper or assist spring cannot push the wrong
-// way (lower bound 0); scales of a gain or a mass stay positive and within 10x (log-scaled);
-// toe-off rates within 20 rad/s (about 3x the peak swing knee rate). docs/diagnosis.md.
+// The knee model's scale, then every present effect's values in record order.
 struct Slot {
   std::optional<EffectId> effect;  // none: the base model's knee scale
   BoundedParameter bounds;         // start value filled in by the fit
@@ -233,36 +144,16 @@ struct Slot {
   std::function<double&(SwingModelParams&)> ref;
 };
 
-BoundedParameter linear(double lower, double upper, double typical) { return {"", 0.0, lower, upper, false, typical}; }
-BoundedParameter logScaled(double lower, double upper) { return {"", 1.0, lower, upper, true, 1.0}; }
-
 std::vector<Slot> slotsOf(const SwingEffects& e) {
   std::vector<Slot> s;
-  s.push_back({std::nullopt, logScaled(0.05, 20.0), 1.0, [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
-  if (e.coulomb)
-    s.push_back({EffectId::kKneeCoulombFriction, linear(0.0, 50.0, 1.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.knee.coulombMoment; }});
-  if (e.viscous)
-    s.push_back({EffectId::kKneeViscousDamping, linear(0.0, 50.0, 0.5), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.knee.viscousDamping; }});
-  if (e.assist)
-    s.push_back({EffectId::kExtensionAssistSpring, linear(0.0, 500.0, 5.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.knee.assistStiffness; }});
-  if (e.toeOff) {
-    s.push_back({EffectId::kToeOffVelocity, linear(-20.0, 20.0, 1.0), kRadToDeg,
-                 [](SwingModelParams& p) -> double& { return p.effects.toeOffHipRate; }});
-    s.push_back({EffectId::kToeOffVelocity, linear(-20.0, 20.0, 1.0), kRadToDeg,
-                 [](SwingModelParams& p) -> double& { return p.effects.toeOffKneeRate; }});
-  }
-  if (e.hipScale)
-    s.push_back({EffectId::kHipMomentScale, logScaled(0.1, 10.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.hipMomentScale; }});
-  if (e.shankScale)
-    s.push_back({EffectId::kShankMassScale, logScaled(0.1, 10.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.shankMassScale; }});
-  if (e.belowKneeScale)
-    s.push_back({EffectId::kBelowKneeMassScale, logScaled(0.1, 10.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.belowKneeMassScale; }});
+  // The knee model's scale: positive, within 20x down and up (log-scaled).
+  s.push_back({std::nullopt, {"", 1.0, 0.05, 20.0, true, 1.0}, 1.0,
+               [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
+  for (const auto& record : swingEffectRecords())
+    if (e.has(record.id))
+      for (const auto& slot : record.slots)
+        s.push_back({record.id, slot.bounds, slot.reportScale,
+                     [value = slot.value](SwingModelParams& p) -> double& { return value(p.effects); }});
   return s;
 }
 
@@ -471,12 +362,9 @@ PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> held
 }
 
 std::string SwingPlant::checkApplicable(const PlantModel& model, EffectId effect) const {
-  requireSwingEffect(effect);
+  const SwingEffectRecord& r = findSwingEffectRecord(effect);
   if (swingParams(model).effects.has(effect)) return "already in the model";
-  if (base_.drive == SwingDrive::kThighKinematics && effect == EffectId::kHipMomentScale)
-    return "the measured thigh drives the swing: no hip moment to scale";
-  if (base_.drive == SwingDrive::kThighKinematics && effect == EffectId::kToeOffVelocity)
-    return "the measured thigh drives the swing: its toe-off rate is measured and the knee's is fitted per record";
+  if (base_.drive == SwingDrive::kThighKinematics) return r.notUnderThighDrive;
   return "";
 }
 
@@ -486,85 +374,16 @@ PlantModelPtr SwingPlant::addEffect(const PlantModel& model, EffectId effect, do
 
 PlantModelPtr SwingPlant::combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const {
   SwingModelParams p = swingParams(a);
-  const SwingEffects& f = swingParams(b).effects;
-  auto& e = p.effects;
-  switch (effectOfB) {
-    case EffectId::kKneeCoulombFriction:
-      e.coulomb = true;
-      e.knee.coulombMoment = f.knee.coulombMoment;
-      e.knee.coulombSmoothingRate = f.knee.coulombSmoothingRate;
-      break;
-    case EffectId::kKneeViscousDamping:
-      e.viscous = true;
-      e.knee.viscousDamping = f.knee.viscousDamping;
-      break;
-    case EffectId::kExtensionAssistSpring:
-      e.assist = true;
-      e.knee.assistStiffness = f.knee.assistStiffness;
-      break;
-    case EffectId::kToeOffVelocity:
-      e.toeOff = true;
-      e.toeOffHipRate = f.toeOffHipRate;
-      e.toeOffKneeRate = f.toeOffKneeRate;
-      break;
-    case EffectId::kHipMomentScale:
-      e.hipScale = true;
-      e.hipMomentScale = f.hipMomentScale;
-      break;
-    case EffectId::kShankMassScale:
-      e.shankScale = true;
-      e.shankMassScale = f.shankMassScale;
-      break;
-    case EffectId::kBelowKneeMassScale:
-      e.belowKneeScale = true;
-      e.belowKneeMassScale = f.belowKneeMassScale;
-      break;
-    default:
-      break;
-  }
+  p.effects = copySwingEffect(p.effects, swingParams(b).effects, effectOfB);
   return std::make_shared<SwingModel>(p);
 }
 
 std::vector<double> SwingPlant::effectValues(const PlantModel& model, EffectId effect) const {
-  const auto& e = swingParams(model).effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction: return {e.knee.coulombMoment, e.knee.coulombSmoothingRate * kRadToDeg};
-    case EffectId::kKneeViscousDamping: return {e.knee.viscousDamping};
-    case EffectId::kExtensionAssistSpring: return {e.knee.assistStiffness};
-    case EffectId::kToeOffVelocity: return {e.toeOffHipRate * kRadToDeg, e.toeOffKneeRate * kRadToDeg};
-    case EffectId::kHipMomentScale: return {e.hipMomentScale};
-    case EffectId::kShankMassScale: return {e.shankMassScale};
-    case EffectId::kBelowKneeMassScale: return {e.belowKneeMassScale};
-    default: return {};
-  }
+  return swingEffectValues(swingParams(model).effects, effect);
 }
 
 bool SwingPlant::checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const {
-  const auto& e = swingParams(model).effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction:
-      note = "friction must oppose knee motion (moment_Nm > 0): " + fmt(e.knee.coulombMoment) + " N m";
-      return e.knee.coulombMoment > 0;
-    case EffectId::kKneeViscousDamping:
-      note = "a passive damper must resist knee motion (> 0): " + fmt(e.knee.viscousDamping) + " N m s/rad";
-      return e.knee.viscousDamping > 0;
-    case EffectId::kExtensionAssistSpring:
-      note = "the spring must pull towards extension (stiffness > 0): " + fmt(e.knee.assistStiffness) + " N m/rad";
-      return e.knee.assistStiffness > 0;
-    case EffectId::kToeOffVelocity:
-      note = "energy released by the foot must flex the knee (knee rate > 0): " + fmt(e.toeOffKneeRate * kRadToDeg) +
-             " deg/s";
-      return e.toeOffKneeRate > 0;
-    case EffectId::kHipMomentScale:
-      note = "a gain error cannot reverse the moment (scale > 0): " + fmt(e.hipMomentScale);
-      return e.hipMomentScale > 0;
-    case EffectId::kBelowKneeMassScale:
-      note = "mass must stay positive (scale > 0): " + fmt(e.belowKneeMassScale);
-      return e.belowKneeMassScale > 0;
-    default:
-      note = "mass must stay positive (scale > 0): " + fmt(e.shankMassScale);
-      return e.shankMassScale > 0;
-  }
+  return findSwingEffectRecord(effect).isPhysical(swingParams(model).effects, note);
 }
 
 Comparison SwingPlant::compare(const PlantModel& model) const {
@@ -641,9 +460,7 @@ std::string SwingPlant::verify(const PlantModel& model) const {
       setup.participant.hipMoment = {};
       setup.participant.hipMoment.kind = HipMomentProfile::Kind::kTable;
       setup.participant.hipMoment.times = r.time;
-      setup.participant.hipMoment.moments = r.hipMoment;
-      if (params.effects.hipScale)
-        for (double& m : setup.participant.hipMoment.moments) m *= params.effects.hipMomentScale;
+      setup.participant.hipMoment.moments = applyHipDriveEffects(params.effects, r.hipMoment);
       setup.participant.initial.hipFlexion = pose.first;
     }
     // Along the record: the swing need not end inside it (a trial cut at heel contact).

@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include "identify/diagnosis_engine.h"
+#include "identify/swing_effects.h"
 #include "knee/knee_added_effects.h"
 #include "leg/hip_path.h"
 #include "leg/thigh_motion.h"
@@ -22,19 +23,6 @@
 #include "numerics/bounded_least_squares.h"
 
 namespace swingsim {
-
-/// The swing effects of a model (off = absent).
-struct SwingEffects {
-  bool coulomb = false, viscous = false, assist = false, toeOff = false, hipScale = false, shankScale = false,
-       belowKneeScale = false;
-  KneeAddedEffectsParams knee;                   ///< friction, damping, spring values
-  double toeOffHipRate = 0, toeOffKneeRate = 0;  ///< rad/s at toe-off
-  double hipMomentScale = 1;                     ///< multiplies the measured hip moment
-  double shankMassScale = 1;                     ///< multiplies shank mass and inertia
-  double belowKneeMassScale = 1;                 ///< multiplies shank and foot masses and inertias
-  /// Whether `effect` (a swing effect of the table) is on.
-  bool has(EffectId effect) const;
-};
 
 /// The swing model: participant + knee model, with its free parameters.
 struct SwingModelParams {
@@ -75,9 +63,6 @@ SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect,
 
 /// Knee law of the model: scaled model law + added effects + stop + participant Tc.
 KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& params);
-/// The participant with the participant-level effects applied (shank mass and inertia,
-/// toe-off rates, hip moment profile amplitude).
-Participant applyParticipantEffects(const Participant& participant, const SwingEffects& effects);
 
 /// Model hip and knee flexion (rad) at the record's times from toe-off pose `hipPose`,
 /// `kneePose` (rad), driven by the record's hip moment, or with base.drive ==
