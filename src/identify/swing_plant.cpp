@@ -1,5 +1,6 @@
-// One unit of ~700 lines: the swing plant's model (knee law, effects, the reference swing
-// along a record), its pose fits and its comparisons share the record-level helpers here.
+// The swing plant: its refits (the model's free parameters and every record's toe-off pose),
+// its comparisons and its checks. The model along a record is identify/swing_model.h, the
+// candidate effects identify/swing_effects.h.
 #include "identify/swing_plant.h"
 
 #include <Eigen/Dense>
@@ -28,110 +29,9 @@ std::string fmt(double v, const char* f = "%.3g") {
   return buf;
 }
 
-// The measured thigh of a record, as the thigh drive prescribes it; with `movingHip`, the
-// measured pelvis too (the hip then follows it).
-ThighKinematics thighKinematicsOf(const SwingRecord& r, bool movingHip) {
-  ThighKinematics t;
-  t.path = r.path;
-  t.time = r.time;
-  t.hipFlexion = r.hipFlexion;
-  if (movingHip) {
-    t.pelvisX = r.pelvisX;
-    t.pelvisY = r.pelvisY;
-    t.pelvisTilt = r.pelvisTilt;
-  }
-  return t;
-}
-
-// The hip path of a record under the thigh drive; nullopt: the hip is fixed.
-std::optional<HipPath> hipPathOf(const SwingBase& base, const ThighKinematics& thigh) {
-  if (base.drive != SwingDrive::kThighKinematics || !HipPath::hasPelvis(thigh)) return std::nullopt;
-  return HipPath(thigh, base.participant.hipOffsetInPelvis, base.participant.path);
-}
-
 }  // namespace
 
 const SwingModelParams& swingParams(const PlantModel& model) { return plantModelParams<SwingModelParams>(model); }
-
-SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect, double gridValue) {
-  SwingModelParams p = params;
-  p.effects = addSwingEffectTo(params.effects, effect, gridValue);
-  return p;
-}
-
-KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& params) {
-  // The model's law: its resisting parts scaled, then added effects, its stop, then Tc.
-  const KneeLawSum& model = base.knee.law;
-  KneeLawSum law;
-  for (std::size_t i = 0; i + 1 < model.size(); ++i)
-    law.add(std::make_unique<ScaledKneeLaw>(model.part(i), params.kneeModelScale));
-  if (params.effects.knee.any()) law.add(std::make_unique<KneeAddedEffects>(params.effects.knee));
-  if (model.size() > 0) law.add(model.part(model.size() - 1).clone());
-  KneeModel stopless;  // makeKneeLaw adds the participant's Tc
-  stopless.law = law;
-  return makeKneeLaw(base.participant, stopless);
-}
-
-SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance, const ThighMotion* thigh,
-                             const HipPath* hip) {
-  const auto& e = params.effects;
-  const Participant participant = applyParticipantEffects(base.participant, e);
-  const LegGeometry geometry = calcLegGeometry(participant, 0.0);
-  const KneeLawSum law = makeSwingKneeLaw(base, params);
-  InitialConditions initial;
-  std::optional<ReferenceSwing> swing;
-  std::optional<ThighMotion> ownThigh;
-  std::optional<HipPath> ownHip;
-  if (base.drive == SwingDrive::kThighKinematics) {
-    if (thigh == nullptr) {
-      const ThighKinematics kinematics = thighKinematicsOf(record, base.movingHip);
-      thigh = &ownThigh.emplace(kinematics);
-      ownHip = hipPathOf(base, kinematics);
-      if (ownHip) hip = &*ownHip;
-    }
-    initial.kneeFlexion = kneePose;
-    initial.kneeFlexionRate = hipPose;  // the knee's toe-off rate (the hip's is the thigh's)
-    if (hip != nullptr)
-      swing.emplace(geometry, law, *thigh, *hip);
-    else
-      swing.emplace(geometry, law, *thigh);
-  } else {
-    HipMomentProfile drive;
-    drive.kind = HipMomentProfile::Kind::kTable;
-    drive.times = record.time;
-    drive.moments = applyHipDriveEffects(e, record.hipMoment);
-    initial.hipFlexion = hipPose;
-    initial.kneeFlexion = kneePose;
-    initial.hipFlexionRate = 0.0;
-    initial.kneeFlexionRate = 0.0;
-    for (const auto& r : swingEffectRecords())
-      if (r.applyToToeOff && e.has(r.id)) r.applyToToeOff(e, initial.hipFlexionRate, initial.kneeFlexionRate);
-    swing.emplace(geometry, law, drive, participant.hipRange);
-  }
-  ReferenceTrajectory tr;
-  try {
-    tr = swing->integrate(initial, record.time, tolerance, tolerance);
-  } catch (const std::runtime_error& ex) {
-    throw RunError(std::string("swing model along ") + record.stem + ": " + ex.what());
-  }
-  return {tr.hipFlexion, tr.kneeFlexion, tr.kneeFlexionRate, tr.hipMoment, tr.kneeMoment};
-}
-
-std::vector<std::string> swingPhaseNames() { return {"early flexion", "late extension", "terminal/stop contact"}; }
-
-double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, EffectId effect,
-                          const SwingRecord& record) {
-  SwingModelParams without = truth;
-  without.effects = removeSwingEffect(truth.effects, effect);
-  const auto& init = base.participant.initial;
-  const double first = base.drive == SwingDrive::kThighKinematics ? init.kneeFlexionRate : init.hipFlexion;
-  const auto a = predictSwing(base, truth, record, first, init.kneeFlexion);
-  const auto b = predictSwing(base, without, record, first, init.kneeFlexion);
-  double s = 0;
-  for (std::size_t i = 0; i < a.kneeFlexion.size(); ++i) s += std::pow((a.kneeFlexion[i] - b.kneeFlexion[i]) * kRadToDeg, 2);
-  return std::sqrt(s / static_cast<double>(a.kneeFlexion.size()));
-}
 
 namespace {
 
@@ -202,6 +102,64 @@ double kneeRmse(const SwingRecord& r, const SwingPrediction& p) {
   double s = 0;
   for (std::size_t i = 0; i < r.time.size(); ++i) s += std::pow((r.kneeFlexion[i] - p.kneeFlexion[i]) * kRadToDeg, 2);
   return std::sqrt(s / static_cast<double>(r.time.size()));
+}
+
+// The training residuals of a fit, record by record: the knee's (reported, with phases from
+// the fitted model's knee) and the likelihood's knee and hip segments; the samples and the
+// training RMSE of the knee.
+void addTrainingResiduals(const std::vector<SwingRecord>& train, std::size_t rowsPerSample, double zone,
+                          const BoundedFitResult& lm, PlantFit& s) {
+  double kneeRss = 0;
+  std::size_t kneeSamples = 0;
+  Eigen::Index row = 0;
+  for (std::size_t f = 0; f < train.size(); ++f) {
+    std::vector<double> knee, hip;
+    for (std::size_t i = 0; i < train[f].time.size(); ++i) {
+      knee.push_back(lm.residual[row++]);
+      if (rowsPerSample == 2) hip.push_back(lm.residual[row++]);
+      kneeRss += knee.back() * knee.back();
+    }
+    kneeSamples += knee.size();
+    s.samples += knee.size() + hip.size();
+    // Phases from the fitted model's knee (measured minus residual).
+    std::vector<double> modelKnee;
+    for (std::size_t i = 0; i < knee.size(); ++i) modelKnee.push_back(train[f].kneeFlexion[i] - knee[i] * kDegToRad);
+    s.trainPhase.push_back(phasesOf(modelKnee, zone));
+    s.trainResidual.push_back(knee);
+    s.likelihoodResidual.push_back(knee);
+    if (!hip.empty()) s.likelihoodResidual.push_back(hip);
+  }
+  s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
+}
+
+// Every free parameter: its standard error (from the fit's covariance, s^2 (J'J)^+), its
+// name for the confound check, and a note if it sits on its physical bound. The per-record
+// poses after the slots are nuisance parameters and left out.
+void addSlotParameters(const std::vector<Slot>& slots, const BoundedFitResult& lm, double kneeModelScale, PlantFit& s) {
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
+    if (!slots[k].effect) {
+      s.baseParameters.push_back({"knee_model_scale", kneeModelScale, se, slots[k].bounds.lower,
+                                  slots[k].bounds.upper});
+      s.parameterNames.push_back("knee_model_scale");
+      continue;
+    }
+    auto it = std::find_if(s.effectErrors.begin(), s.effectErrors.end(),
+                           [&](const auto& entry) { return entry.first == *slots[k].effect; });
+    if (it == s.effectErrors.end()) {
+      it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
+      s.effectBounds.push_back({*slots[k].effect, {}});
+    }
+    const auto& d = describeEffect(*slots[k].effect);
+    const std::string name = d.name + "." + d.parameters[it->second.size()];  // the effect's parameters in order
+    it->second.push_back(se);
+    s.effectBounds[static_cast<std::size_t>(it - s.effectErrors.begin())].second.push_back(
+        {slots[k].bounds.lower * slots[k].reportScale, slots[k].bounds.upper * slots[k].reportScale});
+    s.parameterNames.push_back(name);
+    if (lm.atBound[k])
+      s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
+                        ")");
+  }
 }
 
 }  // namespace
@@ -306,55 +264,9 @@ PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> held
   const SwingModelParams fitted = paramsAt(lm.x);
   s.model = std::make_shared<SwingModel>(fitted);
   s.rss = lm.cost;
-  double kneeRss = 0;
-  std::size_t kneeSamples = 0;
-  Eigen::Index row = 0;
-  for (std::size_t f = 0; f < train_.size(); ++f) {
-    std::vector<double> knee, hip;
-    for (std::size_t i = 0; i < train_[f].time.size(); ++i) {
-      knee.push_back(lm.residual[row++]);
-      if (rowsPerSample() == 2) hip.push_back(lm.residual[row++]);
-      kneeRss += knee.back() * knee.back();
-    }
-    kneeSamples += knee.size();
-    s.samples += knee.size() + hip.size();
-    // Phases from the fitted model's knee (measured minus residual).
-    std::vector<double> modelKnee;
-    for (std::size_t i = 0; i < knee.size(); ++i) modelKnee.push_back(train_[f].kneeFlexion[i] - knee[i] * kDegToRad);
-    s.trainPhase.push_back(phasesOf(modelKnee, base_.participant.swingEnd.zoneOfStability));
-    s.trainResidual.push_back(knee);
-    s.likelihoodResidual.push_back(knee);
-    if (!hip.empty()) s.likelihoodResidual.push_back(hip);
-  }
-  s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
-  // Every free parameter: its standard error (from the fit's covariance, s^2 (J'J)^+), its
-  // name for the confound check, and a note if it sits on its physical bound. The
-  // per-record poses after the slots are nuisance parameters and left out.
+  addTrainingResiduals(train_, rowsPerSample(), base_.participant.swingEnd.zoneOfStability, lm, s);
   s.correlation = lm.correlation().topLeftCorner(g, g);
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
-    if (!slots[k].effect) {
-      s.baseParameters.push_back({"knee_model_scale", fitted.kneeModelScale, se, slots[k].bounds.lower,
-                                  slots[k].bounds.upper});
-      s.parameterNames.push_back("knee_model_scale");
-      continue;
-    }
-    auto it = std::find_if(s.effectErrors.begin(), s.effectErrors.end(),
-                           [&](const auto& entry) { return entry.first == *slots[k].effect; });
-    if (it == s.effectErrors.end()) {
-      it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
-      s.effectBounds.push_back({*slots[k].effect, {}});
-    }
-    const auto& d = describeEffect(*slots[k].effect);
-    const std::string name = d.name + "." + d.parameters[it->second.size()];  // the effect's parameters in order
-    it->second.push_back(se);
-    s.effectBounds[static_cast<std::size_t>(it - s.effectErrors.begin())].second.push_back(
-        {slots[k].bounds.lower * slots[k].reportScale, slots[k].bounds.upper * slots[k].reportScale});
-    s.parameterNames.push_back(name);
-    if (lm.atBound[k])
-      s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
-                        ")");
-  }
+  addSlotParameters(slots, lm, fitted.kneeModelScale, s);
   if (!heldScale)  // a profile point needs the training RSS only
     for (std::size_t v = 0; v < validate_.size(); ++v)
       s.validationRmse.push_back(kneeRmse(validate_[v], fitPose(fitted, train_.size() + v).prediction));
