@@ -7,58 +7,11 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "identify/cylinder_effects.h"
 
 namespace swingsim {
 
 namespace {
-
-// Latch rate of Chien 2014 (k = 1e4 /s): the no-delay reference for switch_delay.
-constexpr double kPublishedLatchRate = 1e4;
-
-std::string fmt(double v, const char* f = "%.3g") {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-// Regression columns of an added effect, in MauchCylinder::calcRegressorRow's order (after
-// the 3 coefficients of each phase).
-std::vector<int> effectColumns(const MauchCylinderParams& p, EffectId effect) {
-  int col = 3 * p.phases;
-  const auto& e = p.effects;
-  std::vector<int> cols;
-  auto take = [&](bool on, int count, EffectId id) {
-    if (!on) return;
-    if (effect == id)
-      for (int i = 0; i < count; ++i) cols.push_back(col + i);
-    col += count;
-  };
-  take(e.hyperextensionPhase, 3, EffectId::kHyperextensionPhase);
-  take(e.coulombFriction, 1, EffectId::kCoulombFriction);
-  take(e.orificeQuadratic, 1, EffectId::kOrificeQuadratic);
-  take(e.inertia, 1, EffectId::kInertia);
-  take(e.positionDependentDamping, 1, EffectId::kPositionDependentDamping);
-  return cols;
-}
-
-// Whether the model has `effect` on (switch_delay: a latch slower than the fastest grid value).
-bool hasEffect(const MauchCylinderParams& p, EffectId effect) {
-  const auto& e = p.effects;
-  switch (effect) {
-    case EffectId::kCoulombFriction: return e.coulombFriction;
-    case EffectId::kOrificeQuadratic: return e.orificeQuadratic;
-    case EffectId::kInertia: return e.inertia;
-    case EffectId::kPositionDependentDamping: return e.positionDependentDamping;
-    case EffectId::kHyperextensionPhase: return e.hyperextensionPhase;
-    case EffectId::kSwitchDelay: return 1.0 / p.switches.latchRate >= describeEffect(effect).grid.front();
-    default: return false;
-  }
-}
-
-void requireCylinderEffect(EffectId effect) {
-  if (describeEffect(effect).plant != PlantKind::kCylinder)
-    throw std::invalid_argument("not a cylinder effect: " + describeEffect(effect).name);
-}
 
 // Force and dominant gate of a model along one record (S2 = 0 at heel strike).
 std::vector<double> residualOf(const MauchCylinder& cyl, const BenchData& d, std::vector<int>* phase = nullptr) {
@@ -95,19 +48,6 @@ std::vector<PlantFit::FreeParameter> freedSwitchConstants(const CylinderFit& fit
   return out;
 }
 
-// Chien's 4-phase model produced by a hyperextension phase on a 2-phase model (Chien 2014
-// Eqs. 2 and 11): the 2-phase gates times S8 plus S7 = 1 - S8 are the 4-phase gates with
-// phases 2 (S1 S2 S8) and 3 ((1 - S1) S8) merged, so splitting the low-force phase into the
-// two gives the nesting 4-phase model (start: both at the low-force coefficients).
-MauchCylinderParams splitIntoFourPhases(const MauchCylinderParams& p) {
-  MauchCylinderParams q = p;
-  q.phases = 4;
-  q.coefficients = {p.coefficients[0], p.coefficients[1], p.coefficients[1], p.effects.hyperextension};
-  q.effects.hyperextensionPhase = false;
-  q.effects.hyperextension = {};
-  return q;
-}
-
 // Whether the 4-phase split of a 2-phase model with a hyperextension phase is supported:
 // the acceptance rule's test on its 3 more coefficients (default alpha and BIC) and every
 // held-out RMSE lower by the rule's margin.
@@ -128,46 +68,17 @@ const MauchCylinderParams& cylinderParams(const PlantModel& model) {
 }
 
 std::string checkCylinderEffectApplicable(const MauchCylinderParams& p, EffectId effect) {
-  requireCylinderEffect(effect);
-  if (effect == EffectId::kHyperextensionPhase && p.phases != 2)
-    return "the 4-phase model already has a hyperextension phase";
-  if (effect == EffectId::kSwitchDelay && hasEffect(p, effect))
-    return "the model's latch is already slow (k = " + formatNumber(p.switches.latchRate) + " /s)";
-  return hasEffect(p, effect) ? "already in the model" : "";
+  const CylinderEffectRecord& r = findCylinderEffectRecord(effect);
+  if (r.notApplicable) {
+    std::string why = r.notApplicable(p);
+    if (!why.empty()) return why;
+  }
+  return r.has(p) ? "already in the model" : "";
 }
 
 MauchCylinderParams addCylinderEffect(const MauchCylinderParams& params, EffectId effect, double gridValue) {
-  requireCylinderEffect(effect);
   MauchCylinderParams p = params;
-  auto& e = p.effects;
-  switch (effect) {
-    case EffectId::kCoulombFriction:
-      e.coulombFriction = true;
-      e.coulombForce = 0;
-      e.coulombWidth = gridValue;
-      break;
-    case EffectId::kOrificeQuadratic:
-      e.orificeQuadratic = true;
-      e.orificeCoefficient = 0;
-      break;
-    case EffectId::kInertia:
-      e.inertia = true;
-      e.pistonMass = 0;
-      break;
-    case EffectId::kPositionDependentDamping:
-      e.positionDependentDamping = true;
-      e.positionDamping = 0;
-      break;
-    case EffectId::kHyperextensionPhase:
-      e.hyperextensionPhase = true;
-      e.hyperextension = {};
-      break;
-    case EffectId::kSwitchDelay:
-      p.switches.latchRate = 1.0 / gridValue;
-      break;
-    default:
-      break;
-  }
+  findCylinderEffectRecord(effect).add(p, gridValue);
   return p;
 }
 
@@ -181,18 +92,8 @@ std::vector<std::string> cylinderPhaseNames(const MauchCylinderParams& p) {
 }
 
 double calcCylinderEffectRms(const MauchCylinderParams& truth, EffectId effect, const BenchData& record) {
-  requireCylinderEffect(effect);
   MauchCylinderParams without = truth;
-  auto& e = without.effects;
-  switch (effect) {
-    case EffectId::kCoulombFriction: e.coulombFriction = false; break;
-    case EffectId::kOrificeQuadratic: e.orificeQuadratic = false; break;
-    case EffectId::kInertia: e.inertia = false; break;
-    case EffectId::kPositionDependentDamping: e.positionDependentDamping = false; break;
-    case EffectId::kHyperextensionPhase: e.hyperextensionPhase = false; break;
-    case EffectId::kSwitchDelay: without.switches.latchRate = kPublishedLatchRate; break;
-    default: break;
-  }
+  findCylinderEffectRecord(effect).remove(without);
   const auto a = calcCylinderTrace(MauchCylinder(truth), record.time, record.position, record.velocity, 0.0).force;
   const auto b = calcCylinderTrace(MauchCylinder(without), record.time, record.position, record.velocity, 0.0).force;
   double s = 0;
@@ -262,10 +163,11 @@ PlantFit CylinderPlant::summarize(const CylinderFit& fitted) const {
     std::replace(name.begin(), name.end(), '.', '_');
     s.parameterNames.push_back(name);
   }
-  for (const auto& descriptor : effectTable()) {
-    if (descriptor.plant != PlantKind::kCylinder || !hasEffect(fitted.params, descriptor.id)) continue;
+  for (const auto& record : cylinderEffectRecords()) {
+    if (!record.has(fitted.params)) continue;
+    const EffectDescriptor& descriptor = describeEffect(record.id);
     std::vector<double> se;
-    for (int col : effectColumns(fitted.params, descriptor.id)) {
+    for (int col : cylinderEffectColumns(fitted.params, descriptor.id)) {
       se.push_back(fitted.regression.standardErrors[static_cast<std::size_t>(col)]);
       s.parameterNames[static_cast<std::size_t>(col)] = descriptor.name + "." + s.parameterNames[static_cast<std::size_t>(col)];
     }
@@ -323,13 +225,14 @@ PlantFit CylinderPlant::fitJointly(const MauchCylinderParams& params, bool fitLa
 }
 
 PlantFit CylinderPlant::refitAccepted(const PlantFit& candidate, EffectId effect) const {
-  if (effect != EffectId::kSwitchDelay && effect != EffectId::kHyperextensionPhase) return candidate;
+  const CylinderEffectRecord& record = findCylinderEffectRecord(effect);
+  if (record.refit == CylinderRefit::kNone) return candidate;
   const CylinderModel& m = asCylinderModel(*candidate.model);
-  const bool latch = m.latchFree || effect == EffectId::kSwitchDelay;
+  const bool latch = m.latchFree || record.refit == CylinderRefit::kSwitchesLatch;
   PlantFit out = fitJointly(m.params, latch);
-  if (effect == EffectId::kHyperextensionPhase && m.params.phases == 2 && m.params.effects.hyperextensionPhase) {
+  if (const auto nesting = record.nestingModel ? record.nestingModel(m.params) : std::nullopt) {
     try {
-      PlantFit split = fitJointly(splitIntoFourPhases(m.params), latch);
+      PlantFit split = fitJointly(*nesting, latch);
       if (supportsSplit(out, split)) out = std::move(split);
     } catch (const RunError&) {
       // A phase of the split the training data never enter: the merged model stays.
@@ -369,68 +272,20 @@ PlantModelPtr CylinderPlant::combine(const PlantModel& a, const PlantModel& b, E
   const CylinderModel& ma = asCylinderModel(a);
   const CylinderModel& mb = asCylinderModel(b);
   MauchCylinderParams p = ma.params;
-  const MauchCylinderParams& q = cylinderParams(b);
-  switch (effectOfB) {
-    case EffectId::kSwitchDelay: p.switches.latchRate = std::min(p.switches.latchRate, q.switches.latchRate); break;
-    case EffectId::kCoulombFriction: p = addCylinderEffect(p, effectOfB, q.effects.coulombWidth); break;
-    default: p = addCylinderEffect(p, effectOfB, 0.0); break;
-  }
+  const CylinderEffectRecord& record = findCylinderEffectRecord(effectOfB);
+  if (record.combine)
+    record.combine(p, mb.params);
+  else
+    record.add(p, 0.0);
   return std::make_shared<CylinderModel>(p, ma.switchesFree || mb.switchesFree, ma.latchFree || mb.latchFree);
 }
 
 std::vector<double> CylinderPlant::effectValues(const PlantModel& model, EffectId effect) const {
-  const MauchCylinderParams& p = cylinderParams(model);
-  const auto& e = p.effects;
-  switch (effect) {
-    case EffectId::kCoulombFriction: return {e.coulombForce, e.coulombWidth};
-    case EffectId::kOrificeQuadratic: return {e.orificeCoefficient};
-    case EffectId::kInertia: return {e.pistonMass};
-    case EffectId::kPositionDependentDamping: return {e.positionDamping};
-    case EffectId::kHyperextensionPhase: return {e.hyperextension.f, e.hyperextension.k, e.hyperextension.c};
-    case EffectId::kSwitchDelay: return {1.0 / p.switches.latchRate};
-    default: return {};
-  }
+  return findCylinderEffectRecord(effect).values(cylinderParams(model));
 }
 
 bool CylinderPlant::checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const {
-  const MauchCylinderParams& p = cylinderParams(model);
-  const auto& e = p.effects;
-  switch (effect) {
-    case EffectId::kCoulombFriction:
-      note = "friction force must oppose motion (force_N > 0): " + fmt(e.coulombForce) + " N";
-      return e.coulombForce > 0;
-    case EffectId::kOrificeQuadratic:
-      note = "orifice flow must resist motion (coefficient > 0): " + fmt(e.orificeCoefficient) + " N s^2/m^2";
-      return e.orificeCoefficient > 0;
-    case EffectId::kInertia:
-      note = "moving mass must be positive: " + fmt(e.pistonMass) + " kg";
-      return e.pistonMass > 0;
-    case EffectId::kHyperextensionPhase:
-      note = "hyperextension stiffness must push the piston out of hyperextension (k > 0): " + fmt(e.hyperextension.k) +
-             " N/m";
-      return e.hyperextension.k > 0;
-    case EffectId::kSwitchDelay:
-      note = "latch time constant 1/k > 0: " + fmt(1.0 / p.switches.latchRate) + " s";
-      return true;
-    default:
-      break;
-  }
-  // position_dependent_damping: every flexion/extension phase keeps non-negative damping
-  // c + cx x over the recorded stroke (a negative damper would feed energy in).
-  double xMin = 1e300, xMax = -1e300;
-  for (const auto& d : train_)
-    for (double x : d.position) {
-      xMin = std::max(0.0, std::min(xMin, x));
-      xMax = std::max(xMax, x);
-    }
-  double worst = 1e300;
-  const int flexExtPhases = p.phases == 4 ? 3 : 2;
-  for (int ph = 0; ph < flexExtPhases; ++ph) {
-    const double c = p.coefficients[static_cast<std::size_t>(ph)].c;
-    worst = std::min({worst, c + e.positionDamping * xMin, c + e.positionDamping * xMax});
-  }
-  note = "damping c + cx x must stay >= 0 over the stroke: lowest " + fmt(worst) + " N s/m";
-  return worst >= 0;
+  return findCylinderEffectRecord(effect).isPhysical(cylinderParams(model), train_, note);
 }
 
 std::vector<std::string> CylinderPlant::phaseNames(const PlantModel& model) const {

@@ -6,14 +6,12 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "identify/candidate_score.h"
 #include "numerics/profile_likelihood.h"
 
 namespace swingsim {
 
 namespace {
-
-// chi^2(1) 95 % quantile, for the profile-likelihood interval of a grid parameter.
-const double kChi2One95 = calcChiSquaredQuantile(0.95, 1);
 
 std::string fmtRatio(double v) {
   char buf[32];
@@ -25,27 +23,6 @@ std::string fmtPercent(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.0f", v);
   return buf;
-}
-
-const std::vector<double>* findErrors(const PlantFit& fit, EffectId id) {
-  for (const auto& [effect, errors] : fit.effectErrors)
-    if (effect == id) return &errors;
-  return nullptr;
-}
-
-// The effect's parameters at `fit`, with 95 % intervals from the fit's standard errors
-// inflated by `inflate` (sqrt(n / n_eff) for autocorrelated residuals).
-std::vector<EffectParameter> parametersWithIntervals(const DiagnosisPlant& plant, const PlantFit& fit, EffectId id,
-                                                     double inflate) {
-  const EffectDescriptor& d = describeEffect(id);
-  const std::vector<double> values = plant.effectValues(*fit.model, id);
-  std::vector<EffectParameter> out;
-  for (std::size_t k = 0; k < d.parameters.size() && k < values.size(); ++k)
-    out.push_back({d.parameters[k], values[k], values[k], values[k], ""});
-  if (const auto* se = findErrors(fit, id))
-    for (std::size_t k = 0; k < se->size() && k < out.size() && static_cast<int>(k) < d.fittedParameters; ++k)
-      setNormalInterval(out[k], (*se)[k] * inflate);
-  return out;
 }
 
 // Which physical bound ends a profile interval, with its value: ", one-sided: cut by its
@@ -107,132 +84,6 @@ std::vector<EffectParameter> baseIntervals(const DiagnosisPlant& plant, const Pl
   return out;
 }
 
-// A likelihood gain below this is none: the chi^2(1) tail at 0.1 is 0.75, and the refits'
-// own convergence (each record's pose refitted from its start) moves an LR by ~0.01.
-constexpr double kNoLikelihoodGain = 0.1;
-// A Wald interval wider than this many physical ranges comes from a Jacobian column that is
-// round-off: across its whole range the parameter moves the fit by less than a hundredth of
-// what the interval's edge means.
-constexpr double kEnormousRanges = 100;
-
-// Whether the candidate fit `fit` of effect `id` (likelihood ratio `lr` against `current`)
-// carries information in these records. It does not when no fitted parameter's 95 % interval
-// (`wald`, before the grid's union) excludes a value of its physical range (the interval is
-// degenerate or covers the whole range) and its fit moves no residual: every
-// fitted value stays at the neutral value it started from (what moved was the base model's
-// refit), or the fit gains no likelihood, or every interval is enormous (kEnormousRanges).
-bool carriesInformation(const DiagnosisPlant& plant, const PlantFit& current, const PlantFit& fit, EffectId id,
-                        double gridValue, double lr, const std::vector<EffectParameter>& wald, double inflate) {
-  const EffectDescriptor& d = describeEffect(id);
-  if (d.fittedParameters == 0) return true;  // a grid alone: its profile is the information
-  const std::vector<double> neutral = plant.effectValues(*plant.addEffect(*current.model, id, gridValue), id);
-  const std::vector<double>* errors = findErrors(fit, id);
-  const std::vector<std::pair<double, double>>* bounds = nullptr;
-  for (const auto& [effect, b] : fit.effectBounds)
-    if (effect == id) bounds = &b;
-  bool atNeutral = true, saysNothing = true, enormous = true;
-  for (std::size_t k = 0; k < wald.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
-    if (k >= neutral.size() || wald[k].value != neutral[k]) atNeutral = false;
-    const double se = errors && k < errors->size() ? (*errors)[k] * inflate : std::numeric_limits<double>::quiet_NaN();
-    // NaN: not computed (a coefficient the active set holds at its bound), which says nothing
-    // either way; 0 or infinite: a column of the Jacobian the covariance dropped or cannot fix.
-    const bool degenerate = se == 0 || std::isinf(se);
-    const bool hasRange = bounds && k < bounds->size() && std::isfinite((*bounds)[k].second - (*bounds)[k].first);
-    const bool coversRange = hasRange && wald[k].lower <= (*bounds)[k].first && wald[k].upper >= (*bounds)[k].second;
-    if (!degenerate && !coversRange) saysNothing = false;
-    if (!degenerate && !(hasRange && wald[k].upper - wald[k].lower > kEnormousRanges * ((*bounds)[k].second - (*bounds)[k].first)))
-      enormous = false;
-  }
-  const bool movesNothing = atNeutral || !(std::abs(lr) > kNoLikelihoodGain) || enormous;
-  return !(saysNothing && movesNothing);
-}
-
-// Scores one candidate on top of `current`: every parameter refitted with it, its grid
-// parameter (if any) profiled on the descriptor's fixed grid (best training RSS).
-CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& current, EffectId id,
-                              const EffectSelectionSettings& settings, PlantFit* bestOut) {
-  const EffectDescriptor& d = describeEffect(id);
-  CandidateScore c;
-  c.id = id;
-  c.effect = d.name;
-  c.notApplicable = plant.checkApplicable(*current.model, id);
-  if (!c.notApplicable.empty()) return c;
-  const std::vector<double> grid = d.grid.empty() ? std::vector<double>{0.0} : d.grid;
-  std::vector<PlantFit> fits;
-  std::size_t best = 0;
-  for (double g : grid) {
-    try {
-      fits.push_back(plant.fit(*plant.addEffect(*current.model, id, g)));
-    } catch (const RunError& e) {
-      c.notApplicable = e.what();
-      return c;
-    }
-    if (fits.back().rss < fits[best].rss) best = fits.size() - 1;
-  }
-  const PlantFit& s = fits[best];
-  const int dof = d.degreesOfFreedom();
-  LrTest t = calcLrTest(current.rss, s.rss, s.likelihoodResidual, dof);
-  // Cross-validated plants: significant on the training rows of every fold, so the test
-  // that counts is the least significant fold's.
-  if (!s.foldRss.empty() && s.foldRss.size() == current.foldRss.size() && s.foldResidual.size() == s.foldRss.size()) {
-    for (std::size_t f = 0; f < s.foldRss.size(); ++f) {
-      const LrTest fold = calcLrTest(current.foldRss[f], s.foldRss[f], s.foldResidual[f], dof);
-      c.foldPValues.push_back(fold.p);
-      if (f == 0 || !(fold.p <= t.p)) t = fold;  // NaN counts as the least significant
-    }
-  }
-  c.model = s.model;
-  c.trainRmse = s.trainRmse;
-  c.validationRmse = s.validationRmse;
-  c.pooledValidationRmse = s.pooledValidationRmse;
-  applyTestAndValidation(c, t, dof, current.validationRmse, settings, current.pooledValidationRmse);
-  const double inflate = calcStandardErrorInflation(static_cast<double>(s.samples), t.nEff);
-  c.parameters = parametersWithIntervals(plant, s, id, inflate);
-  c.informative = carriesInformation(plant, current, s, id, grid[best], t.lr, c.parameters, inflate);
-  if (!c.informative) {
-    // No interval: any value of the physical range fits these records as well as any other.
-    for (auto& p : c.parameters) {
-      p.lower = p.upper = std::numeric_limits<double>::quiet_NaN();
-      p.intervalNote = kNoInformation;
-    }
-  } else if (!d.grid.empty()) {
-    // The grid parameter's interval: the grid values inside the profile likelihood's 95 %
-    // region. The fitted parameters' intervals are conditional on the grid value: take their
-    // union over every grid value in that region, so the grid choice cannot narrow them.
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::size_t g = 0; g < grid.size(); ++g) {
-      if (!(t.nEff * std::log(fits[g].rss / s.rss) <= kChi2One95)) continue;
-      lo = std::min(lo, grid[g] * d.gridReportScale);
-      hi = std::max(hi, grid[g] * d.gridReportScale);
-      const auto others = parametersWithIntervals(plant, fits[g], id, inflate);
-      for (std::size_t k = 0; k < others.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
-        c.parameters[k].lower = std::min(c.parameters[k].lower, others[k].lower);
-        c.parameters[k].upper = std::max(c.parameters[k].upper, others[k].upper);
-      }
-    }
-    c.parameters.back().lower = lo;
-    c.parameters.back().upper = hi;
-  }
-  c.physical = plant.checkPhysical(*s.model, id, c.physicalNote);
-  c.physicalNote += c.physical ? " (ok)" : " (wrong sign)";
-  // Where the squared error fell most, by the current model's phases.
-  const auto names = plant.phaseNames(*current.model);
-  std::vector<double> fall(names.size(), 0.0);
-  double totalFall = 0;
-  for (std::size_t f = 0; f < current.trainResidual.size() && f < s.trainResidual.size(); ++f)
-    for (std::size_t i = 0; i < current.trainResidual[f].size() && i < s.trainResidual[f].size(); ++i) {
-      const double drop = current.trainResidual[f][i] * current.trainResidual[f][i] - s.trainResidual[f][i] * s.trainResidual[f][i];
-      fall[static_cast<std::size_t>(current.trainPhase[f][i])] += drop;
-      totalFall += drop;
-    }
-  const auto where = static_cast<std::size_t>(std::max_element(fall.begin(), fall.end()) - fall.begin());
-  c.where = names[where] + (totalFall > 0 ? " (" + fmtPercent(100.0 * fall[where] / totalFall) + " % of the error fall)" : "");
-  for (const auto& r : s.trainResidual) c.trainResidual.insert(c.trainResidual.end(), r.begin(), r.end());
-  if (bestOut) *bestOut = s;
-  return c;
-}
-
-// The candidate effects to score: the study's list, or the plant's whole library.
 std::vector<EffectId> resolveEffects(PlantKind plant, const std::vector<std::string>& requested) {
   const std::vector<std::string> names = resolveCandidates(requested, effectNames(plant));
   std::vector<EffectId> ids;
@@ -405,6 +256,22 @@ std::string describeConfound(const PlantFit& fit, EffectId added, bool withBase)
   return "";
 }
 
+// Scores every candidate of step `stepNo` on top of `current` into `step` (their best fits
+// into `best`), reporting progress; returns how many were applicable.
+int scoreCandidates(const DiagnosisPlant& plant, const PlantFit& current, const std::vector<EffectId>& ids,
+                    const EffectSelectionSettings& settings, const DiagnosisProgress& progress, int stepNo,
+                    DiagnosisStep& step, std::vector<PlantFit>& best) {
+  int applicable = 0;
+  const int total = static_cast<int>(ids.size());
+  if (progress) progress(stepNo, 0, total);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    step.candidates.push_back(scoreCandidate(plant, current, ids[i], settings, &best[i]));
+    if (step.candidates.back().notApplicable.empty()) ++applicable;
+    if (progress) progress(stepNo, static_cast<int>(i) + 1, total);
+  }
+  return applicable;
+}
+
 }  // namespace
 
 const CandidateScore* findClosestCandidate(const DiagnosisStep& step) {
@@ -436,14 +303,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     step.currentTrainRmse = current.trainRmse;
     step.currentValidationRmse = current.validationRmse;
     std::vector<PlantFit> best(ids.size());
-    int applicable = 0;
-    const int total = static_cast<int>(ids.size());
-    if (progress) progress(stepNo, 0, total);
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      step.candidates.push_back(scoreCandidate(plant, current, ids[i], settings, &best[i]));
-      if (step.candidates.back().notApplicable.empty()) ++applicable;
-      if (progress) progress(stepNo, static_cast<int>(i) + 1, total);
-    }
+    const int applicable = scoreCandidates(plant, current, ids, settings, progress, stepNo, step, best);
     std::vector<EffectScore*> scores;
     for (auto& c : step.candidates) scores.push_back(&c);
     step.chosen = applicable == 0 ? -1 : applyAcceptanceRule(scores, settings.alpha);
@@ -507,3 +367,4 @@ BaselineComparison compareBaseline(const DiagnosisPlant& plant, int whitenessLag
 }
 
 }  // namespace swingsim
+

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "identify/diagnosis_engine.h"
+#include "identify/sweep_rows.h"
 #include "model/measured_swing_time.h"
 #include "sweep/sweep.h"
 #include "sweep/sweep_assumptions.h"
@@ -57,24 +58,6 @@ SweepVariant applySweepEffects(const SweepVariant& variant, const SweepModelPara
 /// The participant one swing at `lowering` runs: the hip-effort adaptation and the hip tempo
 /// (time scale x (1 + c lowering / 0.1 m)) applied to `variant`'s participant.
 Participant calcSweepSwingParticipant(const SweepVariant& variant, const SweepModelParams& params, double lowering);
-
-/// One participant of the plant with its measured rows.
-struct SweepParticipantRows {
-  SweepVariant nominal;
-  MeasuredSwingTime standard;               ///< the row at lowering 0 (calibration target)
-  std::vector<MeasuredSwingTime> lowered;   ///< compared rows, by lowering
-  /// s, of each lowered row's prediction error: its own standard error and the standard
-  /// row's, carried by the calibrated time scale (sqrt(se^2 + (T_d / T_0)^2 se_0^2))
-  std::vector<double> standardErrors;
-  /// L^-1, L the Cholesky factor of the rows' error covariance diag(se^2) + v v'
-  /// (v_k = (T_k / T_0) se_0): whitens a residual vector (generalized least squares).
-  Eigen::MatrixXd whitening;
-  /// The independent samples the rows' RMS error is worth, (tr C)^2 / tr C^2 (Satterthwaite).
-  double effectiveRows = 0;
-  double standardRowError = 0;              ///< s, of the standard row
-  bool inModel = true;
-  std::string outside;                      ///< why not in the model
-};
 
 class SweepPlant final : public DiagnosisPlant {
  public:

@@ -1,5 +1,6 @@
-// One unit of ~700 lines: the swing plant's model (knee law, effects, the reference swing
-// along a record), its pose fits and its comparisons share the record-level helpers here.
+// The swing plant: its refits (the model's free parameters and every record's toe-off pose),
+// its comparisons and its checks. The model along a record is identify/swing_model.h, the
+// candidate effects identify/swing_effects.h.
 #include "identify/swing_plant.h"
 
 #include <Eigen/Dense>
@@ -28,204 +29,14 @@ std::string fmt(double v, const char* f = "%.3g") {
   return buf;
 }
 
-// The measured thigh of a record, as the thigh drive prescribes it; with `movingHip`, the
-// measured pelvis too (the hip then follows it).
-ThighKinematics thighKinematicsOf(const SwingRecord& r, bool movingHip) {
-  ThighKinematics t;
-  t.path = r.path;
-  t.time = r.time;
-  t.hipFlexion = r.hipFlexion;
-  if (movingHip) {
-    t.pelvisX = r.pelvisX;
-    t.pelvisY = r.pelvisY;
-    t.pelvisTilt = r.pelvisTilt;
-  }
-  return t;
-}
-
-// The hip path of a record under the thigh drive; nullopt: the hip is fixed.
-std::optional<HipPath> hipPathOf(const SwingBase& base, const ThighKinematics& thigh) {
-  if (base.drive != SwingDrive::kThighKinematics || !HipPath::hasPelvis(thigh)) return std::nullopt;
-  return HipPath(thigh, base.participant.hipOffsetInPelvis, base.participant.path);
-}
-
-void requireSwingEffect(EffectId effect) {
-  if (describeEffect(effect).plant != PlantKind::kSwing)
-    throw std::invalid_argument("not a swing effect: " + describeEffect(effect).name);
-}
-
 }  // namespace
 
-bool SwingEffects::has(EffectId effect) const {
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction: return coulomb;
-    case EffectId::kKneeViscousDamping: return viscous;
-    case EffectId::kExtensionAssistSpring: return assist;
-    case EffectId::kToeOffVelocity: return toeOff;
-    case EffectId::kHipMomentScale: return hipScale;
-    case EffectId::kShankMassScale: return shankScale;
-    case EffectId::kBelowKneeMassScale: return belowKneeScale;
-    default: return false;
-  }
-}
-
 const SwingModelParams& swingParams(const PlantModel& model) { return plantModelParams<SwingModelParams>(model); }
-
-SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect, double gridValue) {
-  requireSwingEffect(effect);
-  SwingModelParams p = params;
-  auto& e = p.effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction:
-      e.coulomb = true;
-      e.knee.coulombMoment = 0;
-      e.knee.coulombSmoothingRate = gridValue;
-      break;
-    case EffectId::kKneeViscousDamping:
-      e.viscous = true;
-      e.knee.viscousDamping = 0;
-      break;
-    case EffectId::kExtensionAssistSpring:
-      e.assist = true;
-      e.knee.assistStiffness = 0;
-      break;
-    case EffectId::kToeOffVelocity:
-      e.toeOff = true;
-      e.toeOffHipRate = e.toeOffKneeRate = 0;
-      break;
-    case EffectId::kHipMomentScale:
-      e.hipScale = true;
-      e.hipMomentScale = 1;
-      break;
-    case EffectId::kShankMassScale:
-      e.shankScale = true;
-      e.shankMassScale = 1;
-      break;
-    case EffectId::kBelowKneeMassScale:
-      e.belowKneeScale = true;
-      e.belowKneeMassScale = 1;
-      break;
-    default:
-      break;
-  }
-  return p;
-}
-
-KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& params) {
-  // The model's law: its resisting parts scaled, then added effects, its stop, then Tc.
-  const KneeLawSum& model = base.knee.law;
-  KneeLawSum law;
-  for (std::size_t i = 0; i + 1 < model.size(); ++i)
-    law.add(std::make_unique<ScaledKneeLaw>(model.part(i), params.kneeModelScale));
-  if (params.effects.knee.any()) law.add(std::make_unique<KneeAddedEffects>(params.effects.knee));
-  if (model.size() > 0) law.add(model.part(model.size() - 1).clone());
-  KneeModel stopless;  // makeKneeLaw adds the participant's Tc
-  stopless.law = law;
-  return makeKneeLaw(base.participant, stopless);
-}
-
-Participant applyParticipantEffects(const Participant& participant, const SwingEffects& e) {
-  Participant p = participant;
-  if (e.shankScale) {
-    p.shank.mass *= e.shankMassScale;
-    p.shank.inertia *= e.shankMassScale;
-  }
-  if (e.belowKneeScale) {
-    p.shank.mass *= e.belowKneeMassScale;
-    p.shank.inertia *= e.belowKneeMassScale;
-    p.foot.mass *= e.belowKneeMassScale;
-    p.foot.inertia *= e.belowKneeMassScale;
-  }
-  if (e.toeOff) {
-    p.initial.hipFlexionRate = e.toeOffHipRate;
-    p.initial.kneeFlexionRate = e.toeOffKneeRate;
-  }
-  if (e.hipScale) {
-    p.hipMoment.flexionAmplitude *= e.hipMomentScale;
-    p.hipMoment.extensionAmplitude *= e.hipMomentScale;
-    for (double& m : p.hipMoment.moments) m *= e.hipMomentScale;
-  }
-  return p;
-}
-
-SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance, const ThighMotion* thigh,
-                             const HipPath* hip) {
-  const auto& e = params.effects;
-  const Participant participant = applyParticipantEffects(base.participant, e);
-  const LegGeometry geometry = calcLegGeometry(participant, 0.0);
-  const KneeLawSum law = makeSwingKneeLaw(base, params);
-  InitialConditions initial;
-  std::optional<ReferenceSwing> swing;
-  std::optional<ThighMotion> ownThigh;
-  std::optional<HipPath> ownHip;
-  if (base.drive == SwingDrive::kThighKinematics) {
-    if (thigh == nullptr) {
-      const ThighKinematics kinematics = thighKinematicsOf(record, base.movingHip);
-      thigh = &ownThigh.emplace(kinematics);
-      ownHip = hipPathOf(base, kinematics);
-      if (ownHip) hip = &*ownHip;
-    }
-    initial.kneeFlexion = kneePose;
-    initial.kneeFlexionRate = hipPose;  // the knee's toe-off rate (the hip's is the thigh's)
-    if (hip != nullptr)
-      swing.emplace(geometry, law, *thigh, *hip);
-    else
-      swing.emplace(geometry, law, *thigh);
-  } else {
-    HipMomentProfile drive;
-    drive.kind = HipMomentProfile::Kind::kTable;
-    drive.times = record.time;
-    drive.moments = record.hipMoment;
-    if (e.hipScale)
-      for (double& m : drive.moments) m *= e.hipMomentScale;
-    initial.hipFlexion = hipPose;
-    initial.kneeFlexion = kneePose;
-    initial.hipFlexionRate = e.toeOff ? e.toeOffHipRate : 0.0;
-    initial.kneeFlexionRate = e.toeOff ? e.toeOffKneeRate : 0.0;
-    swing.emplace(geometry, law, drive, participant.hipRange);
-  }
-  ReferenceTrajectory tr;
-  try {
-    tr = swing->integrate(initial, record.time, tolerance, tolerance);
-  } catch (const std::runtime_error& ex) {
-    throw RunError(std::string("swing model along ") + record.stem + ": " + ex.what());
-  }
-  return {tr.hipFlexion, tr.kneeFlexion, tr.kneeFlexionRate, tr.hipMoment, tr.kneeMoment};
-}
-
-std::vector<std::string> swingPhaseNames() { return {"early flexion", "late extension", "terminal/stop contact"}; }
-
-double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, EffectId effect,
-                          const SwingRecord& record) {
-  requireSwingEffect(effect);
-  SwingModelParams without = truth;
-  auto& e = without.effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction: e.coulomb = false, e.knee.coulombMoment = 0; break;
-    case EffectId::kKneeViscousDamping: e.viscous = false, e.knee.viscousDamping = 0; break;
-    case EffectId::kExtensionAssistSpring: e.assist = false, e.knee.assistStiffness = 0; break;
-    case EffectId::kToeOffVelocity: e.toeOff = false; break;
-    case EffectId::kHipMomentScale: e.hipScale = false; break;
-    case EffectId::kShankMassScale: e.shankScale = false; break;
-    case EffectId::kBelowKneeMassScale: e.belowKneeScale = false; break;
-    default: break;
-  }
-  const auto& init = base.participant.initial;
-  const double first = base.drive == SwingDrive::kThighKinematics ? init.kneeFlexionRate : init.hipFlexion;
-  const auto a = predictSwing(base, truth, record, first, init.kneeFlexion);
-  const auto b = predictSwing(base, without, record, first, init.kneeFlexion);
-  double s = 0;
-  for (std::size_t i = 0; i < a.kneeFlexion.size(); ++i) s += std::pow((a.kneeFlexion[i] - b.kneeFlexion[i]) * kRadToDeg, 2);
-  return std::sqrt(s / static_cast<double>(a.kneeFlexion.size()));
-}
 
 namespace {
 
 // ---- The free parameters as one vector ------------------------------------------------
-// Bounds are physics, not data: a friction, damper or assist spring cannot push the wrong
-// way (lower bound 0); scales of a gain or a mass stay positive and within 10x (log-scaled);
-// toe-off rates within 20 rad/s (about 3x the peak swing knee rate). docs/diagnosis.md.
+// The knee model's scale, then every present effect's values in record order.
 struct Slot {
   std::optional<EffectId> effect;  // none: the base model's knee scale
   BoundedParameter bounds;         // start value filled in by the fit
@@ -233,36 +44,16 @@ struct Slot {
   std::function<double&(SwingModelParams&)> ref;
 };
 
-BoundedParameter linear(double lower, double upper, double typical) { return {"", 0.0, lower, upper, false, typical}; }
-BoundedParameter logScaled(double lower, double upper) { return {"", 1.0, lower, upper, true, 1.0}; }
-
 std::vector<Slot> slotsOf(const SwingEffects& e) {
   std::vector<Slot> s;
-  s.push_back({std::nullopt, logScaled(0.05, 20.0), 1.0, [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
-  if (e.coulomb)
-    s.push_back({EffectId::kKneeCoulombFriction, linear(0.0, 50.0, 1.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.knee.coulombMoment; }});
-  if (e.viscous)
-    s.push_back({EffectId::kKneeViscousDamping, linear(0.0, 50.0, 0.5), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.knee.viscousDamping; }});
-  if (e.assist)
-    s.push_back({EffectId::kExtensionAssistSpring, linear(0.0, 500.0, 5.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.knee.assistStiffness; }});
-  if (e.toeOff) {
-    s.push_back({EffectId::kToeOffVelocity, linear(-20.0, 20.0, 1.0), kRadToDeg,
-                 [](SwingModelParams& p) -> double& { return p.effects.toeOffHipRate; }});
-    s.push_back({EffectId::kToeOffVelocity, linear(-20.0, 20.0, 1.0), kRadToDeg,
-                 [](SwingModelParams& p) -> double& { return p.effects.toeOffKneeRate; }});
-  }
-  if (e.hipScale)
-    s.push_back({EffectId::kHipMomentScale, logScaled(0.1, 10.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.hipMomentScale; }});
-  if (e.shankScale)
-    s.push_back({EffectId::kShankMassScale, logScaled(0.1, 10.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.shankMassScale; }});
-  if (e.belowKneeScale)
-    s.push_back({EffectId::kBelowKneeMassScale, logScaled(0.1, 10.0), 1.0,
-                 [](SwingModelParams& p) -> double& { return p.effects.belowKneeMassScale; }});
+  // The knee model's scale: positive, within 20x down and up (log-scaled).
+  s.push_back({std::nullopt, {"", 1.0, 0.05, 20.0, true, 1.0}, 1.0,
+               [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
+  for (const auto& record : swingEffectRecords())
+    if (e.has(record.id))
+      for (const auto& slot : record.slots)
+        s.push_back({record.id, slot.bounds, slot.reportScale,
+                     [value = slot.value](SwingModelParams& p) -> double& { return value(p.effects); }});
   return s;
 }
 
@@ -311,6 +102,64 @@ double kneeRmse(const SwingRecord& r, const SwingPrediction& p) {
   double s = 0;
   for (std::size_t i = 0; i < r.time.size(); ++i) s += std::pow((r.kneeFlexion[i] - p.kneeFlexion[i]) * kRadToDeg, 2);
   return std::sqrt(s / static_cast<double>(r.time.size()));
+}
+
+// The training residuals of a fit, record by record: the knee's (reported, with phases from
+// the fitted model's knee) and the likelihood's knee and hip segments; the samples and the
+// training RMSE of the knee.
+void addTrainingResiduals(const std::vector<SwingRecord>& train, std::size_t rowsPerSample, double zone,
+                          const BoundedFitResult& lm, PlantFit& s) {
+  double kneeRss = 0;
+  std::size_t kneeSamples = 0;
+  Eigen::Index row = 0;
+  for (std::size_t f = 0; f < train.size(); ++f) {
+    std::vector<double> knee, hip;
+    for (std::size_t i = 0; i < train[f].time.size(); ++i) {
+      knee.push_back(lm.residual[row++]);
+      if (rowsPerSample == 2) hip.push_back(lm.residual[row++]);
+      kneeRss += knee.back() * knee.back();
+    }
+    kneeSamples += knee.size();
+    s.samples += knee.size() + hip.size();
+    // Phases from the fitted model's knee (measured minus residual).
+    std::vector<double> modelKnee;
+    for (std::size_t i = 0; i < knee.size(); ++i) modelKnee.push_back(train[f].kneeFlexion[i] - knee[i] * kDegToRad);
+    s.trainPhase.push_back(phasesOf(modelKnee, zone));
+    s.trainResidual.push_back(knee);
+    s.likelihoodResidual.push_back(knee);
+    if (!hip.empty()) s.likelihoodResidual.push_back(hip);
+  }
+  s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
+}
+
+// Every free parameter: its standard error (from the fit's covariance, s^2 (J'J)^+), its
+// name for the confound check, and a note if it sits on its physical bound. The per-record
+// poses after the slots are nuisance parameters and left out.
+void addSlotParameters(const std::vector<Slot>& slots, const BoundedFitResult& lm, double kneeModelScale, PlantFit& s) {
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
+    if (!slots[k].effect) {
+      s.baseParameters.push_back({"knee_model_scale", kneeModelScale, se, slots[k].bounds.lower,
+                                  slots[k].bounds.upper});
+      s.parameterNames.push_back("knee_model_scale");
+      continue;
+    }
+    auto it = std::find_if(s.effectErrors.begin(), s.effectErrors.end(),
+                           [&](const auto& entry) { return entry.first == *slots[k].effect; });
+    if (it == s.effectErrors.end()) {
+      it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
+      s.effectBounds.push_back({*slots[k].effect, {}});
+    }
+    const auto& d = describeEffect(*slots[k].effect);
+    const std::string name = d.name + "." + d.parameters[it->second.size()];  // the effect's parameters in order
+    it->second.push_back(se);
+    s.effectBounds[static_cast<std::size_t>(it - s.effectErrors.begin())].second.push_back(
+        {slots[k].bounds.lower * slots[k].reportScale, slots[k].bounds.upper * slots[k].reportScale});
+    s.parameterNames.push_back(name);
+    if (lm.atBound[k])
+      s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
+                        ")");
+  }
 }
 
 }  // namespace
@@ -415,55 +264,9 @@ PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> held
   const SwingModelParams fitted = paramsAt(lm.x);
   s.model = std::make_shared<SwingModel>(fitted);
   s.rss = lm.cost;
-  double kneeRss = 0;
-  std::size_t kneeSamples = 0;
-  Eigen::Index row = 0;
-  for (std::size_t f = 0; f < train_.size(); ++f) {
-    std::vector<double> knee, hip;
-    for (std::size_t i = 0; i < train_[f].time.size(); ++i) {
-      knee.push_back(lm.residual[row++]);
-      if (rowsPerSample() == 2) hip.push_back(lm.residual[row++]);
-      kneeRss += knee.back() * knee.back();
-    }
-    kneeSamples += knee.size();
-    s.samples += knee.size() + hip.size();
-    // Phases from the fitted model's knee (measured minus residual).
-    std::vector<double> modelKnee;
-    for (std::size_t i = 0; i < knee.size(); ++i) modelKnee.push_back(train_[f].kneeFlexion[i] - knee[i] * kDegToRad);
-    s.trainPhase.push_back(phasesOf(modelKnee, base_.participant.swingEnd.zoneOfStability));
-    s.trainResidual.push_back(knee);
-    s.likelihoodResidual.push_back(knee);
-    if (!hip.empty()) s.likelihoodResidual.push_back(hip);
-  }
-  s.trainRmse = std::sqrt(kneeRss / static_cast<double>(kneeSamples));
-  // Every free parameter: its standard error (from the fit's covariance, s^2 (J'J)^+), its
-  // name for the confound check, and a note if it sits on its physical bound. The
-  // per-record poses after the slots are nuisance parameters and left out.
+  addTrainingResiduals(train_, rowsPerSample(), base_.participant.swingEnd.zoneOfStability, lm, s);
   s.correlation = lm.correlation().topLeftCorner(g, g);
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
-    if (!slots[k].effect) {
-      s.baseParameters.push_back({"knee_model_scale", fitted.kneeModelScale, se, slots[k].bounds.lower,
-                                  slots[k].bounds.upper});
-      s.parameterNames.push_back("knee_model_scale");
-      continue;
-    }
-    auto it = std::find_if(s.effectErrors.begin(), s.effectErrors.end(),
-                           [&](const auto& entry) { return entry.first == *slots[k].effect; });
-    if (it == s.effectErrors.end()) {
-      it = s.effectErrors.insert(s.effectErrors.end(), {*slots[k].effect, {}});
-      s.effectBounds.push_back({*slots[k].effect, {}});
-    }
-    const auto& d = describeEffect(*slots[k].effect);
-    const std::string name = d.name + "." + d.parameters[it->second.size()];  // the effect's parameters in order
-    it->second.push_back(se);
-    s.effectBounds[static_cast<std::size_t>(it - s.effectErrors.begin())].second.push_back(
-        {slots[k].bounds.lower * slots[k].reportScale, slots[k].bounds.upper * slots[k].reportScale});
-    s.parameterNames.push_back(name);
-    if (lm.atBound[k])
-      s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
-                        ")");
-  }
+  addSlotParameters(slots, lm, fitted.kneeModelScale, s);
   if (!heldScale)  // a profile point needs the training RSS only
     for (std::size_t v = 0; v < validate_.size(); ++v)
       s.validationRmse.push_back(kneeRmse(validate_[v], fitPose(fitted, train_.size() + v).prediction));
@@ -471,12 +274,9 @@ PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> held
 }
 
 std::string SwingPlant::checkApplicable(const PlantModel& model, EffectId effect) const {
-  requireSwingEffect(effect);
+  const SwingEffectRecord& r = findSwingEffectRecord(effect);
   if (swingParams(model).effects.has(effect)) return "already in the model";
-  if (base_.drive == SwingDrive::kThighKinematics && effect == EffectId::kHipMomentScale)
-    return "the measured thigh drives the swing: no hip moment to scale";
-  if (base_.drive == SwingDrive::kThighKinematics && effect == EffectId::kToeOffVelocity)
-    return "the measured thigh drives the swing: its toe-off rate is measured and the knee's is fitted per record";
+  if (base_.drive == SwingDrive::kThighKinematics) return r.notUnderThighDrive;
   return "";
 }
 
@@ -486,85 +286,16 @@ PlantModelPtr SwingPlant::addEffect(const PlantModel& model, EffectId effect, do
 
 PlantModelPtr SwingPlant::combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const {
   SwingModelParams p = swingParams(a);
-  const SwingEffects& f = swingParams(b).effects;
-  auto& e = p.effects;
-  switch (effectOfB) {
-    case EffectId::kKneeCoulombFriction:
-      e.coulomb = true;
-      e.knee.coulombMoment = f.knee.coulombMoment;
-      e.knee.coulombSmoothingRate = f.knee.coulombSmoothingRate;
-      break;
-    case EffectId::kKneeViscousDamping:
-      e.viscous = true;
-      e.knee.viscousDamping = f.knee.viscousDamping;
-      break;
-    case EffectId::kExtensionAssistSpring:
-      e.assist = true;
-      e.knee.assistStiffness = f.knee.assistStiffness;
-      break;
-    case EffectId::kToeOffVelocity:
-      e.toeOff = true;
-      e.toeOffHipRate = f.toeOffHipRate;
-      e.toeOffKneeRate = f.toeOffKneeRate;
-      break;
-    case EffectId::kHipMomentScale:
-      e.hipScale = true;
-      e.hipMomentScale = f.hipMomentScale;
-      break;
-    case EffectId::kShankMassScale:
-      e.shankScale = true;
-      e.shankMassScale = f.shankMassScale;
-      break;
-    case EffectId::kBelowKneeMassScale:
-      e.belowKneeScale = true;
-      e.belowKneeMassScale = f.belowKneeMassScale;
-      break;
-    default:
-      break;
-  }
+  p.effects = copySwingEffect(p.effects, swingParams(b).effects, effectOfB);
   return std::make_shared<SwingModel>(p);
 }
 
 std::vector<double> SwingPlant::effectValues(const PlantModel& model, EffectId effect) const {
-  const auto& e = swingParams(model).effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction: return {e.knee.coulombMoment, e.knee.coulombSmoothingRate * kRadToDeg};
-    case EffectId::kKneeViscousDamping: return {e.knee.viscousDamping};
-    case EffectId::kExtensionAssistSpring: return {e.knee.assistStiffness};
-    case EffectId::kToeOffVelocity: return {e.toeOffHipRate * kRadToDeg, e.toeOffKneeRate * kRadToDeg};
-    case EffectId::kHipMomentScale: return {e.hipMomentScale};
-    case EffectId::kShankMassScale: return {e.shankMassScale};
-    case EffectId::kBelowKneeMassScale: return {e.belowKneeMassScale};
-    default: return {};
-  }
+  return swingEffectValues(swingParams(model).effects, effect);
 }
 
 bool SwingPlant::checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const {
-  const auto& e = swingParams(model).effects;
-  switch (effect) {
-    case EffectId::kKneeCoulombFriction:
-      note = "friction must oppose knee motion (moment_Nm > 0): " + fmt(e.knee.coulombMoment) + " N m";
-      return e.knee.coulombMoment > 0;
-    case EffectId::kKneeViscousDamping:
-      note = "a passive damper must resist knee motion (> 0): " + fmt(e.knee.viscousDamping) + " N m s/rad";
-      return e.knee.viscousDamping > 0;
-    case EffectId::kExtensionAssistSpring:
-      note = "the spring must pull towards extension (stiffness > 0): " + fmt(e.knee.assistStiffness) + " N m/rad";
-      return e.knee.assistStiffness > 0;
-    case EffectId::kToeOffVelocity:
-      note = "energy released by the foot must flex the knee (knee rate > 0): " + fmt(e.toeOffKneeRate * kRadToDeg) +
-             " deg/s";
-      return e.toeOffKneeRate > 0;
-    case EffectId::kHipMomentScale:
-      note = "a gain error cannot reverse the moment (scale > 0): " + fmt(e.hipMomentScale);
-      return e.hipMomentScale > 0;
-    case EffectId::kBelowKneeMassScale:
-      note = "mass must stay positive (scale > 0): " + fmt(e.belowKneeMassScale);
-      return e.belowKneeMassScale > 0;
-    default:
-      note = "mass must stay positive (scale > 0): " + fmt(e.shankMassScale);
-      return e.shankMassScale > 0;
-  }
+  return findSwingEffectRecord(effect).isPhysical(swingParams(model).effects, note);
 }
 
 Comparison SwingPlant::compare(const PlantModel& model) const {
@@ -641,9 +372,7 @@ std::string SwingPlant::verify(const PlantModel& model) const {
       setup.participant.hipMoment = {};
       setup.participant.hipMoment.kind = HipMomentProfile::Kind::kTable;
       setup.participant.hipMoment.times = r.time;
-      setup.participant.hipMoment.moments = r.hipMoment;
-      if (params.effects.hipScale)
-        for (double& m : setup.participant.hipMoment.moments) m *= params.effects.hipMomentScale;
+      setup.participant.hipMoment.moments = applyHipDriveEffects(params.effects, r.hipMoment);
       setup.participant.initial.hipFlexion = pose.first;
     }
     // Along the record: the swing need not end inside it (a trial cut at heel contact).

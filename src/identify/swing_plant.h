@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include "identify/diagnosis_engine.h"
+#include "identify/swing_model.h"
 #include "knee/knee_added_effects.h"
 #include "leg/hip_path.h"
 #include "leg/thigh_motion.h"
@@ -23,83 +24,10 @@
 
 namespace swingsim {
 
-/// The swing effects of a model (off = absent).
-struct SwingEffects {
-  bool coulomb = false, viscous = false, assist = false, toeOff = false, hipScale = false, shankScale = false,
-       belowKneeScale = false;
-  KneeAddedEffectsParams knee;                   ///< friction, damping, spring values
-  double toeOffHipRate = 0, toeOffKneeRate = 0;  ///< rad/s at toe-off
-  double hipMomentScale = 1;                     ///< multiplies the measured hip moment
-  double shankMassScale = 1;                     ///< multiplies shank mass and inertia
-  double belowKneeMassScale = 1;                 ///< multiplies shank and foot masses and inertias
-  /// Whether `effect` (a swing effect of the table) is on.
-  bool has(EffectId effect) const;
-};
-
-/// The swing model: participant + knee model, with its free parameters.
-struct SwingModelParams {
-  /// The base model's free parameter: a scale on the knee model's resisting law (the
-  /// damping table or cylinder; not the stop, not Tc). Burkett's damping table is an
-  /// assumption, so a user rarely knows it; refitted with every candidate.
-  double kneeModelScale = 1.0;
-  SwingEffects effects;
-};
-
 /// A swing model as the engine carries it.
 using SwingModel = PlantModelOf<SwingModelParams>;
 /// The parameters inside an engine model of the swing plant.
 const SwingModelParams& swingParams(const PlantModel& model);
-
-/// Everything fixed: the participant (geometry, Tc, hip range, zone of stability) and the
-/// knee model.
-struct SwingBase {
-  Participant participant;
-  KneeModel knee;
-  /// kHipMoment: each record's measured hip moment drives the leg (the record must have
-  /// one). kThighKinematics: each record's measured hip angle is prescribed on the hip
-  /// (measured thigh drive); the hip then fits exactly, so the likelihood uses the knee only, and
-  /// each record's free toe-off state is the knee's angle and rate (the hip's come from
-  /// the measured thigh).
-  SwingDrive drive = SwingDrive::kHipMoment;
-  /// Warnings about the records found while reading them (a flipped knee sign, a pelvis
-  /// tilt left unread), each naming the key that fixes it: the plant's warnings().
-  std::vector<std::string> notes;
-  /// Thigh drive: a record with the measured pelvis moves the hip along it (the participant's
-  /// hip_offset_in_pelvis_m places the hip in the pelvis); false pins the hip in space.
-  bool movingHip = true;
-};
-
-/// `params` with `effect` switched on (value 0 or scale 1; `gridValue`: the friction
-/// smoothing, rad/s).
-SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect, double gridValue);
-
-/// Knee law of the model: scaled model law + added effects + stop + participant Tc.
-KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& params);
-/// The participant with the participant-level effects applied (shank mass and inertia,
-/// toe-off rates, hip moment profile amplitude).
-Participant applyParticipantEffects(const Participant& participant, const SwingEffects& effects);
-
-/// Model hip and knee flexion (rad) at the record's times from toe-off pose `hipPose`,
-/// `kneePose` (rad), driven by the record's hip moment, or with base.drive ==
-/// kThighKinematics by its hip angle (`thigh`: that angle's spline, made from the record if
-/// null; `hipPose` is then the knee's toe-off rate, rad/s). `tolerance`: the reference
-/// integrator's relative and absolute tolerance. Throws RunError if the integration fails.
-struct SwingPrediction {
-  std::vector<double> hipFlexion, kneeFlexion, kneeFlexionRate;
-  std::vector<double> hipMoment, kneeMoment;  ///< N m, + = flexion: the drive's (or the one the thigh needs) and the knee law's
-};
-SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance = 1e-8, const ThighMotion* thigh = nullptr,
-                             const HipPath* hip = nullptr);
-
-/// Phases from the swing events of the model's knee: early flexion (toe-off to peak knee
-/// flexion), late extension (peak to entering the zone of stability), terminal/stop contact.
-std::vector<std::string> swingPhaseNames();
-
-/// Knee flexion RMS (deg) of `effect` in `truth` along a record: truth minus truth without
-/// it, same pose. The "effect size" of a hidden effect.
-double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, EffectId effect,
-                          const SwingRecord& record);
 
 class SwingPlant final : public DiagnosisPlant {
  public:

@@ -1,0 +1,177 @@
+// Scoring one candidate effect on top of the current model: its refit (with its grid
+// parameter profiled), the likelihood-ratio test and held-out errors, its parameters with
+// their intervals, whether the records carry information on it, its physical sign and where
+// the error fell.
+#include "identify/candidate_score.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/input_error.h"
+#include "numerics/profile_likelihood.h"
+
+namespace swingsim {
+
+namespace {
+
+// chi^2(1) 95 % quantile, for the profile-likelihood interval of a grid parameter.
+const double kChi2One95 = calcChiSquaredQuantile(0.95, 1);
+
+std::string fmtPercent(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f", v);
+  return buf;
+}
+
+// A likelihood gain below this is none: the chi^2(1) tail at 0.1 is 0.75, and the refits'
+// own convergence (each record's pose refitted from its start) moves an LR by ~0.01.
+constexpr double kNoLikelihoodGain = 0.1;
+// A Wald interval wider than this many physical ranges comes from a Jacobian column that is
+// round-off: across its whole range the parameter moves the fit by less than a hundredth of
+// what the interval's edge means.
+constexpr double kEnormousRanges = 100;
+
+// The grid parameter's interval: the grid values inside the profile likelihood's 95 %
+// region (fits[g] at grid[g], fits[best] the profile's best). The fitted parameters'
+// intervals are conditional on the grid value: their union over every grid value in that
+// region, so the grid choice cannot narrow them.
+void widenOverGridRegion(const DiagnosisPlant& plant, const std::vector<PlantFit>& fits, const std::vector<double>& grid,
+                         std::size_t best, double nEff, EffectId id, double inflate, std::vector<EffectParameter>& parameters) {
+  const EffectDescriptor& d = describeEffect(id);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t g = 0; g < grid.size(); ++g) {
+    if (!(nEff * std::log(fits[g].rss / fits[best].rss) <= kChi2One95)) continue;
+    lo = std::min(lo, grid[g] * d.gridReportScale);
+    hi = std::max(hi, grid[g] * d.gridReportScale);
+    const auto others = parametersWithIntervals(plant, fits[g], id, inflate);
+    for (std::size_t k = 0; k < others.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
+      parameters[k].lower = std::min(parameters[k].lower, others[k].lower);
+      parameters[k].upper = std::max(parameters[k].upper, others[k].upper);
+    }
+  }
+  parameters.back().lower = lo;
+  parameters.back().upper = hi;
+}
+
+// Where the squared error fell most from `current` to `fit`, by the current model's phases
+// (`names`): "late extension (62 % of the error fall)".
+std::string describeErrorFall(const std::vector<std::string>& names, const PlantFit& current, const PlantFit& s) {
+  std::vector<double> fall(names.size(), 0.0);
+  double totalFall = 0;
+  for (std::size_t f = 0; f < current.trainResidual.size() && f < s.trainResidual.size(); ++f)
+    for (std::size_t i = 0; i < current.trainResidual[f].size() && i < s.trainResidual[f].size(); ++i) {
+      const double drop = current.trainResidual[f][i] * current.trainResidual[f][i] - s.trainResidual[f][i] * s.trainResidual[f][i];
+      fall[static_cast<std::size_t>(current.trainPhase[f][i])] += drop;
+      totalFall += drop;
+    }
+  const auto where = static_cast<std::size_t>(std::max_element(fall.begin(), fall.end()) - fall.begin());
+  return names[where] + (totalFall > 0 ? " (" + fmtPercent(100.0 * fall[where] / totalFall) + " % of the error fall)" : "");
+}
+
+}  // namespace
+
+const std::vector<double>* findErrors(const PlantFit& fit, EffectId id) {
+  for (const auto& [effect, errors] : fit.effectErrors)
+    if (effect == id) return &errors;
+  return nullptr;
+}
+
+std::vector<EffectParameter> parametersWithIntervals(const DiagnosisPlant& plant, const PlantFit& fit, EffectId id,
+                                                     double inflate) {
+  const EffectDescriptor& d = describeEffect(id);
+  const std::vector<double> values = plant.effectValues(*fit.model, id);
+  std::vector<EffectParameter> out;
+  for (std::size_t k = 0; k < d.parameters.size() && k < values.size(); ++k)
+    out.push_back({d.parameters[k], values[k], values[k], values[k], ""});
+  if (const auto* se = findErrors(fit, id))
+    for (std::size_t k = 0; k < se->size() && k < out.size() && static_cast<int>(k) < d.fittedParameters; ++k)
+      setNormalInterval(out[k], (*se)[k] * inflate);
+  return out;
+}
+
+bool carriesInformation(const DiagnosisPlant& plant, const PlantFit& current, const PlantFit& fit, EffectId id,
+                        double gridValue, double lr, const std::vector<EffectParameter>& wald, double inflate) {
+  const EffectDescriptor& d = describeEffect(id);
+  if (d.fittedParameters == 0) return true;  // a grid alone: its profile is the information
+  const std::vector<double> neutral = plant.effectValues(*plant.addEffect(*current.model, id, gridValue), id);
+  const std::vector<double>* errors = findErrors(fit, id);
+  const std::vector<std::pair<double, double>>* bounds = nullptr;
+  for (const auto& [effect, b] : fit.effectBounds)
+    if (effect == id) bounds = &b;
+  bool atNeutral = true, saysNothing = true, enormous = true;
+  for (std::size_t k = 0; k < wald.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
+    if (k >= neutral.size() || wald[k].value != neutral[k]) atNeutral = false;
+    const double se = errors && k < errors->size() ? (*errors)[k] * inflate : std::numeric_limits<double>::quiet_NaN();
+    // NaN: not computed (a coefficient the active set holds at its bound), which says nothing
+    // either way; 0 or infinite: a column of the Jacobian the covariance dropped or cannot fix.
+    const bool degenerate = se == 0 || std::isinf(se);
+    const bool hasRange = bounds && k < bounds->size() && std::isfinite((*bounds)[k].second - (*bounds)[k].first);
+    const bool coversRange = hasRange && wald[k].lower <= (*bounds)[k].first && wald[k].upper >= (*bounds)[k].second;
+    if (!degenerate && !coversRange) saysNothing = false;
+    if (!degenerate && !(hasRange && wald[k].upper - wald[k].lower > kEnormousRanges * ((*bounds)[k].second - (*bounds)[k].first)))
+      enormous = false;
+  }
+  const bool movesNothing = atNeutral || !(std::abs(lr) > kNoLikelihoodGain) || enormous;
+  return !(saysNothing && movesNothing);
+}
+
+CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& current, EffectId id,
+                              const EffectSelectionSettings& settings, PlantFit* bestOut) {
+  const EffectDescriptor& d = describeEffect(id);
+  CandidateScore c;
+  c.id = id;
+  c.effect = d.name;
+  c.notApplicable = plant.checkApplicable(*current.model, id);
+  if (!c.notApplicable.empty()) return c;
+  const std::vector<double> grid = d.grid.empty() ? std::vector<double>{0.0} : d.grid;
+  std::vector<PlantFit> fits;
+  std::size_t best = 0;
+  for (double g : grid) {
+    try {
+      fits.push_back(plant.fit(*plant.addEffect(*current.model, id, g)));
+    } catch (const RunError& e) {
+      c.notApplicable = e.what();
+      return c;
+    }
+    if (fits.back().rss < fits[best].rss) best = fits.size() - 1;
+  }
+  const PlantFit& s = fits[best];
+  const int dof = d.degreesOfFreedom();
+  LrTest t = calcLrTest(current.rss, s.rss, s.likelihoodResidual, dof);
+  // Cross-validated plants: significant on the training rows of every fold, so the test
+  // that counts is the least significant fold's.
+  if (!s.foldRss.empty() && s.foldRss.size() == current.foldRss.size() && s.foldResidual.size() == s.foldRss.size()) {
+    for (std::size_t f = 0; f < s.foldRss.size(); ++f) {
+      const LrTest fold = calcLrTest(current.foldRss[f], s.foldRss[f], s.foldResidual[f], dof);
+      c.foldPValues.push_back(fold.p);
+      if (f == 0 || !(fold.p <= t.p)) t = fold;  // NaN counts as the least significant
+    }
+  }
+  c.model = s.model;
+  c.trainRmse = s.trainRmse;
+  c.validationRmse = s.validationRmse;
+  c.pooledValidationRmse = s.pooledValidationRmse;
+  applyTestAndValidation(c, t, dof, current.validationRmse, settings, current.pooledValidationRmse);
+  const double inflate = calcStandardErrorInflation(static_cast<double>(s.samples), t.nEff);
+  c.parameters = parametersWithIntervals(plant, s, id, inflate);
+  c.informative = carriesInformation(plant, current, s, id, grid[best], t.lr, c.parameters, inflate);
+  if (!c.informative) {
+    // No interval: any value of the physical range fits these records as well as any other.
+    for (auto& p : c.parameters) {
+      p.lower = p.upper = std::numeric_limits<double>::quiet_NaN();
+      p.intervalNote = kNoInformation;
+    }
+  } else if (!d.grid.empty()) {
+    widenOverGridRegion(plant, fits, grid, best, t.nEff, id, inflate, c.parameters);
+  }
+  c.physical = plant.checkPhysical(*s.model, id, c.physicalNote);
+  c.physicalNote += c.physical ? " (ok)" : " (wrong sign)";
+  c.where = describeErrorFall(plant.phaseNames(*current.model), current, s);
+  for (const auto& r : s.trainResidual) c.trainResidual.insert(c.trainResidual.end(), r.begin(), r.end());
+  if (bestOut) *bestOut = s;
+  return c;
+}
+
+}  // namespace swingsim

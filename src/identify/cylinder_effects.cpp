@@ -1,0 +1,182 @@
+#include "identify/cylinder_effects.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/input_error.h"
+
+namespace swingsim {
+
+namespace {
+
+// Latch rate of Chien 2014 (k = 1e4 /s): the no-delay reference for switch_delay.
+constexpr double kPublishedLatchRate = 1e4;
+
+std::string fmt(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+// Chien 2014's 4-phase model produced by a hyperextension phase on a 2-phase model (Chien
+// 2014 Eqs. 2 and 11): the 2-phase gates times S8 plus S7 = 1 - S8 are the 4-phase gates with
+// phases 2 (S1 S2 S8) and 3 ((1 - S1) S8) merged, so splitting the low-force phase into the
+// two gives the nesting 4-phase model (start: both at the low-force coefficients).
+std::optional<MauchCylinderParams> splitIntoFourPhases(const MauchCylinderParams& p) {
+  if (p.phases != 2 || !p.effects.hyperextensionPhase) return std::nullopt;
+  MauchCylinderParams q = p;
+  q.phases = 4;
+  q.coefficients = {p.coefficients[0], p.coefficients[1], p.coefficients[1], p.effects.hyperextension};
+  q.effects.hyperextensionPhase = false;
+  q.effects.hyperextension = {};
+  return q;
+}
+
+// position_dependent_damping: every flexion/extension phase keeps non-negative damping
+// c + cx x over the recorded stroke (a negative damper would feed energy in).
+bool positionDampingIsPhysical(const MauchCylinderParams& p, const std::vector<BenchData>& train, std::string& note) {
+  double xMin = 1e300, xMax = -1e300;
+  for (const auto& d : train)
+    for (double x : d.position) {
+      xMin = std::max(0.0, std::min(xMin, x));
+      xMax = std::max(xMax, x);
+    }
+  double worst = 1e300;
+  const int flexExtPhases = p.phases == 4 ? 3 : 2;
+  for (int ph = 0; ph < flexExtPhases; ++ph) {
+    const double c = p.coefficients[static_cast<std::size_t>(ph)].c;
+    worst = std::min({worst, c + p.effects.positionDamping * xMin, c + p.effects.positionDamping * xMax});
+  }
+  note = "damping c + cx x must stay >= 0 over the stroke: lowest " + fmt(worst) + " N s/m";
+  return worst >= 0;
+}
+
+// switch_delay is on when the latch is at least as slow as the fastest grid value.
+bool hasSlowLatch(const MauchCylinderParams& p) {
+  return 1.0 / p.switches.latchRate >= describeEffect(EffectId::kSwitchDelay).grid.front();
+}
+
+}  // namespace
+
+// The records, in the effect table's order. Column ranks follow
+// MauchCylinder::calcRegressorRow: hyperextension (3), Coulomb, orifice, inertia, position.
+const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
+  using E = EffectId;
+  using P = MauchCylinderParams;
+  using Train = std::vector<BenchData>;
+  static const std::vector<CylinderEffectRecord> table = {
+      {E::kCoulombFriction, [](const P& p) { return p.effects.coulombFriction; },
+       [](P& p, double grid) {
+         p.effects.coulombFriction = true;
+         p.effects.coulombForce = 0;
+         p.effects.coulombWidth = grid;
+       },
+       [](P& p) { p.effects.coulombFriction = false; },
+       [](const P& p) { return std::vector<double>{p.effects.coulombForce, p.effects.coulombWidth}; },
+       [](const P& p, const Train&, std::string& note) {
+         note = "friction force must oppose motion (force_N > 0): " + fmt(p.effects.coulombForce) + " N";
+         return p.effects.coulombForce > 0;
+       },
+       1, 1, nullptr,
+       [](P& model, const P& fromB) {
+         model.effects.coulombFriction = true;
+         model.effects.coulombForce = 0;
+         model.effects.coulombWidth = fromB.effects.coulombWidth;
+       }},
+      {E::kOrificeQuadratic, [](const P& p) { return p.effects.orificeQuadratic; },
+       [](P& p, double) {
+         p.effects.orificeQuadratic = true;
+         p.effects.orificeCoefficient = 0;
+       },
+       [](P& p) { p.effects.orificeQuadratic = false; },
+       [](const P& p) { return std::vector<double>{p.effects.orificeCoefficient}; },
+       [](const P& p, const Train&, std::string& note) {
+         note = "orifice flow must resist motion (coefficient > 0): " + fmt(p.effects.orificeCoefficient) + " N s^2/m^2";
+         return p.effects.orificeCoefficient > 0;
+       },
+       1, 2},
+      {E::kInertia, [](const P& p) { return p.effects.inertia; },
+       [](P& p, double) {
+         p.effects.inertia = true;
+         p.effects.pistonMass = 0;
+       },
+       [](P& p) { p.effects.inertia = false; },
+       [](const P& p) { return std::vector<double>{p.effects.pistonMass}; },
+       [](const P& p, const Train&, std::string& note) {
+         note = "moving mass must be positive: " + fmt(p.effects.pistonMass) + " kg";
+         return p.effects.pistonMass > 0;
+       },
+       1, 3},
+      {E::kPositionDependentDamping, [](const P& p) { return p.effects.positionDependentDamping; },
+       [](P& p, double) {
+         p.effects.positionDependentDamping = true;
+         p.effects.positionDamping = 0;
+       },
+       [](P& p) { p.effects.positionDependentDamping = false; },
+       [](const P& p) { return std::vector<double>{p.effects.positionDamping}; },
+       positionDampingIsPhysical, 1, 4},
+      {E::kHyperextensionPhase, [](const P& p) { return p.effects.hyperextensionPhase; },
+       [](P& p, double) {
+         p.effects.hyperextensionPhase = true;
+         p.effects.hyperextension = {};
+       },
+       [](P& p) { p.effects.hyperextensionPhase = false; },
+       [](const P& p) {
+         const auto& h = p.effects.hyperextension;
+         return std::vector<double>{h.f, h.k, h.c};
+       },
+       [](const P& p, const Train&, std::string& note) {
+         note = "hyperextension stiffness must push the piston out of hyperextension (k > 0): " +
+                fmt(p.effects.hyperextension.k) + " N/m";
+         return p.effects.hyperextension.k > 0;
+       },
+       3, 0,
+       [](const P& p) -> std::string { return p.phases != 2 ? "the 4-phase model already has a hyperextension phase" : ""; },
+       nullptr, CylinderRefit::kSwitches, splitIntoFourPhases},
+      // No column: a slower latch is the S2 latch rate k of Chien 2014 Eq. 6.
+      {E::kSwitchDelay, hasSlowLatch,
+       [](P& p, double grid) { p.switches.latchRate = 1.0 / grid; },
+       [](P& p) { p.switches.latchRate = kPublishedLatchRate; },
+       [](const P& p) { return std::vector<double>{1.0 / p.switches.latchRate}; },
+       [](const P& p, const Train&, std::string& note) {
+         note = "latch time constant 1/k > 0: " + fmt(1.0 / p.switches.latchRate) + " s";
+         return true;
+       },
+       0, -1,
+       [](const P& p) -> std::string {
+         return hasSlowLatch(p) ? "the model's latch is already slow (k = " + formatNumber(p.switches.latchRate) + " /s)"
+                                : "";
+       },
+       [](P& model, const P& fromB) {
+         model.switches.latchRate = std::min(model.switches.latchRate, fromB.switches.latchRate);
+       },
+       CylinderRefit::kSwitchesLatch},
+  };
+  return table;
+}
+
+const CylinderEffectRecord& findCylinderEffectRecord(EffectId effect) {
+  for (const auto& r : cylinderEffectRecords())
+    if (r.id == effect) return r;
+  throw std::invalid_argument("not a cylinder effect: " + describeEffect(effect).name);
+}
+
+std::vector<int> cylinderEffectColumns(const MauchCylinderParams& p, EffectId effect) {
+  std::vector<const CylinderEffectRecord*> byColumn;
+  for (const auto& r : cylinderEffectRecords())
+    if (r.columnRank >= 0) byColumn.push_back(&r);
+  std::sort(byColumn.begin(), byColumn.end(),
+            [](const auto* a, const auto* b) { return a->columnRank < b->columnRank; });
+  int col = 3 * p.phases;
+  std::vector<int> cols;
+  for (const auto* r : byColumn) {
+    if (!r->has(p)) continue;
+    if (r->id == effect)
+      for (int i = 0; i < r->columns; ++i) cols.push_back(col + i);
+    col += r->columns;
+  }
+  return cols;
+}
+
+}  // namespace swingsim

@@ -1,0 +1,182 @@
+#include "identify/swing_effects.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/units.h"
+
+namespace swingsim {
+
+namespace {
+
+std::string fmt(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+// Bounds are physics, not data: a friction, damper or assist spring cannot push the wrong
+// way (lower bound 0); scales of a gain or a mass stay positive and within 10x (log-scaled);
+// toe-off rates within 20 rad/s (about 3x the peak swing knee rate). docs/diagnosis.md.
+BoundedParameter linear(double lower, double upper, double typical) { return {"", 0.0, lower, upper, false, typical}; }
+BoundedParameter logScaled(double lower, double upper) { return {"", 1.0, lower, upper, true, 1.0}; }
+
+}  // namespace
+
+// The records, in the effect table's order (the order of the fit's free parameters).
+const std::vector<SwingEffectRecord>& swingEffectRecords() {
+  using E = EffectId;
+  static const std::vector<SwingEffectRecord> table = {
+      {E::kKneeCoulombFriction,
+       {{linear(0.0, 50.0, 1.0), 1.0, [](SwingEffects& e) -> double& { return e.knee.coulombMoment; }}},
+       [](SwingEffects& e) -> double& { return e.knee.coulombSmoothingRate; },
+       "",
+       [](const SwingEffects& e, std::string& note) {
+         note = "friction must oppose knee motion (moment_Nm > 0): " + fmt(e.knee.coulombMoment) + " N m";
+         return e.knee.coulombMoment > 0;
+       }},
+      {E::kKneeViscousDamping,
+       {{linear(0.0, 50.0, 0.5), 1.0, [](SwingEffects& e) -> double& { return e.knee.viscousDamping; }}},
+       nullptr,
+       "",
+       [](const SwingEffects& e, std::string& note) {
+         note = "a passive damper must resist knee motion (> 0): " + fmt(e.knee.viscousDamping) + " N m s/rad";
+         return e.knee.viscousDamping > 0;
+       }},
+      {E::kExtensionAssistSpring,
+       {{linear(0.0, 500.0, 5.0), 1.0, [](SwingEffects& e) -> double& { return e.knee.assistStiffness; }}},
+       nullptr,
+       "",
+       [](const SwingEffects& e, std::string& note) {
+         note = "the spring must pull towards extension (stiffness > 0): " + fmt(e.knee.assistStiffness) + " N m/rad";
+         return e.knee.assistStiffness > 0;
+       }},
+      {E::kToeOffVelocity,
+       {{linear(-20.0, 20.0, 1.0), kRadToDeg, [](SwingEffects& e) -> double& { return e.toeOffHipRate; }},
+        {linear(-20.0, 20.0, 1.0), kRadToDeg, [](SwingEffects& e) -> double& { return e.toeOffKneeRate; }}},
+       nullptr,
+       "the measured thigh drives the swing: its toe-off rate is measured and the knee's is fitted per record",
+       [](const SwingEffects& e, std::string& note) {
+         note = "energy released by the foot must flex the knee (knee rate > 0): " + fmt(e.toeOffKneeRate * kRadToDeg) +
+                " deg/s";
+         return e.toeOffKneeRate > 0;
+       },
+       [](const SwingEffects& e, Participant& p) {
+         p.initial.hipFlexionRate = e.toeOffHipRate;
+         p.initial.kneeFlexionRate = e.toeOffKneeRate;
+       },
+       nullptr,
+       [](const SwingEffects& e, double& hipRate, double& kneeRate) {
+         hipRate = e.toeOffHipRate;
+         kneeRate = e.toeOffKneeRate;
+       }},
+      {E::kHipMomentScale,
+       {{logScaled(0.1, 10.0), 1.0, [](SwingEffects& e) -> double& { return e.hipMomentScale; }}},
+       nullptr,
+       "the measured thigh drives the swing: no hip moment to scale",
+       [](const SwingEffects& e, std::string& note) {
+         note = "a gain error cannot reverse the moment (scale > 0): " + fmt(e.hipMomentScale);
+         return e.hipMomentScale > 0;
+       },
+       [](const SwingEffects& e, Participant& p) {
+         p.hipMoment.flexionAmplitude *= e.hipMomentScale;
+         p.hipMoment.extensionAmplitude *= e.hipMomentScale;
+         for (double& m : p.hipMoment.moments) m *= e.hipMomentScale;
+       },
+       [](const SwingEffects& e, std::vector<double>& moments) {
+         for (double& m : moments) m *= e.hipMomentScale;
+       }},
+      {E::kShankMassScale,
+       {{logScaled(0.1, 10.0), 1.0, [](SwingEffects& e) -> double& { return e.shankMassScale; }}},
+       nullptr,
+       "",
+       [](const SwingEffects& e, std::string& note) {
+         note = "mass must stay positive (scale > 0): " + fmt(e.shankMassScale);
+         return e.shankMassScale > 0;
+       },
+       [](const SwingEffects& e, Participant& p) {
+         p.shank.mass *= e.shankMassScale;
+         p.shank.inertia *= e.shankMassScale;
+       }},
+      {E::kBelowKneeMassScale,
+       {{logScaled(0.1, 10.0), 1.0, [](SwingEffects& e) -> double& { return e.belowKneeMassScale; }}},
+       nullptr,
+       "",
+       [](const SwingEffects& e, std::string& note) {
+         note = "mass must stay positive (scale > 0): " + fmt(e.belowKneeMassScale);
+         return e.belowKneeMassScale > 0;
+       },
+       [](const SwingEffects& e, Participant& p) {
+         p.shank.mass *= e.belowKneeMassScale;
+         p.shank.inertia *= e.belowKneeMassScale;
+         p.foot.mass *= e.belowKneeMassScale;
+         p.foot.inertia *= e.belowKneeMassScale;
+       }},
+  };
+  return table;
+}
+
+const SwingEffectRecord& findSwingEffectRecord(EffectId effect) {
+  for (const auto& r : swingEffectRecords())
+    if (r.id == effect) return r;
+  throw std::invalid_argument("not a swing effect: " + describeEffect(effect).name);
+}
+
+bool SwingEffects::has(EffectId effect) const { return std::find(present.begin(), present.end(), effect) != present.end(); }
+
+void SwingEffects::setPresent(EffectId effect, bool on) {
+  if (on && !has(effect)) present.push_back(effect);
+  if (!on) present.erase(std::remove(present.begin(), present.end(), effect), present.end());
+}
+
+SwingEffects addSwingEffectTo(const SwingEffects& effects, EffectId effect, double gridValue) {
+  const SwingEffectRecord& r = findSwingEffectRecord(effect);
+  SwingEffects e = effects;
+  e.setPresent(effect, true);
+  for (const auto& slot : r.slots) slot.value(e) = slot.bounds.start;
+  if (r.gridValue) r.gridValue(e) = gridValue;
+  return e;
+}
+
+SwingEffects removeSwingEffect(const SwingEffects& effects, EffectId effect) {
+  const SwingEffectRecord& r = findSwingEffectRecord(effect);
+  SwingEffects e = effects;
+  e.setPresent(effect, false);
+  for (const auto& slot : r.slots) slot.value(e) = slot.bounds.start;
+  return e;
+}
+
+SwingEffects copySwingEffect(const SwingEffects& effects, const SwingEffects& from, EffectId effect) {
+  const SwingEffectRecord& r = findSwingEffectRecord(effect);
+  SwingEffects e = effects;
+  SwingEffects source = from;  // the accessors take a writable model
+  e.setPresent(effect, true);
+  for (const auto& slot : r.slots) slot.value(e) = slot.value(source);
+  if (r.gridValue) r.gridValue(e) = r.gridValue(source);
+  return e;
+}
+
+std::vector<double> swingEffectValues(const SwingEffects& effects, EffectId effect) {
+  const SwingEffectRecord& r = findSwingEffectRecord(effect);
+  SwingEffects e = effects;  // the accessors take a writable model
+  std::vector<double> out;
+  for (const auto& slot : r.slots) out.push_back(slot.value(e) * slot.reportScale);
+  if (r.gridValue) out.push_back(r.gridValue(e) * describeEffect(effect).gridReportScale);
+  return out;
+}
+
+Participant applyParticipantEffects(const Participant& participant, const SwingEffects& effects) {
+  Participant p = participant;
+  for (const auto& r : swingEffectRecords())
+    if (r.applyToParticipant && effects.has(r.id)) r.applyToParticipant(effects, p);
+  return p;
+}
+
+std::vector<double> applyHipDriveEffects(const SwingEffects& effects, std::vector<double> moments) {
+  for (const auto& r : swingEffectRecords())
+    if (r.applyToHipDrive && effects.has(r.id)) r.applyToHipDrive(effects, moments);
+  return moments;
+}
+
+}  // namespace swingsim
