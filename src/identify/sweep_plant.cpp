@@ -18,7 +18,6 @@ namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMs = 1000.0;               // ms per s: the compared quantity is in ms
-constexpr double kTempoReference = 0.1;      // m: the hip tempo's c is per 0.1 m of lowering
 constexpr double kPhaseSplitLowering = 0.1;  // m: the two "phases" of a sweep, near and far
 
 // The phase of a row at `lowering` (m): 0 up to kPhaseSplitLowering, 1 beyond (phaseNames).
@@ -27,47 +26,6 @@ int loweringPhase(double lowering) { return lowering > kPhaseSplitLowering ? 1 :
 // Calibration of a time scale inside a fit: 1 us, far below a row's standard error (10-25 ms)
 // and below what a difference step of a shared value moves the swing time (0.1-1 ms).
 constexpr double kCalibrationTolerance = 1e-6;  // s
-
-// The sweep effects: their assumption, range and where the range comes from. Ranges are
-// physical limits wide enough to hold every published value, never fitted to Table 4.
-const std::vector<SweepEffectLaw>& lawTable() {
-  using E = EffectId;
-  static const std::vector<SweepEffectLaw> table = {
-      {E::kHipEffortAdaptation, "hip_effort_adaptation", false, -2.0, 2.0, false,
-       "Hale 1990's 37-71 % effort rise for a 2.5x heavier shank is an exponent of about 0.4-0.6 on the inertia "
-       "ratio; +-2 holds it with either sign"},
-      {E::kHipTempoLowering, "", false, -0.5, 0.5, false,
-       "Burkett 2001: 26 % faster running on the lowered knee; +-50 % per 0.1 m holds any cadence change a runner can make"},
-      {E::kComRuleProportional, "com_rule", false, 1.0, 1.0, false, "a two-way choice (docs/assumptions.md)"},
-      {E::kKneeFrictionScale, "knee_friction", true, 0.0, 3.0, false,
-       "0 (no friction) to 3x Table 2's 5-15 N m, past any swing-phase knee's friction"},
-      {E::kStopRestitution, "stop_restitution", false, 0.05, 0.95, false,
-       "a coefficient of restitution lies in (0, 1); the ends are left out because the stop model needs 0 < e < 1"},
-      {E::kStopStiffness, "stop_stiffness", false, 2.0e3, 2.0e5, true,
-       "a decade either side of the file's 2e4 N m/rad^1.5"},
-      {E::kHipExtensionRatio, "hip_extension_ratio", false, 0.1, 1.5, false,
-       "from almost no terminal-swing brake to one half again as strong as the flexion drive"},
-      {E::kHipFlexionDuration, "hip_flexion_duration", false, 0.10, 0.35, false,
-       "half to 1.75x the assumed 0.20 s"},
-      {E::kHipExtensionDuration, "hip_extension_duration", false, 0.10, 0.35, false,
-       "half to 1.75x the assumed 0.20 s"},
-      {E::kThighTargetFlexion, "thigh_target_flexion", false, 5.0, 35.0, false,
-       "the thigh flexion at heel contact in walking and running, 15-30 deg (Winter 2009), widened by 10 deg"},
-  };
-  return table;
-}
-
-const SweepAssumption& findAssumption(const std::string& key) {
-  for (const auto& a : sweepAssumptions())
-    if (a.key == key) return a;
-  throw std::logic_error("sweep plant: no assumption " + key);
-}
-
-double valueOf(const SweepModelParams& p, EffectId id) {
-  for (const auto& [e, v] : p.effects)
-    if (e == id) return v;
-  return kNaN;
-}
 
 // Effects with a continuously fitted value (not the COM rule's choice), in model order.
 std::vector<std::size_t> fittedEffects(const SweepModelParams& p) {
@@ -78,36 +36,6 @@ std::vector<std::size_t> fittedEffects(const SweepModelParams& p) {
 }
 
 }  // namespace
-
-bool SweepModelParams::has(EffectId id) const {
-  return std::any_of(effects.begin(), effects.end(), [&](const auto& e) { return e.first == id; });
-}
-
-const SweepModelParams& sweepParams(const PlantModel& model) { return plantModelParams<SweepModelParams>(model); }
-
-const SweepEffectLaw& findSweepEffectLaw(EffectId id) {
-  for (const auto& l : lawTable())
-    if (l.id == id) return l;
-  throw std::logic_error("sweep plant: effect " + describeEffect(id).name + " has no sweep law");
-}
-
-SweepVariant applySweepEffects(const SweepVariant& variant, const SweepModelParams& params) {
-  SweepVariant v = variant;
-  for (const auto& [id, value] : params.effects) {
-    const SweepEffectLaw& law = findSweepEffectLaw(id);
-    if (law.assumption.empty()) continue;  // acts per swing
-    const SweepAssumption& a = findAssumption(law.assumption);
-    a.apply(v, law.relative ? value * a.read(variant) : value);
-  }
-  return v;
-}
-
-Participant calcSweepSwingParticipant(const SweepVariant& variant, const SweepModelParams& params, double lowering) {
-  Participant p = calcAdaptedParticipant(variant.participant, lowering, variant.hipEffortExponent);
-  const double c = valueOf(params, EffectId::kHipTempoLowering);
-  if (std::isfinite(c)) p.hipMoment.timeScale *= 1.0 + c * lowering / kTempoReference;
-  return p;
-}
 
 SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingTime>& rows,
                        const std::string& measuredPath, double defaultStandardError, int jobs)
@@ -395,7 +323,7 @@ std::string SweepPlant::checkApplicable(const PlantModel& model, EffectId effect
   if (sweepParams(model).has(effect)) return "already in the model";
   const SweepEffectLaw& law = findSweepEffectLaw(effect);
   if (law.assumption.empty()) return "";
-  const SweepAssumption& a = findAssumption(law.assumption);
+  const SweepAssumption& a = findSweepAssumption(law.assumption);
   for (std::size_t i : inModel_) {
     const SweepVariant& v = participants_[i].nominal;
     if (!a.calcRange(v).applicable)
@@ -417,7 +345,7 @@ PlantModelPtr SweepPlant::addEffect(const PlantModel& model, EffectId effect, do
     start = 1.0;
   } else if (!law.assumption.empty()) {
     // The mean of the participants' own values: the shared value starts where they are.
-    const SweepAssumption& a = findAssumption(law.assumption);
+    const SweepAssumption& a = findSweepAssumption(law.assumption);
     for (std::size_t i : inModel_) start += a.read(participants_[i].nominal) / static_cast<double>(inModel_.size());
   }
   p.effects.push_back({effect, std::clamp(start, law.lower, law.upper)});
@@ -426,17 +354,17 @@ PlantModelPtr SweepPlant::addEffect(const PlantModel& model, EffectId effect, do
 
 PlantModelPtr SweepPlant::combine(const PlantModel& a, const PlantModel& b, EffectId effectOfB) const {
   SweepModelParams p = sweepParams(a);
-  if (!p.has(effectOfB)) p.effects.push_back({effectOfB, valueOf(sweepParams(b), effectOfB)});
+  if (!p.has(effectOfB)) p.effects.push_back({effectOfB, sweepParams(b).value(effectOfB)});
   return std::make_shared<SweepModel>(p);
 }
 
 std::vector<double> SweepPlant::effectValues(const PlantModel& model, EffectId effect) const {
-  return {valueOf(sweepParams(model), effect)};
+  return {sweepParams(model).value(effect)};
 }
 
 bool SweepPlant::checkPhysical(const PlantModel& model, EffectId effect, std::string& note) const {
   const SweepEffectLaw& law = findSweepEffectLaw(effect);
-  const double v = valueOf(sweepParams(model), effect);
+  const double v = sweepParams(model).value(effect);
   note = "any value in its physical range " + formatNumber(law.lower) + " .. " + formatNumber(law.upper) + " (" +
          law.rangeSource + "): " + formatNumber(v);
   return v >= law.lower && v <= law.upper;

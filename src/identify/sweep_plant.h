@@ -18,46 +18,13 @@
 #include <vector>
 
 #include "identify/diagnosis_engine.h"
+#include "identify/sweep_effects.h"
 #include "identify/sweep_rows.h"
 #include "model/measured_swing_time.h"
 #include "sweep/sweep.h"
 #include "sweep/sweep_assumptions.h"
 
 namespace swingsim {
-
-/// A sweep model: the shared effects with their values (reported units) and, after a fit,
-/// each in-model participant's calibrated time scale and each fold's shared values.
-struct SweepModelParams {
-  std::vector<std::pair<EffectId, double>> effects;
-  std::vector<double> timeScales;  ///< per in-model participant (empty before a fit)
-  /// Per in-model participant: the shared values of the fold that held it out (effect order).
-  std::vector<std::vector<double>> heldOutValues;
-  bool has(EffectId id) const;
-};
-
-using SweepModel = PlantModelOf<SweepModelParams>;
-/// The parameters inside an engine model of the sweep plant.
-const SweepModelParams& sweepParams(const PlantModel& model);
-
-/// The range and law of one sweep effect (the table in sweep_plant.cpp).
-struct SweepEffectLaw {
-  EffectId id{};
-  /// The assumption of sweepAssumptions() it sets ("" = the plant's own law: the hip tempo).
-  std::string assumption;
-  bool relative = false;  ///< the value multiplies each participant's own (Tc)
-  double lower = 0, upper = 0;  ///< physical range of the shared value (reported unit)
-  bool logScale = false;
-  std::string rangeSource;  ///< why this range
-};
-/// The law of a sweep effect; throws std::logic_error for another plant's effect.
-const SweepEffectLaw& findSweepEffectLaw(EffectId id);
-
-/// `variant` with every shared effect of `params` that acts on the inputs applied (the
-/// lowering-dependent hip tempo acts per swing: calcSweepSwingParticipant).
-SweepVariant applySweepEffects(const SweepVariant& variant, const SweepModelParams& params);
-/// The participant one swing at `lowering` runs: the hip-effort adaptation and the hip tempo
-/// (time scale x (1 + c lowering / 0.1 m)) applied to `variant`'s participant.
-Participant calcSweepSwingParticipant(const SweepVariant& variant, const SweepModelParams& params, double lowering);
 
 class SweepPlant final : public DiagnosisPlant {
  public:

@@ -83,7 +83,7 @@ const std::vector<EffectDescriptor>& effectTable() {
        "weighing the prosthesis below the knee with its shoe, or swings with an added mass (Bach 1994)",
        {"scale"}, 1, {}, 1.0, true},
       // ---- Sweep: one value shared by every participant, so a held-out participant is
-      // predicted from the others (identify/sweep_plant.cpp holds the laws and ranges) ------
+      // predicted from the others (identify/sweep_effects.cpp holds the laws and ranges) ------
       {EffectId::kHipEffortAdaptation, P::kSweep, "hip_effort_adaptation",
        "the hip moment changes with the knee-axis lowering in proportion to (I_knee(d) / I_knee(0))^a, "
        "I_knee the shank + foot inertia about the knee (a < 0: more effort on the lighter-feeling lowered shank)",
