@@ -72,13 +72,20 @@ void printTrialEnd(const TrialEnd& e, const Participant& p) {
               e.thighPeak * kRadToDeg, e.thighTarget * kRadToDeg);
 }
 
-int runSimulate(const SimulateArguments& a) {
+// The integrator and its accuracy: --integrator at its converged setting unless --accuracy
+// says otherwise.
+SwingOptions makeSwingOptions(const SimulateArguments& a) {
   SwingOptions options;
   if (a.integrator) {
     options.integrator = *findIntegrator(*a.integrator);  // checked while parsing
     options.accuracy = calcConvergedAccuracy(options.integrator);  // its converged setting unless --accuracy says otherwise
   }
   if (a.accuracy) options.accuracy = *a.accuracy;
+  return options;
+}
+
+// The participant's file with the toe-off rates and knee start the command line overrides.
+Participant loadSimulatedParticipant(const SimulateArguments& a) {
   Participant loaded = loadParticipant(a.participant);
   if (a.hipRateDegS) loaded.initial.hipFlexionRate = *a.hipRateDegS * kDegToRad;
   if (a.kneeStart) loaded.initial.kneeStart = *a.kneeStart == "initial" ? KneeStart::kInitial : KneeStart::kMeasured;
@@ -87,15 +94,12 @@ int runSimulate(const SimulateArguments& a) {
                      "toe-off (" + loaded.thighKinematics.path + "); add --knee-start initial to start it from the participant's "
                      "initial knee_flexion_deg and this rate");
   if (a.kneeRateDegS) loaded.initial.kneeFlexionRate = *a.kneeRateDegS * kDegToRad;
-  const KneeModel model = loadKneeModel(a.knee.value_or(loaded.kneeModelPath));
-  const SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
-  const Participant& p = setup.participant;
-  options.trackImpactEnergy = true;  // one swing: the bookkeeping is cheap here
-  const SwingResult r = simulateSwing(setup, options);
+  return loaded;
+}
 
-  std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
-  std::printf("  drive               %s\n", describeDrive(p).c_str());
-  // The state the swing started from (calcToeOffState) is the trajectory's first sample.
+// The state the swing started from (calcToeOffState), the trajectory's first sample, and
+// where it came from.
+void printToeOff(const SwingResult& r, const Participant& p) {
   const SwingTrajectory& tr = r.trajectory;
   const double knee = tr.kneeFlexion.front() * kRadToDeg, kneeRate = tr.kneeFlexionRate.front() * kRadToDeg;
   const double hip = tr.hipFlexion.front() * kRadToDeg, hipRate = tr.hipFlexionRate.front() * kRadToDeg;
@@ -107,6 +111,10 @@ int runSimulate(const SimulateArguments& a) {
                 hip, hipRate);
   else
     std::printf("  toe-off             knee %.1f deg, %.1f deg/s; hip %.1f deg, %.1f deg/s (initial)\n", knee, kneeRate, hip, hipRate);
+}
+
+// The swing time (or why the trial ended first), the peak knee flexion and the bounce.
+void printSwingOutcome(const SwingResult& r, const Participant& p) {
   if (r.trialEnd)
     printTrialEnd(*r.trialEnd, p);
   else
@@ -121,8 +129,12 @@ int runSimulate(const SimulateArguments& a) {
                 r.bounces == 1 ? "" : "s", fmtOrNone("%.1f deg", r.bounceHeight, kRadToDeg).c_str());
   else
     std::printf("  bounce              no\n");
-  for (std::size_t i = 0; i < r.impacts.size(); ++i) {
-    const StopImpact& im = r.impacts[i];
+}
+
+// Each impact on the knee's extension stop, with the energy bookkeeping where it was tracked.
+void printStopImpacts(const std::vector<StopImpact>& impacts) {
+  for (std::size_t i = 0; i < impacts.size(); ++i) {
+    const StopImpact& im = impacts[i];
     std::printf("  stop impact %-2zu     at %.4f s: %.2f rad/s in, %.2f rad/s out (restitution %.2f), %.2f deg past the stop, "
                 "rebound to %.1f deg\n",
                 i + 1, im.time, im.impactRate, im.reboundRate, im.restitution, im.maxPenetration * kRadToDeg,
@@ -132,6 +144,10 @@ int runSimulate(const SimulateArguments& a) {
     for (const auto& w : im.work) std::printf(" %s %+.3f J;", w.cause.c_str(), w.work);
     std::printf("\n");
   }
+}
+
+// The smallest toe clearance, with the strike alarm where it holds (walking).
+void printToeClearance(const SwingResult& r, const Participant& p) {
   const std::string clearance = fmtOrNone("%.3f m", r.minToeClearance);
   if (!r.minToeClearance)
     std::printf("  min toe clearance   none (no knee peak to measure it from)\n");
@@ -141,12 +157,11 @@ int runSimulate(const SimulateArguments& a) {
     std::printf("  min toe clearance   %s relative to standing hip height (running: no strike alarm without "
                 "toe_clearance.hip_rise_m)\n",
                 clearance.c_str());
-  std::printf("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
-              options.accuracy, r.realizations);
-  std::printf("  events:");
-  for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
-  std::printf("\n");
+}
 
+// The trajectory's CSV and .sto, the moments' plot, and the JSON if --json asked for it.
+void writeSimulateFiles(const SimulateArguments& a, const SwingSetup& setup, const SwingResult& r) {
+  const Participant& p = setup.participant;
   const std::string out = a.out.value_or(makeTrajectoryFolder(p.name));
   const std::string tag = makeTrajectoryFileStem(p.name, setup.lowering);
   writeFileAtomic(out + "/" + tag + ".csv", formatTrajectoryCsv(r.trajectory));
@@ -155,6 +170,29 @@ int runSimulate(const SimulateArguments& a) {
   std::printf("  trajectory          %s/%s.csv and .sto; hip and knee moments %s-moments.svg\n", out.c_str(), tag.c_str(),
               tag.c_str());
   if (a.json) writeJsonFile(*a.json, makeSimulateJson(setup, r));
+}
+
+int runSimulate(const SimulateArguments& a) {
+  SwingOptions options = makeSwingOptions(a);
+  Participant loaded = loadSimulatedParticipant(a);
+  const KneeModel model = loadKneeModel(a.knee.value_or(loaded.kneeModelPath));
+  const SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
+  const Participant& p = setup.participant;
+  options.trackImpactEnergy = true;  // one swing: the bookkeeping is cheap here
+  const SwingResult r = simulateSwing(setup, options);
+
+  std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
+  std::printf("  drive               %s\n", describeDrive(p).c_str());
+  printToeOff(r, p);
+  printSwingOutcome(r, p);
+  printStopImpacts(r.impacts);
+  printToeClearance(r, p);
+  std::printf("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
+              options.accuracy, r.realizations);
+  std::printf("  events:");
+  for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
+  std::printf("\n");
+  writeSimulateFiles(a, setup, r);
   return 0;
 }
 

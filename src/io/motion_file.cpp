@@ -92,18 +92,22 @@ struct HeaderValue {
   int line = 0;
 };
 
-}  // namespace
+/// "path:line: ", the start of a message about one line.
+std::string lineAt(const std::string& path, int line) { return path + ":" + std::to_string(line) + ": "; }
 
-MotionTable parseMotionTable(const std::string& text, const std::string& path) {
-  MotionTable table;
-  table.path = path;
-  LineCursor lines(text, path);
-  const auto at = [&](int line) { return path + ":" + std::to_string(line) + ": "; };
+/// The Storage header's keys that we read, and the line of its `endheader`.
+struct MotionHeader {
+  HeaderValue version, nRows, nColumns, inDegrees;
+  int endheader = 0;
+  std::optional<std::size_t> expectedRows, expectedColumns;  ///< nRows and nColumns as counts
+};
 
-  // Header: everything up to `endheader`; key=value lines kept, other lines (the name) ignored.
+/// Reads the header: everything up to `endheader`; key=value lines kept, other lines (the
+/// name) ignored. Throws InputError for a key given twice or a missing `endheader`.
+MotionHeader readMotionHeader(LineCursor& lines, const std::string& path) {
+  MotionHeader header;
   std::string line, firstLine;
   bool ended = false;
-  HeaderValue version, nRows, nColumns, inDegrees;
   while (lines.next(line)) {
     if (lines.number == 1) firstLine = line;
     if (trim(line) == "endheader") {
@@ -113,17 +117,26 @@ MotionTable parseMotionTable(const std::string& text, const std::string& path) {
     const auto eq = line.find('=');
     if (eq == std::string::npos) continue;
     const std::string key = trim(line.substr(0, eq));
-    HeaderValue* slot = key == "version" ? &version : key == "nRows" ? &nRows : key == "nColumns" ? &nColumns
-                        : key == "inDegrees" ? &inDegrees : nullptr;
+    HeaderValue* slot = key == "version" ? &header.version : key == "nRows" ? &header.nRows : key == "nColumns" ? &header.nColumns
+                        : key == "inDegrees" ? &header.inDegrees : nullptr;
     if (slot == nullptr) continue;
-    if (slot->line) throw InputError(at(lines.number) + key + ": appears twice in the header (first on line " + std::to_string(slot->line) + ")");
+    if (slot->line) throw InputError(lineAt(path, lines.number) + key + ": appears twice in the header (first on line " + std::to_string(slot->line) + ")");
     *slot = {trim(line.substr(eq + 1)), lines.number};
   }
   if (!ended)
     throw InputError(path + ":1: expected an OpenSim Storage header ending in a line 'endheader' (got none in " +
                      std::to_string(lines.number) + " lines" +
                      (lines.number == 0 ? std::string() : "; the first is '" + firstLine.substr(0, 60) + "'") + ")");
-  const int endheader = lines.number;
+  header.endheader = lines.number;
+  return header;
+}
+
+/// Checks the header's values (version 1, inDegrees yes or no, whole counts), sets the
+/// table's unit from inDegrees and the header's expected counts.
+void checkMotionHeader(MotionHeader& header, MotionTable& table) {
+  const std::string& path = table.path;
+  const HeaderValue& version = header.version;
+  const HeaderValue& inDegrees = header.inDegrees;
   if (version.line && version.value != "1")
     throw InputError(path + ":" + std::to_string(version.line) + ": version: expected 1 (Storage version 1) (got '" + version.value + "')");
   if (inDegrees.line) {
@@ -132,83 +145,114 @@ MotionTable parseMotionTable(const std::string& text, const std::string& path) {
     table.inDegrees = inDegrees.value == "yes";
     table.inDegreesLine = inDegrees.line;
   }
-  std::optional<std::size_t> expectedRows, expectedColumns;
-  for (auto [key, header, expected] : {std::tuple{"nRows", &nRows, &expectedRows}, std::tuple{"nColumns", &nColumns, &expectedColumns}}) {
-    if (!header->line) continue;
-    *expected = parseCount(header->value);
+  for (auto [key, value, expected] : {std::tuple{"nRows", &header.nRows, &header.expectedRows},
+                                      std::tuple{"nColumns", &header.nColumns, &header.expectedColumns}}) {
+    if (!value->line) continue;
+    *expected = parseCount(value->value);
     if (!*expected)
-      throw InputError(path + ":" + std::to_string(header->line) + ": " + key + ": expected a whole number (got '" + header->value + "')");
+      throw InputError(path + ":" + std::to_string(value->line) + ": " + key + ": expected a whole number (got '" + value->value + "')");
   }
+}
 
-  // Column labels: the first non-blank line after endheader.
+/// Reads the column labels, the first non-blank line after endheader: 'time' first, each
+/// once, as many as nColumns says.
+void readColumnLabels(LineCursor& lines, const MotionHeader& header, MotionTable& table) {
+  const std::string& path = table.path;
+  std::string line;
   bool labelled = false;
   while (!labelled && lines.next(line)) labelled = !isBlank(line);
   if (!labelled)
-    throw InputError(at(endheader) + "expected a line of column labels after endheader, starting with 'time' (got the end of the file)");
+    throw InputError(lineAt(path, header.endheader) +
+                     "expected a line of column labels after endheader, starting with 'time' (got the end of the file)");
   table.labelLine = lines.number;
   table.labels = splitWhitespace(line);
   if (table.labels.front() != "time")
-    throw InputError(at(lines.number) + "time: expected the first column label to be 'time' (got '" + table.labels.front() + "')");
+    throw InputError(lineAt(path, lines.number) + "time: expected the first column label to be 'time' (got '" + table.labels.front() + "')");
   // One pass with a hash set: a header of millions of labels is checked in linear time.
   std::unordered_set<std::string> seenLabels;
   for (const auto& label : table.labels)
-    if (!seenLabels.insert(label).second) throw InputError(at(lines.number) + label + ": column label appears twice");
-  if (expectedColumns && *expectedColumns != table.labels.size())
-    throw InputError(path + ":" + std::to_string(nColumns.line) + ": nColumns: the header says " + nColumns.value +
+    if (!seenLabels.insert(label).second) throw InputError(lineAt(path, lines.number) + label + ": column label appears twice");
+  if (header.expectedColumns && *header.expectedColumns != table.labels.size())
+    throw InputError(path + ":" + std::to_string(header.nColumns.line) + ": nColumns: the header says " + header.nColumns.value +
                      " columns, time included (got " + std::to_string(table.labels.size()) + " labels on line " +
                      std::to_string(table.labelLine) + ")");
+}
 
-  // Rows of numbers.
+/// One cell of a row as a finite number; a time (column 0) must also increase by at least
+/// the smallest step and be plausible. `where` starts the messages ("path:line: ").
+double parseCell(const MotionTable& table, std::size_t c, const std::string& s, const std::string& where) {
+  const std::vector<double>& time = table.columns.front();
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size())
+    throw InputError(where + table.labels[c] + ": expected a number (got '" + s + "')");
+  if (!std::isfinite(v) || errno == ERANGE)
+    throw InputError(where + table.labels[c] + ": expected a finite number (got '" + s + "')");
+  if (c == 0 && !time.empty() && !(v > time.back()))
+    throw InputError(where + "time: must strictly increase (got " + s + " after " + formatNumber(time.back()) + ")");
+  if (c == 0 && !time.empty() && v - time.back() < kMinSampleStep)
+    throw InputError(where + "time: expected steps of at least " + formatNumber(kMinSampleStep) + " s (got " + s +
+                     " after " + formatNumber(time.back()) + ")");
+  if (c == 0)
+    if (const std::string bad = checkPlausible(v, kRecordTimeRange, "a sample time"); !bad.empty())
+      throw InputError(where + table.labels[c] + ": " + bad + " (got " + s + ")");
+  return v;
+}
+
+/// Appends the row of numbers on line `lineNumber` to the table: one value per label.
+void readRow(const std::string& line, int lineNumber, MotionTable& table) {
+  const std::string where = lineAt(table.path, lineNumber);
+  if (table.rows() >= kMaxMotionRows)
+    throw InputError(where + "too many rows (more than " + std::to_string(kMaxMotionRows) +
+                     ", the limit; cut the trial or resample it)");
+  const std::vector<std::string> cells = splitWhitespace(line);
+  if (cells.size() != table.labels.size())
+    throw InputError(where + "expected " + std::to_string(table.labels.size()) + " values, one per label on line " +
+                     std::to_string(table.labelLine) + " (got " + std::to_string(cells.size()) + ")" +
+                     (line.find(',') != std::string::npos ? "; is the file comma-separated, or the decimal separator a comma?" : ""));
+  for (std::size_t c = 0; c < cells.size(); ++c) table.columns[c].push_back(parseCell(table, c, cells[c], where));
+  table.rowLines.push_back(lineNumber);
+}
+
+/// Reads the rows of numbers to the end of the text: at least one, as many as nRows says.
+void readRows(LineCursor& lines, const MotionHeader& header, MotionTable& table) {
   table.columns.assign(table.labels.size(), {});
-  std::vector<double>& time = table.columns.front();
-  while (lines.next(line)) {
-    if (isBlank(line)) continue;
-    if (table.rows() >= kMaxMotionRows)
-      throw InputError(at(lines.number) + "too many rows (more than " + std::to_string(kMaxMotionRows) +
-                       ", the limit; cut the trial or resample it)");
-    const std::vector<std::string> cells = splitWhitespace(line);
-    if (cells.size() != table.labels.size())
-      throw InputError(at(lines.number) + "expected " + std::to_string(table.labels.size()) + " values, one per label on line " +
-                       std::to_string(table.labelLine) + " (got " + std::to_string(cells.size()) + ")" +
-                       (line.find(',') != std::string::npos ? "; is the file comma-separated, or the decimal separator a comma?" : ""));
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-      const std::string& s = cells[c];
-      errno = 0;
-      char* end = nullptr;
-      const double v = std::strtod(s.c_str(), &end);
-      if (end != s.c_str() + s.size())
-        throw InputError(at(lines.number) + table.labels[c] + ": expected a number (got '" + s + "')");
-      if (!std::isfinite(v) || errno == ERANGE)
-        throw InputError(at(lines.number) + table.labels[c] + ": expected a finite number (got '" + s + "')");
-      if (c == 0 && !time.empty() && !(v > time.back()))
-        throw InputError(at(lines.number) + "time: must strictly increase (got " + s + " after " + formatNumber(time.back()) + ")");
-      if (c == 0 && !time.empty() && v - time.back() < kMinSampleStep)
-        throw InputError(at(lines.number) + "time: expected steps of at least " + formatNumber(kMinSampleStep) + " s (got " + s +
-                         " after " + formatNumber(time.back()) + ")");
-      if (c == 0)
-        if (const std::string bad = checkPlausible(v, kRecordTimeRange, "a sample time"); !bad.empty())
-          throw InputError(at(lines.number) + table.labels[c] + ": " + bad + " (got " + s + ")");
-      table.columns[c].push_back(v);
-    }
-    table.rowLines.push_back(lines.number);
-  }
+  std::string line;
+  while (lines.next(line))
+    if (!isBlank(line)) readRow(line, lines.number, table);
   if (table.rows() == 0)
-    throw InputError(path + ":" + std::to_string(table.labelLine) + ": expected rows of numbers after the column labels (got none)");
-  if (expectedRows && *expectedRows != table.rows())
-    throw InputError(path + ":" + std::to_string(nRows.line) + ": nRows: the header says " + nRows.value + " rows (got " +
-                     std::to_string(table.rows()) + " rows of numbers)");
+    throw InputError(table.path + ":" + std::to_string(table.labelLine) + ": expected rows of numbers after the column labels (got none)");
+  if (header.expectedRows && *header.expectedRows != table.rows())
+    throw InputError(table.path + ":" + std::to_string(header.nRows.line) + ": nRows: the header says " + header.nRows.value +
+                     " rows (got " + std::to_string(table.rows()) + " rows of numbers)");
+}
 
-  // Frames dropped by the capture system show as one long step among even ones.
-  if (table.rows() >= 3) {
-    std::vector<double> steps;
-    for (std::size_t r = 1; r < time.size(); ++r) steps.push_back(time[r] - time[r - 1]);
-    const double typical = calcMedian(steps);
-    for (std::size_t r = 1; r < time.size(); ++r)
-      if (steps[r - 1] > kMaxStepOverMedian * typical)
-        throw InputError(path + ":" + std::to_string(table.rowLines[r]) + ": time: a gap of " + formatNumber(steps[r - 1]) +
-                         " s after " + formatNumber(time[r - 1]) + " s (more than " + formatNumber(kMaxStepOverMedian) +
-                         " times the median step of " + formatNumber(typical) + " s; missing frames?)");
-  }
+/// Frames dropped by the capture system show as one long step among even ones.
+void checkDroppedFrames(const MotionTable& table) {
+  if (table.rows() < 3) return;
+  const std::vector<double>& time = table.columns.front();
+  std::vector<double> steps;
+  for (std::size_t r = 1; r < time.size(); ++r) steps.push_back(time[r] - time[r - 1]);
+  const double typical = calcMedian(steps);
+  for (std::size_t r = 1; r < time.size(); ++r)
+    if (steps[r - 1] > kMaxStepOverMedian * typical)
+      throw InputError(table.path + ":" + std::to_string(table.rowLines[r]) + ": time: a gap of " + formatNumber(steps[r - 1]) +
+                       " s after " + formatNumber(time[r - 1]) + " s (more than " + formatNumber(kMaxStepOverMedian) +
+                       " times the median step of " + formatNumber(typical) + " s; missing frames?)");
+}
+
+}  // namespace
+
+MotionTable parseMotionTable(const std::string& text, const std::string& path) {
+  MotionTable table;
+  table.path = path;
+  LineCursor lines(text, path);
+  MotionHeader header = readMotionHeader(lines, path);
+  checkMotionHeader(header, table);
+  readColumnLabels(lines, header, table);
+  readRows(lines, header, table);
+  checkDroppedFrames(table);
   return table;
 }
 

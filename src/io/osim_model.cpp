@@ -359,59 +359,76 @@ void replaceMass(SegmentParams& s, double mass) {
   s.mass = mass;
 }
 
-}  // namespace
+/// The leg's bodies and joints on one side, found by OpenSim's gait-model names.
+struct LegParts {
+  std::string side, femurName, tibiaName, talusName, calcnName, toesName;
+  const OsimBody *femur, *tibia, *talus, *calcn, *toes;
+  const OsimJoint *hip, *knee, *ankle, *subtalar, *mtp;
+};
 
-OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions& o) {
-  const std::string side(1, o.side);
-  const std::string femurName = "femur_" + side, tibiaName = "tibia_" + side, talusName = "talus_" + side,
-                    calcnName = "calcn_" + side, toesName = "toes_" + side;
-  const OsimBody &femur = requireLegBody(m, femurName), &tibia = requireLegBody(m, tibiaName);
+/// Finds the leg's bodies and joints; throws InputError for one missing or a massless foot.
+LegParts findLegParts(const OsimModel& m, char sideLetter) {
+  LegParts leg;
+  leg.side = std::string(1, sideLetter);
+  leg.femurName = "femur_" + leg.side;
+  leg.tibiaName = "tibia_" + leg.side;
+  leg.talusName = "talus_" + leg.side;
+  leg.calcnName = "calcn_" + leg.side;
+  leg.toesName = "toes_" + leg.side;
+  leg.femur = &requireLegBody(m, leg.femurName);
+  leg.tibia = &requireLegBody(m, leg.tibiaName);
   // The foot's parts may each be massless (export-osim's calcn and toes are) but not all three.
-  const OsimBody &talus = m.getBody(talusName), &calcn = m.getBody(calcnName), &toes = m.getBody(toesName);
-  if (!(talus.mass + calcn.mass + toes.mass > 0))
-    throw InputError(m.path + ":" + std::to_string(talus.line) + ": <Body name=\"" + talusName + "\">: <mass>: expected a positive mass in kg for the foot, " +
-                     talusName + " + " + calcnName + " + " + toesName + " (got 0)");
-  const OsimJoint& hip = m.getJointTo(femurName);
-  const OsimJoint& knee = requireJoint(m, femurName, tibiaName);
-  const OsimJoint& ankle = requireJoint(m, tibiaName, talusName);
-  const OsimJoint& subtalar = requireJoint(m, talusName, calcnName);
-  const OsimJoint& mtp = requireJoint(m, calcnName, toesName);
-  std::ostringstream why;
-  const std::string file = std::filesystem::path(m.path).filename().string();
-  why << "Imported by `swingsim import-osim` from " << file << " (model " << m.name << "), side " << side
-      << ", at the model's reference pose (every coordinate 0), in the sagittal x-y plane (x forward, y up), inertias about z.\n";
+  leg.talus = &m.getBody(leg.talusName);
+  leg.calcn = &m.getBody(leg.calcnName);
+  leg.toes = &m.getBody(leg.toesName);
+  if (!(leg.talus->mass + leg.calcn->mass + leg.toes->mass > 0))
+    throw InputError(m.path + ":" + std::to_string(leg.talus->line) + ": <Body name=\"" + leg.talusName +
+                     "\">: <mass>: expected a positive mass in kg for the foot, " + leg.talusName + " + " + leg.calcnName +
+                     " + " + leg.toesName + " (got 0)");
+  leg.hip = &m.getJointTo(leg.femurName);
+  leg.knee = &requireJoint(m, leg.femurName, leg.tibiaName);
+  leg.ankle = &requireJoint(m, leg.tibiaName, leg.talusName);
+  leg.subtalar = &requireJoint(m, leg.talusName, leg.calcnName);
+  leg.mtp = &requireJoint(m, leg.calcnName, leg.toesName);
+  return leg;
+}
 
-  // Thigh, in the femur frame: hip centre (hip's child frame) to knee centre.
+/// Thigh, in the femur frame: hip centre (hip's child frame) to knee centre.
+void importThigh(const LegParts& leg, Participant& p, std::ostream& why) {
+  const OsimJoint &hip = *leg.hip, &knee = *leg.knee;
   const Eigen::Vector2d hipInFemur = xy(hip.childFrame.translation()), kneeInFemur = xy(knee.calcCentreInParent());
-  OsimParticipant out;
-  Participant& p = out.participant;
-  p.thigh = makeSegment(hipInFemur, kneeInFemur, xy(femur.massCenter), femur.mass, femur.inertia(2, 2));
-  why << "thigh: " << femurName << " <mass>, <mass_center>, <inertia> Izz; length hip centre " << fmt(hipInFemur) << " (" << hip.name
+  p.thigh = makeSegment(hipInFemur, kneeInFemur, xy(leg.femur->massCenter), leg.femur->mass, leg.femur->inertia(2, 2));
+  why << "thigh: " << leg.femurName << " <mass>, <mass_center>, <inertia> Izz; length hip centre " << fmt(hipInFemur) << " (" << hip.name
       << " child frame) to knee centre " << fmt(kneeInFemur) << " (" << knee.name << " parent frame";
   if (knee.centreMoves) why << " and its SpatialTransform translation";
-  why << "), m in " << femurName << "\n";
+  why << "), m in " << leg.femurName << "\n";
   if (knee.centreMoves)
     why << "  " << knee.name << " is a " << knee.type << " whose centre moves with the knee angle (spline): taken at full extension, knee angle 0\n";
+}
 
-  // Shank, in the tibia frame: knee centre (knee's child frame) to ankle centre.
-  const Eigen::Vector2d kneeInTibia = xy(knee.childFrame.translation()), ankleInTibia = xy(ankle.calcCentreInParent());
-  p.shank = makeSegment(kneeInTibia, ankleInTibia, xy(tibia.massCenter), tibia.mass, tibia.inertia(2, 2));
-  why << "shank: " << tibiaName << " <mass>, <mass_center>, <inertia> Izz; length knee centre " << fmt(kneeInTibia) << " ("
-      << knee.name << " child frame) to ankle centre " << fmt(ankleInTibia) << " (" << ankle.name << " parent frame), m in "
-      << tibiaName << "\n";
+/// Shank, in the tibia frame: knee centre (knee's child frame) to ankle centre.
+void importShank(const LegParts& leg, Participant& p, std::ostream& why) {
+  const Eigen::Vector2d kneeInTibia = xy(leg.knee->childFrame.translation()), ankleInTibia = xy(leg.ankle->calcCentreInParent());
+  p.shank = makeSegment(kneeInTibia, ankleInTibia, xy(leg.tibia->massCenter), leg.tibia->mass, leg.tibia->inertia(2, 2));
+  why << "shank: " << leg.tibiaName << " <mass>, <mass_center>, <inertia> Izz; length knee centre " << fmt(kneeInTibia) << " ("
+      << leg.knee->name << " child frame) to ankle centre " << fmt(ankleInTibia) << " (" << leg.ankle->name << " parent frame), m in "
+      << leg.tibiaName << "\n";
+}
 
-  // Foot: talus, calcn and toes as one rigid body, in the tibia frame at the reference pose.
-  const Eigen::Isometry3d talusPose = ankle.calcChildInParent();
-  const Eigen::Isometry3d calcnPose = talusPose * subtalar.calcChildInParent();
-  const Eigen::Isometry3d toesPose = calcnPose * mtp.calcChildInParent();
-  const PlanarMass foot = calcCombinedPlanarMass({{&talus, talusPose}, {&calcn, calcnPose}, {&toes, toesPose}});
+/// Foot: talus, calcn and toes as one rigid body, in the tibia frame at the reference pose.
+void importFoot(const LegParts& leg, const OsimImportOptions& o, Participant& p, std::ostream& why) {
+  const Eigen::Vector2d kneeInTibia = xy(leg.knee->childFrame.translation()), ankleInTibia = xy(leg.ankle->calcCentreInParent());
+  const Eigen::Isometry3d talusPose = leg.ankle->calcChildInParent();
+  const Eigen::Isometry3d calcnPose = talusPose * leg.subtalar->calcChildInParent();
+  const Eigen::Isometry3d toesPose = calcnPose * leg.mtp->calcChildInParent();
+  const PlanarMass foot = calcCombinedPlanarMass({{leg.talus, talusPose}, {leg.calcn, calcnPose}, {leg.toes, toesPose}});
   const double footMass = foot.mass;
   const Eigen::Vector2d footCom = foot.com;
   const double footIzz = foot.izz;
   // The foot link is perpendicular to the shank, pointing forward.
   const Eigen::Vector2d up = (kneeInTibia - ankleInTibia).normalized(), forward(up.y(), -up.x());
-  const Eigen::Vector2d mtpCentre = xy(calcnPose * mtp.calcCentreInParent());
-  const Eigen::Vector2d toesCom = xy(toesPose * toes.massCenter);
+  const Eigen::Vector2d mtpCentre = xy(calcnPose * leg.mtp->calcCentreInParent());
+  const Eigen::Vector2d toesCom = xy(toesPose * leg.toes->massCenter);
   // The toe tip: the toes taken as a uniform link from the MTP joint, COM at its middle.
   const double modelFootLength = (mtpCentre + 2 * (toesCom - mtpCentre) - ankleInTibia).dot(forward);
   p.foot.length = o.footLength.value_or(modelFootLength);
@@ -419,12 +436,16 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
   p.foot.comFromDistal = (footCom - ankleInTibia).dot(forward);
   p.foot.inertia = footIzz;
   p.footComFrom = FootComFrom::kAnkle;
-  why << "foot: " << talusName << " + " << calcnName << " + " << toesName << " (" << subtalar.name << ", " << mtp.name
-      << " at 0): masses summed, combined COM " << fmt(footCom) << " m in " << tibiaName << ", Izz about it by parallel axes; "
-      << "com_from_distal_m measured forward from the ankle\n";
+  why << "foot: " << leg.talusName << " + " << leg.calcnName << " + " << leg.toesName << " (" << leg.subtalar->name << ", "
+      << leg.mtp->name << " at 0): masses summed, combined COM " << fmt(footCom) << " m in " << leg.tibiaName
+      << ", Izz about it by parallel axes; " << "com_from_distal_m measured forward from the ankle\n";
   why << "  foot length: " << (o.footLength ? "--foot-length-m" : "ankle to the toe tip, taken as the MTP centre " + fmt(mtpCentre) +
                                                                     " plus twice the toes' COM offset from it (toes as a uniform link)")
       << "\n";
+}
+
+/// The prosthesis's masses given on the command line replace the model's shank and foot.
+void replaceProsthesisMasses(const OsimImportOptions& o, Participant& p, std::ostream& why) {
   if (o.shankMass) {
     replaceMass(p.shank, *o.shankMass);
     why << "shank mass: --shank-mass-kg (the prosthesis); COM kept, inertia scaled with the mass\n";
@@ -433,14 +454,35 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
     replaceMass(p.foot, *o.footMass);
     why << "foot mass: --foot-mass-kg (the prosthesis); COM kept, inertia scaled with the mass\n";
   }
+}
 
-  const Eigen::Vector3d hipInPelvis = hip.calcCentreInParent();
+/// The hip's place in the pelvis, the body mass and the height.
+void importWholeBody(const OsimModel& m, const LegParts& leg, const OsimImportOptions& o, Participant& p, std::ostream& why) {
+  const Eigen::Vector3d hipInPelvis = leg.hip->calcCentreInParent();
   p.hipOffsetInPelvis = std::array<double, 2>{hipInPelvis.x(), hipInPelvis.y()};
-  why << "hip_offset_in_pelvis_m: " << hip.name << " centre in " << hip.parentBody << " (its parent frame's <translation>)\n";
+  why << "hip_offset_in_pelvis_m: " << leg.hip->name << " centre in " << leg.hip->parentBody << " (its parent frame's <translation>)\n";
   p.bodyMass = m.calcTotalMass();
   why << "body_mass_kg: the sum of every body's <mass> (" << m.bodies.size() << " bodies)\n";
   p.height = o.height.value_or((p.thigh.length + p.shank.length) / kHipToAnkleOfHeight);
   why << "height_m: " << (o.height ? "--height-m" : "(thigh + shank) / 0.491 (hip 0.530 H, ankle 0.039 H: Winter 2009 Fig. 4.1)") << "\n";
+}
+
+}  // namespace
+
+OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions& o) {
+  const LegParts leg = findLegParts(m, o.side);
+  const std::string& side = leg.side;
+  std::ostringstream why;
+  const std::string file = std::filesystem::path(m.path).filename().string();
+  why << "Imported by `swingsim import-osim` from " << file << " (model " << m.name << "), side " << side
+      << ", at the model's reference pose (every coordinate 0), in the sagittal x-y plane (x forward, y up), inertias about z.\n";
+  OsimParticipant out;
+  Participant& p = out.participant;
+  importThigh(leg, p, why);
+  importShank(leg, p, why);
+  importFoot(leg, o, p, why);
+  replaceProsthesisMasses(o, p, why);
+  importWholeBody(m, leg, o, p, why);
   p.name = o.name.empty() ? m.name + "_" + side : o.name;
   p.source = "OpenSim model " + file + ", " + side + " leg (swingsim import-osim)";
   p.kneeModelPath = o.kneeModelPath;

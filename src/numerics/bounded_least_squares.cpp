@@ -141,32 +141,30 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualJacobianFunction& f,
 
 namespace {
 
-template <class MakeCost, class Residual>
-BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const std::vector<BoundedParameter>& parameters,
-                             const BoundedFitSettings& settings) {
+/// The fit's start and bounds in scaled coordinates (infinite where a bound is open).
+struct ScaledStart {
+  std::vector<double> u, lo, hi;
+};
+
+/// Checks each parameter's range and converts its start and bounds to scaled coordinates.
+ScaledStart calcScaledStart(const std::vector<BoundedParameter>& parameters) {
   const std::size_t n = parameters.size();
-  std::vector<double> u(n), lo(n), hi(n);
+  ScaledStart s{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
   for (std::size_t k = 0; k < n; ++k) {
     const BoundedParameter& p = parameters[k];
     if (p.logScale && !(p.lower > 0))
       throw std::invalid_argument("solveBoundedLeastSquares: log-scaled parameter " + p.name + " needs a positive lower bound");
     if (!(p.lower <= p.upper)) throw std::invalid_argument("solveBoundedLeastSquares: empty range for " + p.name);
-    lo[k] = toScaled(p, p.lower);
-    hi[k] = p.upper >= 1e300 ? std::numeric_limits<double>::infinity() : toScaled(p, p.upper);
-    if (p.lower <= -1e300) lo[k] = -std::numeric_limits<double>::infinity();
-    u[k] = toScaled(p, std::clamp(p.start, p.lower, p.upper));
+    s.lo[k] = toScaled(p, p.lower);
+    s.hi[k] = p.upper >= 1e300 ? std::numeric_limits<double>::infinity() : toScaled(p, p.upper);
+    if (p.lower <= -1e300) s.lo[k] = -std::numeric_limits<double>::infinity();
+    s.u[k] = toScaled(p, std::clamp(p.start, p.lower, p.upper));
   }
-  BoundedFitResult out;
-  const Eigen::VectorXd r0 = f(toValues(parameters, u.data()));  // throws if the start cannot run
-  const Eigen::Index m = r0.size();
+  return s;
+}
 
-  ceres::Problem::Options problemOptions;
-  ceres::Problem problem(problemOptions);
-  problem.AddResidualBlock(makeCost(m), nullptr, u.data());
-  for (std::size_t k = 0; k < n; ++k) {
-    if (std::isfinite(lo[k])) problem.SetParameterLowerBound(u.data(), static_cast<int>(k), lo[k]);
-    if (std::isfinite(hi[k])) problem.SetParameterUpperBound(u.data(), static_cast<int>(k), hi[k]);
-  }
+/// Ceres' options from ours: dense QR, silent, one thread.
+ceres::Solver::Options makeSolverOptions(const BoundedFitSettings& settings) {
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
   options.max_num_iterations = settings.maxIterations;
@@ -177,27 +175,85 @@ BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const 
   options.minimizer_progress_to_stdout = false;
   options.num_threads = 1;
   options.use_nonmonotonic_steps = settings.nonmonotonicSteps;
+  return options;
+}
+
+/// Whether each scaled coordinate ended on (within 1e-6 relative of) a finite bound.
+std::vector<bool> calcAtBound(const ScaledStart& s) {
+  std::vector<bool> atBound(s.u.size(), false);
+  for (std::size_t k = 0; k < s.u.size(); ++k) {
+    const double tol = 1e-6 * std::max(1.0, std::abs(s.u[k]));
+    atBound[k] = (std::isfinite(s.lo[k]) && s.u[k] - s.lo[k] < tol) || (std::isfinite(s.hi[k]) && s.hi[k] - s.u[k] < tol);
+  }
+  return atBound;
+}
+
+/// Ceres' sparse Jacobian as a dense rows x cols matrix.
+Eigen::MatrixXd toDense(const ceres::CRSMatrix& crs, Eigen::Index rows, Eigen::Index cols) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, cols);
+  for (int r = 0; r < crs.num_rows; ++r)
+    for (int k = crs.rows[static_cast<std::size_t>(r)]; k < crs.rows[static_cast<std::size_t>(r) + 1]; ++k)
+      J(r, crs.cols[static_cast<std::size_t>(k)]) = crs.values[static_cast<std::size_t>(k)];
+  return J;
+}
+
+/// Sets out.covariance to s^2 (J'J)^+ from the Jacobian J in scaled coordinates u, converted
+/// to the parameters' own units, and out.standardErrors to the square roots of its diagonal.
+/// The pseudo-inverse by SVD drops a direction the data do not fix.
+void setCovariance(const Eigen::MatrixXd& J, const std::vector<BoundedParameter>& parameters, const std::vector<double>& u,
+                   BoundedFitResult& out) {
+  const Eigen::Index m = J.rows();
+  const Eigen::Index ni = J.cols();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
+  const Eigen::VectorXd sv = svd.singularValues();
+  const double cutoff = 1e-12 * (sv.size() > 0 ? sv(0) : 0.0);
+  Eigen::MatrixXd cu = Eigen::MatrixXd::Zero(ni, ni);
+  for (Eigen::Index k = 0; k < sv.size(); ++k)
+    if (sv(k) > cutoff) cu += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
+  const double s2 = out.cost / static_cast<double>(m - ni);
+  for (Eigen::Index i = 0; i < ni; ++i) {
+    const double di = scaledDerivative(parameters[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
+    for (Eigen::Index j = 0; j < ni; ++j) {
+      const double dj = scaledDerivative(parameters[static_cast<std::size_t>(j)], u[static_cast<std::size_t>(j)]);
+      out.covariance(i, j) = s2 * di * dj * cu(i, j);
+    }
+  }
+  for (Eigen::Index i = 0; i < ni; ++i) out.standardErrors[i] = std::sqrt(std::max(0.0, out.covariance(i, i)));
+}
+
+template <class MakeCost, class Residual>
+BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const std::vector<BoundedParameter>& parameters,
+                             const BoundedFitSettings& settings) {
+  const std::size_t n = parameters.size();
+  ScaledStart scaled = calcScaledStart(parameters);
+  std::vector<double>& u = scaled.u;
+  BoundedFitResult out;
+  const Eigen::VectorXd r0 = f(toValues(parameters, u.data()));  // throws if the start cannot run
+  const Eigen::Index m = r0.size();
+
+  ceres::Problem::Options problemOptions;
+  ceres::Problem problem(problemOptions);
+  problem.AddResidualBlock(makeCost(m), nullptr, u.data());
+  for (std::size_t k = 0; k < n; ++k) {
+    if (std::isfinite(scaled.lo[k])) problem.SetParameterLowerBound(u.data(), static_cast<int>(k), scaled.lo[k]);
+    if (std::isfinite(scaled.hi[k])) problem.SetParameterUpperBound(u.data(), static_cast<int>(k), scaled.hi[k]);
+  }
   ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
+  ceres::Solve(makeSolverOptions(settings), &problem, &summary);
 
   out.x = toValues(parameters, u.data());
   out.iterations = static_cast<int>(summary.iterations.size()) - 1;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   if (!out.converged) out.stopReason = summary.message;
-  out.atBound.assign(n, false);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double tol = 1e-6 * std::max(1.0, std::abs(u[k]));
-    out.atBound[k] = (std::isfinite(lo[k]) && u[k] - lo[k] < tol) || (std::isfinite(hi[k]) && hi[k] - u[k] < tol);
-  }
+  out.atBound = calcAtBound(scaled);
 
   const Eigen::Index ni = static_cast<Eigen::Index>(n);
   out.covariance = Eigen::MatrixXd::Constant(ni, ni, std::numeric_limits<double>::quiet_NaN());
   out.standardErrors = Eigen::VectorXd::Constant(ni, std::numeric_limits<double>::quiet_NaN());
   // The residual at the solution and, for the covariance, the Jacobian there: one Ceres
   // evaluation gives both (the same numeric differences as the fit). s^2 (J'J)^+ is then
-  // formed by SVD here (pseudo-inverse: a direction the data do not fix drops out), not by
-  // ceres::Covariance, whose DENSE_SVD Debian's libceres and our Eigen instantiate
-  // differently (AddressSanitizer reports a mismatched free).
+  // formed by SVD here, not by ceres::Covariance, whose DENSE_SVD Debian's libceres and our
+  // Eigen instantiate differently (AddressSanitizer reports a mismatched free).
   std::vector<double> residual;
   ceres::CRSMatrix crs;
   ceres::Problem::EvaluateOptions eo;
@@ -209,27 +265,7 @@ BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const 
     out.residual = f(out.x);  // throws the model's own reason it cannot run there
   }
   out.cost = out.residual.squaredNorm();
-  if (withJacobian && crs.num_rows == m) {
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, ni);
-    for (int r = 0; r < crs.num_rows; ++r)
-      for (int k = crs.rows[static_cast<std::size_t>(r)]; k < crs.rows[static_cast<std::size_t>(r) + 1]; ++k)
-        J(r, crs.cols[static_cast<std::size_t>(k)]) = crs.values[static_cast<std::size_t>(k)];
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
-    const Eigen::VectorXd sv = svd.singularValues();
-    const double cutoff = 1e-12 * (sv.size() > 0 ? sv(0) : 0.0);
-    Eigen::MatrixXd cu = Eigen::MatrixXd::Zero(ni, ni);
-    for (Eigen::Index k = 0; k < sv.size(); ++k)
-      if (sv(k) > cutoff) cu += svd.matrixV().col(k) * svd.matrixV().col(k).transpose() / (sv(k) * sv(k));
-    const double s2 = out.cost / static_cast<double>(m - ni);
-    for (Eigen::Index i = 0; i < ni; ++i) {
-      const double di = scaledDerivative(parameters[static_cast<std::size_t>(i)], u[static_cast<std::size_t>(i)]);
-      for (Eigen::Index j = 0; j < ni; ++j) {
-        const double dj = scaledDerivative(parameters[static_cast<std::size_t>(j)], u[static_cast<std::size_t>(j)]);
-        out.covariance(i, j) = s2 * di * dj * cu(i, j);
-      }
-    }
-    for (Eigen::Index i = 0; i < ni; ++i) out.standardErrors[i] = std::sqrt(std::max(0.0, out.covariance(i, i)));
-  }
+  if (withJacobian && crs.num_rows == m) setCovariance(toDense(crs, m, ni), parameters, u, out);
   return out;
 }
 

@@ -132,105 +132,132 @@ Json sensitivityJson(const ParticipantUncertainty& pu) {
   return rows;
 }
 
+/// The participant's name and the sweep's per-lowering arrays (NaN where the swing did not end).
+Json sweepPointsJson(const ParticipantSweep& ps) {
+  std::vector<double> lowering, swing, peak, clearance, bounceHeight;
+  std::vector<bool> bounce, ok;
+  std::vector<int> bounces;
+  for (const auto& pt : ps.points) {
+    lowering.push_back(pt.lowering);
+    swing.push_back(pt.ok ? pt.result.swingTime : kNaN);
+    peak.push_back(pt.ok ? peakFlexion(pt.result).value_or(kNaN) * kRadToDeg : kNaN);
+    clearance.push_back(pt.ok ? pt.result.minToeClearance.value_or(kNaN) : kNaN);
+    bounce.push_back(pt.ok && pt.result.bounce);
+    bounces.push_back(pt.ok ? pt.result.bounces : 0);
+    bounceHeight.push_back(pt.ok ? pt.result.bounceHeight.value_or(kNaN) * kRadToDeg : kNaN);
+    ok.push_back(pt.ok);
+  }
+  return {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing}, {"peak_knee_flexion_deg", peak},
+          {"bounce", bounce}, {"bounces", bounces}, {"bounce_height_deg", bounceHeight}, {"swing_ended", ok},
+          {"min_toe_clearance_m", clearance}};
+}
+
+/// The participant's Table 4 validation, with its calibration if one ran.
+Json table4ValidationJson(const SweepResults& results, const Table4Validation& v) {
+  Json rows = Json::array();
+  for (const auto& r : v.rows)
+    rows.push_back({{"lowering_m", r.lowering}, {"measured_s", r.measured}, {"burkett_model_s", r.model},
+                    {"ours_s", r.ours}, {"ours_leave_one_out_s", r.oursLeaveOneOut}});
+  Json validation = {{"calibrated_to", calibrationTargetKey(results.calibratedTo)},
+                     {"calibrated", v.calibrated},
+                     {"rows", rows},
+                     {"rmse_ours_s", v.rmseOurs},
+                     {"rmse_burkett_model_s", v.rmseModel},
+                     {"rmse_leave_one_out_s", v.rmseLeaveOneOut},
+                     {"shortening_measured_s", v.shorteningMeasured},
+                     {"shortening_ours_s", v.shorteningOurs},
+                     {"shortening_burkett_model_s", v.shorteningModel}};
+  for (const auto& c : results.calibrations)
+    if (c.participant == v.participant)
+      validation["calibration"] = {{"target_s", c.targetTime}, {"time_scale", c.timeScale}, {"ok", c.ok}, {"failure", c.failure}};
+  return validation;
+}
+
+/// The terminal-impact check: bounces with and without knee friction, each tracked swing's
+/// first stop impact, the findings.
+Json terminalImpactJson(const TerminalImpactCheck& c) {
+  Json tracked = Json::array();
+  for (const auto& t : c.tracked) {
+    Json row = {{"lowering_m", t.lowering}, {"swing_ended", t.ok}};
+    if (t.ok && !t.result.impacts.empty()) row["first_stop_impact"] = makeStopImpactJson(t.result.impacts.front());
+    tracked.push_back(row);
+  }
+  return {{"knee_friction_Nm", c.frictionMoment},
+          {"bounce_lowerings_m", c.bounceLowerings},
+          {"interior_optimum", c.interiorOptimum},
+          {"without_friction", {{"bounce_lowerings_m", c.bounceLoweringsWithoutFriction},
+                                {"fastest_lowering_m", c.fastestWithoutFriction},
+                                {"fastest_swing_time_s", c.fastestTimeWithoutFriction},
+                                {"interior_optimum", c.interiorOptimumWithoutFriction}}},
+          {"impacts", tracked},
+          {"findings", c.findings}};
+}
+
+/// Adds the fastest lowering (null when no swing ended), the cap's note, and the fastest with
+/// added shank mass.
+void addBestJson(const ParticipantSweep& ps, Json& j) {
+  if (ps.best >= 0) {
+    const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
+    j["best_lowering_m"] = b.lowering;
+    j["best_swing_time_s"] = b.result.swingTime;
+  } else {
+    j["best_lowering_m"] = nullptr;
+    j["best_swing_time_s"] = nullptr;
+  }
+  if (!ps.capNote.empty()) j["note"] = ps.capNote;
+  if (ps.bestWithMass >= 0) {
+    const auto& b = ps.massPoints[static_cast<std::size_t>(ps.bestWithMass)];
+    j["best_with_added_mass"] = {{"lowering_m", b.lowering}, {"mass_kg", b.added.mass},
+                                 {"distance_below_knee_m", b.added.distanceBelowKnee},
+                                 {"swing_time_s", b.result.swingTime}};
+  }
+}
+
+/// Burkett's published rows for the participant beside ours, or null for one not in the paper.
+Json publishedJson(const ParticipantSweep& ps) {
+  const PublishedParticipant* pub = ps.published;
+  if (!pub) return nullptr;
+  Json table4 = Json::array();
+  for (const auto& row : pub->table4) {
+    const SweepPoint* ours = pointAt(ps, row.lowering);
+    table4.push_back({{"lowering_m", row.lowering}, {"model_s", row.model},
+                      {"measured_prosthetic_s", row.measuredProsthetic},
+                      {"measured_anatomical_s", row.measuredAnatomical},
+                      {"ours_s", ours && ours->ok ? ours->result.swingTime : kNaN}});
+  }
+  return {{"source", "Burkett et al. 2004 Tables 3 and 4"}, {"table3_model_s", pub->table3Model},
+          {"table3_measured_s", pub->table3Measured}, {"best_lowering_m", pub->predictedBestLowering},
+          {"table4", table4}};
+}
+
+/// Adds the uncertainty analysis's intervals and sensitivity for the participant.
+void addUncertaintyJson(const ParticipantUncertainty& pu, const UncertaintyResults& uncertainty, Json& j) {
+  j["fastest_lowering_interval_m"] = intervalJson(pu.fastestLowering);
+  j["fastest_time_interval_s"] = intervalJson(pu.fastestTime);
+  j["samples_without_swing_end"] = pu.samplesWithoutSwingEnd;
+  j["sensitivity"] = sensitivityJson(pu);
+  j["uncertainty_samples"] = uncertainty.samples;
+  j["seed"] = uncertainty.seed;
+}
+
+/// One participant's object of the sweep's JSON.
+Json participantJson(const SweepResults& results, const ParticipantSweep& ps, const UncertaintyResults* uncertainty) {
+  Json j = sweepPointsJson(ps);
+  for (const auto& v : results.table4)
+    if (v.participant == ps.name) j["table4_validation"] = table4ValidationJson(results, v);
+  for (const auto& c : results.terminalImpact)
+    if (c.participant == ps.name) j["terminal_impact"] = terminalImpactJson(c);
+  addBestJson(ps, j);
+  j["published"] = publishedJson(ps);
+  if (const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name)) addUncertaintyJson(*pu, *uncertainty, j);
+  return j;
+}
+
 }  // namespace
 
 std::string formatSweepJson(const SweepResults& results, const UncertaintyResults* uncertainty) {
   Json participants = Json::array();
-  for (const auto& ps : results.participants) {
-    std::vector<double> lowering, swing, peak, clearance, bounceHeight;
-    std::vector<bool> bounce, ok;
-    std::vector<int> bounces;
-    for (const auto& pt : ps.points) {
-      lowering.push_back(pt.lowering);
-      swing.push_back(pt.ok ? pt.result.swingTime : kNaN);
-      peak.push_back(pt.ok ? peakFlexion(pt.result).value_or(kNaN) * kRadToDeg : kNaN);
-      clearance.push_back(pt.ok ? pt.result.minToeClearance.value_or(kNaN) : kNaN);
-      bounce.push_back(pt.ok && pt.result.bounce);
-      bounces.push_back(pt.ok ? pt.result.bounces : 0);
-      bounceHeight.push_back(pt.ok ? pt.result.bounceHeight.value_or(kNaN) * kRadToDeg : kNaN);
-      ok.push_back(pt.ok);
-    }
-    Json j = {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing}, {"peak_knee_flexion_deg", peak},
-              {"bounce", bounce}, {"bounces", bounces}, {"bounce_height_deg", bounceHeight}, {"swing_ended", ok},
-              {"min_toe_clearance_m", clearance}};
-    for (const auto& v : results.table4) {
-      if (v.participant != ps.name) continue;
-      Json rows = Json::array();
-      for (const auto& r : v.rows)
-        rows.push_back({{"lowering_m", r.lowering}, {"measured_s", r.measured}, {"burkett_model_s", r.model},
-                        {"ours_s", r.ours}, {"ours_leave_one_out_s", r.oursLeaveOneOut}});
-      j["table4_validation"] = {{"calibrated_to", calibrationTargetKey(results.calibratedTo)},
-                                {"calibrated", v.calibrated},
-                                {"rows", rows},
-                                {"rmse_ours_s", v.rmseOurs},
-                                {"rmse_burkett_model_s", v.rmseModel},
-                                {"rmse_leave_one_out_s", v.rmseLeaveOneOut},
-                                {"shortening_measured_s", v.shorteningMeasured},
-                                {"shortening_ours_s", v.shorteningOurs},
-                                {"shortening_burkett_model_s", v.shorteningModel}};
-      for (const auto& c : results.calibrations)
-        if (c.participant == ps.name)
-          j["table4_validation"]["calibration"] = {{"target_s", c.targetTime}, {"time_scale", c.timeScale}, {"ok", c.ok},
-                                                   {"failure", c.failure}};
-    }
-    for (const auto& c : results.terminalImpact) {
-      if (c.participant != ps.name) continue;
-      Json tracked = Json::array();
-      for (const auto& t : c.tracked) {
-        Json row = {{"lowering_m", t.lowering}, {"swing_ended", t.ok}};
-        if (t.ok && !t.result.impacts.empty()) row["first_stop_impact"] = makeStopImpactJson(t.result.impacts.front());
-        tracked.push_back(row);
-      }
-      j["terminal_impact"] = {{"knee_friction_Nm", c.frictionMoment},
-                              {"bounce_lowerings_m", c.bounceLowerings},
-                              {"interior_optimum", c.interiorOptimum},
-                              {"without_friction", {{"bounce_lowerings_m", c.bounceLoweringsWithoutFriction},
-                                                    {"fastest_lowering_m", c.fastestWithoutFriction},
-                                                    {"fastest_swing_time_s", c.fastestTimeWithoutFriction},
-                                                    {"interior_optimum", c.interiorOptimumWithoutFriction}}},
-                              {"impacts", tracked},
-                              {"findings", c.findings}};
-    }
-    if (ps.best >= 0) {
-      const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
-      j["best_lowering_m"] = b.lowering;
-      j["best_swing_time_s"] = b.result.swingTime;
-    } else {
-      j["best_lowering_m"] = nullptr;
-      j["best_swing_time_s"] = nullptr;
-    }
-    if (!ps.capNote.empty()) j["note"] = ps.capNote;
-    if (ps.bestWithMass >= 0) {
-      const auto& b = ps.massPoints[static_cast<std::size_t>(ps.bestWithMass)];
-      j["best_with_added_mass"] = {{"lowering_m", b.lowering}, {"mass_kg", b.added.mass},
-                                   {"distance_below_knee_m", b.added.distanceBelowKnee},
-                                   {"swing_time_s", b.result.swingTime}};
-    }
-    if (const PublishedParticipant* pub = ps.published) {
-      Json table4 = Json::array();
-      for (const auto& row : pub->table4) {
-        const SweepPoint* ours = pointAt(ps, row.lowering);
-        table4.push_back({{"lowering_m", row.lowering}, {"model_s", row.model},
-                          {"measured_prosthetic_s", row.measuredProsthetic},
-                          {"measured_anatomical_s", row.measuredAnatomical},
-                          {"ours_s", ours && ours->ok ? ours->result.swingTime : kNaN}});
-      }
-      j["published"] = {{"source", "Burkett et al. 2004 Tables 3 and 4"}, {"table3_model_s", pub->table3Model},
-                        {"table3_measured_s", pub->table3Measured}, {"best_lowering_m", pub->predictedBestLowering},
-                        {"table4", table4}};
-    } else {
-      j["published"] = nullptr;
-    }
-    if (const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name)) {
-      j["fastest_lowering_interval_m"] = intervalJson(pu->fastestLowering);
-      j["fastest_time_interval_s"] = intervalJson(pu->fastestTime);
-      j["samples_without_swing_end"] = pu->samplesWithoutSwingEnd;
-      j["sensitivity"] = sensitivityJson(*pu);
-      j["uncertainty_samples"] = uncertainty->samples;
-      j["seed"] = uncertainty->seed;
-    }
-    participants.push_back(j);
-  }
+  for (const auto& ps : results.participants) participants.push_back(participantJson(results, ps, uncertainty));
   return formatJson({{"study", results.study}, {"participants", participants}});
 }
 

@@ -186,6 +186,81 @@ struct Job {
   std::size_t index;  // into points or massPoints
 };
 
+// A participant's sweep before it runs: its name, Burkett's rows, the lowering cap and the
+// note when the cap is below the study's largest lowering.
+ParticipantSweep makeParticipantSweep(const SweepStudy& study, const Participant& p) {
+  ParticipantSweep ps;
+  ps.name = p.name;
+  ps.published = findPublished(p.name);
+  ps.loweringCap = std::min(study.loweringMax, calcMaxLowering(p));
+  if (study.loweringMax > calcMaxLowering(p) + 1e-9) {
+    ps.capNote = "lowering capped at " + formatNumber(ps.loweringCap) + " m (study asks " +
+                 formatNumber(study.loweringMax) + " m): below that the shank COM would leave the shank or less than " +
+                 formatNumber(p.minShankLength) + " m of shank would remain";
+  }
+  return ps;
+}
+
+// Adds participant i's points at each lowering, with and without each added mass that fits on
+// the shortened shank, and a job for each to `work`.
+void addSweepPoints(const SweepStudy& study, const Participant& p, std::size_t i, ParticipantSweep& ps, std::vector<Job>& work) {
+  for (double d : sweepLowerings(study, p)) {
+    SweepPoint pt;
+    pt.lowering = d;
+    pt.onGrid = d <= study.loweringMax + 1e-9 &&
+                std::fabs(d / study.loweringStep - std::round(d / study.loweringStep)) < 1e-6;
+    ps.points.push_back(pt);
+    work.push_back({i, false, ps.points.size() - 1});
+    for (double m : study.addedMasses) {
+      if (m <= 0) continue;
+      for (double at : study.addedMassDistances) {
+        if (at > p.shank.length - d) continue;  // the mass must sit on the shortened shank
+        SweepPoint mp;
+        mp.lowering = d;
+        mp.onGrid = pt.onGrid;
+        mp.added = {m, at};
+        ps.massPoints.push_back(mp);
+        work.push_back({i, true, ps.massPoints.size() - 1});
+      }
+    }
+  }
+}
+
+// Simulates one point's swing (with its trajectory unless it carries an added mass); a
+// failure is the point's, never the end of the whole sweep.
+void runSweepPoint(const SweepStudy& study, const Participant& p, const std::shared_ptr<const KneeLawSum>& knee, SweepPoint& pt,
+                   bool withMass) {
+  SwingSetup setup = makeSwingSetup(p, knee, pt.lowering, pt.added);
+  setup.participant.kneeModelPath = studyKneeModelPath(study, p);  // the file actually used, for messages
+  SwingOptions options = study.swing;
+  options.recordTrajectory = !withMass;
+  try {
+    pt.result = simulateSwing(setup, options);
+    pt.ok = true;
+  } catch (const RunError& e) {
+    pt.failure = e.what();
+  } catch (const std::exception& e) {
+    // Anything else (Simbody's own exceptions, a bad_alloc) is this point's failure with
+    // the participant and lowering that caused it, never the end of the whole sweep.
+    char where[96];
+    std::snprintf(where, sizeof where, " at lowering %.4g m", pt.lowering);
+    pt.failure = p.name + where + ": the simulation failed: " + e.what();
+  }
+  pt.ran = true;
+}
+
+// The index of the fastest ended swing on the grid (-1: none), marking points an interrupted
+// sweep did not run.
+int pickBest(std::vector<SweepPoint>& pts) {
+  int best = -1;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    if (!pts[k].ran) pts[k].failure = "not run (interrupted)";
+    if (pts[k].ok && pts[k].onGrid && (best < 0 || pts[k].result.swingTime < pts[static_cast<std::size_t>(best)].result.swingTime - 1e-12))
+      best = static_cast<int>(k);
+  }
+  return best;
+}
+
 }  // namespace
 
 SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<void(int, int)>& progress,
@@ -197,75 +272,20 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
   for (std::size_t i = 0; i < study.participants.size(); ++i) {
     const Participant& p = study.participants[i];
     knees.push_back(std::make_shared<const KneeLawSum>(makeKneeLaw(p, findStudyKneeModel(study, p))));
-
-    ParticipantSweep ps;
-    ps.name = p.name;
-    ps.published = findPublished(p.name);
-    const auto lowerings = sweepLowerings(study, p);
-    ps.loweringCap = std::min(study.loweringMax, calcMaxLowering(p));
-    if (study.loweringMax > calcMaxLowering(p) + 1e-9) {
-      ps.capNote = "lowering capped at " + formatNumber(ps.loweringCap) + " m (study asks " +
-                   formatNumber(study.loweringMax) + " m): below that the shank COM would leave the shank or less than " +
-                   formatNumber(p.minShankLength) + " m of shank would remain";
-    }
-    for (double d : lowerings) {
-      SweepPoint pt;
-      pt.lowering = d;
-      pt.onGrid = d <= study.loweringMax + 1e-9 &&
-                  std::fabs(d / study.loweringStep - std::round(d / study.loweringStep)) < 1e-6;
-      ps.points.push_back(pt);
-      work.push_back({i, false, ps.points.size() - 1});
-      for (double m : study.addedMasses) {
-        if (m <= 0) continue;
-        for (double at : study.addedMassDistances) {
-          if (at > p.shank.length - d) continue;  // the mass must sit on the shortened shank
-          SweepPoint mp;
-          mp.lowering = d;
-          mp.onGrid = pt.onGrid;
-          mp.added = {m, at};
-          ps.massPoints.push_back(mp);
-          work.push_back({i, true, ps.massPoints.size() - 1});
-        }
-      }
-    }
+    ParticipantSweep ps = makeParticipantSweep(study, p);
+    addSweepPoints(study, p, i, ps, work);
     results.participants.push_back(std::move(ps));
   }
 
   const int total = static_cast<int>(work.size());
   auto runOne = [&](const Job& job) {
-    const Participant& p = study.participants[job.participant];
     ParticipantSweep& ps = results.participants[job.participant];
     SweepPoint& pt = job.withMass ? ps.massPoints[job.index] : ps.points[job.index];
-    SwingSetup setup = makeSwingSetup(p, knees[job.participant], pt.lowering, pt.added);
-    setup.participant.kneeModelPath = studyKneeModelPath(study, p);  // the file actually used, for messages
-    SwingOptions options = study.swing;
-    options.recordTrajectory = !job.withMass;
-    try {
-      pt.result = simulateSwing(setup, options);
-      pt.ok = true;
-    } catch (const RunError& e) {
-      pt.failure = e.what();
-    } catch (const std::exception& e) {
-      // Anything else (Simbody's own exceptions, a bad_alloc) is this point's failure with
-      // the participant and lowering that caused it, never the end of the whole sweep.
-      char where[96];
-      std::snprintf(where, sizeof where, " at lowering %.4g m", pt.lowering);
-      pt.failure = p.name + where + ": the simulation failed: " + e.what();
-    }
-    pt.ran = true;
+    runSweepPoint(study, study.participants[job.participant], knees[job.participant], pt, job.withMass);
   };
   runParallelJobs(total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
 
   for (auto& ps : results.participants) {
-    auto pickBest = [](std::vector<SweepPoint>& pts) {
-      int best = -1;
-      for (std::size_t k = 0; k < pts.size(); ++k) {
-        if (!pts[k].ran) pts[k].failure = "not run (interrupted)";
-        if (pts[k].ok && pts[k].onGrid && (best < 0 || pts[k].result.swingTime < pts[static_cast<std::size_t>(best)].result.swingTime - 1e-12))
-          best = static_cast<int>(k);
-      }
-      return best;
-    };
     ps.best = pickBest(ps.points);
     ps.bestWithMass = pickBest(ps.massPoints);
   }

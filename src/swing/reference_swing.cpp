@@ -182,6 +182,77 @@ double locateCrossing(const DormandPrince& dp, F f) {
   return 0.5 * (lo + hi);
 }
 
+// The three trigger signals of simulateSwing's event handlers at one state: the thigh past
+// its target, the knee's flexion rate, the knee inside the zone of stability (positive in it).
+struct SwingSignals {
+  double thigh, rate, zone;
+};
+
+// A sign change of one signal within the last step, at `time` (s).
+enum class CrossingKind { kThigh, kPeak, kZone };
+struct Crossing {
+  double time;
+  CrossingKind kind;
+};
+
+// The step's crossings in time order, as Simbody handles them (insertion sort: at most three).
+void sortByTime(Crossing* crossings, int count) {
+  for (int i = 1; i < count; ++i)
+    for (int j = i; j > 0 && crossings[j].time < crossings[j - 1].time; --j) std::swap(crossings[j], crossings[j - 1]);
+}
+
+// The swing-end rule's state between steps: the swing ends once the thigh has reached its
+// target and the knee is back in the zone after its peak above it.
+class SwingEndTracker {
+ public:
+  explicit SwingEndTracker(double zone) : zone_(zone) {}
+
+  bool thighReached() const { return thighReached_; }
+
+  // The thigh reached its target at t.
+  void onThighAtTarget(double t) {
+    thighReached_ = true;
+    result_.thighAtTargetTime = t;
+  }
+
+  // The knee's flexion peaked at t at `knee` (rad); the highest peak above the zone counts.
+  void onKneePeak(double t, double knee) {
+    if (knee <= zone_) return;  // wiggles inside the zone are not the swing's peak
+    if (!peakSeen_ || knee > result_.peakKneeFlexion) {
+      result_.peakKneeFlexion = knee;
+      result_.peakKneeFlexionTime = t;
+    }
+    peakSeen_ = true;
+  }
+
+  // The knee's flexion crossed the zone boundary at t, into the zone (falling below the
+  // boundary) or out of it.
+  void onZoneBoundary(double t, bool intoZone) {
+    if (!intoZone) {
+      kneeInZone_ = false;
+      return;
+    }
+    if (!peakSeen_) return;  // still on the way up from toe-off
+    kneeInZone_ = true;
+    result_.kneeEntersZoneTime = t;
+  }
+
+  bool hasEnded() const { return thighReached_ && kneeInZone_; }
+
+  // The result for a swing that ended at t after `steps` integrator steps: every field set,
+  // as it ends only after a peak.
+  ReferenceSwingEnd end(double t, long steps) {
+    result_.swingTime = t;
+    result_.steps = steps;
+    return result_;
+  }
+
+ private:
+  double zone_;
+  bool thighReached_ = false, peakSeen_ = false, kneeInZone_ = false;
+  ReferenceSwingEnd result_;
+};
+
 }  // namespace
 
 ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, const std::vector<double>& sampleTimes,
@@ -228,22 +299,10 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
   auto kneeRate = [&](double t) { return dp.interpolate(t, 2) - dp.interpolate(t, 3); };
   auto kneeFlexionAt = [&](double t) { return eq.calcKneeFlexion(dp.interpolate(t, 0), dp.interpolate(t, 1)); };
   auto zoneSignal = [&](double t) { return zone - kneeFlexionAt(t); };
-  auto signals = [&](const double* y, double& thigh, double& rate, double& zoneValue) {
-    thigh = y[0] - target;
-    rate = y[2] - y[3];
-    zoneValue = zone - eq.calcKneeFlexion(y);
-  };
+  auto signalsAt = [&](const double* y) { return SwingSignals{y[0] - target, y[2] - y[3], zone - eq.calcKneeFlexion(y)}; };
 
-  ReferenceSwingEnd result;  // returned only once the swing ended, so after a peak: every field set
-  bool thighReached = false, peakSeen = false, kneeInZone = false;
-  double thigh0, rate0, zone0;
-  signals(dp.getState(), thigh0, rate0, zone0);
-
-  enum Kind { kThigh, kPeak, kZone };
-  struct Crossing {
-    double time;
-    Kind kind;
-  };
+  SwingEndTracker tracker(zone);
+  SwingSignals before = signalsAt(dp.getState());
   while (true) {
     if (dp.getTime() >= rule.timeLimit) {
       throw RunError("reference swing: the swing did not end within the time limit of " +
@@ -251,54 +310,27 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
     }
     dp.step(rule.timeLimit);
     checkStepBudget(dp, relTol);
-    double thigh1, rate1, zone1;
-    signals(dp.getState(), thigh1, rate1, zone1);
+    const SwingSignals after = signalsAt(dp.getState());
+    const bool intoZone = isRising(before.zone, after.zone);  // knee flexion fell below the zone boundary
 
     Crossing crossings[3];
     int count = 0;
-    if (!thighReached && isRising(thigh0, thigh1)) crossings[count++] = {locateCrossing(dp, thighSignal), kThigh};
-    if (isFalling(rate0, rate1)) crossings[count++] = {locateCrossing(dp, kneeRate), kPeak};
-    if (isRising(zone0, zone1) || isFalling(zone0, zone1)) crossings[count++] = {locateCrossing(dp, zoneSignal), kZone};
-    // Handle in time order, as Simbody does.
-    for (int i = 1; i < count; ++i)
-      for (int j = i; j > 0 && crossings[j].time < crossings[j - 1].time; --j) std::swap(crossings[j], crossings[j - 1]);
+    if (!tracker.thighReached() && isRising(before.thigh, after.thigh))
+      crossings[count++] = {locateCrossing(dp, thighSignal), CrossingKind::kThigh};
+    if (isFalling(before.rate, after.rate)) crossings[count++] = {locateCrossing(dp, kneeRate), CrossingKind::kPeak};
+    if (intoZone || isFalling(before.zone, after.zone)) crossings[count++] = {locateCrossing(dp, zoneSignal), CrossingKind::kZone};
+    sortByTime(crossings, count);
 
     for (int i = 0; i < count; ++i) {
       const double t = crossings[i].time;
       switch (crossings[i].kind) {
-        case kThigh:
-          thighReached = true;
-          result.thighAtTargetTime = t;
-          break;
-        case kPeak: {
-          const double knee = kneeFlexionAt(t);
-          if (knee <= zone) break;  // wiggles inside the zone are not the swing's peak
-          if (!peakSeen || knee > result.peakKneeFlexion) {
-            result.peakKneeFlexion = knee;
-            result.peakKneeFlexionTime = t;
-          }
-          peakSeen = true;
-          break;
-        }
-        case kZone:
-          if (isRising(zone0, zone1)) {  // knee flexion fell below the zone boundary
-            if (!peakSeen) break;       // still on the way up from toe-off
-            kneeInZone = true;
-            result.kneeEntersZoneTime = t;
-          } else {
-            kneeInZone = false;
-          }
-          break;
+        case CrossingKind::kThigh: tracker.onThighAtTarget(t); break;
+        case CrossingKind::kPeak: tracker.onKneePeak(t, kneeFlexionAt(t)); break;
+        case CrossingKind::kZone: tracker.onZoneBoundary(t, intoZone); break;
       }
-      if (thighReached && kneeInZone) {
-        result.swingTime = t;
-        result.steps = dp.getNumSteps();
-        return result;
-      }
+      if (tracker.hasEnded()) return tracker.end(t, dp.getNumSteps());
     }
-    thigh0 = thigh1;
-    rate0 = rate1;
-    zone0 = zone1;
+    before = after;
   }
 }
 
