@@ -6,34 +6,20 @@
 
 #include <cmath>
 
-#include "knee/bench_profile.h"
 #include "numerics/metrics.h"
-#include "identify/synthetic_bench.h"
 #include "core/input_error.h"
-#include "io/knee_model_loader.h"
+#include "mauch_bench_fixture.h"
 
 namespace swingsim {
 namespace {
 
-const std::string kRoot = SWINGSIM_SOURCE_DIR;
 // Noise-free data must give back the generating coefficients (rounding only).
 constexpr double kRecoveryTol = 1e-6;
 // With noise, each estimate within this many standard errors of the truth: the chance that
 // one of 12 normal estimates falls outside 4 SE is 12 * 6.3e-5, under 0.1 %.
 constexpr double kStandardErrorBound = 4.0;
-constexpr double kNoise = 25.0;  // N, as in studies/mauch2014-bench.yaml
 
-// A bench record generated exactly as `swingsim generate` does it.
-BenchData makeBench(const MauchCylinderParams& truth, double stride, double scale, double noise,
-                    std::uint64_t seed, const std::string& stem) {
-  const auto knee = readKneeAngleStride(kRoot + "/studies/data/winter-natural-cadence.csv", 28, 97);
-  BenchProfileParams p;
-  p.strideTime = stride;
-  p.amplitudeScale = scale;
-  return makeSyntheticBench(truth, knee, p, noise, seed, stem);
-}
-
-MauchCylinderParams model(const std::string& file) { return loadMauchCylinder(kRoot + "/models/" + file); }
+using namespace mauch_bench_fixture;
 
 TEST(CylinderFit, NoiseFreeDataRecoverTheGeneratingCoefficients) {
   for (const char* file : {"mauch-4phase.yaml", "mauch-2phase.yaml"}) {

@@ -4,30 +4,15 @@
 
 #include <cmath>
 
-#include "identify/synthetic_bench.h"
-#include "io/bench_csv.h"
-#include "io/knee_model_loader.h"
-#include "knee/bench_profile.h"
 
 #include "identify/projected_residual.h"
+#include "mauch_bench_fixture.h"
 
 namespace swingsim {
 namespace {
 
-const std::string kRoot = SWINGSIM_SOURCE_DIR;
-constexpr double kNoise = 25.0;  // N, as in studies/mauch2014-bench.yaml
 
-// A bench record generated exactly as `swingsim generate` does it.
-BenchData makeBench(const MauchCylinderParams& truth, double stride, double scale, double noise,
-                    std::uint64_t seed, const std::string& stem) {
-  const auto knee = readKneeAngleStride(kRoot + "/studies/data/winter-natural-cadence.csv", 28, 97);
-  BenchProfileParams p;
-  p.strideTime = stride;
-  p.amplitudeScale = scale;
-  return makeSyntheticBench(truth, knee, p, noise, seed, stem);
-}
-
-MauchCylinderParams model(const std::string& file) { return loadMauchCylinder(kRoot + "/models/" + file); }
+using namespace mauch_bench_fixture;
 
 // The multi-start grid's shortcut (switch values shared between starts computed once) ranks
 // the starts by the same costs as the projected residual itself.
