@@ -6,7 +6,8 @@
 
 namespace swingsim {
 
-/// Reads a kinematics CSV; hip_moment_Nm is required here (the drive). Throws InputError.
+/// Reads a kinematics CSV; hip_moment_Nm and knee_moment_Nm are optional here (a study with
+/// `drive: hip_moment` requires the hip moment: docs/formats.md). Throws InputError.
 SwingRecord readSwingRecord(const std::string& path);
 /// CSV text of a record (the generator's output).
 std::string formatSwingRecordCsv(const SwingRecord& record);
