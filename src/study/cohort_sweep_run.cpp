@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <tuple>
 
-#include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
 #include "report/cohort_report.h"
@@ -16,18 +15,13 @@ namespace swingsim {
 
 namespace {
 
-std::string describeShard(const CohortResultsFile& f) {
-  return f.sharded ? std::to_string(f.shardIndex) + "/" + std::to_string(f.shardCount) : std::string("null");
-}
-
 /// Takes the results an earlier interrupted run of the same slice left at `path`; one of
 /// another run or slice is an InputError (file, key, expected, found). Returns how many.
 std::size_t resumeFrom(const std::string& path, CohortResultsFile& file) {
   if (!std::filesystem::exists(path)) return 0;
   const CohortResultsFile earlier = readCohortResultsFile(path);
   checkSameCohortRun(file.run, earlier, "this run");
-  if (describeShard(earlier) != describeShard(file))
-    throw InputError(path + ": shard: expected " + describeShard(file) + " (this run), found " + describeShard(earlier));
+  checkSameShard(file, earlier, path);
   file.results = earlier.results;
   return earlier.countFinished();
 }

@@ -129,4 +129,12 @@ std::string ShardIndexSet::listMissing(int count, int listed, int& missingCount)
   return missing;
 }
 
+std::string formatShardKey(bool sharded, int index, int count) {
+  return sharded ? std::to_string(index) + "/" + std::to_string(count) : std::string("null");
+}
+
+void checkSameShardKey(const std::string& path, const std::string& expected, const std::string& found) {
+  if (expected != found) throw InputError(path + ": shard: expected " + expected + " (this run), found " + found);
+}
+
 }  // namespace swingsim

@@ -143,6 +143,19 @@ ShardSlice describeShardSlice(const ResultsFile& file, std::size_t total) {
   return slice;
 }
 
+/// `K/N` of `--shard K/N`, or "null" for a whole run's file.
+std::string formatShardKey(bool sharded, int index, int count);
+/// Throws InputError `PATH: shard: expected EXPECTED (this run), found FOUND` unless they agree.
+void checkSameShardKey(const std::string& path, const std::string& expected, const std::string& found);
+/// The check that the file an earlier interrupted run left at `path` (CohortResultsFile,
+/// UncertaintySwingsFile) holds the same slice as this run's: the same shard, or both not
+/// sharded. Throws InputError naming the file and the key `shard`.
+template <class ResultsFile>
+void checkSameShard(const ResultsFile& thisRun, const ResultsFile& earlier, const std::string& path) {
+  checkSameShardKey(path, formatShardKey(thisRun.sharded, thisRun.shardIndex, thisRun.shardCount),
+                    formatShardKey(earlier.sharded, earlier.shardIndex, earlier.shardCount));
+}
+
 /// Throws InputError `FILE: shard: expected {"index": K, "count": N} ..., found null ...`
 /// if the file is a whole run's partial result, not a shard.
 void requireShardFile(const ShardSlice& s);

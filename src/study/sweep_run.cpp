@@ -57,11 +57,6 @@ std::string describeSweepGrid(const SweepStudy& study) {
                             std::to_string(study.addedMassDistances.size()) + " distances");
 }
 
-/// "0/2" or "null": a file's shard as messages name it.
-std::string describeShard(const UncertaintySwingsFile& f) {
-  return f.sharded ? std::to_string(f.shardIndex) + "/" + std::to_string(f.shardCount) : std::string("null");
-}
-
 }  // namespace
 
 void announceSweepGrid(const SweepStudy& study, std::uint64_t maxSwings, int jobs) {
@@ -96,8 +91,7 @@ std::optional<UncertaintySwingsFile> readResumableSlice(const UncertaintySwingsF
   if (path.empty() || !std::filesystem::exists(path)) return std::nullopt;
   UncertaintySwingsFile earlier = readUncertaintySwingsFile(path);
   checkSameUncertaintyRun(file.run, earlier, "this run");
-  if (describeShard(earlier) != describeShard(file))
-    throw InputError(path + ": shard: expected " + describeShard(file) + " (this run), found " + describeShard(earlier));
+  checkSameShard(file, earlier, path);
   return earlier;
 }
 
@@ -150,7 +144,7 @@ void SweepRun::planUncertainty(const std::string& partialPath) {
   file_.first = 0;
   file_.last = plan_->swingCount;
   partialPath_ = partialPath;
-  readResumableSlice(file_, partialPath_);
+  earlier_ = readResumableSlice(file_, partialPath_);
 }
 
 bool SweepRun::runUncertainty() {
@@ -158,7 +152,7 @@ bool SweepRun::runUncertainty() {
   if (control_.terminal)
     std::fprintf(stderr, "uncertainty %s: %d samples, seed %d, and each assumption at both ends of its range "
                  "(docs/uncertainty.md)\n", study_.name.c_str(), study_.uncertaintySamples, study_.uncertaintySeed);
-  if (!runSlice(file_, partialPath_, "uncertainty " + study_.name)) return false;
+  if (!runSlice(file_, partialPath_, "uncertainty " + study_.name, earlier_)) return false;
   UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan_->swingCount);
   copyFinishedSwings(file_, times);
   uncertainty_ = assembleUncertaintyResults(study_, *plan_, times);
@@ -180,8 +174,9 @@ int SweepRun::runShard(int index, int count, const std::string& out) {
     std::fprintf(stderr, "%s: %zu swings, %zu to %zu of the %zu (%d samples, seed %d, and each assumption at both ends)\n",
                  label.c_str(), file.last - file.first, file.first, file.last - 1, plan.swingCount,
                  study_.uncertaintySamples, study_.uncertaintySeed);
-  readResumableSlice(file, path);  // another analysis's file there: refused before any swing
-  if (!runSlice(file, path, label)) return 1;
+  // Another analysis's file there: refused before any swing.
+  const std::optional<UncertaintySwingsFile> earlier = readResumableSlice(file, path);
+  if (!runSlice(file, path, label, earlier)) return 1;
   writeFileAtomic(path, formatUncertaintySwingsJson(file));
   if (control_.terminal)
     std::printf("shard %d/%d of %s: %zu swings -> %s\n(when all %d have run: swingsim merge %s/uncertainty-shard-*-of-%d.json)\n",
@@ -189,12 +184,13 @@ int SweepRun::runShard(int index, int count, const std::string& out) {
   return 0;
 }
 
-bool SweepRun::runSlice(UncertaintySwingsFile& file, const std::string& path, const std::string& label) {
+bool SweepRun::runSlice(UncertaintySwingsFile& file, const std::string& path, const std::string& label,
+                        const std::optional<UncertaintySwingsFile>& earlier) {
   const UncertaintyPlan& plan = *plan_;
   const std::size_t sliceSwings = file.last - file.first;
   UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan.swingCount);
   std::size_t resumed = 0;
-  if (const auto earlier = readResumableSlice(file, path)) {
+  if (earlier) {
     copyFinishedSwings(*earlier, times);
     resumed = earlier->times.countFinished();
   }

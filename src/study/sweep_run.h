@@ -105,8 +105,10 @@ class SweepRun {
   std::string formatJson() const;
 
  private:
-  /// Runs the swings of `file`'s slice not finished yet; see runUncertainty.
-  bool runSlice(UncertaintySwingsFile& file, const std::string& path, const std::string& label);
+  /// Runs the swings of `file`'s slice not finished yet, after taking those of `earlier` (the
+  /// file an interrupted run left at `path`, read once, before any swing); see runUncertainty.
+  bool runSlice(UncertaintySwingsFile& file, const std::string& path, const std::string& label,
+                const std::optional<UncertaintySwingsFile>& earlier);
   /// After a stop: the finished rows into OUT/sweep.partial.csv, and which did not run.
   void writePartialRows(const std::string& out) const;
 
@@ -118,6 +120,7 @@ class SweepRun {
   std::optional<UncertaintyPlan> plan_;
   UncertaintySwingsFile file_;
   std::string partialPath_;
+  std::optional<UncertaintySwingsFile> earlier_;  ///< the partial file found at partialPath_
   std::optional<UncertaintySwingTimes> merged_;
   std::optional<UncertaintyResults> uncertainty_;
 };

@@ -254,5 +254,28 @@ TEST(ShardFileHeader, InputsFingerprintCoversTheThighDrivesSamples) {
   EXPECT_EQ(calcStudyInputsFingerprint(study), hipMoment);
 }
 
+// The file an earlier interrupted run left must hold this run's slice: the same K/N, or both
+// a whole run's ("null").
+TEST(ShardFileHeader, AnEarlierFileOfAnotherSliceIsRefusedNamingBoth) {
+  struct Slice {
+    bool sharded;
+    int shardIndex, shardCount;
+  };
+  const Slice shard0{true, 0, 2}, shard1{true, 1, 2}, whole{false, 0, 1};
+  EXPECT_NO_THROW(checkSameShard(shard0, Slice{true, 0, 2}, "p.json"));
+  EXPECT_NO_THROW(checkSameShard(whole, Slice{false, 0, 1}, "p.json"));
+  auto refusal = [](const Slice& thisRun, const Slice& earlier) {
+    try {
+      checkSameShard(thisRun, earlier, "p.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal(shard0, shard1), "p.json: shard: expected 0/2 (this run), found 1/2");
+  EXPECT_EQ(refusal(shard0, whole), "p.json: shard: expected 0/2 (this run), found null");
+  EXPECT_EQ(refusal(whole, shard1), "p.json: shard: expected null (this run), found 1/2");
+}
+
 }  // namespace
 }  // namespace swingsim
