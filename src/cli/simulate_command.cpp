@@ -164,12 +164,15 @@ void writeSimulateFiles(const SimulateArguments& a, const SwingSetup& setup, con
   const Participant& p = setup.participant;
   const std::string out = a.out.value_or(makeTrajectoryFolder(p.name));
   const std::string tag = makeTrajectoryFileStem(p.name, setup.lowering);
-  writeFileAtomic(out + "/" + tag + ".csv", formatTrajectoryCsv(r.trajectory));
-  writeFileAtomic(out + "/" + tag + ".sto", formatTrajectorySto(r.trajectory, tag));
-  writeFileAtomic(out + "/" + tag + "-moments.svg", formatSwingMomentsSvg(r.trajectory, p.name + ", drive: " + driveKey(p.drive)));
+  // One staged set: a full disk or a folder in the way leaves none of them, not a CSV alone.
+  StagedOutput staged(out);
+  staged.add(tag + ".csv", formatTrajectoryCsv(r.trajectory));
+  staged.add(tag + ".sto", formatTrajectorySto(r.trajectory, tag));
+  staged.add(tag + "-moments.svg", formatSwingMomentsSvg(r.trajectory, p.name + ", drive: " + driveKey(p.drive)));
+  if (a.json) staged.addBeside(*a.json, formatJson(makeSimulateJson(setup, r)));
+  staged.commit();
   std::printf("  trajectory          %s/%s.csv and .sto; hip and knee moments %s-moments.svg\n", out.c_str(), tag.c_str(),
               tag.c_str());
-  if (a.json) writeJsonFile(*a.json, makeSimulateJson(setup, r));
 }
 
 int runSimulate(const SimulateArguments& a) {

@@ -48,63 +48,6 @@ void writeFileAtomic(const std::string& path, const std::string& contents) {
   }
 }
 
-StagedOutput::StagedOutput(std::string folder)
-    : folder_(std::move(folder)), staging_(folder_ + "/.staging-" + std::to_string(::getpid())) {
-  std::error_code ec;
-  std::filesystem::remove_all(staging_, ec);  // left by a killed run with our pid
-  makeDirectories(staging_);
-}
-
-StagedOutput::~StagedOutput() { discard(); }
-
-void StagedOutput::add(const std::string& name, const std::string& contents) {
-  writeFileAtomic(staging_ + "/" + name, contents);
-  names_.push_back(name);
-}
-
-void StagedOutput::addBeside(const std::string& path, const std::string& contents) {
-  if (isWriteThroughTarget(path)) {
-    streams_.push_back({path, contents});  // written through at commit
-    return;
-  }
-  const std::string target = resolveReplaceTarget(path);
-  const std::filesystem::path p(target);
-  if (p.has_parent_path()) makeDirectories(p.parent_path().string());
-  beside_.push_back({writeTemporaryBeside(target, contents), target});
-}
-
-void StagedOutput::commit(const std::vector<std::string>& stale) {
-  for (const auto& name : names_) {
-    const std::filesystem::path target = std::filesystem::path(folder_) / name;
-    if (target.has_parent_path()) makeDirectories(target.parent_path().string());
-    const std::string from = staging_ + "/" + name;
-    if (std::rename(from.c_str(), target.c_str()) != 0)
-      throw RunError(target.string() + ": cannot move the finished file into place from " + from);
-  }
-  for (const auto& [tmp, target] : beside_)
-    if (std::rename(tmp.c_str(), target.c_str()) != 0)
-      throw RunError(target + ": cannot move the finished file into place from " + tmp);
-  for (const auto& [target, contents] : streams_) writeThrough(target, contents);
-  names_.clear();
-  beside_.clear();
-  streams_.clear();
-  discard();
-  for (const auto& name : stale) {
-    std::error_code ec;
-    std::filesystem::remove(std::filesystem::path(folder_) / name, ec);
-  }
-}
-
-void StagedOutput::discard() {
-  if (staging_.empty()) return;
-  std::error_code ec;
-  std::filesystem::remove_all(staging_, ec);
-  names_.clear();
-  for (const auto& [tmp, target] : beside_) std::remove(tmp.c_str());
-  beside_.clear();
-  streams_.clear();
-}
-
 std::string formatByteCount(std::uintmax_t bytes) {
   char buf[64];
   if (bytes < 1024) {

@@ -19,15 +19,26 @@ void writeFileAtomic(const std::string& path, const std::string& contents);
 /// caller renames it into place. Throws RunError, leaving no temporary file, if it cannot.
 std::string writeTemporaryBeside(const std::string& path, const std::string& contents);
 
-/// A set of output files that appear in their folder together or not at all: each is written
-/// into a hidden staging folder inside it (`.staging-PID/`); commit() renames them into
-/// place (each rename atomic) and removes the folder; the destructor removes an uncommitted
-/// staging folder. Nothing named like a result, and no temporary file, is left by a run that
-/// fails or is stopped before commit().
+/// What a staged set is to its folder.
+enum class OutputSetKind {
+  kFilesAdded,  ///< files added beside what the folder holds (simulate's trajectory and figure)
+  kWholeRun,    ///< the folder's one run (a sweep's report): the files the run before wrote,
+                ///< named in the folder's manifest `.swingsim-run`, and not written again are removed
+};
+
+/// A set of output files that appear in their folder together or not at all
+/// (docs/robustness.md, "One run per output folder"): each is written into a hidden staging
+/// folder inside it, `.staging-HOST-PID/`; commit() checks that nothing is in the way of any
+/// of them, then renames them into place under a lock on the folder. A staging folder left by
+/// a run that was killed is cleaned by the next run into the folder (moved in if it was
+/// complete, removed if not) once its owner is provably gone (same host, pid not alive); a
+/// sibling still running keeps its own. Errors name the folder as `--out`, never the staging
+/// folder. The destructor removes an uncommitted staging folder.
 class StagedOutput {
  public:
-  /// `folder` is created if missing. Throws RunError if it cannot be.
-  explicit StagedOutput(std::string folder);
+  /// `folder` is created if missing. Throws RunError naming `--out` if it cannot be, or if a
+  /// file is in its place.
+  explicit StagedOutput(std::string folder, OutputSetKind kind = OutputSetKind::kFilesAdded);
   ~StagedOutput();
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
@@ -40,7 +51,9 @@ class StagedOutput {
   /// commit(), after the files.
   void addBeside(const std::string& path, const std::string& contents);
   /// Moves every added file into the folder, replacing older ones, and removes the staging
-  /// folder; `stale` files (relative names) are removed from the folder afterwards.
+  /// folder; `stale` files (relative names) are removed from the folder afterwards. Throws
+  /// RunError, changing nothing in the folder, if a folder is in the way of a file (or a file
+  /// in the way of its subfolder) or the folder has gone or been replaced by a file.
   void commit(const std::vector<std::string>& stale = {});
   /// Removes the staging folder, the files staged beside their targets and what was added
   /// (also done by the destructor).
@@ -49,10 +62,26 @@ class StagedOutput {
 
  private:
   std::string folder_, staging_;
+  OutputSetKind kind_;
   std::vector<std::string> names_;
   std::vector<std::pair<std::string, std::string>> beside_;  ///< (temporary, target)
   std::vector<std::pair<std::string, std::string>> streams_;  ///< (FIFO or device, contents)
+
+  void checkNothingInTheWay() const;
 };
+
+/// The manifest of a folder's run (OutputSetKind::kWholeRun), docs/formats.md.
+constexpr const char* kOutputManifestName = ".swingsim-run";
+
+/// The name of this process's staging folder: `.staging-HOST-PID` (HOST shortened to a safe
+/// stem of at most 24 bytes).
+std::string makeStagingFolderName();
+
+/// True if `name` is a staging folder whose run has provably ended: made on this host by a
+/// pid that is not alive (or is this process's own, left by a killed run before it). A
+/// staging folder of another host, of a live pid, or without a host (`.staging-PID`, older
+/// versions) is not.
+bool isOrphanedStagingFolder(const std::string& name);
 
 /// Creates a directory and its parents (like `mkdir -p`).
 void makeDirectories(const std::string& path);

@@ -50,6 +50,19 @@ std::string checkLengths(const std::string& path, std::size_t lastExtra, std::si
   return "";
 }
 
+// Paths up to this many bytes are quoted whole in a message; a longer one (5,000 characters)
+// would bury the reason, so the message starts with it and quotes the path's two ends.
+constexpr std::size_t kWholePathInMessage = 512;
+
+// "cannot write 'PATH': DETAIL" for a path too long, as above.
+std::string describeLengthProblem(const std::string& verb, const std::string& path, std::size_t reserve,
+                                  const std::string& detail) {
+  if (path.size() <= kWholePathInMessage) return verb + " '" + path + "': " + detail;
+  return "path too long (" + std::to_string(path.size()) + " characters; this system allows " +
+         std::to_string(PATH_MAX - reserve) + " per path here / " + std::to_string(NAME_MAX) + " per name): " + verb +
+         " '" + path.substr(0, 60) + "...' (ending '..." + path.substr(path.size() - 30) + "'): " + detail;
+}
+
 }  // namespace
 
 std::string findOutputFileProblem(const std::string& path) {
@@ -58,7 +71,7 @@ std::string findOutputFileProblem(const std::string& path) {
   if (isWriteThroughTarget(path))
     return ::access(path.c_str(), W_OK) == 0 ? "" : "cannot write '" + path + "' (permissions)";
   if (const std::string length = checkLengths(path, kTemporarySuffix, kTemporarySuffix); !length.empty())
-    return "cannot write '" + path + "': " + length;
+    return describeLengthProblem("cannot write", path, kTemporarySuffix, length);
   const std::string folder = checkFolderWritable(fs::path(path).parent_path());
   return folder.empty() ? "" : "cannot write '" + path + "': " + folder;
 }
@@ -67,7 +80,7 @@ std::string findOutputFolderProblem(const std::string& path) {
   std::error_code ec;
   if (fs::exists(path, ec) && !fs::is_directory(path, ec)) return "expected an output folder, got the existing file '" + path + "'";
   if (const std::string length = checkLengths(path, 0, kOutputNameReserve); !length.empty())
-    return "cannot write into '" + path + "': " + length;
+    return describeLengthProblem("cannot write into", path, kOutputNameReserve, length);
   const std::string folder = checkFolderWritable(path);
   return folder.empty() ? "" : "cannot write into '" + path + "': " + folder;
 }

@@ -63,7 +63,7 @@ int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipant
                        const SweepRunControl& control) {
   const CohortSummary summary = summarizeCohort(cohort, results);
   std::printf("%s", formatCohortSummary(cohort, summary).c_str());
-  StagedOutput staged(out);
+  StagedOutput staged(out, OutputSetKind::kWholeRun);
   for (const auto& [name, contents] : makeCohortReport(cohort, results, summary)) staged.add(name, contents);
   if (json) staged.addBeside(*json, formatCohortJson(cohort, results, summary));
   if (control.stopped()) {

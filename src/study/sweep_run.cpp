@@ -287,7 +287,7 @@ void SweepRun::writePartialRows(const std::string& out) const {
 int SweepRun::writeOutputs(const std::string& out, const std::optional<std::string>& json) {
   // The write phase: every file is staged inside --out and moved into place at the end, so a
   // run stopped here (or failing) leaves the folder as it was, with no temporary files.
-  StagedOutput staged(out);
+  StagedOutput staged(out, OutputSetKind::kWholeRun);
   for (const auto& [name, contents] : makeSweepReport(study_, results_, uncertainty())) {
     if (control_.stopped()) break;
     staged.add(name, contents);
