@@ -10,7 +10,7 @@
 namespace swingsim {
 
 /// Bytes a folder's path must leave free below PATH_MAX for the files written inside it
-/// (the staging folder `.staging-PID/`, subfolders, a 64-byte file stem and its suffixes).
+/// (the staging folder `.staging-HOST-PID/`, subfolders, a 64-byte file stem and its suffixes).
 constexpr std::size_t kOutputNameReserve = 160;
 
 /// "" if `path` can be written as an output file: not a directory; an existing FIFO, device

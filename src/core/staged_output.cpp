@@ -151,7 +151,8 @@ bool isOrphanedStagingFolder(const std::string& name) {
   const std::size_t dash = rest.rfind('-');
   if (dash == std::string::npos || rest.substr(0, dash) != hostTag()) return false;
   const std::string digits = rest.substr(dash + 1);
-  if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return false;
+  const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+  if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), isDigit)) return false;
   const pid_t pid = static_cast<pid_t>(std::strtol(digits.c_str(), nullptr, 10));
   if (pid <= 0) return false;
   if (pid == ::getpid()) return true;  // a killed run of ours whose pid this process now has

@@ -1,13 +1,18 @@
 // One run per output folder, from the command line: a sweep that cannot put its whole set in
-// place leaves the earlier run intact, a second sweep leaves no figure of the first,
+// place leaves the earlier run intact, a second sweep leaves no figure of the first, a
+// killed run's staging is cleaned (a live sibling's is not),
 // simulate's CSV, .sto and figure appear together or not at all, and an over-long --out is
 // answered with its length first.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
+#include "core/output_files.h"
 #include "run_swingsim.h"
 
 namespace swingsim {
@@ -72,6 +77,23 @@ TEST(OutputFolderCli, TwoSweepsIntoOneFolderLeaveOnlyTheSecondsFigures) {
     EXPECT_FALSE(fs::exists(out / "figures" / figure)) << figure;
   EXPECT_THAT(slurp(out / "report.md"), Not(HasSubstr("P2")));
   EXPECT_EQ(slurp(out / "my-notes.txt"), "mine");
+}
+
+TEST(OutputFolderCli, ASweepCleansTheStagingOfAKilledRunButNotOfALiveSibling) {
+  const fs::path dir = freshDir("killed");
+  const fs::path out = dir / "out";
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  const std::string mine = makeStagingFolderName(), host = mine.substr(0, mine.rfind('-') + 1);
+  // A run SIGKILLed while writing its report, and a Slurm sibling (this test) still running.
+  for (const std::string name : {host + std::to_string(dead), host + std::to_string(::getpid())}) {
+    fs::create_directories(out / name / "figures");
+    std::ofstream(out / name / "report.md") << "half";
+  }
+  ASSERT_EQ(runSwingsim("sweep " + writeStudy(dir, {"p1.yaml"}).string() + " --out " + out.string()).code, 0);
+  EXPECT_FALSE(fs::exists(out / (host + std::to_string(dead))));
+  EXPECT_EQ(slurp(out / (host + std::to_string(::getpid())) / "report.md"), "half");
 }
 
 TEST(OutputFolderCli, SimulateWritesItsCsvStoAndFigureTogetherOrNone) {
