@@ -87,7 +87,7 @@ TEST(OutputFolderCli, ASweepCleansTheStagingOfAKilledRunButNotOfALiveSibling) {
   ::waitpid(dead, nullptr, 0);
   const std::string mine = makeStagingFolderName(), host = mine.substr(0, mine.rfind('-') + 1);
   // A run SIGKILLed while writing its report, and a Slurm sibling (this test) still running.
-  for (const std::string name : {host + std::to_string(dead), host + std::to_string(::getpid())}) {
+  for (const std::string& name : {host + std::to_string(dead), host + std::to_string(::getpid())}) {
     fs::create_directories(out / name / "figures");
     std::ofstream(out / name / "report.md") << "half";
   }
