@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
+#include "core/staged_writer.h"
 #include "report/diagnosis_markdown.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosed_model_writer.h"
@@ -71,10 +72,15 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const std::vector<std::string> heldWarnings = held ? checkHeldBackComparison(*heldAfter) : std::vector<std::string>{};
   for (const auto& w : heldWarnings) std::fprintf(stderr, "swingsim diagnose: warning: %s\n", w.c_str());
 
-  writeDiagnosisReport(outDir, {study.name, command, drive, &dg, &before, &after, check, heldBefore, heldAfter,
-                                 heldWarnings});
+  // The report, its plots and --json as one set: the folder holds this run or the one before.
+  StagedOutput staged(outDir, OutputSetKind::kWholeRun);
+  stageFolderWriter(staged, [&](const std::string& folder) {
+    writeDiagnosisReport(folder, {study.name, command, drive, &dg, &before, &after, check, heldBefore, heldAfter,
+                                  heldWarnings});
+  });
+  if (args.json) staged.addBeside(*args.json, formatJson(makeDiagnoseJson(dg, before, after, heldBefore, heldAfter)));
+  staged.commit();
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
-  if (args.json) writeJsonFile(*args.json, makeDiagnoseJson(dg, before, after, heldBefore, heldAfter));
   if (args.saveModel && !dg.explained)
     throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict + ")");
   if (args.saveModel) {

@@ -8,6 +8,7 @@
 #include "cli/command.h"
 #include "study/cylinder_study.h"
 #include "core/output_files.h"
+#include "core/staged_writer.h"
 #include "report/cylinder_fit_report.h"
 #include "study/cylinder_fit_run.h"
 
@@ -31,8 +32,13 @@ int runFit(const FitArguments& args, const std::string& command) {
   for (const auto& r : results)
     for (const auto& w : r.fit.warnings) std::fprintf(stderr, "swingsim fit: warning: %s: %s\n", r.name.c_str(), w.c_str());
 
-  writeFitReport(outDir, study.name, command, results, study.plotSeconds);
-  if (args.json) writeFileAtomic(*args.json, formatFitJson(results));
+  // The report, its figures and --json as one set: the folder holds this run or the one before.
+  StagedOutput staged(outDir, OutputSetKind::kWholeRun);
+  stageFolderWriter(staged, [&](const std::string& folder) {
+    writeFitReport(folder, study.name, command, results, study.plotSeconds);
+  });
+  if (args.json) staged.addBeside(*args.json, formatFitJson(results));
+  staged.commit();
   std::printf("report: %s/report.md\n", outDir.c_str());
   return 0;
 }

@@ -1,8 +1,7 @@
-// One run per output folder, from the command line: a sweep that cannot put its whole set in
-// place leaves the earlier run intact, a second sweep leaves no figure of the first, a
-// killed run's staging is cleaned (a live sibling's is not),
-// simulate's CSV, .sto and figure appear together or not at all, and an over-long --out is
-// answered with its length first.
+// One run per output folder, from the command line: a sweep or fit that cannot put its whole
+// set in place leaves the earlier run intact, a second sweep leaves no figure of the first, a
+// killed run's staging is cleaned (a live sibling's is not), simulate's CSV, .sto and figure
+// appear together or not at all, and an over-long --out is answered with its length first.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -107,6 +106,23 @@ TEST(OutputFolderCli, SimulateWritesItsCsvStoAndFigureTogetherOrNone) {
   EXPECT_FALSE(fs::exists(out / "P1-lower000mm.csv"));
   EXPECT_FALSE(fs::exists(out / "P1-lower000mm-moments.svg"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));
+  EXPECT_EQ(litterIn(dir), std::vector<std::string>{});
+}
+
+TEST(OutputFolderCli, AFitWithAFolderInTheWayOfItsCsvWritesNoFigureAndKeepsTheEarlierReport) {
+  const fs::path dir = freshDir("fit");
+  const fs::path out = dir / "out";
+  const std::string fit = "fit " + std::string(SWINGSIM_SOURCE_DIR) + "/studies/mauch2014.yaml --out " + out.string();
+  ASSERT_EQ(runSwingsim(fit).code, 0);
+  std::ofstream(out / "report.md") << "earlier report";
+  fs::remove(out / "mauch-2phase-slow-force.svg");
+  fs::remove(out / "coefficients.csv");
+  fs::create_directories(out / "coefficients.csv");
+  const auto r = runSwingsim(fit);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--out " + out.string() + ": a folder is in the way of the output file coefficients.csv"));
+  EXPECT_EQ(slurp(out / "report.md"), "earlier report");
+  EXPECT_FALSE(fs::exists(out / "mauch-2phase-slow-force.svg"));  // the figures come before the CSV
   EXPECT_EQ(litterIn(dir), std::vector<std::string>{});
 }
 
