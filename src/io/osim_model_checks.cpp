@@ -28,6 +28,9 @@ void checkSegment(const std::string& path, const std::string& segment, const Seg
     throw InputError(where(path, distal) + "the " + segment + ", from the " + proximal.name + " centre to the " + distal.name +
                      " centre: expected a length above 0 and at most " + formatNumber(kMaxSegmentLength) + " m" +
                      millimetreHint(s.length) + " (got " + formatNumber(s.length) + " m)");
+  if (s.mass > kMaxSegmentMass)
+    throw InputError(where(path, body) + "<mass>: expected at most " + formatNumber(kMaxSegmentMass) + " kg for the " + segment +
+                     " (is the model in grams? OpenSim masses are in kg) (got " + formatNumber(s.mass) + ")");
   if (!(s.comFromDistal >= 0 && s.comFromDistal <= s.length))
     throw InputError(where(path, body) + "<mass_center>: expected the COM on the " + segment + ", 0 to " +
                      formatNumber(s.length) + " m from the " + distal.name + " centre along it (got " +
@@ -79,8 +82,8 @@ void checkOsimModelNames(const OsimModel& m) {
 }
 
 void checkOsimBodyUnits(const std::string& path, const OsimBody& b) {
-  if (b.mass > kMaxSegmentMass)
-    throw InputError(where(path, b) + "<mass>: expected at most " + formatNumber(kMaxSegmentMass) +
+  if (b.mass > kMaxBodyMass)
+    throw InputError(where(path, b) + "<mass>: expected at most " + formatNumber(kMaxBodyMass) +
                      " kg, heavier than a whole body (is the model in grams? OpenSim masses are in kg) (got " +
                      formatNumber(b.mass) + ")");
   for (int i = 0; i < 3; ++i)

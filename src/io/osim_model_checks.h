@@ -19,7 +19,7 @@ std::string formatOsimElement(const std::string& path, const std::string& type, 
 void checkOsimModelNames(const OsimModel& model);
 
 /// Throws InputError for a body no human body part can have in SI units: a mass above
-/// kMaxSegmentMass (a model in grams), or a negative moment of inertia, at its <Body>.
+/// kMaxBodyMass (a model in grams), or a negative moment of inertia, at its <Body>.
 void checkOsimBodyUnits(const std::string& path, const OsimBody& body);
 
 /// Where each number of an imported leg comes from in the model.

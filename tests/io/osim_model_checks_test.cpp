@@ -99,11 +99,15 @@ TEST(OsimModelChecks, AModelInMillimetresIsNamedAsSuch) {
 
 TEST(OsimModelChecks, AModelInGramsIsNamedAsSuch) {
   EXPECT_THAT(errorFor(withReplaced("<mass>8</mass>", "<mass>8000</mass>")),
-              HasSubstr("tiny.osim:6: <Body name=\"femur_r\">: <mass>: expected at most 150 kg, heavier than a whole "
+              HasSubstr("tiny.osim:6: <Body name=\"femur_r\">: <mass>: expected at most 500 kg, heavier than a whole "
                         "body (is the model in grams? OpenSim masses are in kg) (got 8000)"));
+  // A leg segment's own limit: a 200 kg thigh.
+  EXPECT_THAT(errorFor(withReplaced("<mass>8</mass>", "<mass>200</mass>")),
+              HasSubstr("tiny.osim:6: <Body name=\"femur_r\">: <mass>: expected at most 150 kg for the thigh (is the model "
+                        "in grams? OpenSim masses are in kg) (got 200)"));
   // Every body, not only the leg's: a torso of 1e30 kg.
   EXPECT_THAT(errorFor(withReplaced("<mass>10</mass>", "<mass>1e30</mass>")),
-              HasSubstr("tiny.osim:5: <Body name=\"pelvis\">: <mass>: expected at most 150 kg"));
+              HasSubstr("tiny.osim:5: <Body name=\"pelvis\">: <mass>: expected at most 500 kg"));
 }
 
 TEST(OsimModelChecks, ANegativeInertiaOrACOMOffTheSegmentNamesTheBodyNotAYaml) {
