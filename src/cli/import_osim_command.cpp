@@ -4,6 +4,7 @@
 // and foot from the model's bodies and joint centres, every other field the project's
 // default, each number's source in the file's leading comments (docs/import-osim.md).
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -24,11 +25,16 @@ namespace {
 // The project's default knee: the damping table the Burkett participants use.
 const std::string kDefaultKnee = std::string(SWINGSIM_SOURCE_DIR) + "/models/damping-table-default.yaml";
 
-// The name the imported participant is checked under, and the message without it.
+// The name the imported participant is checked under, and a message without it and its
+// line ("imported-participant.yaml:20: segments..." -> "segments...").
 const std::string kImportedName = "imported-participant.yaml";
 std::string dropImportedPrefix(const std::string& message) {
   const auto at = message.find(kImportedName + ":");
-  return at == std::string::npos ? message : message.substr(at + kImportedName.size() + 1);
+  if (at == std::string::npos) return message;
+  std::size_t rest = at + kImportedName.size() + 1;
+  while (rest < message.size() && std::isdigit(static_cast<unsigned char>(message[rest]))) ++rest;
+  if (message.compare(rest, 2, ": ") == 0) rest += 2;
+  return message.substr(rest);
 }
 
 struct ImportOsimArguments {

@@ -109,6 +109,15 @@ TEST(OutputOverInput, ImportOsimMessagesNameTheModelElementNotTheOutputYaml) {
   EXPECT_THAT(run.output, HasSubstr(model + ":7: <Body name=\"tibia_r\">: <inertia>: expected moments of inertia >= 0"));
   EXPECT_THAT(run.output, Not(HasSubstr("o.yaml")));
   EXPECT_FALSE(fs::exists(out));
+  // What only the participant file's checks see (a prosthesis heavier than 150 kg) is named
+  // by the model and the key, not by the YAML and its line.
+  const std::string tiny = copyTinyLeg("heavy");
+  const CliRun heavy = runSwingsim("import-osim " + tiny + " --shank-mass-kg 200 --out " + out);
+  EXPECT_EQ(heavy.code, 1) << heavy.output;
+  EXPECT_THAT(heavy.output, HasSubstr(tiny + ": the participant imported from it is refused: segments.shank.mass_kg: expected "
+                                      "a segment mass of at most 150 kg"));
+  EXPECT_THAT(heavy.output, Not(HasSubstr("o.yaml")));
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
