@@ -282,7 +282,7 @@ const OsimJoint& OsimModel::getJointTo(const std::string& child) const {
   for (const auto& j : joints)
     if (j.childBody == child) return j;
   throw InputError(path + ":" + std::to_string(jointSetLine) + ": <JointSet>: expected a joint whose child frame is on body " + child +
-                   ", a link of the leg's chain (got none)");
+                   " (got none); a link of the leg's chain is missing");
 }
 
 double OsimModel::calcTotalMass() const {

@@ -28,9 +28,10 @@ void checkSegment(const std::string& path, const std::string& segment, const Seg
     throw InputError(where(path, distal) + "the " + segment + ", from the " + proximal.name + " centre to the " + distal.name +
                      " centre: expected a length above 0 and at most " + formatNumber(kMaxSegmentLength) + " m" +
                      millimetreHint(s.length) + " (got " + formatNumber(s.length) + " m)");
-  if (s.mass > kMaxSegmentMass)
+  // The body's own mass: a --shank-mass-kg is the command line's, checked with the participant.
+  if (body.mass > kMaxSegmentMass)
     throw InputError(where(path, body) + "<mass>: expected at most " + formatNumber(kMaxSegmentMass) + " kg for the " + segment +
-                     " (is the model in grams? OpenSim masses are in kg) (got " + formatNumber(s.mass) + ")");
+                     " (is the model in grams? OpenSim masses are in kg) (got " + formatNumber(body.mass) + ")");
   if (!(s.comFromDistal >= 0 && s.comFromDistal <= s.length))
     throw InputError(where(path, body) + "<mass_center>: expected the COM on the " + segment + ", 0 to " +
                      formatNumber(s.length) + " m from the " + distal.name + " centre along it (got " +
