@@ -41,8 +41,6 @@ std::string errorFor(const std::string& xml) {
   return "(no error)";
 }
 
-TEST(OsimModelChecks, TheTinyLegImportsAsItIs) { EXPECT_EQ(errorFor(tinyLeg()), "(no error)"); }
-
 TEST(OsimModelChecks, ABodyNameGivenTwiceIsRefusedAtTheSecond) {
   const std::string second = "  <Body name=\"femur_r\"><mass>1</mass><mass_center>0 0 0</mass_center><inertia>0.1 0.1 0.1 0 0 0</inertia></Body>\n";
   EXPECT_THAT(errorFor(withReplaced("</objects></BodySet>", second + "</objects></BodySet>")),
