@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
-all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz diagnosis_study_fuzz csv_fuzz motion_file_fuzz)
+all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz diagnosis_study_fuzz csv_fuzz motion_file_fuzz osim_model_fuzz)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
 
@@ -56,10 +56,18 @@ done
 printf '\101swing\nversion=1\nnRows=6\nnColumns=4\ninDegrees=yes\nendheader\ntime\thip_flexion_r\tknee_angle_r\thip_moment\n0\t-10\t40\t20\n0.01\t-8\t45\t21\n0.02\t-6\t50\t21\n0.03\t-4\t54\t20\n0.04\t-2\t57\t18\n0.05\t0\t59\t15\n' \
   >build-fuzz/seeds/motion_file_fuzz/inline.sto
 
+# OpenSim models: the small leg the tests use (the shipped Gait2354 model is 235 kB, past
+# -max_len); a dictionary of its element and attribute names.
+seed osim_model_fuzz tests/data/*.osim
+
 # A dictionary per YAML target: every key its seeds use, so mutations stay near valid files.
 dictionary() {  # dictionary TARGET -> path
   local dict="build-fuzz/seeds/$1.dict"
-  cat build-fuzz/seeds/"$1"/* | grep -oE '[A-Za-z_]+:' | sort -u | sed 's/.*/"&"/' >"$dict"
+  if [ "$1" = osim_model_fuzz ]; then
+    cat build-fuzz/seeds/"$1"/* | grep -oE '</?[A-Za-z_]+|[A-Za-z_]+="' | sort -u | sed 's/"/\\"/g; s/.*/"&"/' >"$dict"
+  else
+    cat build-fuzz/seeds/"$1"/* | grep -oE '[A-Za-z_]+:' | sort -u | sed 's/.*/"&"/' >"$dict"
+  fi
   echo "$dict"
 }
 

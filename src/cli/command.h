@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/output_paths.h"  // chooseStudyOutputFolder
 
@@ -44,6 +45,11 @@ CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json);
 /// `--out DIR` of the study commands: default out/<study name>/.
 CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out);
 
+
+/// The data and report files a sweep or a cohort run (and their merge) writes into --out
+/// (report/sweep_markdown.cpp, report/cohort_report.cpp): an input by one of these names in
+/// that folder would be replaced.
+inline const std::vector<std::string> kSweepReportFiles = {"sweep.csv", "report.md", "report.html", "cohort.csv"};
 
 /// The command line as parsed, for reports: "swingsim fit STUDY.yaml --out DIR --json FILE"
 /// (the positionals, then each option given, in the order the command declares them).

@@ -32,6 +32,10 @@ struct DiagnoseArguments {
 int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const DiagnosisStudy study = loadDiagnosisStudy(args.study);
   const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
+  std::vector<CommandFile> outputs = listFolderFiles("--out", outDir, {"report.md"});
+  outputs.push_back({"--json", args.json.value_or("")});
+  outputs.push_back({"--save-model", args.saveModel.value_or("")});
+  checkOutputsAreNotInputs({{"STUDY.yaml", args.study}, {"STUDY.yaml: base_model", study.baseModelPath}}, outputs);
   const auto plant = loadDiagnosisPlant(study, 8);
 
   // A bar per step of the forward selection (candidates scored), on stderr, once the run has

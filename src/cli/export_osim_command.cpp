@@ -65,6 +65,8 @@ int runExportOsim(const ExportOsimArguments& a) {
   const std::string text =
       formatOsimModel(makeOsimLegModel(geometry, makePlacement(p, knee)), makeHeader(p, knee.name, a.lowering, stem + ".sto"));
   const std::string path = a.out.value_or(makeTrajectoryFolder(p.name)) + "/" + stem + ".osim";
+  checkOutputsAreNotInputs({{"PARTICIPANT.yaml", a.participant}, {"PARTICIPANT.yaml: knee_model", p.kneeModelPath}},
+                           {{"--out", path}});
   writeFileAtomic(path, text);
   std::printf("export-osim: wrote %s (%s, knee lowered %s m)\n", path.c_str(), p.name.c_str(), formatNumber(a.lowering).c_str());
   return 0;

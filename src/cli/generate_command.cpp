@@ -84,6 +84,9 @@ int generateCylinderBench(YamlMap& yaml, const std::optional<std::string>& outDi
     if (hidden) std::printf("  %12.1f", std::sqrt(hiddenSq / static_cast<double>(force.size())));
     std::printf("\n");
   }
+  std::vector<CommandFile> outputs;
+  for (const auto& file : files) outputs.push_back({"STUDY.yaml: output_dir (or --out)", file.first});
+  checkOutputsAreNotInputs({{"STUDY.yaml", study.path}, {"STUDY.yaml: model", study.modelPath}}, outputs);
   for (const auto& [path, text] : files) writeFileAtomic(path, text);
   std::printf("wrote %zu bench files to %s (truth %s, noise %s N, seed %llu)\n", files.size(), study.outputDir.c_str(),
               truth.name().c_str(), formatNumber(study.noise).c_str(), static_cast<unsigned long long>(study.seed));

@@ -48,6 +48,9 @@ int generateSwingKinematics(YamlMap& yaml, const std::optional<std::string>& out
     std::printf("\n");
     files.emplace_back(outDir + "/" + c.name + ".csv", formatSwingRecordCsv(r));
   }
+  std::vector<CommandFile> outputs;
+  for (const auto& file : files) outputs.push_back({"STUDY.yaml: output_dir (or --out)", file.first});
+  checkOutputsAreNotInputs({{"STUDY.yaml", study.path}}, outputs);
   for (const auto& [path, text] : files) writeFileAtomic(path, text);
   std::printf("wrote %zu swing kinematics files to %s (participant %s, knee %s, noise %s deg, seed %llu)\n", files.size(),
               outDir.c_str(), base.participant.name.c_str(), base.knee.name.c_str(), formatNumber(noise).c_str(),

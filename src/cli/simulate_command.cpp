@@ -181,6 +181,11 @@ int runSimulate(const SimulateArguments& a) {
   const KneeModel model = loadKneeModel(a.knee.value_or(loaded.kneeModelPath));
   const SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
   const Participant& p = setup.participant;
+  const std::string tag = makeTrajectoryFileStem(p.name, setup.lowering);
+  std::vector<CommandFile> outputs =
+      listFolderFiles("--out", a.out.value_or(makeTrajectoryFolder(p.name)), {tag + ".csv", tag + ".sto", tag + "-moments.svg"});
+  outputs.push_back({"--json", a.json.value_or("")});
+  checkOutputsAreNotInputs({{"PARTICIPANT.yaml", a.participant}, {a.knee ? "--knee" : "PARTICIPANT.yaml: knee_model", model.path}}, outputs);
   options.trackImpactEnergy = true;  // one swing: the bookkeeping is cheap here
   const SwingResult r = simulateSwing(setup, options);
 

@@ -52,6 +52,9 @@ struct SweepArguments {
 };
 
 int runSweepCommand(const SweepArguments& a) {
+  std::vector<CommandFile> outputs = listFolderFiles("--out", a.out.value_or(""), a.out ? kSweepReportFiles : std::vector<std::string>{});
+  outputs.push_back({"--json", a.json.value_or("")});
+  checkOutputsAreNotInputs({{"STUDY.yaml", a.study}}, outputs);
   if (isCohortStudyFile(a.study)) {
     // A cohort study: drawn participants, each calibrated and swept (docs/cohort.md).
     if (a.added || a.uncertaintySamples || a.seed)

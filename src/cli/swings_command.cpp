@@ -79,6 +79,7 @@ Json makeSwingsJson(const SwingsArguments& a, const MotionColumns& columns, cons
 }
 
 int runSwings(const SwingsArguments& a) {
+  checkOutputsAreNotInputs({{"FILE.mot", a.kinematics}, {"--grf", a.grf.value_or("")}}, {{"--json", a.json.value_or("")}});
   const MotionTable table = readMotionTable(a.kinematics);
   // The leg's OpenSim labels; the thigh's angle in space (hip + pelvis tilt) when the file
   // has the tilt.

@@ -102,6 +102,37 @@ void checkDistinctFiles(const std::vector<std::string>& paths, const std::string
   }
 }
 
+std::vector<CommandFile> listFolderFiles(const std::string& source, const std::string& folder,
+                                         const std::vector<std::string>& names) {
+  std::vector<CommandFile> files;
+  for (const auto& name : names) files.push_back({source, (fs::path(folder) / name).string()});
+  return files;
+}
+
+namespace {
+
+// True if `a` and `b` name one file: the same device and inode, or (for a path that does not
+// exist yet) the same weakly canonical path.
+bool isSameFile(const std::string& a, const std::string& b) {
+  struct stat sa {}, sb {};
+  if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0) return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  std::error_code ea, eb;
+  const fs::path ca = fs::weakly_canonical(a, ea), cb = fs::weakly_canonical(b, eb);
+  return !ea && !eb && ca == cb;
+}
+
+}  // namespace
+
+void checkOutputsAreNotInputs(const std::vector<CommandFile>& inputs, const std::vector<CommandFile>& outputs) {
+  for (const auto& out : outputs) {
+    if (out.path.empty() || isWriteThroughTarget(out.path)) continue;
+    for (const auto& in : inputs)
+      if (!in.path.empty() && isSameFile(out.path, in.path))
+        throw InputError(out.source + " '" + out.path + "': would write over the input " + in.source + " '" + in.path +
+                         "'; a command never replaces one of its own inputs (write it elsewhere)");
+  }
+}
+
 std::string chooseStudyOutputFolder(const std::optional<std::string>& out, const std::string& studyName,
                                     const std::string& studyPath) {
   if (out) return *out;

@@ -34,6 +34,25 @@ void checkOutputFolder(const std::string& path, const std::string& where);
 /// (arguments I and J): `why`". Paths that do not exist are left to their reader. Linear time.
 void checkDistinctFiles(const std::vector<std::string>& paths, const std::string& why);
 
+/// A file a command reads or writes, and what named it ("--json", "MODEL.osim", "study.yaml:
+/// measured"), for messages.
+struct CommandFile {
+  std::string source;
+  std::string path;
+};
+
+/// The files `names` that a run writes into the folder `folder`, each named by `source`
+/// ("--out"), for checkOutputsAreNotInputs.
+std::vector<CommandFile> listFolderFiles(const std::string& source, const std::string& folder,
+                                         const std::vector<std::string>& names);
+
+/// Throws InputError "SOURCE 'PATH': would write over the input IN_SOURCE 'IN_PATH'; a
+/// command never replaces one of its own inputs (write it elsewhere)" if an output resolves
+/// to an input: the same file (device and inode, so a link or `./x` counts) or the same path
+/// after std::filesystem::weakly_canonical. Outputs written through (a FIFO, /dev/stdout)
+/// replace nothing and are left alone. Call it before any work.
+void checkOutputsAreNotInputs(const std::vector<CommandFile>& inputs, const std::vector<CommandFile>& outputs);
+
 /// The output folder of a study command: `out` (--out, checked while parsing), else
 /// out/<safe study name>/, checked here (checkOutputFolder) so an unwritable or over-long
 /// folder fails before any work. Throws InputError naming where the path came from.

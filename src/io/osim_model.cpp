@@ -10,6 +10,7 @@
 
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "io/osim_model_checks.h"
 
 namespace swingsim {
 
@@ -87,6 +88,7 @@ OsimBody readBody(const std::string& path, const XMLElement* e) {
   b.massCenter = vec3(readNumbers(path, e, "mass_center", 3));
   const auto i = readNumbers(path, e, "inertia", 6);  // [Ixx Iyy Izz Ixy Ixz Iyz] about the COM
   b.inertia << i[0], i[3], i[4], i[3], i[1], i[5], i[4], i[5], i[2];
+  checkOsimBodyUnits(path, b);
   return b;
 }
 
@@ -256,10 +258,13 @@ OsimModel parseOsimModel(const std::string& text, const std::string& path) {
   OsimModel m;
   m.path = path;
   m.name = model->Attribute("name") ? model->Attribute("name") : fileStem(path);
+  m.bodySetLine = requireChild(path, model, "BodySet")->GetLineNum();
+  m.jointSetLine = requireChild(path, model, "JointSet")->GetLineNum();
   for (const XMLElement* b = requireObjects(path, model, "BodySet")->FirstChildElement("Body"); b; b = b->NextSiblingElement("Body"))
     m.bodies.push_back(readBody(path, b));
   for (const XMLElement* j = requireObjects(path, model, "JointSet")->FirstChildElement(); j; j = j->NextSiblingElement())
     m.joints.push_back(readJoint(path, j));
+  checkOsimModelNames(m);
   return m;
 }
 
@@ -270,13 +275,14 @@ const OsimBody& OsimModel::getBody(const std::string& bodyName) const {
     if (b.name == bodyName) return b;
   std::string names;
   for (const auto& b : bodies) names += (names.empty() ? "" : ", ") + b.name;
-  throw InputError(path + ": <Body name=\"" + bodyName + "\">: expected a body of that name in the BodySet (got " + names + ")");
+  throw InputError(path + ":" + std::to_string(bodySetLine) + ": <Body name=\"" + bodyName + "\">: expected a body of that name in the BodySet (got " + names + ")");
 }
 
 const OsimJoint& OsimModel::getJointTo(const std::string& child) const {
   for (const auto& j : joints)
     if (j.childBody == child) return j;
-  throw InputError(path + ": JointSet: expected a joint whose child frame is on body " + child + " (got none)");
+  throw InputError(path + ":" + std::to_string(jointSetLine) + ": <JointSet>: expected a joint whose child frame is on body " + child +
+                   " (got none); a link of the leg's chain is missing");
 }
 
 double OsimModel::calcTotalMass() const {
@@ -307,7 +313,8 @@ const OsimJoint& requireJoint(const OsimModel& m, const std::string& parent, con
   const OsimJoint& j = m.getJointTo(child);
   if (j.parentBody != parent)
     throw InputError(m.path + ":" + std::to_string(j.line) + ": <" + j.type + " name=\"" + j.name + "\">: expected a joint from " + parent +
-                     " to " + child + " (got one from " + j.parentBody + ")");
+                     " to " + child + " (got one from " + j.parentBody + ": the chain pelvis, femur, tibia, talus, calcn, toes " +
+                     (j.parentBody == "ground" ? "has a link missing" : "has a link missing or an extra body in it") + ")");
   return j;
 }
 
@@ -385,7 +392,7 @@ LegParts findLegParts(const OsimModel& m, char sideLetter) {
     throw InputError(m.path + ":" + std::to_string(leg.talus->line) + ": <Body name=\"" + leg.talusName +
                      "\">: <mass>: expected a positive mass in kg for the foot, " + leg.talusName + " + " + leg.calcnName +
                      " + " + leg.toesName + " (got 0)");
-  leg.hip = &m.getJointTo(leg.femurName);
+  leg.hip = &requireJoint(m, "pelvis", leg.femurName);
   leg.knee = &requireJoint(m, leg.femurName, leg.tibiaName);
   leg.ankle = &requireJoint(m, leg.tibiaName, leg.talusName);
   leg.subtalar = &requireJoint(m, leg.talusName, leg.calcnName);
@@ -483,6 +490,7 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
   importFoot(leg, o, p, why);
   replaceProsthesisMasses(o, p, why);
   importWholeBody(m, leg, o, p, why);
+  checkOsimLeg(m, {leg.femur, leg.tibia, leg.talus, leg.hip, leg.knee, leg.ankle, leg.mtp, o.footLength.has_value(), o.height.has_value()}, p);
   p.name = o.name.empty() ? m.name + "_" + side : o.name;
   p.source = "OpenSim model " + file + ", " + side + " leg (swingsim import-osim)";
   p.kneeModelPath = o.kneeModelPath;

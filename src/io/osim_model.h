@@ -57,6 +57,7 @@ struct OsimJoint {
 
 struct OsimModel {
   std::string path, name;
+  int bodySetLine = 0, jointSetLine = 0;  ///< XML lines of <BodySet> and <JointSet>
   std::vector<OsimBody> bodies;
   std::vector<OsimJoint> joints;
 
@@ -70,7 +71,9 @@ struct OsimModel {
 
 /// Reads a .osim file. Throws InputError `file:line: element: expected ... (got ...)` for
 /// text that is not XML, a model without a BodySet or JointSet, a body without a positive
-/// finite mass, a frame that names no body, or a transform function it cannot evaluate.
+/// finite mass or in grams, a negative inertia, a body or joint name given twice, two joints
+/// into one body (io/osim_model_checks.h), a frame that names no body, or a transform
+/// function it cannot evaluate.
 OsimModel loadOsimModel(const std::string& path);
 /// Same, from XML text (tests); `path` names it in messages.
 OsimModel parseOsimModel(const std::string& text, const std::string& path);
@@ -100,7 +103,9 @@ struct OsimParticipant {
 /// Thigh from femur_<side>, shank from tibia_<side>, foot from talus, calcn and toes combined
 /// (planar, sagittal x-y plane, inertia about z), lengths from joint centres at the reference
 /// pose, hip_offset_in_pelvis from the hip's centre in the pelvis; every other field the
-/// project's default. Throws InputError for a missing body or joint or an impossible segment.
+/// project's default. Throws InputError, at the element concerned, for a missing body or
+/// joint, a chain pelvis-femur-tibia-talus-calcn-toes with a link missing or an extra body
+/// in it, or a segment the participant file would refuse (checkOsimLeg).
 OsimParticipant calcOsimParticipant(const OsimModel& model, const OsimImportOptions& options);
 
 }  // namespace swingsim

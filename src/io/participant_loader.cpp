@@ -17,12 +17,6 @@ namespace swingsim {
 
 struct SegmentsOf {};  // context: the `segments:` map of a participant
 
-// Plausibility bounds that catch a unit mistake (millimetres for metres, grams for
-// kilograms) where it was made, rather than as a strange swing.
-constexpr double kMaxSegmentLength = 1.5;  // m: longer than any thigh, shank or foot
-constexpr double kMaxSegmentMass = 150;    // kg: heavier than a plausible whole body
-constexpr double kMaxBodyMass = 500;       // kg
-
 std::string checkSegmentLength(double v) {
   if (!(v > 0)) return "must be positive";
   return v <= kMaxSegmentLength ? "" : "expected a segment length of at most " + formatNumber(kMaxSegmentLength) +

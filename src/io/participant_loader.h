@@ -8,6 +8,13 @@
 
 namespace swingsim {
 
+/// Plausibility bounds that catch a unit mistake (millimetres for metres, grams for
+/// kilograms) where it was made, rather than as a strange swing; the .osim import checks
+/// its model against the same (io/osim_model_checks.h).
+constexpr double kMaxSegmentLength = 1.5;  ///< m: longer than any thigh, shank or foot
+constexpr double kMaxSegmentMass = 150;    ///< kg: heavier than a plausible whole body
+constexpr double kMaxBodyMass = 500;       ///< kg
+
 /// Reads and checks a participant file. Throws InputError `file:line: key: ... (got V)`
 /// for unknown or missing keys, wrong types, non-finite or impossible values (negative
 /// mass/length/inertia, a COM outside its segment, a non-increasing hip-moment table).

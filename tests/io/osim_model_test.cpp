@@ -228,7 +228,7 @@ TEST(OsimModelErrors, EachBadInputNamesFileLineElementAndWhatWasFound) {
   EXPECT_THAT(errorFor(withReplaced("Version=\"40000\"", "Version=\"30000\"")),
               HasSubstr("tiny.osim:2: <OpenSimDocument Version>: expected an OpenSim 4 model, Version 40000 or later (got 30000"));
   EXPECT_THAT(errorFor(kLeg, 'l'),
-              HasSubstr("tiny.osim: <Body name=\"femur_l\">: expected a body of that name in the BodySet (got pelvis, femur_r"));
+              HasSubstr("tiny.osim:4: <Body name=\"femur_l\">: expected a body of that name in the BodySet (got pelvis, femur_r"));
   EXPECT_THAT(errorFor(withReplaced("/bodyset/toes_r</socket_child_frame>", "/bodyset/ground</socket_child_frame>")),
               HasSubstr("expected a joint whose child frame is on body toes_r (got none)"));
   EXPECT_THAT(errorFor(withReplaced("<mass>3</mass>", "<mass>0</mass>")),
