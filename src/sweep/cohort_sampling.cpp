@@ -29,6 +29,15 @@ enum Property : std::size_t {
 
 double calcNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
+// A normal truncated to [min, max] is a normal only between two limits on its sd, as
+// fractions of the truncation's width. Wider than kMaxSdPerWidth, its density across [min,
+// max] varies by at most exp(-0.1^2 / 2), 0.5 %: a uniform by another name (and past ~1e8
+// widths both truncation ends round to the same CDF value and every draw is the mean).
+// Narrower than kMinSdPerWidth, every draw lies within 0.4 % of the width of the mean
+// (3.7 sd hold 99.98 % of draws): a constant by another name.
+constexpr double kMaxSdPerWidth = 10;
+constexpr double kMinSdPerWidth = 1e-3;
+
 }  // namespace
 
 const std::vector<CohortProperty>& cohortProperties() {
@@ -68,6 +77,19 @@ CohortDistributionProblem checkCohortDistribution(const CohortProperty& property
   if (d.kind == CohortDistribution::Kind::kNormal) {
     if (!(d.sd > 0 && std::isfinite(d.sd))) return {"sd", "a positive standard deviation", formatNumber(d.sd)};
     if (!(d.mean >= d.min && d.mean <= d.max)) return {"mean", "a mean inside " + range, formatNumber(d.mean)};
+    const double width = d.max - d.min;
+    if (d.sd > kMaxSdPerWidth * width)
+      return {"sd",
+              "a standard deviation of at most " + formatNumber(kMaxSdPerWidth) + " x (max - min) = " +
+                  formatNumber(kMaxSdPerWidth * width) + " (a wider normal is flat across " + range +
+                  ": its truncation draws a uniform, so write distribution: uniform)",
+              formatNumber(d.sd)};
+    if (d.sd < kMinSdPerWidth * width)
+      return {"sd",
+              "a standard deviation of at least " + formatNumber(kMinSdPerWidth) + " x (max - min) = " +
+                  formatNumber(kMinSdPerWidth * width) + " (a narrower normal draws every participant at the mean " +
+                  formatNumber(d.mean) + ")",
+              formatNumber(d.sd)};
   }
   if (d.source.find_first_not_of(" \t") == std::string::npos)
     return {"source", "the published source of the range (paper and table) or \"assumption: ...\"", "an empty text"};
@@ -134,6 +156,10 @@ Participant makeCohortParticipant(const Participant& templ, const std::vector<do
   p.shank.comFromDistal = shankLength - com;
   p.shank.inertia = km * (std::pow(v[kKneeGyration], 2) + std::pow(kd - com, 2)) +
                     pm * (shankLength * shankLength / 12 + std::pow(0.5 * shankLength - com, 2));
+  // The knee unit moves down with the axis (ComRule::kFixedFromProximal): lowered by d, its
+  // COM is kd below the axis on a shank of shankLength - d, so the shank must keep at least
+  // kd and the lowering sweep stops where the COM reaches the ankle (calcMaxLowering).
+  if (p.comRule == ComRule::kFixedFromProximal) p.minShankLength = std::max(templ.minShankLength, kd);
 
   // Foot link: the foot unit; its COM distance measured from the toe (Burkett Table 2's reading).
   const double footLength = kFootLengthPerStature * p.height;

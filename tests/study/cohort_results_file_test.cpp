@@ -99,7 +99,7 @@ CohortResultsFile makePartial() {
 TEST(CohortResultsFile, WritesTheTextItAlwaysHas) {
   EXPECT_EQ(formatCohortResultsJson(makePartial()), R"({
   "format": "swingsim cohort results",
-  "format_version": 1,
+  "format_version": 2,
   "partial": true,
   "study": "tiny cohort",
   "study_path": "studies/tiny-cohort.yaml",
@@ -225,8 +225,9 @@ TEST(CohortResultsFile, MalformedFilesNameFileKeyExpectedAndFound) {
                         "found it missing"));
   EXPECT_THAT(refusal("c.json", replace("\"format\": \"swingsim cohort results\"", "\"format\": \"other\"")),
               HasSubstr(p + "c.json: format: expected \"swingsim cohort results\", found \"other\""));
-  EXPECT_THAT(refusal("d.json", replace("\"format_version\": 1", "\"format_version\": 2")),
-              HasSubstr(p + "d.json: format_version: expected 1, found 2"));
+  EXPECT_THAT(refusal("d.json", replace("\"format_version\": 2", "\"format_version\": 3")),
+              HasSubstr(p + "d.json: format_version: expected 2 (this file was written by a newer swingsim: read it "
+                            "with that version), found 3"));
   EXPECT_THAT(refusal("e.json", replace("\"seed\": 5", "\"seed\": \"5\"")),
               HasSubstr(p + "e.json: seed: expected a whole number from 0 to"));
   EXPECT_THAT(refusal("f.json", replace("\"last_participant\": 4", "\"last_participant\": 3")),
