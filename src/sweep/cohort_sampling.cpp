@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 
@@ -37,6 +38,13 @@ double calcNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 // (3.7 sd hold 99.98 % of draws): a constant by another name.
 constexpr double kMaxSdPerWidth = 10;
 constexpr double kMinSdPerWidth = 1e-3;
+
+// A limit on sd as a message shows it: 3 significant digits (2.2, not 2.1999999999999997).
+std::string formatSdLimit(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
 
 }  // namespace
 
@@ -81,13 +89,13 @@ CohortDistributionProblem checkCohortDistribution(const CohortProperty& property
     if (d.sd > kMaxSdPerWidth * width)
       return {"sd",
               "a standard deviation of at most " + formatNumber(kMaxSdPerWidth) + " x (max - min) = " +
-                  formatNumber(kMaxSdPerWidth * width) + " (a wider normal is flat across " + range +
+                  formatSdLimit(kMaxSdPerWidth * width) + " (a wider normal is flat across " + range +
                   ": its truncation draws a uniform, so write distribution: uniform)",
               formatNumber(d.sd)};
     if (d.sd < kMinSdPerWidth * width)
       return {"sd",
               "a standard deviation of at least " + formatNumber(kMinSdPerWidth) + " x (max - min) = " +
-                  formatNumber(kMinSdPerWidth * width) + " (a narrower normal draws every participant at the mean " +
+                  formatSdLimit(kMinSdPerWidth * width) + " (a narrower normal draws every participant at the mean " +
                   formatNumber(d.mean) + ")",
               formatNumber(d.sd)};
   }

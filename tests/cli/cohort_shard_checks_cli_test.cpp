@@ -42,13 +42,19 @@ fs::path writeTinyCohort(const fs::path& dir) {
   return path;
 }
 
+const std::regex kFirstSwingTime("\"swing_times_s\": \\[\\s*([0-9.eE+-]+)");
+
+bool hasSwingTime(const fs::path& path) {
+  const std::string text = slurp(path);
+  return std::regex_search(text, kFirstSwingTime);
+}
+
 // Replaces the first swing time of the file at `path` by what `change` makes of it.
 template <class Change>
 void editFirstSwingTime(const fs::path& path, Change change) {
   std::string text = slurp(path);
   std::smatch m;
-  const std::regex firstTime("\"swing_times_s\": \\[\\s*([0-9.eE+-]+)");
-  ASSERT_TRUE(std::regex_search(text, m, firstTime)) << text;
+  ASSERT_TRUE(std::regex_search(text, m, kFirstSwingTime)) << text;
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", change(std::stod(m[1].str())));
   text.replace(static_cast<std::size_t>(m.position(1)), static_cast<std::size_t>(m.length(1)), buf);
@@ -64,8 +70,11 @@ TEST(CohortShardChecksCli, EditedShardsAreRefusedNamingFileKeyAndWhy) {
                                " --jobs 1");
     ASSERT_EQ(r.code, 0) << r.output;
   }
-  const fs::path first = shards / "cohort-shard-0-of-2.json", second = shards / "cohort-shard-1-of-2.json";
-  const std::string files = first.string() + " " + second.string();
+  const fs::path first = shards / "cohort-shard-0-of-2.json", other = shards / "cohort-shard-1-of-2.json";
+  const std::string files = first.string() + " " + other.string();
+  // The shard to edit: one whose participant calibrated, so it holds swing times.
+  const fs::path second = hasSwingTime(other) ? other : first;
+  ASSERT_TRUE(hasSwingTime(second));
   const fs::path merged = dir / "merged";
   const std::string original = slurp(second);
 

@@ -94,8 +94,8 @@ CohortResultsFile makePartial() {
   return f;
 }
 
-// The text is the one swingsim has always written (key order, indent, number forms), so
-// files of earlier runs resume and merge.
+// The text is the one swingsim writes (key order, indent, number forms); a file of format 1
+// (no results_checksum) is refused with "rerun" (cohort_shard_checks_test.cpp).
 TEST(CohortResultsFile, WritesTheTextItAlwaysHas) {
   EXPECT_EQ(formatCohortResultsJson(makePartial()), R"({
   "format": "swingsim cohort results",
@@ -111,6 +111,7 @@ TEST(CohortResultsFile, WritesTheTextItAlwaysHas) {
   "first_participant": 0,
   "last_participant": 4,
   "participants_finished": 2,
+  "results_checksum": "65246f268751abd8",
   "results": [
     {
       "participant": "C001",
