@@ -68,36 +68,16 @@ void serialize(A& a, Cohort& c) {
 
 namespace {
 
-// The message of an InputError without the `file:line: ` of the text it was read from.
-std::string withoutLocation(const std::string& message, const std::string& path) {
-  if (message.rfind(path + ":", 0) != 0) return message;
-  const std::size_t after = message.find(": ", path.size() + 1);
-  return after == std::string::npos ? message : message.substr(after + 2);
-}
-
-// Draws the participants and holds each drawn leg to a single participant's checks (the
-// participant file's, by writing and reading it back): a leg no participant file could hold
-// is refused at `distributions`, naming the participant and the key. The lowering grid then
-// stops where each leg runs out (calcMaxLowering), so every lowering swept passes them too.
+// Draws the participants; a drawn leg that is impossible (makeCohortParticipant) is refused
+// at `distributions`, naming the participant and the key. The lowering grid then stops
+// where each leg runs out (calcMaxLowering), so every lowering swept passes calcLegGeometry.
 void drawCheckedParticipants(Cohort& c, const Participant& templ, const YamlMap& yaml) {
-  const std::string folder = yaml.directory();
-  const std::string asFile = folder + "/drawn-participant.yaml";
-  const auto refuse = [&](const std::string& why) {
-    yaml.fail("distributions",
-              "expected distributions whose every draw is a leg a participant file may hold (narrow the one named)",
-              why);
-  };
   try {
     drawCohortParticipants(c, templ);
   } catch (const InputError& e) {
-    refuse(e.what());
-  }
-  for (const Participant& p : c.study.participants) {
-    try {
-      parseParticipant(formatParticipantYaml(p, folder), asFile);
-    } catch (const InputError& e) {
-      refuse("participant " + p.name + " as drawn: " + withoutLocation(e.what(), asFile));
-    }
+    yaml.fail("distributions",
+              "expected distributions whose every draw is a leg a participant file may hold (narrow the one named)",
+              e.what());
   }
 }
 

@@ -168,6 +168,11 @@ Participant makeCohortParticipant(const Participant& templ, const std::vector<do
   // COM is kd below the axis on a shank of shankLength - d, so the shank must keep at least
   // kd and the lowering sweep stops where the COM reaches the ankle (calcMaxLowering).
   if (p.comRule == ComRule::kFixedFromProximal) p.minShankLength = std::max(templ.minShankLength, kd);
+  // The participant file's own check (min_shank_length_m below the shank's length).
+  if (!(templ.minShankLength < shankLength))
+    throw InputError(name + ": min_shank_length_m: must be shorter than the shank (" + formatNumber(shankLength) +
+                     " m, from stature " + formatNumber(p.height) + " m) (got " + formatNumber(templ.minShankLength) +
+                     ", the template's)");
 
   // Foot link: the foot unit; its COM distance measured from the toe (Burkett Table 2's reading).
   const double footLength = kFootLengthPerStature * p.height;

@@ -69,8 +69,9 @@ double calcCohortBodyMass(const std::vector<double>& values);
 /// A participant: `templ` (knee model, friction law, initial pose, swing-end rule, hip-moment
 /// profile) with the drawn stature, body mass, segments and knee friction (`values` in table
 /// order). Its shank keeps at least the knee unit's COM distance (minShankLength), so no
-/// lowering puts the knee unit's COM below the ankle. Throws InputError (naming `name`) if
-/// the drawn leg is impossible (a knee centre of mass below the ankle).
+/// lowering puts the knee unit's COM below the ankle. Throws InputError (naming `name` and
+/// the key) if the drawn leg is impossible: a knee centre of mass below the ankle, or a
+/// shank shorter than the template's min_shank_length_m.
 Participant makeCohortParticipant(const Participant& templ, const std::vector<double>& values, const std::string& name);
 
 /// "C001", "C002", ...: participant i of `count`, zero-padded to count's width (at least 3).

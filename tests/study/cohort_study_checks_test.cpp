@@ -101,8 +101,9 @@ TEST(CohortStudyChecks, ADrawnLegNoParticipantFileCouldHoldIsRefusedNamingPartic
   const std::string message =
       errorOf(studyText("template: participants/p1.yaml", "template: deep.yaml"), path);
   EXPECT_THAT(message, HasSubstr(path + ":7: distributions: expected distributions whose every draw is a leg a "
-                                        "participant file may hold (narrow the one named) (got participant C00"));
-  EXPECT_THAT(message, HasSubstr(" as drawn: min_shank_length_m: must be shorter than the shank"));
+                                        "participant file may hold (narrow the one named) (got C00"));
+  EXPECT_THAT(message, HasSubstr(": min_shank_length_m: must be shorter than the shank ("));
+  EXPECT_THAT(message, HasSubstr("(got 0.45, the template's)"));
 }
 
 }  // namespace
