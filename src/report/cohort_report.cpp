@@ -110,7 +110,9 @@ std::string formatShortSweeps(const Cohort& cohort, const std::vector<CohortPart
                 fmt("%g", lowerings.back() * kMs) + " mm";
   }
   if (count == 0) return "";
-  return fmt("%d participants' sweeps stop before ", count) + fmt("%g", cohort.study.loweringMax * kMs) +
+  return (count == 1 ? std::string("1 participant's sweep stops before ")
+                     : fmt("%d participants' sweeps stop before ", count)) +
+         fmt("%g", cohort.study.loweringMax * kMs) +
          " mm, where their leg runs out (the knee unit's centre of mass would pass the ankle, or the shank its least "
          "length): " + listed + (count > kListed ? ", ..." : "") + ".\n\n";
 }

@@ -65,9 +65,15 @@ TEST(CohortReportShortSweeps, ASweepThatStopsBeforeTheGridsEndIsNamedWithWhere) 
   t.results[1].sweep.lowerings = {0, 0.025};
   t.results[1].sweep.swingTimes = {0.45, 0.44};
   t.results[1].sweep.best = 1;
-  EXPECT_THAT(t.reportMd(), HasSubstr("1 participants' sweeps stop before 50 mm, where their leg runs out (the knee "
+  EXPECT_THAT(t.reportMd(), HasSubstr("1 participant's sweep stops before 50 mm, where their leg runs out (the knee "
                                       "unit's centre of mass would pass the ankle, or the shank its least length): B "
                                       "at 25 mm.\n"));
+  t.results[0].sweep.lowerings = {0};
+  t.results[0].sweep.swingTimes = {0.45};
+  t.results[0].sweep.best = 0;
+  EXPECT_THAT(t.reportMd(), HasSubstr("2 participants' sweeps stop before 50 mm, where their leg runs out (the knee "
+                                      "unit's centre of mass would pass the ankle, or the shank its least length): A at "
+                                      "0 mm, B at 25 mm.\n"));
 }
 
 }  // namespace
