@@ -32,7 +32,7 @@ double calcNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
 // A normal truncated to [min, max] is a normal only between two limits on its sd, as
 // fractions of the truncation's width. Wider than kMaxSdPerWidth, its density across [min,
-// max] varies by at most exp(-0.1^2 / 2), 0.5 %: a uniform by another name (and past ~1e8
+// max] varies by at most exp(-0.1^2 / 2), 0.5 %: a uniform by another name (and from ~1e16
 // widths both truncation ends round to the same CDF value and every draw is the mean).
 // Narrower than kMinSdPerWidth, every draw lies within 0.4 % of the width of the mean
 // (3.7 sd hold 99.98 % of draws): a constant by another name.
