@@ -52,6 +52,13 @@ constexpr PlausibleRange kCylinderDampingRange{0, 1e6, "N s/m",
                                                "a hydraulic cylinder dissipates, and fitted phases have 500-17,700 N s/m"};
 /// Stiffness of a Mauch cylinder phase (N/m): the fitted phases (models/) have 2,500-563,000 N/m.
 constexpr PlausibleRange kCylinderStiffnessRange{-1e7, 1e7, "N/m", "fitted phases have 2,500-563,000 N/m"};
+/// A swing time in a results file (s): no swing outlasts its participant's time_limit_s,
+/// which a participant file takes up to 10 s; a longer (or non-positive) time was not
+/// computed by a swing.
+constexpr PlausibleRange kSwingTimeRange{0, 10, "s", "the largest time_limit_s a participant takes"};
+/// A knee-axis lowering in a results file (m): along the shank, which a participant file
+/// takes up to 1.5 m long.
+constexpr PlausibleRange kLoweringRange{0, 1.5, "m", "the knee axis is lowered along a shank of at most 1.5 m"};
 /// Angle noise of generated swings (deg): motion capture is good to about 1 deg.
 constexpr PlausibleRange kAngleNoiseRange{0, 10, "deg", "motion capture angles are good to about 1 deg"};
 /// Force noise of generated bench records (N): a load cell is good to a few N.

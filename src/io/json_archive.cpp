@@ -82,7 +82,7 @@ std::uint64_t JsonReadArchive::readWhole(const char* key, std::uint64_t max,
   return v;
 }
 
-void JsonReadArchive::number(const char* key, double& v) {
+void JsonReadArchive::number(const char* key, double& v, const JsonCheck<double>& check) {
   const Json& value = at(key);
   if (value.is_null()) {
     v = std::numeric_limits<double>::quiet_NaN();
@@ -90,6 +90,8 @@ void JsonReadArchive::number(const char* key, double& v) {
   }
   if (!value.is_number()) fail(key, "a number or null", describeJsonValue(value));
   v = value.get<double>();
+  if (!check) return;
+  if (const std::string expected = check(v); !expected.empty()) fail(key, expected, describeJsonValue(value));
 }
 
 void JsonReadArchive::numbers(const char* key, std::vector<double>& v, const JsonCheck<double>& check) {
@@ -133,7 +135,7 @@ std::string itemSeparator(std::size_t k, int depth) {
 
 }  // namespace
 
-void JsonWriteArchive::number(const char* key, double v) { object_[key] = std::isfinite(v) ? Json(v) : Json(nullptr); }
+void JsonWriteArchive::number(const char* key, double v, const JsonCheck<double>&) { object_[key] = std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 void JsonWriteArchive::numbers(const char* key, const std::vector<double>& v, const JsonCheck<double>&) {
   Json list = Json::array();

@@ -85,8 +85,8 @@ class JsonReadArchive {
     assert(max <= static_cast<std::uint64_t>(std::numeric_limits<T>::max()));  // the format's own bound
     v = static_cast<T>(readWhole(key, max, check));
   }
-  /// A number, or null for NaN (a quantity that does not exist).
-  void number(const char* key, double& v);
+  /// A number, or null for NaN (a quantity that does not exist); `check` applies to a number.
+  void number(const char* key, double& v, const JsonCheck<double>& check = {});
   /// A list of numbers, null for NaN; `check` applies to each number.
   void numbers(const char* key, std::vector<double>& v, const JsonCheck<double>& check = {});
   /// As numbers(); the writer writes the list as text (for lists of millions).
@@ -160,7 +160,7 @@ class JsonWriteArchive {
   void whole(const char* key, T v, std::uint64_t, const JsonCheck<std::uint64_t>& = {}) {
     object_[key] = v;
   }
-  void number(const char* key, double v);
+  void number(const char* key, double v, const JsonCheck<double>& = {});
   void numbers(const char* key, const std::vector<double>& v, const JsonCheck<double>& = {});
   /// 17 significant digits, null where not finite.
   void numberLines(const char* key, const std::vector<double>& v, const JsonCheck<double>& = {});

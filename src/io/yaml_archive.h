@@ -59,6 +59,10 @@ class YamlReadArchive {
   }
   /// Optional whole number: `v` holds its default on entry.
   void optionalInteger(const char* key, int& v) { v = map_.getInt(key, v); }
+  /// Required whole number from 0 to `max`, exact (YamlMap::getWhole; `range` names max).
+  void whole(const char* key, std::uint64_t& v, std::uint64_t max, const std::string& range) {
+    v = map_.getWhole(key, max, range);
+  }
   void optionalFlag(const char* key, bool& v) { v = map_.getBool(key, v); }
   void text(const char* key, std::string& v) { v = map_.getString(key); }
   void optionalText(const char* key, std::string& v) { v = map_.getString(key, v); }
@@ -159,6 +163,7 @@ class YamlWriteArchive {
   void optionalAngle(const char* key, double& v, const ValueCheck& = {}) { scalar(key, formatDegrees(v)); }
   void integer(const char* key, int& v) { scalar(key, std::to_string(v)); }
   void optionalInteger(const char* key, int& v) { scalar(key, std::to_string(v)); }
+  void whole(const char* key, std::uint64_t& v, std::uint64_t, const std::string&) { scalar(key, std::to_string(v)); }
   void optionalFlag(const char* key, bool& v) { scalar(key, v ? "true" : "false"); }
   void text(const char* key, std::string& v) { out_ << YAML::Key << key << YAML::Value << v; }
   void optionalText(const char* key, std::string& v) {

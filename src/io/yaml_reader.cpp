@@ -224,6 +224,25 @@ int YamlMap::getInt(const std::string& key, int defaultValue) {
   return static_cast<int>(v);
 }
 
+std::uint64_t YamlMap::getWhole(const std::string& key, std::uint64_t max, const std::string& range) {
+  YAML::Node n = require(key);
+  const std::string what = "expected an integer in [0, " + range + "]";
+  if (!n.IsScalar()) fail(key, what, describe(n));
+  const std::string& s = n.Scalar();
+  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) {
+    // 1e6 or 3.0: a whole number written otherwise, if a double holds it exactly.
+    const double v = toDouble(n, key);
+    constexpr double kExactDoubleLimit = 9007199254740992.0;  // 2^53
+    if (v >= 0 && v == std::floor(v) && v <= kExactDoubleLimit && static_cast<std::uint64_t>(v) <= max)
+      return static_cast<std::uint64_t>(v);
+    fail(key, what, s);
+  }
+  errno = 0;
+  const unsigned long long v = std::strtoull(s.c_str(), nullptr, 10);
+  if (errno == ERANGE || v > max) fail(key, what, s);
+  return static_cast<std::uint64_t>(v);
+}
+
 bool YamlMap::getBool(const std::string& key, bool defaultValue) {
   if (!has(key)) return defaultValue;
   YAML::Node n = require(key);

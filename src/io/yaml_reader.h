@@ -3,6 +3,7 @@
 // located as `file:line: key: what is wrong (got VALUE)`.
 #include <yaml-cpp/yaml.h>
 
+#include <cstdint>
 #include <functional>
 #include <initializer_list>
 #include <optional>
@@ -35,6 +36,10 @@ class YamlMap {
   double getDouble(const std::string& key, double defaultValue,
                    const std::function<std::string(double)>& check = {});
   int getInt(const std::string& key, int defaultValue);
+  /// Required whole number from 0 to `max`, read exactly (digits, no rounding through a
+  /// double): a seed. Fails with `expected an integer in [0, RANGE] (got VALUE)`, `range`
+  /// naming the upper end as the reader should see it ("2^64 - 1 = 18446744073709551615").
+  std::uint64_t getWhole(const std::string& key, std::uint64_t max, const std::string& range);
   bool getBool(const std::string& key, bool defaultValue);
   std::string getString(const std::string& key);
   std::string getString(const std::string& key, const std::string& defaultValue);

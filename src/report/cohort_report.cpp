@@ -95,6 +95,28 @@ std::string formatDistribution(const CohortDistribution& d) {
          fmt("%g", d.max);
 }
 
+// The participants whose lowering sweep stops before the grid's end: their leg runs out (the
+// knee unit's COM would pass the ankle, or the shank its minimum length: calcMaxLowering).
+std::string formatShortSweeps(const Cohort& cohort, const std::vector<CohortParticipantResult>& results) {
+  constexpr int kListed = 10;
+  constexpr double kGridTol = 1e-9;  // m: grid lowerings are rounded to 1e-6 m
+  int count = 0;
+  std::string listed;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& lowerings = results[i].sweep.lowerings;
+    if (lowerings.empty() || lowerings.back() >= cohort.study.loweringMax - kGridTol) continue;
+    if (++count <= kListed)
+      listed += (listed.empty() ? "" : ", ") + cohort.study.participants[i].name + " at " +
+                fmt("%g", lowerings.back() * kMs) + " mm";
+  }
+  if (count == 0) return "";
+  return (count == 1 ? std::string("1 participant's sweep stops before ")
+                     : fmt("%d participants' sweeps stop before ", count)) +
+         fmt("%g", cohort.study.loweringMax * kMs) +
+         " mm, where their leg runs out (the knee unit's centre of mass would pass the ankle, or the shank its least "
+         "length): " + listed + (count > kListed ? ", ..." : "") + ".\n\n";
+}
+
 std::string formatMarkdown(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
                            const CohortSummary& s, const std::string& scatterFile) {
   std::string md = "# Cohort study " + cohort.study.name + "\n\n";
@@ -128,6 +150,7 @@ std::string formatMarkdown(const Cohort& cohort, const std::vector<CohortPartici
     if (results[i].sweep.best >= 0 && results[i].sweep.best + 1 == static_cast<int>(results[i].sweep.lowerings.size()))
       ++atMax;
   md += fmt("%d participants are fastest at their largest lowering (the grid's end or where the shank runs out).\n\n", atMax);
+  md += formatShortSweeps(cohort, results);
   md += "![fastest lowering](cohort-fastest-lowering.svg)\n\n![time gained](cohort-time-gained.svg)\n\n";
   md += "## What predicts the gain\n\nSpearman's rank correlation of each property with the time gained, 95 % "
         "interval by Fisher's z with the standard error 1.06 / sqrt(n - 3) (Fieller, Hartley & Pearson 1957). "

@@ -1,10 +1,12 @@
 #include "study/cohort_results_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <limits>
 
 #include "core/input_error.h"
+#include "core/plausible_ranges.h"
 #include "io/json_archive.h"
 #include "study/shard_file_header.h"
 
@@ -13,7 +15,8 @@ namespace swingsim {
 namespace {
 
 constexpr const char* kFormat = "swingsim cohort results";
-constexpr int kFormatVersion = 1;
+// 2: results_checksum added, every number range-checked.
+constexpr int kFormatVersion = 2;
 // The largest cohort (100,000 participants of a few dozen swing times each, about 30 bytes a
 // number as JSON) is far above the 16 MiB of an input file.
 constexpr std::size_t kMaxResultsFileBytes = std::size_t{512} << 20;
@@ -22,6 +25,40 @@ constexpr std::uint64_t kMaxCalibrationSwings = 1000000;
 
 const JsonFileKind kKind{"a cohort results file", "sweep COHORT.yaml --shard K/N",
                          "this is not a complete cohort results file"};
+
+// A number as the file holds it: exact, or null for any value that is not finite.
+void addNumber(Fingerprint& f, double v) {
+  if (std::isfinite(v))
+    f.add(v);
+  else
+    f.add(std::string("null"));
+}
+
+// FNV-1a 64 over the slice's results, exact (%a): a shard edited by hand, or cut and
+// spliced, no longer matches the checksum written with it.
+std::string calcResultsChecksum(const CohortResultsFile& file) {
+  Fingerprint f;
+  f.add(std::to_string(file.first) + ".." + std::to_string(file.last));
+  for (const auto& r : file.results) {
+    f.add(std::string(r.ran ? "ran" : "not run"));
+    if (!r.ran) continue;
+    f.add(std::string(r.calibrated ? "calibrated" : "not calibrated"));
+    f.add(r.failure);
+    addNumber(f, r.timeScale);
+    f.add(std::to_string(r.calibrationSwings));
+    f.add(std::to_string(r.sweep.lowerings.size()));
+    for (double d : r.sweep.lowerings) addNumber(f, d);
+    for (double t : r.sweep.swingTimes) addNumber(f, t);
+  }
+  return f.hex();
+}
+
+// The lowerings of a sweep rise from 0 (the study's grid, sweepGridLowerings).
+bool isLoweringGrid(const std::vector<double>& lowerings) {
+  for (std::size_t k = 0; k < lowerings.size(); ++k)
+    if (!(k == 0 ? lowerings[k] == 0 : lowerings[k] > lowerings[k - 1])) return false;
+  return true;
+}
 
 ShardSlice describeSlice(const CohortResultsFile& s) {
   return describeShardSlice(s, static_cast<std::size_t>(s.run.participants));
@@ -44,10 +81,12 @@ void serialize(Archive& a, CohortParticipantResult& r, std::size_t k, const Coho
   if (!r.ran) return;
   a.flag("calibrated", r.calibrated);
   a.text("failure", r.failure);
-  a.number("time_scale", r.timeScale);
+  a.number("time_scale", r.timeScale, mustBePlausibleNumber(kTimeScaleRange, "a hip time scale"));
   a.whole("calibration_swings", r.calibrationSwings, kMaxCalibrationSwings);
-  a.numbers("lowerings_m", r.sweep.lowerings);
-  a.numbers("swing_times_s", r.sweep.swingTimes);
+  a.numbers("lowerings_m", r.sweep.lowerings, mustBePlausibleNumber(kLoweringRange, "a lowering"));
+  a.require(isLoweringGrid(r.sweep.lowerings), "lowerings_m", "lowerings rising from 0 (the study's grid)",
+            [&] { return describeJsonValue(Json(r.sweep.lowerings)); });
+  a.numbers("swing_times_s", r.sweep.swingTimes, mustBeSwingTime);
   a.require(r.sweep.lowerings.size() == r.sweep.swingTimes.size(), "swing_times_s",
             "one swing time per lowering (" + std::to_string(r.sweep.lowerings.size()) + ")",
             [&] { return std::to_string(r.sweep.swingTimes.size()); });
@@ -69,6 +108,9 @@ void serialize(Archive& a, CohortResultsFile& f) {
             [&] { return std::to_string(f.last); });
   std::size_t finished = f.countFinished();
   a.whole("participants_finished", finished, total);
+  std::string checksum;
+  const auto calcChecksum = [&f] { return calcResultsChecksum(f); };
+  serializePayloadChecksum(a, "results_checksum", checksum, calcChecksum);
   a.objectList("results", f.results, f);
   a.require(f.results.size() == f.last - f.first, "results",
             "a list of " + std::to_string(f.last - f.first) + " participants",
@@ -79,6 +121,7 @@ void serialize(Archive& a, CohortResultsFile& f) {
   a.require(partial == f.isPartial(), "partial",
             f.isPartial() ? "true (some results have not run)" : "false (every result ran)",
             [&] { return partial ? "true" : "false"; });
+  requirePayloadChecksum(a, "results_checksum", checksum, calcChecksum, "results", "the results");
 }
 
 CohortRunIdentity makeCohortRunIdentity(const Cohort& cohort, const std::string& version) {

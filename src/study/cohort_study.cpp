@@ -1,5 +1,7 @@
 #include "study/cohort_study.h"
 
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "core/input_error.h"
@@ -50,11 +52,9 @@ void serialize(A& a, Cohort& c) {
   a.require(c.count >= 1 && c.count <= kMaxCohortParticipants, "participants",
             "expected a whole number of participants from 1 to " + std::to_string(kMaxCohortParticipants),
             [&] { return std::to_string(c.count); });
-  int seed = static_cast<int>(c.seed);
-  a.integer("seed", seed);
-  a.require(seed >= 0 && seed <= 1000000000, "seed", "expected a seed from 0 to 1000000000",
-            [&] { return std::to_string(seed); });
-  c.seed = static_cast<std::uint64_t>(seed);
+  // Every seed std::mt19937_64 takes (drawCohort), read exactly.
+  a.whole("seed", c.seed, std::numeric_limits<std::uint64_t>::max(),
+          "2^64 - 1 = 18446744073709551615, the seeds of the std::mt19937_64 that draws the cohort");
   a.path("template", c.templatePath);
   bool overridesKnee = !c.study.kneeModelOverride.empty();
   if constexpr (A::kReading) overridesKnee = a.has("knee_model");
@@ -68,6 +68,19 @@ void serialize(A& a, Cohort& c) {
 
 namespace {
 
+// Draws the participants; a drawn leg that is impossible (makeCohortParticipant) is refused
+// at `distributions`, naming the participant and the key. The lowering grid then stops
+// where each leg runs out (calcMaxLowering), so every lowering swept passes calcLegGeometry.
+void drawCheckedParticipants(Cohort& c, const Participant& templ, const YamlMap& yaml) {
+  try {
+    drawCohortParticipants(c, templ);
+  } catch (const InputError& e) {
+    yaml.fail("distributions",
+              "expected distributions whose every draw is a leg a participant file may hold (narrow the one named)",
+              e.what());
+  }
+}
+
 Cohort readCohortStudy(YamlMap& yaml, const std::string& path) {
   Cohort c;
   c.study.path = path;
@@ -79,7 +92,7 @@ Cohort readCohortStudy(YamlMap& yaml, const std::string& path) {
     yaml.fail("template", "expected a participant driven by a hip moment (its time scale is calibrated to each drawn "
               "swing time)", templ.path + " (drive: thigh_kinematics)");
   yaml.finish();
-  drawCohortParticipants(c, templ);
+  drawCheckedParticipants(c, templ, yaml);
   for (const auto& p : c.study.participants) {
     const std::string modelPath = studyKneeModelPath(c.study, p);
     if (!c.study.kneeModels.count(modelPath)) c.study.kneeModels.emplace(modelPath, loadKneeModel(modelPath));

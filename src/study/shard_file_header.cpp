@@ -66,6 +66,30 @@ ShardFileRun makeShardFileRun(const SweepStudy& study, const std::string& versio
   return run;
 }
 
+JsonCheck<std::uint64_t> mustBeFormatVersion(std::uint64_t expected) {
+  return [expected](const std::uint64_t& v) {
+    if (v == expected) return std::string();
+    if (v < expected)
+      return std::to_string(expected) + " (this file was written by an older swingsim, before its payload was "
+             "checksummed and range-checked: rerun the shard, or the sweep, that wrote it)";
+    return std::to_string(expected) + " (this file was written by a newer swingsim: read it with that version)";
+  };
+}
+
+std::string mustBeSwingTime(const double& t) {
+  return t > kSwingTimeRange.lower && t <= kSwingTimeRange.upper
+             ? std::string()
+             : "a swing time above 0 and at most " + formatNumber(kSwingTimeRange.upper) + " s (" +
+                   kSwingTimeRange.reason + "), or null";
+}
+
+JsonCheck<double> mustBePlausibleNumber(const PlausibleRange& range, std::string what) {
+  return [range, what = std::move(what)](const double& v) {
+    const std::string problem = checkPlausible(v, range, what);
+    return problem.empty() ? problem : problem.substr(std::string("expected ").size());  // the archive says "expected"
+  };
+}
+
 SameRunCheck::SameRunCheck(std::string path, std::string what, std::string otherRun)
     : path_(std::move(path)), what_(std::move(what)), otherRun_(std::move(otherRun)) {}
 

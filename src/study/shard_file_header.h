@@ -2,17 +2,20 @@
 // What the two resumable, shardable results files (cohort_results_file.h,
 // uncertainty_swings_file.h) have in common: the header keys they begin with and their
 // "shard" key (fields of their one list for io/json_archive.h), the fingerprint of the
-// study's inputs that names their run, the check that a file belongs to the same run, and
+// study's inputs that names their run, the checksum over their payload and the range checks
+// of the numbers in it, the check that a file belongs to the same run, and
 // the checks merge makes of a set of shard files (each a finished shard of the same count,
 // its slice the one calcShardSwings gives its K, each K once, none missing). The wording of
 // a message that one format words otherwise stays with that format.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/plausible_ranges.h"
 #include "io/json_archive.h"
 #include "sweep/sweep.h"
 
@@ -55,6 +58,10 @@ constexpr std::uint64_t kMaxResultsFormatVersion = 1000;
 /// Largest N of `--shard K/N` a results file may name.
 constexpr std::uint64_t kMaxShardCount = 1000000;
 
+/// Accepts only `expected`; a file of an older version (written before its payload was
+/// checksummed and range-checked) is refused with what to do: rerun what wrote it.
+JsonCheck<std::uint64_t> mustBeFormatVersion(std::uint64_t expected);
+
 /// The keys a results file begins with, in this order: format (must be `format`),
 /// format_version (must be `formatVersion`), partial, study, study_path, swingsim_version,
 /// inputs_fingerprint. "format" comes first (isCohortResultsFile reads only a file's head).
@@ -63,12 +70,46 @@ void serializeShardFileHead(Archive& a, const char* format, int formatVersion, b
   std::string name = format;
   a.text("format", name, mustBeText(format));
   int version = formatVersion;
-  a.whole("format_version", version, kMaxResultsFormatVersion, mustBeWhole(static_cast<std::uint64_t>(formatVersion)));
+  a.whole("format_version", version, kMaxResultsFormatVersion, mustBeFormatVersion(static_cast<std::uint64_t>(formatVersion)));
   a.flag("partial", partial);
   a.text("study", run.study);
   a.text("study_path", run.studyPath);
   a.text("swingsim_version", run.version);
   a.text("inputs_fingerprint", run.inputsFingerprint);
+}
+
+/// The check of a swing time in a results file (s; null, i.e. NaN, is not checked): above 0
+/// and at most kSwingTimeRange's upper end (core/plausible_ranges.h).
+std::string mustBeSwingTime(const double& t);
+/// The check of a number in a results file against its plausible range (null, i.e. NaN,
+/// is not checked): "<what> in [lower, upper] unit (reason)".
+JsonCheck<double> mustBePlausibleNumber(const PlausibleRange& range, std::string what);
+
+/// The checksum of a results file's payload (a Fingerprint of it, exact), written under
+/// `key` before the payload: the writer writes `calc()`, the reader reads it into `stored`;
+/// requirePayloadChecksum compares it once the payload is read.
+template <class Archive>
+void serializePayloadChecksum(Archive& a, const char* key, std::string& stored,
+                              const std::function<std::string()>& calc) {
+  if constexpr (!Archive::kReading) stored = calc();
+  a.text(key, stored);
+}
+
+/// After the payload is read: refuses a file whose payload no longer gives the checksum
+/// written with it (a number edited by hand, results cut and spliced) with `FILE: KEY:
+/// expected COMPUTED (computed from FROM), found "STORED": WHAT were changed after swingsim
+/// wrote them; rerun ...`. `from`: the payload's keys; `what`: "the swing times".
+template <class Archive>
+void requirePayloadChecksum(Archive& a, const char* key, const std::string& stored,
+                            const std::function<std::string()>& calc, const std::string& from,
+                            const std::string& what) {
+  if constexpr (Archive::kReading) {
+    const std::string computed = calc();
+    a.require(stored == computed, key, computed + " (computed from " + from + ")", [&] {
+      return "\"" + stored + "\": " + what + " were changed after swingsim wrote them; rerun the shard (or the sweep) "
+             "that wrote this file";
+    });
+  }
 }
 
 /// Tag of the "shard" object's keys (serialize below).

@@ -14,9 +14,6 @@ namespace {
 constexpr const char* kFormat = "swingsim uncertainty swings";
 // 2: swing_times_checksum added.
 constexpr int kFormatVersion = 2;
-// s: no swing outlasts its participant's time_limit_s, which a participant file takes up to
-// 10 s (participant_loader.cpp); a longer time in a file was not computed by a swing.
-constexpr double kMaxSwingTime = 10;
 // A shard of the largest analysis (100,000 samples of a few participants) holds millions of
 // swing times at about 20 bytes each: far above the 16 MiB of an input file.
 constexpr std::size_t kMaxSwingsFileBytes = std::size_t{512} << 20;
@@ -48,12 +45,6 @@ std::string describeCount(std::size_t finished, std::size_t total) {
 }
 
 ShardSlice describeSlice(const UncertaintySwingsFile& s) { return describeShardSlice(s, s.run.swingCount); }
-
-std::string mustBeSwingTime(const double& t) {
-  return t > 0 && t <= kMaxSwingTime ? std::string()
-                                     : "a swing time above 0 and at most " + formatNumber(kMaxSwingTime) +
-                                           " s (the largest time_limit_s a participant takes), or null";
-}
 
 }  // namespace
 
@@ -103,8 +94,9 @@ void serialize(Archive& a, UncertaintySwingsFile& f) {
   std::size_t finished = f.times.countFinished();
   a.whole("swings_finished", finished, kMaxSwings);
   a.whole("samples_finished", f.samplesFinished, static_cast<std::uint64_t>(f.run.samples));
-  std::string checksum = Archive::kReading ? std::string() : calcSwingTimesChecksum(f);
-  a.text("swing_times_checksum", checksum);
+  std::string checksum;
+  const auto calcChecksum = [&f] { return calcSwingTimesChecksum(f); };
+  serializePayloadChecksum(a, "swing_times_checksum", checksum, calcChecksum);
   serializeSwings(a, f);
   a.require(finished == f.times.countFinished(), "swings_finished",
             std::to_string(f.times.countFinished()) + " (the swings not in not_run)",
@@ -112,13 +104,8 @@ void serialize(Archive& a, UncertaintySwingsFile& f) {
   a.require(partial == f.isPartial(), "partial",
             f.isPartial() ? "true (not_run lists swings)" : "false (no swing is in not_run)",
             [&] { return partial ? "true" : "false"; });
-  if constexpr (Archive::kReading) {
-    const std::string computed = calcSwingTimesChecksum(f);
-    a.require(checksum == computed, "swing_times_checksum", computed + " (computed from swing_times_s and not_run)", [&] {
-      return "\"" + checksum + "\": the swing times were changed after swingsim wrote them; rerun the shard (or the "
-             "sweep) that wrote this file";
-    });
-  }
+  requirePayloadChecksum(a, "swing_times_checksum", checksum, calcChecksum, "swing_times_s and not_run",
+                         "the swing times");
 }
 
 std::string calcAssumptionsFingerprint(const UncertaintyPlan& plan) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 
@@ -28,6 +29,22 @@ enum Property : std::size_t {
 };
 
 double calcNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+
+// A normal truncated to [min, max] is a normal only between two limits on its sd, as
+// fractions of the truncation's width. Wider than kMaxSdPerWidth, its density across [min,
+// max] varies by at most exp(-0.1^2 / 2), 0.5 %: a uniform by another name (and from ~1e16
+// widths both truncation ends round to the same CDF value and every draw is the mean).
+// Narrower than kMinSdPerWidth, every draw lies within 0.4 % of the width of the mean
+// (3.7 sd hold 99.98 % of draws): a constant by another name.
+constexpr double kMaxSdPerWidth = 10;
+constexpr double kMinSdPerWidth = 1e-3;
+
+// A limit on sd as a message shows it: 3 significant digits (2.2, not 2.1999999999999997).
+std::string formatSdLimit(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
 
 }  // namespace
 
@@ -68,6 +85,19 @@ CohortDistributionProblem checkCohortDistribution(const CohortProperty& property
   if (d.kind == CohortDistribution::Kind::kNormal) {
     if (!(d.sd > 0 && std::isfinite(d.sd))) return {"sd", "a positive standard deviation", formatNumber(d.sd)};
     if (!(d.mean >= d.min && d.mean <= d.max)) return {"mean", "a mean inside " + range, formatNumber(d.mean)};
+    const double width = d.max - d.min;
+    if (d.sd > kMaxSdPerWidth * width)
+      return {"sd",
+              "a standard deviation of at most " + formatNumber(kMaxSdPerWidth) + " x (max - min) = " +
+                  formatSdLimit(kMaxSdPerWidth * width) + " (a wider normal is flat across " + range +
+                  ": its truncation draws a uniform, so write distribution: uniform)",
+              formatNumber(d.sd)};
+    if (d.sd < kMinSdPerWidth * width)
+      return {"sd",
+              "a standard deviation of at least " + formatNumber(kMinSdPerWidth) + " x (max - min) = " +
+                  formatSdLimit(kMinSdPerWidth * width) + " (a narrower normal draws every participant at the mean " +
+                  formatNumber(d.mean) + ")",
+              formatNumber(d.sd)};
   }
   if (d.source.find_first_not_of(" \t") == std::string::npos)
     return {"source", "the published source of the range (paper and table) or \"assumption: ...\"", "an empty text"};
@@ -134,6 +164,15 @@ Participant makeCohortParticipant(const Participant& templ, const std::vector<do
   p.shank.comFromDistal = shankLength - com;
   p.shank.inertia = km * (std::pow(v[kKneeGyration], 2) + std::pow(kd - com, 2)) +
                     pm * (shankLength * shankLength / 12 + std::pow(0.5 * shankLength - com, 2));
+  // The knee unit moves down with the axis (ComRule::kFixedFromProximal): lowered by d, its
+  // COM is kd below the axis on a shank of shankLength - d, so the shank must keep at least
+  // kd and the lowering sweep stops where the COM reaches the ankle (calcMaxLowering).
+  if (p.comRule == ComRule::kFixedFromProximal) p.minShankLength = std::max(templ.minShankLength, kd);
+  // The participant file's own check (min_shank_length_m below the shank's length).
+  if (!(templ.minShankLength < shankLength))
+    throw InputError(name + ": min_shank_length_m: must be shorter than the shank (" + formatNumber(shankLength) +
+                     " m, from stature " + formatNumber(p.height) + " m) (got " + formatNumber(templ.minShankLength) +
+                     ", the template's)");
 
   // Foot link: the foot unit; its COM distance measured from the toe (Burkett Table 2's reading).
   const double footLength = kFootLengthPerStature * p.height;

@@ -50,7 +50,8 @@ struct CohortDistributionProblem {
 };
 
 /// Checks `d` for `property`: a range inside the physical one with min < max, a normal's mean
-/// inside its range and a positive sd, a non-empty source.
+/// inside its range and an sd from 0.001 to 10 x (max - min) (narrower, every draw is the
+/// mean; wider, the truncated normal is a uniform), a non-empty source.
 CohortDistributionProblem checkCohortDistribution(const CohortProperty& property, const CohortDistribution& d);
 
 /// The value at u in [0, 1): min + u (max - min), or the normal's quantile at u inside its
@@ -67,8 +68,10 @@ double calcCohortBodyMass(const std::vector<double>& values);
 
 /// A participant: `templ` (knee model, friction law, initial pose, swing-end rule, hip-moment
 /// profile) with the drawn stature, body mass, segments and knee friction (`values` in table
-/// order). Throws InputError (naming `name`) if the drawn leg is impossible (a knee centre of
-/// mass below the ankle).
+/// order). Its shank keeps at least the knee unit's COM distance (minShankLength), so no
+/// lowering puts the knee unit's COM below the ankle. Throws InputError (naming `name` and
+/// the key) if the drawn leg is impossible: a knee centre of mass below the ankle, or a
+/// shank shorter than the template's min_shank_length_m.
 Participant makeCohortParticipant(const Participant& templ, const std::vector<double>& values, const std::string& name);
 
 /// "C001", "C002", ...: participant i of `count`, zero-padded to count's width (at least 3).

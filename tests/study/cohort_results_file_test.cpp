@@ -94,12 +94,12 @@ CohortResultsFile makePartial() {
   return f;
 }
 
-// The text is the one swingsim has always written (key order, indent, number forms), so
-// files of earlier runs resume and merge.
+// The text is the one swingsim writes (key order, indent, number forms); a file of format 1
+// (no results_checksum) is refused with "rerun" (cohort_shard_checks_test.cpp).
 TEST(CohortResultsFile, WritesTheTextItAlwaysHas) {
   EXPECT_EQ(formatCohortResultsJson(makePartial()), R"({
   "format": "swingsim cohort results",
-  "format_version": 1,
+  "format_version": 2,
   "partial": true,
   "study": "tiny cohort",
   "study_path": "studies/tiny-cohort.yaml",
@@ -111,6 +111,7 @@ TEST(CohortResultsFile, WritesTheTextItAlwaysHas) {
   "first_participant": 0,
   "last_participant": 4,
   "participants_finished": 2,
+  "results_checksum": "65246f268751abd8",
   "results": [
     {
       "participant": "C001",
@@ -225,8 +226,9 @@ TEST(CohortResultsFile, MalformedFilesNameFileKeyExpectedAndFound) {
                         "found it missing"));
   EXPECT_THAT(refusal("c.json", replace("\"format\": \"swingsim cohort results\"", "\"format\": \"other\"")),
               HasSubstr(p + "c.json: format: expected \"swingsim cohort results\", found \"other\""));
-  EXPECT_THAT(refusal("d.json", replace("\"format_version\": 1", "\"format_version\": 2")),
-              HasSubstr(p + "d.json: format_version: expected 1, found 2"));
+  EXPECT_THAT(refusal("d.json", replace("\"format_version\": 2", "\"format_version\": 3")),
+              HasSubstr(p + "d.json: format_version: expected 2 (this file was written by a newer swingsim: read it "
+                            "with that version), found 3"));
   EXPECT_THAT(refusal("e.json", replace("\"seed\": 5", "\"seed\": \"5\"")),
               HasSubstr(p + "e.json: seed: expected a whole number from 0 to"));
   EXPECT_THAT(refusal("f.json", replace("\"last_participant\": 4", "\"last_participant\": 3")),

@@ -115,7 +115,8 @@ TEST(ShardFileHeader, AFileOfAnotherFormatOrAMissingKeyIsRefused) {
   EXPECT_EQ(refusal("a.json", edit(text, "\"swingsim head only\"", "\"swingsim cohort results\"")),
             p + "a.json: format: expected \"swingsim head only\", found \"swingsim cohort results\"");
   EXPECT_EQ(refusal("b.json", edit(text, "\"format_version\": 3", "\"format_version\": 2")),
-            p + "b.json: format_version: expected 3, found 2");
+            p + "b.json: format_version: expected 3 (this file was written by an older swingsim, before its payload "
+                "was checksummed and range-checked: rerun the shard, or the sweep, that wrote it), found 2");
   EXPECT_EQ(refusal("c.json", edit(text, "\"format_version\": 3", "\"format_version\": 1001")),
             p + "c.json: format_version: expected a whole number from 0 to 1000, found 1001");
   EXPECT_EQ(refusal("d.json", edit(text, "  \"study_path\": \"studies/tiny.yaml\",\n", "")),

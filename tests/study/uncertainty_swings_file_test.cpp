@@ -159,7 +159,8 @@ TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
   EXPECT_THAT(refuse("f.json", replace("\"last_swing\": 5", "\"last_swing\": 6")),
               HasSubstr(p + "f.json: swing_times_s: expected a list of 6 swing times (last_swing - first_swing), found a list of 5"));
   EXPECT_THAT(refuse("g.json", replace("\"format_version\": 2", "\"format_version\": 3")),
-              HasSubstr(p + "g.json: format_version: expected 2, found 3"));
+              HasSubstr(p + "g.json: format_version: expected 2 (this file was written by a newer swingsim: read it "
+                            "with that version), found 3"));
   EXPECT_THAT(refuse("g2.json", replace("\"shard\": {", "\"shard\": 3, \"x\": {")),
               HasSubstr(p + "g2.json: shard: expected null or {\"index\": K, \"count\": N}, found 3"));
   UncertaintySwingsFile partial = makeShard(1, 3);
