@@ -101,7 +101,7 @@ Command addSweepCommand(CLI::App& app) {
   addJsonOption(sub, a->json);
   sub->add_option("--jobs", a->jobs, "worker threads, 0 = all cores (default 0)")
       ->type_name("N")
-      ->check(wholeNumberFrom(0, "expected 0 (all cores) or a positive whole number"));
+      ->check(wholeNumberIn(jobsRange()));
   sub->add_option_function<std::string>("--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
                                         "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)")
       ->type_name("KG@M")
@@ -112,11 +112,10 @@ Command addSweepCommand(CLI::App& app) {
                   "assumptions and each at both ends of its range (docs/uncertainty.md; default: the study's "
                   "uncertainty: map, else none)")
       ->type_name("N")
-      ->check(wholeNumberFrom(1, "expected a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples),
-                              kMaxUncertaintySamples));
+      ->check(wholeNumberIn(uncertaintySamplesRange()));
   sub->add_option("--seed", a->seed, "seed of the uncertainty analysis's draws (std::mt19937_64; default: the study's, else 1)")
       ->type_name("S")
-      ->check(wholeNumberFrom(0, "expected a whole number from 0"));
+      ->check(wholeNumberIn(seedRange()));
   CLI::Option* shard =
       sub->add_option_function<std::string>("--shard", [a](const std::string& v) {
            ShardSpec spec;
