@@ -24,6 +24,7 @@
 #include "report/sweep_report.h"
 #include "study/cylinder_study.h"
 #include "study/diagnosis_study.h"
+#include "study/run_arguments.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "swing/knee_setup.h"
@@ -135,8 +136,9 @@ py::object sweep(const py::object& studyPath, const py::object& uncertaintyValue
   if (!seedValue.is_none()) seed = readWholeArgument(seedValue, "sweep(): seed", seedRange());
   const int jobs = static_cast<int>(readWholeArgument(jobsValue, "sweep(): jobs", jobsRange()));
   SweepStudy study = loadSweepStudy(path);
-  if (uncertainty > 0) study.uncertaintySamples = static_cast<int>(uncertainty);
-  if (seed) study.uncertaintySeed = static_cast<int>(*seed);
+  applyUncertaintyArguments(study, uncertainty > 0 ? std::optional<int>(static_cast<int>(uncertainty)) : std::nullopt,
+                            seed ? std::optional<int>(static_cast<int>(*seed)) : std::nullopt,
+                            {"sweep(): seed", "uncertainty=N", "seed=" + std::to_string(seed.value_or(0))});
   volatile bool stop = false;
   // Called from the thread that runs the sweep (this one): Python's signal handlers run
   // there, so Ctrl-C sets the stop flag.

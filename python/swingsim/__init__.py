@@ -96,12 +96,12 @@ class KneeModel(_FileRecord):
 
 def load_participant(path):
     """The participant file at `path`. Raises InputError as `swingsim simulate` would."""
-    return Participant(_swingsim.load_participant_dict(_os.fspath(path)), _os.fspath(path))
+    return Participant(_swingsim.load_participant_dict(path), _os.fspath(path))
 
 
 def load_knee(path):
     """The knee model file at `path`. Raises InputError as `swingsim simulate --knee` would."""
-    return KneeModel(_swingsim.load_knee_dict(_os.fspath(path)), _os.fspath(path))
+    return KneeModel(_swingsim.load_knee_dict(path), _os.fspath(path))
 
 
 class SwingResult:

@@ -70,6 +70,14 @@ def test_non_integers_are_type_errors_naming_the_argument(small_study, keyword, 
     assert str(error.value) == f"sweep(): {keyword}: expected an integer, got {shown}"
 
 
+def test_seed_with_nothing_to_seed_is_refused_as_on_the_command_line(small_study):
+    # Was: ignored.
+    with pytest.raises(swingsim.InputError) as error:
+        swingsim.sweep(small_study, seed=3)
+    assert str(error.value) == ("sweep(): seed: sets the seed of the uncertainty analysis, which needs uncertainty=N "
+                                f"or an `uncertainty:` map in {small_study} (got seed=3 alone)")
+
+
 def test_negative_jobs_are_refused(small_study):
     # Was: run.
     with pytest.raises(swingsim.InputError) as error:
@@ -160,11 +168,11 @@ def test_load_path_of_another_type_is_named():
 # --- the same limit as the command line -----------------------------------------------------
 
 def test_cli_and_python_refuse_the_same_sample_count_with_the_same_limit(cli, small_study, tmp_path):
-    limit = f"expected a whole number of samples from 1 to {MAX_SAMPLES}"
+    limit = f"a whole number of samples from 1 to {MAX_SAMPLES}"
     run = subprocess.run([cli, "sweep", str(small_study), "--uncertainty", str(MAX_SAMPLES + 1),
                           "--out", str(tmp_path / "out")], capture_output=True, text=True)
     assert run.returncode != 0
-    assert f"--uncertainty: {limit} (got '{MAX_SAMPLES + 1}')" in run.stderr
+    assert f"--uncertainty: expected {limit} (got '{MAX_SAMPLES + 1}')" in run.stderr
     with pytest.raises(swingsim.InputError, match=f"sweep\\(\\): uncertainty: .*{limit}, got {MAX_SAMPLES + 1}"):
         swingsim.sweep(small_study, uncertainty=MAX_SAMPLES + 1)
     # The limit itself passes both checks: the error is then the study file's, not the count's.

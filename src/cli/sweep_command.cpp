@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "study/cohort_study.h"
 #include "study/cohort_sweep_run.h"
+#include "study/run_arguments.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
@@ -67,13 +68,8 @@ int runSweepCommand(const SweepArguments& a) {
     study.addedMasses = {0.0, a.added->mass};
     study.addedMassDistances = {a.added->distanceBelowKnee};
   }
-  if (a.uncertaintySamples) study.uncertaintySamples = *a.uncertaintySamples;
-  if (a.seed) {
-    if (study.uncertaintySamples == 0)
-      throw InputError("--seed: sets the seed of the uncertainty analysis, which needs --uncertainty N or an "
-                       "`uncertainty:` map in " + study.path + " (got --seed " + std::to_string(*a.seed) + " alone)");
-    study.uncertaintySeed = *a.seed;
-  }
+  applyUncertaintyArguments(study, a.uncertaintySamples, a.seed,
+                            {"--seed", "--uncertainty N", "--seed " + std::to_string(a.seed.value_or(0))});
   if (a.shard && study.uncertaintySamples == 0)
     throw InputError("--shard: shards the uncertainty analysis, which needs --uncertainty N or an `uncertainty:` map in " +
                      study.path + " (got --shard " + std::to_string(a.shard->index) + "/" +

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/input_error.h"
 #include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
@@ -52,6 +53,16 @@ std::string checkLowering(double lowering) {
 
 std::string formatArgumentProblem(const std::string& name, const std::string& expected, const std::string& got) {
   return name + ": " + expected + ", got " + got;
+}
+
+void applyUncertaintyArguments(SweepStudy& study, std::optional<int> samples, std::optional<int> seed,
+                               const UncertaintyArgumentNames& names) {
+  if (samples) study.uncertaintySamples = *samples;
+  if (!seed) return;
+  if (study.uncertaintySamples == 0)
+    throw InputError(names.seed + ": sets the seed of the uncertainty analysis, which needs " + names.samples +
+                     " or an `uncertainty:` map in " + study.path + " (got " + names.seedGot + " alone)");
+  study.uncertaintySeed = *seed;
 }
 
 }  // namespace swingsim

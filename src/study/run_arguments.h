@@ -3,7 +3,10 @@
 // jobs and --max-swings; simulate's lowering): their ranges and what a refusal says, in one
 // place. CLI11's validators (cli/option_checks) and the Python module's argument conversions
 // (python/src/python_values) both check against these, so a limit changes here only.
+#include <optional>
 #include <string>
+
+#include "sweep/sweep.h"
 
 namespace swingsim {
 
@@ -45,5 +48,18 @@ std::string checkLowering(double lowering);
 /// The message of a refused argument: "NAME: EXPECTED, got GOT"
 /// ("sweep(): seed: expected a seed from 0 to 1000000000, got -1").
 std::string formatArgumentProblem(const std::string& name, const std::string& expected, const std::string& got);
+
+/// How a caller names the uncertainty arguments in its messages.
+struct UncertaintyArgumentNames {
+  std::string seed;     ///< "--seed" / "sweep(): seed"
+  std::string samples;  ///< "--uncertainty N" / "uncertainty=N"
+  std::string seedGot;  ///< the seed as given: "--seed 3" / "seed=3"
+};
+
+/// Applies the overrides of the study's `uncertainty:` map (nullopt: the study's own), each
+/// checked against its range already. A seed with nothing to seed (no samples given and no
+/// map in the study) is an InputError naming the seed and the study, before any work.
+void applyUncertaintyArguments(SweepStudy& study, std::optional<int> samples, std::optional<int> seed,
+                               const UncertaintyArgumentNames& names);
 
 }  // namespace swingsim

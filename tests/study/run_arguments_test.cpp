@@ -4,6 +4,7 @@
 
 #include <limits>
 
+#include "core/input_error.h"
 #include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {
@@ -60,6 +61,23 @@ TEST(RunArguments, LoweringMustBeFinite) {
 TEST(RunArguments, MessageNamesTheArgument) {
   EXPECT_EQ(formatArgumentProblem("sweep(): seed", seedRange().expected, "-1"),
             "sweep(): seed: expected a seed from 0 to 1000000000, got -1");
+}
+
+// A seed with no analysis to seed is refused with the caller's names; with samples it applies.
+TEST(RunArguments, SeedNeedsAnAnalysis) {
+  SweepStudy study;
+  study.path = "s.yaml";
+  const UncertaintyArgumentNames names{"sweep(): seed", "uncertainty=N", "seed=3"};
+  try {
+    applyUncertaintyArguments(study, std::nullopt, 3, names);
+    FAIL() << "a seed alone was taken";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "sweep(): seed: sets the seed of the uncertainty analysis, which needs uncertainty=N or "
+                           "an `uncertainty:` map in s.yaml (got seed=3 alone)");
+  }
+  applyUncertaintyArguments(study, 4, 3, names);
+  EXPECT_EQ(study.uncertaintySamples, 4);
+  EXPECT_EQ(study.uncertaintySeed, 3);
 }
 
 }  // namespace
