@@ -3,6 +3,8 @@
 // calling the same library functions as the command line, with the GIL released while
 // they run. Bad input raises swingsim.InputError (a ValueError) with the CLI's
 // `file:line: key: ...` message; a failed run raises swingsim.RunError (a RuntimeError).
+// Arguments are checked first, against the command line's ranges (study/run_arguments.h): a
+// wrong type raises TypeError, a value out of range InputError, each naming the argument.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>  // std::optional arguments

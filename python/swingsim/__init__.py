@@ -5,7 +5,8 @@ are the file's keys, in the file's units (``p.segments.shank.mass_kg``); `simula
 swing, `sweep` a knee-axis sweep study, `fit` a cylinder-fit study, `compare` and `diagnose` a
 diagnosis study, through the same C++ functions as the command
 line, with the GIL released while they run. Bad input raises `InputError` (a ValueError)
-with the command line's ``file:line: key: ...`` message; a failed run raises `RunError`; a
+with the command line's ``file:line: key: ...`` message; an argument of the wrong type raises
+TypeError and one out of the command line's range InputError, naming it; a failed run raises `RunError`; a
 warning about the data is issued with `warnings.warn` as a `SwingsimWarning`.
 """
 import copy as _copy
