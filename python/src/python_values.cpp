@@ -36,6 +36,35 @@ py::object toPython(const Json& json) {
 
 namespace {
 
+bool isNumpy(const py::handle& value, const char* type) {
+  return py::isinstance(value, py::module_::import("numpy").attr(type));
+}
+
+bool isBool(const py::handle& value) { return PyBool_Check(value.ptr()) || isNumpy(value, "bool_"); }
+
+bool isInteger(const py::handle& value) {
+  return !isBool(value) && (PyLong_Check(value.ptr()) || isNumpy(value, "integer"));
+}
+
+// np.float64 is a Python float; np.float32 is not.
+bool isReal(const py::handle& value) {
+  return isInteger(value) || PyFloat_Check(value.ptr()) || isNumpy(value, "floating");
+}
+
+[[noreturn]] void throwTypeError(const std::string& where, const std::string& expected, const py::handle& value) {
+  throw py::type_error(formatArgumentProblem(where, expected, describePython(value)));
+}
+
+// A numpy array where the loaders expect a list or a number: a 1-D numeric one as its list,
+// a 0-d one as its number; any other as a message naming `where`.
+py::object numpyAsList(const py::handle& array, const std::string& where) {
+  const int dimensions = array.attr("ndim").cast<int>();
+  const std::string kind = py::str(array.attr("dtype").attr("kind")).cast<std::string>();
+  if (dimensions > 1 || kind.size() != 1 || std::string("biuf").find(kind) == std::string::npos)
+    throw InputError(where + ": expected a number or a 1-D array of numbers, found a " + describePython(array));
+  return array.attr("tolist")();
+}
+
 py::object scalarToPython(const std::string& text) {
   if (text == "true") return py::bool_(true);
   if (text == "false") return py::bool_(false);
@@ -64,6 +93,8 @@ void emit(YAML::Emitter& out, const py::handle& value, const std::string& where)
     out << YAML::EndSeq;
   } else if (py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"))) {
     out << (value.cast<bool>() ? "true" : "false");
+  } else if (isNumpy(value, "ndarray")) {
+    emit(out, numpyAsList(value, where), where);
   } else if (py::isinstance<py::str>(value)) {
     out << YAML::DoubleQuoted << value.cast<std::string>();
   } else if (py::hasattr(value, "__index__")) {
@@ -99,6 +130,51 @@ std::string toYamlText(const py::handle& value, const std::string& where) {
   YAML::Emitter out;
   emit(out, value, where);
   return std::string(out.c_str()) + "\n";
+}
+
+std::string describePython(const py::handle& value) {
+  if (value.is_none()) return "None";
+  const py::handle type = py::type::of(value);
+  const std::string module = py::str(type.attr("__module__")).cast<std::string>();
+  std::string name = py::str(type.attr("__qualname__")).cast<std::string>();
+  if (module != "builtins") name = module + "." + name;
+  if (isNumpy(value, "ndarray")) return name + " of shape " + py::repr(value.attr("shape")).cast<std::string>();
+  std::string text = py::repr(value).cast<std::string>();
+  constexpr std::size_t kMaxShown = 80;  // a long list or dict is cut, not printed whole
+  if (text.size() > kMaxShown) text = text.substr(0, kMaxShown) + "...";
+  return name + " " + text;
+}
+
+long long readWholeArgument(const py::handle& value, const std::string& where, const WholeNumberRange& range) {
+  if (!isInteger(value)) throwTypeError(where, "expected an integer", value);
+  const py::object whole = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));  // numpy's too
+  if (!whole) throw py::error_already_set();
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(whole.ptr(), &overflow);
+  if (overflow != 0 || !range.check(v).empty())
+    throw InputError(formatArgumentProblem(where, range.expected, py::str(whole).cast<std::string>()));
+  return v;
+}
+
+double readNumberArgument(const py::handle& value, const std::string& where, std::string (*check)(double)) {
+  if (!isReal(value)) throwTypeError(where, "expected a number", value);
+  const double v = PyFloat_AsDouble(value.ptr());  // an int beyond a double: OverflowError
+  if (v == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+  const std::string bad = check ? check(v) : "";
+  if (!bad.empty()) throw InputError(formatArgumentProblem(where, bad, py::repr(value).cast<std::string>()));
+  return v;
+}
+
+bool isPathArgument(const py::handle& value) {
+  return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
+}
+
+std::string readPathArgument(const py::handle& value, const std::string& where) {
+  const char* expected = "expected a path (str or os.PathLike)";
+  if (!isPathArgument(value)) throwTypeError(where, expected, value);
+  const py::object path = py::module_::import("os").attr("fspath")(value);
+  if (!py::isinstance<py::str>(path)) throwTypeError(where, expected, path);
+  return path.cast<std::string>();
 }
 
 }  // namespace swingsim::python

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "io/json_file.h"
+#include "study/run_arguments.h"
 
 namespace swingsim::python {
 
@@ -25,5 +26,23 @@ pybind11::object toPython(const YAML::Node& node);
 /// too) and strings; floats in their shortest form that reads back to the same double.
 /// Throws InputError naming `where` for any other type.
 std::string toYamlText(const pybind11::handle& value, const std::string& where);
+
+/// A Python value for a message: its type and repr ("float 2.5", "numpy.ndarray of shape
+/// (3,)"), cut at 80 characters.
+std::string describePython(const pybind11::handle& value);
+
+/// An argument (`where`: "sweep(): seed") as a whole number in `range`: a Python int or a
+/// numpy integer scalar, not a bool or a float. Raises TypeError for another type, and
+/// InputError (a ValueError) with range.expected outside the range, both naming `where`.
+long long readWholeArgument(const pybind11::handle& value, const std::string& where, const WholeNumberRange& range);
+
+/// An argument as a number: a Python int or float or a numpy number scalar, not a bool or an
+/// array (TypeError naming `where`); `check` (as checkLowering) returns "" or what was
+/// expected (InputError naming `where`).
+double readNumberArgument(const pybind11::handle& value, const std::string& where, std::string (*check)(double));
+
+/// An argument as a path: a str or an os.PathLike giving one (TypeError naming `where`).
+bool isPathArgument(const pybind11::handle& value);
+std::string readPathArgument(const pybind11::handle& value, const std::string& where);
 
 }  // namespace swingsim::python

@@ -3,6 +3,8 @@
 // calling the same library functions as the command line, with the GIL released while
 // they run. Bad input raises swingsim.InputError (a ValueError) with the CLI's
 // `file:line: key: ...` message; a failed run raises swingsim.RunError (a RuntimeError).
+// Arguments are checked first, against the command line's ranges (study/run_arguments.h): a
+// wrong type raises TypeError, a value out of range InputError, each naming the argument.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>  // std::optional arguments
@@ -24,6 +26,7 @@
 #include "report/sweep_report.h"
 #include "study/cylinder_study.h"
 #include "study/diagnosis_study.h"
+#include "study/run_arguments.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "swing/knee_setup.h"
@@ -33,14 +36,6 @@ namespace py = pybind11;
 
 namespace swingsim::python {
 namespace {
-
-bool isPath(const py::handle& value) {
-  return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
-}
-
-std::string pathText(const py::handle& value) {
-  return py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>();
-}
 
 std::string folderOf(const std::string& path) {
   const std::string folder = std::filesystem::path(path).parent_path().string();
@@ -63,15 +58,28 @@ auto loadWithoutGil(Load load, const std::string& path) {
   return load(path);
 }
 
-Participant readParticipant(const py::handle& participant) {
-  if (isPath(participant)) return loadWithoutGil(loadParticipant, pathText(participant));
+/// An instance of swingsim/__init__.py's class `name` (Participant, KneeModel)?
+bool isPackageObject(const py::handle& value, const char* name) {
+  return py::isinstance(value, py::module_::import("swingsim").attr(name));
+}
+
+Participant readParticipant(const py::handle& participant, const char* function) {
+  const std::string where = std::string(function) + "(): participant";
+  if (isPathArgument(participant)) return loadWithoutGil(loadParticipant, readPathArgument(participant, where));
+  if (!isPackageObject(participant, "Participant"))
+    throw py::type_error(formatArgumentProblem(where, "expected a path or a swingsim.Participant",
+                                               describePython(participant)));
   const auto [text, source] = objectAsYaml(participant, "participant");
   return parseParticipant(text, source);
 }
 
-KneeModel readKnee(const py::handle& knee, const Participant& participant) {
+KneeModel readKnee(const py::handle& knee, const Participant& participant, const char* function) {
+  const std::string where = std::string(function) + "(): knee";
   if (knee.is_none()) return loadWithoutGil(loadKneeModel, participant.kneeModelPath);
-  if (isPath(knee)) return loadWithoutGil(loadKneeModel, pathText(knee));
+  if (isPathArgument(knee)) return loadWithoutGil(loadKneeModel, readPathArgument(knee, where));
+  if (!isPackageObject(knee, "KneeModel"))
+    throw py::type_error(formatArgumentProblem(where, "expected None (the participant's), a path or a swingsim.KneeModel",
+                                               describePython(knee)));
   const auto [text, source] = objectAsYaml(knee, "knee model");
   return parseKneeModel(text, source);
 }
@@ -100,9 +108,10 @@ py::dict trajectoryArrays(const SwingTrajectory& trajectory) {
 
 /// One swing as `swingsim simulate --json` describes it, plus "knee_model" and the
 /// trajectory's columns as numpy arrays under "trajectory".
-py::dict simulate(const py::object& participant, double lowering, const py::object& knee) {
-  Participant loaded = readParticipant(participant);
-  const KneeModel model = readKnee(knee, loaded);
+py::dict simulate(const py::object& participant, const py::object& loweringValue, const py::object& knee) {
+  const double lowering = readNumberArgument(loweringValue, "simulate(): lowering_m", checkLowering);
+  Participant loaded = readParticipant(participant, "simulate");
+  const KneeModel model = readKnee(knee, loaded, "simulate");
   std::optional<SwingSetup> setup;
   SwingResult result;
   {
@@ -120,12 +129,18 @@ py::dict simulate(const py::object& participant, double lowering, const py::obje
 
 /// The content of `swingsim sweep STUDY --json` ([--uncertainty N] [--seed S]) as Python
 /// objects. Ctrl-C stops it between swings and raises KeyboardInterrupt.
-py::object sweep(const std::string& studyPath, int uncertainty, std::optional<int> seed, int jobs) {
-  SweepStudy study = loadSweepStudy(studyPath);
-  if (uncertainty < 0) throw InputError("uncertainty: expected 0 (none) or a whole number of samples, found " +
-                                        std::to_string(uncertainty));
-  if (uncertainty > 0) study.uncertaintySamples = uncertainty;
-  if (seed) study.uncertaintySeed = *seed;
+py::object sweep(const py::object& studyPath, const py::object& uncertaintyValue, const py::object& seedValue,
+                 const py::object& jobsValue) {
+  // Every argument checked before the study is read or anything allocated.
+  const std::string path = readPathArgument(studyPath, "sweep(): study_path");
+  const long long uncertainty = readWholeArgument(uncertaintyValue, "sweep(): uncertainty", uncertaintyOrNoneRange());
+  std::optional<long long> seed;
+  if (!seedValue.is_none()) seed = readWholeArgument(seedValue, "sweep(): seed", seedRange());
+  const int jobs = static_cast<int>(readWholeArgument(jobsValue, "sweep(): jobs", jobsRange()));
+  SweepStudy study = loadSweepStudy(path);
+  applyUncertaintyArguments(study, uncertainty > 0 ? std::optional<int>(static_cast<int>(uncertainty)) : std::nullopt,
+                            seed ? std::optional<int>(static_cast<int>(*seed)) : std::nullopt,
+                            {"sweep(): seed", "uncertainty=N", "seed=" + std::to_string(seed.value_or(0))});
   volatile bool stop = false;
   // Called from the thread that runs the sweep (this one): Python's signal handlers run
   // there, so Ctrl-C sets the stop flag.
@@ -150,8 +165,8 @@ py::object sweep(const std::string& studyPath, int uncertainty, std::optional<in
 
 /// The content of `swingsim fit STUDY --json`: each Mauch model's coefficients and its
 /// ME / RMSE / R^2 per bench file.
-py::object fit(const std::string& studyPath) {
-  const CylinderFitStudy study = loadCylinderFitStudy(studyPath);
+py::object fit(const py::object& studyPath) {
+  const CylinderFitStudy study = loadCylinderFitStudy(readPathArgument(studyPath, "fit(): study_path"));
   std::string json;
   {
     py::gil_scoped_release release;
@@ -163,8 +178,8 @@ py::object fit(const std::string& studyPath) {
 
 /// The content of `swingsim compare STUDY --json`: the base model refitted on the training
 /// files, metrics overall and per phase.
-py::object compare(const std::string& studyPath) {
-  const DiagnosisStudy study = loadDiagnosisStudy(studyPath);
+py::object compare(const py::object& studyPath) {
+  const DiagnosisStudy study = loadDiagnosisStudy(readPathArgument(studyPath, "compare(): study_path"));
   Json json;
   {
     py::gil_scoped_release release;
@@ -178,15 +193,24 @@ py::object compare(const std::string& studyPath) {
 
 /// The content of `swingsim diagnose STUDY --json`: candidate effects ranked, the accepted
 /// ones, the error before and after.
-py::object diagnose(const std::string& studyPath) {
-  const DiagnosisStudy study = loadDiagnosisStudy(studyPath);
+py::object diagnose(const py::object& studyPath) {
+  const DiagnosisStudy study = loadDiagnosisStudy(readPathArgument(studyPath, "diagnose(): study_path"));
+  // Ctrl-C: Python's signal handler runs before the next candidate is scored (on this thread),
+  // and its KeyboardInterrupt ends the diagnosis; nothing is written.
+  struct Interrupted {};
+  const DiagnosisProgress checkSignals = [](int, int, int) {
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw Interrupted{};
+  };
   Json json;
-  {
+  try {
     py::gil_scoped_release release;
     const auto plant = loadDiagnosisPlant(study, 8);  // as the CLI's diagnose
-    const Diagnosis dg = runDiagnosis(*plant, study.settings);
+    const Diagnosis dg = runDiagnosis(*plant, study.settings, checkSignals);
     json = makeDiagnoseJson(dg, plant->compare(*dg.baseline.model), plant->compare(*dg.final.model),
                             plant->compareHeldBack(*dg.baseline.model), plant->compareHeldBack(*dg.final.model));
+  } catch (const Interrupted&) {
+    throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
   }
   return toPython(json);
 }
@@ -208,8 +232,12 @@ PYBIND11_MODULE(_swingsim, m) {
       PyErr_SetString(runError.ptr(), e.what());
     }
   });
-  m.def("load_participant_dict", &python::loadParticipantDict, py::arg("path"));
-  m.def("load_knee_dict", &python::loadKneeDict, py::arg("path"));
+  m.def("load_participant_dict",
+        [](const py::object& path) { return python::loadParticipantDict(python::readPathArgument(path, "load_participant(): path")); },
+        py::arg("path"));
+  m.def("load_knee_dict",
+        [](const py::object& path) { return python::loadKneeDict(python::readPathArgument(path, "load_knee(): path")); },
+        py::arg("path"));
   m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none());
   m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
         py::arg("jobs") = 0);

@@ -5,7 +5,8 @@ are the file's keys, in the file's units (``p.segments.shank.mass_kg``); `simula
 swing, `sweep` a knee-axis sweep study, `fit` a cylinder-fit study, `compare` and `diagnose` a
 diagnosis study, through the same C++ functions as the command
 line, with the GIL released while they run. Bad input raises `InputError` (a ValueError)
-with the command line's ``file:line: key: ...`` message; a failed run raises `RunError`; a
+with the command line's ``file:line: key: ...`` message; an argument of the wrong type raises
+TypeError and one out of the command line's range InputError, naming it; a failed run raises `RunError`; a
 warning about the data is issued with `warnings.warn` as a `SwingsimWarning`.
 """
 import copy as _copy
@@ -96,12 +97,12 @@ class KneeModel(_FileRecord):
 
 def load_participant(path):
     """The participant file at `path`. Raises InputError as `swingsim simulate` would."""
-    return Participant(_swingsim.load_participant_dict(_os.fspath(path)), _os.fspath(path))
+    return Participant(_swingsim.load_participant_dict(path), _os.fspath(path))
 
 
 def load_knee(path):
     """The knee model file at `path`. Raises InputError as `swingsim simulate --knee` would."""
-    return KneeModel(_swingsim.load_knee_dict(_os.fspath(path)), _os.fspath(path))
+    return KneeModel(_swingsim.load_knee_dict(path), _os.fspath(path))
 
 
 class SwingResult:
@@ -129,14 +130,14 @@ def simulate(participant, lowering_m=0.0, knee=None):
 
     participant: a path or a Participant; lowering_m: knee-axis lowering, m; knee: None (the
     participant's knee_model), a path or a KneeModel. Returns a SwingResult."""
-    return SwingResult(_swingsim.simulate(participant, float(lowering_m), knee))
+    return SwingResult(_swingsim.simulate(participant, lowering_m, knee))
 
 
 def sweep(study_path, uncertainty=0, seed=None, jobs=0):
     """A knee-axis sweep study, as `swingsim sweep STUDY --json FILE [--uncertainty N]
     [--seed S]`: returns what the JSON file holds, as dicts and lists. jobs: worker threads,
     0 = all cores. No report or CSV is written. Ctrl-C stops it between swings."""
-    return _swingsim.sweep(_os.fspath(study_path), int(uncertainty), seed, int(jobs))
+    return _swingsim.sweep(study_path, uncertainty, seed, jobs)
 
 
 class SwingsimWarning(UserWarning):
@@ -155,16 +156,16 @@ def fit(study_path):
     """The Mauch cylinder fit of a cylinder-fit study, as `swingsim fit STUDY --json FILE`:
     returns what the JSON file holds (each model's coefficients and ME / RMSE / R^2 per bench
     file). No report written."""
-    return _warn_about(_swingsim.fit(_os.fspath(study_path)))
+    return _warn_about(_swingsim.fit(study_path))
 
 
 def compare(study_path):
     """Model against measurement for a cylinder-diagnosis or swing-diagnosis study, as
     `swingsim compare STUDY --json FILE`: returns what the JSON file holds. No plots written."""
-    return _warn_about(_swingsim.compare(_os.fspath(study_path)))
+    return _warn_about(_swingsim.compare(study_path))
 
 
 def diagnose(study_path):
     """The diagnosis of a cylinder-diagnosis or swing-diagnosis study, as `swingsim diagnose
     STUDY --json FILE`: returns what the JSON file holds. No report or model is written."""
-    return _warn_about(_swingsim.diagnose(_os.fspath(study_path)))
+    return _warn_about(_swingsim.diagnose(study_path))

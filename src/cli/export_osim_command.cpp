@@ -80,7 +80,7 @@ Command addExportOsimCommand(CLI::App& app) {
   sub->add_option("PARTICIPANT.yaml", a->participant, "participant file")->required()->type_name("");
   sub->add_option("--lowering", a->lowering, "knee-axis lowering below the standard location, m (default 0)")
       ->type_name("M")
-      ->check(finiteNumber());
+      ->check(finiteNumber(checkLowering));
   addTextOption(sub, "--out", a->out,
                 "output folder (default out/simulate-<participant>/, beside simulate's .sto); the file is <participant>-lowerNNNmm.osim",
                 "DIR");

@@ -98,7 +98,7 @@ Command addMergeCommand(CLI::App& app) {
   addJsonOption(sub, a->json);
   sub->add_option("--jobs", a->jobs, "worker threads of the plain sweep, 0 = all cores (default 0)")
       ->type_name("N")
-      ->check(wholeNumberFrom(0, "expected 0 (all cores) or a positive whole number"));
+      ->check(wholeNumberIn(jobsRange()));
   addMaxSwingsOption(sub, a->maxSwings);
   return {sub, [a] { return runMergeCommand(*a); }};
 }

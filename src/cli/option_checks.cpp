@@ -49,11 +49,11 @@ CLI::Validator finiteNumber(std::function<std::string(double)> check) {
       "");
 }
 
-CLI::Validator wholeNumberFrom(int min, const std::string& expected, int max) {
+CLI::Validator wholeNumberIn(const WholeNumberRange& range) {
   return CLI::Validator(
-      [min, max, expected](std::string& text) -> std::string {
+      [range](std::string& text) -> std::string {
         const std::optional<double> v = readFinite(text);
-        if (!v || *v != std::floor(*v) || *v < min || *v > max) return expected + " (got '" + text + "')";
+        if (!v || !range.check(*v).empty()) return range.expected + " (got '" + text + "')";
         text = std::to_string(static_cast<long long>(*v));  // "2.0" -> "2" for CLI11's integer conversion
         return "";
       },

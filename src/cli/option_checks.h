@@ -9,14 +9,16 @@
 #include <vector>
 
 #include "model/leg_parameters.h"
+#include "study/run_arguments.h"
 
 namespace swingsim::cli {
 
 /// A finite number; `check(value)` returns "" if it is usable, else what was expected
 /// ("expected a relative accuracy in [1e-14, 0.01]").
 CLI::Validator finiteNumber(std::function<std::string(double)> check = {});
-/// A whole number from `min` to `max`; `expected` says what is wanted.
-CLI::Validator wholeNumberFrom(int min, const std::string& expected, int max = 1000000000);
+/// A whole number in `range` (study/run_arguments.h, the ranges Python checks too); a
+/// refusal says range.expected.
+CLI::Validator wholeNumberIn(const WholeNumberRange& range);
 /// One of `keys`.
 CLI::Validator oneOf(const std::vector<std::string>& keys);
 

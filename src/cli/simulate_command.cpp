@@ -214,7 +214,7 @@ Command addSimulateCommand(CLI::App& app) {
   sub->add_option("PARTICIPANT.yaml", a->participant, "participant file")->required()->type_name("");
   sub->add_option("--lowering", a->lowering, "knee-axis lowering below the standard location, m (default 0)")
       ->type_name("M")
-      ->check(finiteNumber());
+      ->check(finiteNumber(checkLowering));
   sub->add_option_function<std::string>("--knee", [a](const std::string& v) { a->knee = v; },
                                         "knee model YAML (default: the participant's knee_model)")
       ->type_name("MODEL.yaml");

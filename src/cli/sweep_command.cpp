@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "study/cohort_study.h"
 #include "study/cohort_sweep_run.h"
+#include "study/run_arguments.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "study/uncertainty_swings_file.h"
@@ -70,13 +71,8 @@ int runSweepCommand(const SweepArguments& a) {
     study.addedMasses = {0.0, a.added->mass};
     study.addedMassDistances = {a.added->distanceBelowKnee};
   }
-  if (a.uncertaintySamples) study.uncertaintySamples = *a.uncertaintySamples;
-  if (a.seed) {
-    if (study.uncertaintySamples == 0)
-      throw InputError("--seed: sets the seed of the uncertainty analysis, which needs --uncertainty N or an "
-                       "`uncertainty:` map in " + study.path + " (got --seed " + std::to_string(*a.seed) + " alone)");
-    study.uncertaintySeed = *a.seed;
-  }
+  applyUncertaintyArguments(study, a.uncertaintySamples, a.seed,
+                            {"--seed", "--uncertainty N", "--seed " + std::to_string(a.seed.value_or(0))});
   if (a.shard && study.uncertaintySamples == 0)
     throw InputError("--shard: shards the uncertainty analysis, which needs --uncertainty N or an `uncertainty:` map in " +
                      study.path + " (got --shard " + std::to_string(a.shard->index) + "/" +
@@ -104,7 +100,7 @@ Command addSweepCommand(CLI::App& app) {
   addJsonOption(sub, a->json);
   sub->add_option("--jobs", a->jobs, "worker threads, 0 = all cores (default 0)")
       ->type_name("N")
-      ->check(wholeNumberFrom(0, "expected 0 (all cores) or a positive whole number"));
+      ->check(wholeNumberIn(jobsRange()));
   sub->add_option_function<std::string>("--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
                                         "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)")
       ->type_name("KG@M")
@@ -115,11 +111,10 @@ Command addSweepCommand(CLI::App& app) {
                   "assumptions and each at both ends of its range (docs/uncertainty.md; default: the study's "
                   "uncertainty: map, else none)")
       ->type_name("N")
-      ->check(wholeNumberFrom(1, "expected a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples),
-                              kMaxUncertaintySamples));
+      ->check(wholeNumberIn(uncertaintySamplesRange()));
   sub->add_option("--seed", a->seed, "seed of the uncertainty analysis's draws (std::mt19937_64; default: the study's, else 1)")
       ->type_name("S")
-      ->check(wholeNumberFrom(0, "expected a whole number from 0"));
+      ->check(wholeNumberIn(seedRange()));
   CLI::Option* shard =
       sub->add_option_function<std::string>("--shard", [a](const std::string& v) {
            ShardSpec spec;

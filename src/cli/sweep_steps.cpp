@@ -50,7 +50,7 @@ void addMaxSwingsOption(CLI::App* sub, long long& maxSwings) {
                   "refuse a plain sweep of more swings than this (default " + std::to_string(kDefaultMaxSweepSwings) +
                       "; the count and a time estimate are printed before it starts)")
       ->type_name("N")
-      ->check(wholeNumberFrom(1, "expected a whole number of swings from 1"));
+      ->check(wholeNumberIn(maxSwingsRange()));
 }
 
 }  // namespace swingsim::cli
