@@ -9,6 +9,7 @@
 #include "report/cohort_report.h"
 #include "study/cohort_results_file.h"
 #include "study/cohort_study.h"
+#include "study/run_estimate.h"
 #include "sweep/cohort_run.h"
 
 namespace swingsim {
@@ -57,6 +58,24 @@ bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& 
   return false;
 }
 
+/// Prints the swings of participants [first, last) and a time for them; InputError above `maxSwings`.
+void announceCohortRun(const Cohort& cohort, std::size_t first, std::size_t last, std::uint64_t maxSwings, int jobs) {
+  // A calibration simulates its scan (CalibrationOptions::scanPoints, 14) and a few
+  // refinements: about 20 swings; then one swing per lowering of the participant's grid.
+  constexpr std::uint64_t kCalibrationSwings = 20;
+  constexpr double kSecondsPerSwing = 0.006;  // as a plain sweep's (announceSweepGrid)
+  std::uint64_t swings = 0;
+  for (std::size_t i = first; i < last; ++i)
+    swings += kCalibrationSwings + sweepLowerings(cohort.study, cohort.study.participants[i]).size();
+  const std::size_t people = last - first;
+  announceRunSize({"cohort " + cohort.study.name, "the cohort run", swings, "swings",
+                   std::to_string(people) + (people == 1 ? " participant" : " participants") +
+                       " x (about 20 calibration swings + their lowerings)",
+                   kSecondsPerSwing, jobs},
+                  maxSwings, cohort.study.path + ": participants",
+                  "draw fewer participants, run it in shards (--shard K/N) or coarsen the lowering grid", "--max-swings");
+}
+
 /// The report, cohort.csv, figures and --json, staged and moved into `out` together.
 int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
                        const std::string& out, const std::optional<std::string>& json,
@@ -95,6 +114,7 @@ int runCohortSweep(const CohortSweepArguments& a, const SweepRunControl& control
   std::fprintf(stderr, "%s: participants %zu to %zu of %d (seed %llu): calibration to each drawn swing time, then the "
                "lowering sweep\n", label.c_str(), file.first + 1, file.last, cohort.count,
                static_cast<unsigned long long>(cohort.seed));
+  announceCohortRun(cohort, file.first, file.last, a.maxSwings, a.jobs);  // before any work
   makeDirectories(out);
   if (!runSlice(cohort, file, path, label, a.jobs, control)) return 1;
   if (a.sharded) {
