@@ -68,7 +68,7 @@ void serialize(A& a, Cohort& c) {
 
 namespace {
 
-Cohort readCohortStudy(YamlMap& yaml, const std::string& path) {
+Cohort readCohortStudy(YamlMap& yaml, const std::string& path, const std::function<void(const Cohort&)>& beforeDrawing) {
   Cohort c;
   c.study.path = path;
   c.study.includePublishedLowerings = false;  // Table 4's lowerings belong to Burkett's four
@@ -79,6 +79,7 @@ Cohort readCohortStudy(YamlMap& yaml, const std::string& path) {
     yaml.fail("template", "expected a participant driven by a hip moment (its time scale is calibrated to each drawn "
               "swing time)", templ.path + " (drive: thigh_kinematics)");
   yaml.finish();
+  if (beforeDrawing) beforeDrawing(c);
   drawCohortParticipants(c, templ);
   for (const auto& p : c.study.participants) {
     const std::string modelPath = studyKneeModelPath(c.study, p);
@@ -98,14 +99,14 @@ bool isCohortStudyFile(const std::string& path) {
   }
 }
 
-Cohort loadCohortStudy(const std::string& path) {
+Cohort loadCohortStudy(const std::string& path, const std::function<void(const Cohort&)>& beforeDrawing) {
   YamlMap yaml = YamlMap::loadFile(path);
-  return readCohortStudy(yaml, path);
+  return readCohortStudy(yaml, path, beforeDrawing);
 }
 
 Cohort parseCohortStudy(const std::string& text, const std::string& path) {
   YamlMap yaml = YamlMap::loadString(text, path);
-  return readCohortStudy(yaml, path);
+  return readCohortStudy(yaml, path, {});
 }
 
 }  // namespace swingsim

@@ -1,5 +1,6 @@
 #include "study/cohort_sweep_run.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <tuple>
@@ -58,21 +59,28 @@ bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& 
   return false;
 }
 
-/// Prints the swings of participants [first, last) and a time for them; InputError above `maxSwings`.
-void announceCohortRun(const Cohort& cohort, std::size_t first, std::size_t last, std::uint64_t maxSwings, int jobs) {
+/// Participants [first, last) of `cohort` that this run (or shard) computes.
+std::pair<std::size_t, std::size_t> calcSlice(const Cohort& cohort, const CohortSweepArguments& a) {
+  const auto count = static_cast<std::size_t>(cohort.count);
+  return a.sharded ? calcShardSwings(count, a.shardIndex, a.shardCount) : std::make_pair(std::size_t{0}, count);
+}
+
+/// Prints the swings of this run's participants and a time for them, before any is drawn;
+/// InputError above --max-swings.
+void announceCohortRun(const Cohort& cohort, const CohortSweepArguments& a) {
   // A calibration simulates its scan (CalibrationOptions::scanPoints, 14) and a few
-  // refinements: about 20 swings; then one swing per lowering of the participant's grid.
+  // refinements: about 20 swings; then one swing per lowering of the grid (fewer where a
+  // drawn shank caps it).
   constexpr std::uint64_t kCalibrationSwings = 20;
   constexpr double kSecondsPerSwing = 0.006;  // as a plain sweep's (announceSweepGrid)
-  std::uint64_t swings = 0;
-  for (std::size_t i = first; i < last; ++i)
-    swings += kCalibrationSwings + sweepLowerings(cohort.study, cohort.study.participants[i]).size();
-  const std::size_t people = last - first;
-  announceRunSize({"cohort " + cohort.study.name, "the cohort run", swings, "swings",
+  const auto lowerings = static_cast<std::uint64_t>(std::floor(cohort.study.loweringMax / cohort.study.loweringStep + 1e-9)) + 1;
+  const auto [first, last] = calcSlice(cohort, a);
+  const std::uint64_t people = last - first;
+  announceRunSize({"cohort " + cohort.study.name, "the cohort run", people * (kCalibrationSwings + lowerings), "swings",
                    std::to_string(people) + (people == 1 ? " participant" : " participants") +
-                       " x (about 20 calibration swings + their lowerings)",
-                   kSecondsPerSwing, jobs},
-                  maxSwings, cohort.study.path + ": participants",
+                       " x (about 20 calibration swings + up to " + std::to_string(lowerings) + " lowerings)",
+                   kSecondsPerSwing, a.jobs},
+                  a.maxSwings, cohort.study.path + ": participants",
                   "draw fewer participants, run it in shards (--shard K/N) or coarsen the lowering grid", "--max-swings");
 }
 
@@ -98,15 +106,14 @@ int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipant
 }  // namespace
 
 int runCohortSweep(const CohortSweepArguments& a, const SweepRunControl& control) {
-  const Cohort cohort = loadCohortStudy(a.study);
+  const Cohort cohort = loadCohortStudy(a.study, [&a](const Cohort& c) { announceCohortRun(c, a); });  // before any work
   const std::string out = chooseSweepOutputFolder(cohort.study, a.out);
   CohortResultsFile file;
   file.run = makeCohortRunIdentity(cohort, SWINGSIM_VERSION);
   file.sharded = a.sharded;
   file.shardIndex = a.shardIndex;
   file.shardCount = a.shardCount;
-  std::tie(file.first, file.last) = a.sharded ? calcShardSwings(static_cast<std::size_t>(cohort.count), a.shardIndex, a.shardCount)
-                                              : std::make_pair(std::size_t{0}, static_cast<std::size_t>(cohort.count));
+  std::tie(file.first, file.last) = calcSlice(cohort, a);
   file.results.resize(file.last - file.first);
   const std::string path = out + "/" + (a.sharded ? cohortShardFileName(a.shardIndex, a.shardCount) : cohortPartialFileName());
   std::string label = "cohort " + cohort.study.name;
@@ -114,7 +121,6 @@ int runCohortSweep(const CohortSweepArguments& a, const SweepRunControl& control
   std::fprintf(stderr, "%s: participants %zu to %zu of %d (seed %llu): calibration to each drawn swing time, then the "
                "lowering sweep\n", label.c_str(), file.first + 1, file.last, cohort.count,
                static_cast<unsigned long long>(cohort.seed));
-  announceCohortRun(cohort, file.first, file.last, a.maxSwings, a.jobs);  // before any work
   makeDirectories(out);
   if (!runSlice(cohort, file, path, label, a.jobs, control)) return 1;
   if (a.sharded) {
