@@ -259,20 +259,30 @@ SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entr
   return r;
 }
 
-std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows) {
+std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows,
+                                                   const DiagnosisRowLimit* limit) {
+  const auto announce = [&](std::uint64_t rows, std::size_t records) {
+    if (limit) announceDiagnosisSize(study.name, study.path, study.plant, rows, records, *limit);
+  };
   if (study.plant == PlantKind::kCylinder) {
     const MauchCylinderParams base = loadMauchCylinder(study.baseModelPath);
     const auto minRows = static_cast<std::size_t>(MauchCylinder(base).numCoefficients()) + extraTrainRows;
     std::vector<BenchData> train, validate;
     for (const auto& r : study.train) train.push_back(readBenchCsv(r.path, minRows));
     for (const auto& r : study.validate) validate.push_back(readBenchCsv(r.path, 3));
+    std::uint64_t rows = 0;
+    for (const auto* records : {&train, &validate})
+      for (const auto& b : *records) rows += b.time.size();
+    announce(rows, train.size() + validate.size());
     return std::make_unique<CylinderPlant>(base, std::move(train), std::move(validate), study.fitSwitches,
                                            study.plotSeconds);
   }
   if (study.plant == PlantKind::kSweep) {
     const SweepStudy sweep = loadSweepStudy(study.sweepStudyPath);
+    std::vector<MeasuredSwingTime> measured = readSweepTimesCsv(study.measuredPath);
+    announce(measured.size(), 1);
     // measurement_noise (ms) stands for the standard error of a row without sd_s.
-    return std::make_unique<SweepPlant>(sweep, readSweepTimesCsv(study.measuredPath), study.measuredPath,
+    return std::make_unique<SweepPlant>(sweep, std::move(measured), study.measuredPath,
                                         study.settings.measurementNoise / 1000.0);
   }
   SwingBase base;
@@ -290,6 +300,10 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
                          "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
       (entries == &study.train ? train : validate).push_back(std::move(r));
     }
+  std::uint64_t rows = 0;
+  for (const auto* records : {&train, &validate})
+    for (const auto& r : *records) rows += r.time.size();
+  announce(rows, train.size() + validate.size());
   return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
 }
 
