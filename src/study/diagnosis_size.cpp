@@ -16,8 +16,8 @@ void announceDiagnosisSize(const std::string& name, const std::string& studyPath
                            std::size_t records, const DiagnosisRowLimit& limit) {
   // Seconds per row of a whole diagnosis on one core, measured (docs/robustness.md, "Large
   // runs"): rough, as the number of fit steps depends on the data.
-  constexpr double kSecondsPerSweepRow = 0.002, kSecondsPerSwingRow = 3e-5, kSecondsPerBenchRow = 2e-6;
-  constexpr double kFitSeconds = 10;  // the fit steps themselves (a 3-record swing demo: 8 s)
+  constexpr double kSecondsPerSweepRow = 1.0, kSecondsPerSwingRow = 3e-5, kSecondsPerBenchRow = 2e-6;
+  constexpr double kFitSeconds = 10;  // the fit steps themselves (the 3-record swing demo: 8 s; the 75-row Table 4 sweep diagnosis: 150 s on a busy 2-core machine)
   const bool sweep = plant == PlantKind::kSweep, cylinder = plant == PlantKind::kCylinder;
   const std::string what = sweep      ? "a measured sweep table"
                            : cylinder ? std::to_string(records) + " bench record(s)"

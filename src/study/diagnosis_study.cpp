@@ -7,6 +7,7 @@
 #include "io/bench_csv.h"
 #include "io/knee_model_loader.h"
 #include "io/motion_columns_yaml.h"
+#include "io/moment_units_check.h"
 #include "io/motion_file.h"
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
@@ -295,6 +296,7 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
     for (const auto& entry : *entries) {
       const std::string& p = entry.path;
       SwingRecord r = readStudyRecord(study, entry, base.notes);
+      checkMomentUnits(r, base.participant.bodyMass, entry.inverseDynamicsPath.empty() ? p : entry.inverseDynamicsPath, p);
       if (study.drive == SwingDrive::kHipMoment && r.hipMoment.empty())
         throw InputError(p + ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
                          "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
