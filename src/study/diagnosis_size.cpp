@@ -16,8 +16,9 @@ void announceDiagnosisSize(const std::string& name, const std::string& studyPath
                            std::size_t records, const DiagnosisRowLimit& limit) {
   // Seconds per row of a whole diagnosis on one core, measured (docs/robustness.md, "Large
   // runs"): rough, as the number of fit steps depends on the data.
-  constexpr double kSecondsPerSweepRow = 1.0, kSecondsPerSwingRow = 3e-5, kSecondsPerBenchRow = 2e-6;
-  constexpr double kFitSeconds = 10;  // the fit steps themselves (the 3-record swing demo: 8 s; the 75-row Table 4 sweep diagnosis: 150 s on a busy 2-core machine)
+  // Swing: the 3-record demo, 831 rows, 8.1 s; sweep: Burkett's Table 4, 75 rows, 154 s (both
+  // on a busy 2-core machine); bench: a guess, not measured.
+  constexpr double kSecondsPerSweepRow = 2.0, kSecondsPerSwingRow = 0.01, kSecondsPerBenchRow = 1e-4;
   const bool sweep = plant == PlantKind::kSweep, cylinder = plant == PlantKind::kCylinder;
   const std::string what = sweep      ? "a measured sweep table"
                            : cylinder ? std::to_string(records) + " bench record(s)"
@@ -25,7 +26,7 @@ void announceDiagnosisSize(const std::string& name, const std::string& studyPath
   const std::string shrink = sweep ? "give fewer rows (one per participant and lowering, averaged over trials)"
                                    : "resample the records more coarsely (resample_s) or give fewer or shorter ones";
   announceRunSize({"diagnose " + name, "the diagnosis", rows, "rows", what,
-                   sweep ? kSecondsPerSweepRow : cylinder ? kSecondsPerBenchRow : kSecondsPerSwingRow, 1, kFitSeconds},
+                   sweep ? kSecondsPerSweepRow : cylinder ? kSecondsPerBenchRow : kSecondsPerSwingRow, 1},
                   limit.maxRows ? limit.maxRows : getDefaultMaxDiagnosisRows(plant), studyPath, shrink, "--max-rows");
 }
 

@@ -12,10 +12,11 @@
 namespace swingsim {
 
 /// The most rows a diagnosis runs on unless `diagnose --max-rows N` raises it, per plant:
-/// swing records (samples, about 500 a swing at 1 kHz), a measured sweep table (one
-/// simulated swing per row and fit step; Burkett's Table 4 has 75) and bench records.
-constexpr std::uint64_t kDefaultMaxSwingDiagnosisRows = 100000;
-constexpr std::uint64_t kDefaultMaxSweepDiagnosisRows = 2000;
+/// swing records (samples, about 500 a swing at 1 kHz: about 3 min), a measured sweep table
+/// (simulated swings per row and fit step; Burkett's Table 4 has 75: about 17 min) and bench
+/// records (the CSV reader's own limit).
+constexpr std::uint64_t kDefaultMaxSwingDiagnosisRows = 20000;
+constexpr std::uint64_t kDefaultMaxSweepDiagnosisRows = 500;
 constexpr std::uint64_t kDefaultMaxCylinderDiagnosisRows = 2000000;
 
 /// How a command bounds a diagnosis.

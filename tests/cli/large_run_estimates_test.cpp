@@ -75,7 +75,7 @@ TEST(LargeRunEstimates, ACohortShardIsHeldToMaxSwings) {
 
 TEST(LargeRunEstimates, ALongSwingRecordIsCountedAfterReadingAndRefusedBeforeTheFit) {
   const fs::path dir = freshTempDir(kSuite, "long-record");
-  // 0.3 s of swing sampled every 2 us: 150,001 rows, above the default 100,000.
+  // 0.3 s of swing sampled every 2 us: 150,001 rows, above the default 20,000.
   const fs::path record = dir / "long.csv";
   {
     std::ofstream csv(record);
@@ -91,7 +91,7 @@ TEST(LargeRunEstimates, ALongSwingRecordIsCountedAfterReadingAndRefusedBeforeThe
   EXPECT_THAT(run.output, HasSubstr("diagnose long-record: "));
   EXPECT_THAT(run.output, HasSubstr("the diagnosis has "));
   EXPECT_THAT(run.output, HasSubstr("3 swing record(s), after any resample_s"));
-  EXPECT_THAT(run.output, HasSubstr("more than the limit of 100000"));
+  EXPECT_THAT(run.output, HasSubstr("more than the limit of 20000"));
   EXPECT_THAT(run.output, HasSubstr("or raise the limit with --max-rows "));
   EXPECT_FALSE(fs::exists(out));
 }
