@@ -26,7 +26,7 @@ void announceRunSize(const RunSize& size, std::uint64_t limit, const std::string
   const std::uint64_t asked = size.jobs > 0 ? static_cast<std::uint64_t>(size.jobs) : cores;
   const double threads = static_cast<double>(std::max<std::uint64_t>(1, std::min(asked, size.count)));
   const std::string estimate =
-      formatEstimate((size.fixedSeconds + static_cast<double>(size.count) * size.secondsPerUnit) / std::min(threads, static_cast<double>(cores)));
+      formatEstimate(static_cast<double>(size.count) * size.secondsPerUnit / std::min(threads, static_cast<double>(cores)));
   std::fprintf(stderr, "%s: %llu %s (%s), about %s on %d threads\n", size.label.c_str(),
                static_cast<unsigned long long>(size.count), size.unit.c_str(), size.detail.c_str(), estimate.c_str(),
                static_cast<int>(threads));

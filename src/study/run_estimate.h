@@ -16,7 +16,6 @@ struct RunSize {
   std::string detail;           ///< "3 participants, no added mass"
   double secondsPerUnit = 0;    ///< s on one core, measured (a rough estimate)
   int jobs = 1;                 ///< worker threads, 0 = all cores
-  double fixedSeconds = 0;      ///< s on one core whatever the count (a diagnosis's fit steps)
 };
 
 /// "N s", "N min" or "N hours": a rough run time for the terminal.
