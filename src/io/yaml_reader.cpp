@@ -212,7 +212,7 @@ double YamlMap::toDouble(const YAML::Node& n, const std::string& key) const {
     fail(key, "expected a number", "'" + s + "'");
   }
   if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1)) fail(key, "expected a finite number", "'" + s + "'");
-  if (v != 0 && std::fabs(v) < kSmallestMagnitude) fail(key, kTooSmallMessage, "'" + s + "'");
+  if ((v != 0 || errno == ERANGE) && std::fabs(v) < kSmallestMagnitude) fail(key, kTooSmallMessage, "'" + s + "'");
   return v;
 }
 

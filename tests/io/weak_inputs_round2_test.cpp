@@ -63,6 +63,12 @@ TEST(WeakInputsRound2, ASubnormalNumberIsTooSmallNotNonFinite) {
   EXPECT_THAT(error, Not(HasSubstr("finite")));
 }
 
+TEST(WeakInputsRound2, ANumberThatUnderflowsToZeroIsTooSmallNotZero) {
+  const std::string error =
+      errorOf([&] { parseParticipant(p1With("knee_friction_Nm: 10", "knee_friction_Nm: 1e-400"), "p.yaml"); });
+  EXPECT_THAT(error, HasSubstr("p.yaml:13: knee_friction_Nm: too small"));
+}
+
 TEST(WeakInputsRound2, ASubnormalNumberInACsvIsTooSmallNotNonFinite) {
   CsvSpec spec;
   spec.required = {"a", "b"};
