@@ -16,9 +16,9 @@ void announceDiagnosisSize(const std::string& name, const std::string& studyPath
                            std::size_t records, const DiagnosisRowLimit& limit) {
   // Seconds per row of a whole diagnosis on one core, measured (docs/robustness.md, "Large
   // runs"): rough, as the number of fit steps depends on the data.
-  // Swing: the 3-record demo, 831 rows, 8.1 s; sweep: Burkett's Table 4, 75 rows, 154 s (both
+  // Swing: the 3-record demo, 828 rows, 8.1 s; sweep: Burkett's Table 4, 16 rows, 154 s (both
   // on a busy 2-core machine); bench: a guess, not measured.
-  constexpr double kSecondsPerSweepRow = 2.0, kSecondsPerSwingRow = 0.01, kSecondsPerBenchRow = 1e-4;
+  constexpr double kSecondsPerSweepRow = 10.0, kSecondsPerSwingRow = 0.01, kSecondsPerBenchRow = 1e-4;
   const bool sweep = plant == PlantKind::kSweep, cylinder = plant == PlantKind::kCylinder;
   const std::string what = sweep      ? "a measured sweep table"
                            : cylinder ? std::to_string(records) + " bench record(s)"

@@ -13,10 +13,10 @@ namespace swingsim {
 
 /// The most rows a diagnosis runs on unless `diagnose --max-rows N` raises it, per plant:
 /// swing records (samples, about 500 a swing at 1 kHz: about 3 min), a measured sweep table
-/// (simulated swings per row and fit step; Burkett's Table 4 has 75: about 17 min) and bench
+/// (simulated swings per row and fit step; Burkett's Table 4 has 16: about 17 min) and bench
 /// records (the CSV reader's own limit).
 constexpr std::uint64_t kDefaultMaxSwingDiagnosisRows = 20000;
-constexpr std::uint64_t kDefaultMaxSweepDiagnosisRows = 500;
+constexpr std::uint64_t kDefaultMaxSweepDiagnosisRows = 100;
 constexpr std::uint64_t kDefaultMaxCylinderDiagnosisRows = 2000000;
 
 /// How a command bounds a diagnosis.
