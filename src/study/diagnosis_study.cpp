@@ -39,13 +39,14 @@ void serialize(A& a, EffectSelectionSettings& st) {
   a.optionalNumber("whiteness_lags", lags, [](double v) { return v == std::floor(v) ? inRange(v, 1, 1000, "must be 1 to 1000") : "must be 1 to 1000"; });
   st.maxEffects = static_cast<int>(maxEffects);
   st.whitenessLags = static_cast<int>(lags);
-  // 0 is the internal "not set" (estimate it); written in the file it would mean no noise,
-  // which makes the likelihood singular.
-  a.optionalNumber("measurement_noise", st.measurementNoise, [](double v) {
-    return v > 0 ? std::string()
-                 : "expected a positive noise: 0 noise makes the likelihood singular; leave measurement_noise out to "
-                   "estimate it from the data";
-  });
+  // 0 is the internal "not set" (estimate it), not written; in a file it would mean no
+  // noise, which makes the likelihood singular.
+  if (A::kReading || st.measurementNoise > 0)
+    a.optionalNumber("measurement_noise", st.measurementNoise, [](double v) {
+      return v > 0 ? std::string()
+                   : "expected a positive noise: 0 noise makes the likelihood singular; leave measurement_noise out to "
+                     "estimate it from the data";
+    });
   a.optionalNumber("explained_noise_ratio", st.explainedNoiseRatio, [](double v) { return inRange(v, 1, 10, "must be in [1, 10]"); });
 }
 
