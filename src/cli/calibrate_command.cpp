@@ -42,6 +42,7 @@ int runCalibrate(const CalibrateArguments& a) {
   for (const std::string& path : a.participants) {
     const Participant loaded = loadParticipant(path);
     const Participant& p = loaded;
+    checkCalibratable(p);  // before advice on the target, which could not help
     double target = 0;
     if (a.target) {
       target = *a.target;

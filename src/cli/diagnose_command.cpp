@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/option_checks.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
@@ -25,6 +26,7 @@ namespace {
 struct DiagnoseArguments {
   std::string study;
   std::optional<std::string> out, json, saveModel;
+  long long maxRows = 0;  ///< --max-rows; 0: the plant's default limit
 };
 
 // The work: read the study, diagnose, print, write the report, the JSON and the model.
@@ -36,7 +38,8 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   outputs.push_back({"--json", args.json.value_or("")});
   outputs.push_back({"--save-model", args.saveModel.value_or("")});
   checkOutputsAreNotInputs({{"STUDY.yaml", args.study}, {"STUDY.yaml: base_model", study.baseModelPath}}, outputs);
-  const auto plant = loadDiagnosisPlant(study, 8);
+  const DiagnosisRowLimit limit{static_cast<std::uint64_t>(args.maxRows)};
+  const auto plant = loadDiagnosisPlant(study, 8, &limit);  // prints its size, refuses one above the limit
 
   // A bar per step of the forward selection (candidates scored), on stderr, once the run has
   // taken a second (a bench diagnosis ends before that and prints nothing).
@@ -108,6 +111,14 @@ Command addDiagnoseCommand(CLI::App& app) {
                 "write the diagnosed model here (knee model YAML; the swing also writes "
                 "FILE-participant.yaml); only when the data are explained (default: not saved)",
                 "FILE");
+  sub->add_option("--max-rows", a->maxRows,
+                  "refuse a diagnosis of more rows of measured data than this (after any resample_s; default " +
+                      std::to_string(kDefaultMaxSwingDiagnosisRows) + " for swing records, " +
+                      std::to_string(kDefaultMaxSweepDiagnosisRows) + " for a measured sweep table, " +
+                      std::to_string(kDefaultMaxCylinderDiagnosisRows) +
+                      " for bench records; the count and a time estimate are printed before the fit)")
+      ->type_name("N")
+      ->check(wholeNumberFrom(1, "expected a whole number of rows from 1"));
   return {sub, [a, sub] { return runDiagnose(*a, formatCommandLine(*sub)); }};
 }
 

@@ -63,7 +63,7 @@ int runSweepCommand(const SweepArguments& a) {
                        "seed draws its participants), found " + (a.added ? "--add-mass" : a.seed ? "--seed" : "--uncertainty"));
     InterruptScope interrupts;
     return runCohortSweep({a.study, a.out, a.json, a.jobs, a.shard.has_value(), a.shard ? a.shard->index : 0,
-                           a.shard ? a.shard->count : 1},
+                           a.shard ? a.shard->count : 1, static_cast<std::uint64_t>(a.maxSwings)},
                           makeTerminalControl());
   }
   SweepStudy study = loadSweepStudy(a.study);

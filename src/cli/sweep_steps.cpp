@@ -47,7 +47,7 @@ SweepRunControl makeTerminalControl() {
 
 void addMaxSwingsOption(CLI::App* sub, long long& maxSwings) {
   sub->add_option("--max-swings", maxSwings,
-                  "refuse a plain sweep of more swings than this (default " + std::to_string(kDefaultMaxSweepSwings) +
+                  "refuse a plain sweep, or a cohort run or shard, of more swings than this (default " + std::to_string(kDefaultMaxSweepSwings) +
                       "; the count and a time estimate are printed before it starts)")
       ->type_name("N")
       ->check(wholeNumberIn(maxSwingsRange()));

@@ -23,6 +23,11 @@ std::string checkPlausible(double value, const PlausibleRange& range, const std:
 /// Force on a bench (N): a 150 N m stance knee moment on a 2 cm lever is 7.5 kN.
 constexpr PlausibleRange kForceRange{-1e5, 1e5, "N",
                                      "a knee cylinder carries at most a few kN (150 N m on a 2 cm lever is 7.5 kN)"};
+/// Smallest nonzero magnitude of any number read from a file: below lie the subnormals
+/// (1e-320 is finite, but its products underflow to 0); no quantity of ours comes near it.
+constexpr double kSmallestMagnitude = 1e-300;
+/// The message for a nonzero number below kSmallestMagnitude.
+constexpr const char* kTooSmallMessage = "too small: expected 0 or a magnitude of at least 1e-300 (this is below 1e-300)";
 /// Sample time (s) in a record: a lab clock of months at most.
 constexpr PlausibleRange kRecordTimeRange{-1e7, 1e7, "s", "a record's clock runs for months at most"};
 /// Least step between samples (s): 1 MHz, past any motion capture (<= 2 kHz) or bench DAQ.
@@ -50,6 +55,9 @@ constexpr PlausibleRange kPhaseDurationRange{0.01, 10, "s", "a swing lasts 0.3-0
 /// 2014's fitted phases (models/) have 500-17,700 N s/m.
 constexpr PlausibleRange kCylinderDampingRange{0, 1e6, "N s/m",
                                                "a hydraulic cylinder dissipates, and fitted phases have 500-17,700 N s/m"};
+/// Piston position of a Mauch cylinder (m), e.g. where hyperextension starts: the stroke is a
+/// few centimetres (Chien et al. measured xhy = 0.005 cm).
+constexpr PlausibleRange kCylinderPositionRange{-0.1, 0.1, "m", "a knee cylinder's piston travels a few centimetres"};
 /// Stiffness of a Mauch cylinder phase (N/m): the fitted phases (models/) have 2,500-563,000 N/m.
 constexpr PlausibleRange kCylinderStiffnessRange{-1e7, 1e7, "N/m", "fitted phases have 2,500-563,000 N/m"};
 /// A swing time in a results file (s): no swing outlasts its participant's time_limit_s,

@@ -187,7 +187,8 @@ double readNumber(const std::string& s, const std::string& column, const ColumnT
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   if (s.empty() || end != s.c_str() + s.size()) throw InputError(at + column + ": expected a number (got '" + s + "')");
-  if (!std::isfinite(v) || errno == ERANGE) throw InputError(at + column + ": expected a finite number (got '" + s + "')");
+  if (!std::isfinite(v)) throw InputError(at + column + ": expected a finite number (got '" + s + "')");
+  if ((v != 0 || errno == ERANGE) && std::fabs(v) < kSmallestMagnitude) throw InputError(at + column + ": " + kTooSmallMessage + " (got '" + s + "')");
   if (target.range)
     if (const std::string bad = checkPlausible(v, target.range->range, target.range->what); !bad.empty())
       throw InputError(at + column + ": " + bad + " (got " + s + ")");

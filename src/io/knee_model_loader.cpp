@@ -76,7 +76,8 @@ template <class A>
 void serialize(A& a, MauchCylinderParams& p, SwitchesOf) {
   a.number("velocity_width_m_per_s", p.switches.velocityWidth, mustBePositive);
   a.number("position_width_m", p.switches.positionWidth, mustBePositive);
-  a.number("hyperextension_position_m", p.switches.hyperextensionPosition);
+  a.number("hyperextension_position_m", p.switches.hyperextensionPosition,
+           mustBePlausible(kCylinderPositionRange, "a piston position"));
   a.number("latch_rate_per_s", p.switches.latchRate, mustBePositive);
   a.optionalNumber("initial_latch", p.initialLatch, [](double v) { return v >= 0 && v <= 1 ? "" : "must be in [0, 1]"; });
 }

@@ -187,8 +187,9 @@ double parseCell(const MotionTable& table, std::size_t c, const std::string& s, 
   const double v = std::strtod(s.c_str(), &end);
   if (end != s.c_str() + s.size())
     throw InputError(where + table.labels[c] + ": expected a number (got '" + s + "')");
-  if (!std::isfinite(v) || errno == ERANGE)
-    throw InputError(where + table.labels[c] + ": expected a finite number (got '" + s + "')");
+  if (!std::isfinite(v)) throw InputError(where + table.labels[c] + ": expected a finite number (got '" + s + "')");
+  if ((v != 0 || errno == ERANGE) && std::fabs(v) < kSmallestMagnitude)
+    throw InputError(where + table.labels[c] + ": " + kTooSmallMessage + " (got '" + s + "')");
   if (c == 0 && !time.empty() && !(v > time.back()))
     throw InputError(where + "time: must strictly increase (got " + s + " after " + formatNumber(time.back()) + ")");
   if (c == 0 && !time.empty() && v - time.back() < kMinSampleStep)

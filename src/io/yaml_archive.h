@@ -67,7 +67,7 @@ class YamlReadArchive {
   void text(const char* key, std::string& v) { v = map_.getString(key); }
   void optionalText(const char* key, std::string& v) { v = map_.getString(key, v); }
   /// A path in the file, relative to the file's folder; resolved on reading.
-  void path(const char* key, std::string& v) { v = map_.resolvePath(map_.getString(key)); }
+  void path(const char* key, std::string& v) { v = map_.resolvePath(map_.getString(key), key); }
   void numbers(const char* key, std::vector<double>& v) { v = map_.getDoubleList(key); }
   /// A list of angles: radians in `v`, degrees in the file.
   void angles(const char* key, std::vector<double>& v) {
@@ -78,7 +78,7 @@ class YamlReadArchive {
   /// A list of paths, each resolved against the file's folder.
   void paths(const char* key, std::vector<std::string>& v) {
     v.clear();
-    for (const auto& p : map_.getStringList(key)) v.push_back(map_.resolvePath(p));
+    for (const auto& p : map_.getStringList(key)) v.push_back(map_.resolvePath(p, key));
   }
   /// An enum written as one of `names` (same order as `values`); `optional`: `v` holds its
   /// default on entry.
@@ -133,7 +133,7 @@ class YamlReadArchive {
     for (auto& item : map_.getTextOrMapList(key)) {
       v.emplace_back();
       if (!item.map) {
-        v.back().*path = map_.resolvePath(item.text);
+        v.back().*path = map_.resolvePath(item.text, key);
         continue;
       }
       YamlReadArchive a(*item.map);

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "core/output_files.h"
+#include "core/plausible_ranges.h"
 
 namespace swingsim {
 
@@ -57,12 +59,14 @@ class NodeCounter final : public YAML::EventHandler {
   }
   void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
     count(mark);
+    enter(mark);
   }
-  void OnSequenceEnd() override {}
+  void OnSequenceEnd() override { --depth_; }
   void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
     count(mark);
+    enter(mark);
   }
-  void OnMapEnd() override {}
+  void OnMapEnd() override { --depth_; }
 
  private:
   void count(const YAML::Mark& mark) {
@@ -72,8 +76,15 @@ class NodeCounter final : public YAML::EventHandler {
                        "is a long list, perhaps under a misspelt key, pasted in by mistake?)");
     }
   }
+  // Refused here, as the parser descends, before yaml-cpp's own recursion limit answers "bad file".
+  void enter(const YAML::Mark& mark) {
+    if (++depth_ > kMaxYamlDepth)
+      throw InputError(path_ + ":" + std::to_string(mark.line + 1) + ": values nested more than " +
+                       std::to_string(kMaxYamlDepth) + " levels deep (the limit; our files nest 4 levels at most)");
+  }
   const std::string& path_;
   long count_ = 0;
+  int depth_ = 0;
   int documents_ = 0;
 };
 
@@ -96,6 +107,10 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, long& 
     std::set<std::string> seen;
     for (const auto& kv : node) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "";
+      // yaml-cpp 0.7 reads `<<: *base` as a key named "<<", not as a merge.
+      if (key == "<<" && kv.first.Tag() != "!")
+        throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) +
+                         ": <<: YAML merge keys are not supported (write the merged keys out in this mapping)");
       if (!seen.insert(key).second) {
         throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) + ": " +
                          key + ": key appears twice in the same mapping");
@@ -196,7 +211,8 @@ double YamlMap::toDouble(const YAML::Node& n, const std::string& key) const {
       fail(key, "expected a number with a decimal point, not a comma", "'" + s + "'");
     fail(key, "expected a number", "'" + s + "'");
   }
-  if (!std::isfinite(v) || errno == ERANGE) fail(key, "expected a finite number", "'" + s + "'");
+  if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1)) fail(key, "expected a finite number", "'" + s + "'");
+  if ((v != 0 || errno == ERANGE) && std::fabs(v) < kSmallestMagnitude) fail(key, kTooSmallMessage, "'" + s + "'");
   return v;
 }
 
@@ -348,8 +364,16 @@ std::string YamlMap::directory() const {
   return slash == std::string::npos ? std::string(".") : path_.substr(0, slash);
 }
 
-std::string YamlMap::resolvePath(const std::string& relative) const {
+std::string YamlMap::resolvePath(const std::string& relative, const std::string& key) const {
   if (!relative.empty() && relative[0] == '/') return relative;
+  // Process substitution (`swingsim simulate <(cat p.yaml)`) reads /dev/fd/63, a pipe:
+  // "next to it" would be /dev/fd/, which holds no model files.
+  std::error_code ec;
+  const auto type = std::filesystem::status(path_, ec).type();
+  if (type == std::filesystem::file_type::fifo || type == std::filesystem::file_type::character ||
+      type == std::filesystem::file_type::socket || path_.rfind("/dev/fd/", 0) == 0 || path_.rfind("/proc/", 0) == 0)
+    throw InputError(where(key) + "relative path '" + relative + "' cannot be resolved next to " + path_ +
+                     " (a pipe); give an absolute path or a file");
   return directory() + "/" + relative;
 }
 

@@ -70,8 +70,10 @@ class YamlMap {
   const std::string& path() const { return path_; }
   /// Directory of the file, for resolving relative paths in it.
   std::string directory() const;
-  /// Resolves `relative` against the file's directory (absolute paths pass through).
-  std::string resolvePath(const std::string& relative) const;
+  /// Resolves `relative`, the value of `key`, against the file's directory (absolute paths
+  /// pass through). InputError naming `key` if the file is a pipe (`<(cat file)` is
+  /// /dev/fd/63): it has no directory to resolve against.
+  std::string resolvePath(const std::string& relative, const std::string& key = "") const;
   /// Line (1-based) of `key` in the file, or of the map itself.
   int lineOf(const std::string& key) const;
 

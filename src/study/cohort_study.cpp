@@ -81,7 +81,7 @@ void drawCheckedParticipants(Cohort& c, const Participant& templ, const YamlMap&
   }
 }
 
-Cohort readCohortStudy(YamlMap& yaml, const std::string& path) {
+Cohort readCohortStudy(YamlMap& yaml, const std::string& path, const std::function<void(const Cohort&)>& beforeDrawing) {
   Cohort c;
   c.study.path = path;
   c.study.includePublishedLowerings = false;  // Table 4's lowerings belong to Burkett's four
@@ -92,6 +92,7 @@ Cohort readCohortStudy(YamlMap& yaml, const std::string& path) {
     yaml.fail("template", "expected a participant driven by a hip moment (its time scale is calibrated to each drawn "
               "swing time)", templ.path + " (drive: thigh_kinematics)");
   yaml.finish();
+  if (beforeDrawing) beforeDrawing(c);
   drawCheckedParticipants(c, templ, yaml);
   for (const auto& p : c.study.participants) {
     const std::string modelPath = studyKneeModelPath(c.study, p);
@@ -111,14 +112,14 @@ bool isCohortStudyFile(const std::string& path) {
   }
 }
 
-Cohort loadCohortStudy(const std::string& path) {
+Cohort loadCohortStudy(const std::string& path, const std::function<void(const Cohort&)>& beforeDrawing) {
   YamlMap yaml = YamlMap::loadFile(path);
-  return readCohortStudy(yaml, path);
+  return readCohortStudy(yaml, path, beforeDrawing);
 }
 
 Cohort parseCohortStudy(const std::string& text, const std::string& path) {
   YamlMap yaml = YamlMap::loadString(text, path);
-  return readCohortStudy(yaml, path);
+  return readCohortStudy(yaml, path, {});
 }
 
 }  // namespace swingsim

@@ -1,5 +1,6 @@
 #include "study/cohort_sweep_run.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <tuple>
@@ -9,6 +10,7 @@
 #include "report/cohort_report.h"
 #include "study/cohort_results_file.h"
 #include "study/cohort_study.h"
+#include "study/run_estimate.h"
 #include "sweep/cohort_run.h"
 
 namespace swingsim {
@@ -57,6 +59,31 @@ bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& 
   return false;
 }
 
+/// Participants [first, last) of `cohort` that this run (or shard) computes.
+std::pair<std::size_t, std::size_t> calcSlice(const Cohort& cohort, const CohortSweepArguments& a) {
+  const auto count = static_cast<std::size_t>(cohort.count);
+  return a.sharded ? calcShardSwings(count, a.shardIndex, a.shardCount) : std::make_pair(std::size_t{0}, count);
+}
+
+/// Prints the swings of this run's participants and a time for them, before any is drawn;
+/// InputError above --max-swings.
+void announceCohortRun(const Cohort& cohort, const CohortSweepArguments& a) {
+  // A calibration simulates its scan (CalibrationOptions::scanPoints, 14) and a few
+  // refinements: about 20 swings; then one swing per lowering of the grid (fewer where a
+  // drawn shank caps it).
+  constexpr std::uint64_t kCalibrationSwings = 20;
+  constexpr double kSecondsPerSwing = 0.006;  // as a plain sweep's (announceSweepGrid)
+  const auto lowerings = static_cast<std::uint64_t>(std::floor(cohort.study.loweringMax / cohort.study.loweringStep + 1e-9)) + 1;
+  const auto [first, last] = calcSlice(cohort, a);
+  const std::uint64_t people = last - first;
+  announceRunSize({"cohort " + cohort.study.name, "the cohort run", people * (kCalibrationSwings + lowerings), "swings",
+                   std::to_string(people) + (people == 1 ? " participant" : " participants") +
+                       " x (about 20 calibration swings + up to " + std::to_string(lowerings) + " lowerings)",
+                   kSecondsPerSwing, a.jobs},
+                  a.maxSwings, cohort.study.path + ": participants",
+                  "draw fewer participants, run it in shards (--shard K/N) or coarsen the lowering grid", "--max-swings");
+}
+
 /// The report, cohort.csv, figures and --json, staged and moved into `out` together.
 int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
                        const std::string& out, const std::optional<std::string>& json,
@@ -79,15 +106,14 @@ int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipant
 }  // namespace
 
 int runCohortSweep(const CohortSweepArguments& a, const SweepRunControl& control) {
-  const Cohort cohort = loadCohortStudy(a.study);
+  const Cohort cohort = loadCohortStudy(a.study, [&a](const Cohort& c) { announceCohortRun(c, a); });  // before any work
   const std::string out = chooseSweepOutputFolder(cohort.study, a.out);
   CohortResultsFile file;
   file.run = makeCohortRunIdentity(cohort, SWINGSIM_VERSION);
   file.sharded = a.sharded;
   file.shardIndex = a.shardIndex;
   file.shardCount = a.shardCount;
-  std::tie(file.first, file.last) = a.sharded ? calcShardSwings(static_cast<std::size_t>(cohort.count), a.shardIndex, a.shardCount)
-                                              : std::make_pair(std::size_t{0}, static_cast<std::size_t>(cohort.count));
+  std::tie(file.first, file.last) = calcSlice(cohort, a);
   file.results.resize(file.last - file.first);
   const std::string path = out + "/" + (a.sharded ? cohortShardFileName(a.shardIndex, a.shardCount) : cohortPartialFileName());
   std::string label = "cohort " + cohort.study.name;

@@ -4,6 +4,7 @@
 // whole run (resumable from cohort.partial.json), one shard of it (`--shard K/N`, resumable
 // from its shard file), and the merge of the shards into the report and JSON one run writes.
 // The caller's side (terminal, Ctrl-C) is a SweepRunControl, as for a knee-axis sweep.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@ struct CohortSweepArguments {
   int jobs = 0;  ///< worker threads, 0 = all cores
   bool sharded = false;
   int shardIndex = 0, shardCount = 1;  ///< `--shard K/N`
+  std::uint64_t maxSwings = kDefaultMaxSweepSwings;  ///< `--max-swings`: the most swings this run (or shard) may have
 };
 
 /// Runs the cohort study (or its shard). Returns the exit code.

@@ -7,6 +7,7 @@
 #include "io/bench_csv.h"
 #include "io/knee_model_loader.h"
 #include "io/motion_columns_yaml.h"
+#include "io/moment_units_check.h"
 #include "io/motion_file.h"
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
@@ -38,7 +39,14 @@ void serialize(A& a, EffectSelectionSettings& st) {
   a.optionalNumber("whiteness_lags", lags, [](double v) { return v == std::floor(v) ? inRange(v, 1, 1000, "must be 1 to 1000") : "must be 1 to 1000"; });
   st.maxEffects = static_cast<int>(maxEffects);
   st.whitenessLags = static_cast<int>(lags);
-  a.optionalNumber("measurement_noise", st.measurementNoise, mustBeNonNegative);
+  // 0 is the internal "not set" (estimate it), not written; in a file it would mean no
+  // noise, which makes the likelihood singular.
+  if (A::kReading || st.measurementNoise > 0)
+    a.optionalNumber("measurement_noise", st.measurementNoise, [](double v) {
+      return v > 0 ? std::string()
+                   : "expected a positive noise: 0 noise makes the likelihood singular; leave measurement_noise out to "
+                     "estimate it from the data";
+    });
   a.optionalNumber("explained_noise_ratio", st.explainedNoiseRatio, [](double v) { return inRange(v, 1, 10, "must be in [1, 10]"); });
 }
 
@@ -253,20 +261,30 @@ SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entr
   return r;
 }
 
-std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows) {
+std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows,
+                                                   const DiagnosisRowLimit* limit) {
+  const auto announce = [&](std::uint64_t rows, std::size_t records) {
+    if (limit) announceDiagnosisSize(study.name, study.path, study.plant, rows, records, *limit);
+  };
   if (study.plant == PlantKind::kCylinder) {
     const MauchCylinderParams base = loadMauchCylinder(study.baseModelPath);
     const auto minRows = static_cast<std::size_t>(MauchCylinder(base).numCoefficients()) + extraTrainRows;
     std::vector<BenchData> train, validate;
     for (const auto& r : study.train) train.push_back(readBenchCsv(r.path, minRows));
     for (const auto& r : study.validate) validate.push_back(readBenchCsv(r.path, 3));
+    std::uint64_t rows = 0;
+    for (const auto* records : {&train, &validate})
+      for (const auto& b : *records) rows += b.time.size();
+    announce(rows, train.size() + validate.size());
     return std::make_unique<CylinderPlant>(base, std::move(train), std::move(validate), study.fitSwitches,
                                            study.plotSeconds);
   }
   if (study.plant == PlantKind::kSweep) {
     const SweepStudy sweep = loadSweepStudy(study.sweepStudyPath);
+    std::vector<MeasuredSwingTime> measured = readSweepTimesCsv(study.measuredPath);
+    announce(measured.size(), 1);
     // measurement_noise (ms) stands for the standard error of a row without sd_s.
-    return std::make_unique<SweepPlant>(sweep, readSweepTimesCsv(study.measuredPath), study.measuredPath,
+    return std::make_unique<SweepPlant>(sweep, std::move(measured), study.measuredPath,
                                         study.settings.measurementNoise / 1000.0);
   }
   SwingBase base;
@@ -279,11 +297,16 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
     for (const auto& entry : *entries) {
       const std::string& p = entry.path;
       SwingRecord r = readStudyRecord(study, entry, base.notes);
+      checkMomentUnits(r, base.participant.bodyMass, entry.inverseDynamicsPath.empty() ? p : entry.inverseDynamicsPath, p);
       if (study.drive == SwingDrive::kHipMoment && r.hipMoment.empty())
         throw InputError(p + ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
                          "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
       (entries == &study.train ? train : validate).push_back(std::move(r));
     }
+  std::uint64_t rows = 0;
+  for (const auto* records : {&train, &validate})
+    for (const auto& r : *records) rows += r.time.size();
+  announce(rows, train.size() + validate.size());
   return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
 }
 

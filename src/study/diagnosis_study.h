@@ -28,6 +28,7 @@
 #include "io/motion_file.h"
 #include "io/swing_events.h"
 #include "model/leg_parameters.h"
+#include "study/diagnosis_size.h"
 
 namespace swingsim {
 
@@ -102,7 +103,9 @@ SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entr
 
 /// Reads the study's base model, participant and records and builds its plant. Each
 /// training record needs at least `extraTrainRows` rows more than the model has linear
-/// coefficients (cylinder). Throws InputError.
-std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows);
+/// coefficients (cylinder). With `limit`, the rows read are counted, printed with an estimate
+/// and held to the limit (announceDiagnosisSize) before the plant is built. Throws InputError.
+std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows,
+                                                   const DiagnosisRowLimit* limit = nullptr);
 
 }  // namespace swingsim

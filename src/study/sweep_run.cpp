@@ -12,6 +12,7 @@
 #include "core/output_paths.h"
 #include "core/progress_reporter.h"
 #include "report/sweep_report.h"
+#include "study/run_estimate.h"
 #include "sweep/measured_validation.h"
 #include "sweep/terminal_impact.h"
 
@@ -35,18 +36,6 @@ UncertaintyOptions makeUncertaintyOptions(const SweepStudy& study) {
 
 namespace {
 
-/// "N s", "N min" or "N hours": a rough run time for the terminal.
-std::string formatEstimate(double seconds) {
-  char estimate[64];
-  if (seconds < 120)
-    std::snprintf(estimate, sizeof estimate, "%.0f s", std::ceil(seconds));
-  else if (seconds < 7200)
-    std::snprintf(estimate, sizeof estimate, "%.0f min", std::ceil(seconds / 60));
-  else
-    std::snprintf(estimate, sizeof estimate, "%.3g hours", seconds / 3600);
-  return estimate;
-}
-
 /// "3 participants, no added mass" or "..., 2 added masses above 0 kg x 3 distances".
 std::string describeSweepGrid(const SweepStudy& study) {
   const std::size_t people = study.participants.size();
@@ -64,20 +53,9 @@ void announceSweepGrid(const SweepStudy& study, std::uint64_t maxSwings, int job
   // 435 swings of `swingsim sweep studies/burkett2004.yaml --jobs 1` in 2.7 s); a swing with
   // a stiff knee or a tight accuracy can take several times longer: a rough estimate.
   constexpr double kSecondsPerSwing = 0.006;
-  const std::uint64_t swings = countSweepSwings(study);
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const double threads = static_cast<double>(
-      std::max<std::uint64_t>(1, std::min<std::uint64_t>(jobs > 0 ? static_cast<std::uint64_t>(jobs) : cores, swings)));
-  const std::string estimate =
-      formatEstimate(static_cast<double>(swings) * kSecondsPerSwing / std::min(threads, static_cast<double>(cores)));
-  const std::string grid = describeSweepGrid(study);
-  std::fprintf(stderr, "sweep %s: %llu swings (%s), about %s on %d threads\n", study.name.c_str(),
-               static_cast<unsigned long long>(swings), grid.c_str(), estimate.c_str(), static_cast<int>(threads));
-  if (swings > maxSwings)
-    throw InputError(study.path + ": the sweep has " + std::to_string(swings) + " swings (" + grid + "; about " +
-                     estimate + "), more than the limit of " + std::to_string(maxSwings) +
-                     ": shorten the added_mass lists or the lowering grid, or raise the limit with --max-swings " +
-                     std::to_string(swings) + " if you mean it");
+  announceRunSize({"sweep " + study.name, "the sweep", countSweepSwings(study), "swings", describeSweepGrid(study),
+                   kSecondsPerSwing, jobs},
+                  maxSwings, study.path, "shorten the added_mass lists or the lowering grid", "--max-swings");
 }
 
 std::string chooseSweepOutputFolder(const SweepStudy& study, const std::optional<std::string>& out) {

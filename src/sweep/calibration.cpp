@@ -41,11 +41,16 @@ double table3Target(const PublishedParticipant& published, CalibrationTarget col
   return column == CalibrationTarget::kMeasured ? published.table3Measured : published.table3Model;
 }
 
+void checkCalibratable(const Participant& p) {
+  if (p.drive == SwingDrive::kThighKinematics)
+    throw InputError(p.path + ": drive: thigh_kinematics: the measured thigh drives " + p.name +
+                     "'s swing, so there is no hip moment time scale to calibrate (with any --target); calibrate a "
+                     "participant with drive: hip_moment");
+}
+
 CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, const SwingOptions& swingOptions,
                                     const CalibrationOptions& options) {
-  if (base.participant.drive == SwingDrive::kThighKinematics)
-    throw InputError(base.participant.path + ": drive: thigh_kinematics: the measured thigh drives " + base.participant.name +
-                     "'s swing, so there is no hip moment time scale to calibrate");
+  checkCalibratable(base.participant);
   SwingOptions fast = swingOptions;
   fast.recordTrajectory = false;
   SwingSetup setup = base;

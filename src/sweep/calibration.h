@@ -46,6 +46,10 @@ struct CalibrationOptions {
   double timeTolerance = 1e-5;  ///< s: stop when |swing time - target| is below this
 };
 
+/// InputError with the reason if `p` has no hip moment time scale to calibrate (its swing is
+/// driven by the measured thigh), whatever the target.
+void checkCalibratable(const Participant& p);
+
 /// Finds the scale. Throws RunError if swing time does not rise monotonically with the time scale over the
 /// scan, or the target is outside the reachable range.
 CalibrationResult calibrateHipTimeScale(const SwingSetup& setup, double targetSwingTime,
