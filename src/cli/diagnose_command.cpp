@@ -17,6 +17,7 @@
 #include "report/diagnosis_report.h"
 #include "study/diagnosed_model_writer.h"
 #include "study/diagnosis_study.h"
+#include "study/run_arguments.h"
 
 namespace swingsim::cli {
 
@@ -118,7 +119,7 @@ Command addDiagnoseCommand(CLI::App& app) {
                       std::to_string(kDefaultMaxCylinderDiagnosisRows) +
                       " for bench records; the count and a time estimate are printed before the fit)")
       ->type_name("N")
-      ->check(wholeNumberFrom(1, "expected a whole number of rows from 1"));
+      ->check(wholeNumberIn(maxRowsRange()));
   return {sub, [a, sub] { return runDiagnose(*a, formatCommandLine(*sub)); }};
 }
 

@@ -17,7 +17,7 @@ void checkPeak(const std::vector<double>& moment, double bodyMass, const std::st
   if (peak <= limit) return;
   throw InputError(path + ": " + key + ": expected a peak |moment| of at most " + formatNumber(kMaxJointMomentPerKg) +
                    " N m/kg x " + formatNumber(bodyMass) + " kg = " + formatNumber(limit) +
-                   " N m (more than a knee or hip produces even in running); it looks like N mm: divide by 1000 (got " +
+                   " N m (ten times a walking swing's peak); it looks like N mm: divide by 1000 (got " +
                    formatNumber(peak) + " N m)");
 }
 

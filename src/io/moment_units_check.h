@@ -8,10 +8,12 @@
 
 namespace swingsim {
 
-/// Largest |joint moment| per kg of body mass a record may hold, N m/kg: above the peak knee
-/// and hip moments of running (about 2-3 N m/kg in stance; a swing's stay below 0.5 N m/kg,
-/// Winter 2009 Biomechanics and Motor Control of Human Movement, ch. 5).
-constexpr double kMaxJointMomentPerKg = 4;
+/// Largest |joint moment| per kg of body mass a record may hold, N m/kg. An assumption with
+/// a wide margin, not a published limit: Winter's walking swing peaks at about 1 N m/kg
+/// (studies/data/winter-natural-cadence.csv: hip 54 N m, knee 38 N m, for the 56.7 kg
+/// assumed in docs/winter.md); running and sprinting raise swing moments several-fold, and
+/// 10 N m/kg leaves room for them, while a moment written in N mm is 1000x too large.
+constexpr double kMaxJointMomentPerKg = 10;
 
 /// InputError if the peak |knee moment| (from `kneeMomentPath`) or |hip moment| (from
 /// `hipMomentPath`) of `r` is above kMaxJointMomentPerKg x `bodyMass`: "PATH: knee_moment:

@@ -47,6 +47,11 @@ const WholeNumberRange& maxSwingsRange() {
   return range;
 }
 
+const WholeNumberRange& maxRowsRange() {
+  static const WholeNumberRange range{1, kMaxMaxSwings, "expected a whole number of rows from 1"};
+  return range;
+}
+
 std::string checkLowering(double lowering) {
   return std::isfinite(lowering) ? "" : "expected a number";
 }

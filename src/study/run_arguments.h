@@ -40,6 +40,8 @@ const WholeNumberRange& seedRange();
 const WholeNumberRange& jobsRange();
 /// --max-swings N: 1 to kMaxMaxSwings.
 const WholeNumberRange& maxSwingsRange();
+/// diagnose --max-rows N: 1 to kMaxMaxSwings rows of measured data.
+const WholeNumberRange& maxRowsRange();
 
 /// "" if `lowering` (knee-axis lowering, m) is a finite number, else what was expected; the
 /// swing set-up checks it against the leg (makeSwingSetup).

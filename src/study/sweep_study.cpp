@@ -1,5 +1,6 @@
 #include "study/sweep_study.h"
 
+#include <cstdint>
 #include <set>
 #include <string>
 
@@ -8,6 +9,7 @@
 #include "io/participant_loader.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
+#include "study/run_arguments.h"
 #include "study/sweep_study_format.h"
 #include "sweep/sweep_uncertainty.h"
 
@@ -38,14 +40,14 @@ void serialize(A& a, SweepStudy& s, AddedMassOf) {
 template <class A>
 void serialize(A& a, SweepStudy& s, UncertaintyOf) {
   a.integer("samples", s.uncertaintySamples);
-  a.require(s.uncertaintySamples >= 1 && s.uncertaintySamples <= kMaxUncertaintySamples, "samples",
-            "expected a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples),
-            [&] { return std::to_string(s.uncertaintySamples); });
+  a.require(uncertaintySamplesRange().check(static_cast<long long>(s.uncertaintySamples)).empty(), "samples",
+            uncertaintySamplesRange().expected, [&] { return std::to_string(s.uncertaintySamples); });
   bool seeded = true;
   if constexpr (A::kReading) seeded = a.has("seed");
-  if (seeded) a.integer("seed", s.uncertaintySeed);
-  a.require(s.uncertaintySeed >= 0, "seed", "expected a seed from 0 to 1000000000",
-            [&] { return std::to_string(s.uncertaintySeed); });
+  // Read as digits, not through an int, so a seed above the range is named as such.
+  auto seed = static_cast<std::uint64_t>(s.uncertaintySeed);
+  if (seeded) a.whole("seed", seed, kMaxSeed, std::to_string(kMaxSeed));
+  s.uncertaintySeed = static_cast<int>(seed);
 }
 
 template <class A>

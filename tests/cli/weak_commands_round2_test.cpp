@@ -65,7 +65,7 @@ TEST(WeakCommandsRound2, AKneeMomentInNmmIsRefusedAsSuch) {
   const auto run = runSwingsim("diagnose " + writeSwingDiagnosis(dir, record.string()).string() + " --out " +
                                (dir / "out").string());
   EXPECT_EQ(run.code, 1) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("normal-nmm.csv: knee_moment: expected a peak |moment| of at most 4 N m/kg x 70 kg"));
+  EXPECT_THAT(run.output, HasSubstr("normal-nmm.csv: knee_moment: expected a peak |moment| of at most 10 N m/kg x 70 kg"));
   EXPECT_THAT(run.output, HasSubstr("it looks like N mm"));
   EXPECT_FALSE(fs::exists(dir / "out"));
 }

@@ -80,7 +80,9 @@ TEST(SweepStudyFormat, UncertaintyMapRejectsBadKeysAndValues) {
       {"{samples: -5}", "samples: expected a whole number of samples from 1 to 100000"},
       {"{samples: 2.5}", "samples: expected an integer"},
       {"{samples: many}", "samples"},
-      {"{samples: 10, seed: -1}", "seed: expected a seed from 0 to 1000000000"},
+      {"{samples: 10, seed: -1}", "seed: expected an integer in [0, 1000000000]"},
+      {"{samples: 10, seed: 1000000001}", "seed: expected an integer in [0, 1000000000]"},
+      {"{samples: 10, seed: 2.5}", "seed: expected an integer in [0, 1000000000]"},
       {"200", "uncertainty"},
   };
   for (const Case& c : cases) {
