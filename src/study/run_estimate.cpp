@@ -27,9 +27,9 @@ void announceRunSize(const RunSize& size, std::uint64_t limit, const std::string
   const double threads = static_cast<double>(std::max<std::uint64_t>(1, std::min(asked, size.count)));
   const std::string estimate =
       formatEstimate(static_cast<double>(size.count) * size.secondsPerUnit / std::min(threads, static_cast<double>(cores)));
-  std::fprintf(stderr, "%s: %llu %s (%s), about %s on %d threads\n", size.label.c_str(),
+  std::fprintf(stderr, "%s: %llu %s (%s), about %s on %d thread%s\n", size.label.c_str(),
                static_cast<unsigned long long>(size.count), size.unit.c_str(), size.detail.c_str(), estimate.c_str(),
-               static_cast<int>(threads));
+               static_cast<int>(threads), threads == 1 ? "" : "s");
   if (size.count > limit)
     throw InputError(where + ": " + size.noun + " has " + std::to_string(size.count) + " " + size.unit + " (" +
                      size.detail + "; about " + estimate + "), more than the limit of " + std::to_string(limit) + ": " +
