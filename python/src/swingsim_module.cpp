@@ -193,7 +193,10 @@ py::object compare(const py::object& studyPath) {
 
 /// The content of `swingsim diagnose STUDY --json`: candidate effects ranked, the accepted
 /// ones, the error before and after.
-py::object diagnose(const py::object& studyPath) {
+py::object diagnose(const py::object& studyPath, const py::object& maxRowsValue) {
+  DiagnosisRowLimit limit;  // maxRows 0: the plant's default, as the CLI's diagnose
+  if (!maxRowsValue.is_none())
+    limit.maxRows = static_cast<std::uint64_t>(readWholeArgument(maxRowsValue, "diagnose(): max_rows", maxRowsRange()));
   const DiagnosisStudy study = loadDiagnosisStudy(readPathArgument(studyPath, "diagnose(): study_path"));
   // Ctrl-C: Python's signal handler runs before the next candidate is scored (on this thread),
   // and its KeyboardInterrupt ends the diagnosis; nothing is written.
@@ -205,7 +208,7 @@ py::object diagnose(const py::object& studyPath) {
   Json json;
   try {
     py::gil_scoped_release release;
-    const auto plant = loadDiagnosisPlant(study, 8);  // as the CLI's diagnose
+    const auto plant = loadDiagnosisPlant(study, 8, &limit);  // as the CLI's diagnose: size printed, limit held
     const Diagnosis dg = runDiagnosis(*plant, study.settings, checkSignals);
     json = makeDiagnoseJson(dg, plant->compare(*dg.baseline.model), plant->compare(*dg.final.model),
                             plant->compareHeldBack(*dg.baseline.model), plant->compareHeldBack(*dg.final.model));
@@ -243,5 +246,5 @@ PYBIND11_MODULE(_swingsim, m) {
         py::arg("jobs") = 0);
   m.def("fit", &python::fit, py::arg("study_path"));
   m.def("compare", &python::compare, py::arg("study_path"));
-  m.def("diagnose", &python::diagnose, py::arg("study_path"));
+  m.def("diagnose", &python::diagnose, py::arg("study_path"), py::arg("max_rows") = py::none());
 }

@@ -165,7 +165,10 @@ def compare(study_path):
     return _warn_about(_swingsim.compare(study_path))
 
 
-def diagnose(study_path):
+def diagnose(study_path, max_rows=None):
     """The diagnosis of a cylinder-diagnosis or swing-diagnosis study, as `swingsim diagnose
-    STUDY --json FILE`: returns what the JSON file holds. No report or model is written."""
-    return _warn_about(_swingsim.diagnose(study_path))
+    STUDY --json FILE`: returns what the JSON file holds. No report or model is written.
+    Its size (rows of measured data) and a time estimate are printed on stderr first; above
+    `max_rows` (default: the command line's --max-rows default for the study's kind) it is
+    refused with ValueError before any fit."""
+    return _warn_about(_swingsim.diagnose(study_path, max_rows))

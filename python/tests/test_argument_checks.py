@@ -233,3 +233,13 @@ def test_ctrl_c_during_a_diagnosis_raises_keyboard_interrupt(repo, tmp_path, mon
     monkeypatch.chdir(tmp_path)
     assert interrupted_inside(lambda: swingsim.diagnose(repo / "studies" / "diagnose-demo-cylinder.yaml"))
     assert list(tmp_path.iterdir()) == []
+
+
+def test_diagnose_is_held_to_a_row_limit_as_on_the_command_line(repo):
+    # The swing demo has 828 rows of measured data: refused below that, before any fit.
+    with pytest.raises(swingsim.InputError, match="--max-rows|max_rows|rows"):
+        swingsim.diagnose(repo / "studies" / "diagnose-demo-swing.yaml", max_rows=100)
+    with pytest.raises(TypeError, match=r"diagnose\(\): max_rows"):
+        swingsim.diagnose(repo / "studies" / "diagnose-demo-swing.yaml", max_rows=2.5)
+    with pytest.raises(swingsim.InputError, match=r"diagnose\(\): max_rows"):
+        swingsim.diagnose(repo / "studies" / "diagnose-demo-swing.yaml", max_rows=0)
