@@ -27,7 +27,7 @@ int runCompare(const CompareArguments& args) {
   const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
   std::vector<CommandFile> outputs = listFolderFiles("--out", outDir, {"report.md"});
   outputs.push_back({"--json", args.json.value_or("")});
-  checkOutputsAreNotInputs({{"STUDY.yaml", args.study}}, outputs);
+  checkOutputsAreNotInputs(listDiagnosisStudyFiles(study), outputs);
   const auto plant = loadDiagnosisPlant(study, 1);
   const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);
   for (const auto& w : plant->warnings()) std::fprintf(stderr, "swingsim compare: warning: %s\n", w.c_str());

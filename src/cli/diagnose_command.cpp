@@ -38,7 +38,7 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   std::vector<CommandFile> outputs = listFolderFiles("--out", outDir, {"report.md"});
   outputs.push_back({"--json", args.json.value_or("")});
   outputs.push_back({"--save-model", args.saveModel.value_or("")});
-  checkOutputsAreNotInputs({{"STUDY.yaml", args.study}, {"STUDY.yaml: base_model", study.baseModelPath}}, outputs);
+  checkOutputsAreNotInputs(listDiagnosisStudyFiles(study), outputs);
   const DiagnosisRowLimit limit{static_cast<std::uint64_t>(args.maxRows)};
   const auto plant = loadDiagnosisPlant(study, 8, &limit);  // prints its size, refuses one above the limit
 

@@ -52,6 +52,18 @@ struct SweepArguments {
   long long maxSwings = static_cast<long long>(kDefaultMaxSweepSwings);  ///< --max-swings
 };
 
+// The files a loaded sweep study reads (its participants and knee models) against what the
+// run writes into `out` (also the default folder) and --json: refused before any swing.
+void checkOutputsAreNotStudyFiles(const SweepStudy& study, const std::string& out, const std::optional<std::string>& json) {
+  std::vector<CommandFile> inputs = {{"STUDY.yaml", study.path}};
+  for (const Participant& p : study.participants)
+    if (!p.path.empty()) inputs.push_back({"STUDY.yaml: participant " + p.name, p.path});
+  for (const auto& [path, model] : study.kneeModels) inputs.push_back({"STUDY.yaml: a knee model", path});
+  std::vector<CommandFile> outputs = listFolderFiles("--out", out, kSweepReportFiles);
+  outputs.push_back({"--json", json.value_or("")});
+  checkOutputsAreNotInputs(inputs, outputs);
+}
+
 int runSweepCommand(const SweepArguments& a) {
   std::vector<CommandFile> outputs = listFolderFiles("--out", a.out.value_or(""), a.out ? kSweepReportFiles : std::vector<std::string>{});
   outputs.push_back({"--json", a.json.value_or("")});
@@ -78,6 +90,7 @@ int runSweepCommand(const SweepArguments& a) {
                      study.path + " (got --shard " + std::to_string(a.shard->index) + "/" +
                      std::to_string(a.shard->count) + " alone)");
   const std::string out = chooseSweepOutputFolder(study, a.out);
+  checkOutputsAreNotStudyFiles(study, out, a.json);
   if (!a.shard) announceSweepGrid(study, static_cast<std::uint64_t>(a.maxSwings), a.jobs);  // before any work
   SweepRun run(std::move(study), a.jobs, makeTerminalControl());
   run.calibrate();

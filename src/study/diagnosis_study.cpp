@@ -310,4 +310,23 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
   return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
 }
 
+std::vector<CommandFile> listDiagnosisStudyFiles(const DiagnosisStudy& study) {
+  std::vector<CommandFile> files = {{"STUDY.yaml", study.path}};
+  const auto add = [&](const std::string& key, const std::string& path) {
+    if (!path.empty()) files.push_back({"STUDY.yaml: " + key, path});
+  };
+  add("base_model", study.baseModelPath);
+  add("participant", study.participantPath);
+  add("sweep", study.sweepStudyPath);
+  add("measured", study.measuredPath);
+  if (study.grf) add("grf", study.grf->path);
+  for (const auto* set : {&study.train, &study.validate})
+    for (const StudyRecord& r : *set) {
+      const std::string which = (set == &study.train ? "train record " : "validate record ") + r.displayName();
+      add(which, r.path);
+      add(which + ": inverse_dynamics", r.inverseDynamicsPath);
+    }
+  return files;
+}
+
 }  // namespace swingsim

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "core/output_paths.h"
 #include "identify/diagnosis_engine.h"
 #include "io/motion_file.h"
 #include "io/swing_events.h"
@@ -107,5 +108,9 @@ SwingRecord readStudyRecord(const DiagnosisStudy& study, const StudyRecord& entr
 /// and held to the limit (announceDiagnosisSize) before the plant is built. Throws InputError.
 std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, std::size_t extraTrainRows,
                                                    const DiagnosisRowLimit* limit = nullptr);
+
+/// Every file the study reads, each named by the key that names it ("STUDY.yaml: base_model",
+/// "STUDY.yaml: train record NAME", ...), for checkOutputsAreNotInputs.
+std::vector<CommandFile> listDiagnosisStudyFiles(const DiagnosisStudy& study);
 
 }  // namespace swingsim

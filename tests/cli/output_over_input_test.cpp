@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "run_swingsim.h"
@@ -84,6 +85,47 @@ TEST(OutputOverInput, SweepOutFolderHoldingItsStudyAsAReportFileIsRefused) {
   EXPECT_EQ(run.code, 1) << run.output;
   EXPECT_THAT(run.output, HasSubstr("--out '" + study + "': would write over the input STUDY.yaml"));
   EXPECT_EQ(slurp(study), before);
+}
+
+TEST(OutputOverInput, SweepOutFolderHoldingAParticipantOfTheStudyAsAReportFileIsRefused) {
+  // A participant file the study names is named like the report the sweep writes into --out.
+  const fs::path dir = freshTempDir(kSuite, "sweep-participant");
+  const fs::path participant = dir / "report.md";
+  std::string p1 = slurp(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml");
+  const std::string relativeModel = "knee_model: ../models/";
+  ASSERT_NE(p1.find(relativeModel), std::string::npos);
+  p1.replace(p1.find(relativeModel), relativeModel.size(), "knee_model: " + std::string(SWINGSIM_SOURCE_DIR) + "/models/");
+  std::ofstream(participant) << p1;
+  const std::string study = writeSuiteTempFile(
+      kSuite, "sweep-participant.yaml",
+      "kind: knee-axis-sweep\nname: tiny\nparticipants:\n  - " + participant.string() +
+          "\nlowering:\n  step_m: 0.01\n  max_m: 0.01\n");
+  const std::string before = slurp(participant.string());
+  const CliRun run = runSwingsim("sweep " + study + " --out " + dir.string());
+  EXPECT_EQ(run.code, 1) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("--out '" + participant.string() + "': would write over the input STUDY.yaml: participant"));
+  EXPECT_EQ(slurp(participant.string()), before);
+}
+
+TEST(OutputOverInput, DiagnoseAndCompareJsonOntoATrainingRecordOfTheStudyAreRefused) {
+  // A copy of the cylinder demo (its records copied too), so a failing check writes over
+  // nothing of the repository.
+  const fs::path dir = freshTempDir(kSuite, "diagnose-record");
+  const std::string data = std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/diagnose-demo-cylinder/";
+  for (const char* name : {"normal.csv", "slow.csv", "fast.csv"}) fs::copy_file(data + name, dir / name);
+  const fs::path study = dir / "study.yaml";
+  std::ofstream(study) << "kind: cylinder-diagnosis\nname: copy\nbase_model: " << SWINGSIM_SOURCE_DIR
+                       << "/models/mauch-4phase.yaml\ntrain:\n  - normal.csv\nvalidate:\n  - slow.csv\n  - fast.csv\n";
+  const fs::path record = dir / "normal.csv";
+  const std::string before = slurp(record.string());
+  for (const std::string command : {"diagnose", "compare"}) {
+    const CliRun run = runSwingsim(command + " " + study.string() + " --out " + (dir / "out").string() + " --json " +
+                                   record.string());
+    EXPECT_EQ(run.code, 1) << command << ": " << run.output;
+    EXPECT_THAT(run.output, HasSubstr("--json '" + record.string() + "': would write over the input STUDY.yaml: train record normal"))
+        << command;
+    EXPECT_EQ(slurp(record.string()), before) << command;
+  }
 }
 
 TEST(OutputOverInput, SwingsJsonOntoItsMotionFileIsRefused) {

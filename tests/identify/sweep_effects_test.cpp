@@ -26,7 +26,9 @@ TEST(SweepEffects, EverySweepEffectOfTheTableHasOneLawWithARange) {
     EXPECT_EQ(law.id, d->id) << name;
     EXPECT_LE(law.lower, law.upper) << name;
     EXPECT_FALSE(law.rangeSource.empty()) << name;
-    if (!law.assumption.empty()) EXPECT_NO_THROW(findSweepAssumption(law.assumption)) << name;
+    if (!law.assumption.empty()) {
+      EXPECT_NO_THROW(findSweepAssumption(law.assumption)) << name;
+    }
   }
   EXPECT_THROW(findSweepEffectLaw(EffectId::kKneeViscousDamping), std::logic_error);
   EXPECT_THROW(findSweepAssumption("no_such_assumption"), std::logic_error);
