@@ -42,4 +42,11 @@ std::string formatCommandLine(const CLI::App& command) {
   return "swingsim " + command.get_name() + positionals + options;
 }
 
+std::vector<CommandFile> listRunOutputs(const std::string& folder, const std::vector<std::string>& names,
+                                        const std::optional<std::string>& json) {
+  std::vector<CommandFile> outputs = folder.empty() ? std::vector<CommandFile>{} : listFolderFiles("--out", folder, names);
+  outputs.push_back({"--json", json.value_or("")});
+  return outputs;
+}
+
 }  // namespace swingsim::cli

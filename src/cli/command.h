@@ -51,6 +51,11 @@ CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out);
 /// that folder would be replaced.
 inline const std::vector<std::string> kSweepReportFiles = {"sweep.csv", "report.md", "report.html", "cohort.csv"};
 
+/// What a run writes, for checkOutputsAreNotInputs: the files `names` in `folder` (named by
+/// "--out"; none while `folder` is "", a default folder not yet known) and `json` (--json).
+std::vector<CommandFile> listRunOutputs(const std::string& folder, const std::vector<std::string>& names,
+                                        const std::optional<std::string>& json);
+
 /// The command line as parsed, for reports: "swingsim fit STUDY.yaml --out DIR --json FILE"
 /// (the positionals, then each option given, in the order the command declares them).
 std::string formatCommandLine(const CLI::App& command);

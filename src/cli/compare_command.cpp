@@ -25,8 +25,7 @@ struct CompareArguments {
 int runCompare(const CompareArguments& args) {
   const DiagnosisStudy study = loadDiagnosisStudy(args.study);
   const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
-  std::vector<CommandFile> outputs = listFolderFiles("--out", outDir, {"report.md"});
-  outputs.push_back({"--json", args.json.value_or("")});
+  std::vector<CommandFile> outputs = listRunOutputs(outDir, {"report.md"}, args.json);
   checkOutputsAreNotInputs(listDiagnosisStudyFiles(study), outputs);
   const auto plant = loadDiagnosisPlant(study, 1);
   const BaselineComparison b = compareBaseline(*plant, study.settings.whitenessLags);

@@ -35,8 +35,7 @@ struct DiagnoseArguments {
 int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   const DiagnosisStudy study = loadDiagnosisStudy(args.study);
   const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
-  std::vector<CommandFile> outputs = listFolderFiles("--out", outDir, {"report.md"});
-  outputs.push_back({"--json", args.json.value_or("")});
+  std::vector<CommandFile> outputs = listRunOutputs(outDir, {"report.md"}, args.json);
   outputs.push_back({"--save-model", args.saveModel.value_or("")});
   checkOutputsAreNotInputs(listDiagnosisStudyFiles(study), outputs);
   const DiagnosisRowLimit limit{static_cast<std::uint64_t>(args.maxRows)};

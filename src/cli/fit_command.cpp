@@ -25,8 +25,7 @@ struct FitArguments {
 int runFit(const FitArguments& args, const std::string& command) {
   const CylinderFitStudy study = loadCylinderFitStudy(args.study);
   const std::string outDir = chooseStudyOutputFolder(args.out, study.name, study.path);
-  std::vector<CommandFile> outputs = listFolderFiles("--out", outDir, {"report.md"});
-  outputs.push_back({"--json", args.json.value_or("")});
+  std::vector<CommandFile> outputs = listRunOutputs(outDir, {"report.md"}, args.json);
   checkOutputsAreNotInputs({{"STUDY.yaml", args.study}}, outputs);
   const CylinderFitRun run = runCylinderFits(study.models, study.train, study.validate, study.fitSwitches);
   const std::vector<ModelEvaluation>& results = run.models;

@@ -38,9 +38,7 @@ struct MergeArguments {
 int runMergeCommand(const MergeArguments& a) {
   std::vector<CommandFile> inputs;
   for (const auto& shard : a.shards) inputs.push_back({"SHARD_FILES", shard});
-  std::vector<CommandFile> outputs = listFolderFiles("--out", a.out.value_or(""), a.out ? kSweepReportFiles : std::vector<std::string>{});
-  outputs.push_back({"--json", a.json.value_or("")});
-  checkOutputsAreNotInputs(inputs, outputs);
+  checkOutputsAreNotInputs(inputs, listRunOutputs(a.out.value_or(""), kSweepReportFiles, a.json));
   // Shards of a cohort study (docs/cohort.md) hold whole participants' results.
   if (isCohortResultsFile(a.shards.front())) {
     InterruptScope interrupts;

@@ -182,10 +182,9 @@ int runSimulate(const SimulateArguments& a) {
   const SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
   const Participant& p = setup.participant;
   const std::string tag = makeTrajectoryFileStem(p.name, setup.lowering);
-  std::vector<CommandFile> outputs =
-      listFolderFiles("--out", a.out.value_or(makeTrajectoryFolder(p.name)), {tag + ".csv", tag + ".sto", tag + "-moments.svg"});
-  outputs.push_back({"--json", a.json.value_or("")});
-  checkOutputsAreNotInputs({{"PARTICIPANT.yaml", a.participant}, {a.knee ? "--knee" : "PARTICIPANT.yaml: knee_model", model.path}}, outputs);
+  checkOutputsAreNotInputs(
+      {{"PARTICIPANT.yaml", a.participant}, {a.knee ? "--knee" : "PARTICIPANT.yaml: knee_model", model.path}},
+      listRunOutputs(a.out.value_or(makeTrajectoryFolder(p.name)), {tag + ".csv", tag + ".sto", tag + "-moments.svg"}, a.json));
   options.trackImpactEnergy = true;  // one swing: the bookkeeping is cheap here
   const SwingResult r = simulateSwing(setup, options);
 

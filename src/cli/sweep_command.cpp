@@ -59,17 +59,13 @@ void checkOutputsAreNotStudyFiles(const SweepStudy& study, const std::string& ou
   for (const Participant& p : study.participants)
     if (!p.path.empty()) inputs.push_back({"STUDY.yaml: participant " + p.name, p.path});
   for (const auto& [path, model] : study.kneeModels) inputs.push_back({"STUDY.yaml: a knee model", path});
-  std::vector<CommandFile> outputs = listFolderFiles("--out", out, kSweepReportFiles);
-  outputs.push_back({"--json", json.value_or("")});
-  checkOutputsAreNotInputs(inputs, outputs);
+  checkOutputsAreNotInputs(inputs, listRunOutputs(out, kSweepReportFiles, json));
 }
 
 int runSweepCommand(const SweepArguments& a) {
-  std::vector<CommandFile> outputs = listFolderFiles("--out", a.out.value_or(""), a.out ? kSweepReportFiles : std::vector<std::string>{});
-  outputs.push_back({"--json", a.json.value_or("")});
-  checkOutputsAreNotInputs({{"STUDY.yaml", a.study}}, outputs);
   if (isCohortStudyFile(a.study)) {
     // A cohort study: drawn participants, each calibrated and swept (docs/cohort.md).
+    checkOutputsAreNotInputs({{"STUDY.yaml", a.study}}, listRunOutputs(a.out.value_or(""), kSweepReportFiles, a.json));
     if (a.added || a.uncertaintySamples || a.seed)
       throw InputError(a.study + ": kind: cohort-sweep: expected no --add-mass, --uncertainty or --seed (the study's "
                        "seed draws its participants), found " + (a.added ? "--add-mass" : a.seed ? "--seed" : "--uncertainty"));

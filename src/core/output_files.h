@@ -45,6 +45,9 @@ class StagedOutput {
 
   /// Writes `name` (relative to the folder; may contain subfolders) into the staging folder.
   void add(const std::string& name, const std::string& contents);
+  /// Takes `name` (relative to the folder), which a writer has already put into the staging
+  /// folder (getStagingFolder()), into the set as add() would, without writing it again.
+  void adoptStaged(const std::string& name);
   /// Stages a file outside the folder (a `--json` path) beside its target, as
   /// `path.tmp-PID` (parent folders created); commit() moves it into place with the others.
   /// A FIFO or a device (`--json /dev/stdout`) is kept in memory and written through at

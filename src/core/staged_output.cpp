@@ -189,6 +189,8 @@ void StagedOutput::add(const std::string& name, const std::string& contents) {
   names_.push_back(name);
 }
 
+void StagedOutput::adoptStaged(const std::string& name) { names_.push_back(name); }
+
 void StagedOutput::addBeside(const std::string& path, const std::string& contents) {
   if (isWriteThroughTarget(path)) {
     streams_.push_back({path, contents});  // written through at commit

@@ -19,12 +19,11 @@ void stageFolderWriter(StagedOutput& staged, const std::function<void(const std:
     for (std::size_t at; (at = what.find(staging)) != std::string::npos;) what.replace(at, staging.size(), folder);
     throw RunError("--out " + folder + ": " + what + "; nothing in the folder was changed");
   }
-  // Listed first: add() rewrites each file in place (atomically, with a temporary beside it).
   std::vector<std::string> names;
   for (const auto& entry : fs::recursive_directory_iterator(staging))
     if (entry.is_regular_file()) names.push_back(entry.path().lexically_relative(staging).string());
   std::sort(names.begin(), names.end());  // the manifest in the same order every run
-  for (const auto& name : names) staged.add(name, readFile(staging + "/" + name));
+  for (const auto& name : names) staged.adoptStaged(name);
 }
 
 }  // namespace swingsim

@@ -72,14 +72,13 @@ void announceCohortRun(const Cohort& cohort, const CohortSweepArguments& a) {
   // refinements: about 20 swings; then one swing per lowering of the grid (fewer where a
   // drawn shank caps it).
   constexpr std::uint64_t kCalibrationSwings = 20;
-  constexpr double kSecondsPerSwing = 0.006;  // as a plain sweep's (announceSweepGrid)
   const auto lowerings = static_cast<std::uint64_t>(std::floor(cohort.study.loweringMax / cohort.study.loweringStep + 1e-9)) + 1;
   const auto [first, last] = calcSlice(cohort, a);
   const std::uint64_t people = last - first;
   announceRunSize({"cohort " + cohort.study.name, "the cohort run", people * (kCalibrationSwings + lowerings), "swings",
                    std::to_string(people) + (people == 1 ? " participant" : " participants") +
-                       " x (about 20 calibration swings + up to " + std::to_string(lowerings) + " lowerings)",
-                   kSecondsPerSwing, a.jobs},
+                       " x (about " + std::to_string(kCalibrationSwings) + " calibration swings + up to " + std::to_string(lowerings) + " lowerings)",
+                   kSecondsPerSwingEstimate, a.jobs},
                   a.maxSwings, cohort.study.path + ": participants",
                   "draw fewer participants, run it in shards (--shard K/N) or coarsen the lowering grid", "--max-swings");
 }

@@ -49,12 +49,8 @@ std::string describeSweepGrid(const SweepStudy& study) {
 }  // namespace
 
 void announceSweepGrid(const SweepStudy& study, std::uint64_t maxSwings, int jobs) {
-  // Seconds a sweep swing takes on one core, measured (docs/robustness.md, "Large grids":
-  // 435 swings of `swingsim sweep studies/burkett2004.yaml --jobs 1` in 2.7 s); a swing with
-  // a stiff knee or a tight accuracy can take several times longer: a rough estimate.
-  constexpr double kSecondsPerSwing = 0.006;
   announceRunSize({"sweep " + study.name, "the sweep", countSweepSwings(study), "swings", describeSweepGrid(study),
-                   kSecondsPerSwing, jobs},
+                   kSecondsPerSwingEstimate, jobs},
                   maxSwings, study.path, "shorten the added_mass lists or the lowering grid", "--max-swings");
 }
 
