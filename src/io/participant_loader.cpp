@@ -155,6 +155,10 @@ void serialize(A& a, Participant& p) {
            true);
   a.choice("foot_com_from", p.footComFrom, {{"toe", FootComFrom::kToe}, {"ankle", FootComFrom::kAnkle}}, true);
   a.optionalNumber("min_shank_length_m", p.minShankLength, mustBePositive);
+  optionalSeconds(a, "sound_limb_swing_time_s", p.soundLimbSwingTime, [](double v) {
+    return v > 0 && v <= kSwingTimeRange.upper ? std::string()
+                                             : "expected a swing time in seconds, above 0 and at most " + formatNumber(kSwingTimeRange.upper);
+  });
   a.require(p.minShankLength < p.shank.length, "min_shank_length_m",
             "must be shorter than the shank (" + formatNumber(p.shank.length) + " m)",
             [&] { return formatNumber(p.minShankLength); });

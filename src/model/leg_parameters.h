@@ -153,6 +153,9 @@ struct Participant {
   /// The hip joint centre in the pelvis frame, m (x forward, y up): where the hip sits when
   /// a measured pelvis moves it (`hip_offset_in_pelvis_m`; written by import-osim).
   std::optional<std::array<double, 2>> hipOffsetInPelvis;
+  /// The sound (anatomical) limb's measured swing time, s (`sound_limb_swing_time_s`): the
+  /// symmetry target of the sweep and of tuning. nullopt: not measured.
+  std::optional<double> soundLimbSwingTime;
 };
 
 /// The leg as the dynamics sees it, after lowering: distances from the proximal joint.
