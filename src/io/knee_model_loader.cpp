@@ -219,10 +219,10 @@ void serialize(A& a, ImpedanceTransition& t, StateListContext* context) {
                                               : "expected a time in state from 0 to " + formatNumber(kMaxMinTimeInState) + " s";
   });
   if constexpr (A::kReading) {
-    a.require(t.flexionSide == ThresholdSide::kAny || a.has("flexion_deg"), "flexion_deg",
-              "a transition with when_flexion needs its threshold", [] { return std::string("nothing"); });
-    a.require(t.rateSide == ThresholdSide::kAny || a.has("rate_deg_s"), "rate_deg_s",
-              "a transition with when_rate needs its threshold", [] { return std::string("nothing"); });
+    a.require(t.flexionSide == ThresholdSide::kAny || a.has("flexion_deg"), "when_flexion",
+              "expected its threshold, flexion_deg, beside it", [] { return std::string("no flexion_deg"); });
+    a.require(t.rateSide == ThresholdSide::kAny || a.has("rate_deg_s"), "when_rate",
+              "expected its threshold, rate_deg_s, beside it", [] { return std::string("no rate_deg_s"); });
   }
 }
 

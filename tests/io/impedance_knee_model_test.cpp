@@ -123,8 +123,8 @@ TEST(ImpedanceKneeModel, MissingAndSurplusTransitionsAreRefused) {
                                           "transition in the last state"));
   // A threshold side without its threshold.
   EXPECT_THAT(errorOf(replaced(kValid, "        flexion_deg: 50\n", "")),
-              HasSubstr("mp.yaml:10: impedance_state_machine.states[0].transition.flexion_deg: a transition with "
-                        "when_flexion needs its threshold"));
+              HasSubstr("mp.yaml:12: impedance_state_machine.states[0].transition.when_flexion: expected its threshold, "
+                        "flexion_deg, beside it (got no flexion_deg)"));
 }
 
 TEST(ImpedanceKneeModel, LatchTimeMustBeFast) {
