@@ -3,7 +3,9 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/plausible_ranges.h"
 #include "io/yaml_archive.h"
 
 namespace swingsim {
@@ -32,6 +34,25 @@ struct RowContext {
 struct SettingContext {
   int phases;
   std::set<std::pair<double, double>>* seen;  // a set: linear-time check of long lists
+};
+
+// Ranges of an impedance state machine's numbers (wide: they catch unit slips, not designs).
+constexpr PlausibleRange kKneeStiffnessRange{0, 1e4, "N m/rad",
+                                             "the Open Source Leg's stiffest state has 99 N m/rad"};
+constexpr PlausibleRange kKneeDampingRange{0, 1e3, "N m s/rad", "the Open Source Leg's states have 0.06-3.8 N m s/rad"};
+constexpr PlausibleRange kKneeAngleRangeDeg{-30, 180, "deg", "the shank cannot fold through the thigh"};
+constexpr PlausibleRange kKneeRateRangeDegS = kJointRateRange;
+constexpr PlausibleRange kTorqueLimitRange{0, 2000, "N m", "a knee actuator's peak is some 100 N m"};
+constexpr double kMaxLatchTime = 0.01;      // s: a tenth of a swing's 0.1 s time scales
+constexpr double kMaxMinTimeInState = 10;  // s: the longest swing a participant file allows
+
+// Reading the states of an impedance state machine: the names seen, and where the previous
+// state's transition named the state it goes to (checked when the next state is read).
+struct StateListContext {
+  std::set<std::string> names;
+  bool havePrevious = false;
+  bool previousHasTransition = false;
+  std::string previousTo, previousWhere;
 };
 
 }  // namespace
@@ -182,14 +203,89 @@ void serialize(A& a, JointStopParams& s) {
                    [](double v) { return v >= 0 && v <= 1 ? "" : "expected a coefficient of restitution from 0 to 1"; });
 }
 
+
+template <class A>
+void serialize(A& a, ImpedanceTransition& t, StateListContext* context) {
+  a.text("to", t.to);
+  if constexpr (A::kReading) context->previousWhere = a.yaml().where("to");
+  const std::vector<std::pair<std::string, ThresholdSide>> sides = {
+      {"any", ThresholdSide::kAny}, {"above", ThresholdSide::kAbove}, {"below", ThresholdSide::kBelow}};
+  a.choice("when_flexion", t.flexionSide, sides, true);
+  a.optionalAngle("flexion_deg", t.flexion, mustBePlausible(kKneeAngleRangeDeg, "a knee angle"));
+  a.choice("when_rate", t.rateSide, sides, true);
+  a.optionalAngle("rate_deg_s", t.rate, mustBePlausible(kKneeRateRangeDegS, "a knee speed"));
+  a.optionalNumber("min_time_s", t.minTime, [](double v) {
+    return v >= 0 && v <= kMaxMinTimeInState ? std::string()
+                                              : "expected a time in state from 0 to " + formatNumber(kMaxMinTimeInState) + " s";
+  });
+  if constexpr (A::kReading) {
+    a.require(t.flexionSide == ThresholdSide::kAny || a.has("flexion_deg"), "when_flexion",
+              "expected its threshold, flexion_deg, beside it", [] { return std::string("no flexion_deg"); });
+    a.require(t.rateSide == ThresholdSide::kAny || a.has("rate_deg_s"), "when_rate",
+              "expected its threshold, rate_deg_s, beside it", [] { return std::string("no rate_deg_s"); });
+  }
+}
+
+template <class A>
+void serialize(A& a, ImpedanceState& s, StateListContext* context) {
+  a.text("name", s.name);
+  if constexpr (A::kReading) {
+    a.require(!s.name.empty(), "name", "expected a state name", [] { return std::string("an empty name"); });
+    a.require(context->names.insert(s.name).second, "name", "expected a name no other state has", [&] { return s.name; });
+    if (context->havePrevious && !context->previousHasTransition)
+      throw InputError(context->previousWhere + "expected a transition: every state but the last needs one, to the next state (" +
+                       s.name + ") (got none)");
+    if (context->havePrevious && context->previousTo != s.name)
+      throw InputError(context->previousWhere + "expected the next state in the list, " + s.name + " (got " +
+                       context->previousTo + ")");
+    context->previousWhere = a.yaml().where("name");
+  }
+  a.number("stiffness_Nm_per_rad", s.stiffness, mustBePlausible(kKneeStiffnessRange, "a stiffness"));
+  a.number("damping_Nm_s_per_rad", s.damping, mustBePlausible(kKneeDampingRange, "a damping"));
+  a.angle("equilibrium_deg", s.equilibrium, mustBePlausible(kKneeAngleRangeDeg, "a knee angle"));
+  a.optionalMap("transition", s.transition, s.hasTransition, context);
+  if constexpr (A::kReading) {
+    context->havePrevious = true;
+    context->previousHasTransition = s.hasTransition;
+    context->previousTo = s.transition.to;
+  }
+}
+
+template <class A>
+void serialize(A& a, ImpedanceStateMachineParams& p) {
+  a.choice("mode", p.mode, {{"powered", ImpedanceMode::kPowered}, {"dissipative", ImpedanceMode::kDissipative}});
+  a.number("torque_limit_Nm", p.torqueLimit, [](double v) {
+    return v > 0 ? checkPlausible(v, kTorqueLimitRange, "a torque limit") : "must be positive";
+  });
+  a.optionalNumber("latch_time_s", p.latchTime, [](double v) {
+    return v > 0 && v <= kMaxLatchTime ? std::string()
+                                       : "expected a latch time constant from 0 (exclusive) to " + formatNumber(kMaxLatchTime) +
+                                             " s, far below a swing's 0.1 s time scales";
+  });
+  a.optionalAngle("projection_speed_deg_s", p.projectionRate, mustBePositive);
+  StateListContext context;
+  a.mapList("states", p.states, &context);
+  if constexpr (A::kReading) {
+    a.require(!p.states.empty(), "states", "expected at least one state", [] { return std::string("none"); });
+    if (p.states.back().hasTransition)
+      throw InputError(context.previousWhere + "expected no transition in the last state, which has no state after it (got one to " +
+                       p.states.back().transition.to + ")");
+  }
+}
+
 template <class A>
 void serialize(A& a, KneeModelSpec& k) {
-  a.choice("kind", k.kind, {{"damping_table", KneeModelKind::kDampingTable}, {"mauch", KneeModelKind::kMauch}});
+  a.choice("kind", k.kind,
+           {{"damping_table", KneeModelKind::kDampingTable},
+            {"mauch", KneeModelKind::kMauch},
+            {"impedance_state_machine", KneeModelKind::kImpedanceStateMachine}});
   a.optionalText("name", k.name);
   a.optionalText("description", k.description);
   a.optionalText("source", k.source);
   if (k.kind == KneeModelKind::kDampingTable) {
     a.map("damping_table", k.table);
+  } else if (k.kind == KneeModelKind::kImpedanceStateMachine) {
+    a.map("impedance_state_machine", k.stateMachine);
   } else {
     MauchCylinderParams& c = k.cylinder;
     a.integer("phases", c.phases);
@@ -222,6 +318,12 @@ void serialize(A& a, KneeModelSpec& k) {
 
 namespace {
 
+std::string kneeModelKindName(KneeModelKind kind) {
+  if (kind == KneeModelKind::kMauch) return "mauch";
+  if (kind == KneeModelKind::kImpedanceStateMachine) return "impedance_state_machine";
+  return "damping_table";
+}
+
 KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
   KneeModel model;
   model.path = path;
@@ -229,7 +331,7 @@ KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
   serialize(a, model.spec);
   yaml.finish();
   model.name = model.spec.name.empty() ? fileStem(path) : model.spec.name;
-  model.kind = model.spec.kind == KneeModelKind::kMauch ? "mauch" : "damping_table";
+  model.kind = kneeModelKindName(model.spec.kind);
   try {
     model.law = makeKneeModelLaw(model.spec);
   } catch (const std::invalid_argument& e) {

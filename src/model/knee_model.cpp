@@ -8,8 +8,10 @@ KneeLawSum makeKneeModelLaw(const KneeModelSpec& spec) {
   KneeLawSum law;
   if (spec.kind == KneeModelKind::kDampingTable)
     law.add(std::make_unique<DampingTable>(spec.table));
-  else
+  else if (spec.kind == KneeModelKind::kMauch)
     law.add(std::make_unique<MauchCylinder>(spec.cylinder));
+  else
+    law.add(std::make_unique<ImpedanceStateMachine>(spec.stateMachine));
   if (spec.hasKneeEffects) {
     if (spec.kneeEffects.modelScale != 1.0) {
       KneeLawSum scaled;

@@ -6,6 +6,7 @@
 
 #include "core/units.h"
 #include "knee/damping_table.h"
+#include "knee/impedance_state_machine.h"
 #include "knee/joint_stop.h"
 #include "knee/knee_added_effects.h"
 #include "knee/knee_law.h"
@@ -13,7 +14,7 @@
 
 namespace swingsim {
 
-enum class KneeModelKind { kDampingTable, kMauch };
+enum class KneeModelKind { kDampingTable, kMauch, kImpedanceStateMachine };
 
 /// One row of a Mauch dial setting's coefficient table (Chien 2014 Table 1).
 struct MauchCoefficientRow {
@@ -42,6 +43,8 @@ struct KneeModelSpec {
   MauchCylinderParams cylinder;
   double flexionDial = 90, extensionDial = 90;  ///< deg: the dial setting in use
   std::vector<MauchDialSetting> settings;       ///< every tabulated setting
+  /// kind impedance_state_machine: the microprocessor knee's swing controller.
+  ImpedanceStateMachineParams stateMachine;
   bool hasGeometry = true;                      ///< geometry written in the file
   bool hasCylinderEffects = false;              ///< an `effects:` map (added cylinder effects)
   bool hasKneeEffects = false;                  ///< a `knee_effects:` map
@@ -58,7 +61,7 @@ KneeLawSum makeKneeModelLaw(const KneeModelSpec& spec);
 struct KneeModel {
   std::string path;
   std::string name;   ///< `name:` key, or the file stem
-  std::string kind;   ///< `kind:` key: damping_table, mauch
+  std::string kind;   ///< `kind:` key: damping_table, mauch, impedance_state_machine
   KneeLawSum law;     ///< the model's resisting law(s) followed by the hyperextension stop
   KneeModelSpec spec;  ///< what the file said
 };
