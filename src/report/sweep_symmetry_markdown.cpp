@@ -101,23 +101,29 @@ std::string formatTable4SymmetrySection(const SweepResults& results) {
       model.push_back(row.model);
     }
     const int star = calcTable4SymmetryRow(*pub, measured);
-    const int ours = calcTable4SymmetryRow(*pub, oursAtTable4(ps));
+    const std::vector<double> oursTimes = oursAtTable4(ps);
+    const int ours = calcTable4SymmetryRow(*pub, oursTimes);
+    // The control: a swing time that does not change with the lowering (ours at 0 m).
+    const int flat = oursTimes.empty() ? -1 : calcTable4SymmetryRow(*pub, std::vector<double>(oursTimes.size(), oursTimes.front()));
     const SymmetryLowering& sym = ps.symmetry;
     const std::string grid = !sym.found ? "no swing end" : fmt("%.3f", sym.lowering) + (sym.reached ? "" : " (not reached)");
     rows += mdRow({ps.name, rowLowering(*pub, star), grid,
                    sym.found && star >= 0 ? fmt("%+.3f", sym.lowering - pub->table4[static_cast<std::size_t>(star)].lowering) : "-",
-                   rowLowering(*pub, ours), rowLowering(*pub, calcTable4SymmetryRow(*pub, model))});
+                   rowLowering(*pub, ours), rowLowering(*pub, calcTable4SymmetryRow(*pub, model)), rowLowering(*pub, flat)});
   }
   if (rows.empty()) return "";
   std::string md = "### Best symmetry: Table 4's `*` beside this model\n\n";
   md += "Burkett's `*` is the Table 4 lowering where the measured prosthetic swing time is closest to the measured "
         "anatomical one *at that lowering* (Table 4's anatomical time changes with the lowering). Ours "
         "compares with one sound-limb time, the participant file's (Table 4's anatomical time at 0 m), over the "
-        "whole grid; the last two columns use Burkett's per-lowering anatomical times instead, over Table 4's "
-        "lowerings only. docs/burkett2004.md discusses what agrees and why.\n\n";
+        "whole grid; the last three columns use Burkett's per-lowering anatomical times instead, over Table 4's "
+        "lowerings only; the last is a control, a swing time that does not change with the lowering (ours at 0 m): "
+        "where it picks the same row, the row is set by the anatomical column, not by the knee axis. "
+        "docs/burkett2004.md discusses what agrees and why.\n\n";
   md += mdRow({"participant", "Table 4 `*` (m)", "ours, sound limb at 0 m (m)", "ours - `*` (m)",
-               "ours, per-lowering anatomical (m)", "Burkett's model, per-lowering anatomical (m)"});
-  md += mdRow({"---", "---", "---", "---", "---", "---"});
+               "ours, per-lowering anatomical (m)", "Burkett's model, per-lowering anatomical (m)",
+               "constant swing time, per-lowering anatomical (m)"});
+  md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
   return md + rows + "\n";
 }
 
