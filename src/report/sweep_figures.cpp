@@ -20,6 +20,25 @@ namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// With a sound-limb swing time: that time as a horizontal line, our symmetry lowering, and
+// Table 4's measured anatomical times (Burkett's `*` compares with those); nothing without one.
+void addSymmetryMarks(const ParticipantSweep& ps, SvgPlot& plot) {
+  const SymmetryLowering& sym = ps.symmetry;
+  if (!sym.given) return;
+  plot.addHLine(sym.soundTime, "sound limb (participant file)", svgPaletteColor(3), true, true);
+  if (const PublishedParticipant* pub = ps.published) {
+    std::vector<double> px, pa;
+    for (const auto& row : pub->table4) {
+      px.push_back(row.lowering);
+      pa.push_back(row.measuredAnatomical);
+    }
+    plot.addPoints(px, pa, "measured anatomical (Table 4)", svgPaletteColor(3), 4);
+  }
+  if (sym.found)
+    plot.addPoints({sym.lowering}, {sym.prostheticTime}, sym.reached ? "our best symmetry" : "our best symmetry (not reached)",
+                   svgPaletteColor(4), 6);
+}
+
 }  // namespace
 
 SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps, const ParticipantUncertainty* pu) {
@@ -55,6 +74,7 @@ SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps, const ParticipantUncerta
     const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
     plot.addPoints({b.lowering}, {b.result.swingTime}, "our fastest", "#000000", 6);
   }
+  addSymmetryMarks(ps, plot);
   return plot;
 }
 

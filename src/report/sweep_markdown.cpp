@@ -16,6 +16,7 @@
 #include "report/sweep_html.h"
 #include "report/sweep_report.h"
 #include "report/sweep_report_parts.h"
+#include "report/sweep_symmetry_markdown.h"
 #include "sweep/burkett_published.h"
 
 namespace swingsim {
@@ -520,8 +521,10 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
   std::string md = "# Knee-axis sweep: " + study.name + "\n\n" + formatIntro(study);
   md += formatSummary(results, uncertainty, agreement);
   md += formatTables34Section(study, results, agreement);
+  md += formatTable4SymmetrySection(results);
   md += formatTable4ValidationSection(results);
   md += formatFastestSection(study, results);
+  md += formatSymmetrySection(results, uncertainty);
   md += formatTerminalImpactSection(results);
   md += formatMassSection(results);
   if (uncertainty) md += formatUncertaintySection(*uncertainty);

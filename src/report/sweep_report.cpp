@@ -102,6 +102,7 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
       if (pub) out += " (Burkett's model: " + fmt("%.3f", pub->predictedBestLowering) + " m)";
       out += "\n";
     }
+    if (ps.symmetry.given) out += "  " + formatSymmetryLine(ps.symmetry) + "\n";
     if (ps.bestWithMass >= 0) {
       const SweepPoint& b = ps.massPoints[static_cast<std::size_t>(ps.bestWithMass)];
       out += "  fastest with added shank mass: lowering " + fmt("%.3f", b.lowering) + " m + " + fmt("%.2f", b.added.mass) +
@@ -213,6 +214,15 @@ void addBestJson(const ParticipantSweep& ps, Json& j) {
   }
 }
 
+/// The symmetry lowering (sweep/sweep_symmetry.h) as JSON; lowering_m and the times null
+/// when no swing ended.
+Json symmetryJson(const SymmetryLowering& sym) {
+  const auto orNull = [&](double v) { return sym.found ? Json(v) : Json(nullptr); };
+  return {{"sound_limb_swing_time_s", sym.soundTime}, {"lowering_m", orNull(sym.lowering)},
+          {"reached", sym.found && sym.reached}, {"prosthetic_swing_time_s", orNull(sym.prostheticTime)},
+          {"gap_s", orNull(sym.gap)}, {"ratio", orNull(sym.calcRatio())}};
+}
+
 /// Burkett's published rows for the participant beside ours, or null for one not in the paper.
 Json publishedJson(const ParticipantSweep& ps) {
   const PublishedParticipant* pub = ps.published;
@@ -235,6 +245,10 @@ void addUncertaintyJson(const ParticipantUncertainty& pu, const UncertaintyResul
   j["fastest_lowering_interval_m"] = intervalJson(pu.fastestLowering);
   j["fastest_time_interval_s"] = intervalJson(pu.fastestTime);
   j["samples_without_swing_end"] = pu.samplesWithoutSwingEnd;
+  if (pu.symmetry.given) {
+    j["symmetry_lowering_interval_m"] = intervalJson(pu.symmetryLowering);
+    j["symmetry_samples_not_reached"] = pu.symmetryNotReached;
+  }
   j["sensitivity"] = sensitivityJson(pu);
   j["uncertainty_samples"] = uncertainty.samples;
   j["seed"] = uncertainty.seed;
@@ -248,6 +262,7 @@ Json participantJson(const SweepResults& results, const ParticipantSweep& ps, co
   for (const auto& c : results.terminalImpact)
     if (c.participant == ps.name) j["terminal_impact"] = terminalImpactJson(c);
   addBestJson(ps, j);
+  if (ps.symmetry.given) j["symmetry"] = symmetryJson(ps.symmetry);
   j["published"] = publishedJson(ps);
   if (const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name)) addUncertaintyJson(*pu, *uncertainty, j);
   return j;

@@ -49,6 +49,15 @@ std::string formatAssumptionValue(const std::string& key, double v) {
 
 std::string unitSuffix(const std::string& unit) { return unit == "choice" || unit == "1" ? "" : " " + unit; }
 
+std::string formatSymmetryLine(const SymmetryLowering& sym) {
+  std::string out = "best symmetry with the sound limb (" + fmt("%.3f", sym.soundTime) + " s): ";
+  if (!sym.found) return out + "no swing ended";
+  if (sym.reached) return out + fmt("%.3f", sym.lowering) + " m (the swing times cross there; prosthetic/sound 1.00)";
+  return out + "not reached; closest " + fmt("%.3f", sym.lowering) + " m, " + fmt("%.4f", sym.prostheticTime) + " s, " +
+         fmt("%.0f", std::fabs(sym.gap) * 1000) + " ms " + (sym.gap < 0 ? "faster" : "slower") +
+         " than the sound limb (prosthetic/sound " + fmt("%.2f", sym.calcRatio()) + ")";
+}
+
 std::string formatLoweringOrNone(double v) { return std::isfinite(v) ? fmt("%.3f", v) : "no end"; }
 
 }  // namespace swingsim::sweep_report_parts

@@ -25,6 +25,9 @@ const SweepAssumption* assumptionKeyed(const std::string& key);
 std::string formatAssumptionValue(const std::string& key, double v);
 /// " N m" after a value; nothing for a choice or a dimensionless value (unit "1").
 std::string unitSuffix(const std::string& unit);
+/// One line on the symmetry lowering (sym.given): where the prosthetic swing time meets the
+/// sound limb's, or the closest point with its gap when it never does.
+std::string formatSymmetryLine(const SymmetryLowering& sym);
 /// A lowering in m with 3 decimals, "no end" if not finite.
 std::string formatLoweringOrNone(double v);
 

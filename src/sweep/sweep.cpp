@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -261,6 +262,17 @@ int pickBest(std::vector<SweepPoint>& pts) {
   return best;
 }
 
+// The symmetry lowering over the points `best` is chosen from (on the grid, swing ended).
+SymmetryLowering calcGridSymmetry(const ParticipantSweep& ps, const Participant& p) {
+  std::vector<double> lowerings, swingTimes;
+  for (const SweepPoint& pt : ps.points) {
+    if (!pt.onGrid) continue;
+    lowerings.push_back(pt.lowering);
+    swingTimes.push_back(pt.ok ? pt.result.swingTime : std::numeric_limits<double>::quiet_NaN());
+  }
+  return calcSymmetryLowering(lowerings, swingTimes, p.soundLimbSwingTime.value_or(0));
+}
+
 }  // namespace
 
 SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<void(int, int)>& progress,
@@ -285,9 +297,11 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
   };
   runParallelJobs(total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
 
-  for (auto& ps : results.participants) {
+  for (std::size_t i = 0; i < results.participants.size(); ++i) {
+    ParticipantSweep& ps = results.participants[i];
     ps.best = pickBest(ps.points);
     ps.bestWithMass = pickBest(ps.massPoints);
+    ps.symmetry = calcGridSymmetry(ps, study.participants[i]);
   }
   return results;
 }

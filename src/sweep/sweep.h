@@ -14,6 +14,7 @@
 #include "model/knee_model.h"
 #include "sweep/burkett_published.h"
 #include "sweep/calibration.h"
+#include "sweep/sweep_symmetry.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -74,6 +75,10 @@ struct ParticipantSweep {
   /// Index into points of the fastest swing, -1 if none ended.
   int best = -1;
   int bestWithMass = -1;  ///< index into massPoints, -1 if none
+  /// The lowering whose grid swing time is closest to the participant's sound limb
+  /// (Participant::soundLimbSwingTime; symmetry.given false without one), over the same
+  /// points as `best`.
+  SymmetryLowering symmetry;
 };
 
 // Burkett 2004's terminal-impact findings on a sweep (sweep/terminal_impact.h).

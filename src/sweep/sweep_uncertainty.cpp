@@ -25,6 +25,20 @@ double percentileSorted(const std::vector<double>& v, double q) {
   return v[lo] + (h - static_cast<double>(lo)) * (v[hi] - v[lo]);
 }
 
+// The nominal symmetry lowering and its interval over the samples (no sound-limb time: none).
+void addSymmetry(ParticipantUncertainty& pu, double soundTime) {
+  pu.symmetry = calcSymmetryLowering(pu.nominal.lowerings, pu.nominal.swingTimes, soundTime);
+  if (!pu.symmetry.given) return;
+  std::vector<double> lowerings;
+  for (const auto& s : pu.samples) {
+    const SymmetryLowering sample = calcSymmetryLowering(s.lowerings, s.swingTimes, soundTime);
+    if (!sample.found) continue;  // counted in samplesWithoutSwingEnd
+    lowerings.push_back(sample.lowering);
+    if (!sample.reached) ++pu.symmetryNotReached;
+  }
+  pu.symmetryLowering = calcInterval(lowerings);
+}
+
 }  // namespace
 
 void pickBest(LoweringSweepSummary& s) {
@@ -289,6 +303,7 @@ UncertaintyResults assembleUncertaintyResults(const SweepStudy& study, const Unc
     }
     pu.fastestLowering = calcInterval(fastestLowering);
     pu.fastestTime = calcInterval(fastestTime);
+    addSymmetry(pu, study.participants[i].soundLimbSwingTime.value_or(0));
     // The band: per lowering of the nominal grid, over the samples that reached it.
     for (std::size_t k = 0; k < pu.nominal.lowerings.size(); ++k) {
       const double d = pu.nominal.lowerings[k];

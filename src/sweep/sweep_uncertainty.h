@@ -79,6 +79,13 @@ struct ParticipantUncertainty {
   std::vector<LoweringSweepSummary> samples;  ///< Monte Carlo, by sample index
   Interval fastestLowering, fastestTime;      ///< over the samples with a swing end
   int samplesWithoutSwingEnd = 0;             ///< samples where no lowering ended a swing
+  /// With a sound-limb swing time (symmetry.given): the nominal run's symmetry lowering
+  /// (sweep_symmetry.h), its 5-95 % interval over the samples with a swing end (each
+  /// sample's crossing, or its closest point where it has none), and how many of those
+  /// samples do not reach the sound limb's time.
+  SymmetryLowering symmetry;
+  Interval symmetryLowering;
+  int symmetryNotReached = 0;
   /// Swing time per lowering of the nominal grid: 5 %, 50 %, 95 % over the samples that
   /// ended a swing there (NaN where fewer than half did).
   std::vector<double> bandLowerings, bandP05, bandMedian, bandP95;
