@@ -1,0 +1,193 @@
+#include "sweep/knee_tuning.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/input_error.h"
+#include "core/units.h"
+#include "numerics/bounded_least_squares.h"
+#include "numerics/latin_hypercube.h"
+#include "sweep/sweep.h"
+#include "sweep/tuning_analysis.h"
+
+namespace swingsim {
+
+const char* tuningQuantityKey(TuningQuantity q) {
+  switch (q) {
+    case TuningQuantity::kSwingTime: return "swing_time_s";
+    case TuningQuantity::kPeakKneeFlexion: return "peak_knee_flexion_deg";
+    case TuningQuantity::kMinToeClearance: return "min_toe_clearance_m";
+    case TuningQuantity::kMaxStopImpactSpeed: return "max_stop_impact_deg_s";
+  }
+  return "";
+}
+
+double tuningTargetScale(TuningQuantity q) {
+  switch (q) {
+    case TuningQuantity::kSwingTime: return 0.01;
+    case TuningQuantity::kPeakKneeFlexion: return 1 * kDegToRad;
+    case TuningQuantity::kMinToeClearance: return 0.005;
+    case TuningQuantity::kMaxStopImpactSpeed: return 10 * kDegToRad;
+  }
+  return 1;
+}
+
+double TuningPoint::value(TuningQuantity q) const {
+  switch (q) {
+    case TuningQuantity::kSwingTime: return swingTime;
+    case TuningQuantity::kPeakKneeFlexion: return peakKneeFlexion;
+    case TuningQuantity::kMinToeClearance: return minToeClearance;
+    case TuningQuantity::kMaxStopImpactSpeed: return maxStopImpactSpeed;
+  }
+  return 0;
+}
+
+void scoreTuningPoint(TuningPoint& point, const SwingResult& swing, const std::vector<TuningTarget>& targets) {
+  point.swingTime = swing.swingTime;
+  if (swing.peakKneeFlexion) point.peakKneeFlexion = swing.peakKneeFlexion->flexion;
+  if (swing.minToeClearance) point.minToeClearance = *swing.minToeClearance;
+  point.maxStopImpactSpeed = 0;
+  for (const StopImpact& im : swing.impacts) point.maxStopImpactSpeed = std::max(point.maxStopImpactSpeed, im.impactRate);
+  point.ran = true;
+  point.cost = 0;
+  point.hardViolation = 0;
+  for (const TuningTarget& t : targets) {
+    const double value = point.value(t.quantity);
+    if (!std::isfinite(value)) {
+      point.ran = false;
+      point.failure = std::string("the swing has no ") + tuningQuantityKey(t.quantity);
+      point.cost = point.hardViolation = std::numeric_limits<double>::infinity();
+      return;
+    }
+    const double miss = calcTargetMiss(t, value) / t.scale;
+    if (t.hard)
+      point.hardViolation += std::abs(miss);
+    else
+      point.cost += t.weight * miss * miss;
+  }
+}
+
+namespace {
+
+// One swing at `knobs`, scored; a swing that cannot run is a failed point, not an error.
+TuningPoint evaluatePoint(const std::vector<double>& knobs, const std::vector<TuningTarget>& targets,
+                          const TuningEvaluator& evaluate) {
+  TuningPoint point;
+  point.knobs = knobs;
+  try {
+    scoreTuningPoint(point, evaluate(knobs), targets);
+  } catch (const std::exception& e) {
+    point.ran = false;
+    point.failure = e.what();
+  }
+  return point;
+}
+
+// Knob values of a unit-cube point: linear, or geometric for a log-scaled knob.
+std::vector<double> knobValuesAt(const std::vector<TuningKnob>& knobs, const std::vector<double>& unit) {
+  std::vector<double> values(knobs.size());
+  for (std::size_t k = 0; k < knobs.size(); ++k) {
+    const TuningKnob& knob = knobs[k];
+    values[k] = knob.logScale ? knob.lower * std::pow(knob.upper / knob.lower, unit[k])
+                              : knob.lower + unit[k] * (knob.upper - knob.lower);
+  }
+  return values;
+}
+
+// The start set, run on settings.jobs threads; points the stop flag kept from running are dropped.
+std::vector<TuningPoint> runStartSet(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
+                                     const TuningEvaluator& evaluate, const TuningSettings& settings,
+                                     const std::function<void(int, int)>& progress, const volatile bool* stopFlag) {
+  const auto unit = makeLatinHypercube(settings.startPoints, static_cast<int>(knobs.size()), settings.seed);
+  std::vector<TuningPoint> points(unit.size());
+  std::vector<char> done(unit.size(), 0);
+  runParallelJobs(
+      static_cast<int>(unit.size()), settings.jobs,
+      [&](int i) {
+        const auto index = static_cast<std::size_t>(i);
+        points[index] = evaluatePoint(knobValuesAt(knobs, unit[index]), targets, evaluate);
+        done[index] = 1;
+      },
+      progress, stopFlag);
+  std::vector<TuningPoint> ran;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (done[i]) ran.push_back(std::move(points[i]));
+  return ran;
+}
+
+// The Ceres polish from `start`: toward the soft targets among feasible points (a point that
+// breaks a hard limit throws, so Ceres rejects the step), or, where no start point was
+// feasible, toward the least hard violation. Every evaluation is kept in `result.polished`.
+void polish(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate,
+            const TuningSettings& settings, const TuningPoint& start, const volatile bool* stopFlag, TuningResult& result) {
+  const bool feasible = start.feasible();
+  std::vector<BoundedParameter> parameters;
+  for (std::size_t k = 0; k < knobs.size(); ++k)
+    parameters.push_back({knobs[k].key, start.knobs[k], knobs[k].lower, knobs[k].upper, knobs[k].logScale,
+                          knobs[k].logScale ? 1.0 : knobs[k].upper - knobs[k].lower});
+  const ResidualFunction f = [&](const Eigen::VectorXd& x) {
+    if (stopFlag != nullptr && *stopFlag) throw RunError("stopped");
+    TuningPoint p = evaluatePoint(std::vector<double>(x.data(), x.data() + x.size()), targets, evaluate);
+    result.polished.push_back(p);
+    if (!p.ran) throw RunError(p.failure);
+    if (feasible && p.hardViolation > 0) throw RunError("breaks a hard limit");
+    return calcTuningResiduals(p, targets, feasible);
+  };
+  BoundedFitSettings fit;
+  fit.maxIterations = settings.maxIterations;
+  fit.maxSeconds = settings.maxSeconds;
+  fit.computeCovariance = false;
+  fit.differenceStep = 1e-4;  // a swing time is smooth to ~1e-6 s at the default accuracy
+  try {
+    const BoundedFitResult r = solveBoundedLeastSquares(f, parameters, fit);
+    result.converged = r.converged;
+    result.stopReason = r.stopReason;
+    result.iterations = r.iterations;
+  } catch (const std::exception& e) {
+    result.stopReason = e.what();
+  }
+}
+
+// Better: feasible before infeasible; then lower cost (feasible) or lower violation.
+bool isBetter(const TuningPoint& a, const TuningPoint& b) {
+  if (a.ran != b.ran) return a.ran;
+  if (a.feasible() != b.feasible()) return a.feasible();
+  if (a.feasible()) return a.cost < b.cost;
+  return a.hardViolation < b.hardViolation || (a.hardViolation == b.hardViolation && a.cost < b.cost);
+}
+
+}  // namespace
+
+TuningPoint findBestTuningPoint(const std::vector<TuningPoint>& a, const std::vector<TuningPoint>& b) {
+  TuningPoint best;
+  bool any = false;
+  for (const auto* set : {&a, &b})
+    for (const TuningPoint& p : *set)
+      if (!any || isBetter(p, best)) best = p, any = true;
+  return best;
+}
+
+TuningResult runKneeTuning(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
+                           const TuningEvaluator& evaluate, const TuningSettings& settings,
+                           const std::function<void(int, int)>& progress, const volatile bool* stopFlag) {
+  TuningResult result;
+  result.knobs = knobs;
+  result.startSet = runStartSet(knobs, targets, evaluate, settings, progress, stopFlag);
+  result.interrupted = stopFlag != nullptr && *stopFlag;
+  const TuningPoint start = findBestTuningPoint(result.startSet, {});
+  result.best = start;
+  if (!start.ran) {
+    if (result.interrupted) return result;
+    throw InputError("no point of the start set ran; the first failed: " +
+                     (result.startSet.empty() ? std::string("none ran") : result.startSet.front().failure));
+  }
+  if (!result.interrupted) polish(knobs, targets, evaluate, settings, start, stopFlag, result);
+  result.interrupted = stopFlag != nullptr && *stopFlag;
+  result.best = findBestTuningPoint(result.startSet, result.polished);
+  result.feasible = result.best.feasible();
+  result.evaluations = static_cast<int>(result.startSet.size() + result.polished.size());
+  if (!result.interrupted) analyseTuningResult(targets, evaluate, settings.jobs, result);
+  return result;
+}
+
+}  // namespace swingsim
