@@ -138,6 +138,9 @@ void polish(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget
   fit.maxSeconds = settings.maxSeconds;
   fit.computeCovariance = false;
   fit.differenceStep = 1e-4;  // a swing time is smooth to ~1e-6 s at the default accuracy
+  // A value target is met within 1 % of its scale (kValueFraction): a cost of 1e-8 or less.
+  fit.functionTolerance = 1e-12;
+  fit.parameterTolerance = 1e-10;
   try {
     const BoundedFitResult r = solveBoundedLeastSquares(f, parameters, fit);
     result.converged = r.converged;

@@ -123,8 +123,6 @@ void setIdentifiability(TuningResult& result) {
 
 }  // namespace
 
-void analyseTuningOutcomes(const std::vector<TuningTarget>& targets, TuningResult& result) { setOutcomes(targets, result); }
-
 void analyseTuningResult(const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate, int jobs,
                          TuningResult& result) {
   setOutcomes(targets, result);

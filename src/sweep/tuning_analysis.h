@@ -38,7 +38,4 @@ TuningPoint findBestTuningPoint(const std::vector<TuningPoint>& a, const std::ve
 void analyseTuningResult(const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate, int jobs,
                          TuningResult& result);
 
-/// Only result.targets and knobAtBound, from result.best (after result.best was re-run).
-void analyseTuningOutcomes(const std::vector<TuningTarget>& targets, TuningResult& result);
-
 }  // namespace swingsim

@@ -47,7 +47,9 @@ TEST(TuneCli, TheTunedFilesRerunBySimulateGiveTheReportedSwing) {
   EXPECT_NEAR(numberAfter(sim.output, "min toe clearance"), j["swing"]["min_toe_clearance_m"].get<double>(), 0.5e-3);
   // Every hard limit is met by the result, with its margin.
   for (const auto& t : j["targets"])
-    if (t["hard"].get<bool>()) EXPECT_GE(t["margin"].get<double>(), 0.0) << t.dump();
+    if (t["hard"].get<bool>()) {
+      EXPECT_GE(t["margin"].get<double>(), 0.0) << t.dump();
+    }
 }
 
 TEST(TuneCli, InterruptedItWritesNothingAndPrintsTheBestPointSoFar) {

@@ -78,7 +78,7 @@ TEST(TuningStudy, RefusesARangeTheKneeModelOrTheLegCannotTake) {
 
 TEST(TuningStudy, RefusesAnUnknownTargetAndAHardLimitWithAWeight) {
   const std::string m = refusal(study(kKnobs, "  stance_time_s: {value: 0.5}\n"));
-  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:9: targets\.stance_time_s: unknown key)"))) << m;
+  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:8: targets\.stance_time_s: unknown key)"))) << m;
   const std::string w = refusal(study(kKnobs, "  peak_knee_flexion_deg: {min: 50, max: 70, hard: true, weight: 2}\n"));
   EXPECT_NE(w.find("targets.peak_knee_flexion_deg.weight: a hard limit has no weight"), std::string::npos) << w;
   const std::string win = refusal(study(kKnobs, "  peak_knee_flexion_deg: {min: 70, max: 50}\n"));
@@ -96,7 +96,7 @@ TEST(TuningStudy, RefusesSoundLimbWhenTheParticipantHasNoSoundLimbSwingTime) {
   }
   const std::string participant = writeTemp("no-sound-limb.yaml", text);
   const std::string m = refusal(study(kKnobs, kTargets, participant));
-  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:9: targets\.swing_time_s\.value: sound_limb needs the participant's sound_limb_swing_time_s, which .*no-sound-limb\.yaml does not give)")))
+  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:8: targets\.swing_time_s\.value: sound_limb needs the participant's sound_limb_swing_time_s, which .*no-sound-limb\.yaml does not give)")))
       << m;
   EXPECT_EQ(refusal(study(kKnobs, "  swing_time_s: {value: 0.5}\n", participant)), "");  // a number needs no key
 }

@@ -82,7 +82,8 @@ TEST(KneeTuning, AHardLimitNoSettingMeetsIsReportedWithItsMiss) {
   EXPECT_FALSE(r.feasible);
   ASSERT_EQ(r.targets.size(), 2u);
   EXPECT_FALSE(r.targets[1].met);
-  EXPECT_NEAR(r.targets[1].margin, -0.7, 1e-6);
+  // The polish stops within kAtBoundFraction of a's range end: 1e-4 x 0.3 rad of peak flexion.
+  EXPECT_NEAR(r.targets[1].margin, -0.7, kAtBoundFraction * 0.3 * 1.01);
   EXPECT_TRUE(r.knobAtBound[0]);  // a at its upper end is what stops it
   EXPECT_NEAR(r.best.knobs[0], 1.0, kRecoveryTol);
 }
