@@ -101,7 +101,8 @@ std::string formatTuningSummary(const TuningReportInputs& in) {
     << " knobs; " << r.startSet.size() << " start points + " << r.polished.size() << " polish swings, "
     << format("%.1f", in.seconds) << " s\n";
   s << "  result              " << (r.feasible ? "meets every hard limit" : "NO SETTING MET EVERY HARD LIMIT: the least violation")
-    << "; Ceres " << (r.converged ? "converged" : "stopped: " + r.stopReason) << " after " << r.iterations << " iterations\n";
+    << "; Ceres " << (r.converged ? "converged" : "stopped: " + r.stopReason) << " after " << r.iterations
+    << " iterations from start point " << r.polishStart + 1 << " of the ranked start set\n";
   printKnobs(s, r);
   printTargets(s, in);
   s << "  binding             " << describeBinding(r) << "\n";
@@ -189,6 +190,7 @@ std::string formatTuningJson(const TuningReportInputs& in) {
   j["interrupted"] = r.interrupted;
   j["converged"] = r.converged;
   j["iterations"] = r.iterations;
+  j["polish_start_rank"] = r.polishStart + 1;
   j["stop_reason"] = r.stopReason;
   j["evaluations"] = r.evaluations;
   Json knobs = Json::array();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "core/input_error.h"
 #include "core/units.h"
@@ -115,34 +116,73 @@ std::vector<TuningPoint> runStartSet(const std::vector<TuningKnob>& knobs, const
   return ran;
 }
 
+// Step of the polish's difference Jacobian: 1e-4 of a linear knob's range, 1e-4 of a
+// log-scaled knob's value (a swing time is smooth to ~1e-6 s at the default accuracy).
+constexpr double kDifferenceStep = 1e-4;
+
+// The residuals at x and, if asked, their Jacobian by one-sided differences that stay inside
+// the knobs' ranges. Only x itself must meet the hard limits (else it throws: Ceres rejects
+// the step); the difference points need not, so a polish can follow a hard limit's edge
+// instead of ending at the first point near it.
+class PolishResiduals {
+ public:
+  PolishResiduals(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate,
+                  bool feasible, const volatile bool* stopFlag, std::vector<TuningPoint>& evaluated)
+      : knobs_(knobs), targets_(targets), evaluate_(evaluate), feasible_(feasible), stop_(stopFlag), evaluated_(evaluated) {}
+
+  Eigen::VectorXd operator()(const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) const {
+    const TuningPoint p = run(std::vector<double>(x.data(), x.data() + x.size()));
+    if (feasible_ && p.hardViolation > 0) throw RunError("breaks a hard limit");
+    const Eigen::VectorXd r = calcTuningResiduals(p, targets_, feasible_);
+    if (jacobian == nullptr) return r;
+    jacobian->resize(r.size(), x.size());
+    for (Eigen::Index k = 0; k < x.size(); ++k) {
+      const TuningKnob& knob = knobs_[static_cast<std::size_t>(k)];
+      double h = kDifferenceStep * (knob.logScale ? x[k] : knob.upper - knob.lower);
+      if (x[k] + h > knob.upper) h = -h;
+      std::vector<double> moved(x.data(), x.data() + x.size());
+      moved[static_cast<std::size_t>(k)] += h;
+      jacobian->col(k) = (calcTuningResiduals(run(moved), targets_, feasible_) - r) / h;
+    }
+    return r;
+  }
+
+ private:
+  TuningPoint run(const std::vector<double>& x) const {
+    if (stop_ != nullptr && *stop_) throw RunError("stopped");
+    TuningPoint p = evaluatePoint(x, targets_, evaluate_);
+    evaluated_.push_back(p);
+    if (!p.ran) throw RunError(p.failure);
+    return p;
+  }
+
+  const std::vector<TuningKnob>& knobs_;
+  const std::vector<TuningTarget>& targets_;
+  const TuningEvaluator& evaluate_;
+  bool feasible_;
+  const volatile bool* stop_;
+  std::vector<TuningPoint>& evaluated_;
+};
+
 // The Ceres polish from `start`: toward the soft targets among feasible points (a point that
 // breaks a hard limit throws, so Ceres rejects the step), or, where no start point was
 // feasible, toward the least hard violation. Every evaluation is kept in `result.polished`.
 void polish(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate,
             const TuningSettings& settings, const TuningPoint& start, const volatile bool* stopFlag, TuningResult& result) {
-  const bool feasible = start.feasible();
   std::vector<BoundedParameter> parameters;
   for (std::size_t k = 0; k < knobs.size(); ++k)
     parameters.push_back({knobs[k].key, start.knobs[k], knobs[k].lower, knobs[k].upper, knobs[k].logScale,
                           knobs[k].logScale ? 1.0 : knobs[k].upper - knobs[k].lower});
-  const ResidualFunction f = [&](const Eigen::VectorXd& x) {
-    if (stopFlag != nullptr && *stopFlag) throw RunError("stopped");
-    TuningPoint p = evaluatePoint(std::vector<double>(x.data(), x.data() + x.size()), targets, evaluate);
-    result.polished.push_back(p);
-    if (!p.ran) throw RunError(p.failure);
-    if (feasible && p.hardViolation > 0) throw RunError("breaks a hard limit");
-    return calcTuningResiduals(p, targets, feasible);
-  };
+  const PolishResiduals residuals(knobs, targets, evaluate, start.feasible(), stopFlag, result.polished);
   BoundedFitSettings fit;
   fit.maxIterations = settings.maxIterations;
   fit.maxSeconds = settings.maxSeconds;
   fit.computeCovariance = false;
-  fit.differenceStep = 1e-4;  // a swing time is smooth to ~1e-6 s at the default accuracy
   // A value target is met within 1 % of its scale (kValueFraction): a cost of 1e-8 or less.
   fit.functionTolerance = 1e-12;
   fit.parameterTolerance = 1e-10;
   try {
-    const BoundedFitResult r = solveBoundedLeastSquares(f, parameters, fit);
+    const BoundedFitResult r = solveBoundedLeastSquares(ResidualJacobianFunction(std::cref(residuals)), parameters, fit);
     result.converged = r.converged;
     result.stopReason = r.stopReason;
     result.iterations = r.iterations;
@@ -157,6 +197,38 @@ bool isBetter(const TuningPoint& a, const TuningPoint& b) {
   if (a.feasible() != b.feasible()) return a.feasible();
   if (a.feasible()) return a.cost < b.cost;
   return a.hardViolation < b.hardViolation || (a.hardViolation == b.hardViolation && a.cost < b.cost);
+}
+
+// The start points in order of merit, for the polish.
+std::vector<TuningPoint> rankStarts(std::vector<TuningPoint> points) {
+  std::stable_sort(points.begin(), points.end(), isBetter);
+  return points;
+}
+
+// Polishes from the best start; while the best point so far still misses a soft target (its
+// cost above kMetCost), from the next-best feasible start too, up to settings.polishStarts:
+// a polish that runs into a hard limit ends there (rejection), and another start may go round it.
+void polishFromBestStarts(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
+                          const TuningEvaluator& evaluate, const TuningSettings& settings, const volatile bool* stopFlag,
+                          TuningResult& result) {
+  constexpr double kMetCost = 1e-8;  // every value target within 1e-4 of its scale
+  const std::vector<TuningPoint> starts = rankStarts(result.startSet);
+  double bestCost = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < starts.size() && static_cast<int>(i) < settings.polishStarts; ++i) {
+    if (!starts[i].ran || (i > 0 && !starts[i].feasible()) || (stopFlag != nullptr && *stopFlag)) break;
+    TuningResult one;
+    polish(knobs, targets, evaluate, settings, starts[i], stopFlag, one);
+    const TuningPoint best = findBestTuningPoint(one.polished, {starts[i]});
+    if (i == 0 || isBetter(best, findBestTuningPoint(result.polished, {result.best}))) {
+      result.converged = one.converged;
+      result.stopReason = one.stopReason;
+      result.iterations = one.iterations;
+      result.polishStart = static_cast<int>(i);
+    }
+    result.polished.insert(result.polished.end(), one.polished.begin(), one.polished.end());
+    bestCost = std::min(bestCost, best.feasible() ? best.cost : bestCost);
+    if (bestCost <= kMetCost) break;
+  }
 }
 
 }  // namespace
@@ -184,7 +256,7 @@ TuningResult runKneeTuning(const std::vector<TuningKnob>& knobs, const std::vect
     throw InputError("no point of the start set ran; the first failed: " +
                      (result.startSet.empty() ? std::string("none ran") : result.startSet.front().failure));
   }
-  if (!result.interrupted) polish(knobs, targets, evaluate, settings, start, stopFlag, result);
+  if (!result.interrupted) polishFromBestStarts(knobs, targets, evaluate, settings, stopFlag, result);
   result.interrupted = stopFlag != nullptr && *stopFlag;
   result.best = findBestTuningPoint(result.startSet, result.polished);
   result.feasible = result.best.feasible();

@@ -70,7 +70,10 @@ struct TuningSettings {
   int startPoints = 24;     ///< Latin hypercube points
   std::uint64_t seed = 1;   ///< of the start set
   int jobs = 0;             ///< threads for the start set (0: all cores)
-  int maxIterations = 40;   ///< of the Ceres polish
+  int maxIterations = 40;   ///< of each Ceres polish
+  /// Polishes from the best feasible start points, the next one only while the soft targets
+  /// are still missed (a polish ends where it runs into a hard limit).
+  int polishStarts = 3;
   double maxSeconds = 120;  ///< wall-clock budget of the polish
 };
 
@@ -93,6 +96,7 @@ struct TuningResult {
   bool converged = false;             ///< Ceres converged
   std::string stopReason;
   int iterations = 0;
+  int polishStart = 0;  ///< rank of the start point whose polish gave the result (0: the best)
   std::vector<TargetOutcome> targets;
   std::vector<bool> knobAtBound;
   /// d quantity / d knob at the result (targets x knobs, SI per knob unit), central

@@ -16,9 +16,14 @@ double calcTargetMiss(const TuningTarget& target, double value) {
 Eigen::VectorXd calcTuningResiduals(const TuningPoint& point, const std::vector<TuningTarget>& targets, bool feasible) {
   std::vector<double> r;
   for (const TuningTarget& t : targets) {
-    if (t.hard == feasible) continue;
-    const double miss = calcTargetMiss(t, point.value(t.quantity)) / t.scale;
-    r.push_back(feasible ? std::sqrt(t.weight) * miss : miss);
+    const double value = point.value(t.quantity);
+    if (feasible && t.hard) {
+      const double margin = std::min(value - t.lower, t.upper - value) / t.scale;
+      r.push_back(kWallWeight * std::max(0.0, kWallWidth - margin));
+    } else if (t.hard != feasible) {
+      const double miss = calcTargetMiss(t, value) / t.scale;
+      r.push_back(feasible ? std::sqrt(t.weight) * miss : miss);
+    }
   }
   if (r.empty()) r.push_back(0);
   return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));

@@ -112,8 +112,10 @@ TEST(KneeTuning, AHardLimitBindsWhereTheSoftOptimumBreaksIt) {
   const auto r = runKneeTuning(kKnobs, {valueTarget(TuningQuantity::kSwingTime, 0.5), limit}, makeEvaluator(f), {});
   ASSERT_TRUE(r.feasible);
   EXPECT_GE(r.targets[1].margin, 0.0);  // never a result that breaks a hard limit
-  // Within 2 % of the way to the limit: rejection stops the polish on the last step before it.
-  EXPECT_NEAR(r.best.knobs[0], 0.625, 0.02);
+  // Held inside the polish's wall: at most kWallWidth scale units (2.5 mm, a = 0.594) from the edge.
+  EXPECT_LE(r.targets[1].margin, kWallWidth * limit.scale);
+  EXPECT_GE(r.best.knobs[0], 0.625 - kWallWidth * limit.scale / 0.08);
+  EXPECT_TRUE(r.targets[1].binding);
   EXPECT_FALSE(r.targets[0].met);
 }
 
