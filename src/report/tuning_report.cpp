@@ -17,6 +17,11 @@ std::string format(const char* f, double v) {
   return b;
 }
 
+// `text` padded with spaces to `width` columns (at least one space after it).
+std::string padded(const std::string& text, std::size_t width) {
+  return text + std::string(text.size() < width ? width - text.size() : 1, ' ');
+}
+
 std::string describeWindow(const TuningTarget& t) {
   const double lo = toTargetUnit(t.quantity, t.lower), hi = toTargetUnit(t.quantity, t.upper);
   if (t.lower == t.upper) return "= " + format("%.4g", lo);
@@ -33,7 +38,7 @@ void printKnobs(std::ostringstream& s, const TuningResult& r) {
   s << "  knobs\n";
   for (std::size_t k = 0; k < r.knobs.size(); ++k) {
     const TuningKnob& knob = r.knobs[k];
-    s << "    " << knob.key << std::string(std::max<std::size_t>(1, 36 - knob.key.size()), ' ') << format("%-12.6g", r.best.knobs[k])
+    s << "    " << padded(knob.key, 36) << format("%-12.6g", r.best.knobs[k])
       << "range [" << format("%g", knob.lower) << ", " << format("%g", knob.upper) << "]" << (knob.logScale ? " log" : "")
       << (k < r.knobAtBound.size() && r.knobAtBound[k] ? "  AT A RANGE END" : "") << "\n";
   }
@@ -45,7 +50,7 @@ void printTargets(std::ostringstream& s, const TuningReportInputs& in) {
   for (const TargetOutcome& o : r.targets) {
     const TuningQuantity q = o.target.quantity;
     std::string key = tuningQuantityKey(q);
-    s << "    " << key << std::string(std::max<std::size_t>(1, 24 - key.size()), ' ') << format("%-10.4f", toTargetUnit(q, o.value))
+    s << "    " << padded(key, 24) << format("%-10.4f", toTargetUnit(q, o.value))
       << "target " << describeWindow(o.target) << " (" << describeKind(o.target) << ")  "
       << (o.met ? "met" : "MISSED") << ", margin " << format("%+.4g", toTargetUnit(q, o.margin))
       << (o.binding ? "  BINDS" : "") << "\n";
@@ -57,7 +62,7 @@ void printSensitivity(std::ostringstream& s, const TuningResult& r) {
   s << "  sensitivity at the result (change of each target per unit of each knob; targets in their file units)\n";
   for (std::size_t k = 0; k < r.knobs.size(); ++k) {
     const std::string& key = r.knobs[k].key;
-    s << "    " << key << std::string(std::max<std::size_t>(1, 36 - key.size()), ' ');
+    s << "    " << padded(key, 36);
     for (std::size_t i = 0; i < r.targets.size(); ++i) {
       const TuningQuantity q = r.targets[i].target.quantity;
       s << "  " << tuningQuantityKey(q) << " "
@@ -71,7 +76,8 @@ void printSensitivity(std::ostringstream& s, const TuningResult& r) {
 std::string describeBinding(const TuningResult& r) {
   std::string b;
   for (const TargetOutcome& o : r.targets)
-    if (o.target.hard && (o.binding || !o.met)) b += std::string(b.empty() ? "" : "; ") + "hard limit " + tuningQuantityKey(o.target.quantity) + (o.met ? " at its edge" : " missed");
+    if (o.target.hard && (o.binding || !o.met)) b += std::string(b.empty() ? "" : "; ") + "hard limit " + tuningQuantityKey(o.target.quantity) +
+           (o.met ? " holds the result back (within half a scale unit of its edge)" : " missed");
   for (std::size_t k = 0; k < r.knobs.size() && k < r.knobAtBound.size(); ++k)
     if (r.knobAtBound[k]) b += std::string(b.empty() ? "" : "; ") + "knob " + r.knobs[k].key + " at a range end";
   return b.empty() ? "none (the result is inside every range and limit)" : b;

@@ -116,6 +116,8 @@ TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& co
   if (run.result.best.ran && !run.result.interrupted) {
     const TunedSetting t = model.at(run.result.best.knobs);
     run.tunedKnee = t.knee;
+    run.tunedKnee.spec.name = t.knee.name + "-tuned";
+    run.tunedKnee.spec.source = "swingsim tune " + study.path + " from " + study.kneeModelPath;
     run.lowering = t.lowering;
     run.added = t.added;
   }

@@ -80,10 +80,10 @@ void setSensitivity(const std::vector<TuningTarget>& targets, const TuningEvalua
 }
 
 // A target acts at the result where it pulls on the knobs: a soft one missed or set to a
-// value (a window of width 0), a hard one binding.
+// value (a window of width 0), a hard one binding or missed.
 bool acts(const TargetOutcome& o) {
   const TuningTarget& t = o.target;
-  if (t.hard) return o.binding;
+  if (t.hard) return o.binding || !o.met;
   return !o.met || t.lower == t.upper || std::abs(o.margin) <= kBindingFraction * t.scale;
 }
 
