@@ -47,7 +47,6 @@ std::string writeStudy(const std::filesystem::path& dir, const std::string& targ
 }
 
 TEST(TuningRun, RecoversTheLoweringAndDampingThatMadeTheTargets) {
-  SWINGSIM_RELEASE_ONLY();
   const double lowering = 0.035, scale = 2.2;  // away from the defaults (0 m, scale 1)
   const SwingResult truth = truthSwing(lowering, scale);
   const auto dir = tempDir("recover");
