@@ -77,3 +77,16 @@ TEST(TuneCli, ABadStudyIsRefusedWithFileLineKeyAndExitCode1) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(TuneCli, HelpListsTheCommandAndItsOptionsAndABadJobsIsAUsageError) {
+  EXPECT_NE(runSwingsim("--help").output.find("tune"), std::string::npos);
+  const auto help = runSwingsim("tune --help");
+  EXPECT_EQ(help.code, 0);
+  for (const char* flag : {"STUDY.yaml", "--out", "--json", "--jobs"}) EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
+  const auto bad = runSwingsim("tune " + kStudy + " --jobs -1");
+  EXPECT_EQ(bad.code, 2) << bad.output;
+}
+
+}  // namespace
