@@ -126,23 +126,29 @@ constexpr double kDifferenceStep = 1e-4;
 // instead of ending at the first point near it.
 class PolishResiduals {
  public:
+  /// `free`: the knobs the polish moves (indices into `knobs`); the others stay at `fixed`'s values.
   PolishResiduals(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate,
-                  bool feasible, const volatile bool* stopFlag, std::vector<TuningPoint>& evaluated)
-      : knobs_(knobs), targets_(targets), evaluate_(evaluate), feasible_(feasible), stop_(stopFlag), evaluated_(evaluated) {}
+                  bool feasible, const volatile bool* stopFlag, std::vector<TuningPoint>& evaluated,
+                  std::vector<std::size_t> free, std::vector<double> fixed)
+      : knobs_(knobs), targets_(targets), evaluate_(evaluate), feasible_(feasible), stop_(stopFlag), evaluated_(evaluated),
+        free_(std::move(free)), fixed_(std::move(fixed)) {}
 
   Eigen::VectorXd operator()(const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) const {
-    const TuningPoint p = run(std::vector<double>(x.data(), x.data() + x.size()));
+    std::vector<double> all = fixed_;
+    for (std::size_t i = 0; i < free_.size(); ++i) all[free_[i]] = x[static_cast<Eigen::Index>(i)];
+    const TuningPoint p = run(all);
     if (feasible_ && p.hardViolation > 0) throw RunError("breaks a hard limit");
     const Eigen::VectorXd r = calcTuningResiduals(p, targets_, feasible_);
     if (jacobian == nullptr) return r;
     jacobian->resize(r.size(), x.size());
-    for (Eigen::Index k = 0; k < x.size(); ++k) {
-      const TuningKnob& knob = knobs_[static_cast<std::size_t>(k)];
-      double h = kDifferenceStep * (knob.logScale ? x[k] : knob.upper - knob.lower);
-      if (x[k] + h > knob.upper) h = -h;
-      std::vector<double> moved(x.data(), x.data() + x.size());
-      moved[static_cast<std::size_t>(k)] += h;
-      jacobian->col(k) = (calcTuningResiduals(run(moved), targets_, feasible_) - r) / h;
+    for (std::size_t i = 0; i < free_.size(); ++i) {
+      const TuningKnob& knob = knobs_[free_[i]];
+      const double value = all[free_[i]];
+      double h = kDifferenceStep * (knob.logScale ? value : knob.upper - knob.lower);
+      if (value + h > knob.upper) h = -h;
+      std::vector<double> moved = all;
+      moved[free_[i]] += h;
+      jacobian->col(static_cast<Eigen::Index>(i)) = (calcTuningResiduals(run(moved), targets_, feasible_) - r) / h;
     }
     return r;
   }
@@ -162,18 +168,27 @@ class PolishResiduals {
   bool feasible_;
   const volatile bool* stop_;
   std::vector<TuningPoint>& evaluated_;
+  std::vector<std::size_t> free_;
+  std::vector<double> fixed_;
 };
 
-// The Ceres polish from `start`: toward the soft targets among feasible points (a point that
-// breaks a hard limit throws, so Ceres rejects the step), or, where no start point was
-// feasible, toward the least hard violation. Every evaluation is kept in `result.polished`.
+// The Ceres polish from `start` over the knobs not in `held` (held ones stay at start's
+// values): toward the soft targets among feasible points (a point that breaks a hard limit
+// throws, so Ceres rejects the step), or, where `start` is not feasible, toward the least
+// hard violation. Every evaluation is kept in `result.polished`.
 void polish(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate,
-            const TuningSettings& settings, const TuningPoint& start, const volatile bool* stopFlag, TuningResult& result) {
+            const TuningSettings& settings, const TuningPoint& start, const std::vector<bool>& held,
+            const volatile bool* stopFlag, TuningResult& result) {
   std::vector<BoundedParameter> parameters;
-  for (std::size_t k = 0; k < knobs.size(); ++k)
+  std::vector<std::size_t> free;
+  for (std::size_t k = 0; k < knobs.size(); ++k) {
+    if (held[k]) continue;
+    free.push_back(k);
     parameters.push_back({knobs[k].key, start.knobs[k], knobs[k].lower, knobs[k].upper, knobs[k].logScale,
                           knobs[k].logScale ? 1.0 : knobs[k].upper - knobs[k].lower});
-  const PolishResiduals residuals(knobs, targets, evaluate, start.feasible(), stopFlag, result.polished);
+  }
+  if (free.empty()) return;
+  const PolishResiduals residuals(knobs, targets, evaluate, start.feasible(), stopFlag, result.polished, free, start.knobs);
   BoundedFitSettings fit;
   fit.maxIterations = settings.maxIterations;
   fit.maxSeconds = settings.maxSeconds;
@@ -199,6 +214,31 @@ bool isBetter(const TuningPoint& a, const TuningPoint& b) {
   return a.hardViolation < b.hardViolation || (a.hardViolation == b.hardViolation && a.cost < b.cost);
 }
 
+// Ceres keeps a bound by projecting its steps onto the box, which can stall a polish whose
+// best point has a knob at a range end while another knob still has room: polish again from
+// that point with the knobs at a range end held there (an active-set restart, still Ceres).
+void repolishAtRangeEnds(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
+                         const TuningEvaluator& evaluate, const TuningSettings& settings, const TuningPoint& start,
+                         const volatile bool* stopFlag, TuningResult& one) {
+  const TuningPoint best = findBestTuningPoint(one.polished, {start});
+  std::vector<bool> held(knobs.size(), false);
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < knobs.size(); ++k) {
+    const double tol = kAtBoundFraction * (knobs[k].upper - knobs[k].lower);
+    held[k] = best.knobs[k] <= knobs[k].lower + tol || best.knobs[k] >= knobs[k].upper - tol;
+    count += held[k] ? 1 : 0;
+  }
+  if (count == 0 || count == knobs.size() || !best.ran) return;
+  TuningResult again;
+  polish(knobs, targets, evaluate, settings, best, held, stopFlag, again);
+  one.polished.insert(one.polished.end(), again.polished.begin(), again.polished.end());
+  one.iterations += again.iterations;
+  if (!again.stopReason.empty() || again.converged) {
+    one.converged = again.converged;
+    one.stopReason = again.stopReason;
+  }
+}
+
 // The start points in order of merit, for the polish.
 std::vector<TuningPoint> rankStarts(std::vector<TuningPoint> points) {
   std::stable_sort(points.begin(), points.end(), isBetter);
@@ -217,7 +257,8 @@ void polishFromBestStarts(const std::vector<TuningKnob>& knobs, const std::vecto
   for (std::size_t i = 0; i < starts.size() && static_cast<int>(i) < settings.polishStarts; ++i) {
     if (!starts[i].ran || (i > 0 && !starts[i].feasible()) || (stopFlag != nullptr && *stopFlag)) break;
     TuningResult one;
-    polish(knobs, targets, evaluate, settings, starts[i], stopFlag, one);
+    polish(knobs, targets, evaluate, settings, starts[i], std::vector<bool>(knobs.size(), false), stopFlag, one);
+    repolishAtRangeEnds(knobs, targets, evaluate, settings, starts[i], stopFlag, one);
     const TuningPoint best = findBestTuningPoint(one.polished, {starts[i]});
     if (i == 0 || isBetter(best, findBestTuningPoint(result.polished, {result.best}))) {
       result.converged = one.converged;

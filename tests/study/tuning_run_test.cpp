@@ -29,12 +29,14 @@ std::string slurp(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// P1's swing with the damping table scaled by `scale` at `lowering`, built without the
-// tuning code: the model file's text with a knee_effects map appended.
+// P1's swing with the damping table scaled by `scale` (to 6 decimals) at `lowering`, built
+// without the tuning code: the model file's text with a knee_effects map appended.
 SwingResult truthSwing(double lowering, double scale) {
   const std::string path = kRoot + "/models/damping-table-default.yaml";
   const KneeModel model = parseKneeModel(slurp(path) + "knee_effects:\n  model_scale: " + std::to_string(scale) + "\n", path);
-  return simulateSwing(makeSwingSetup(loadParticipant(kRoot + "/participants/p1.yaml"), model, lowering));
+  SwingOptions options;
+  options.trackImpactEnergy = true;  // simulate's options, as the tuning's swings
+  return simulateSwing(makeSwingSetup(loadParticipant(kRoot + "/participants/p1.yaml"), model, lowering), options);
 }
 
 std::string writeStudy(const std::filesystem::path& dir, const std::string& targets) {
@@ -61,6 +63,33 @@ TEST(TuningRun, RecoversTheLoweringAndDampingThatMadeTheTargets) {
   // the knobs by these tolerances (1 mm, 2 % of the scale).
   EXPECT_NEAR(run.result.best.knobs[0], lowering, 0.001);
   EXPECT_NEAR(run.result.best.knobs[1], scale, 0.02 * scale);
+}
+
+TEST(TuningRun, OnTwoKnobsItAgreesWithAFineGridSearch) {
+  SWINGSIM_RELEASE_ONLY();  // 41 x 41 swings
+  const auto dir = tempDir("grid");
+  const std::string path = (dir / "study.yaml").string();
+  std::ofstream(path) << "kind: knee-tuning\nparticipant: " << kRoot << "/participants/p1.yaml\nknee_model: " << kRoot
+                      << "/models/damping-table-default.yaml\nknobs:\n  - key: lowering_m\n    range: [0, 0.06]\n"
+                      << "  - key: knee_effects.model_scale\n    range: [1, 3]\ntargets:\n"
+                      << "  swing_time_s: {value: 0.46}\n  peak_knee_flexion_deg: {value: 62}\n";
+  const TuningStudy study = loadTuningStudy(path);
+  SweepRunControl control;
+  const TuningRun run = runTuningStudy(study, 0, control);
+  // The grid's swings are built without the tuning code (truthSwing) and scored by the same cost.
+  const int n = 40;
+  const double loweringStep = 0.06 / n, scaleStep = 2.0 / n;
+  double gridCost = 1e300, gridLowering = 0, gridScale = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      TuningPoint p;
+      p.knobs = {i * loweringStep, 1 + j * scaleStep};
+      scoreTuningPoint(p, truthSwing(p.knobs[0], p.knobs[1]), study.targets);
+      if (p.ran && p.cost < gridCost) gridCost = p.cost, gridLowering = p.knobs[0], gridScale = p.knobs[1];
+    }
+  EXPECT_NEAR(run.result.best.knobs[0], gridLowering, loweringStep);
+  EXPECT_NEAR(run.result.best.knobs[1], gridScale, scaleStep);
+  EXPECT_LE(run.result.best.cost, gridCost);
 }
 
 TEST(TuningRun, TheReportedSwingIsTheOneTheTunedFilesGive) {
