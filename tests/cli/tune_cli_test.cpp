@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 
 #include "io/json_file.h"
@@ -87,6 +88,26 @@ TEST(TuneCli, HelpListsTheCommandAndItsOptionsAndABadJobsIsAUsageError) {
   for (const char* flag : {"STUDY.yaml", "--out", "--json", "--jobs"}) EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
   const auto bad = runSwingsim("tune " + kStudy + " --jobs -1");
   EXPECT_EQ(bad.code, 2) << bad.output;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(TuneCli, ItRefusesToWriteOverItsOwnStudy) {
+  const auto dir = scratch("over-input");
+  const std::string study = (dir / "study.yaml").string();
+  fs::copy_file(kStudy, study);
+  // The copy's relative paths point nowhere: name P1 and the model absolutely.
+  std::string text = slurp(study);
+  text.replace(text.find("../participants"), 2, kRoot + "/studies/..");
+  text.replace(text.find("../models"), 2, kRoot + "/studies/..");
+  std::ofstream(study) << text;
+  const auto r = runSwingsim("tune " + study + " --out " + (dir / "out").string() + " --json " + study);
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("would write over the input"), std::string::npos) << r.output;
+  EXPECT_EQ(slurp(study), text);
+  EXPECT_FALSE(fs::exists(dir / "out" / "tuning.md"));
 }
 
 }  // namespace
