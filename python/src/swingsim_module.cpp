@@ -29,6 +29,7 @@
 #include "study/run_arguments.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
+#include "study/tuning_run.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 
@@ -163,6 +164,43 @@ py::object sweep(const py::object& studyPath, const py::object& uncertaintyValue
   return toPython(Json::parse(json));
 }
 
+/// The content of `swingsim tune STUDY --json` as Python objects, plus the tuned knee model
+/// file's text under "tuned_knee_yaml". With `out`, the command's files are written there too
+/// (one staged set). Ctrl-C stops it between swings and raises KeyboardInterrupt.
+py::object tune(const py::object& studyPath, const py::object& jobsValue, const py::object& outValue) {
+  const std::string path = readPathArgument(studyPath, "tune(): study_path");
+  const int jobs = static_cast<int>(readWholeArgument(jobsValue, "tune(): jobs", jobsRange()));
+  std::optional<std::string> out;
+  if (!outValue.is_none()) out = readPathArgument(outValue, "tune(): out");
+  const TuningStudy study = loadTuningStudy(path);
+  if (out)
+    checkOutputsAreNotInputs({{"study_path", path}, {"study_path: participant", study.participantPath},
+                              {"study_path: knee_model", study.kneeModelPath}},
+                             listFolderFiles("tune(): out", *out, kTuningOutputFiles));
+  volatile bool stop = false;
+  SweepRunControl control;
+  control.stop = &stop;
+  control.poll = [&stop] {
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) stop = true;
+  };
+  std::string json, knee;
+  {
+    py::gil_scoped_release release;
+    const TuningRun run = runTuningStudy(study, jobs, control);
+    if (!run.result.interrupted) {
+      const std::string kneeFile = out ? *out + "/tuned-knee.yaml" : "";
+      json = formatTuningRunJson(run, kneeFile);
+      knee = formatKneeModelYaml(run.tunedKnee.spec);
+      if (out) writeTuningOutputs(run, *out, std::nullopt, "swingsim.tune(" + path + ")");
+    }
+  }
+  if (stop) throw py::error_already_set();
+  py::dict result = toPython(Json::parse(json)).cast<py::dict>();
+  result["tuned_knee_yaml"] = knee;
+  return result;
+}
+
 /// The content of `swingsim fit STUDY --json`: each Mauch model's coefficients and its
 /// ME / RMSE / R^2 per bench file.
 py::object fit(const py::object& studyPath) {
@@ -245,6 +283,7 @@ PYBIND11_MODULE(_swingsim, m) {
   m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
         py::arg("jobs") = 0);
   m.def("fit", &python::fit, py::arg("study_path"));
+  m.def("tune", &python::tune, py::arg("study_path"), py::arg("jobs") = 0, py::arg("out") = py::none());
   m.def("compare", &python::compare, py::arg("study_path"));
   m.def("diagnose", &python::diagnose, py::arg("study_path"), py::arg("max_rows") = py::none());
 }

@@ -2,7 +2,7 @@
 
 Participants and knee models load from their YAML files into editable objects whose fields
 are the file's keys, in the file's units (``p.segments.shank.mass_kg``); `simulate` runs one
-swing, `sweep` a knee-axis sweep study, `fit` a cylinder-fit study, `compare` and `diagnose` a
+swing, `sweep` a knee-axis sweep study, `tune` a knee-tuning study, `fit` a cylinder-fit study, `compare` and `diagnose` a
 diagnosis study, through the same C++ functions as the command
 line, with the GIL released while they run. Bad input raises `InputError` (a ValueError)
 with the command line's ``file:line: key: ...`` message; an argument of the wrong type raises
@@ -19,7 +19,7 @@ from swingsim._swingsim import InputError, RunError
 InputError.__module__ = RunError.__module__ = "swingsim"  # shown as swingsim.InputError
 
 __all__ = ["InputError", "RunError", "SwingsimWarning", "Record", "Participant", "KneeModel", "SwingResult",
-           "load_participant", "load_knee", "simulate", "sweep", "fit", "compare", "diagnose"]
+           "load_participant", "load_knee", "simulate", "sweep", "tune", "fit", "compare", "diagnose"]
 
 
 class Record:
@@ -138,6 +138,15 @@ def sweep(study_path, uncertainty=0, seed=None, jobs=0):
     [--seed S]`: returns what the JSON file holds, as dicts and lists. jobs: worker threads,
     0 = all cores. No report or CSV is written. Ctrl-C stops it between swings."""
     return _swingsim.sweep(study_path, uncertainty, seed, jobs)
+
+
+def tune(study_path, jobs=0, out=None):
+    """A knee-tuning study, as `swingsim tune STUDY --json FILE [--jobs N]`: returns what the
+    JSON file holds, as dicts and lists, plus the tuned knee model file's text under
+    "tuned_knee_yaml". jobs: worker threads, 0 = all cores. With out (a folder), the command's
+    files are written there too (tuned-knee.yaml, tuning.md, tuning.json, tradeoff.svg).
+    Ctrl-C stops it between swings and raises KeyboardInterrupt."""
+    return _swingsim.tune(study_path, jobs, out)
 
 
 class SwingsimWarning(UserWarning):

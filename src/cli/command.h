@@ -35,6 +35,7 @@ Command addMergeCommand(CLI::App& app);
 Command addSwingsCommand(CLI::App& app);
 Command addImportOsimCommand(CLI::App& app);
 Command addExportOsimCommand(CLI::App& app);
+Command addTuneCommand(CLI::App& app);
 
 /// Declares `--flag VALUE` stored in `value` (left unset unless given), shown as `typeName`
 /// in --help. `value` must outlive the parse (a member of the command's argument struct).

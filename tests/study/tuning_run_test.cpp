@@ -1,0 +1,124 @@
+// A knee tuning on real swings (study/tuning_run.h): P1 and the damping-table knee.
+#include "study/tuning_run.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "../cli/release_only.h"
+#include "core/units.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "swing/knee_setup.h"
+
+namespace swingsim {
+namespace {
+
+const std::string kRoot = SWINGSIM_SOURCE_DIR;
+
+std::filesystem::path tempDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("swingsim_tuning_run_test-" + std::to_string(::getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// P1's swing with the damping table scaled by `scale` (to 6 decimals) at `lowering`, built
+// without the tuning code: the model file's text with a knee_effects map appended.
+SwingResult truthSwing(double lowering, double scale) {
+  const std::string path = kRoot + "/models/damping-table-default.yaml";
+  const KneeModel model = parseKneeModel(slurp(path) + "knee_effects:\n  model_scale: " + std::to_string(scale) + "\n", path);
+  SwingOptions options;
+  options.trackImpactEnergy = true;  // simulate's options, as the tuning's swings
+  return simulateSwing(makeSwingSetup(loadParticipant(kRoot + "/participants/p1.yaml"), model, lowering), options);
+}
+
+std::string writeStudy(const std::filesystem::path& dir, const std::string& targets) {
+  const std::string path = (dir / "study.yaml").string();
+  std::ofstream(path) << "kind: knee-tuning\nparticipant: " << kRoot << "/participants/p1.yaml\nknee_model: " << kRoot
+                      << "/models/damping-table-default.yaml\nknobs:\n  - key: lowering_m\n    range: [0, 0.06]\n"
+                      << "  - key: knee_effects.model_scale\n    range: [0.5, 8]\n    log_scale: true\ntargets:\n"
+                      << targets;
+  return path;
+}
+
+TEST(TuningRun, RecoversTheLoweringAndDampingThatMadeTheTargets) {
+  const double lowering = 0.035, scale = 2.2;  // away from the defaults (0 m, scale 1)
+  const SwingResult truth = truthSwing(lowering, scale);
+  const auto dir = tempDir("recover");
+  const std::string study = writeStudy(dir, "  swing_time_s: {value: " + std::to_string(truth.swingTime) +
+                                                "}\n  peak_knee_flexion_deg: {value: " +
+                                                std::to_string(truth.peakKneeFlexion->flexion * kRadToDeg) + "}\n");
+  SweepRunControl control;
+  const TuningRun run = runTuningStudy(loadTuningStudy(study), 0, control);
+  ASSERT_TRUE(run.result.feasible);
+  ASSERT_TRUE(run.result.identifiable) << run.result.identifiability;
+  // std::to_string keeps 6 decimals: targets to 1e-6 s and 1e-6 deg, far inside what moves
+  // the knobs by these tolerances (1 mm, 2 % of the scale).
+  EXPECT_NEAR(run.result.best.knobs[0], lowering, 0.001);
+  EXPECT_NEAR(run.result.best.knobs[1], scale, 0.02 * scale);
+}
+
+TEST(TuningRun, OnTwoKnobsItAgreesWithAFineGridSearch) {
+  SWINGSIM_RELEASE_ONLY();  // 41 x 41 swings
+  const auto dir = tempDir("grid");
+  const std::string path = (dir / "study.yaml").string();
+  std::ofstream(path) << "kind: knee-tuning\nparticipant: " << kRoot << "/participants/p1.yaml\nknee_model: " << kRoot
+                      << "/models/damping-table-default.yaml\nknobs:\n  - key: lowering_m\n    range: [0, 0.06]\n"
+                      << "  - key: knee_effects.model_scale\n    range: [1, 3]\ntargets:\n"
+                      << "  swing_time_s: {value: 0.46}\n  peak_knee_flexion_deg: {value: 62}\n";
+  const TuningStudy study = loadTuningStudy(path);
+  SweepRunControl control;
+  const TuningRun run = runTuningStudy(study, 0, control);
+  // The grid's swings are built without the tuning code (truthSwing) and scored by the same cost.
+  const int n = 40;
+  const double loweringStep = 0.06 / n, scaleStep = 2.0 / n;
+  double gridCost = 1e300, gridLowering = 0, gridScale = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      TuningPoint p;
+      p.knobs = {i * loweringStep, 1 + j * scaleStep};
+      scoreTuningPoint(p, truthSwing(p.knobs[0], p.knobs[1]), study.targets);
+      if (p.ran && p.cost < gridCost) gridCost = p.cost, gridLowering = p.knobs[0], gridScale = p.knobs[1];
+    }
+  EXPECT_NEAR(run.result.best.knobs[0], gridLowering, loweringStep);
+  EXPECT_NEAR(run.result.best.knobs[1], gridScale, scaleStep);
+  EXPECT_LE(run.result.best.cost, gridCost);
+}
+
+TEST(TuningRun, TheReportedSwingIsTheOneTheTunedFilesGive) {
+  SWINGSIM_RELEASE_ONLY();
+  SweepRunControl control;
+  const TuningRun run = runTuningStudy(loadTuningStudy(kRoot + "/studies/tune-p1-damping.yaml"), 0, control);
+  const auto dir = tempDir("rerun");
+  writeTuningOutputs(run, dir.string(), std::nullopt, "test");
+  for (const auto& name : kTuningOutputFiles) EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+  // simulate's own steps: load the written knee file, build the setup, energy bookkeeping on.
+  const KneeModel tuned = loadKneeModel((dir / "tuned-knee.yaml").string());
+  SwingOptions options;
+  options.trackImpactEnergy = true;
+  const SwingResult again =
+      simulateSwing(makeSwingSetup(loadParticipant(kRoot + "/participants/p1.yaml"), tuned, run.lowering, run.added), options);
+  EXPECT_EQ(again.swingTime, run.result.best.swingTime);
+  EXPECT_EQ(again.peakKneeFlexion->flexion, run.result.best.peakKneeFlexion);
+  EXPECT_EQ(*again.minToeClearance, run.result.best.minToeClearance);
+}
+
+TEST(TuningRun, StoppedAfterAFewSwingsItIsInterruptedWithABestPoint) {
+  SweepRunControl control;
+  control.stopAfterSwings = 3;
+  TuningStudy study = loadTuningStudy(kRoot + "/studies/tune-p1-damping.yaml");
+  const TuningRun run = runTuningStudy(study, 1, control);
+  EXPECT_TRUE(run.result.interrupted);
+  EXPECT_TRUE(run.result.best.ran);
+  EXPECT_LE(run.result.startSet.size(), 4u);
+}
+
+}  // namespace
+}  // namespace swingsim

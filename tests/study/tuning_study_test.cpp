@@ -1,0 +1,110 @@
+// `kind: knee-tuning` study files (study/tuning_study.h): what loads, and each bad input
+// refused with file:line: key.
+#include "study/tuning_study.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "core/input_error.h"
+#include "core/units.h"
+
+namespace swingsim {
+namespace {
+
+const std::string kRoot = SWINGSIM_SOURCE_DIR;
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / ("swingsim_tuning_study_test-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return (dir / name).string();
+}
+
+// A study with `knobs` and `targets` (YAML text, indented), on P1 and the damping table.
+std::string study(const std::string& knobs, const std::string& targets, const std::string& participant = "") {
+  return "kind: knee-tuning\nparticipant: " + (participant.empty() ? kRoot + "/participants/p1.yaml" : participant) +
+         "\nknee_model: " + kRoot + "/models/damping-table-default.yaml\nknobs:\n" + knobs + "targets:\n" + targets;
+}
+
+const std::string kKnobs = "  - key: lowering_m\n    range: [0, 0.05]\n";
+const std::string kTargets = "  swing_time_s: {value: sound_limb}\n";
+
+// The message of loading `text`, "" if it loaded.
+std::string refusal(const std::string& text) {
+  try {
+    loadTuningStudy(writeTemp("study.yaml", text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TuningStudy, LoadsTheShippedExample) {
+  const TuningStudy s = loadTuningStudy(kRoot + "/studies/tune-p1-damping.yaml");
+  ASSERT_EQ(s.knobs.size(), 3u);
+  EXPECT_EQ(s.knobs[1].key, "knee_effects.model_scale");
+  EXPECT_TRUE(s.knobs[1].logScale);
+  ASSERT_EQ(s.targets.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.targets[0].lower, 0.499);  // P1's sound_limb_swing_time_s
+  EXPECT_DOUBLE_EQ(s.targets[1].lower, 60 * kDegToRad);
+  EXPECT_TRUE(s.targets[1].hard);
+  EXPECT_NE(s.swingTimeSource.find("sound_limb_swing_time_s"), std::string::npos);
+}
+
+TEST(TuningStudy, RefusesAKnobThatIsNotANumericKeyOfTheKneeModel) {
+  const std::string m = refusal(study("  - key: damping_table.speed_rule\n    range: [0, 1]\n", kTargets));
+  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:5: knobs\[0\]\.key: expected .*numeric key.*not a number)"))) << m;
+  const std::string list = refusal(study("  - key: damping_table.moment_Nm\n    range: [0, 1]\n", kTargets));
+  EXPECT_NE(list.find("knobs[0].key: "), std::string::npos) << list;
+  EXPECT_NE(list.find("moment_Nm[0]"), std::string::npos) << list;
+}
+
+TEST(TuningStudy, RefusesARangeWhoseMinIsNotBelowItsMax) {
+  const std::string m = refusal(study("  - key: lowering_m\n    range: [0.05, 0.05]\n", kTargets));
+  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:6: knobs\[0\]\.range: expected min < max \(got 0\.05 >= 0\.05\))"))) << m;
+}
+
+TEST(TuningStudy, RefusesARangeTheKneeModelOrTheLegCannotTake) {
+  const std::string stop = refusal(study("  - key: hyperextension_stop.restitution\n    range: [0.2, 1.5]\n", kTargets));
+  EXPECT_NE(stop.find("knobs[0].range: every value of the range must be usable; at 1.5"), std::string::npos) << stop;
+  const std::string leg = refusal(study("  - key: lowering_m\n    range: [0, 0.9]\n", kTargets));
+  EXPECT_NE(leg.find("knobs[0].range: every value of the range must be usable; at 0.9"), std::string::npos) << leg;
+  const std::string log = refusal(study("  - key: lowering_m\n    range: [0, 0.05]\n    log_scale: true\n", kTargets));
+  EXPECT_NE(log.find("knobs[0].log_scale: a log-scaled knob needs a range above 0"), std::string::npos) << log;
+}
+
+TEST(TuningStudy, RefusesAnUnknownTargetAndAHardLimitWithAWeight) {
+  const std::string m = refusal(study(kKnobs, "  stance_time_s: {value: 0.5}\n"));
+  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:8: targets\.stance_time_s: unknown key)"))) << m;
+  const std::string w = refusal(study(kKnobs, "  peak_knee_flexion_deg: {min: 50, max: 70, hard: true, weight: 2}\n"));
+  EXPECT_NE(w.find("targets.peak_knee_flexion_deg.weight: a hard limit has no weight"), std::string::npos) << w;
+  const std::string win = refusal(study(kKnobs, "  peak_knee_flexion_deg: {min: 70, max: 50}\n"));
+  EXPECT_NE(win.find("targets.peak_knee_flexion_deg.max: expected min < max (got 70 >= 50)"), std::string::npos) << win;
+}
+
+TEST(TuningStudy, RefusesSoundLimbWhenTheParticipantHasNoSoundLimbSwingTime) {
+  // P1 without its sound-limb key, its knee model named by an absolute path.
+  std::ifstream in(kRoot + "/participants/p1.yaml");
+  std::string text, line;
+  while (std::getline(in, line)) {
+    if (line.rfind("sound_limb_swing_time_s", 0) == 0) continue;
+    if (line.rfind("knee_model:", 0) == 0) line = "knee_model: " + kRoot + "/models/damping-table-default.yaml";
+    text += line + "\n";
+  }
+  const std::string participant = writeTemp("no-sound-limb.yaml", text);
+  const std::string m = refusal(study(kKnobs, kTargets, participant));
+  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:8: targets\.swing_time_s\.value: sound_limb needs the participant's sound_limb_swing_time_s, which .*no-sound-limb\.yaml does not give)")))
+      << m;
+  EXPECT_EQ(refusal(study(kKnobs, "  swing_time_s: {value: 0.5}\n", participant)), "");  // a number needs no key
+}
+
+TEST(TuningStudy, RefusesAKnobGivenTwice) {
+  const std::string m = refusal(study(kKnobs + kKnobs, kTargets));
+  EXPECT_NE(m.find("knobs[1].key: this knob appears twice (got lowering_m)"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace swingsim
