@@ -50,31 +50,55 @@ std::string describeGridEdge(bool openBelow, bool openAbove, double first, doubl
   return buf;
 }
 
-// The grid parameter's interval: the grid values (and the refined best) inside the profile
-// likelihood's 95 % region (fits[g] at grid[g], fits[best] the profile's best), one-sided
-// where the region reaches an end of the descriptor's grid. The fitted parameters' intervals
-// are conditional on the grid value: their union over every grid value in that region, so
-// the grid choice cannot narrow them.
+// Where the profile statistic n_eff ln(RSS / RSS_best) crosses chi^2_1(0.95) between a grid
+// value inside the region (statistic `in`) and the next one outside (`out`): linear in the log
+// of the grid value.
+double interpolateCrossing(double gridIn, double in, double gridOut, double out) {
+  const double share = (kChi2One95 - in) / (out - in);
+  return std::exp(std::log(gridIn) + share * (std::log(gridOut) - std::log(gridIn)));
+}
+
+// The grid parameter's interval: where the profile likelihood over the grid values (and the
+// refined best) crosses its 95 % level, found by walking out from the best (fits[g] at
+// grid[g]); a side on which the grid ends inside the region is open (to the physical bound 0
+// below, unbounded above) and says so. The fitted parameters' intervals are conditional on the
+// grid value: their union over every grid value in the region, so the grid choice cannot
+// narrow them.
 void widenOverGridRegion(const DiagnosisPlant& plant, const std::vector<PlantFit>& fits, const std::vector<double>& grid,
                          std::size_t best, double nEff, EffectId id, double inflate, std::vector<EffectParameter>& parameters) {
   const EffectDescriptor& d = describeEffect(id);
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<std::size_t> order(grid.size());
+  std::vector<double> stat(grid.size());
   for (std::size_t g = 0; g < grid.size(); ++g) {
-    if (!(nEff * std::log(fits[g].rss / fits[best].rss) <= kChi2One95)) continue;
-    lo = std::min(lo, grid[g]);
-    hi = std::max(hi, grid[g]);
+    order[g] = g;
+    stat[g] = nEff * std::log(fits[g].rss / fits[best].rss);
+    if (!(stat[g] <= kChi2One95)) continue;
     const auto others = parametersWithIntervals(plant, fits[g], id, inflate);
     for (std::size_t k = 0; k < others.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
       parameters[k].lower = std::min(parameters[k].lower, others[k].lower);
       parameters[k].upper = std::max(parameters[k].upper, others[k].upper);
     }
   }
-  const bool openBelow = lo <= d.grid.front(), openAbove = hi >= d.grid.back();
-  parameters.back().lower = openBelow ? 0.0 : lo * d.gridReportScale;
-  parameters.back().upper = openAbove ? std::numeric_limits<double>::infinity() : hi * d.gridReportScale;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return grid[a] < grid[b]; });
+  const std::size_t at = static_cast<std::size_t>(std::find(order.begin(), order.end(), best) - order.begin());
+  bool openBelow = true, openAbove = true;
+  EffectParameter& p = parameters.back();
+  p.lower = 0.0;
+  p.upper = std::numeric_limits<double>::infinity();
+  for (std::size_t i = at; i-- > 0;)
+    if (!(stat[order[i]] <= kChi2One95)) {
+      p.lower = interpolateCrossing(grid[order[i + 1]], stat[order[i + 1]], grid[order[i]], stat[order[i]]) * d.gridReportScale;
+      openBelow = false;
+      break;
+    }
+  for (std::size_t i = at + 1; i < order.size(); ++i)
+    if (!(stat[order[i]] <= kChi2One95)) {
+      p.upper = interpolateCrossing(grid[order[i - 1]], stat[order[i - 1]], grid[order[i]], stat[order[i]]) * d.gridReportScale;
+      openAbove = false;
+      break;
+    }
   if (openBelow || openAbove)
-    parameters.back().intervalNote =
-        describeGridEdge(openBelow, openAbove, d.grid.front() * d.gridReportScale, d.grid.back() * d.gridReportScale);
+    p.intervalNote = describeGridEdge(openBelow, openAbove, d.grid.front() * d.gridReportScale, d.grid.back() * d.gridReportScale);
 }
 
 // The profile's best between grid values: the vertex of the parabola through the log grid
