@@ -72,5 +72,22 @@ TEST(DiagnosisCalibration, SwingNullsAcceptNothing) {
   EXPECT_LE(s.other, kMaxFalseAcceptances);
 }
 
+// The bench: seal friction 60 N at a tanh width of 7 mm/s (between the width grid's 5 and
+// 10 mm/s) on drawn switch constants refitted from scratch.
+TEST(DiagnosisCalibration, BenchCoulombFrictionIsNamedCoveredAndUnbiased) {
+  SWINGSIM_RELEASE_ONLY();
+  const CalibrationCase c = findCase("cylinder", "coulomb_friction");
+  const CaseSummary s = runSummary(c);
+  EXPECT_GE(s.named, kMinNamed);
+  EXPECT_GE(s.covered, kMinCovered);
+  EXPECT_LT(std::abs(s.bias), 0.1 * c.truth);
+}
+
+TEST(DiagnosisCalibration, BenchNullsAcceptNothing) {
+  SWINGSIM_RELEASE_ONLY();
+  const CaseSummary s = runSummary(findCase("cylinder", ""));
+  EXPECT_LE(s.other, kMaxFalseAcceptances);
+}
+
 }  // namespace
 }  // namespace swingsim
