@@ -79,10 +79,14 @@ void widenOverGridRegion(const DiagnosisPlant& plant, const std::vector<PlantFit
       parameters[k].upper = std::max(parameters[k].upper, others[k].upper);
     }
   }
+  EffectParameter& p = parameters.back();
+  if (d.grid.size() < 2) {  // a one-value "grid" is a switch (com_rule_proportional), not a profile
+    p.lower = p.upper = grid[best] * d.gridReportScale;
+    return;
+  }
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return grid[a] < grid[b]; });
   const std::size_t at = static_cast<std::size_t>(std::find(order.begin(), order.end(), best) - order.begin());
   bool openBelow = true, openAbove = true;
-  EffectParameter& p = parameters.back();
   p.lower = 0.0;
   p.upper = std::numeric_limits<double>::infinity();
   for (std::size_t i = at; i-- > 0;)

@@ -58,8 +58,9 @@ class GridPlant final : public DiagnosisPlant {
     return m;
   }
   PlantModelPtr combine(const PlantModel& a, const PlantModel&, EffectId id) const override { return addEffect(a, id, 0.01); }
-  std::vector<double> effectValues(const PlantModel& model, EffectId) const override {
+  std::vector<double> effectValues(const PlantModel& model, EffectId id) const override {
     const auto& m = dynamic_cast<const GridModel&>(model);
+    if (id == EffectId::kComRuleProportional) return {m.width};  // its one "grid" value
     return {m.fitted ? 50.0 : 0.0, m.width};  // force_N, width_m_per_s
   }
   bool checkPhysical(const PlantModel&, EffectId, std::string&) const override { return true; }
@@ -113,6 +114,20 @@ TEST(GridProfile, AFlatProfileIsOpenBothWays) {
   EXPECT_EQ(width.lower, 0.0);
   EXPECT_EQ(width.upper, std::numeric_limits<double>::infinity());
   EXPECT_NE(width.intervalNote.find("open both ways"), std::string::npos) << width.intervalNote;
+}
+
+// A one-value grid is a switch (com_rule_proportional: on), not a profile: its value, no
+// one-sided interval.
+TEST(GridProfile, AOneValueGridIsItsValue) {
+  const GridPlant plant(0.007, 1.0);
+  const PlantFit current = plant.fit(*plant.baseModel());
+  const CandidateScore c =
+      scoreCandidate(plant, current, EffectId::kComRuleProportional, EffectSelectionSettings{}, nullptr);
+  ASSERT_EQ(c.parameters.size(), 1u);
+  EXPECT_EQ(c.parameters[0].value, 1.0);
+  EXPECT_EQ(c.parameters[0].lower, 1.0);
+  EXPECT_EQ(c.parameters[0].upper, 1.0);
+  EXPECT_TRUE(c.parameters[0].intervalNote.empty()) << c.parameters[0].intervalNote;
 }
 
 }  // namespace
