@@ -7,10 +7,10 @@ namespace swingsim {
 
 namespace {
 
-// Measured by the calibration study on 2026-11-26, 20 noise seeds a case (1-20):
+// Measured by the calibration study on 2026-11-26, 20 noise seeds a case (1-20), 162 s wall
+// on 2 cores:
 //   bash scripts/diagnosis-calibration.sh --seeds 20 --jobs 2
-// (out/calibration/calibration.csv; switch_delay re-measured with --only cylinder/switch_delay
-// once it was checked on the refit's latch rate). Sizes and truths: tests/identify/diagnosis_calibration.h;
+// (out/calibration/calibration.csv). Sizes and truths: tests/identify/diagnosis_calibration.h;
 // the table and what it means: docs/diagnosis.md, "How far the intervals can be trusted
 // (calibration)". Re-measure and update together when the diagnosis changes.
 constexpr MeasuredCoverage kMeasured[] = {
