@@ -65,17 +65,32 @@ inline fs::path scratchDir(const std::string& tag) {
   return fs::temp_directory_path() / ("swingsim-calibration-" + tag + "-" + std::to_string(::getpid()));
 }
 
-/// The swing study of `truth` (files from `files`, default the truth), noise seed `seed`,
-/// diagnosed as a user's files: train normal, validate slow and fast.
+/// Every `every`-th sample of a swing: the same swing recorded at 1/every of the rate.
+inline independent::SwingSamples keepEvery(const independent::SwingSamples& s, std::size_t every) {
+  independent::SwingSamples out;
+  for (std::size_t i = 0; i < s.time.size(); i += every) {
+    out.time.push_back(s.time[i]);
+    out.hipDeg.push_back(s.hipDeg[i]);
+    out.kneeDeg.push_back(s.kneeDeg[i]);
+    out.hipMomentNm.push_back(s.hipMomentNm[i]);
+    out.cleanKneeDeg.push_back(s.cleanKneeDeg[i]);
+  }
+  return out;
+}
+
+/// The swing study of `truth` (the user's participant and knee files from `files`), noise
+/// seed `seed` (the next ones for the other records), each record keeping every `every`-th
+/// sample, diagnosed as a user's files: train normal, validate slow and fast.
 inline Diagnosis diagnoseSwing(const independent::SwingTruth& truth, const independent::SwingTruth& files,
-                               std::uint64_t seed, const std::string& tag) {
+                               std::uint64_t seed, const std::string& tag, std::size_t every = 1) {
   const fs::path dir = scratchDir(tag);
   fs::remove_all(dir);
   fs::create_directories(dir);
   independent::writeSwingModelFiles(files, dir.string());
   std::uint64_t s = seed;
   for (const auto& d : independent::threeDrives())
-    independent::writeSwingCsv(independent::generateSwing(truth, d, kSwingNoiseDeg, s++), (dir / (d.name + ".csv")).string());
+    independent::writeSwingCsv(keepEvery(independent::generateSwing(truth, d, kSwingNoiseDeg, s++), every),
+                               (dir / (d.name + ".csv")).string());
   {
     std::ofstream study(dir / "study.yaml");
     study << "kind: swing-diagnosis\nname: calibration-" << tag << "\nparticipant: participant.yaml\n"
