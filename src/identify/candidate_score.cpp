@@ -33,26 +33,99 @@ constexpr double kNoLikelihoodGain = 0.1;
 // what the interval's edge means.
 constexpr double kEnormousRanges = 100;
 
-// The grid parameter's interval: the grid values inside the profile likelihood's 95 %
-// region (fits[g] at grid[g], fits[best] the profile's best). The fitted parameters'
-// intervals are conditional on the grid value: their union over every grid value in that
-// region, so the grid choice cannot narrow them.
+// How the grid parameter's interval was found when the profile's 95 % region reaches an end of
+// the grid: the likelihood was not seen to fall beyond it, so that side is open (to the
+// parameter's physical bound 0 below, unbounded above) and the grid's end is no 95 % limit.
+std::string describeGridEdge(bool openBelow, bool openAbove, double first, double last) {
+  char buf[200];
+  if (openBelow && openAbove)
+    std::snprintf(buf, sizeof buf, "profile over the grid; its 95 %% region spans the whole grid %.4g .. %.4g: open both ways",
+                  first, last);
+  else if (openBelow)
+    std::snprintf(buf, sizeof buf, "profile over the grid; one-sided: its 95 %% region reaches the grid's smallest value %.4g and is open below it",
+                  first);
+  else
+    std::snprintf(buf, sizeof buf, "profile over the grid; one-sided: its 95 %% region reaches the grid's largest value %.4g and is open above it",
+                  last);
+  return buf;
+}
+
+// Where the profile statistic n_eff ln(RSS / RSS_best) crosses chi^2_1(0.95) between a grid
+// value inside the region (statistic `in`) and the next one outside (`out`): linear in the log
+// of the grid value.
+double interpolateCrossing(double gridIn, double in, double gridOut, double out) {
+  const double share = (kChi2One95 - in) / (out - in);
+  return std::exp(std::log(gridIn) + share * (std::log(gridOut) - std::log(gridIn)));
+}
+
+// The grid parameter's interval: where the profile likelihood over the grid values (and the
+// refined best) crosses its 95 % level, found by walking out from the best (fits[g] at
+// grid[g]); a side on which the grid ends inside the region is open (to the physical bound 0
+// below, unbounded above) and says so. The fitted parameters' intervals are conditional on the
+// grid value: their union over every grid value in the region, so the grid choice cannot
+// narrow them.
 void widenOverGridRegion(const DiagnosisPlant& plant, const std::vector<PlantFit>& fits, const std::vector<double>& grid,
                          std::size_t best, double nEff, EffectId id, double inflate, std::vector<EffectParameter>& parameters) {
   const EffectDescriptor& d = describeEffect(id);
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<std::size_t> order(grid.size());
+  std::vector<double> stat(grid.size());
   for (std::size_t g = 0; g < grid.size(); ++g) {
-    if (!(nEff * std::log(fits[g].rss / fits[best].rss) <= kChi2One95)) continue;
-    lo = std::min(lo, grid[g] * d.gridReportScale);
-    hi = std::max(hi, grid[g] * d.gridReportScale);
+    order[g] = g;
+    stat[g] = nEff * std::log(fits[g].rss / fits[best].rss);
+    if (!(stat[g] <= kChi2One95)) continue;
     const auto others = parametersWithIntervals(plant, fits[g], id, inflate);
     for (std::size_t k = 0; k < others.size() && static_cast<int>(k) < d.fittedParameters; ++k) {
       parameters[k].lower = std::min(parameters[k].lower, others[k].lower);
       parameters[k].upper = std::max(parameters[k].upper, others[k].upper);
     }
   }
-  parameters.back().lower = lo;
-  parameters.back().upper = hi;
+  EffectParameter& p = parameters.back();
+  if (d.grid.size() < 2) {  // a one-value "grid" is a switch (com_rule_proportional), not a profile
+    p.lower = p.upper = grid[best] * d.gridReportScale;
+    return;
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return grid[a] < grid[b]; });
+  const std::size_t at = static_cast<std::size_t>(std::find(order.begin(), order.end(), best) - order.begin());
+  bool openBelow = true, openAbove = true;
+  p.lower = 0.0;
+  p.upper = std::numeric_limits<double>::infinity();
+  for (std::size_t i = at; i-- > 0;)
+    if (!(stat[order[i]] <= kChi2One95)) {
+      p.lower = interpolateCrossing(grid[order[i + 1]], stat[order[i + 1]], grid[order[i]], stat[order[i]]) * d.gridReportScale;
+      openBelow = false;
+      break;
+    }
+  for (std::size_t i = at + 1; i < order.size(); ++i)
+    if (!(stat[order[i]] <= kChi2One95)) {
+      p.upper = interpolateCrossing(grid[order[i - 1]], stat[order[i - 1]], grid[order[i]], stat[order[i]]) * d.gridReportScale;
+      openAbove = false;
+      break;
+    }
+  if (openBelow || openAbove)
+    p.intervalNote = describeGridEdge(openBelow, openAbove, d.grid.front() * d.gridReportScale, d.grid.back() * d.gridReportScale);
+}
+
+// The profile's best between grid values: the vertex of the parabola through the log grid
+// value and the RSS of the best and its two neighbours, fitted once and kept when it fits the
+// training records better. A best at an end of the grid is not refined (its interval is
+// one-sided instead). Appends to `grid` and `fits`; returns the index of the best.
+std::size_t refineGridBest(const DiagnosisPlant& plant, const PlantModel& current, EffectId id, std::vector<double>& grid,
+                           std::vector<PlantFit>& fits, std::size_t best) {
+  if (best == 0 || best + 1 >= grid.size() || !(grid[best - 1] > 0)) return best;
+  const double u0 = std::log(grid[best - 1]), u1 = std::log(grid[best]), u2 = std::log(grid[best + 1]);
+  const double r0 = fits[best - 1].rss, r1 = fits[best].rss, r2 = fits[best + 1].rss;
+  const double denominator = (u1 - u0) * (r1 - r2) - (u1 - u2) * (r1 - r0);
+  if (!(std::abs(denominator) > 0)) return best;
+  double u = u1 - 0.5 * ((u1 - u0) * (u1 - u0) * (r1 - r2) - (u1 - u2) * (u1 - u2) * (r1 - r0)) / denominator;
+  u = std::clamp(u, u0, u2);
+  if (!std::isfinite(u) || std::abs(u - u1) < 1e-3) return best;
+  try {
+    fits.push_back(plant.fit(*plant.addEffect(current, id, std::exp(u))));
+  } catch (const RunError&) {
+    return best;  // the grid's own best stands
+  }
+  grid.push_back(std::exp(u));
+  return fits.back().rss < fits[best].rss ? fits.size() - 1 : best;
 }
 
 // Where the squared error fell most from `current` to `fit`, by the current model's phases
@@ -125,7 +198,7 @@ CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& curre
   c.effect = d.name;
   c.notApplicable = plant.checkApplicable(*current.model, id);
   if (!c.notApplicable.empty()) return c;
-  const std::vector<double> grid = d.grid.empty() ? std::vector<double>{0.0} : d.grid;
+  std::vector<double> grid = d.grid.empty() ? std::vector<double>{0.0} : d.grid;
   std::vector<PlantFit> fits;
   std::size_t best = 0;
   for (double g : grid) {
@@ -137,6 +210,7 @@ CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& curre
     }
     if (fits.back().rss < fits[best].rss) best = fits.size() - 1;
   }
+  if (!d.grid.empty()) best = refineGridBest(plant, *current.model, id, grid, fits, best);
   const PlantFit& s = fits[best];
   const int dof = d.degreesOfFreedom();
   LrTest t = calcLrTest(current.rss, s.rss, s.likelihoodResidual, dof);

@@ -50,8 +50,13 @@ const std::vector<EffectDescriptor>& effectTable() {
        "Burkett 2004 applies friction Tc only near extension; bearings and seals rub everywhere",
        "swings at several speeds (friction does not grow with knee speed)",
        {"moment_Nm", "smoothing_deg_s"}, 1,
-       // tanh smoothing rate of the friction, rad/s (reported in deg/s)
-       {0.5, 1.0, 2.0, 5.0}, kRadToDeg, false},
+       // tanh smoothing rate of the friction, rad/s (reported in deg/s). Bearing and seal
+       // friction reverses within a few deg/s (an assumption: no knee's was measured; a
+       // Stribeck speed of 1e-3..1e-2 m/s on a 1-2 cm bearing radius is 0.05-1 rad/s), so the
+       // grid reaches 0.1 rad/s, where the swing's integration still follows it (the
+       // calibration study in docs/diagnosis.md measured the cost); between grid values the
+       // profile's best is refined (identify/candidate_score.cpp).
+       {0.1, 0.2, 0.5, 1.0, 2.0, 5.0}, kRadToDeg, false},
       {EffectId::kKneeViscousDamping, P::kSwing, "knee_viscous_damping",
        "extra knee damping proportional to knee speed (a stiffer hydraulic setting than the model's)",
        "swing-phase control knees resist in proportion to speed; the damping table is an assumption",

@@ -7,6 +7,7 @@
 #include "core/text_format.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "report/diagnosis_coverage.h"
 #include "report/overlay_plot.h"
 #include "report/svg_plot.h"
 
@@ -55,6 +56,17 @@ Json parametersJson(const std::vector<EffectParameter>& parameters) {
   Json j = {{"values", values}, {"confidence_intervals", intervals}};
   if (!notes.empty()) j["interval_notes"] = notes;  // how an interval other than Wald's was found
   return j;
+}
+
+// The calibration study's measured coverage for each accepted effect it measured.
+Json coverageJson(const std::vector<std::string>& accepted) {
+  Json out = Json::object();
+  for (const auto& a : accepted)
+    if (const auto m = findMeasuredCoverage(a))
+      out[a] = {{"parameter", m->parameter}, {"seeds", m->seeds},         {"named_first", m->named},
+                {"scored", m->scored}, {"covered", m->covered}, {"bias_percent", m->biasPercent}, {"sd_percent", m->sdPercent},
+                {"caveat", m->caveat}};
+  return out;
 }
 
 Json candidateJson(const CandidateScore& c, int step, const std::vector<std::string>& stems) {
@@ -274,7 +286,8 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
 std::string formatAcceptedEffect(const EffectScore& c, const std::string& sentence) {
   std::string out = "  " + c.effect + ": " + sentence + "\n";
   for (const auto& p : c.parameters)
-    out += fmt("    %-24s %12.5g  (95 %% CI %.5g .. %.5g)\n", p.name.c_str(), p.value, p.lower, p.upper);
+    out += fmt("    %-24s %12.5g  (95 %% CI %.5g .. %.5g", p.name.c_str(), p.value, p.lower, p.upper) +
+           (p.intervalNote.empty() ? "" : "; " + p.intervalNote) + ")\n";
   return out + "    acted most in: " + c.where + "\n    sign: " + c.physicalNote + "\n";
 }
 
@@ -321,7 +334,8 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   }
   out += "\naccepted effects, in order:\n";
   if (dg.accepted.empty()) out += "  none\n";
-  for (const auto& c : dg.acceptedScores) out += formatAcceptedEffect(c, describeEffect(c.id).sentence);
+  for (const auto& c : dg.acceptedScores)
+    out += formatAcceptedEffect(c, describeEffect(c.id).sentence) + formatMeasuredCoverage(c.effect);
   for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
   for (const auto& c : dg.confounds) out += "confound: " + c + "\n";
   for (const auto& p : dg.finalParameters) out += formatBaseParameter("", " after:", p);
@@ -395,6 +409,7 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"more_swings_for_power", powerJson(dg.power)},
           {"structure", dg.structureNote},
           {"warnings", dg.warnings}};
+  if (!dg.accepted.empty()) out["interval_coverage"] = coverageJson(dg.accepted);
   if (std::isfinite(dg.baseline.pooledValidationRmse))
     out["pooled_validation_rmse"] = {{"baseline", dg.baseline.pooledValidationRmse},
                                      {"final", dg.final.pooledValidationRmse}};

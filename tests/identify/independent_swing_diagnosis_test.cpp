@@ -6,57 +6,21 @@
 // explained.
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <random>
 
-#include "../independent/swing_generator.h"
-#include "identify/diagnosis_engine.h"
+#include "diagnosis_calibration.h"
 #include "diagnosis_outcome.h"
-#include "study/diagnosis_study.h"
 
 namespace swingsim {
 namespace {
 
-namespace fs = std::filesystem;
-
-constexpr double kNoiseDeg = 0.5;  // as in the swing demo
-
-// Every `every`-th sample of a swing: the same swing recorded at 1/every of the rate.
-independent::SwingSamples keepEvery(const independent::SwingSamples& s, std::size_t every) {
-  independent::SwingSamples out;
-  for (std::size_t i = 0; i < s.time.size(); i += every) {
-    out.time.push_back(s.time[i]);
-    out.hipDeg.push_back(s.hipDeg[i]);
-    out.kneeDeg.push_back(s.kneeDeg[i]);
-    out.hipMomentNm.push_back(s.hipMomentNm[i]);
-    out.cleanKneeDeg.push_back(s.cleanKneeDeg[i]);
-  }
-  return out;
-}
+constexpr double kNoiseDeg = calibration::kSwingNoiseDeg;  // as in the swing demo
 
 // `files`: what the user's participant and knee files say (default: the truth itself);
 // `every`: the records keep every `every`-th sample (a lower sampling rate).
 Diagnosis diagnoseIndependent(const independent::SwingTruth& truth, std::uint64_t seed, const std::string& tag,
                               const independent::SwingTruth* files = nullptr, std::size_t every = 1) {
-  const fs::path dir = fs::temp_directory_path() / ("swingsim-indep-swing-" + tag + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  independent::writeSwingModelFiles(files ? *files : truth, dir.string());
-  std::uint64_t s = seed;
-  for (const auto& d : independent::threeDrives())
-    independent::writeSwingCsv(keepEvery(independent::generateSwing(truth, d, kNoiseDeg, s++), every),
-                               (dir / (d.name + ".csv")).string());
-  {
-    std::ofstream study(dir / "study.yaml");
-    study << "kind: swing-diagnosis\nname: independent-" << tag << "\nparticipant: participant.yaml\n"
-          << "base_model: knee.yaml\ntrain: [normal.csv]\nvalidate: [slow.csv, fast.csv]\n";
-  }
-  const DiagnosisStudy study = loadDiagnosisStudy((dir / "study.yaml").string());
-  const auto plant = loadDiagnosisPlant(study, 8);
-  const Diagnosis dg = runDiagnosis(*plant, study.settings);
-  fs::remove_all(dir);
+  const Diagnosis dg = calibration::diagnoseSwing(truth, files ? *files : truth, seed, "indep-" + tag, every);
   testing::printOutcome(tag, dg, "deg", kNoiseDeg);
   return dg;
 }

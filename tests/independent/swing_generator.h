@@ -38,6 +38,9 @@ struct SwingTruth {
   /// linear in speed (moment = -table * rate / reference).
   double tableMoment = 2.0;
   double referenceDegS = 150.0;
+  /// Extension resistance as a fraction of flexion resistance (the knee file's
+  /// extension_factor; swing-phase control knees set the two valves apart).
+  double extensionFactor = 1.0;
   // Hidden effects (0 = off).
   double extraViscous = 0;       // N m s/rad (library: knee_viscous_damping)
   double coulomb = 0;            // N m, tanh smoothing `coulombRate` rad/s (library: knee_coulomb_friction)
@@ -47,6 +50,13 @@ struct SwingTruth {
   /// k (theta - phi - offset) flexing the hip and extending the knee. N m/rad.
   double strapStiffness = 0;
   double strapOffset = 0.0;      // rad
+  /// The drive that really acts is this times the recorded hip moment (library:
+  /// hip_moment_scale); the CSV keeps the recorded one.
+  double hipDriveGain = 1.0;
+  /// Hip and knee flexion rates at toe-off, rad/s (library: toe_off_velocity); the participant
+  /// file keeps 0.
+  double toeOffHipRate = 0.0;
+  double toeOffKneeRate = 0.0;
 };
 
 /// A hip drive: flexion half-sine then extension half-sine, then nothing.
@@ -79,7 +89,7 @@ inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 
 /// Knee moment (N m, positive flexes) from the knee law and the hidden knee effects.
 inline double kneeMoment(const SwingTruth& m, double theta, double thetaDot, double phi) {
-  const double c = m.tableMoment / (m.referenceDegS * kPi / 180.0);
+  const double c = m.tableMoment / (m.referenceDegS * kPi / 180.0) * (thetaDot < 0 ? m.extensionFactor : 1.0);
   double M = -c * thetaDot;
   M += -m.extraViscous * thetaDot - m.coulomb * std::tanh(thetaDot / m.coulombRate) - m.assistStiffness * theta;
   M += -m.strapStiffness * (theta - phi - m.strapOffset);
@@ -135,7 +145,7 @@ inline void chainAccelerations(const Segment& thigh, const Segment& shank, const
 inline void accelerations(const SwingTruth& m, const HipDrive& d, double t, const double* y, double* acc) {
   const double theta = y[0] - y[1], thetaDot = y[2] - y[3];
   const double Mk = kneeMoment(m, theta, thetaDot, y[0]);
-  const double Mh = hipMoment(d, t) + strapHipMoment(m, theta, y[0]);
+  const double Mh = m.hipDriveGain * hipMoment(d, t) + strapHipMoment(m, theta, y[0]);
   chainAccelerations(m.thigh, m.shank, m.foot, y, Mh, Mk, acc);
 }
 
@@ -150,7 +160,7 @@ inline SwingSamples generateSwing(const SwingTruth& m, const HipDrive& d, double
                                   double hip0Deg = -15.0, double knee0Deg = 10.0, double endKneeDeg = 8.0,
                                   double rate = 500.0, double step = 1e-4) {
   const double deg = kPi / 180.0;
-  double y[4] = {hip0Deg * deg, (hip0Deg - knee0Deg) * deg, 0.0, 0.0};
+  double y[4] = {hip0Deg * deg, (hip0Deg - knee0Deg) * deg, m.toeOffHipRate, m.toeOffHipRate - m.toeOffKneeRate};
   std::mt19937_64 engine(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   SwingSamples s;
@@ -202,7 +212,7 @@ inline void writeSwingModelFiles(const SwingTruth& m, const std::string& dir) {
   std::ofstream knee(dir + "/knee.yaml");
   knee << "kind: damping_table\nname: constant-damping\nsource: independent test generator\n"
        << "damping_table:\n  reference_speed_deg_s: " << m.referenceDegS << "\n  speed_rule: linear\n"
-       << "  extension_factor: 1.0\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m.tableMoment << ", "
+       << "  extension_factor: " << m.extensionFactor << "\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m.tableMoment << ", "
        << m.tableMoment << ", " << m.tableMoment << "]\n"
        << "hyperextension_stop: {engage_flexion_deg: 0, stiffness_Nm_per_rad1p5: 20000, restitution: 0.4}\n";
   std::ofstream p(dir + "/participant.yaml");
