@@ -121,5 +121,25 @@ TEST(KneeTuningLimits, AWindowNoStartPointHitsIsFoundAndItsSoftOptimumTaken) {
   EXPECT_GE(r.best.knobs[1], 0.51 - 1.01e-3);
 }
 
+TEST(KneeTuningLimits, APolishEndingPastALimitGivesTheBestPointThatMeetsIt) {
+  // The linear case with a weak penalty (weight 1): the soft targets pull Ceres' solution past
+  // the clearance limit, so the result must be another evaluated point, the best that meets it.
+  const Fake f{[](double a, double) { return 0.4 + 0.1 * a; }, [](double, double b) { return 1.0 + 10 * kDeg * b; },
+               [](double a, double b) { return 0.1 - 0.05 * (a + b); }};
+  const std::vector<TuningTarget> targets = {softValue(TuningQuantity::kSwingTime, 0.48, 1),
+                                             softValue(TuningQuantity::kPeakKneeFlexion, 1.0 + 8 * kDeg, 4),
+                                             hardWindow(TuningQuantity::kMinToeClearance, 0.03, INFINITY)};
+  TuningSettings settings;
+  settings.penalty.weight = 1;
+  const TuningResult r = runKneeTuning(kUnitKnobs, targets, makeEvaluator(f), settings);
+  ASSERT_TRUE(r.polishEnd.ran);
+  EXPECT_FALSE(r.polishEnd.feasible());
+  ASSERT_TRUE(r.feasible);
+  EXPECT_GE(r.targets[2].margin, 0.0);
+  for (const auto* set : {&r.startSet, &r.polished})
+    for (const TuningPoint& p : *set)
+      if (p.feasible()) EXPECT_GE(p.cost, r.best.cost);
+}
+
 }  // namespace
 }  // namespace swingsim
