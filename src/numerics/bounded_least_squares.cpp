@@ -175,6 +175,7 @@ ceres::Solver::Options makeSolverOptions(const BoundedFitSettings& settings) {
   options.minimizer_progress_to_stdout = false;
   options.num_threads = 1;
   options.use_nonmonotonic_steps = settings.nonmonotonicSteps;
+  if (!settings.boundsLineSearch) options.max_num_line_search_step_size_iterations = 0;
   return options;
 }
 

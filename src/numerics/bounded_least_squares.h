@@ -44,6 +44,11 @@ struct BoundedFitSettings {
   /// step may raise the cost a little if the iterations as a whole fall, which crosses
   /// curved, narrow valleys in fewer iterations.
   bool nonmonotonicSteps = false;
+  /// Ceres' projected line search along each trust-region step of a bounded problem (every
+  /// parameter here has bounds). Off, the trust region alone sizes the steps: a residual with a
+  /// steep one-sided penalty otherwise gets Armijo steps of ~1e-4 of the trust-region step,
+  /// each costing a residual and Jacobian evaluation.
+  bool boundsLineSearch = true;
 };
 
 struct BoundedFitResult {

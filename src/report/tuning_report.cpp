@@ -77,7 +77,7 @@ std::string describeBinding(const TuningResult& r) {
   std::string b;
   for (const TargetOutcome& o : r.targets)
     if (o.target.hard && (o.binding || !o.met)) b += std::string(b.empty() ? "" : "; ") + "hard limit " + tuningQuantityKey(o.target.quantity) +
-           (o.met ? " holds the result back (within half a scale unit of its edge)" : " missed");
+           (o.met ? " holds the result back (at its edge)" : " missed");
   for (std::size_t k = 0; k < r.knobs.size() && k < r.knobAtBound.size(); ++k)
     if (r.knobAtBound[k]) b += std::string(b.empty() ? "" : "; ") + "knob " + r.knobs[k].key + " at a range end";
   return b.empty() ? "none (the result is inside every range and limit)" : b;
@@ -109,6 +109,9 @@ std::string formatTuningSummary(const TuningReportInputs& in) {
   s << "  result              " << (r.feasible ? "meets every hard limit" : "NO SETTING MET EVERY HARD LIMIT: the least violation")
     << "; Ceres " << (r.converged ? "converged" : "stopped: " + r.stopReason) << " after " << r.iterations
     << " iterations from start point " << r.polishStart + 1 << " of the ranked start set\n";
+  if (r.feasible && r.polishEnd.ran && !r.polishEnd.feasible())
+    s << "  polish end          Ceres' solution breaks a hard limit (its penalty let it past); the result is the best "
+         "evaluated setting that meets every one\n";
   printKnobs(s, r);
   printTargets(s, in);
   s << "  binding             " << describeBinding(r) << "\n";
@@ -129,7 +132,8 @@ std::string formatTuningMarkdown(const TuningReportInputs& in) {
   if (!in.commandLine.empty()) s << "`" << in.commandLine << "`\n\n";
   s << "Participant " << in.participantName << " (`" << in.participantPath << "`), knee model `" << in.kneeModelPath
     << "`. Start set: a Latin hypercube over the knobs' ranges, then a bounded least-squares polish (Ceres) from the best "
-       "point that meets every hard limit; hard limits are enforced by rejecting the points that break them. "
+       "point (those that meet every hard limit first), each hard limit a penalty that asks for a small margin inside it; "
+       "the result is the best evaluated point that meets every hard limit. "
        "Soft targets cost weight x (miss / scale)^2, scales 0.01 s, 1 deg, 0.005 m, 10 deg/s. See docs/tuning.md.\n\n";
   s << "```\n" << formatTuningSummary(in) << "```\n\n";
   s << "Tuned knee model: `" << in.kneeFile << "`. Trade-off figure: `tradeoff.svg` (swing time against peak knee flexion "
@@ -197,6 +201,7 @@ std::string formatTuningJson(const TuningReportInputs& in) {
   j["converged"] = r.converged;
   j["iterations"] = r.iterations;
   j["polish_start_rank"] = r.polishStart + 1;
+  j["polish_end"] = makePointJson(r.polishEnd, "polish end");
   j["stop_reason"] = r.stopReason;
   j["evaluations"] = r.evaluations;
   Json knobs = Json::array();

@@ -3,9 +3,11 @@
 // lowering, an added shank mass) moved at once toward targets on one swing (swing time, a
 // peak knee flexion window, a minimum toe clearance, a maximum stop-impact speed). A Latin
 // hypercube start set over the knobs' ranges, run in parallel, then a bounded least-squares
-// polish by Ceres (numerics/bounded_least_squares.h) from the best feasible start. Hard
-// limits are enforced by rejection: a point that breaks one is infeasible, never a result
-// (in the polish, Ceres rejects a trial step there). docs/tuning.md.
+// polish by Ceres (numerics/bounded_least_squares.h) from the best start points. Hard limits:
+// in the polish, a quadratic penalty that asks each for a small margin inside it (so the polish
+// can slide along a limit); the result is always the best evaluated point that meets every
+// hard limit, a point that breaks one is never a result while one that meets them exists.
+// docs/tuning.md, "How hard limits are enforced".
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -33,8 +35,9 @@ enum class TuningQuantity { kSwingTime, kPeakKneeFlexion, kMinToeClearance, kMax
 const char* tuningQuantityKey(TuningQuantity q);
 
 /// A target: the quantity must lie in [lower, upper] (equal ends: a value). Hard: the result
-/// must meet it (points that do not are rejected). Soft: its miss enters the least-squares
-/// cost as sqrt(weight) * miss / scale.
+/// must meet it (a point that does not is never the result while one that does was evaluated;
+/// the polish sees it as HardLimitPenalty). Soft: its miss enters the least-squares cost as
+/// sqrt(weight) * miss / scale.
 struct TuningTarget {
   TuningQuantity quantity = TuningQuantity::kSwingTime;
   double lower = -std::numeric_limits<double>::infinity();
@@ -66,14 +69,27 @@ struct TuningPoint {
 /// once; throws RunError where the swing cannot run (the point is then failed).
 using TuningEvaluator = std::function<SwingResult(const std::vector<double>& knobs)>;
 
+/// The polish's penalty for a hard limit: the residual weight x max(0, inside - margin /
+/// scale), so the polish aims at a margin of `inside` scale units and a point that falls short
+/// of it costs weight^2 per squared scale unit. With soft targets pulling across the limit, the
+/// polish ends about |soft gradient| / (2 weight^2) scale units short of `inside` (1e-6 to 1e-4
+/// for soft targets missed by 1 to 100 scale units): still inside the limit.
+struct HardLimitPenalty {
+  double weight = 1e3;    ///< residual per scale unit short of the inside margin
+  double inside = 1e-2;   ///< the margin asked for, in scale units (50 um of toe clearance, 0.01 deg)
+};
+/// The default inside margin (scale units): a result held back by a hard limit sits this close to it.
+constexpr double kHardLimitInside = HardLimitPenalty{}.inside;
+
 struct TuningSettings {
   int startPoints = 24;     ///< Latin hypercube points
   std::uint64_t seed = 1;   ///< of the start set
   int jobs = 0;             ///< threads for the start set (0: all cores)
   int maxIterations = 40;   ///< of each Ceres polish
-  /// Polishes from the best feasible start points, the next one only while the soft targets
-  /// are still missed (a polish ends where it runs into a hard limit).
+  /// Polishes from the best start points (ranked: those meeting every hard limit first), the
+  /// next one only while the soft targets are still missed.
   int polishStarts = 3;
+  HardLimitPenalty penalty;
   double maxSeconds = 120;  ///< wall-clock budget of the polish
 };
 
@@ -83,7 +99,7 @@ struct TargetOutcome {
   double value = 0;   ///< the quantity at the result (SI)
   double margin = 0;  ///< distance inside the window (>= 0: met), negative: missed by that much
   bool met = false;
-  bool binding = false;  ///< a hard limit at its edge (margin within 1e-3 of its scale)
+  bool binding = false;  ///< a hard limit at its edge (margin within kBindingFraction of its scale)
 };
 
 struct TuningResult {
@@ -97,6 +113,9 @@ struct TuningResult {
   std::string stopReason;
   int iterations = 0;
   int polishStart = 0;  ///< rank of the start point whose polish gave the result (0: the best)
+  /// Where that polish ended (Ceres' solution). When it breaks a hard limit (the penalty lets a
+  /// strongly pulled solution past it), `best` is the best evaluated point that meets them instead.
+  TuningPoint polishEnd;
   std::vector<TargetOutcome> targets;
   std::vector<bool> knobAtBound;
   /// d quantity / d knob at the result (targets x knobs, SI per knob unit), central

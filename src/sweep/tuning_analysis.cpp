@@ -13,20 +13,61 @@ double calcTargetMiss(const TuningTarget& target, double value) {
   return 0;
 }
 
-Eigen::VectorXd calcTuningResiduals(const TuningPoint& point, const std::vector<TuningTarget>& targets, bool feasible) {
-  std::vector<double> r;
-  for (const TuningTarget& t : targets) {
-    const double value = point.value(t.quantity);
-    if (feasible && t.hard) {
-      const double margin = std::min(value - t.lower, t.upper - value) / t.scale;
-      r.push_back(kWallWeight * std::max(0.0, kWallWidth - margin));
-    } else if (t.hard != feasible) {
-      const double miss = calcTargetMiss(t, value) / t.scale;
-      r.push_back(feasible ? std::sqrt(t.weight) * miss : miss);
-    }
-  }
+namespace {
+
+// Signed margin inside the window, in scale units (negative outside), and its slope d margin /
+// d value (SI): from the nearer edge, or from the edge the limit is held at.
+double marginInScaleUnits(const TuningTarget& t, double value, LimitHold hold, double* slope) {
+  const bool fromLower = hold == LimitHold::kAtLower || (hold == LimitHold::kPenalty && value - t.lower <= t.upper - value);
+  if (slope != nullptr) *slope = (fromLower ? 1.0 : -1.0) / t.scale;
+  return (fromLower ? value - t.lower : t.upper - value) / t.scale;
+}
+
+LimitHold holdOf(const std::vector<LimitHold>& holds, std::size_t i) {
+  return i < holds.size() ? holds[i] : LimitHold::kPenalty;
+}
+
+Eigen::VectorXd toVector(std::vector<double> r) {
   if (r.empty()) r.push_back(0);
   return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
+}
+
+}  // namespace
+
+Eigen::VectorXd calcTuningResiduals(const TuningPoint& point, const std::vector<TuningTarget>& targets,
+                                    const HardLimitPenalty& penalty, const std::vector<LimitHold>& holds) {
+  std::vector<double> r;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const TuningTarget& t = targets[i];
+    const double value = point.value(t.quantity);
+    const LimitHold hold = holdOf(holds, i);
+    if (!t.hard) {
+      r.push_back(std::sqrt(t.weight) * calcTargetMiss(t, value) / t.scale);
+      continue;
+    }
+    const double shortfall = penalty.inside - marginInScaleUnits(t, value, hold, nullptr);
+    r.push_back(penalty.weight * (hold == LimitHold::kPenalty ? std::max(0.0, shortfall) : shortfall));
+  }
+  return toVector(std::move(r));
+}
+
+Eigen::VectorXd calcTuningResidualSlopes(const TuningPoint& point, const std::vector<TuningTarget>& targets,
+                                         const HardLimitPenalty& penalty, const std::vector<LimitHold>& holds) {
+  std::vector<double> slopes;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const TuningTarget& t = targets[i];
+    const double value = point.value(t.quantity);
+    const LimitHold hold = holdOf(holds, i);
+    if (!t.hard) {
+      const bool acts = value < t.lower || value > t.upper || t.lower == t.upper;
+      slopes.push_back(acts ? std::sqrt(t.weight) / t.scale : 0.0);
+      continue;
+    }
+    double marginSlope = 0;
+    const double margin = marginInScaleUnits(t, value, hold, &marginSlope);
+    slopes.push_back(hold != LimitHold::kPenalty || margin < penalty.inside ? -penalty.weight * marginSlope : 0.0);
+  }
+  return toVector(std::move(slopes));
 }
 
 namespace {

@@ -112,9 +112,10 @@ TEST(KneeTuning, AHardLimitBindsWhereTheSoftOptimumBreaksIt) {
   const auto r = runKneeTuning(kKnobs, {valueTarget(TuningQuantity::kSwingTime, 0.5), limit}, makeEvaluator(f), {});
   ASSERT_TRUE(r.feasible);
   EXPECT_GE(r.targets[1].margin, 0.0);  // never a result that breaks a hard limit
-  // Held inside the polish's wall: at most kWallWidth scale units (2.5 mm, a = 0.594) from the edge.
-  EXPECT_LE(r.targets[1].margin, kWallWidth * limit.scale);
-  EXPECT_GE(r.best.knobs[0], 0.625 - kWallWidth * limit.scale / 0.08);
+  // On the limit: at most the polish's inside margin (kHardLimitInside scale units, 50 um,
+  // a = 0.6244) from the edge, and 1 % of that for round-off.
+  EXPECT_LE(r.targets[1].margin, 1.01 * kHardLimitInside * limit.scale);
+  EXPECT_GE(r.best.knobs[0], 0.625 - 1.01 * kHardLimitInside * limit.scale / 0.08);
   EXPECT_TRUE(r.targets[1].binding);
   EXPECT_FALSE(r.targets[0].met);
 }
