@@ -138,7 +138,9 @@ TEST(KneeTuningLimits, APolishEndingPastALimitGivesTheBestPointThatMeetsIt) {
   EXPECT_GE(r.targets[2].margin, 0.0);
   for (const auto* set : {&r.startSet, &r.polished})
     for (const TuningPoint& p : *set)
-      if (p.feasible()) EXPECT_GE(p.cost, r.best.cost);
+      if (p.feasible()) {
+        EXPECT_GE(p.cost, r.best.cost);
+      }
 }
 
 }  // namespace
