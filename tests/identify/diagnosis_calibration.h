@@ -199,7 +199,15 @@ inline std::vector<CalibrationCase> calibrationCases() {
       // speed, half the drawn truths hide a slow latch: IndependentCylinderDiagnosis).
       cylinderCase("switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms, truth drawn with seed 42",
                    [](MT& t) { t.latchRate = 40.0; }, 4, 42),
-      cylinderCase("hyperextension_phase", "", 0, "4-phase truth, 2-phase base", nullptr, /*basePhases=*/2),
+      // A 4-phase truth diagnosed from a 2-phase base: inside hyperextension both give the 4th
+      // phase's law alone (the base phases are gated off by S8), so the candidate's f, k, c are
+      // Chien Table 1's phase 4 term for term; outside it the base's phase 2 stands for the
+      // truth's phases 2 and 3, whose misfit the transition (S8 near 1/2) shares.
+      cylinderCase("hyperextension_phase", "f_N", -488.12, "4-phase truth, 2-phase base: f (Chien phase 4)", nullptr, 2),
+      cylinderCase("hyperextension_phase", "k_N_per_m", 563313.0, "4-phase truth, 2-phase base: k (Chien phase 4)", nullptr,
+                   2),
+      cylinderCase("hyperextension_phase", "c_Ns_per_m", 14672.2, "4-phase truth, 2-phase base: c (Chien phase 4)", nullptr,
+                   2),
   };
   for (auto& c : sweepCalibrationCases<CalibrationCase>()) cases.push_back(std::move(c));
   return cases;

@@ -89,7 +89,7 @@ std::vector<Case> sweepCalibrationCases() {
     return c;
   };
   return {
-      sweepCase("", "", 0, "none (hip drive 6 % faster than the files)", nullptr),
+      sweepCase("", "", 0, "none (hip drive 4 % slower than the files)", nullptr),
       sweepCase("hip_effort_adaptation", "exponent", -1.0, "exponent -1", [](ST& t) { t.effects.hipEffortExponent = -1.0; }),
       sweepCase("hip_tempo_lowering", "change_per_100mm", -0.1, "time scale -10 % per 100 mm",
                 [](ST& t) { t.effects.timeScaleSlope = -0.1; }),
