@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The calibration study of the diagnosis (docs/diagnosis.md, "How far the intervals can be
-# trusted (calibration)"): every swing and cylinder candidate hidden in data from the
+# trusted (calibration)"): every swing, cylinder and sweep candidate hidden in data from the
 # independent generators (tests/independent/), plus nulls, diagnosed over N noise seeds; per
 # candidate the named rate, other effects named, false acceptances on nulls, the 95 %
 # interval's coverage of the truth, and the estimate's bias and spread.
 # Usage: bash scripts/diagnosis-calibration.sh [--build DIR] [--seeds N] [--first S] [--jobs J]
-#        [--only PLANT/EFFECT-SUBSTRING] [--out DIR]
+#        [--only PLANT/EFFECT-SUBSTRING[,...]] [--out DIR]   (a sweep diagnosis costs about 30 s CPU)
 #   defaults: build, 20 seeds from 1, jobs = number of cores, out/calibration
 # Writes OUT/calibration.md (the table), OUT/calibration.csv (a row a case) and
 # OUT/calibration-seeds.csv (a row a seed), and prints the wall time.

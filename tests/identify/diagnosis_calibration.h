@@ -25,6 +25,7 @@
 #include "identify/cylinder_plant.h"
 #include "identify/diagnosis_engine.h"
 #include "io/bench_csv.h"
+#include "sweep_calibration_cases.h"
 #include "study/diagnosis_study.h"
 
 namespace swingsim::calibration {
@@ -37,7 +38,7 @@ constexpr std::uint64_t kCylinderTruthSeed = 7;  // drawTruth(4, 7): switch cons
 
 /// One hidden effect (or none) at one size, and how to diagnose one noise seed of it.
 struct CalibrationCase {
-  std::string plant;      ///< "swing" or "cylinder"
+  std::string plant;      ///< "swing", "cylinder" or "sweep"
   std::string effect;     ///< the hidden library effect; "" for a null
   std::string parameter;  ///< the reported parameter held against the truth; "" none
   double truth = 0;       ///< its true value, reported unit
@@ -156,13 +157,14 @@ inline CalibrationCase cylinderCase(std::string effect, std::string parameter, d
 }
 
 /// Every case of the study: each swing and cylinder candidate hidden at a documented size
-/// (none at one of our defaults or on a profiling grid), and a null per plant. Sizes: the
+/// (none at one of our defaults or on a profiling grid), and a null per plant; then the
+/// sweep's (sweep_calibration_cases.h). Sizes: the
 /// issue's viscous 0.15 N m s/rad and Coulomb 0.5 N m at 0.3 rad/s; the others 2-8 x the
 /// noise in knee RMS or bench force, like the effect tests (docs/diagnosis.md).
 inline std::vector<CalibrationCase> calibrationCases() {
   using ST = independent::SwingTruth;
   using MT = independent::MauchTruth;
-  return {
+  std::vector<CalibrationCase> cases = {
       swingCase("", "", 0, "none", nullptr),
       // On a table linear in speed with the same resistance both ways a viscous term is the
       // knee model scale itself; with extension at half the flexion resistance it is not.
@@ -197,8 +199,18 @@ inline std::vector<CalibrationCase> calibrationCases() {
       // speed, half the drawn truths hide a slow latch: IndependentCylinderDiagnosis).
       cylinderCase("switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms, truth drawn with seed 42",
                    [](MT& t) { t.latchRate = 40.0; }, 4, 42),
-      cylinderCase("hyperextension_phase", "", 0, "4-phase truth, 2-phase base", nullptr, /*basePhases=*/2),
+      // A 4-phase truth diagnosed from a 2-phase base: inside hyperextension both give the 4th
+      // phase's law alone (the base phases are gated off by S8), so the candidate's f, k, c are
+      // Chien Table 1's phase 4 term for term; outside it the base's phase 2 stands for the
+      // truth's phases 2 and 3, whose misfit the transition (S8 near 1/2) shares.
+      cylinderCase("hyperextension_phase", "f_N", -488.12, "4-phase truth, 2-phase base: f (Chien phase 4)", nullptr, 2),
+      cylinderCase("hyperextension_phase", "k_N_per_m", 563313.0, "4-phase truth, 2-phase base: k (Chien phase 4)", nullptr,
+                   2),
+      cylinderCase("hyperextension_phase", "c_Ns_per_m", 14672.2, "4-phase truth, 2-phase base: c (Chien phase 4)", nullptr,
+                   2),
   };
+  for (auto& c : sweepCalibrationCases<CalibrationCase>()) cases.push_back(std::move(c));
+  return cases;
 }
 
 /// The score of `effect` that the report gives: its accepted score, else its first step's.

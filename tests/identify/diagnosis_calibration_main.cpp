@@ -1,6 +1,6 @@
 // diagnosis_calibration: the calibration study of the diagnosis, one table (docs/diagnosis.md,
 // "How far the intervals can be trusted"). Run by scripts/diagnosis-calibration.sh.
-// Usage: diagnosis_calibration [--seeds N] [--first S] [--jobs J] [--only SUBSTRING] --out DIR
+// Usage: diagnosis_calibration [--seeds N] [--first S] [--jobs J] [--only SUBSTRING[,SUBSTRING...]] --out DIR
 // Writes DIR/calibration.md (the table) and DIR/calibration.csv (one row a case) and
 // DIR/calibration-seeds.csv (one row a seed).
 #include <chrono>
@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "diagnosis_calibration.h"
@@ -35,7 +36,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--out") o.out = v;
     else throw std::invalid_argument("unknown option " + a);
   }
-  if (o.out.empty() || o.seeds < 1 || o.jobs < 1) throw std::invalid_argument("usage: diagnosis_calibration [--seeds N>=1] [--first S] [--jobs J>=1] [--only SUBSTRING] --out DIR");
+  if (o.out.empty() || o.seeds < 1 || o.jobs < 1) throw std::invalid_argument("usage: diagnosis_calibration [--seeds N>=1] [--first S] [--jobs J>=1] [--only SUBSTRING[,SUBSTRING...]] --out DIR");
   return o;
 }
 
@@ -43,6 +44,15 @@ std::string num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.4g", v);
   return b;
+}
+
+// Whether `name` contains one of the comma-separated substrings of `only` ("" selects all).
+bool selected(const std::string& only, const std::string& name) {
+  if (only.empty()) return true;
+  std::stringstream list(only);
+  for (std::string part; std::getline(list, part, ',');)
+    if (!part.empty() && name.find(part) != std::string::npos) return true;
+  return false;
 }
 
 std::string caseName(const CalibrationCase& c) { return c.effect.empty() ? "null" : c.effect; }
@@ -70,7 +80,7 @@ int main(int argc, char** argv) try {
   seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note\n";
   const auto start = std::chrono::steady_clock::now();
   for (const auto& c : calibrationCases()) {
-    if (!o.only.empty() && (c.plant + "/" + caseName(c)).find(o.only) == std::string::npos) continue;
+    if (!selected(o.only, c.plant + "/" + caseName(c))) continue;
     const auto t0 = std::chrono::steady_clock::now();
     const auto outcomes = runCase(c, o.first, o.seeds, o.jobs);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

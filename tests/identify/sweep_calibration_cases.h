@@ -1,0 +1,115 @@
+#pragma once
+// The sweep plant's cases of the calibration study (docs/diagnosis.md, "How far the intervals
+// can be trusted (calibration)"): sweep tables from the independent generator
+// (tests/independent/sweep_table_generator.h: its own equations, knee, stop and swing-end
+// rule), each sweep candidate the generator can hide at a stated size away from the files,
+// plus a null, diagnosed as a user's sweep study. As IndependentSweepDiagnosis: every
+// participant at 0-200 mm in 50 mm steps where the truth ends a swing, 20 trials a row with
+// Burkett Table 3's trial-to-trial SD, the truth's hip drive 6 % faster than the files'.
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../independent/sweep_table_generator.h"
+#include "identify/diagnosis_engine.h"
+#include "study/diagnosis_study.h"
+
+namespace swingsim::calibration {
+
+constexpr int kSweepTrials = 20;          // trials a row (Burkett: 5; 20 as IndependentSweepDiagnosis)
+constexpr double kSweepTruthTempo = 1.04;  // the truth's hip time scale over the files'
+
+/// What the truth hides: the generator's hidden effects, its model (the files keep the
+/// default SweepModel) and a change to the participants after their files are written.
+struct SweepTruth {
+  independent::SweepEffects effects;
+  independent::SweepModel model;
+  std::function<void(independent::SweepParticipant&)> participant;
+};
+
+/// The sweep table of `truth` (noise seed `seed`), diagnosed as a user's sweep study over
+/// every sweep candidate, one effect at most.
+inline Diagnosis diagnoseSweep(const SweepTruth& truth, std::uint64_t seed, const std::string& tag) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("swingsim-calibration-" + tag + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const independent::SweepModel files;
+  auto participants = independent::burkettParticipants();
+  const auto fileNames = independent::writeSweepModelFiles(participants, files, dir.string());
+  const std::vector<double> grid = {0.0, 0.05, 0.10, 0.15, 0.20};
+  std::vector<std::vector<double>> lowerings;
+  for (auto& p : participants) {
+    p.timeScale *= kSweepTruthTempo;
+    p.trials = kSweepTrials;
+    if (truth.participant) truth.participant(p);
+    lowerings.emplace_back();
+    for (double d : grid)
+      if (independent::simulateSweepSwing(p, truth.model, truth.effects, d).ended) lowerings.back().push_back(d);
+  }
+  independent::writeSweepCsv(
+      independent::generateSweepTableByParticipant(participants, lowerings, truth.model, truth.effects, seed),
+      (dir / "measured.csv").string());
+  {
+    std::ofstream sweep(dir / "sweep.yaml");
+    sweep << "kind: knee-axis-sweep\nname: calibration\nparticipants: [";
+    for (std::size_t i = 0; i < fileNames.size(); ++i) sweep << (i ? ", " : "") << fs::path(fileNames[i]).filename().string();
+    sweep << "]\nintegrator: {method: dormand-prince, accuracy: 1.0e-5}\n";
+    std::ofstream study(dir / "study.yaml");
+    study << "kind: sweep-diagnosis\nname: calibration-" << tag << "\nsweep: sweep.yaml\nmeasured: measured.csv\n"
+          << "acceptance: {max_effects: 1, whiteness_lags: 2}\n";
+  }
+  const DiagnosisStudy study = loadDiagnosisStudy((dir / "study.yaml").string());
+  const auto plant = loadDiagnosisPlant(study, 0);
+  Diagnosis dg = runDiagnosis(*plant, study.settings);
+  if (!std::getenv("SWINGSIM_KEEP_TEST_FILES")) fs::remove_all(dir);
+  return dg;
+}
+
+/// Every sweep case: a null and each candidate the generator can hide. Sizes are away from
+/// the files (and from the candidates' starting values), inside each candidate's range
+/// (identify/sweep_effects.cpp) and large enough to move a swing time by a few trial SDs.
+template <typename Case>
+std::vector<Case> sweepCalibrationCases() {
+  using ST = SweepTruth;
+  auto sweepCase = [](std::string effect, std::string parameter, double truthValue, std::string size,
+                      std::function<void(ST&)> hide) {
+    Case c{"sweep", std::move(effect), std::move(parameter), truthValue, std::move(size), {}};
+    c.diagnose = [hide](std::uint64_t seed, const std::string& tag) {
+      ST truth;
+      if (hide) hide(truth);
+      return diagnoseSweep(truth, seed, tag);
+    };
+    return c;
+  };
+  return {
+      sweepCase("", "", 0, "none (hip drive 4 % slower than the files)", nullptr),
+      sweepCase("hip_effort_adaptation", "exponent", -1.0, "exponent -1", [](ST& t) { t.effects.hipEffortExponent = -1.0; }),
+      sweepCase("hip_tempo_lowering", "change_per_100mm", -0.1, "time scale -10 % per 100 mm",
+                [](ST& t) { t.effects.timeScaleSlope = -0.1; }),
+      // One value: a switch, named or not; its "interval" is the value itself.
+      sweepCase("com_rule_proportional", "", 0, "COMs proportional to the new lengths",
+                [](ST& t) { t.effects.comRule = independent::ComRule::kProportional; }),
+      sweepCase("knee_friction_scale", "scale", 1.6, "Tc x 1.6 in every knee",
+                [](ST& t) { t.participant = [](independent::SweepParticipant& p) { p.kneeFrictionNm *= 1.6; }; }),
+      sweepCase("stop_restitution", "restitution", 0.15, "e 0.15 (files 0.4)", [](ST& t) { t.effects.stopRestitution = 0.15; }),
+      sweepCase("stop_stiffness", "stiffness_Nm_per_rad1p5", 6e4, "6e4 N m/rad^1.5 (files 2e4)",
+                [](ST& t) { t.model.stopStiffness = 6e4; }),
+      sweepCase("hip_extension_ratio", "ratio", 0.7, "extension 21 N m over flexion 30 N m (files 0.5)",
+                [](ST& t) { t.model.extensionNm = 21.0; }),
+      sweepCase("hip_flexion_duration", "duration_s", 0.24, "flexion half-sine 0.24 s (files 0.20)",
+                [](ST& t) { t.model.flexionS = 0.24; }),
+      sweepCase("hip_extension_duration", "duration_s", 0.25, "extension half-sine 0.25 s (files 0.20)",
+                [](ST& t) { t.model.extensionS = 0.25; }),
+      sweepCase("thigh_target_flexion", "flexion_deg", 25.0, "swing ends at thigh 25 deg (files 20)",
+                [](ST& t) { t.model.thighTargetDeg = 25.0; }),
+  };
+}
+
+}  // namespace swingsim::calibration
