@@ -10,24 +10,12 @@
 
 #include "core/units.h"
 #include "sweep/tuning_analysis.h"
+#include "closed_form_swing.h"
 
 namespace swingsim {
 namespace {
 
-// A "swing" whose swing time (s), peak flexion (rad) and toe clearance (m) are functions of two knobs.
-struct Fake {
-  std::function<double(double, double)> time, peak, clearance;
-};
-
-TuningEvaluator makeEvaluator(const Fake& f) {
-  return [f](const std::vector<double>& x) {
-    SwingResult r;
-    r.swingTime = f.time(x[0], x[1]);
-    r.peakKneeFlexion = KneePeak{f.peak(x[0], x[1]), 0.2};
-    r.minToeClearance = f.clearance(x[0], x[1]);
-    return r;
-  };
-}
+using Fake = ClosedFormSwing;
 
 TuningTarget softValue(TuningQuantity q, double v, double weight) {
   TuningTarget t;

@@ -8,24 +8,12 @@
 #include <cmath>
 
 #include "sweep/tuning_analysis.h"
+#include "closed_form_swing.h"
 
 namespace swingsim {
 namespace {
 
-// A "swing" whose swing time, peak flexion (rad) and toe clearance (m) are given functions.
-struct Fake {
-  std::function<double(double, double)> time, peak, clearance;
-};
-
-TuningEvaluator makeEvaluator(const Fake& f) {
-  return [f](const std::vector<double>& x) {
-    SwingResult r;
-    r.swingTime = f.time(x[0], x[1]);
-    r.peakKneeFlexion = KneePeak{f.peak(x[0], x[1]), 0.2};
-    r.minToeClearance = f.clearance ? f.clearance(x[0], x[1]) : 0.1;
-    return r;
-  };
-}
+using Fake = ClosedFormSwing;
 
 TuningTarget valueTarget(TuningQuantity q, double v) {
   TuningTarget t;
