@@ -83,6 +83,17 @@ std::string describeBinding(const TuningResult& r) {
   return b.empty() ? "none (the result is inside every range and limit)" : b;
 }
 
+// A missed target is "not found" by a local search (a start set, then a polish from its best
+// few), not proof that no setting meets it (docs/tuning.md, "The search is local").
+std::string describeSearch(const TuningResult& r) {
+  for (const TargetOutcome& o : r.targets)
+    if (!o.met)
+      return "local: a missed target was not found from " + std::to_string(r.startSet.size()) +
+             " start points and the polish; settings that meet it may exist (rerun with more start_points before reading "
+             "it as unreachable)";
+  return "";
+}
+
 }  // namespace
 
 double toTargetUnit(TuningQuantity q, double si) {
@@ -115,6 +126,7 @@ std::string formatTuningSummary(const TuningReportInputs& in) {
   printKnobs(s, r);
   printTargets(s, in);
   s << "  binding             " << describeBinding(r) << "\n";
+  if (const std::string search = describeSearch(r); !search.empty()) s << "  search              " << search << "\n";
   printSensitivity(s, r);
   s << "  identifiability     " << (r.identifiable ? "" : "NOT IDENTIFIABLE: ") << r.identifiability << "\n";
   if (!r.identifiable && !r.ridge.empty()) {
