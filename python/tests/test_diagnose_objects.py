@@ -1,0 +1,116 @@
+"""swingsim.diagnose on a study object: loaded and unedited, edited, and built in Python
+from a Participant, a KneeModel and SwingRecords of numpy arrays; its result object."""
+import json
+import subprocess
+
+import numpy
+import pytest
+
+import swingsim
+
+STUDY = "studies/diagnose-demo-swing.yaml"
+DATA = "studies/data/diagnose-demo-swing"
+
+
+@pytest.fixture(scope="module")
+def from_path(repo):
+    return swingsim.diagnose(repo / STUDY)
+
+
+def test_result_is_the_cli_json_with_series(repo, cli, tmp_path, from_path):
+    out = tmp_path / "cli.json"
+    subprocess.run([cli, "diagnose", STUDY, "--json", str(out), "--out", str(tmp_path / "report")], cwd=repo,
+                   check=True, capture_output=True)
+    assert from_path == json.loads(out.read_text())
+    assert isinstance(from_path, swingsim.DiagnosisResult)
+    assert from_path.to_dict() == json.loads(out.read_text())
+    assert [s.name for s in from_path.series] == ["normal", "slow", "fast"]
+    first = from_path.series[0]
+    assert first.training and not from_path.series[1].training
+    assert first.unit == "deg"
+    assert isinstance(first.measured, numpy.ndarray)
+    assert len(first.time_s) == len(first.measured) == len(first.baseline) == len(first.diagnosed) > 10
+    assert "DiagnosisResult(" in repr(from_path) and "3 records" in repr(from_path)
+
+
+def test_an_unedited_study_object_gives_the_same(repo, from_path):
+    assert swingsim.diagnose(swingsim.load_study(repo / STUDY)) == from_path
+
+
+def test_a_study_built_in_python_from_arrays(repo, from_path):
+    # The same study with every part an object: participant and knee loaded, the records read
+    # into numpy arrays. Same records, same settings: the same diagnosis.
+    records = [swingsim.SwingRecord.from_csv(repo / DATA / f"{n}.csv") for n in ("normal", "slow", "fast")]
+    assert isinstance(records[0].time_s, numpy.ndarray)
+    study = swingsim.DiagnosisStudy({
+        "kind": "swing-diagnosis",
+        "name": "diagnose-demo-swing",
+        "participant": swingsim.load_participant(repo / "participants" / "p1.yaml"),
+        "base_model": swingsim.load_knee(repo / "models" / "damping-table-default.yaml"),
+        "train": records[:1],
+        "validate": records[1:],
+        "acceptance": {"alpha": 0.01, "min_validation_improvement": 0.02, "max_effects": 4},
+    }, origin=repo / "studies" / "python-study.yaml")
+    result = swingsim.diagnose(study)
+    strip = lambda d: {k: v for k, v in d.items() if k not in ("study",)}  # noqa: E731
+    assert strip(result.to_dict()) == strip(from_path.to_dict())
+    assert numpy.array_equal(result.series[2].measured, from_path.series[2].measured)
+
+
+def test_an_edited_record_changes_the_diagnosis(repo, from_path):
+    s = swingsim.load_study(repo / STUDY)
+    record = swingsim.SwingRecord.from_csv(repo / DATA / "normal.csv")
+    record.knee_flexion_deg = record.knee_flexion_deg + 2.0  # a 2 deg offset in the measurement
+    s["train"] = [record]
+    result = swingsim.diagnose(s)
+    assert not numpy.array_equal(result.series[0].measured, from_path.series[0].measured)
+    assert result.series[0].measured == pytest.approx(from_path.series[0].measured + 2.0)
+
+
+def test_a_bad_record_in_memory_is_named(repo):
+    s = swingsim.load_study(repo / STUDY)
+    t = numpy.linspace(0, 0.5, 20)
+    s["train"] = [swingsim.SwingRecord("flat", t, numpy.zeros(20), numpy.linspace(0, 1, 20), numpy.zeros(20))]
+    with pytest.raises(swingsim.InputError, match="record flat.*knee_flexion_deg.*radians"):
+        swingsim.diagnose(s)
+
+
+def test_study_checks_name_the_key(repo):
+    s = swingsim.load_study(repo / STUDY)
+    s.acceptance.alpha = 2
+    with pytest.raises(swingsim.InputError, match=r"\(edited in Python\):\d+: acceptance.alpha"):
+        swingsim.diagnose(s)
+    with pytest.raises(TypeError, match="diagnose\\(\\): study"):
+        swingsim.diagnose(42)
+
+
+def test_swing_record_arguments():
+    with pytest.raises(swingsim.InputError, match="SwingRecord\\(\\): knee_flexion_deg: expected 3 values"):
+        swingsim.SwingRecord("r", [0, 1, 2], [0, 1, 2], [0, 1])
+    with pytest.raises(TypeError, match="SwingRecord\\(\\): hip_flexion_deg"):
+        swingsim.SwingRecord("r", [0, 1, 2], ["a", "b", "c"], [0, 1, 2])
+
+
+def test_a_study_with_objects_is_not_saved(repo, tmp_path):
+    s = swingsim.load_study(repo / STUDY)
+    s["participant"] = swingsim.load_participant(repo / "participants" / "p1.yaml")
+    with pytest.raises(swingsim.InputError, match="participant"):
+        s.save(tmp_path / "s.yaml")
+    assert not (tmp_path / "s.yaml").exists()
+
+
+def test_warnings_of_a_study_object(repo):
+    # The hip read without the pelvis tilt: a SwingsimWarning, as for a study file.
+    ik = repo / "tests" / "data" / "opensim-gait10dof" / "subject01_walk_IK.mot"
+    study = swingsim.DiagnosisStudy({
+        "kind": "swing-diagnosis",
+        "participant": str(repo / "participants" / "winter.yaml"),
+        "base_model": str(repo / "models" / "passive-knee.yaml"),
+        "drive": "thigh_kinematics",
+        "motion_columns": {"hip": "hip_flexion_r", "knee": "knee_angle_r", "knee_sign": -1},
+        "train": [{"name": "right1", "file": str(ik), "toe_off_s": 0.25, "heel_contact_s": 0.7}],
+        "validate": [{"name": "right2", "file": str(ik), "toe_off_s": 1.35, "heel_contact_s": 1.8}],
+        "acceptance": {"max_effects": 1},
+    })
+    with pytest.warns(swingsim.SwingsimWarning, match="read without the pelvis tilt"):
+        swingsim.diagnose(study)
