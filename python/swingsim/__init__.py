@@ -506,9 +506,13 @@ class DiagnosisResult(Result):
         return Result.__getattr__(self, key)
 
     def __repr__(self):
-        accepted = self.get("accepted_effects", self.get("accepted"))
-        return (f"DiagnosisResult(study={self.get('study')!r}, accepted={accepted!r}, "
-                f"{len(self.series)} records; keys: {', '.join(self)})")
+        def rmse(side):
+            fit = self.get(side) or {}
+            train = (fit.get("train") or {}).get("rmse")
+            return "-" if train is None else f"{train:.3g}"
+        return (f"DiagnosisResult(plant={self.get('plant')!r}, accepted={self.get('accepted')!r}, "
+                f"train RMSE {rmse('baseline')} -> {rmse('final')} {self.get('unit', '')}, "
+                f"explained={self.get('explained')!r}, {len(self.series)} records; keys: {', '.join(self)})")
 
 
 def diagnose(study, max_rows=None):
