@@ -554,9 +554,10 @@ def swings(motion_path, side="r", grf=None, vertical_force=None, threshold_N=20.
     .mot on the same clock (None: events from the kinematics); vertical_force: its column
     (default ground_force_vy for r, 1_ground_force_vy for l), N; threshold_N: force below
     which the foot is in the air, N (> 0); gait: "walking", "running" or None (detected);
-    knee_sign: +1 or -1 (knee flexion = sign * knee_angle). Returns a SwingList."""
-    return _warn_about(SwingList(_swingsim.swings(motion_path, side, grf, vertical_force, threshold_N,
-                                                  fallback_to_kinematics, gait, knee_sign)))
+    knee_sign: +1 or -1 (knee flexion = sign * knee_angle). Returns a SwingList; its `notes`
+    are what the command line prints as "note:" lines."""
+    return SwingList(_swingsim.swings(motion_path, side, grf, vertical_force, threshold_N, fallback_to_kinematics,
+                                      gait, knee_sign))
 
 
 def import_osim(osim_path, side="r", name=None, knee=None, knee_friction_Nm=0.0, shank_mass_kg=None,
