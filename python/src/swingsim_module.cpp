@@ -1,7 +1,8 @@
 // The Python module `swingsim._swingsim` (wrapped by swingsim/__init__.py): loading
-// participants and knee models into editable dicts, one swing, and a sweep study, each
-// calling the same library functions as the command line, with the GIL released while
-// they run. Bad input raises swingsim.InputError (a ValueError) with the CLI's
+// participants and knee models into editable dicts, one swing, the sweep, tuning, fit and
+// diagnosis studies (a diagnosis from a path or a study object with records in memory),
+// each calling the same library functions as the command line, with the GIL released while
+// they run; file objects, swings and the .osim import/export are in python_commands.cpp. Bad input raises swingsim.InputError (a ValueError) with the CLI's
 // `file:line: key: ...` message; a failed run raises swingsim.RunError (a RuntimeError).
 // Arguments are checked first, against the command line's ranges (study/run_arguments.h): a
 // wrong type raises TypeError, a value out of range InputError, each naming the argument.
