@@ -103,7 +103,9 @@ std::string exportOsim(const py::object& participant, const py::object& pathValu
   const double lowering = readNumberArgument(loweringValue, "export_osim(): lowering_m", checkLowering);
   const Participant p = readParticipant(participant, "export_osim");
   const KneeModel knee = readKnee(py::none(), p, "export_osim");
-  checkOutputsAreNotInputs({{"participant", p.path}, {"participant: knee_model", p.kneeModelPath}}, {{"path", path}});
+  // An edited Participant's messages name "ORIGIN (edited in Python)": its origin file is an input too.
+  const std::string origin = isPathArgument(participant) ? p.path : participant.attr("origin").cast<std::string>();
+  checkOutputsAreNotInputs({{"participant", origin}, {"participant: knee_model", p.kneeModelPath}}, {{"path", path}});
   py::gil_scoped_release release;
   writeFileAtomic(path, formatParticipantOsim(p, knee, lowering, makeTrajectoryFileStem(p.name, lowering) + ".sto"));
   return path;

@@ -101,6 +101,11 @@ def test_export_osim_refuses_to_write_over_its_input(repo, tmp_path):
     with pytest.raises(swingsim.InputError, match="p1.yaml"):
         swingsim.export_osim(tmp_path / "p1.yaml", tmp_path / "p1.yaml")
     assert "name: P1" in (tmp_path / "p1.yaml").read_text()
+    edited = swingsim.load_participant(tmp_path / "p1.yaml")
+    edited.segments.shank.mass_kg = 1.0
+    with pytest.raises(swingsim.InputError, match="p1.yaml"):
+        swingsim.export_osim(edited, tmp_path / "p1.yaml")  # an object's origin is an input too
+    assert "name: P1" in (tmp_path / "p1.yaml").read_text()
 
 
 @pytest.mark.parametrize("kwargs, error, match", [
