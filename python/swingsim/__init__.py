@@ -515,7 +515,7 @@ class DiagnosisResult(Result):
                 f"explained={self.get('explained')!r}, {len(self.series)} records; keys: {', '.join(self)})")
 
 
-def diagnose(study, max_rows=None):
+def diagnose(study=None, max_rows=None, *, study_path=None):
     """The diagnosis of a cylinder-diagnosis, swing-diagnosis or sweep-diagnosis study, as
     `swingsim diagnose STUDY --json FILE`. study: a path, or a DiagnosisStudy (loaded and
     edited, or built in Python with a Participant, a KneeModel and SwingRecords from numpy
@@ -523,7 +523,14 @@ def diagnose(study, max_rows=None):
     warning about the data is issued as a SwingsimWarning. No report or model is written.
     Its size (rows of measured data) and a time estimate are printed on stderr first; above
     `max_rows` (default: the command line's --max-rows default for the study's kind) it is
-    refused with ValueError before any fit."""
+    refused with ValueError before any fit. `study_path=` is the argument's name before
+    objects were accepted, still read (not both)."""
+    if study_path is not None:
+        if study is not None:
+            raise TypeError("diagnose(): give study or study_path, not both")
+        study = study_path
+    if study is None:
+        raise TypeError("diagnose(): missing the study: a path or a swingsim.DiagnosisStudy")
     if isinstance(study, DiagnosisStudy):
         participant, knee, records, file_study = study._objects()
         values = _swingsim.diagnose(file_study, max_rows, participant, knee, records)

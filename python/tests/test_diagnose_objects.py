@@ -135,3 +135,11 @@ def test_warnings_of_a_study_object(repo):
     })
     with pytest.warns(swingsim.SwingsimWarning, match="read without the pelvis tilt"):
         swingsim.diagnose(study)
+
+
+def test_diagnose_still_reads_the_old_argument_name(study_file, from_path):
+    assert swingsim.diagnose(study_path=study_file) == from_path
+    with pytest.raises(TypeError, match="not both"):
+        swingsim.diagnose("a.yaml", study_path="b.yaml")
+    with pytest.raises(TypeError, match="missing the study"):
+        swingsim.diagnose()
