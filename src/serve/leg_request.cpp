@@ -51,7 +51,7 @@ std::vector<std::pair<std::string, std::string>> readEdits(const Json& body) {
 
 // A knee setting the page offers: the scale of the knee law, a microprocessor knee's states.
 bool isKneeSettingKey(const std::string& key) {
-  static const std::regex kAllowed(R"(knee_effects\.model_scale|impedance_state_machine\.states\[[0-9]{1,2}\]\.[a-z_]+)");
+  static const std::regex kAllowed(R"(knee_effects\.model_scale|impedance_state_machine\.states\[[0-9]{1,2}\]\.[A-Za-z_]+)");
   return std::regex_match(key, kAllowed);
 }
 
