@@ -101,14 +101,16 @@ TEST_F(WebServerTest, DescribesAParticipantWithItsExport) {
   EXPECT_EQ(parseKneeModel(p["knee_yaml"].get<std::string>(), "k.yaml").name, "damping-table-default");
 }
 
-// The page's swing is the library's: the same participant, knee, lowering and added mass
-// give the same swing time to the last bit.
+// The page's swing is the library's as swingsim simulate runs it: the same participant,
+// knee, lowering and added mass give the same swing time to the last bit.
 TEST_F(WebServerTest, SimulatesTheSwingTheLibrarySimulates) {
   const Json s = postJson("/api/simulate",
                           {{"participant", "p1"}, {"lowering_m", 0.1}, {"added_mass_kg", 0.5}, {"added_mass_position_m", 0.2}}, 200);
   const Participant p = loadParticipant(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml");
   const KneeModel knee = loadKneeModel(p.kneeModelPath);
-  const SwingResult r = simulateSwing(makeSwingSetup(p, knee, 0.1, AddedMass{0.5, 0.2}), SwingOptions{});
+  SwingOptions options;
+  options.trackImpactEnergy = true;  // as swingsim simulate (and the page) run one swing
+  const SwingResult r = simulateSwing(makeSwingSetup(p, knee, 0.1, AddedMass{0.5, 0.2}), options);
   EXPECT_EQ(s["swing_time_s"].get<double>(), r.swingTime);
   EXPECT_EQ(s["peak_knee_flexion_deg"].get<double>(), r.peakKneeFlexion->flexion * kRadToDeg);
   EXPECT_FALSE(s["stop_impacts"].empty());
