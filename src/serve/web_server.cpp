@@ -94,6 +94,13 @@ WebServer::WebServer(const ServeOptions& options) : impl_(std::make_unique<Impl>
                                 {"X-Content-Type-Options", "nosniff"},
                                 {"Referrer-Policy", "no-referrer"},
                                 {"Cache-Control", "no-store"}});
+  // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which would let a second
+  // server (the user's own, or another program of the same user) share the port and take
+  // part of the requests; the first free port is then not found either.
+  s.server.set_socket_options([](int sock) {  // httplib's socket_t is int on POSIX
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+  });
   s.port = bindPort(s.server, options);
   if (s.port <= 0)
     throw RunError("swingsim serve: cannot listen on " + options.host + " port " + std::to_string(options.port) +

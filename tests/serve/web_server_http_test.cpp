@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/input_error.h"
 #include "io/json_file.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -202,6 +203,18 @@ TEST_F(WebServerTest, ABadMassIsAFieldError) {
     return r ? Json::parse(r->body) : Json();
   }();
   EXPECT_THAT(notJson["error"].get<std::string>(), HasSubstr("expected a JSON object"));
+}
+
+// No second server on the same port (cpp-httplib's default SO_REUSEPORT would allow one and
+// split the requests between them); the default port moves on to the first free one.
+TEST_F(WebServerTest, RefusesToShareItsPort) {
+  ServeOptions options;
+  options.dataDir = SWINGSIM_SOURCE_DIR;
+  options.port = server_->getPort();
+  EXPECT_THROW(WebServer second(options), RunError);
+  options.firstFree = true;
+  const WebServer next(options);
+  EXPECT_GT(next.getPort(), server_->getPort());
 }
 
 // Requests on the thread pool at once give what they give one at a time.
