@@ -88,12 +88,12 @@ std::string formatShippedKneeList(const ShippedFiles& files) {
 }
 
 // An upload's knee_model as ../models/NAME.yaml of a shipped model, and no measured thigh
-// file: the server reads no path an upload gives.
-void checkUploadedPaths(YAML::Node root, const ShippedFiles& files) {
+// file: the server reads no path an upload gives. True if knee_model was rewritten to that form.
+bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files) {
   if (root["thigh_kinematics"])
     throw InputError("thigh_kinematics: expected none in an uploaded participant (swingsim serve reads no file an upload "
                      "names; use drive: hip_moment) (got a thigh_kinematics entry)");
-  if (!root["knee_model"] || !root["knee_model"].IsScalar()) return;  // the loader says what is missing
+  if (!root["knee_model"] || !root["knee_model"].IsScalar()) return false;  // the loader says what is missing
   std::string name = root["knee_model"].Scalar();
   const std::string prefix = "../models/", suffix = ".yaml";
   if (name.rfind(prefix, 0) == 0) name = name.substr(prefix.size());
@@ -103,7 +103,9 @@ void checkUploadedPaths(YAML::Node root, const ShippedFiles& files) {
   if (std::find(names.begin(), names.end(), name) == names.end())
     throw InputError("knee_model: expected a shipped knee model by name, one of " + formatShippedKneeList(files) + " (got '" +
                      root["knee_model"].Scalar() + "')");
+  if (root["knee_model"].Scalar() == prefix + name + suffix) return false;
   root["knee_model"] = prefix + name + suffix;
+  return true;
 }
 
 std::string readFileText(const std::string& path) {
@@ -126,11 +128,21 @@ Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles
     throw InputError("participant_yaml: expected a participant file in YAML (got a YAML error: " + e.msg + ")");
   }
   if (!root.IsMap()) throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
-  if (uploaded) checkUploadedPaths(root, files);
+  // The text as given where nothing was changed, so that messages give the upload's own lines.
+  const bool rewritten = uploaded && checkUploadedPaths(root, files);
   for (const auto& [key, value] : request.edits) findMapNode(root, key) = value;
   YAML::Emitter out;
   out << root;
-  return parseParticipant(out.c_str(), source);
+  try {
+    return parseParticipant(uploaded && !rewritten && request.edits.empty() ? text : std::string(out.c_str()), source);
+  } catch (const InputError& e) {
+    if (!uploaded) throw;
+    // An upload is upload.yaml to its user: no path of the server's in its messages.
+    std::string message = e.what();
+    for (auto at = message.find(source); at != std::string::npos; at = message.find(source, at))
+      message.replace(at, source.size(), "upload.yaml");
+    throw InputError(message);
+  }
 }
 
 KneeModel loadRequestKnee(const LegRequest& request, const Participant& p, const ShippedFiles& files) {

@@ -65,6 +65,21 @@ Json readFields(const std::string& participantYaml) {
   return fields;
 }
 
+// A microprocessor knee's swing states as the knee file writes them (its impedance_state_machine
+// states: name and the numbers of each), for the page's sliders; empty for another kind.
+Json readKneeStates(const std::string& kneeYaml) {
+  Json states = Json::array();
+  const YAML::Node list = YAML::Load(kneeYaml)["impedance_state_machine"]["states"];
+  if (!list || !list.IsSequence()) return states;
+  for (const YAML::Node& state : list) {
+    Json s = {{"name", state["name"] ? state["name"].Scalar() : ""}};
+    for (const char* key : {"stiffness_Nm_per_rad", "damping_Nm_s_per_rad", "equilibrium_deg"})
+      s[key] = state[key] && state[key].IsScalar() ? Json(state[key].as<double>()) : Json(nullptr);
+    states.push_back(s);
+  }
+  return states;
+}
+
 std::string stemOf(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 // Trajectory samples about kTrajectoryStep apart (and the last), the page's stick figure.
@@ -161,7 +176,8 @@ ApiReply ServeApi::describeParticipant(const std::string& body) const {
                 {"drive", p.drive == SwingDrive::kHipMoment ? "hip_moment" : "thigh_kinematics"},
                 {"max_lowering_m", calcMaxLowering(p)},
                 {"participant_yaml", participantYaml},
-                {"knee_yaml", formatKneeModelYaml(spec)}};
+                {"knee_yaml", formatKneeModelYaml(spec)},
+                {"knee_states", readKneeStates(formatKneeModelYaml(spec))}};
   });
 }
 

@@ -25,9 +25,10 @@ class ServeApi {
   /// "limits": {...}}.
   ApiReply listFiles() const;
   /// POST /api/participant (a leg request; with participant_yaml it is the upload): {"name",
-  /// "fields": {KEY: value in file units}, "knee_model", "knee_kind", "knee_settings",
-  /// "drive", "max_lowering_m", "participant_yaml", "knee_yaml"} (the two YAML texts are the
-  /// export, loadable by the command line).
+  /// "fields": {KEY: value in file units}, "knee_model", "knee_settings",
+  /// "drive", "max_lowering_m", "participant_yaml", "knee_yaml", "knee_states"} (the two
+  /// YAML texts are the export, loadable by the command line; knee_states: a microprocessor
+  /// knee's states with their stiffness, damping and equilibrium, else empty).
   ApiReply describeParticipant(const std::string& body) const;
   /// POST /api/simulate: `swingsim simulate --json`'s content plus "knee_model",
   /// "stick_figure_svg" (the report's animated figure, null without a swing end) and

@@ -95,6 +95,10 @@ TEST(LegRequestTest, AnUploadNamesNoFileOutsideTheShippedModels) {
     EXPECT_THAT(message, HasSubstr("knee_model: expected a shipped knee model by name")) << path;
     EXPECT_EQ(findErrorKey(message), "knee_model");
   }
+  // An upload's messages name it upload.yaml, not a path in the server's folders.
+  std::string badMass = text;
+  badMass.replace(badMass.find("body_mass_kg: 70"), 16, "body_mass_kg: -70");
+  EXPECT_THAT(messageOf([&] { load({{"participant_yaml", badMass}}); }), ::testing::StartsWith("upload.yaml:8: body_mass_kg:"));
   std::string byName = text;
   byName.replace(byName.find(from), from.size(), "knee_model: mauch-2phase");
   EXPECT_EQ(load({{"participant_yaml", byName}}).knee.name, "mauch-2phase");
@@ -106,9 +110,9 @@ TEST(LegRequestTest, ASwingTimeLimitAboveTheBudgetIsRefused) {
   std::string text = readP1();
   const std::string from = "time_limit_s: 1.5";
   ASSERT_NE(text.find(from), std::string::npos);
-  text.replace(text.find(from), from.size(), "time_limit_s: 1000");
+  text.replace(text.find(from), from.size(), "time_limit_s: 5");  // the loader allows up to 10 s
   EXPECT_THAT(messageOf([&] { load({{"participant_yaml", text}}); }),
-              HasSubstr("swing_end.time_limit_s: expected at most 3 s on swingsim serve"));
+              HasSubstr("swing_end.time_limit_s: expected at most 3 s on swingsim serve (its simulation budget) (got 5)"));
 }
 
 TEST(LegRequestTest, KnobsOutOfRangeNameTheirKey) {

@@ -125,6 +125,19 @@ TEST_F(WebServerTest, ModelScaleChangesTheSwing) {
   EXPECT_NE(base["swing_time_s"], scaled["swing_time_s"]);
 }
 
+TEST_F(WebServerTest, AMicroprocessorKneesSwingStatesAreSettings) {
+  const Json knee = {{"participant", "p1"}, {"knee", "microprocessor-knee-osl"}};
+  const Json p = postJson("/api/participant", knee, 200);
+  ASSERT_FALSE(p["knee_states"].empty());
+  EXPECT_EQ(p["knee_states"][0]["name"], "swing_flexion");
+  EXPECT_EQ(p["knee_states"][0]["damping_Nm_s_per_rad"], 0.063);  // models/microprocessor-knee-osl.yaml
+  Json damped = knee;
+  damped["knee_settings"] = {{"impedance_state_machine.states[0].damping_Nm_s_per_rad", 1.0}};
+  EXPECT_NE(postJson("/api/simulate", knee, 200)["peak_knee_flexion_deg"],
+            postJson("/api/simulate", damped, 200)["peak_knee_flexion_deg"]);
+  EXPECT_TRUE(postJson("/api/participant", {{"participant", "p1"}}, 200)["knee_states"].empty());
+}
+
 TEST_F(WebServerTest, SweepsTheLegWithItsFastestAndSymmetryLowering) {
   const Json s = postJson("/api/sweep", {{"participant", "p1"}}, 200);
   ASSERT_EQ(s["lowerings_m"].size(), 21u);

@@ -34,13 +34,46 @@ function legRequest() {
     lowering_m: Number($('lowering').value),
     added_mass_kg: Number($('mass').value),
     added_mass_position_m: Number($('position').value),
-    knee_settings: { 'knee_effects.model_scale': Number($('scale').value) },
+    knee_settings: kneeSettings(),
     edits: state.edits,
   };
   if (state.participantYaml !== null) body.participant_yaml = state.participantYaml;
   else body.participant = state.participant;
   if (state.knee) body.knee = state.knee;
   return body;
+}
+
+// model_scale, and a microprocessor knee's swing-state damping sliders where it has them.
+function kneeSettings() {
+  const settings = { 'knee_effects.model_scale': Number($('scale').value) };
+  for (const slider of document.querySelectorAll('#knee-states input[type=range]')) settings[slider.name] = Number(slider.value);
+  return settings;
+}
+
+// One damping slider per state of a microprocessor knee (0 to 4 times the file's value).
+function buildKneeStates(states) {
+  const box = $('knee-states');
+  box.textContent = '';
+  states.forEach((state, i) => {
+    if (state.damping_Nm_s_per_rad === null) return;
+    const key = `impedance_state_machine.states[${i}].damping_Nm_s_per_rad`;
+    const row = document.createElement('div');
+    row.className = 'slider';
+    row.innerHTML = '<label></label><input type="range"><output></output>';
+    const slider = row.querySelector('input');
+    const top = Math.max(1, 4 * state.damping_Nm_s_per_rad);
+    Object.assign(slider, { id: `state-${i}`, name: key, min: 0, max: top, step: top / 200, value: state.damping_Nm_s_per_rad });
+    row.querySelector('label').textContent = `${state.name} damping`;
+    row.querySelector('label').htmlFor = slider.id;
+    const output = row.querySelector('output');
+    const show = () => { output.textContent = `${Number(slider.value).toFixed(3)} N m s/rad`; };
+    slider.addEventListener('input', () => { show(); scheduleSimulate(); });
+    show();
+    const error = document.createElement('p');
+    error.className = 'field-error';
+    error.dataset.errorFor = key;
+    box.append(row, error);
+  });
 }
 
 async function post(path, body, signal) {
@@ -98,6 +131,7 @@ async function simulateNow() {
   if (state.controller) state.controller.abort();
   state.controller = new AbortController();
   const started = state.inputTime;
+  state.inputTime = null;  // the next input starts the next measurement
   $('status').textContent = 'simulating...';
   let answer;
   try {
@@ -120,7 +154,7 @@ function scheduleSimulate() {
   document.body.dataset.busy = '1';
   if (state.inputTime === null) state.inputTime = performance.now();
   clearTimeout(state.timer);
-  state.timer = setTimeout(() => { state.timer = null; simulateNow(); state.inputTime = null; }, kDebounceMs);
+  state.timer = setTimeout(() => { state.timer = null; simulateNow(); }, kDebounceMs);
 }
 
 function buildForm(fields) {
@@ -156,14 +190,27 @@ async function loadParticipant() {
   const body = legRequest();
   delete body.knee;
   body.edits = {};
+  body.knee_settings = {};
   const answer = await post('api/participant', body);
   if (answer.status !== 200) { showError(answer.json); return; }
   state.edits = {};
   state.knee = null;
   state.yaml = { participant: answer.json.participant_yaml, knee: answer.json.knee_yaml, name: answer.json.name };
   buildForm(answer.json.fields);
+  buildKneeStates(answer.json.knee_states);
   $('knee').value = answer.json.knee_model;
   $('lowering').max = Math.min(0.2, Math.floor(answer.json.max_lowering_m * 200) / 200);
+  simulateNow();
+}
+
+// A knee chosen from the list: its swing-state sliders, then one swing.
+async function loadKnee() {
+  state.knee = $('knee').value;
+  $('knee-states').textContent = '';
+  const answer = await post('api/participant', legRequest());
+  if (answer.status !== 200) { showNoSwing(answer.json); return; }
+  buildKneeStates(answer.json.knee_states);
+  state.inputTime = performance.now();
   simulateNow();
 }
 
@@ -223,7 +270,7 @@ async function start() {
     state.participantYaml = await file.text();
     loadParticipant();
   });
-  $('knee').addEventListener('change', () => { state.knee = $('knee').value; state.inputTime = performance.now(); simulateNow(); });
+  $('knee').addEventListener('change', loadKnee);
   bindSlider('lowering', 3, ' m');
   bindSlider('mass', 2, ' kg');
   bindSlider('position', 2, ' m');
