@@ -1,10 +1,9 @@
 // swingsim serve's page: the form and sliders build a leg request (docs/serve.md), the
 // server simulates it with the library, and the numbers and stick figure show the answer.
-// While a slider is dragged, requests go out at most every kDebounceMs; an answer older
-// than the newest request is dropped, so the numbers always belong to the knobs shown.
+// While a slider is dragged, at most one request is under way: the inputs that come
+// meanwhile are coalesced into one request with the newest knobs, and an answer for knobs
+// that have moved on is dropped, so the numbers always belong to the knobs shown.
 'use strict';
-
-const kDebounceMs = 25;
 
 // Labels and units of the editable keys (the file's keys, in the file's units).
 const kFieldLabels = {
@@ -23,7 +22,7 @@ for (const seg of ['thigh', 'shank', 'foot']) {
 
 const state = {
   participant: null, participantYaml: null, edits: {}, knee: null, yaml: {},
-  latest: 0, inputTime: null, controller: null, timer: null,
+  latest: 0, inputTime: null, inFlight: 0, wanted: false,
 };
 window.swingsimUpdates = [];  // ms from a knob's input to the numbers shown (the browser test reads it)
 
@@ -76,9 +75,9 @@ function buildKneeStates(states) {
   });
 }
 
-async function post(path, body, signal) {
+async function post(path, body) {
   const response = await fetch(path, {
-    method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body), signal,
+    method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body),
   });
   return { status: response.status, json: await response.json() };
 }
@@ -125,19 +124,28 @@ function showSwing(json) {
   $('figure').innerHTML = json.stick_figure_svg || '';
 }
 
+// One request for the knobs as they are now. An answer is shown only if it answers the newest
+// request and no knob moved while it was under way (then the newest knobs go out at once
+// and this answer is dropped): the numbers shown always belong to the knobs shown.
 async function simulateNow() {
   document.body.dataset.busy = '1';
   const id = ++state.latest;
-  if (state.controller) state.controller.abort();
-  state.controller = new AbortController();
   const started = state.inputTime;
   state.inputTime = null;  // the next input starts the next measurement
+  state.inFlight += 1;
   $('status').textContent = 'simulating...';
   let answer;
   try {
-    answer = await post('api/simulate', legRequest(), state.controller.signal);
+    answer = await post('api/simulate', legRequest());
   } catch (e) {
-    if (e.name !== 'AbortError') $('status').textContent = `no answer: ${e}`;
+    $('status').textContent = `no answer: ${e}`;
+    return;
+  } finally {
+    state.inFlight -= 1;
+  }
+  if (state.wanted) {
+    state.wanted = false;
+    simulateNow();
     return;
   }
   if (id !== state.latest) return;  // a newer request is under way: this answer is stale
@@ -145,16 +153,20 @@ async function simulateNow() {
   const ms = started === null ? null : performance.now() - started;
   if (ms !== null) window.swingsimUpdates.push(ms);
   $('status').textContent = ms === null ? 'ready' : `updated in ${ms.toFixed(0)} ms`;
-  document.body.dataset.updated = String(id);
-  if (state.timer === null) document.body.dataset.busy = '0';
+  if (state.inFlight === 0) document.body.dataset.busy = '0';
 }
 
-// body[data-busy] is '1' from a knob's input until the answer to the last request is shown.
+// A knob moved: its request goes out at once when none is under way, else when the answer
+// comes (the inputs meanwhile become one request, with the newest knobs). body[data-busy] is
+// '1' from the input until the answer for the knobs shown is on the page.
 function scheduleSimulate() {
   document.body.dataset.busy = '1';
   if (state.inputTime === null) state.inputTime = performance.now();
-  clearTimeout(state.timer);
-  state.timer = setTimeout(() => { state.timer = null; simulateNow(); }, kDebounceMs);
+  if (state.inFlight > 0) {
+    state.wanted = true;
+    return;
+  }
+  simulateNow();
 }
 
 function buildForm(fields) {
