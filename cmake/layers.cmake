@@ -2,7 +2,7 @@
 # One list, read by CMakeLists.txt (one library target per layer, linking exactly these)
 # and by cmake/check_layers.cmake (every #include "layer/..." of a file must name its own
 # layer or one listed here). docs/architecture.md draws the picture.
-set(SWINGSIM_LAYERS core numerics knee model io leg swing sweep identify report study cli)
+set(SWINGSIM_LAYERS core numerics knee model io leg swing sweep identify report study serve cli)
 set(SWINGSIM_DEPS_core "")
 set(SWINGSIM_DEPS_numerics core)
 set(SWINGSIM_DEPS_knee core numerics)
@@ -14,4 +14,5 @@ set(SWINGSIM_DEPS_sweep core numerics knee model leg swing)
 set(SWINGSIM_DEPS_identify core numerics knee model leg swing sweep)
 set(SWINGSIM_DEPS_report core numerics knee model io leg swing sweep identify)
 set(SWINGSIM_DEPS_study core numerics knee model io leg swing sweep identify report)
-set(SWINGSIM_DEPS_cli core numerics knee model io leg swing sweep identify study report)
+set(SWINGSIM_DEPS_serve core numerics knee model io leg swing sweep identify report study)
+set(SWINGSIM_DEPS_cli core numerics knee model io leg swing sweep identify study report serve)

@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {addSimulateCommand(app), addSweepCommand(app),   addCalibrateCommand(app),
                                          addFitCommand(app),      addCompareCommand(app), addDiagnoseCommand(app),
                                          addGenerateCommand(app), addMergeCommand(app),   addSwingsCommand(app),
-                                         addImportOsimCommand(app), addExportOsimCommand(app), addTuneCommand(app)};
+                                         addImportOsimCommand(app), addExportOsimCommand(app), addTuneCommand(app),
+                                         addServeCommand(app)};
   // Set after adding the subcommands, which would inherit it.
   app.footer("'swingsim <command> --help' lists a command's options with their units and defaults.");
   if (argc < 2) {

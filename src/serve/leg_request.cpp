@@ -1,0 +1,214 @@
+#include "serve/leg_request.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "io/knee_model_knobs.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "study/run_arguments.h"
+
+namespace swingsim {
+namespace {
+
+constexpr double kMaxAddedMassPosition = kMaxSegmentLength;  // m: below the knee, along the shank
+
+std::string describeJson(const Json& value) { return value.dump(); }
+
+double readNumber(const Json& body, const std::string& key, double fallback) {
+  if (!body.contains(key) || body[key].is_null()) return fallback;
+  const Json& v = body[key];
+  if (!v.is_number()) throw InputError(key + ": expected a number (got " + describeJson(v) + ")");
+  return v.get<double>();
+}
+
+std::optional<std::string> readText(const Json& body, const std::string& key) {
+  if (!body.contains(key) || body[key].is_null()) return std::nullopt;
+  if (!body[key].is_string()) throw InputError(key + ": expected a string (got " + describeJson(body[key]) + ")");
+  return body[key].get<std::string>();
+}
+
+// The form's edits: {KEY: "text" or number}, each KEY one of editableParticipantKeys().
+std::vector<std::pair<std::string, std::string>> readEdits(const Json& body) {
+  std::vector<std::pair<std::string, std::string>> edits;
+  if (!body.contains("edits")) return edits;
+  if (!body["edits"].is_object()) throw InputError("edits: expected a map of participant keys to values");
+  const auto& keys = editableParticipantKeys();
+  for (const auto& [key, value] : body["edits"].items()) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end())
+      throw InputError("edits: expected a main number of the form, e.g. body_mass_kg (got '" + key + "')");
+    if (!value.is_string() && !value.is_number()) throw InputError(key + ": expected a number (got " + describeJson(value) + ")");
+    edits.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  return edits;
+}
+
+// A knee setting the page offers: the scale of the knee law, a microprocessor knee's states.
+bool isKneeSettingKey(const std::string& key) {
+  static const std::regex kAllowed(R"(knee_effects\.model_scale|impedance_state_machine\.states\[[0-9]{1,2}\]\.[A-Za-z_]+)");
+  return std::regex_match(key, kAllowed);
+}
+
+std::vector<std::pair<std::string, double>> readKneeSettings(const Json& body) {
+  std::vector<std::pair<std::string, double>> settings;
+  if (!body.contains("knee_settings")) return settings;
+  if (!body["knee_settings"].is_object()) throw InputError("knee_settings: expected a map of knee model keys to numbers");
+  for (const auto& [key, value] : body["knee_settings"].items()) {
+    if (!isKneeSettingKey(key))
+      throw InputError("knee_settings: expected knee_effects.model_scale or impedance_state_machine.states[I].KEY (got '" + key + "')");
+    if (!value.is_number()) throw InputError(key + ": expected a number (got " + describeJson(value) + ")");
+    settings.emplace_back(key, value.get<double>());
+  }
+  return settings;
+}
+
+// The node at dotted map path `key` in `root`, created if absent.
+YAML::Node findMapNode(YAML::Node root, const std::string& key) {
+  YAML::Node node = root;
+  std::stringstream parts(key);
+  std::string part;
+  while (std::getline(parts, part, '.')) {
+    if (!node.IsMap()) throw InputError(key + ": expected a map above '" + part + "' in the participant");
+    YAML::Node next = node[part];
+    node.reset(next);
+  }
+  return node;
+}
+
+std::string formatShippedKneeList(const ShippedFiles& files) {
+  std::string list;
+  for (const auto& n : files.getKneeNames()) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
+// An upload's knee_model as ../models/NAME.yaml of a shipped model, and no measured thigh
+// file: the server reads no path an upload gives. True if knee_model was rewritten to that form.
+bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files) {
+  if (root["thigh_kinematics"])
+    throw InputError("thigh_kinematics: expected none in an uploaded participant (swingsim serve reads no file an upload "
+                     "names; use drive: hip_moment) (got a thigh_kinematics entry)");
+  if (!root["knee_model"] || !root["knee_model"].IsScalar()) return false;  // the loader says what is missing
+  std::string name = root["knee_model"].Scalar();
+  const std::string prefix = "../models/", suffix = ".yaml";
+  if (name.rfind(prefix, 0) == 0) name = name.substr(prefix.size());
+  if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+    name = name.substr(0, name.size() - suffix.size());
+  const auto& names = files.getKneeNames();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw InputError("knee_model: expected a shipped knee model by name, one of " + formatShippedKneeList(files) + " (got '" +
+                     root["knee_model"].Scalar() + "')");
+  if (root["knee_model"].Scalar() == prefix + name + suffix) return false;
+  root["knee_model"] = prefix + name + suffix;
+  return true;
+}
+
+std::string readFileText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The participant's YAML tree: the shipped file's, or the upload's (checked), with the edits.
+Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles& files) {
+  const bool uploaded = request.participantYaml.has_value();
+  // An upload resolves ../models/NAME.yaml as a shipped participant does; nothing is read there.
+  const std::string source = uploaded ? files.getParticipantsDir() + "/upload.yaml" : files.findParticipantPath(request.participant);
+  const std::string text = uploaded ? *request.participantYaml : readFileText(source);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError("participant_yaml: expected a participant file in YAML (got a YAML error: " + e.msg + ")");
+  }
+  if (!root.IsMap()) throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
+  // The text as given where nothing was changed, so that messages give the upload's own lines.
+  const bool rewritten = uploaded && checkUploadedPaths(root, files);
+  for (const auto& [key, value] : request.edits) findMapNode(root, key) = value;
+  YAML::Emitter out;
+  out << root;
+  try {
+    return parseParticipant(uploaded && !rewritten && request.edits.empty() ? text : std::string(out.c_str()), source);
+  } catch (const InputError& e) {
+    if (!uploaded) throw;
+    // An upload is upload.yaml to its user: no path of the server's in its messages.
+    std::string message = e.what();
+    for (auto at = message.find(source); at != std::string::npos; at = message.find(source, at))
+      message.replace(at, source.size(), "upload.yaml");
+    throw InputError(message);
+  }
+}
+
+KneeModel loadRequestKnee(const LegRequest& request, const Participant& p, const ShippedFiles& files) {
+  const std::string path = request.knee ? files.findKneePath(*request.knee) : p.kneeModelPath;
+  std::vector<std::string> keys;
+  std::vector<double> values;
+  for (const auto& [key, value] : request.kneeSettings) {
+    keys.push_back(key);
+    values.push_back(value);
+  }
+  const KneeModelKnobs knobs(path);
+  for (const auto& key : keys)
+    if (const std::string problem = knobs.checkKey(key); !problem.empty()) throw InputError(key + ": " + problem);
+  return knobs.make(keys, values);  // the loader's message names the key (its line is the edited tree's)
+}
+
+}  // namespace
+
+const std::vector<std::string>& editableParticipantKeys() {
+  static const std::vector<std::string> kKeys = [] {
+    std::vector<std::string> keys = {"height_m", "body_mass_kg"};
+    for (const char* segment : {"thigh", "shank", "foot"})
+      for (const char* field : {"length_m", "mass_kg", "com_from_distal_m", "inertia_kgm2"})
+        keys.push_back(std::string("segments.") + segment + "." + field);
+    keys.insert(keys.end(), {"knee_friction_Nm", "sound_limb_swing_time_s", "hip_moment.time_scale"});
+    return keys;
+  }();
+  return kKeys;
+}
+
+LegRequest readLegRequest(const Json& body) {
+  if (!body.is_object()) throw InputError("request: expected a JSON object (got " + describeJson(body) + ")");
+  LegRequest r;
+  r.participantYaml = readText(body, "participant_yaml");
+  r.participant = readText(body, "participant").value_or("");
+  if (!r.participantYaml && r.participant.empty())
+    throw InputError("participant: expected a shipped participant's name or a participant_yaml upload (got neither)");
+  r.edits = readEdits(body);
+  r.knee = readText(body, "knee");
+  r.kneeSettings = readKneeSettings(body);
+  r.lowering = readNumber(body, "lowering_m", 0);
+  if (const std::string problem = checkLowering(r.lowering); !problem.empty())
+    throw InputError("lowering_m: " + problem + " (got " + formatNumber(r.lowering) + ")");
+  r.added.mass = readNumber(body, "added_mass_kg", 0);
+  if (!(r.added.mass >= 0 && r.added.mass <= kMaxSegmentMass))
+    throw InputError("added_mass_kg: expected 0 to " + formatNumber(kMaxSegmentMass) + " kg (got " + formatNumber(r.added.mass) + ")");
+  r.added.distanceBelowKnee = readNumber(body, "added_mass_position_m", 0);
+  if (!(r.added.distanceBelowKnee >= 0 && r.added.distanceBelowKnee <= kMaxAddedMassPosition))
+    throw InputError("added_mass_position_m: expected 0 to " + formatNumber(kMaxAddedMassPosition) + " m below the knee (got " +
+                     formatNumber(r.added.distanceBelowKnee) + ")");
+  return r;
+}
+
+Leg loadLeg(const LegRequest& request, const ShippedFiles& files, const ServeLimits& limits) {
+  Participant p = loadRequestParticipant(request, files);
+  if (p.swingEnd.timeLimit > limits.maxSwingTimeLimit)
+    throw InputError("swing_end.time_limit_s: expected at most " + formatNumber(limits.maxSwingTimeLimit) +
+                     " s on swingsim serve (its simulation budget) (got " + formatNumber(p.swingEnd.timeLimit) + ")");
+  KneeModel knee = loadRequestKnee(request, p, files);
+  return {std::move(p), std::move(knee)};
+}
+
+std::string findErrorKey(const std::string& message) {
+  static const std::regex kKey(R"(^(?:[^\n]*?:[0-9]+: )?([A-Za-z_][A-Za-z0-9_.\[\]]*): )");
+  std::smatch m;
+  return std::regex_search(message, m, kKey) ? m[1].str() : "";
+}
+
+}  // namespace swingsim

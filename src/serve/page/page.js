@@ -1,0 +1,296 @@
+// swingsim serve's page: the form and sliders build a leg request (docs/serve.md), the
+// server simulates it with the library, and the numbers and stick figure show the answer.
+// While a slider is dragged, at most one request is under way: the inputs that come
+// meanwhile are coalesced into one request with the newest knobs, and an answer for knobs
+// that have moved on is dropped, so the numbers always belong to the knobs shown.
+'use strict';
+
+// Labels and units of the editable keys (the file's keys, in the file's units).
+const kFieldLabels = {
+  'height_m': ['height', 'm'],
+  'body_mass_kg': ['body mass', 'kg'],
+  'knee_friction_Nm': ['knee friction', 'N m'],
+  'sound_limb_swing_time_s': ['sound-limb swing time', 's'],
+  'hip_moment.time_scale': ['hip moment time scale', ''],
+};
+for (const seg of ['thigh', 'shank', 'foot']) {
+  kFieldLabels[`segments.${seg}.length_m`] = [`${seg} length`, 'm'];
+  kFieldLabels[`segments.${seg}.mass_kg`] = [`${seg} mass`, 'kg'];
+  kFieldLabels[`segments.${seg}.com_from_distal_m`] = [`${seg} COM from distal end`, 'm'];
+  kFieldLabels[`segments.${seg}.inertia_kgm2`] = [`${seg} inertia about COM`, 'kg m\u00b2'];
+}
+
+const state = {
+  participant: null, participantYaml: null, edits: {}, knee: null, yaml: {},
+  latest: 0, inputTime: null, inFlight: 0, wanted: false,
+};
+window.swingsimUpdates = [];  // ms from a knob's input to the numbers shown (the browser test reads it)
+
+const $ = (id) => document.getElementById(id);
+
+function legRequest() {
+  const body = {
+    lowering_m: Number($('lowering').value),
+    added_mass_kg: Number($('mass').value),
+    added_mass_position_m: Number($('position').value),
+    knee_settings: kneeSettings(),
+    edits: state.edits,
+  };
+  if (state.participantYaml !== null) body.participant_yaml = state.participantYaml;
+  else body.participant = state.participant;
+  if (state.knee) body.knee = state.knee;
+  return body;
+}
+
+// model_scale, and a microprocessor knee's swing-state damping sliders where it has them.
+function kneeSettings() {
+  const settings = { 'knee_effects.model_scale': Number($('scale').value) };
+  for (const slider of document.querySelectorAll('#knee-states input[type=range]')) settings[slider.name] = Number(slider.value);
+  return settings;
+}
+
+// One damping slider per state of a microprocessor knee (0 to 4 times the file's value).
+function buildKneeStates(states) {
+  const box = $('knee-states');
+  box.textContent = '';
+  states.forEach((state, i) => {
+    if (state.damping_Nm_s_per_rad === null) return;
+    const key = `impedance_state_machine.states[${i}].damping_Nm_s_per_rad`;
+    const row = document.createElement('div');
+    row.className = 'slider';
+    row.innerHTML = '<label></label><input type="range"><output></output>';
+    const slider = row.querySelector('input');
+    const top = Math.max(1, 4 * state.damping_Nm_s_per_rad);
+    Object.assign(slider, { id: `state-${i}`, name: key, min: 0, max: top, step: top / 200, value: state.damping_Nm_s_per_rad });
+    row.querySelector('label').textContent = `${state.name} damping`;
+    row.querySelector('label').htmlFor = slider.id;
+    const output = row.querySelector('output');
+    const show = () => { output.textContent = `${Number(slider.value).toFixed(3)} N m s/rad`; };
+    slider.addEventListener('input', () => { show(); scheduleSimulate(); });
+    show();
+    const error = document.createElement('p');
+    error.className = 'field-error';
+    error.dataset.errorFor = key;
+    box.append(row, error);
+  });
+}
+
+async function post(path, body) {
+  const response = await fetch(path, {
+    method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body),
+  });
+  return { status: response.status, json: await response.json() };
+}
+
+function clearErrors() {
+  for (const e of document.querySelectorAll('.field-error')) e.textContent = '';
+  for (const f of document.querySelectorAll('.field.invalid')) f.classList.remove('invalid');
+}
+
+// An error beside the field its key names, or under the numbers when no field has it.
+function showError(json) {
+  clearErrors();
+  const key = json.key || '';
+  const target = document.querySelector(`.field-error[data-error-for="${CSS.escape(key)}"]`);
+  if (target) {
+    target.textContent = json.message || json.error;
+    const field = target.closest('.field');
+    if (field) field.classList.add('invalid');
+  } else {
+    $('run-error').textContent = json.error;
+  }
+}
+
+function fmt(value, digits, unit) {
+  return value === null || value === undefined ? 'none' : `${value.toFixed(digits)} ${unit}`;
+}
+
+// A request the server refused: its error beside its field, and no numbers that belong to
+// other knobs.
+function showNoSwing(json) {
+  showError(json);
+  for (const id of ['swing-time', 'peak-flexion', 'toe-clearance', 'stop-impact']) $(id).textContent = '-';
+  $('figure').innerHTML = '';
+}
+
+function showSwing(json) {
+  clearErrors();
+  $('swing-time').textContent = json.swing_time_s === null ? 'not reached' : fmt(json.swing_time_s, 4, 's');
+  $('peak-flexion').textContent = fmt(json.peak_knee_flexion_deg, 1, 'deg');
+  $('toe-clearance').textContent = fmt(json.min_toe_clearance_m, 3, 'm');
+  const impact = json.stop_impacts && json.stop_impacts[0];
+  $('stop-impact').textContent = impact ?
+    `${impact.impact_rate_rad_s.toFixed(2)} rad/s at ${impact.time_s.toFixed(4)} s` : 'none';
+  $('figure').innerHTML = json.stick_figure_svg || '';
+}
+
+// One request for the knobs as they are now. An answer is shown only if it answers the newest
+// request and no knob moved while it was under way (then the newest knobs go out at once
+// and this answer is dropped): the numbers shown always belong to the knobs shown.
+async function simulateNow() {
+  document.body.dataset.busy = '1';
+  const id = ++state.latest;
+  const started = state.inputTime;
+  state.inputTime = null;  // the next input starts the next measurement
+  state.inFlight += 1;
+  $('status').textContent = 'simulating...';
+  let answer;
+  try {
+    answer = await post('api/simulate', legRequest());
+  } catch (e) {
+    $('status').textContent = `no answer: ${e}`;
+    return;
+  } finally {
+    state.inFlight -= 1;
+  }
+  if (state.wanted) {
+    state.wanted = false;
+    simulateNow();
+    return;
+  }
+  if (id !== state.latest) return;  // a newer request is under way: this answer is stale
+  if (answer.status === 200) showSwing(answer.json); else showNoSwing(answer.json);
+  const ms = started === null ? null : performance.now() - started;
+  if (ms !== null) window.swingsimUpdates.push(ms);
+  $('status').textContent = ms === null ? 'ready' : `updated in ${ms.toFixed(0)} ms`;
+  if (state.inFlight === 0) document.body.dataset.busy = '0';
+}
+
+// A knob moved: its request goes out at once when none is under way, else when the answer
+// comes (the inputs meanwhile become one request, with the newest knobs). body[data-busy] is
+// '1' from the input until the answer for the knobs shown is on the page.
+function scheduleSimulate() {
+  document.body.dataset.busy = '1';
+  if (state.inputTime === null) state.inputTime = performance.now();
+  if (state.inFlight > 0) {
+    state.wanted = true;
+    return;
+  }
+  simulateNow();
+}
+
+function buildForm(fields) {
+  const form = $('fields');
+  form.textContent = '';
+  for (const [key, value] of Object.entries(fields)) {
+    const [label, unit] = kFieldLabels[key] || [key, ''];
+    const row = document.createElement('div');
+    row.className = 'field';
+    row.innerHTML = `<label></label><span><input type="text" inputmode="decimal"><span class="unit"></span></span>`;
+    const input = row.querySelector('input');
+    row.querySelector('label').textContent = label;
+    row.querySelector('.unit').textContent = unit;
+    input.name = key;
+    input.id = `field-${key}`;
+    row.querySelector('label').htmlFor = input.id;
+    input.value = value === null ? '' : String(value);
+    input.addEventListener('change', () => {
+      if (input.value.trim() === '') delete state.edits[key]; else state.edits[key] = input.value.trim();
+      state.inputTime = performance.now();
+      simulateNow();
+    });
+    const error = document.createElement('p');
+    error.className = 'field-error';
+    error.dataset.errorFor = key;
+    row.append(error);
+    form.append(row);
+  }
+}
+
+// Loads the participant (shipped or uploaded): its form, its knee, then one swing.
+async function loadParticipant() {
+  const body = legRequest();
+  delete body.knee;
+  body.edits = {};
+  body.knee_settings = {};
+  const answer = await post('api/participant', body);
+  if (answer.status !== 200) { showError(answer.json); return; }
+  state.edits = {};
+  state.knee = null;
+  state.yaml = { participant: answer.json.participant_yaml, knee: answer.json.knee_yaml, name: answer.json.name };
+  buildForm(answer.json.fields);
+  buildKneeStates(answer.json.knee_states);
+  $('knee').value = answer.json.knee_model;
+  $('lowering').max = Math.min(0.2, Math.floor(answer.json.max_lowering_m * 200) / 200);
+  simulateNow();
+}
+
+// A knee chosen from the list: its swing-state sliders, then one swing.
+async function loadKnee() {
+  state.knee = $('knee').value;
+  $('knee-states').textContent = '';
+  const answer = await post('api/participant', legRequest());
+  if (answer.status !== 200) { showNoSwing(answer.json); return; }
+  buildKneeStates(answer.json.knee_states);
+  state.inputTime = performance.now();
+  simulateNow();
+}
+
+function download(name, text) {
+  const link = document.createElement('a');
+  link.href = URL.createObjectURL(new Blob([text], { type: 'application/yaml' }));
+  link.download = name;
+  link.click();
+  URL.revokeObjectURL(link.href);
+}
+
+async function exportYaml(which) {
+  const answer = await post('api/participant', legRequest());
+  if (answer.status !== 200) { showError(answer.json); return; }
+  if (which === 'participant') download(`${answer.json.name}.yaml`, answer.json.participant_yaml);
+  else download(`${answer.json.knee_model}.yaml`, answer.json.knee_yaml);
+}
+
+async function runSweep() {
+  $('sweep-summary').textContent = 'sweeping...';
+  const answer = await post('api/sweep', legRequest());
+  if (answer.status !== 200) { $('sweep-summary').textContent = ''; showError(answer.json); return; }
+  const s = answer.json;
+  let text = s.fastest_lowering_m === null ? 'no lowering ended a swing' :
+    `fastest swing ${s.fastest_swing_time_s.toFixed(4)} s at ${(s.fastest_lowering_m * 1000).toFixed(0)} mm`;
+  if (s.symmetry) {
+    text += s.symmetry.reached ?
+      `; symmetry with the sound limb (${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s) at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm` :
+      `; the sound limb's ${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s is not reached (closest at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm)`;
+  }
+  $('sweep-summary').textContent = text;
+  $('sweep-figure').innerHTML = s.figure_svg;
+}
+
+function bindSlider(id, digits, unit) {
+  const slider = $(id);
+  const show = () => { $(`${id}-value`).textContent = `${Number(slider.value).toFixed(digits)}${unit}`; };
+  slider.addEventListener('input', () => { show(); scheduleSimulate(); });
+  show();
+}
+
+async function start() {
+  const files = await (await fetch('api/files')).json();
+  for (const [select, names] of [[$('participant'), files.participants], [$('knee'), files.knee_models]])
+    for (const name of names) select.append(new Option(name, name));
+  state.participant = files.participants.includes('p1') ? 'p1' : files.participants[0];
+  $('participant').value = state.participant;
+  $('participant').addEventListener('change', () => {
+    state.participant = $('participant').value;
+    state.participantYaml = null;
+    $('upload').value = '';
+    loadParticipant();
+  });
+  $('upload').addEventListener('change', async () => {
+    const file = $('upload').files[0];
+    if (!file) return;
+    state.participantYaml = await file.text();
+    loadParticipant();
+  });
+  $('knee').addEventListener('change', loadKnee);
+  bindSlider('lowering', 3, ' m');
+  bindSlider('mass', 2, ' kg');
+  bindSlider('position', 2, ' m');
+  bindSlider('scale', 2, '');
+  $('export-participant').addEventListener('click', () => exportYaml('participant'));
+  $('export-knee').addEventListener('click', () => exportYaml('knee'));
+  $('sweep-button').addEventListener('click', runSweep);
+  await loadParticipant();
+}
+
+start();

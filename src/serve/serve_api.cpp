@@ -1,0 +1,223 @@
+#include "serve/serve_api.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+
+#include "core/input_error.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "report/stick_figure_animation.h"
+#include "report/sweep_figures.h"
+#include "report/sweep_report.h"
+#include "report/swing_json.h"
+#include "swing/knee_setup.h"
+#include "swing/swing_simulation.h"
+
+namespace swingsim {
+namespace {
+
+constexpr double kTrajectoryStep = 0.01;  // s between the trajectory samples sent to the page
+
+ApiReply reply(const Json& json) { return {200, json.dump()}; }
+
+ApiReply replyError(int status, const std::string& message) {
+  Json error = {{"error", message}};
+  if (status == 400) {
+    const std::string key = findErrorKey(message);
+    error["key"] = key;
+    const auto at = message.find(key + ": ");
+    error["message"] = key.empty() || at == std::string::npos ? message : message.substr(at);
+  }
+  return {status, error.dump()};
+}
+
+// `answer()` with the library's exceptions as replies: bad input 400, a failed run 422.
+ApiReply answerOrError(const std::function<Json()>& answer) {
+  try {
+    return reply(answer());
+  } catch (const Json::parse_error&) {
+    return replyError(400, "request: expected a JSON object");
+  } catch (const InputError& e) {
+    return replyError(400, e.what());
+  } catch (const RunError& e) {
+    return replyError(422, e.what());
+  } catch (const std::exception& e) {
+    return replyError(500, e.what());
+  }
+}
+
+Json readBody(const std::string& body) { return Json::parse(body.empty() ? "{}" : body); }
+
+// The value of each editable key in the participant's YAML text, as the file writes it.
+Json readFields(const std::string& participantYaml) {
+  const YAML::Node root = YAML::Load(participantYaml);
+  Json fields = Json::object();
+  for (const std::string& key : editableParticipantKeys()) {
+    YAML::Node node = root;
+    std::stringstream parts(key);
+    std::string part;
+    while (node && std::getline(parts, part, '.')) node.reset(node.IsMap() ? node[part] : YAML::Node());
+    fields[key] = node && node.IsScalar() ? Json(node.as<double>()) : Json(nullptr);
+  }
+  return fields;
+}
+
+// A microprocessor knee's swing states as the knee file writes them (its impedance_state_machine
+// states: name and the numbers of each), for the page's sliders; empty for another kind.
+Json readKneeStates(const std::string& kneeYaml) {
+  Json states = Json::array();
+  const YAML::Node list = YAML::Load(kneeYaml)["impedance_state_machine"]["states"];
+  if (!list || !list.IsSequence()) return states;
+  for (const YAML::Node& state : list) {
+    Json s = {{"name", state["name"] ? state["name"].Scalar() : ""}};
+    for (const char* key : {"stiffness_Nm_per_rad", "damping_Nm_s_per_rad", "equilibrium_deg"})
+      s[key] = state[key] && state[key].IsScalar() ? Json(state[key].as<double>()) : Json(nullptr);
+    states.push_back(s);
+  }
+  return states;
+}
+
+std::string stemOf(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+// Trajectory samples about kTrajectoryStep apart (and the last), the page's stick figure.
+Json makeTrajectorySamples(const SwingTrajectory& tr) {
+  Json samples = {{"time_s", Json::array()}, {"hip_flexion_deg", Json::array()}, {"knee_flexion_deg", Json::array()},
+                  {"knee_x_m", Json::array()}, {"knee_y_m", Json::array()}, {"ankle_x_m", Json::array()},
+                  {"ankle_y_m", Json::array()}, {"toe_x_m", Json::array()}, {"toe_y_m", Json::array()}};
+  double next = 0;
+  for (std::size_t k = 0; k < tr.size(); ++k) {
+    if (tr.time[k] < next && k + 1 < tr.size()) continue;
+    next = tr.time[k] + kTrajectoryStep;
+    const double values[] = {tr.time[k], tr.hipFlexion[k] * kRadToDeg, tr.kneeFlexion[k] * kRadToDeg, tr.kneeX[k], tr.kneeY[k],
+                             tr.ankleX[k], tr.ankleY[k], tr.toeX[k], tr.toeY[k]};
+    int i = 0;
+    for (auto& column : samples) column.push_back(values[i++]);
+  }
+  return samples;
+}
+
+SwingOptions makeServeSwingOptions(const ServeLimits& limits) {
+  SwingOptions options;
+  options.maxWallSeconds = limits.maxSwingWallSeconds;
+  return options;
+}
+
+// The sweep's lowering grid from the request; refused above the point budget.
+void readSweepGrid(const Json& body, const ServeLimits& limits, SweepStudy& study) {
+  for (const char* key : {"lowering_step_m", "lowering_max_m"})
+    if (body.contains(key) && !body[key].is_number()) throw InputError(std::string(key) + ": expected a number (got " + body[key].dump() + ")");
+  study.loweringStep = body.value("lowering_step_m", 0.010);
+  study.loweringMax = body.value("lowering_max_m", 0.200);
+  if (!(study.loweringStep > 0)) throw InputError("lowering_step_m: expected a positive step, m (got " + formatNumber(study.loweringStep) + ")");
+  if (!(study.loweringMax >= 0 && study.loweringMax <= 0.5))
+    throw InputError("lowering_max_m: expected 0 to 0.5 m (got " + formatNumber(study.loweringMax) + ")");
+  const double points = std::floor(study.loweringMax / study.loweringStep + 1e-9) + 1;
+  if (points > limits.maxSweepPoints)
+    throw InputError("lowering_step_m: expected at most " + std::to_string(limits.maxSweepPoints) +
+                     " lowerings in one sweep on swingsim serve (its simulation budget) (got " + formatNumber(points) +
+                     " lowerings: step " + formatNumber(study.loweringStep) + " m to " + formatNumber(study.loweringMax) + " m)");
+}
+
+Json makeSweepJson(const SweepStudy& study, const SweepResults& results) {
+  const ParticipantSweep& ps = results.participants.front();
+  Json lowerings = Json::array(), times = Json::array();
+  for (const SweepPoint& pt : ps.points) {
+    if (!pt.onGrid) continue;
+    lowerings.push_back(pt.lowering);
+    times.push_back(pt.ok ? Json(pt.result.swingTime) : Json(nullptr));
+  }
+  const SweepPoint* best = ps.best >= 0 ? &ps.points[static_cast<std::size_t>(ps.best)] : nullptr;
+  Json symmetry = nullptr;
+  if (ps.symmetry.given)
+    symmetry = {{"sound_limb_swing_time_s", ps.symmetry.soundTime}, {"found", ps.symmetry.found},
+                {"reached", ps.symmetry.reached}, {"lowering_m", ps.symmetry.lowering},
+                {"prosthetic_swing_time_s", ps.symmetry.prostheticTime}};
+  Json sweepJson = Json::parse(formatSweepJson(results));
+  return {{"participant", ps.name},
+          {"lowering_step_m", study.loweringStep},
+          {"lowerings_m", lowerings},
+          {"swing_times_s", times},
+          {"fastest_lowering_m", best ? Json(best->lowering) : Json(nullptr)},
+          {"fastest_swing_time_s", best ? Json(best->result.swingTime) : Json(nullptr)},
+          {"symmetry", symmetry},
+          {"figure_svg", makeSwingTimeFigure(ps, nullptr).render()},
+          {"sweep", sweepJson}};
+}
+
+}  // namespace
+
+ServeApi::ServeApi(ShippedFiles files, ServeLimits limits) : files_(std::move(files)), limits_(limits) {}
+
+ApiReply ServeApi::listFiles() const {
+  return reply({{"participants", files_.getParticipantNames()},
+                {"knee_models", files_.getKneeNames()},
+                {"editable_keys", editableParticipantKeys()},
+                {"limits",
+                 {{"max_body_bytes", limits_.maxBodyBytes},
+                  {"max_swing_time_limit_s", limits_.maxSwingTimeLimit},
+                  {"max_swing_wall_s", limits_.maxSwingWallSeconds},
+                  {"max_sweep_points", limits_.maxSweepPoints}}}});
+}
+
+ApiReply ServeApi::describeParticipant(const std::string& body) const {
+  return answerOrError([&] {
+    const Leg leg = loadLeg(readLegRequest(readBody(body)), files_, limits_);
+    const Participant& p = leg.participant;
+    const std::string participantYaml = formatParticipantYaml(p, files_.getParticipantsDir());
+    KneeModelSpec spec = leg.knee.spec;
+    if (spec.name.empty()) spec.name = leg.knee.name;
+    return Json{{"name", p.name},
+                {"fields", readFields(participantYaml)},
+                {"knee_model", stemOf(leg.knee.path)},
+                {"knee_settings", {{"knee_effects.model_scale", spec.kneeEffects.modelScale}}},
+                {"drive", p.drive == SwingDrive::kHipMoment ? "hip_moment" : "thigh_kinematics"},
+                {"max_lowering_m", calcMaxLowering(p)},
+                {"participant_yaml", participantYaml},
+                {"knee_yaml", formatKneeModelYaml(spec)},
+                {"knee_states", readKneeStates(formatKneeModelYaml(spec))}};
+  });
+}
+
+ApiReply ServeApi::simulate(const std::string& body) const {
+  return answerOrError([&] {
+    const LegRequest request = readLegRequest(readBody(body));
+    Leg leg = loadLeg(request, files_, limits_);
+    const double hipHeight = calcHipHeight(leg.participant);
+    const SwingSetup setup = makeSwingSetup(std::move(leg.participant), leg.knee, request.lowering, request.added);
+    SwingOptions options = makeServeSwingOptions(limits_);
+    options.trackImpactEnergy = true;  // as the command line's simulate: one swing, the bookkeeping is cheap
+    const SwingResult r = simulateSwing(setup, options);
+    Json json = makeSimulateJson(setup, r);
+    json["knee_model"] = stemOf(leg.knee.path);
+    json["added_mass_kg"] = request.added.mass;
+    json["added_mass_position_m"] = request.added.distanceBelowKnee;
+    const bool ended = std::isfinite(r.swingTime) && r.swingTime > 0 && !r.trajectory.time.empty();
+    json["stick_figure_svg"] = ended ? Json(renderStickFigureAnimation(r, hipHeight)) : Json(nullptr);
+    json["hip_height_m"] = hipHeight;
+    json["trajectory"] = makeTrajectorySamples(r.trajectory);
+    return json;
+  });
+}
+
+ApiReply ServeApi::sweep(const std::string& body) const {
+  return answerOrError([&] {
+    const Json json = readBody(body);
+    const LegRequest request = readLegRequest(json);
+    SweepStudy study;
+    readSweepGrid(json, limits_, study);
+    Leg leg = loadLeg(request, files_, limits_);
+    study.name = "serve";
+    study.includePublishedLowerings = false;
+    study.swing = makeServeSwingOptions(limits_);
+    leg.participant.kneeModelPath = leg.knee.path;
+    study.kneeModels.emplace(leg.knee.path, leg.knee);
+    study.participants.push_back(std::move(leg.participant));
+    const SweepResults results = runSweep(study, 1);
+    return makeSweepJson(study, results);
+  });
+}
+
+}  // namespace swingsim

@@ -1,0 +1,122 @@
+#include "serve/web_server.h"
+
+#include <httplib.h>
+
+#include <optional>
+
+#include "core/input_error.h"
+#include "serve/page_assets.h"
+#include "serve/request_guard.h"
+#include "serve/serve_api.h"
+
+namespace swingsim {
+namespace {
+
+constexpr int kFirstFreeTries = 100;  // ports tried from the default 8080 up
+
+// The page may load its own files and talk to its own origin only; no other site may frame it.
+constexpr const char* kContentSecurityPolicy =
+    "default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; connect-src 'self'; "
+    "frame-ancestors 'none'; base-uri 'none'; form-action 'none'";
+
+const char* contentTypeOf(const std::string& name) {
+  if (name.size() > 3 && name.compare(name.size() - 3, 3, ".js") == 0) return "text/javascript; charset=utf-8";
+  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".css") == 0) return "text/css; charset=utf-8";
+  return "text/html; charset=utf-8";
+}
+
+void sendJson(httplib::Response& res, int status, const std::string& body) {
+  res.status = status;
+  res.set_content(body, "application/json");
+}
+
+int bindPort(httplib::Server& server, const ServeOptions& o) {
+  if (o.port == 0) return server.bind_to_any_port(o.host);
+  for (int k = 0; k < (o.firstFree ? kFirstFreeTries : 1); ++k)
+    if (server.bind_to_port(o.host, o.port + k)) return o.port + k;
+  return -1;
+}
+
+}  // namespace
+
+struct WebServer::Impl {
+  ServeApi api;
+  httplib::Server server;
+  int port = -1;
+  std::optional<RequestGuard> guard;
+
+  explicit Impl(const ServeOptions& o) : api(ShippedFiles(o.dataDir), o.limits) {}
+  void addRoutes();
+  void addGuard();
+};
+
+void WebServer::Impl::addGuard() {
+  server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    const std::string problem = guard->checkRequest(req.get_header_value("Host"), req.get_header_value("Origin"));
+    if (problem.empty()) return httplib::Server::HandlerResponse::Unhandled;
+    sendJson(res, 403, Json{{"error", problem}}.dump());
+    return httplib::Server::HandlerResponse::Handled;
+  });
+}
+
+void WebServer::Impl::addRoutes() {
+  // The page's files by fixed name: a request path never becomes a file path.
+  server.Get(R"(/(|index\.html|page\.js|page\.css))", [](const httplib::Request& req, httplib::Response& res) {
+    const std::string name = req.matches[1].str().empty() ? "index.html" : req.matches[1].str();
+    const auto asset = findPageAsset(name);
+    if (!asset) return sendJson(res, 404, R"({"error":"no such page file"})");
+    res.set_content(std::string(*asset), contentTypeOf(name));
+  });
+  server.Get("/api/files", [this](const httplib::Request&, httplib::Response& res) {
+    const ApiReply r = api.listFiles();
+    sendJson(res, r.status, r.body);
+  });
+  const auto post = [this](const char* path, ApiReply (ServeApi::*call)(const std::string&) const) {
+    server.Post(path, [this, call](const httplib::Request& req, httplib::Response& res) {
+      const ApiReply r = (api.*call)(req.body);
+      sendJson(res, r.status, r.body);
+    });
+  };
+  post("/api/participant", &ServeApi::describeParticipant);
+  post("/api/simulate", &ServeApi::simulate);
+  post("/api/sweep", &ServeApi::sweep);
+  server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+    if (res.body.empty()) sendJson(res, res.status, Json{{"error", "HTTP " + std::to_string(res.status)}}.dump());
+  });
+}
+
+WebServer::WebServer(const ServeOptions& options) : impl_(std::make_unique<Impl>(options)) {
+  Impl& s = *impl_;
+  const int threads = options.threads;
+  s.server.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
+  s.server.set_payload_max_length(options.limits.maxBodyBytes);
+  s.server.set_default_headers({{"Content-Security-Policy", kContentSecurityPolicy},
+                                {"X-Content-Type-Options", "nosniff"},
+                                {"Referrer-Policy", "no-referrer"},
+                                {"Cache-Control", "no-store"}});
+  // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which would let a second
+  // server (the user's own, or another program of the same user) share the port and take
+  // part of the requests; the first free port is then not found either.
+  s.server.set_socket_options([](int sock) {  // httplib's socket_t is int on POSIX
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+  });
+  s.port = bindPort(s.server, options);
+  if (s.port <= 0)
+    throw RunError("swingsim serve: cannot listen on " + options.host + " port " + std::to_string(options.port) +
+                   (options.firstFree ? " or the next " + std::to_string(kFirstFreeTries - 1) : std::string()) +
+                   " (in use, or not an address of this machine)");
+  s.guard.emplace(options.host, s.port);
+  s.addGuard();
+  s.addRoutes();
+}
+
+WebServer::~WebServer() = default;
+
+int WebServer::getPort() const { return impl_->port; }
+std::string WebServer::getOrigin() const { return impl_->guard->getOrigin(); }
+void WebServer::run() { impl_->server.listen_after_bind(); }
+void WebServer::stop() { impl_->server.stop(); }
+bool WebServer::isRunning() const { return impl_->server.is_running(); }
+
+}  // namespace swingsim
