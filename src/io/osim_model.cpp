@@ -270,6 +270,9 @@ OsimModel parseOsimModel(const std::string& text, const std::string& path) {
 
 OsimModel loadOsimModel(const std::string& path) { return parseOsimModel(readFile(path), path); }
 
+std::string makeOsimHipCoordinate(char side) { return std::string("hip_flexion_") + side; }
+std::string makeOsimKneeCoordinate(char side) { return std::string("knee_angle_") + side; }
+
 const OsimBody& OsimModel::getBody(const std::string& bodyName) const {
   for (const auto& b : bodies)
     if (b.name == bodyName) return b;
