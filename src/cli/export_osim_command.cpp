@@ -7,6 +7,7 @@
 // the lab's own motion on it (docs/export-osim.md).
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -34,6 +35,25 @@ struct ExportOsimArguments {
   std::optional<std::string> out;
 };
 
+// Under a measured drive the model starts where the swing does, at the record's toe-off (its
+// first sample): the hip at the thigh's angle less the pelvis tilt (hip_flexion is in the
+// pelvis), the knee at the record's when it has one and `knee_start` is measured; a measured
+// pelvis moves on its planar joint from its toe-off pose (a column the record lacks keeps the
+// welded pose's value).
+void applyMeasuredDrive(const ThighKinematics& t, const InitialConditions& initial, OsimLegPlacement& place) {
+  const bool hasPelvis = !t.pelvisX.empty() || !t.pelvisY.empty() || !t.pelvisTilt.empty();
+  if (hasPelvis) {
+    const std::array<double, 2> hip = place.hipOffsetInPelvis.value_or(std::array<double, 2>{0, 0});
+    OsimPelvisPose at{0, -hip[0], place.hipHeight - hip[1]};
+    if (!t.pelvisTilt.empty()) at.tilt = t.pelvisTilt.front();
+    if (!t.pelvisX.empty()) at.x = t.pelvisX.front();
+    if (!t.pelvisY.empty()) at.y = t.pelvisY.front();
+    place.measuredPelvis = at;
+  }
+  if (!t.hipFlexion.empty()) place.initial.hipFlexion = t.hipFlexion.front() - (t.pelvisTilt.empty() ? 0.0 : t.pelvisTilt.front());
+  if (!t.kneeFlexion.empty() && initial.kneeStart == KneeStart::kMeasured) place.initial.kneeFlexion = t.kneeFlexion.front();
+}
+
 // The participant's hip height, body mass, initial state, hip range and its knee model's stop.
 OsimLegPlacement makePlacement(const Participant& p, const KneeModel& knee, char side) {
   OsimLegPlacement place;
@@ -47,6 +67,7 @@ OsimLegPlacement makePlacement(const Participant& p, const KneeModel& knee, char
   place.kneeMinFlexion = knee.spec.stop.lower;
   // No flexion stop: the knee's physical range, 180 deg.
   place.kneeMaxFlexion = std::min(knee.spec.stop.upper.value_or(kKneeFlexionLimit), kKneeFlexionLimit);
+  if (p.drive == SwingDrive::kThighKinematics) applyMeasuredDrive(p.thighKinematics, p.initial, place);
   return place;
 }
 
@@ -58,7 +79,7 @@ std::string makeHeader(const Participant& p, const std::string& kneeName, const 
   return "Written by `swingsim export-osim` from " + std::filesystem::path(p.path).filename().string() + " (participant " + p.name +
          "), " + (side == 'l' ? "left" : "right") + " leg, knee axis lowered " + formatNumber(a.lowering) + " m, knee model " + kneeName + added +
          ".\n  The planar leg swingsim simulates (docs/export-osim.md): pelvis welded to the ground with the hip at " +
-         "0.530 x height (plus a stated toe_clearance.hip_rise_m); femur, tibia: the thigh and shank (hip and knee pins); talus: the whole foot, welded at the ankle, "
+         "0.530 x height (plus a stated toe_clearance.hip_rise_m), or, under a measured drive with a pelvis, on a PlanarJoint (pelvis_tilt, pelvis_tx, pelvis_ty) at its toe-off pose; femur, tibia: the thigh and shank (hip and knee pins); talus: the whole foot, welded at the ankle, "
          "perpendicular to the shank;\n  calcn and toes: massless, welded; toes' origin is the toe tip. Only Izz is swingsim's; "
          "Ixx, Iyy are a thin rod's. Shapes (cylinders, brick, ellipsoid) are for display only. No muscles, no knee damper: a model to play the swing on, not to simulate it again.\n"
          "  Play the swing: File > Load Motion " + stoName + " (written by `swingsim simulate" + (side == 'l' ? " --side l" : "") +

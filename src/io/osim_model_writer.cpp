@@ -198,6 +198,23 @@ void addLegCoordinates(OsimJoint& hip, OsimJoint& knee, const OsimLegPlacement& 
           "] deg: the knee model's hyperextension stop at the high end (a simulated swing presses a few degrees past it, so not clamped)."));
 }
 
+// The pelvis on the ground: welded with the hip at (0, hipHeight), or, for a measured pelvis,
+// on a PlanarJoint with Gait10dof18musc's pelvis coordinates and ranges (tilt +-90 deg, tx
+// -5..5 m, ty -1..2 m; Models/Gait10dof18musc/gait10dof18musc.osim), from its toe-off pose.
+OsimJoint makeGroundPelvis(const OsimLegPlacement& place, const std::array<double, 2>& hipInPelvis) {
+  const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
+  if (!place.measuredPelvis)
+    return makeJoint("ground_pelvis", "WeldJoint", "ground", makeTranslation(-hipInPelvis[0], place.hipHeight - hipInPelvis[1]), "pelvis",
+                     origin);
+  const OsimPelvisPose& at = *place.measuredPelvis;
+  OsimJoint j = makeJoint("ground_pelvis", "PlanarJoint", "ground", origin, "pelvis", origin);
+  j.coordinates.push_back(makeCoordinate("pelvis_tilt", at.tilt, -kPi / 2, kPi / 2,
+                                         "pelvis_tilt, rad: + = the pelvis tilted forward (about +z), as the gait models; the measured drive's at toe-off"));
+  j.coordinates.push_back(makeCoordinate("pelvis_tx", at.x, -5, 5, "pelvis_tx, m: forward; the measured drive's at toe-off"));
+  j.coordinates.push_back(makeCoordinate("pelvis_ty", at.y, -1, 2, "pelvis_ty, m: up; the measured drive's at toe-off"));
+  return j;
+}
+
 // An added shank mass (simulate --add-mass) as a point mass on its own body, welded to the
 // tibia on the shank's axis at its distance below the knee.
 void addAddedMass(OsimModel& m, const LegGeometry& g, const std::string& s) {
@@ -221,8 +238,7 @@ OsimModel makeOsimLegModel(const LegGeometry& g, const OsimLegPlacement& place) 
   m.bodies = makeLegBodies(g, place, s);
   const std::array<double, 2> hipInPelvis = place.hipOffsetInPelvis.value_or(std::array<double, 2>{0, 0});
   const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
-  OsimJoint ground = makeJoint("ground_pelvis", "WeldJoint", "ground", makeTranslation(-hipInPelvis[0], place.hipHeight - hipInPelvis[1]),
-                               "pelvis", origin);
+  OsimJoint ground = makeGroundPelvis(place, hipInPelvis);
   OsimJoint hip = makeJoint("hip_" + s, "PinJoint", "pelvis", makeTranslation(hipInPelvis[0], hipInPelvis[1]), "femur_" + s, origin);
   OsimJoint knee = makeJoint("knee_" + s, "PinJoint", "femur_" + s, makeTranslation(0, -g.thighLength), "tibia_" + s, origin);
   addLegCoordinates(hip, knee, place);

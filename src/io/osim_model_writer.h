@@ -15,6 +15,13 @@
 
 namespace swingsim {
 
+/// The pelvis of a measured drive at toe-off, in the ground frame (x forward, y up), as a
+/// lab's IK file gives it (pelvis_tilt, pelvis_tx, pelvis_ty).
+struct OsimPelvisPose {
+  double tilt = 0;    ///< rad, about +z (forward tilt positive, as OpenSim's pelvis_tilt)
+  double x = 0, y = 0;  ///< m, the pelvis origin
+};
+
 /// Where the leg stands and how its coordinates start and range (besides its segments).
 struct OsimLegPlacement {
   std::string modelName;
@@ -29,6 +36,10 @@ struct OsimLegPlacement {
   HipRange hipRange;          ///< hip flexion's range, rad
   double kneeMinFlexion = 0;  ///< rad, knee flexion's range (flexion positive): the hyperextension stop
   double kneeMaxFlexion = 0;  ///< rad
+  /// A measured pelvis (a drive with pelvis columns): the pelvis moves in the plane on a
+  /// PlanarJoint ground_pelvis with the gait models' pelvis_tilt, pelvis_tx, pelvis_ty,
+  /// starting here, so a lab's IK file moves it; nullopt: welded with the hip at hipHeight.
+  std::optional<OsimPelvisPose> measuredPelvis;
 };
 
 /// The leg `geometry` (calcLegGeometry at the lowering wanted) as bodies and joints. Body
