@@ -165,6 +165,26 @@ double readNumberArgument(const py::handle& value, const std::string& where, std
   return v;
 }
 
+std::string readTextArgument(const py::handle& value, const std::string& where) {
+  if (!py::isinstance<py::str>(value)) throwTypeError(where, "expected text (str)", value);
+  return value.cast<std::string>();
+}
+
+std::string readChoiceArgument(const py::handle& value, const std::string& where, const std::vector<std::string>& choices) {
+  std::string expected = "expected one of";
+  for (const std::string& c : choices) expected += (&c == &choices.front() ? " '" : ", '") + c + "'";
+  if (!py::isinstance<py::str>(value)) throwTypeError(where, expected, value);
+  const std::string text = value.cast<std::string>();
+  for (const std::string& c : choices)
+    if (c == text) return text;
+  throw InputError(formatArgumentProblem(where, expected, py::repr(value).cast<std::string>()));
+}
+
+bool readFlagArgument(const py::handle& value, const std::string& where) {
+  if (!isBool(value)) throwTypeError(where, "expected True or False", value);
+  return value.cast<bool>();
+}
+
 bool isPathArgument(const py::handle& value) {
   return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
 }

@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <string>
+#include <vector>
 
 #include "io/json_file.h"
 #include "study/run_arguments.h"
@@ -40,6 +41,14 @@ long long readWholeArgument(const pybind11::handle& value, const std::string& wh
 /// array (TypeError naming `where`); `check` (as checkLowering) returns "" or what was
 /// expected (InputError naming `where`).
 double readNumberArgument(const pybind11::handle& value, const std::string& where, std::string (*check)(double));
+
+/// An argument as text: a str (TypeError naming `where`).
+std::string readTextArgument(const pybind11::handle& value, const std::string& where);
+/// An argument as one of `choices` (the command line's oneOf): a str (TypeError), one of
+/// them (InputError listing them, naming `where`).
+std::string readChoiceArgument(const pybind11::handle& value, const std::string& where, const std::vector<std::string>& choices);
+/// An argument as a flag: a bool or numpy bool (TypeError naming `where`; 1 and 0 too).
+bool readFlagArgument(const pybind11::handle& value, const std::string& where);
 
 /// An argument as a path: a str or an os.PathLike giving one (TypeError naming `where`).
 bool isPathArgument(const pybind11::handle& value);

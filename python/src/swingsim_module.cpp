@@ -1,7 +1,8 @@
 // The Python module `swingsim._swingsim` (wrapped by swingsim/__init__.py): loading
-// participants and knee models into editable dicts, one swing, and a sweep study, each
-// calling the same library functions as the command line, with the GIL released while
-// they run. Bad input raises swingsim.InputError (a ValueError) with the CLI's
+// participants and knee models into editable dicts, one swing, the sweep, tuning, fit and
+// diagnosis studies (a diagnosis from a path or a study object with records in memory),
+// each calling the same library functions as the command line, with the GIL released while
+// they run; file objects, swings and the .osim import/export are in python_commands.cpp. Bad input raises swingsim.InputError (a ValueError) with the CLI's
 // `file:line: key: ...` message; a failed run raises swingsim.RunError (a RuntimeError).
 // Arguments are checked first, against the command line's ranges (study/run_arguments.h): a
 // wrong type raises TypeError, a value out of range InputError, each naming the argument.
@@ -10,6 +11,9 @@
 #include <pybind11/stl.h>  // std::optional arguments
 
 #include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -18,6 +22,8 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
+#include "python_commands.h"
+#include "python_objects.h"
 #include "python_values.h"
 #include "report/cylinder_fit_report.h"
 #include "study/cylinder_fit_run.h"
@@ -25,7 +31,9 @@
 #include "report/swing_json.h"
 #include "report/sweep_report.h"
 #include "study/cylinder_study.h"
+#include "study/diagnosis_objects.h"
 #include "study/diagnosis_study.h"
+#include "io/swing_record_csv.h"
 #include "study/run_arguments.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
@@ -37,53 +45,6 @@ namespace py = pybind11;
 
 namespace swingsim::python {
 namespace {
-
-std::string folderOf(const std::string& path) {
-  const std::string folder = std::filesystem::path(path).parent_path().string();
-  return folder.empty() ? "." : folder;
-}
-
-// An object of swingsim/__init__.py (Participant, KneeModel) as the loader's input: its
-// YAML text and the name its messages carry (relative paths resolve against its origin's
-// folder).
-std::pair<std::string, std::string> objectAsYaml(const py::handle& object, const char* what) {
-  const std::string origin = object.attr("origin").cast<std::string>();
-  const std::string source = origin + " (edited in Python)";
-  return {toYamlText(object.attr("to_dict")(), source + ": " + what), source};
-}
-
-/// load(path) with the GIL released: a slow disk or a FIFO does not stop Python's threads.
-template <class Load>
-auto loadWithoutGil(Load load, const std::string& path) {
-  py::gil_scoped_release release;
-  return load(path);
-}
-
-/// An instance of swingsim/__init__.py's class `name` (Participant, KneeModel)?
-bool isPackageObject(const py::handle& value, const char* name) {
-  return py::isinstance(value, py::module_::import("swingsim").attr(name));
-}
-
-Participant readParticipant(const py::handle& participant, const char* function) {
-  const std::string where = std::string(function) + "(): participant";
-  if (isPathArgument(participant)) return loadWithoutGil(loadParticipant, readPathArgument(participant, where));
-  if (!isPackageObject(participant, "Participant"))
-    throw py::type_error(formatArgumentProblem(where, "expected a path or a swingsim.Participant",
-                                               describePython(participant)));
-  const auto [text, source] = objectAsYaml(participant, "participant");
-  return parseParticipant(text, source);
-}
-
-KneeModel readKnee(const py::handle& knee, const Participant& participant, const char* function) {
-  const std::string where = std::string(function) + "(): knee";
-  if (knee.is_none()) return loadWithoutGil(loadKneeModel, participant.kneeModelPath);
-  if (isPathArgument(knee)) return loadWithoutGil(loadKneeModel, readPathArgument(knee, where));
-  if (!isPackageObject(knee, "KneeModel"))
-    throw py::type_error(formatArgumentProblem(where, "expected None (the participant's), a path or a swingsim.KneeModel",
-                                               describePython(knee)));
-  const auto [text, source] = objectAsYaml(knee, "knee model");
-  return parseKneeModel(text, source);
-}
 
 /// The participant file at `path` as a dict in file units.
 py::object loadParticipantDict(const std::string& path) {
@@ -128,17 +89,30 @@ py::dict simulate(const py::object& participant, const py::object& loweringValue
   return out;
 }
 
+/// The sweep study's inputs against the files a run writes into `out`: refused before any swing.
+void checkSweepOutputs(const SweepStudy& study, const std::string& out) {
+  std::vector<CommandFile> inputs = {{"study_path", study.path}};
+  for (const Participant& p : study.participants)
+    if (!p.path.empty()) inputs.push_back({"study_path: participant " + p.name, p.path});
+  for (const auto& [path, model] : study.kneeModels) inputs.push_back({"study_path: a knee model", path});
+  checkOutputsAreNotInputs(inputs, listFolderFiles("sweep(): out", out, kSweepReportFiles));
+}
+
 /// The content of `swingsim sweep STUDY --json` ([--uncertainty N] [--seed S]) as Python
-/// objects. Ctrl-C stops it between swings and raises KeyboardInterrupt.
+/// objects; with `out`, the command's report, figures and CSV are written there too (one
+/// staged set). Ctrl-C stops it between swings and raises KeyboardInterrupt.
 py::object sweep(const py::object& studyPath, const py::object& uncertaintyValue, const py::object& seedValue,
-                 const py::object& jobsValue) {
+                 const py::object& jobsValue, const py::object& outValue) {
   // Every argument checked before the study is read or anything allocated.
   const std::string path = readPathArgument(studyPath, "sweep(): study_path");
   const long long uncertainty = readWholeArgument(uncertaintyValue, "sweep(): uncertainty", uncertaintyOrNoneRange());
   std::optional<long long> seed;
   if (!seedValue.is_none()) seed = readWholeArgument(seedValue, "sweep(): seed", seedRange());
   const int jobs = static_cast<int>(readWholeArgument(jobsValue, "sweep(): jobs", jobsRange()));
+  std::optional<std::string> out;
+  if (!outValue.is_none()) out = readPathArgument(outValue, "sweep(): out");
   SweepStudy study = loadSweepStudy(path);
+  if (out) checkSweepOutputs(study, *out);
   applyUncertaintyArguments(study, uncertainty > 0 ? std::optional<int>(static_cast<int>(uncertainty)) : std::nullopt,
                             seed ? std::optional<int>(static_cast<int>(*seed)) : std::nullopt,
                             {"sweep(): seed", "uncertainty=N", "seed=" + std::to_string(seed.value_or(0))});
@@ -158,7 +132,10 @@ py::object sweep(const py::object& studyPath, const py::object& uncertaintyValue
     SweepRun run(std::move(study), jobs, control);
     run.calibrate();
     run.planUncertainty("");  // no partial file: a stopped analysis raises KeyboardInterrupt
-    if (run.sweep() && run.runUncertainty()) json = run.formatJson();
+    if (run.sweep() && run.runUncertainty()) {
+      json = run.formatJson();
+      if (out) run.writeOutputs(*out, std::nullopt);
+    }
   }
   if (stop) throw py::error_already_set();
   return toPython(Json::parse(json));
@@ -229,13 +206,69 @@ py::object compare(const py::object& studyPath) {
   return toPython(json);
 }
 
+/// Each record's measured and model series (numpy arrays), before and after the diagnosis.
+py::list comparisonSeries(const Comparison& before, const Comparison& after) {
+  py::list out;
+  const auto array = [](const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); };
+  for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
+    const RecordComparison& b = before.records[i];
+    py::dict d;
+    d["name"] = b.stem;
+    d["training"] = b.training;
+    d["quantity"] = before.quantity;
+    d["unit"] = before.unit;
+    d["time_s"] = array(b.time);
+    d["measured"] = array(b.measured);
+    d["baseline"] = array(b.predicted);
+    d["diagnosed"] = array(after.records[i].predicted);
+    out.append(d);
+  }
+  return out;
+}
+
+/// The records a study built in Python gives in memory: name -> CSV text of the record
+/// (swingsim.SwingRecord.to_csv), read as a record file is, named by the study and the entry.
+std::map<std::string, SwingRecord> readGivenRecords(const py::dict& records, const std::string& source) {
+  std::map<std::string, SwingRecord> out;
+  for (const auto& [name, csv] : records) {
+    const std::string key = name.cast<std::string>();
+    out[key] = parseSwingRecordCsv(csv.cast<std::string>(), source + ": record " + key);
+  }
+  return out;
+}
+
+/// The study's plant maker: from a path as the command line reads it, or from a
+/// DiagnosisStudy object with the participant, knee model and records given in memory.
+std::function<std::unique_ptr<DiagnosisPlant>(const DiagnosisRowLimit*)> readStudy(
+    const py::object& studyValue, const py::object& participant, const py::object& knee, const py::dict& records,
+    DiagnosisStudy& study) {
+  if (isPathArgument(studyValue)) {
+    study = loadDiagnosisStudy(readPathArgument(studyValue, "diagnose(): study"));
+    return [&study](const DiagnosisRowLimit* limit) { return loadDiagnosisPlant(study, 8, limit); };  // as the CLI's diagnose
+  }
+  if (!isPackageObject(studyValue, "DiagnosisStudy"))
+    throw py::type_error(formatArgumentProblem("diagnose(): study", "expected a path or a swingsim.DiagnosisStudy",
+                                               describePython(studyValue)));
+  const auto [text, source] = objectAsYaml(studyValue, "study");
+  study = parseDiagnosisStudy(text, source);
+  if (participant.is_none() && knee.is_none() && records.empty())
+    return [&study](const DiagnosisRowLimit* limit) { return loadDiagnosisPlant(study, 8, limit); };
+  auto objects = std::make_shared<SwingStudyObjects>();
+  if (!participant.is_none()) objects->participant = readParticipant(participant, "diagnose");
+  if (!knee.is_none()) objects->baseModel = readKnee(knee, Participant{}, "diagnose");
+  objects->records = readGivenRecords(records, source);
+  return [&study, objects](const DiagnosisRowLimit* limit) { return makeSwingDiagnosisPlant(study, std::move(*objects), limit); };
+}
+
 /// The content of `swingsim diagnose STUDY --json`: candidate effects ranked, the accepted
-/// ones, the error before and after.
-py::object diagnose(const py::object& studyPath, const py::object& maxRowsValue) {
+/// ones, the error before and after; plus each record's series under "series".
+py::object diagnose(const py::object& studyValue, const py::object& maxRowsValue, const py::object& participant,
+                    const py::object& knee, const py::dict& records) {
   DiagnosisRowLimit limit;  // maxRows 0: the plant's default, as the CLI's diagnose
   if (!maxRowsValue.is_none())
     limit.maxRows = static_cast<std::uint64_t>(readWholeArgument(maxRowsValue, "diagnose(): max_rows", maxRowsRange()));
-  const DiagnosisStudy study = loadDiagnosisStudy(readPathArgument(studyPath, "diagnose(): study_path"));
+  DiagnosisStudy study;
+  const auto makePlant = readStudy(studyValue, participant, knee, records, study);
   // Ctrl-C: Python's signal handler runs before the next candidate is scored (on this thread),
   // and its KeyboardInterrupt ends the diagnosis; nothing is written.
   struct Interrupted {};
@@ -244,16 +277,20 @@ py::object diagnose(const py::object& studyPath, const py::object& maxRowsValue)
     if (PyErr_CheckSignals() != 0) throw Interrupted{};
   };
   Json json;
+  std::optional<Comparison> before, after;
   try {
     py::gil_scoped_release release;
-    const auto plant = loadDiagnosisPlant(study, 8, &limit);  // as the CLI's diagnose: size printed, limit held
+    const auto plant = makePlant(&limit);  // size printed, limit held
     const Diagnosis dg = runDiagnosis(*plant, study.settings, checkSignals);
-    json = makeDiagnoseJson(dg, plant->compare(*dg.baseline.model), plant->compare(*dg.final.model),
-                            plant->compareHeldBack(*dg.baseline.model), plant->compareHeldBack(*dg.final.model));
+    before = plant->compare(*dg.baseline.model);
+    after = plant->compare(*dg.final.model);
+    json = makeDiagnoseJson(dg, *before, *after, plant->compareHeldBack(*dg.baseline.model), plant->compareHeldBack(*dg.final.model));
   } catch (const Interrupted&) {
     throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
   }
-  return toPython(json);
+  py::dict result = toPython(json).cast<py::dict>();
+  result["series"] = comparisonSeries(*before, *after);
+  return std::move(result);
 }
 
 }  // namespace
@@ -281,9 +318,11 @@ PYBIND11_MODULE(_swingsim, m) {
         py::arg("path"));
   m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none());
   m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
-        py::arg("jobs") = 0);
+        py::arg("jobs") = 0, py::arg("out") = py::none());
   m.def("fit", &python::fit, py::arg("study_path"));
   m.def("tune", &python::tune, py::arg("study_path"), py::arg("jobs") = 0, py::arg("out") = py::none());
   m.def("compare", &python::compare, py::arg("study_path"));
-  m.def("diagnose", &python::diagnose, py::arg("study_path"), py::arg("max_rows") = py::none());
+  m.def("diagnose", &python::diagnose, py::arg("study"), py::arg("max_rows") = py::none(), py::arg("participant") = py::none(),
+        py::arg("knee") = py::none(), py::arg("records") = py::dict());
+  python::addRecordFunctions(m);
 }

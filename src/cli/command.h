@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/output_paths.h"  // chooseStudyOutputFolder
+#include "study/sweep_run.h"     // kSweepReportFiles
 
 namespace swingsim::cli {
 
@@ -47,10 +48,8 @@ CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json);
 CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out);
 
 
-/// The data and report files a sweep or a cohort run (and their merge) writes into --out
-/// (report/sweep_markdown.cpp, report/cohort_report.cpp): an input by one of these names in
-/// that folder would be replaced.
-inline const std::vector<std::string> kSweepReportFiles = {"sweep.csv", "report.md", "report.html", "cohort.csv"};
+/// The data and report files a sweep or a cohort run writes into --out: study/sweep_run.h.
+using swingsim::kSweepReportFiles;
 
 /// What a run writes, for checkOutputsAreNotInputs: the files `names` in `folder` (named by
 /// "--out"; none while `folder` is "", a default folder not yet known) and `json` (--json).

@@ -17,19 +17,14 @@
 #include "core/input_error.h"
 #include "io/json_file.h"
 #include "io/swing_events.h"
+#include "study/swing_listing.h"
 
 namespace swingsim::cli {
 namespace {
 
-/// What `swingsim swings` was given; nullopt: not given (the default applies).
-struct SwingsArguments {
-  std::string kinematics;
-  std::string side = "r";
-  std::optional<std::string> grf, verticalForce, json;
-  double thresholdN = 20;  ///< N
-  bool fallbackToKinematics = false;
-  std::optional<std::string> gait;  ///< "walking" or "running"; nullopt: detected
-  double kneeSign = -1;
+/// What `swingsim swings` was given: the listing's request and --json.
+struct SwingsArguments : SwingListRequest {
+  std::optional<std::string> json;
 };
 
 /// A disagreement for the table, ms, or "-" where there is none.
@@ -39,57 +34,13 @@ std::string disagreementText(const std::optional<double>& d) {
   std::snprintf(buf, sizeof buf, "%+.1f", *d * 1000);
   return buf;
 }
-Json disagreementJson(const std::optional<double>& d) { return d ? Json(*d * 1000) : Json(); }
-
-/// OpenSim's example GRF files name the right foot's columns `ground_force_*` and the left
-/// foot's `1_ground_force_*`.
-std::string defaultVerticalForce(const std::string& side) { return side == "l" ? "1_ground_force_vy" : "ground_force_vy"; }
-
-Json makeSwingsJson(const SwingsArguments& a, const MotionColumns& columns, const std::optional<GrfSettings>& grf,
-                    const SwingList& list) {
-  const std::vector<FoundSwing>& swings = list.swings;
-  Json j;
-  j["file"] = a.kinematics;
-  j["side"] = a.side;
-  j["hip"] = columns.hip;
-  j["knee"] = columns.knee;
-  j["knee_sign"] = columns.kneeSign;
-  j["pelvis_tilt"] = columns.pelvisTilt.empty() ? Json() : Json(columns.pelvisTilt);
-  j["grf"] = grf ? Json{{"file", grf->path},
-                        {"vertical_force", grf->verticalForce},
-                        {"threshold_N", grf->thresholdN},
-                        {"fallback_to_kinematics", grf->fallbackToKinematics}}
-                  : Json();
-  j["gait"] = gaitName(list.gait);
-  j["gait_basis"] = list.gaitBasis;
-  j["kinematic_accuracy_ms"] = list.kinematicAccuracy * 1000;
-  j["kinematic_accuracy_beyond_two_frames"] = list.kinematicAccuracyBeyondTwoFrames;
-  j["notes"] = list.notes;
-  j["swings"] = Json::array();
-  for (std::size_t i = 0; i < swings.size(); ++i)
-    j["swings"].push_back({{"swing", i + 1},
-                           {"toe_off_s", swings[i].toeOff},
-                           {"heel_contact_s", swings[i].heelContact},
-                           {"duration_s", swings[i].duration()},
-                           {"toe_off_source", swings[i].toeOffSource},
-                           {"heel_contact_source", swings[i].heelContactSource},
-                           {"toe_off_force_minus_kinematics_ms", disagreementJson(swings[i].toeOffDisagreement)},
-                           {"heel_contact_force_minus_kinematics_ms", disagreementJson(swings[i].heelContactDisagreement)}});
-  return j;
-}
 
 int runSwings(const SwingsArguments& a) {
   checkOutputsAreNotInputs({{"FILE.mot", a.kinematics}, {"--grf", a.grf.value_or("")}}, {{"--json", a.json.value_or("")}});
-  const MotionTable table = readMotionTable(a.kinematics);
-  // The leg's OpenSim labels; the thigh's angle in space (hip + pelvis tilt) when the file
-  // has the tilt.
-  MotionColumns columns = openSimLegColumns(table, a.side);
-  columns.kneeSign = a.kneeSign;
-  std::optional<GrfSettings> grf;
-  if (a.grf) grf = GrfSettings{*a.grf, a.verticalForce.value_or(defaultVerticalForce(a.side)), a.thresholdN, a.fallbackToKinematics};
-  std::optional<Gait> gait;
-  if (a.gait) gait = *a.gait == "running" ? Gait::kRunning : Gait::kWalking;
-  const SwingList list = listSwings(table, columns, grf, gait);
+  const SwingListing listing = listLegSwings(a);
+  const MotionColumns& columns = listing.columns;
+  const std::optional<GrfSettings>& grf = listing.grf;
+  const SwingList& list = listing.list;
   const std::vector<FoundSwing>& swings = list.swings;
 
   std::printf("%s: %s leg (%s, %s x %g%s); events from %s\n", a.kinematics.c_str(), a.side == "l" ? "left" : "right",
@@ -98,7 +49,7 @@ int runSwings(const SwingsArguments& a) {
               grf ? (grf->path + " (" + grf->verticalForce + " below " + formatNumber(grf->thresholdN) +
                      " N) where it covers the time, the kinematics elsewhere").c_str()
                   : "the kinematics (no --grf)");
-  const double frame = table.rows() > 1 ? (table.columns.front().back() - table.columns.front().front()) / double(table.rows() - 1) : 0;
+  const double frame = listing.framePeriod;
   std::printf("gait: %s (%s); kinematic events: within %.0f ms of the force plates after their bias is removed (docs/swing-events.md)%s\n",
               gaitName(list.gait), list.gaitBasis.c_str(), list.kinematicAccuracy * 1000,
               list.kinematicAccuracyBeyondTwoFrames
@@ -114,7 +65,7 @@ int runSwings(const SwingsArguments& a) {
                   swings[i].duration(), swings[i].toeOffSource.c_str(), swings[i].heelContactSource.c_str(),
                   disagreementText(swings[i].toeOffDisagreement).c_str(), disagreementText(swings[i].heelContactDisagreement).c_str());
   }
-  if (a.json) writeJsonFile(*a.json, makeSwingsJson(a, columns, grf, list));
+  if (a.json) writeJsonFile(*a.json, makeSwingListJson(a, listing));
   return 0;
 }
 
@@ -135,7 +86,7 @@ Command addSwingsCommand(CLI::App& app) {
                 "the foot's vertical force column in the GRF file, N (default ground_force_vy for r, 1_ground_force_vy for l)", "LABEL");
   sub->add_option("--threshold-N", a->thresholdN, "vertical force below which the foot is in the air, N (default 20)")
       ->type_name("N")
-      ->check(finiteNumber([](double v) { return v > 0 ? "" : "expected a positive force"; }));
+      ->check(finiteNumber(checkForceThreshold));
   sub->add_flag("--fallback-to-kinematics", a->fallbackToKinematics,
                 "a force file that fails its checks gives way to the kinematics' events (said in the listing) instead of an error");
   addTextOption(sub, "--gait", a->gait, "walking or running: which kinematic event rules (default: detected from the stride)",
@@ -143,7 +94,7 @@ Command addSwingsCommand(CLI::App& app) {
       ->check(oneOf({"walking", "running"}));
   sub->add_option("--knee-sign", a->kneeSign, "+1 or -1: knee flexion = sign * knee_angle (default -1, OpenSim's knee_angle is negative in flexion)")
       ->type_name("S")
-      ->check(finiteNumber([](double v) { return v == 1 || v == -1 ? "" : "expected +1 or -1"; }));
+      ->check(finiteNumber(checkKneeSign));
   addJsonOption(sub, a->json);
   return {sub, [a] { return runSwings(*a); }};
 }

@@ -9,7 +9,9 @@
 
 namespace swingsim {
 
-SwingRecord readSwingRecord(const std::string& path) {
+namespace {
+
+CsvSpec swingRecordSpec() {
   CsvSpec spec;
   spec.required = {"time_s", "hip_flexion_deg", "knee_flexion_deg"};
   spec.optional = {"hip_moment_Nm", "knee_moment_Nm"};
@@ -21,7 +23,10 @@ SwingRecord readSwingRecord(const std::string& path) {
                  {"knee_flexion_deg", kJointAngleRange, "a knee angle"},
                  {"hip_moment_Nm", kJointMomentRange, "a hip moment"},
                  {"knee_moment_Nm", kJointMomentRange, "a knee moment"}};
-  const CsvTable t = readCsv(path, spec);
+  return spec;
+}
+
+SwingRecord recordFromTable(const CsvTable& t, const std::string& path) {
   SwingRecord r;
   r.path = path;
   r.stem = fileStem(path);
@@ -43,6 +48,14 @@ SwingRecord readSwingRecord(const std::string& path) {
   if (has("hip_moment_Nm")) r.hipMoment = t.column("hip_moment_Nm");
   if (has("knee_moment_Nm")) r.kneeMoment = t.column("knee_moment_Nm");
   return r;
+}
+
+}  // namespace
+
+SwingRecord readSwingRecord(const std::string& path) { return recordFromTable(readCsv(path, swingRecordSpec()), path); }
+
+SwingRecord parseSwingRecordCsv(const std::string& text, const std::string& source) {
+  return recordFromTable(parseCsv(text, source, swingRecordSpec()), source);
 }
 
 std::string formatSwingRecordCsv(const SwingRecord& r) {

@@ -14,6 +14,7 @@
 #include "io/sweep_times_csv.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
+#include "study/diagnosis_objects.h"
 #include "study/sweep_study.h"
 
 #include <cmath>
@@ -287,27 +288,7 @@ std::unique_ptr<DiagnosisPlant> loadDiagnosisPlant(const DiagnosisStudy& study, 
     return std::make_unique<SweepPlant>(sweep, std::move(measured), study.measuredPath,
                                         study.settings.measurementNoise / 1000.0);
   }
-  SwingBase base;
-  base.participant = loadParticipant(study.participantPath);
-  base.knee = loadKneeModel(study.baseModelPath);
-  base.drive = study.drive;
-  base.movingHip = study.movingHip;
-  std::vector<SwingRecord> train, validate;
-  for (const auto* entries : {&study.train, &study.validate})
-    for (const auto& entry : *entries) {
-      const std::string& p = entry.path;
-      SwingRecord r = readStudyRecord(study, entry, base.notes);
-      checkMomentUnits(r, base.participant.bodyMass, entry.inverseDynamicsPath.empty() ? p : entry.inverseDynamicsPath, p);
-      if (study.drive == SwingDrive::kHipMoment && r.hipMoment.empty())
-        throw InputError(p + ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
-                         "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
-      (entries == &study.train ? train : validate).push_back(std::move(r));
-    }
-  std::uint64_t rows = 0;
-  for (const auto* records : {&train, &validate})
-    for (const auto& r : *records) rows += r.time.size();
-  announce(rows, train.size() + validate.size());
-  return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
+  return makeSwingDiagnosisPlant(study, {}, limit);
 }
 
 std::vector<CommandFile> listDiagnosisStudyFiles(const DiagnosisStudy& study) {

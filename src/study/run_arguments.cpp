@@ -56,6 +56,18 @@ std::string checkLowering(double lowering) {
   return std::isfinite(lowering) ? "" : "expected a number";
 }
 
+std::string checkPositive(double value) { return std::isfinite(value) && value > 0 ? "" : "expected a positive value"; }
+
+std::string checkForceThreshold(double thresholdN) {
+  return std::isfinite(thresholdN) && thresholdN > 0 ? "" : "expected a positive force";
+}
+
+std::string checkKneeSign(double sign) { return sign == 1 || sign == -1 ? "" : "expected +1 or -1"; }
+
+std::string checkKneeFriction(double moment) {
+  return std::isfinite(moment) && moment >= 0 ? "" : "expected a moment >= 0 N m";
+}
+
 std::string formatArgumentProblem(const std::string& name, const std::string& expected, const std::string& got) {
   return name + ": " + expected + ", got " + got;
 }

@@ -47,6 +47,15 @@ const WholeNumberRange& maxRowsRange();
 /// swing set-up checks it against the leg (makeSwingSetup).
 std::string checkLowering(double lowering);
 
+/// "" if `value` is a finite number > 0 (a mass, kg; a length, m), else what was expected.
+std::string checkPositive(double value);
+/// swings' vertical-force threshold, N: "" if > 0 and finite.
+std::string checkForceThreshold(double thresholdN);
+/// swings' knee sign: "" if +1 or -1 (knee flexion = sign * knee_angle).
+std::string checkKneeSign(double sign);
+/// import-osim's knee friction moment, N m: "" if >= 0 and finite.
+std::string checkKneeFriction(double moment);
+
 /// The message of a refused argument: "NAME: EXPECTED, got GOT"
 /// ("sweep(): seed: expected a seed from 0 to 1000000000, got -1").
 std::string formatArgumentProblem(const std::string& name, const std::string& expected, const std::string& got);

@@ -25,6 +25,11 @@
 
 namespace swingsim {
 
+/// The data and report files a sweep or a cohort run (and their merge) writes into its
+/// output folder (report/sweep_markdown.cpp, report/cohort_report.cpp): an input by one of
+/// these names in that folder would be replaced.
+inline const std::vector<std::string> kSweepReportFiles = {"sweep.csv", "report.md", "report.html", "cohort.csv"};
+
 /// After the plain sweep: Burkett's bounce and interior optimum (terminal impact check, with
 /// `jobs` worker threads, 0 = all cores), the calibration the sweep ran with, and the Table 4
 /// validation, all stored in `results`.

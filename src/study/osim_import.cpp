@@ -1,0 +1,46 @@
+#include "study/osim_import.h"
+
+#include <cctype>
+#include <filesystem>
+
+#include "core/input_error.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+
+namespace swingsim {
+namespace {
+
+// The name the imported participant is checked under, and a message without it and its
+// line ("imported-participant.yaml:20: segments..." -> "segments...").
+const std::string kImportedName = "imported-participant.yaml";
+std::string dropImportedPrefix(const std::string& message) {
+  const auto at = message.find(kImportedName + ":");
+  if (at == std::string::npos) return message;
+  std::size_t rest = at + kImportedName.size() + 1;
+  while (rest < message.size() && std::isdigit(static_cast<unsigned char>(message[rest]))) ++rest;
+  if (message.compare(rest, 2, ": ") == 0) rest += 2;
+  return message.substr(rest);
+}
+
+}  // namespace
+
+std::string defaultImportKneePath() { return std::string(SWINGSIM_SOURCE_DIR) + "/models/damping-table-default.yaml"; }
+
+ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions o, const std::string& folder) {
+  o.kneeModelPath = std::filesystem::absolute(o.kneeModelPath).lexically_normal().string();
+  loadKneeModel(o.kneeModelPath);  // a knee model that does not load is refused before anything is written
+  const OsimParticipant imported = calcOsimParticipant(loadOsimModel(modelPath), o);
+  const std::string text = formatParticipantYaml(imported.participant, folder, imported.provenance);
+  // What is written loads as it is: the loader's checks apply here, before any file is
+  // written. The model's own checks (io/osim_model_checks.h) come first and name its
+  // element; one the loader still refuses is named by the model, not by a YAML not written.
+  try {
+    parseParticipant(text, folder + "/" + kImportedName);
+  } catch (const InputError& e) {
+    throw InputError(modelPath + ": the participant imported from it is refused: " + dropImportedPrefix(e.what()) +
+                     " (in the participant YAML, not written)");
+  }
+  return {text, imported.participant.name};
+}
+
+}  // namespace swingsim

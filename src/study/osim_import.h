@@ -1,0 +1,26 @@
+#pragma once
+// A participant from one leg of a scaled OpenSim model, as `swingsim import-osim` and
+// Python's swingsim.import_osim() make it (io/osim_model.h; docs/import-osim.md): checked by
+// the participant loader before anything is written.
+#include <string>
+
+#include "io/osim_model.h"
+
+namespace swingsim {
+
+/// The project's default knee for an imported participant: the damping table the Burkett
+/// participants use (models/damping-table-default.yaml in the source tree).
+std::string defaultImportKneePath();
+
+/// An imported participant: its YAML text (paths relative to the folder given) and name.
+struct ImportedParticipantYaml {
+  std::string text;
+  std::string name;
+};
+
+/// The participant of `modelPath`'s leg (options.side) as YAML for a file in `folder`, its
+/// numbers' sources in its leading comments. The knee model (options.kneeModelPath, made
+/// absolute) must load. Throws InputError naming the model when the loader would refuse it.
+ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions options, const std::string& folder);
+
+}  // namespace swingsim
