@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/osim_model_writer.h"
 #include "io/participant_loader.h"
@@ -73,8 +74,11 @@ TEST(OsimExportAddedMassRoundTrip, TheImportedLegSwingsAsTheSimulatedLegWithTheM
   imported.footComFrom = r.back.footComFrom;
   const SwingResult played = simulateSwing(makeSwingSetup(imported, knee, 0), options);
   EXPECT_NEAR(played.swingTime, simulated.swingTime, kSwingTimeTol);
+  RecordProperty("simulated_swing_time_s", formatNumber(simulated.swingTime));
+  RecordProperty("imported_swing_time_s", formatNumber(played.swingTime));
   const SwingResult without = simulateSwing(makeSwingSetup(r.p1, knee, kLowering), options);
   EXPECT_GT(std::fabs(without.swingTime - simulated.swingTime), 100 * kSwingTimeTol) << "the mass matters at this tolerance";
+  RecordProperty("without_mass_swing_time_s", formatNumber(without.swingTime));
 }
 
 }  // namespace
