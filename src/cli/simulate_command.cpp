@@ -1,4 +1,4 @@
-// swingsim simulate PARTICIPANT.yaml [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M]
+// swingsim simulate PARTICIPANT.yaml [--side r|l] [--lowering M] [--knee MODEL.yaml] [--add-mass KG@M]
 //   [--hip-rate-deg-s DEG/S] [--knee-rate-deg-s DEG/S] [--knee-start measured|initial]
 //   [--integrator METHOD] [--accuracy A]
 //   [--json FILE] [--out DIR]
@@ -30,6 +30,7 @@ namespace {
 /// What `swingsim simulate` was given; nullopt: not given (the default applies).
 struct SimulateArguments {
   std::string participant;
+  std::string side = "r";  ///< the leg the .sto's columns name (hip_flexion_<side>, knee_angle_<side>)
   double lowering = 0;  ///< m
   std::optional<std::string> knee;
   std::optional<AddedMass> added;
@@ -167,7 +168,7 @@ void writeSimulateFiles(const SimulateArguments& a, const SwingSetup& setup, con
   // One staged set: a full disk or a folder in the way leaves none of them, not a CSV alone.
   StagedOutput staged(out);
   staged.add(tag + ".csv", formatTrajectoryCsv(r.trajectory));
-  staged.add(tag + ".sto", formatTrajectorySto(r.trajectory, tag));
+  staged.add(tag + ".sto", formatTrajectorySto(r.trajectory, tag, a.side.front()));
   staged.add(tag + "-moments.svg", formatSwingMomentsSvg(r.trajectory, p.name + ", drive: " + driveKey(p.drive)));
   if (a.json) staged.addBeside(*a.json, formatJson(makeSimulateJson(setup, r)));
   staged.commit();
@@ -211,6 +212,10 @@ Command addSimulateCommand(CLI::App& app) {
   std::string integrators;
   for (const auto& k : integratorKeys()) integrators += (integrators.empty() ? "" : ", ") + k;
   sub->add_option("PARTICIPANT.yaml", a->participant, "participant file")->required()->type_name("");
+  sub->add_option("--side", a->side, "the leg the trajectory .sto names: hip_flexion_<side>, knee_angle_<side>, as export-osim --side "
+                  "and a lab's IK file (default r)")
+      ->type_name("r|l")
+      ->check(oneOf({"r", "l"}));
   sub->add_option("--lowering", a->lowering, "knee-axis lowering below the standard location, m (default 0)")
       ->type_name("M")
       ->check(finiteNumber(checkLowering));

@@ -311,7 +311,15 @@ MotionColumns openSimLegColumns(const MotionTable& table, const std::string& sid
   c.knee = "knee_angle_" + side;
   c.kneeSign = -1;  // OpenSim's knee_angle is 0 straight and negative in flexion
   c.kneeMoment = c.knee + "_moment";
-  const auto has = [&](const char* label) { return std::find(table.labels.begin(), table.labels.end(), label) != table.labels.end(); };
+  const auto has = [&](const std::string& label) { return std::find(table.labels.begin(), table.labels.end(), label) != table.labels.end(); };
+  // A trajectory .sto from an older `swingsim simulate` (hip_flexion, knee_flexion: flexion
+  // positive, docs/formats.md) reads as it did.
+  if (!has(c.hip) && !has(c.knee) && has("hip_flexion") && has("knee_flexion")) {
+    c.hip = "hip_flexion";
+    c.knee = "knee_flexion";
+    c.kneeSign = 1;
+    c.kneeMoment = "knee_moment";
+  }
   if (has("pelvis_tilt")) c.pelvisTilt = "pelvis_tilt";
   if (has("pelvis_tx")) c.pelvisTx = "pelvis_tx";
   if (has("pelvis_ty")) c.pelvisTy = "pelvis_ty";

@@ -270,6 +270,9 @@ OsimModel parseOsimModel(const std::string& text, const std::string& path) {
 
 OsimModel loadOsimModel(const std::string& path) { return parseOsimModel(readFile(path), path); }
 
+std::string makeOsimHipCoordinate(char side) { return std::string("hip_flexion_") + side; }
+std::string makeOsimKneeCoordinate(char side) { return std::string("knee_angle_") + side; }
+
 const OsimBody& OsimModel::getBody(const std::string& bodyName) const {
   for (const auto& b : bodies)
     if (b.name == bodyName) return b;
@@ -413,13 +416,23 @@ void importThigh(const LegParts& leg, Participant& p, std::ostream& why) {
     why << "  " << knee.name << " is a " << knee.type << " whose centre moves with the knee angle (spline): taken at full extension, knee angle 0\n";
 }
 
-/// Shank, in the tibia frame: knee centre (knee's child frame) to ankle centre.
-void importShank(const LegParts& leg, Participant& p, std::ostream& why) {
+/// Shank, in the tibia frame: knee centre (knee's child frame) to ankle centre. Bodies welded
+/// to the tibia other than the foot (an added mass, as export-osim writes one) move with it:
+/// they are part of the shank's mass, COM and Izz.
+void importShank(const OsimModel& m, const LegParts& leg, Participant& p, std::ostream& why) {
   const Eigen::Vector2d kneeInTibia = xy(leg.knee->childFrame.translation()), ankleInTibia = xy(leg.ankle->calcCentreInParent());
-  p.shank = makeSegment(kneeInTibia, ankleInTibia, xy(leg.tibia->massCenter), leg.tibia->mass, leg.tibia->inertia(2, 2));
-  why << "shank: " << leg.tibiaName << " <mass>, <mass_center>, <inertia> Izz; length knee centre " << fmt(kneeInTibia) << " ("
-      << leg.knee->name << " child frame) to ankle centre " << fmt(ankleInTibia) << " (" << leg.ankle->name << " parent frame), m in "
-      << leg.tibiaName << "\n";
+  std::vector<RigidPart> parts = {{leg.tibia, Eigen::Isometry3d::Identity()}};
+  std::string welded;
+  for (const auto& j : m.joints)
+    if (j.type == "WeldJoint" && j.parentBody == leg.tibiaName && j.childBody != leg.talusName && &j != leg.ankle) {
+      parts.push_back({&m.getBody(j.childBody), j.calcChildInParent()});
+      welded += " + " + j.childBody + " (" + j.name + ")";
+    }
+  const PlanarMass shank = calcCombinedPlanarMass(parts);
+  p.shank = makeSegment(kneeInTibia, ankleInTibia, shank.com, shank.mass, shank.izz);
+  why << "shank: " << leg.tibiaName << welded << " <mass>, <mass_center>, <inertia> Izz" << (welded.empty() ? "" : " combined (welded to it)")
+      << "; length knee centre " << fmt(kneeInTibia) << " (" << leg.knee->name << " child frame) to ankle centre " << fmt(ankleInTibia)
+      << " (" << leg.ankle->name << " parent frame), m in " << leg.tibiaName << "\n";
 }
 
 /// Foot: talus, calcn and toes as one rigid body, in the tibia frame at the reference pose.
@@ -486,7 +499,7 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
   OsimParticipant out;
   Participant& p = out.participant;
   importThigh(leg, p, why);
-  importShank(leg, p, why);
+  importShank(m, leg, p, why);
   importFoot(leg, o, p, why);
   replaceProsthesisMasses(o, p, why);
   importWholeBody(m, leg, o, p, why);

@@ -14,19 +14,31 @@
 
 namespace swingsim {
 
+/// A shape OpenSim draws on a body (its analytic Geometry components, no mesh file): in a
+/// PhysicalOffsetFrame of the body at `centre`; `kind` the element, `size` its numbers in m:
+/// Cylinder {radius, half_height} (axis along the frame's y), Ellipsoid {radii x, y, z},
+/// Brick {half_lengths x, y, z}, Sphere {radius}. For display only: no mass.
+struct OsimShape {
+  std::string name, kind;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< m, in the body frame
+  std::vector<double> size;
+};
+
 struct OsimBody {
   std::string name;
   int line = 0;                   ///< XML line of <Body>
   double mass = 0;                ///< kg
   Eigen::Vector3d massCenter;     ///< m, in the body frame
   Eigen::Matrix3d inertia;        ///< kg m^2, about the COM, in the body frame
+  std::vector<OsimShape> shapes;  ///< written, not read (the reader leaves it empty)
 };
 
-/// The names of the exported model's hip and knee coordinates, which are also the angle
-/// columns of the trajectory .sto that `simulate` writes (io/trajectory_writer.h), so that
-/// OpenSim plays that .sto on the model.
-inline constexpr const char* kOsimHipCoordinate = "hip_flexion";
-inline constexpr const char* kOsimKneeCoordinate = "knee_flexion";
+/// The names of the exported model's hip and knee coordinates on `side` ('r' or 'l'), as
+/// OpenSim's gait models name them (hip_flexion_r, knee_angle_r: Gait2354, Gait10dof18musc),
+/// which are also the angle columns of the trajectory .sto that `simulate` writes
+/// (io/trajectory_writer.h), so that OpenSim plays that .sto, and a lab's IK file, on the model.
+std::string makeOsimHipCoordinate(char side);
+std::string makeOsimKneeCoordinate(char side);
 
 /// One of a joint's coordinates (OpenSim's <Coordinate>).
 struct OsimCoordinate {

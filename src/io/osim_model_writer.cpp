@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "core/units.h"
+#include "io/osim_leg_shapes.h"
 
 namespace swingsim {
 
@@ -19,14 +20,6 @@ using tinyxml2::XMLElement;
 Eigen::Isometry3d makeTranslation(double x, double y) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation() = Eigen::Vector3d(x, y, 0);
-  return t;
-}
-
-// The knee pin's frames are turned half a turn about x, so that OpenSim's positive rotation
-// about the joint's z is a flexion (the shank swings backwards), as in leg/leg_model.cpp.
-Eigen::Isometry3d makeFlippedTranslation(double x, double y) {
-  Eigen::Isometry3d t = makeTranslation(x, y);
-  t.linear() = Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitX()).toRotationMatrix();
   return t;
 }
 
@@ -66,14 +59,14 @@ OsimCoordinate makeCoordinate(const std::string& name, double defaultValue, doub
     throw std::invalid_argument("makeOsimLegModel: " + name + ": empty range [" + formatNumber(rangeMin) + ", " + formatNumber(rangeMax) + "] rad");
   OsimCoordinate c;
   c.name = name;
-  c.defaultValue = defaultValue;
-  c.rangeMin = rangeMin;
-  c.rangeMax = rangeMax;
+  c.defaultValue = defaultValue + 0.0;  // (+ 0.0 writes -0 as 0)
+  c.rangeMin = rangeMin + 0.0;
+  c.rangeMax = rangeMax + 0.0;
   c.note = note;
   return c;
 }
 
-std::string formatDegrees(double rad) { return formatNumber(std::round(rad * kRadToDeg * 1000) / 1000); }
+std::string formatDegrees(double rad) { return formatNumber(std::round(rad * kRadToDeg * 1000) / 1000 + 0.0); }
 
 // ---- XML ----------------------------------------------------------------------------------
 
@@ -102,6 +95,29 @@ std::string makeCommentText(std::string text) {
 
 std::string framePath(const std::string& body) { return body == "ground" ? "/ground" : "/bodyset/" + body; }
 
+// A shape in its own PhysicalOffsetFrame among the body's <components> (OpenSim 4's analytic
+// Geometry: Cylinder radius/half_height, Ellipsoid radii, Brick half_lengths, Sphere radius).
+void addShape(XMLElement* components, const OsimShape& shape) {
+  XMLElement* frame = addNamed(components, "PhysicalOffsetFrame", shape.name + "_frame");
+  addText(frame, "socket_parent", "..");
+  addText(frame, "translation", formatVector(shape.centre));
+  addText(frame, "orientation", "0 0 0");
+  XMLElement* g = addNamed(frame->InsertNewChildElement("attached_geometry"), shape.kind.c_str(), shape.name);
+  addText(g, "socket_frame", "..");
+  std::string numbers;
+  for (double x : shape.size) numbers += (numbers.empty() ? "" : " ") + formatNumber(x);
+  if (shape.kind == "Cylinder") {
+    addText(g, "radius", formatNumber(shape.size.at(0)));
+    addText(g, "half_height", formatNumber(shape.size.at(1)));
+  } else if (shape.kind == "Ellipsoid") {
+    addText(g, "radii", numbers);
+  } else if (shape.kind == "Brick") {
+    addText(g, "half_lengths", numbers);
+  } else {
+    addText(g, "radius", formatNumber(shape.size.at(0)));
+  }
+}
+
 void addBody(XMLElement* objects, const OsimBody& b) {
   XMLElement* e = addNamed(objects, "Body", b.name);
   addText(e, "mass", formatNumber(b.mass));
@@ -109,6 +125,9 @@ void addBody(XMLElement* objects, const OsimBody& b) {
   const Eigen::Matrix3d& i = b.inertia;  // OpenSim's order: Ixx Iyy Izz Ixy Ixz Iyz, about the COM
   addText(e, "inertia", formatNumber(i(0, 0)) + " " + formatNumber(i(1, 1)) + " " + formatNumber(i(2, 2)) + " " + formatNumber(i(0, 1)) +
                             " " + formatNumber(i(0, 2)) + " " + formatNumber(i(1, 2)));
+  if (b.shapes.empty()) return;
+  XMLElement* components = e->InsertNewChildElement("components");
+  for (const auto& shape : b.shapes) addShape(components, shape);
 }
 
 // OpenSim's orientation: body-fixed x-y-z angles (a, b, c), R = Rx(a) Ry(b) Rz(c), rad; away
@@ -149,42 +168,86 @@ void addJoint(XMLElement* objects, const OsimJoint& j) {
   addOffsetFrame(frames, childFrame, j.childBody, j.childFrame);
 }
 
+// The leg's bodies on `side`: pelvis, femur, tibia, talus (the whole foot), calcn and toes
+// (massless); the pelvis carries the body mass the leg does not.
+std::vector<OsimBody> makeLegBodies(const LegGeometry& g, const OsimLegPlacement& place, const std::string& s) {
+  const double legMass = g.thighMass + g.shankMass + g.footMass;
+  return {makeBody("pelvis", std::max(0.0, place.bodyMass - legMass), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()),
+          makeBody("femur_" + s, g.thighMass, {0, -g.thighCom, 0}, makeRodInertia(g.thighInertia, 1)),
+          makeBody("tibia_" + s, g.shankMass, {0, -g.shankCom, 0}, makeRodInertia(g.shankInertia, 1)),
+          makeBody("talus_" + s, g.footMass, {g.footComForward, 0, 0}, makeRodInertia(g.footInertia, 0)),
+          makeBody("calcn_" + s, 0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()),
+          makeBody("toes_" + s, 0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero())};
+}
+
+// hip_flexion_<side> and knee_angle_<side>, signed as OpenSim's gait models: both turn about
+// the joint's +z (x forward, y up, z to the subject's right, on either side), so hip flexion
+// is positive and knee flexion negative (Gait2354_Simbody/gait2354_simbody.osim: knee_angle_r
+// range -120..10 deg, axis 0 0 1; the same axis for hip_flexion_l and knee_angle_l).
+void addLegCoordinates(OsimJoint& hip, OsimJoint& knee, const OsimLegPlacement& place) {
+  const std::string hipName = makeOsimHipCoordinate(place.side), kneeName = makeOsimKneeCoordinate(place.side);
+  hip.coordinates.push_back(makeCoordinate(
+      hipName, place.initial.hipFlexion, place.hipRange.minFlexion, place.hipRange.maxFlexion,
+      hipName + ", rad: + = flexion (the thigh swings forward), counter-clockwise about +z with the subject facing +x, as OpenSim's gait models. Range [" +
+          formatDegrees(place.hipRange.minFlexion) + ", " + formatDegrees(place.hipRange.maxFlexion) +
+          "] deg: swingsim's hip range of motion, where a smooth stop acts (not clamped)."));
+  knee.coordinates.push_back(makeCoordinate(
+      kneeName, -place.initial.kneeFlexion, -place.kneeMaxFlexion, -place.kneeMinFlexion,
+      kneeName + ", rad: - = FLEXION (the shank swings backwards), as OpenSim's gait models (Gait2354, Gait10dof18musc); "
+      "swingsim's knee flexion is minus this. Range [" + formatDegrees(-place.kneeMaxFlexion) + ", " + formatDegrees(-place.kneeMinFlexion) +
+          "] deg: the knee model's hyperextension stop at the high end (a simulated swing presses a few degrees past it, so not clamped)."));
+}
+
+// The pelvis on the ground: welded with the hip at (0, hipHeight), or, for a measured pelvis,
+// on a PlanarJoint with Gait10dof18musc's pelvis coordinates and ranges (tilt +-90 deg, tx
+// -5..5 m, ty -1..2 m; Models/Gait10dof18musc/gait10dof18musc.osim), from its toe-off pose.
+OsimJoint makeGroundPelvis(const OsimLegPlacement& place, const std::array<double, 2>& hipInPelvis) {
+  const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
+  if (!place.measuredPelvis)
+    return makeJoint("ground_pelvis", "WeldJoint", "ground", makeTranslation(-hipInPelvis[0], place.hipHeight - hipInPelvis[1]), "pelvis",
+                     origin);
+  const OsimPelvisPose& at = *place.measuredPelvis;
+  OsimJoint j = makeJoint("ground_pelvis", "PlanarJoint", "ground", origin, "pelvis", origin);
+  j.coordinates.push_back(makeCoordinate("pelvis_tilt", at.tilt, -kPi / 2, kPi / 2,
+                                         "pelvis_tilt, rad: + = the pelvis tilted forward (about +z), as the gait models; the measured drive's at toe-off"));
+  j.coordinates.push_back(makeCoordinate("pelvis_tx", at.x, -5, 5, "pelvis_tx, m: forward; the measured drive's at toe-off"));
+  j.coordinates.push_back(makeCoordinate("pelvis_ty", at.y, -1, 2, "pelvis_ty, m: up; the measured drive's at toe-off"));
+  return j;
+}
+
+// An added shank mass (simulate --add-mass) as a point mass on its own body, welded to the
+// tibia on the shank's axis at its distance below the knee.
+void addAddedMass(OsimModel& m, const LegGeometry& g, const std::string& s) {
+  const std::string name = "added_mass_" + s;
+  m.bodies.push_back(makeBody(name, g.added.mass, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()));
+  m.joints.push_back(makeJoint(name + "_weld", "WeldJoint", "tibia_" + s, makeTranslation(0, -g.added.distanceBelowKnee), name,
+                               Eigen::Isometry3d::Identity()));
+}
+
 }  // namespace
 
 OsimModel makeOsimLegModel(const LegGeometry& g, const OsimLegPlacement& place) {
-  if (g.added.mass != 0)
-    throw std::invalid_argument("makeOsimLegModel: an added shank mass is not exported (got " + formatNumber(g.added.mass) + " kg)");
+  if (place.side != 'r' && place.side != 'l')
+    throw std::invalid_argument(std::string("makeOsimLegModel: side: expected r or l (got ") + place.side + ")");
+  if (!(g.added.mass >= 0) || (g.added.mass > 0 && !(g.added.distanceBelowKnee >= 0 && g.added.distanceBelowKnee <= g.shankLength)))
+    throw std::invalid_argument("makeOsimLegModel: added mass: expected a mass >= 0 kg on the shank, 0 to " + formatNumber(g.shankLength) +
+                                " m below the knee (got " + formatNumber(g.added.mass) + " kg at " + formatNumber(g.added.distanceBelowKnee) + " m)");
+  const std::string s(1, place.side);
   OsimModel m;
   m.name = place.modelName;
-  const double legMass = g.thighMass + g.shankMass + g.footMass;
-  m.bodies = {makeBody("pelvis", std::max(0.0, place.bodyMass - legMass), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()),
-              makeBody("femur_r", g.thighMass, {0, -g.thighCom, 0}, makeRodInertia(g.thighInertia, 1)),
-              makeBody("tibia_r", g.shankMass, {0, -g.shankCom, 0}, makeRodInertia(g.shankInertia, 1)),
-              makeBody("talus_r", g.footMass, {g.footComForward, 0, 0}, makeRodInertia(g.footInertia, 0)),
-              makeBody("calcn_r", 0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()),
-              makeBody("toes_r", 0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero())};
-
+  m.bodies = makeLegBodies(g, place, s);
   const std::array<double, 2> hipInPelvis = place.hipOffsetInPelvis.value_or(std::array<double, 2>{0, 0});
   const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
-  OsimJoint ground = makeJoint("ground_pelvis", "WeldJoint", "ground", makeTranslation(-hipInPelvis[0], place.hipHeight - hipInPelvis[1]),
-                               "pelvis", origin);
-  OsimJoint hip = makeJoint("hip_r", "PinJoint", "pelvis", makeTranslation(hipInPelvis[0], hipInPelvis[1]), "femur_r", origin);
-  hip.coordinates.push_back(makeCoordinate(
-      kOsimHipCoordinate, place.initial.hipFlexion, place.hipRange.minFlexion, place.hipRange.maxFlexion,
-      "hip_flexion, rad: + = flexion (the thigh swings forward), counter-clockwise about +z with the subject facing +x. Range [" +
-          formatDegrees(place.hipRange.minFlexion) + ", " + formatDegrees(place.hipRange.maxFlexion) +
-          "] deg: swingsim's hip range of motion, where a smooth stop acts (not clamped)."));
-  OsimJoint knee = makeJoint("knee_r", "PinJoint", "femur_r", makeFlippedTranslation(0, -g.thighLength), "tibia_r", makeFlippedTranslation(0, 0));
-  knee.coordinates.push_back(makeCoordinate(
-      kOsimKneeCoordinate, place.initial.kneeFlexion, place.kneeMinFlexion, place.kneeMaxFlexion,
-      "knee_flexion, rad: + = FLEXION (the shank swings backwards), as swingsim's, the opposite of the Gait models' knee_angle_r;"
-      " the joint's frames are turned 180 deg about x so that OpenSim's + rotation about the joint z is a flexion. Range [" +
-          formatDegrees(place.kneeMinFlexion) + ", " + formatDegrees(place.kneeMaxFlexion) +
-          "] deg: the knee model's hyperextension stop at the low end (a simulated swing presses a few degrees past it, so not clamped)."));
-  OsimJoint ankle = makeJoint("ankle_r", "WeldJoint", "tibia_r", makeTranslation(0, -g.shankLength), "talus_r", origin);
-  OsimJoint subtalar = makeJoint("subtalar_r", "WeldJoint", "talus_r", origin, "calcn_r", origin);
-  OsimJoint mtp = makeJoint("mtp_r", "WeldJoint", "calcn_r", makeTranslation(g.footLength, 0), "toes_r", origin);
+  OsimJoint ground = makeGroundPelvis(place, hipInPelvis);
+  OsimJoint hip = makeJoint("hip_" + s, "PinJoint", "pelvis", makeTranslation(hipInPelvis[0], hipInPelvis[1]), "femur_" + s, origin);
+  OsimJoint knee = makeJoint("knee_" + s, "PinJoint", "femur_" + s, makeTranslation(0, -g.thighLength), "tibia_" + s, origin);
+  addLegCoordinates(hip, knee, place);
+  OsimJoint ankle = makeJoint("ankle_" + s, "WeldJoint", "tibia_" + s, makeTranslation(0, -g.shankLength), "talus_" + s, origin);
+  OsimJoint subtalar = makeJoint("subtalar_" + s, "WeldJoint", "talus_" + s, origin, "calcn_" + s, origin);
+  OsimJoint mtp = makeJoint("mtp_" + s, "WeldJoint", "calcn_" + s, makeTranslation(g.footLength, 0), "toes_" + s, origin);
   m.joints = {ground, hip, knee, ankle, subtalar, mtp};
+  if (g.added.mass > 0) addAddedMass(m, g, s);
+  addOsimLegShapes(m, g, place.side);
   return m;
 }
 

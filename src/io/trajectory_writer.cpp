@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "core/input_error.h"
 #include "core/output_files.h"
@@ -38,13 +39,21 @@ std::string formatTrajectoryCsv(const SwingTrajectory& trajectory) {
   return formatCsv(kColumns, columnsOf(trajectory));
 }
 
-std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::string& name) {
+std::vector<std::string> calcTrajectoryStoLabels(char side) {
+  const std::string hip = makeOsimHipCoordinate(side), knee = makeOsimKneeCoordinate(side);
+  return {"time", hip, knee, hip + "_speed", knee + "_speed", hip + "_moment", knee + "_moment"};
+}
+
+std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::string& name, char side) {
+  if (side != 'r' && side != 'l') throw std::invalid_argument(std::string("formatTrajectorySto: side: expected r or l (got ") + side + ")");
   std::string out = name + "\nversion=1\nnRows=" + std::to_string(trajectory.size()) +
                     "\nnColumns=" + std::to_string(kColumns.size()) + "\ninDegrees=yes\nendheader\n";
-  // OpenSim names: 'time' first, tab-separated; the angles named as export-osim's coordinates.
-  const std::string hip = kOsimHipCoordinate, knee = kOsimKneeCoordinate;
-  std::string csv = formatCsv({"time", hip, knee, hip + "_speed", knee + "_speed", "hip_moment", "knee_moment"},
-                              columnsOf(trajectory));
+  // OpenSim names: 'time' first, tab-separated; the knee's angle, rate and moment in the
+  // sign of knee_angle_<side> (negative in flexion), as the exported model and a lab's files.
+  std::vector<std::vector<double>> columns = columnsOf(trajectory);
+  for (std::size_t k : {std::size_t{2}, std::size_t{4}, std::size_t{6}})
+    for (double& x : columns[k]) x = -x + 0.0;  // (+ 0.0: no -0)
+  std::string csv = formatCsv(calcTrajectoryStoLabels(side), columns);
   for (char& c : csv) if (c == ',') c = '\t';
   return out + csv;
 }

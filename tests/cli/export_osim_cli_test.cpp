@@ -37,9 +37,9 @@ TEST(ExportOsimCli, ModelBesideSimulatesStoPlaysItAndImportsBack) {
   const OsimModel model = loadOsimModel(osim.string());
   for (const auto& j : model.joints)
     for (const auto& c : j.coordinates) EXPECT_THAT(columns, HasSubstr("\t" + c.name + "\t")) << columns;
-  EXPECT_EQ(model.getJointTo("tibia_r").coordinates.at(0).name, "knee_flexion");
+  EXPECT_EQ(model.getJointTo("tibia_r").coordinates.at(0).name, "knee_angle_r");
   // The knee's sign and range, said in the file.
-  EXPECT_THAT(slurp(osim), HasSubstr("+ = FLEXION"));
+  EXPECT_THAT(slurp(osim), HasSubstr("- = FLEXION"));
 
   const auto yaml = dir / "back.yaml";
   const CliRun imported = runSwingsim("import-osim " + osim.string() + " --out " + yaml.string());

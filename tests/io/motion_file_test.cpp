@@ -174,11 +174,10 @@ TEST(MotionFile, SimulateStoReadsBackToTheSameAngles) {
   const SwingTrajectory trajectory = simulateSwing(setup).trajectory;
   ASSERT_GE(trajectory.size(), kMinSwingSamples);
 
-  MotionColumns columns;
-  columns.hip = "hip_flexion";
-  columns.knee = "knee_flexion";
-  columns.hipMoment = "hip_moment";
-  const SwingRecord r = makeSwingRecord(parseMotionTable(formatTrajectorySto(trajectory, "P1"), "P1.sto"), columns);
+  const MotionTable table = parseMotionTable(formatTrajectorySto(trajectory, "P1"), "P1.sto");
+  MotionColumns columns = openSimRightLegColumns(table);  // hip_flexion_r, knee_angle_r (knee_sign -1)
+  columns.hipMoment = "hip_flexion_r_moment";
+  const SwingRecord r = makeSwingRecord(table, columns);
   ASSERT_EQ(r.time.size(), trajectory.size());
   // The .sto holds %.10g: a relative error of at most 5e-10 in each printed number.
   constexpr double kTenDigits = 1e-9;

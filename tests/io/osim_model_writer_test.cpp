@@ -127,35 +127,30 @@ TEST_F(OsimModelWriter, JointsSitAtTheLoweredJointCentresWithSwingsimsCoordinate
   EXPECT_EQ(numbersIn(socketFrame(knee, "socket_parent_frame"), "translation"), (std::vector<double>{0, -g.thighLength, 0}));
   EXPECT_EQ(numbersIn(socketFrame(ankle, "socket_parent_frame"), "translation"), (std::vector<double>{0, -g.shankLength, 0}));
   EXPECT_EQ(numbersIn(socketFrame(mtp, "socket_parent_frame"), "translation"), (std::vector<double>{g.footLength, 0, 0}));
-  // Both knee frames half a turn about x: + rotation is a flexion.
-  for (const char* socket : {"socket_parent_frame", "socket_child_frame"}) {
-    const auto turn = numbersIn(socketFrame(knee, socket), "orientation");
-    ASSERT_EQ(turn.size(), 3u);
-    EXPECT_NEAR(std::fabs(turn[0]), kPi, kRoundTrip) << socket;
-    EXPECT_NEAR(turn[1], 0, kRoundTrip) << socket;
-    EXPECT_NEAR(turn[2], 0, kRoundTrip) << socket;
-  }
+  // Knee frames unturned, as the gait models': + rotation about z is an extension.
+  for (const char* socket : {"socket_parent_frame", "socket_child_frame"})
+    EXPECT_EQ(numbersIn(socketFrame(knee, socket), "orientation"), (std::vector<double>{0, 0, 0})) << socket;
   const XMLElement* hipQ = hip->FirstChildElement("coordinates")->FirstChildElement("Coordinate");
   const XMLElement* kneeQ = knee->FirstChildElement("coordinates")->FirstChildElement("Coordinate");
-  EXPECT_STREQ(hipQ->Attribute("name"), "hip_flexion");
-  EXPECT_STREQ(kneeQ->Attribute("name"), "knee_flexion");
+  EXPECT_STREQ(hipQ->Attribute("name"), "hip_flexion_r");
+  EXPECT_STREQ(kneeQ->Attribute("name"), "knee_angle_r");
   EXPECT_EQ(numbersIn(hipQ, "default_value"), std::vector<double>{p.initial.hipFlexion});
   EXPECT_EQ(numbersIn(hipQ, "range"), (std::vector<double>{p.hipRange.minFlexion, p.hipRange.maxFlexion}));
-  EXPECT_EQ(numbersIn(kneeQ, "default_value"), std::vector<double>{p.initial.kneeFlexion});
-  EXPECT_EQ(numbersIn(kneeQ, "range"), (std::vector<double>{place.kneeMinFlexion, place.kneeMaxFlexion}));
+  EXPECT_EQ(numbersIn(kneeQ, "default_value"), std::vector<double>{-p.initial.kneeFlexion});
+  EXPECT_EQ(numbersIn(kneeQ, "range"), (std::vector<double>{-place.kneeMaxFlexion, -place.kneeMinFlexion}));
   EXPECT_STREQ(kneeQ->FirstChildElement("clamped")->GetText(), "false");
   // The sign, said in the file just before the coordinate.
   const auto* note = kneeQ->PreviousSibling() ? kneeQ->PreviousSibling()->ToComment() : nullptr;
   ASSERT_NE(note, nullptr);
-  EXPECT_THAT(note->Value(), HasSubstr("+ = FLEXION"));
-  EXPECT_THAT(note->Value(), HasSubstr("Range [-0.573, 143.239] deg"));
+  EXPECT_THAT(note->Value(), HasSubstr("- = FLEXION"));
+  EXPECT_THAT(note->Value(), HasSubstr("Range [-143.239, 0.573] deg"));
   EXPECT_THAT(text, HasSubstr("test header - - with dashes"));  // "--" may not occur in a comment
 }
 
 TEST_F(OsimModelWriter, ReaderAndImportGiveTheLoweredLegBack) {
   const OsimModel m = parseOsimModel(text, "exported.osim");
-  EXPECT_EQ(m.getJointTo("tibia_r").coordinates.at(0).name, kOsimKneeCoordinate);
-  EXPECT_EQ(m.getJointTo("tibia_r").coordinates.at(0).rangeMax, place.kneeMaxFlexion);
+  EXPECT_EQ(m.getJointTo("tibia_r").coordinates.at(0).name, makeOsimKneeCoordinate('r'));
+  EXPECT_EQ(m.getJointTo("tibia_r").coordinates.at(0).rangeMin, -place.kneeMaxFlexion);
   EXPECT_EQ(m.getJointTo("femur_r").coordinates.at(0).defaultValue, p.initial.hipFlexion);
   OsimImportOptions o;
   o.kneeModelPath = p.kneeModelPath;
@@ -189,16 +184,15 @@ TEST_F(OsimModelWriter, TrajectoryStoColumnsNameTheModelsCoordinates) {
   std::vector<std::string> coordinates;
   for (const auto& j : parseOsimModel(text, "exported.osim").joints)
     for (const auto& c : j.coordinates) coordinates.push_back(c.name);
-  ASSERT_EQ(coordinates, (std::vector<std::string>{"hip_flexion", "knee_flexion"}));
+  ASSERT_EQ(coordinates, (std::vector<std::string>{"hip_flexion_r", "knee_angle_r"}));
   for (const auto& c : coordinates) EXPECT_THAT(columns, ::testing::Contains(c));
   // In degrees, as the header says: the first row's knee angle.
   std::string row;
   std::getline(in, row);
-  EXPECT_THAT(row, HasSubstr(formatNumber(0.17 * kRadToDeg).substr(0, 6)));
+  EXPECT_THAT(row, HasSubstr("\t-" + formatNumber(0.17 * kRadToDeg).substr(0, 6)));  // knee_angle_r: - = flexion
 }
 
-TEST_F(OsimModelWriter, RefusesAnAddedMassAndAnEmptyRange) {
-  EXPECT_THROW(makeOsimLegModel(calcLegGeometry(p, 0, AddedMass{0.5, 0.2}), place), std::invalid_argument);
+TEST_F(OsimModelWriter, RefusesAnEmptyRange) {
   place.kneeMaxFlexion = place.kneeMinFlexion;
   EXPECT_THROW(makeOsimLegModel(g, place), std::invalid_argument);
 }
