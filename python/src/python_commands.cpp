@@ -97,17 +97,32 @@ py::tuple importOsim(const py::object& model, const py::object& side, const py::
   return py::make_tuple(toPython(YAML::Load(imported.text)), imported.name);
 }
 
-/// `swingsim export-osim PARTICIPANT --lowering M` written to the file `path`; returns it.
-std::string exportOsim(const py::object& participant, const py::object& pathValue, const py::object& loweringValue) {
+/// An added shank mass from its two arguments (both or neither).
+std::optional<AddedMass> readAddedMassArguments(const py::object& mass, const py::object& below) {
+  if (mass.is_none() != below.is_none())
+    throw py::type_error("export_osim(): added_mass_kg and added_mass_below_knee_m: give both or neither");
+  if (mass.is_none()) return std::nullopt;
+  return AddedMass{readNumberArgument(mass, "export_osim(): added_mass_kg", checkPositive),
+                   readNumberArgument(below, "export_osim(): added_mass_below_knee_m", checkPositive)};
+}
+
+/// `swingsim export-osim PARTICIPANT --side S --lowering M [--add-mass KG@M]` written to the
+/// file `path`; returns it.
+std::string exportOsim(const py::object& participant, const py::object& pathValue, const py::object& loweringValue,
+                       const py::object& side, const py::object& addedMass, const py::object& addedBelow) {
   const std::string path = readPathArgument(pathValue, "export_osim(): path");
-  const double lowering = readNumberArgument(loweringValue, "export_osim(): lowering_m", checkLowering);
+  OsimExportOptions options;
+  options.side = readChoiceArgument(side, "export_osim(): side", {"r", "l"}).front();
+  options.lowering = readNumberArgument(loweringValue, "export_osim(): lowering_m", checkLowering);
+  options.added = readAddedMassArguments(addedMass, addedBelow);
   const Participant p = readParticipant(participant, "export_osim");
   const KneeModel knee = readKnee(py::none(), p, "export_osim");
   // An edited Participant's messages name "ORIGIN (edited in Python)": its origin file is an input too.
   const std::string origin = isPathArgument(participant) ? p.path : participant.attr("origin").cast<std::string>();
   checkOutputsAreNotInputs({{"participant", origin}, {"participant: knee_model", p.kneeModelPath}}, {{"path", path}});
   py::gil_scoped_release release;
-  writeFileAtomic(path, formatParticipantOsim(p, knee, lowering, makeTrajectoryFileStem(p.name, lowering) + ".sto"));
+  const std::string sto = makeTrajectoryFileStem(p.name, options.lowering) + ".sto";
+  writeFileAtomic(path, formatParticipantOsim(p, knee, options, sto));
   return path;
 }
 
@@ -122,7 +137,8 @@ void addRecordFunctions(py::module_& m) {
   m.def("import_osim", &importOsim, py::arg("osim_path"), py::arg("side") = "r", py::arg("name") = py::none(),
         py::arg("knee") = py::none(), py::arg("knee_friction_Nm") = 0.0, py::arg("shank_mass_kg") = py::none(),
         py::arg("foot_mass_kg") = py::none(), py::arg("foot_length_m") = py::none(), py::arg("height_m") = py::none());
-  m.def("export_osim", &exportOsim, py::arg("participant"), py::arg("path"), py::arg("lowering_m") = 0.0);
+  m.def("export_osim", &exportOsim, py::arg("participant"), py::arg("path"), py::arg("lowering_m") = 0.0,
+        py::arg("side") = "r", py::arg("added_mass_kg") = py::none(), py::arg("added_mass_below_knee_m") = py::none());
 }
 
 }  // namespace swingsim::python

@@ -585,9 +585,13 @@ def import_osim(osim_path, side="r", name=None, knee=None, knee_friction_Nm=0.0,
     return Participant(values, f"{participant_name}.yaml")
 
 
-def export_osim(participant, path, lowering_m=0.0):
+def export_osim(participant, path, lowering_m=0.0, side="r", added_mass_kg=None, added_mass_below_knee_m=None):
     """The simulated leg as an OpenSim 4 model written to `path` (a .osim file), as
-    `swingsim export-osim PARTICIPANT --lowering M` (docs/export-osim.md). participant: a path
-    or a Participant; lowering_m: knee-axis lowering, m. Refuses to write over the
-    participant or its knee model. Returns `path`."""
-    return _swingsim.export_osim(participant, path, lowering_m)
+    `swingsim export-osim PARTICIPANT --side S --lowering M [--add-mass KG@M]`
+    (docs/export-osim.md). participant: a path or a Participant; lowering_m: knee-axis
+    lowering, m; side: "r" or "l", naming bodies, joints and coordinates as OpenSim's gait
+    models (femur_r, hip_flexion_r, knee_angle_r negative in flexion); added_mass_kg (kg) and
+    added_mass_below_knee_m (m below the knee, along the shank): a point mass welded to the
+    tibia, both or neither. Refuses to write over the participant or its knee model.
+    Returns `path`."""
+    return _swingsim.export_osim(participant, path, lowering_m, side, added_mass_kg, added_mass_below_knee_m)

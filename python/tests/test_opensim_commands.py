@@ -88,6 +88,17 @@ def test_export_osim_equals_cli(repo, cli, tmp_path):
     assert mine.read_text() == written.read_text()
 
 
+def test_export_osim_left_leg_with_an_added_mass_equals_cli(repo, cli, tmp_path):
+    subprocess.run([cli, "export-osim", "participants/p1.yaml", "--side", "l", "--add-mass", "0.5@0.2", "--out",
+                    str(tmp_path)], cwd=repo, check=True, capture_output=True)
+    (written,) = tmp_path.glob("*.osim")
+    mine = tmp_path / "mine.osim"
+    swingsim.export_osim(repo / "participants" / "p1.yaml", mine, side="l", added_mass_kg=0.5,
+                         added_mass_below_knee_m=0.2)
+    assert mine.read_text() == written.read_text()
+    assert 'name="knee_angle_l"' in mine.read_text() and 'name="added_mass_l"' in mine.read_text()
+
+
 def test_export_osim_of_an_edited_participant(repo, tmp_path):
     p = swingsim.load_participant(repo / "participants" / "p1.yaml")
     p.segments.shank.mass_kg = 1.25
@@ -113,6 +124,10 @@ def test_export_osim_refuses_to_write_over_its_input(repo, tmp_path):
     ({"lowering_m": float("inf")}, ValueError, "export_osim\\(\\): lowering_m"),
     ({"participant": 3}, TypeError, "export_osim\\(\\): participant"),
     ({"path": None}, TypeError, "export_osim\\(\\): path"),
+    ({"side": "x"}, ValueError, "export_osim\\(\\): side"),
+    ({"added_mass_kg": 0.5}, TypeError, "both or neither"),
+    ({"added_mass_kg": -0.5, "added_mass_below_knee_m": 0.2}, ValueError, "export_osim\\(\\): added_mass_kg"),
+    ({"added_mass_kg": 0.5, "added_mass_below_knee_m": 2.0}, swingsim.InputError, ""),
 ])
 def test_export_osim_arguments(repo, tmp_path, kwargs, error, match):
     args = {"participant": repo / "participants" / "p1.yaml", "path": tmp_path / "x.osim"}
