@@ -77,7 +77,8 @@ int main(int argc, char** argv) try {
   md << "| plant | hidden effect | size | seeds | named first | other named | parameter | 95 % CI holds truth | bias (mean - truth) | SD |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   csv << "plant,effect,size,truth,parameter,seeds,named,other_named,scored,covered,not_wald,bias,sd,seconds\n";
-  seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note\n";
+  seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note,"
+           "first_lr,first_p_adjusted,first_significant,first_bic,first_validation,first_physical\n";
   const auto start = std::chrono::steady_clock::now();
   for (const auto& c : calibrationCases()) {
     if (!selected(o.only, c.plant + "/" + caseName(c))) continue;
@@ -94,7 +95,9 @@ int main(int argc, char** argv) try {
     for (std::size_t i = 0; i < outcomes.size(); ++i) {
       const auto& r = outcomes[i];
       seeds << c.plant << "," << caseName(c) << "," << o.first + i << "," << r.namedFirst << "," << r.otherNamed << ","
-            << r.estimate << "," << r.lower << "," << r.upper << ",\"" << r.intervalNote << "\"\n";
+            << r.estimate << "," << r.lower << "," << r.upper << ",\"" << r.intervalNote << "\"," << r.firstLr << ","
+            << r.firstPAdjusted << "," << r.firstSignificant << "," << r.firstBic << "," << r.firstValidation << ","
+            << r.firstPhysical << "\n";
     }
     seeds.flush();
     std::cerr << c.plant << "/" << caseName(c) << ": " << secs << " s\n";
