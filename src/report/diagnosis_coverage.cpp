@@ -31,8 +31,8 @@ constexpr MeasuredCoverage kMeasured[] = {
     {"switch_delay", "latch_rate_per_s", 20, 19, 19, 15, 0.04, 2.7,
      "the latch rate's Wald interval from the joint refit held the truth in 15 of 19 seeds (79 %), not 95 %: the "
      "estimates scatter by about 1.4 times the standard error it implies (a profile-likelihood interval is narrower "
-     "still: 11 of 19); the candidate's profiled time constant is conditional on switch constants held while it is scored and held "
-     "the truth in none"},
+     "still: 11 of 19); the candidate's profiled time constant is conditional on switch constants held while it is "
+     "scored and held the truth in none"},
     // A 4-phase truth from a 2-phase base: Chien Table 1's phase 4 (f -488.12 N, k 563313 N/m,
     // c 14672.2 N s/m) is the candidate's law term for term inside hyperextension.
     {"hyperextension_phase", "f_N", 20, 20, 20, 20, -4.4, 0.80,
