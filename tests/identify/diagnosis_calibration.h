@@ -57,6 +57,9 @@ struct SeedOutcome {
   /// held or failed: its likelihood ratio, Bonferroni p, and the rule's other tests.
   double firstLr = NAN, firstPAdjusted = NAN;
   bool firstSignificant = false, firstBic = false, firstValidation = false, firstPhysical = false;
+  /// The final model's own fitted parameters, "name=value" separated by ";" (the cylinder's
+  /// switch constants after a joint refit): where a spread comes from.
+  std::string finalParameters;
 };
 
 /// Summary over the seeds of one case.
@@ -244,6 +247,12 @@ inline SeedOutcome readOutcome(const CalibrationCase& c, const Diagnosis& dg) {
         o.firstValidation = first.validationImproves;
         o.firstPhysical = first.physical;
       }
+  for (const auto& p : dg.finalParameters) {
+    std::ostringstream v;
+    v.precision(6);
+    v << p.value;
+    o.finalParameters += (o.finalParameters.empty() ? "" : ";") + p.name + "=" + v.str();
+  }
   if (c.parameter.empty()) return o;
   // A parameter the joint refit of an accepted effect frees (the latch rate) is reported
   // among the final model's own parameters; otherwise the effect's score.
