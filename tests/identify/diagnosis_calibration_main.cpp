@@ -1,6 +1,8 @@
 // diagnosis_calibration: the calibration study of the diagnosis, one table (docs/diagnosis.md,
 // "How far the intervals can be trusted"). Run by scripts/diagnosis-calibration.sh.
 // Usage: diagnosis_calibration [--seeds N] [--first S] [--jobs J] [--only SUBSTRING[,SUBSTRING...]] --out DIR
+//        diagnosis_calibration --sweep-effect-sizes   (how far each hidden sweep effect moves the
+//        truth's swing times, noise free, against a row's noise: a table on stdout)
 // Writes DIR/calibration.md (the table) and DIR/calibration.csv (one row a case) and
 // DIR/calibration-seeds.csv (one row a seed).
 #include <chrono>
@@ -21,12 +23,17 @@ struct Options {
   int seeds = 20, jobs = 1;
   std::uint64_t first = 1;
   std::string only, out;
+  bool sweepEffectSizes = false;
 };
 
 Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    if (a == "--sweep-effect-sizes") {
+      o.sweepEffectSizes = true;
+      continue;
+    }
     if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value");
     const std::string v = argv[++i];
     if (a == "--seeds") o.seeds = std::stoi(v);
@@ -36,6 +43,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--out") o.out = v;
     else throw std::invalid_argument("unknown option " + a);
   }
+  if (o.sweepEffectSizes) return o;
   if (o.out.empty() || o.seeds < 1 || o.jobs < 1) throw std::invalid_argument("usage: diagnosis_calibration [--seeds N>=1] [--first S] [--jobs J>=1] [--only SUBSTRING[,SUBSTRING...]] --out DIR");
   return o;
 }
@@ -68,16 +76,33 @@ std::string markdownRow(const CalibrationCase& c, const CaseSummary& s) {
   return row;
 }
 
+// The sweep cases' effect sizes in swing time (calcSweepEffectSize), one markdown row each.
+void printSweepEffectSizes() {
+  std::cout << "| hidden effect | size | rows | RMS change ms | after each participant's mean ms | row noise ms |\n"
+            << "|---|---|---|---|---|---|\n";
+  for (const auto& h : sweepHiddenEffects()) {
+    if (h.effect.empty()) continue;
+    const SweepEffectSize e = calcSweepEffectSize(h);
+    std::cout << "| " << h.effect << " | " << h.size << " | " << e.rows << " | " << num(1e3 * e.rawRmsS) << " | "
+              << num(1e3 * e.shapeRmsS) << " | " << num(1e3 * e.rowNoiseS) << " |\n";
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
   const Options o = parse(argc, argv);
+  if (o.sweepEffectSizes) {
+    printSweepEffectSizes();
+    return 0;
+  }
   std::filesystem::create_directories(o.out);
   std::ofstream md(o.out + "/calibration.md"), csv(o.out + "/calibration.csv"), seeds(o.out + "/calibration-seeds.csv");
   md << "| plant | hidden effect | size | seeds | named first | other named | parameter | 95 % CI holds truth | bias (mean - truth) | SD |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   csv << "plant,effect,size,truth,parameter,seeds,named,other_named,scored,covered,not_wald,bias,sd,seconds\n";
-  seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note\n";
+  seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note,"
+           "first_lr,first_p_adjusted,first_significant,first_bic,first_validation,first_physical,final_parameters\n";
   const auto start = std::chrono::steady_clock::now();
   for (const auto& c : calibrationCases()) {
     if (!selected(o.only, c.plant + "/" + caseName(c))) continue;
@@ -94,7 +119,9 @@ int main(int argc, char** argv) try {
     for (std::size_t i = 0; i < outcomes.size(); ++i) {
       const auto& r = outcomes[i];
       seeds << c.plant << "," << caseName(c) << "," << o.first + i << "," << r.namedFirst << "," << r.otherNamed << ","
-            << r.estimate << "," << r.lower << "," << r.upper << ",\"" << r.intervalNote << "\"\n";
+            << r.estimate << "," << r.lower << "," << r.upper << ",\"" << r.intervalNote << "\"," << r.firstLr << ","
+            << r.firstPAdjusted << "," << r.firstSignificant << "," << r.firstBic << "," << r.firstValidation << ","
+            << r.firstPhysical << ",\"" << r.finalParameters << "\"\n";
     }
     seeds.flush();
     std::cerr << c.plant << "/" << caseName(c) << ": " << secs << " s\n";

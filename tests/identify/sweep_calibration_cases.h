@@ -8,6 +8,7 @@
 // Burkett Table 3's trial-to-trial SD, the truth's hip drive 6 % faster than the files'.
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -72,44 +73,102 @@ inline Diagnosis diagnoseSweep(const SweepTruth& truth, std::uint64_t seed, cons
   return dg;
 }
 
-/// Every sweep case: a null and each candidate the generator can hide. Sizes are away from
-/// the files (and from the candidates' starting values), inside each candidate's range
+/// One sweep candidate hidden in the truth: what it is, its size and how to hide it.
+struct SweepHidden {
+  std::string effect, parameter;  ///< library effect ("" null) and the parameter held against the truth
+  double truth;                   ///< the parameter's true value
+  std::string size;               ///< in words, for the table
+  std::function<void(SweepTruth&)> hide;
+};
+
+/// A null and each candidate the generator can hide. Sizes are away from the files (and from
+/// the candidates' starting values), inside each candidate's range
 /// (identify/sweep_effects.cpp) and large enough to move a swing time by a few trial SDs.
+inline std::vector<SweepHidden> sweepHiddenEffects() {
+  using ST = SweepTruth;
+  return {
+      {"", "", 0, "none (hip drive 4 % slower than the files)", nullptr},
+      {"hip_effort_adaptation", "exponent", -1.0, "exponent -1", [](ST& t) { t.effects.hipEffortExponent = -1.0; }},
+      {"hip_tempo_lowering", "change_per_100mm", -0.1, "time scale -10 % per 100 mm",
+       [](ST& t) { t.effects.timeScaleSlope = -0.1; }},
+      // One value: a switch, named or not; its "interval" is the value itself.
+      {"com_rule_proportional", "", 0, "COMs proportional to the new lengths",
+       [](ST& t) { t.effects.comRule = independent::ComRule::kProportional; }},
+      {"knee_friction_scale", "scale", 1.6, "Tc x 1.6 in every knee",
+       [](ST& t) { t.participant = [](independent::SweepParticipant& p) { p.kneeFrictionNm *= 1.6; }; }},
+      {"stop_restitution", "restitution", 0.15, "e 0.15 (files 0.4)", [](ST& t) { t.effects.stopRestitution = 0.15; }},
+      {"stop_stiffness", "stiffness_Nm_per_rad1p5", 6e4, "6e4 N m/rad^1.5 (files 2e4)",
+       [](ST& t) { t.model.stopStiffness = 6e4; }},
+      {"hip_extension_ratio", "ratio", 0.7, "extension 21 N m over flexion 30 N m (files 0.5)",
+       [](ST& t) { t.model.extensionNm = 21.0; }},
+      {"hip_flexion_duration", "duration_s", 0.24, "flexion half-sine 0.24 s (files 0.20)",
+       [](ST& t) { t.model.flexionS = 0.24; }},
+      {"hip_extension_duration", "duration_s", 0.25, "extension half-sine 0.25 s (files 0.20)",
+       [](ST& t) { t.model.extensionS = 0.25; }},
+      {"thigh_target_flexion", "flexion_deg", 25.0, "swing ends at thigh 25 deg (files 20)",
+       [](ST& t) { t.model.thighTargetDeg = 25.0; }},
+  };
+}
+
+/// Every sweep case of the calibration study, one per sweepHiddenEffects().
 template <typename Case>
 std::vector<Case> sweepCalibrationCases() {
-  using ST = SweepTruth;
-  auto sweepCase = [](std::string effect, std::string parameter, double truthValue, std::string size,
-                      std::function<void(ST&)> hide) {
-    Case c{"sweep", std::move(effect), std::move(parameter), truthValue, std::move(size), {}};
-    c.diagnose = [hide](std::uint64_t seed, const std::string& tag) {
-      ST truth;
+  std::vector<Case> out;
+  for (const SweepHidden& h : sweepHiddenEffects()) {
+    Case c{"sweep", h.effect, h.parameter, h.truth, h.size, {}};
+    c.diagnose = [hide = h.hide](std::uint64_t seed, const std::string& tag) {
+      SweepTruth truth;
       if (hide) hide(truth);
       return diagnoseSweep(truth, seed, tag);
     };
-    return c;
-  };
-  return {
-      sweepCase("", "", 0, "none (hip drive 4 % slower than the files)", nullptr),
-      sweepCase("hip_effort_adaptation", "exponent", -1.0, "exponent -1", [](ST& t) { t.effects.hipEffortExponent = -1.0; }),
-      sweepCase("hip_tempo_lowering", "change_per_100mm", -0.1, "time scale -10 % per 100 mm",
-                [](ST& t) { t.effects.timeScaleSlope = -0.1; }),
-      // One value: a switch, named or not; its "interval" is the value itself.
-      sweepCase("com_rule_proportional", "", 0, "COMs proportional to the new lengths",
-                [](ST& t) { t.effects.comRule = independent::ComRule::kProportional; }),
-      sweepCase("knee_friction_scale", "scale", 1.6, "Tc x 1.6 in every knee",
-                [](ST& t) { t.participant = [](independent::SweepParticipant& p) { p.kneeFrictionNm *= 1.6; }; }),
-      sweepCase("stop_restitution", "restitution", 0.15, "e 0.15 (files 0.4)", [](ST& t) { t.effects.stopRestitution = 0.15; }),
-      sweepCase("stop_stiffness", "stiffness_Nm_per_rad1p5", 6e4, "6e4 N m/rad^1.5 (files 2e4)",
-                [](ST& t) { t.model.stopStiffness = 6e4; }),
-      sweepCase("hip_extension_ratio", "ratio", 0.7, "extension 21 N m over flexion 30 N m (files 0.5)",
-                [](ST& t) { t.model.extensionNm = 21.0; }),
-      sweepCase("hip_flexion_duration", "duration_s", 0.24, "flexion half-sine 0.24 s (files 0.20)",
-                [](ST& t) { t.model.flexionS = 0.24; }),
-      sweepCase("hip_extension_duration", "duration_s", 0.25, "extension half-sine 0.25 s (files 0.20)",
-                [](ST& t) { t.model.extensionS = 0.25; }),
-      sweepCase("thigh_target_flexion", "flexion_deg", 25.0, "swing ends at thigh 25 deg (files 20)",
-                [](ST& t) { t.model.thighTargetDeg = 25.0; }),
-  };
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+/// How far a hidden sweep effect moves the truth's swing times, noise free: over the rows the
+/// calibration's tables have (every participant at 0-200 mm where both truths end a swing),
+/// the RMS change, the RMS change left after each participant's mean change (what a
+/// participant's own time scale can roughly absorb), and the RMS noise of a row's mean.
+struct SweepEffectSize {
+  int rows = 0;
+  double rawRmsS = 0, shapeRmsS = 0, rowNoiseS = 0;
+};
+
+inline SweepEffectSize calcSweepEffectSize(const SweepHidden& h) {
+  const std::vector<double> grid = {0.0, 0.05, 0.10, 0.15, 0.20};
+  double raw2 = 0, shape2 = 0, noise2 = 0;
+  SweepEffectSize out;
+  for (auto base : independent::burkettParticipants()) {
+    base.timeScale *= kSweepTruthTempo;
+    base.trials = kSweepTrials;
+    SweepTruth truth;
+    if (h.hide) h.hide(truth);
+    independent::SweepParticipant hidden = base;
+    if (truth.participant) truth.participant(hidden);
+    const independent::SweepModel files;
+    const independent::SweepEffects none;
+    std::vector<double> change;
+    for (double d : grid) {
+      const auto a = independent::simulateSweepSwing(base, files, none, d);
+      const auto b = independent::simulateSweepSwing(hidden, truth.model, truth.effects, d);
+      if (!a.ended || !b.ended) continue;
+      change.push_back(b.swingTime - a.swingTime);
+      noise2 += base.trialSdS * base.trialSdS / base.trials;
+    }
+    double mean = 0;
+    for (double v : change) mean += v / static_cast<double>(change.size());
+    for (double v : change) {
+      raw2 += v * v;
+      shape2 += (v - mean) * (v - mean);
+      ++out.rows;
+    }
+  }
+  if (out.rows == 0) return out;
+  out.rawRmsS = std::sqrt(raw2 / out.rows);
+  out.shapeRmsS = std::sqrt(shape2 / out.rows);
+  out.rowNoiseS = std::sqrt(noise2 / out.rows);
+  return out;
 }
 
 }  // namespace swingsim::calibration

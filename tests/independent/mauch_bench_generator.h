@@ -42,6 +42,8 @@ struct MauchTruth {
   double coulomb = 0;           // Fc in Fc tanh(xd / coulombWidth), N (library: coulomb_friction)
   double coulombWidth = 0.01;   // m/s
   double positionDamping = 0;   // cx in cx x xd, N s/m^2 (library: position_dependent_damping)
+  double movingMass = 0;        // m in m xdd, kg: Newton's second law for the piston, rod and
+                                // oil moving with them (library: inertia)
   /// Outside the library: oil/air compliance, the whole force lags its law by a first-order
   /// filter with this time constant (s). 0 = off.
   double complianceLag = 0;
@@ -61,30 +63,51 @@ struct Gait {
   int strides = 3;
 };
 
-/// Piston position (m) and velocity (m/s) at time t in a stride of length T.
-inline void pistonMotion(double t, const Gait& g, double& x, double& xd) {
-  const double T = g.stride;
-  const double s = std::fmod(t, T) / T;  // stride fraction
-  // Bumps a exp(-((s - c)/w)^2), periodic over neighbouring strides.
-  struct Bump {
-    double a, c, w;
-  };
-  const Bump bumps[] = {
+/// A smooth bump a exp(-((s - c)/w)^2) of piston position (m) over the stride fraction s.
+struct PistonBump {
+  double a, c, w;
+};
+
+/// The bumps of one stride of gait `g`.
+inline std::vector<PistonBump> pistonBumps(const Gait& g) {
+  return {
       {0.0065 * g.amplitude, 0.15, 0.07},   // loading response flexion
       {-0.0016, 0.50, 0.045},                // terminal stance hyperextension (flat-ish dip)
       {-0.0016, 0.55, 0.045},
       {0.0260 * g.amplitude, 0.74, 0.085},  // swing flexion
   };
+}
+
+/// Piston position (m) and velocity (m/s) at time t in a stride of length T.
+inline void pistonMotion(double t, const Gait& g, double& x, double& xd) {
+  const double T = g.stride;
+  const double s = std::fmod(t, T) / T;  // stride fraction
   x = 0;
   xd = 0;
+  // Periodic over neighbouring strides.
   for (int shift = -1; shift <= 1; ++shift) {
-    for (const Bump& b : bumps) {
+    for (const PistonBump& b : pistonBumps(g)) {
       const double u = (s - b.c - shift) / b.w;
       const double e = b.a * std::exp(-u * u);
       x += e;
       xd += e * (-2.0 * u / b.w) / T;
     }
   }
+}
+
+/// Piston acceleration (m/s^2) at time t: the bumps' second derivative in closed form,
+/// d^2/dt^2 [a exp(-u^2)] = a exp(-u^2) (4 u^2 - 2) / (w T)^2 with u = (s - c) / w, s = t / T
+/// (not a difference of positions, so it shares nothing with the library's estimate).
+inline double pistonAcceleration(double t, const Gait& g) {
+  const double T = g.stride;
+  const double s = std::fmod(t, T) / T;
+  double xdd = 0;
+  for (int shift = -1; shift <= 1; ++shift)
+    for (const PistonBump& b : pistonBumps(g)) {
+      const double u = (s - b.c - shift) / b.w;
+      xdd += b.a * std::exp(-u * u) * (4.0 * u * u - 2.0) / (b.w * b.w * T * T);
+    }
+  return xdd;
 }
 
 inline double halfTanh(double v) { return 0.5 + 0.5 * std::tanh(v); }
@@ -153,7 +176,8 @@ inline Record generate(const MauchTruth& m, const Gait& g, double noise, std::ui
       lagged = lawForce(m, x, xd, s2);
       lagStarted = true;
     }
-    const double F = m.complianceLag > 0 ? lagged : lawForce(m, x, xd, s2);
+    // The moving mass acts on the rod directly, outside the oil's compliance lag.
+    const double F = (m.complianceLag > 0 ? lagged : lawForce(m, x, xd, s2)) + m.movingMass * pistonAcceleration(t, g);
     r.time.push_back(t);
     r.position.push_back(x);
     r.cleanForce.push_back(F);
