@@ -52,11 +52,11 @@ cmake -S "$work/opensim-core" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
       -DOPENSIM_C3D_PARSER=None >/dev/null
 cmake --build "$work/build" --target osimSimulation -j"$(nproc)"
 
-o="$work/opensim-core"; b="$work/build"
+o="$work/opensim-core"; b="$work/build"   # the libraries land at the top of the build folder
 g++ -std=c++17 -O2 -o "$work/check_exported_model" "$here/check_exported_model.cpp" \
-    -I"$o" -I"$o/Vendors/lepton/include" -I"$b/OpenSim/Common" -I"$work/simbody/include/simbody" \
-    -L"$b/OpenSim/Simulation" -L"$b/OpenSim/Common" -L"$b/Vendors/lepton" -L"$work/simbody/lib" \
+    -DSPDLOG_FMT_EXTERNAL -DSPDLOG_COMPILED_LIB -DSPDLOG_SHARED_LIB -DFMT_SHARED \
+    -I"$o" -I"$o/Vendors/lepton/include" -isystem "$work/simbody/include/simbody" \
+    -L"$b" -L"$work/simbody/lib" \
     -losimSimulation -losimCommon -losimLepton -lSimTKsimbody -lSimTKmath -lSimTKcommon \
-    -lspdlog -lfmt \
-    -Wl,-rpath,"$b/OpenSim/Simulation:$b/OpenSim/Common:$b/Vendors/lepton:$work/simbody/lib"
+    -lspdlog -lfmt -Wl,-rpath,"$b:$work/simbody/lib"
 echo "built $work/check_exported_model" >&2
