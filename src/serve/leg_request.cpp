@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <regex>
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/output_files.h"
 #include "io/knee_model_knobs.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -108,19 +108,12 @@ bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files) {
   return true;
 }
 
-std::string readFileText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The participant's YAML tree: the shipped file's, or the upload's (checked), with the edits.
 Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles& files) {
   const bool uploaded = request.participantYaml.has_value();
   // An upload resolves ../models/NAME.yaml as a shipped participant does; nothing is read there.
   const std::string source = uploaded ? files.getParticipantsDir() + "/upload.yaml" : files.findParticipantPath(request.participant);
-  const std::string text = uploaded ? *request.participantYaml : readFileText(source);
+  const std::string text = uploaded ? *request.participantYaml : readFile(source);
   YAML::Node root;
   try {
     root = YAML::Load(text);
