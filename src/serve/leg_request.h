@@ -19,6 +19,7 @@ namespace swingsim {
 /// The simulation budget of one request: a shared machine answers quickly or refuses.
 struct ServeLimits {
   std::size_t maxBodyBytes = 64 * 1024;  ///< bytes of a request body (a participant file is ~2 KB)
+  std::size_t maxOsimBytes = 4 << 20;    ///< bytes of an .osim upload's request (a scaled gait2354 model is ~420 KB)
   double maxSwingTimeLimit = 3.0;        ///< s, the largest swing_end.time_limit_s simulated
   double maxSwingWallSeconds = 5.0;      ///< s of wall-clock time one swing may take
   int maxSweepPoints = 41;               ///< lowerings of one sweep (0 to 0.2 m in 5 mm steps)

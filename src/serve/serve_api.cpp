@@ -11,6 +11,7 @@
 #include "io/participant_loader.h"
 #include "report/stick_figure_animation.h"
 #include "report/sweep_figures.h"
+#include "report/sweep_markdown.h"
 #include "report/sweep_report.h"
 #include "report/swing_json.h"
 #include "swing/knee_setup.h"
@@ -22,34 +23,6 @@ namespace {
 constexpr double kTrajectoryStep = 0.01;  // s between the trajectory samples sent to the page
 
 ApiReply reply(const Json& json) { return {200, json.dump()}; }
-
-ApiReply replyError(int status, const std::string& message) {
-  Json error = {{"error", message}};
-  if (status == 400) {
-    const std::string key = findErrorKey(message);
-    error["key"] = key;
-    const auto at = message.find(key + ": ");
-    error["message"] = key.empty() || at == std::string::npos ? message : message.substr(at);
-  }
-  return {status, error.dump()};
-}
-
-// `answer()` with the library's exceptions as replies: bad input 400, a failed run 422.
-ApiReply answerOrError(const std::function<Json()>& answer) {
-  try {
-    return reply(answer());
-  } catch (const Json::parse_error&) {
-    return replyError(400, "request: expected a JSON object");
-  } catch (const InputError& e) {
-    return replyError(400, e.what());
-  } catch (const RunError& e) {
-    return replyError(422, e.what());
-  } catch (const std::exception& e) {
-    return replyError(500, e.what());
-  }
-}
-
-Json readBody(const std::string& body) { return Json::parse(body.empty() ? "{}" : body); }
 
 // The value of each editable key in the participant's YAML text, as the file writes it.
 Json readFields(const std::string& participantYaml) {
@@ -147,6 +120,28 @@ Json makeSweepJson(const SweepStudy& study, const SweepResults& results) {
           {"sweep", sweepJson}};
 }
 
+struct LegSweep {
+  SweepStudy study;
+  SweepResults results;
+};
+
+// The sweep of a request's leg over its lowering grid, on one thread (the server's pool
+// serves other requests meanwhile). The study is named after the participant.
+LegSweep runLegSweep(const Json& json, const ShippedFiles& files, const ServeLimits& limits) {
+  const LegRequest request = readLegRequest(json);
+  LegSweep run;
+  readSweepGrid(json, limits, run.study);
+  Leg leg = loadLeg(request, files, limits);
+  run.study.name = leg.participant.name + "-sweep";
+  run.study.includePublishedLowerings = false;
+  run.study.swing = makeServeSwingOptions(limits);
+  leg.participant.kneeModelPath = leg.knee.path;
+  run.study.kneeModels.emplace(leg.knee.path, leg.knee);
+  run.study.participants.push_back(std::move(leg.participant));
+  run.results = runSweep(run.study, 1);
+  return run;
+}
+
 }  // namespace
 
 ServeApi::ServeApi(ShippedFiles files, ServeLimits limits) : files_(std::move(files)), limits_(limits) {}
@@ -157,6 +152,7 @@ ApiReply ServeApi::listFiles() const {
                 {"editable_keys", editableParticipantKeys()},
                 {"limits",
                  {{"max_body_bytes", limits_.maxBodyBytes},
+                  {"max_osim_bytes", limits_.maxOsimBytes},
                   {"max_swing_time_limit_s", limits_.maxSwingTimeLimit},
                   {"max_swing_wall_s", limits_.maxSwingWallSeconds},
                   {"max_sweep_points", limits_.maxSweepPoints}}}});
@@ -164,7 +160,7 @@ ApiReply ServeApi::listFiles() const {
 
 ApiReply ServeApi::describeParticipant(const std::string& body) const {
   return answerOrError([&] {
-    const Leg leg = loadLeg(readLegRequest(readBody(body)), files_, limits_);
+    const Leg leg = loadLeg(readLegRequest(readRequestBody(body)), files_, limits_);
     const Participant& p = leg.participant;
     const std::string participantYaml = formatParticipantYaml(p, files_.getParticipantsDir());
     KneeModelSpec spec = leg.knee.spec;
@@ -183,7 +179,7 @@ ApiReply ServeApi::describeParticipant(const std::string& body) const {
 
 ApiReply ServeApi::simulate(const std::string& body) const {
   return answerOrError([&] {
-    const LegRequest request = readLegRequest(readBody(body));
+    const LegRequest request = readLegRequest(readRequestBody(body));
     Leg leg = loadLeg(request, files_, limits_);
     const double hipHeight = calcHipHeight(leg.participant);
     const SwingSetup setup = makeSwingSetup(std::move(leg.participant), leg.knee, request.lowering, request.added);
@@ -204,19 +200,16 @@ ApiReply ServeApi::simulate(const std::string& body) const {
 
 ApiReply ServeApi::sweep(const std::string& body) const {
   return answerOrError([&] {
-    const Json json = readBody(body);
-    const LegRequest request = readLegRequest(json);
-    SweepStudy study;
-    readSweepGrid(json, limits_, study);
-    Leg leg = loadLeg(request, files_, limits_);
-    study.name = "serve";
-    study.includePublishedLowerings = false;
-    study.swing = makeServeSwingOptions(limits_);
-    leg.participant.kneeModelPath = leg.knee.path;
-    study.kneeModels.emplace(leg.knee.path, leg.knee);
-    study.participants.push_back(std::move(leg.participant));
-    const SweepResults results = runSweep(study, 1);
-    return makeSweepJson(study, results);
+    const LegSweep run = runLegSweep(readRequestBody(body), files_, limits_);
+    return makeSweepJson(run.study, run.results);
+  });
+}
+
+ApiReply ServeApi::report(const std::string& body) const {
+  return answerOrError([&] {
+    const LegSweep run = runLegSweep(readRequestBody(body), files_, limits_);
+    const auto files = makeSweepReport(run.study, run.results);
+    return Json{{"file_name", run.study.name + "-report.html"}, {"html", files.at("report.html")}};
   });
 }
 

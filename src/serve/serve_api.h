@@ -7,15 +7,11 @@
 // a swing that fails (RunError) is 422 {"error"}. Every call is safe from several threads.
 #include <string>
 
+#include "serve/api_reply.h"
 #include "serve/leg_request.h"
 #include "serve/shipped_files.h"
 
 namespace swingsim {
-
-struct ApiReply {
-  int status = 200;
-  std::string body;  ///< JSON text
-};
 
 class ServeApi {
  public:
@@ -39,6 +35,25 @@ class ServeApi {
   /// "fastest_swing_time_s", "symmetry", "figure_svg", "sweep": `swingsim sweep --json`'s
   /// participant}. Refused (400) above limits.maxSweepPoints lowerings.
   ApiReply sweep(const std::string& body) const;
+
+  /// POST /api/report (a sweep request): {"file_name", "html"}: the sweep's report.html for
+  /// this leg, as `swingsim sweep` writes it (one self-contained page).
+  ApiReply report(const std::string& body) const;
+  /// POST /api/import_osim {"osim_text", "file_name", "side": "r"|"l", "knee": NAME,
+  /// "shank_mass_kg", "foot_mass_kg"}: {"participant_yaml", "name"}, import-osim's participant
+  /// (its knee a shipped model), for the page to use as an upload. Nothing is written.
+  ApiReply importOsim(const std::string& body) const;
+  /// POST /api/export_osim (a leg request plus "side"): {"osim_file_name", "osim_text",
+  /// "sto_file_name", "sto_text"}: export-osim's model of the leg (lowering, added mass) and
+  /// simulate's trajectory .sto of its swing, which OpenSim plays on it.
+  ApiReply exportOsim(const std::string& body) const;
+  /// POST /api/tune (a leg request plus "knobs": [{"key", "min", "max", "log_scale"}] and
+  /// "targets": {"swing_time_s" (default the sound limb's), "peak_knee_flexion_deg": [min,
+  /// max] (default [60, 90]), "min_toe_clearance_m" (default 0.08)}): the setting that brings
+  /// the swing time to the target within the hard limits (swingsim tune's method, 24 start
+  /// points, at most 10 s of polish): {"knobs": [{"key", "value", "at_range_end"}], "targets",
+  /// "feasible", "identifiable", "identifiability", "evaluations", "seconds", "swing_time_s"}.
+  ApiReply tune(const std::string& body) const;
 
   const ServeLimits& getLimits() const { return limits_; }
 

@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <optional>
 
 #include "core/input_error.h"
@@ -71,15 +72,24 @@ void WebServer::Impl::addRoutes() {
     const ApiReply r = api.listFiles();
     sendJson(res, r.status, r.body);
   });
-  const auto post = [this](const char* path, ApiReply (ServeApi::*call)(const std::string&) const) {
-    server.Post(path, [this, call](const httplib::Request& req, httplib::Response& res) {
+  // Each call's own body limit (an .osim upload's is larger than the others').
+  const auto post = [this](const char* path, ApiReply (ServeApi::*call)(const std::string&) const, std::size_t maxBytes) {
+    server.Post(path, [this, call, maxBytes](const httplib::Request& req, httplib::Response& res) {
+      if (req.body.size() > maxBytes)
+        return sendJson(res, 413, Json{{"error", "request body: expected at most " + std::to_string(maxBytes) + " bytes (got " +
+                                                     std::to_string(req.body.size()) + ")"}}.dump());
       const ApiReply r = (api.*call)(req.body);
       sendJson(res, r.status, r.body);
     });
   };
-  post("/api/participant", &ServeApi::describeParticipant);
-  post("/api/simulate", &ServeApi::simulate);
-  post("/api/sweep", &ServeApi::sweep);
+  const ServeLimits& limits = api.getLimits();
+  post("/api/participant", &ServeApi::describeParticipant, limits.maxBodyBytes);
+  post("/api/simulate", &ServeApi::simulate, limits.maxBodyBytes);
+  post("/api/sweep", &ServeApi::sweep, limits.maxBodyBytes);
+  post("/api/report", &ServeApi::report, limits.maxBodyBytes);
+  post("/api/export_osim", &ServeApi::exportOsim, limits.maxBodyBytes);
+  post("/api/tune", &ServeApi::tune, limits.maxBodyBytes);
+  post("/api/import_osim", &ServeApi::importOsim, limits.maxOsimBytes);
   server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
     if (res.body.empty()) sendJson(res, res.status, Json{{"error", "HTTP " + std::to_string(res.status)}}.dump());
   });
@@ -89,7 +99,7 @@ WebServer::WebServer(const ServeOptions& options) : impl_(std::make_unique<Impl>
   Impl& s = *impl_;
   const int threads = options.threads;
   s.server.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
-  s.server.set_payload_max_length(options.limits.maxBodyBytes);
+  s.server.set_payload_max_length(std::max(options.limits.maxBodyBytes, options.limits.maxOsimBytes));
   s.server.set_default_headers({{"Content-Security-Policy", kContentSecurityPolicy},
                                 {"X-Content-Type-Options", "nosniff"},
                                 {"Referrer-Policy", "no-referrer"},

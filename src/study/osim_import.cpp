@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <utility>
 
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
@@ -22,14 +23,11 @@ std::string dropImportedPrefix(const std::string& message) {
   return message.substr(rest);
 }
 
-}  // namespace
-
-std::string defaultImportKneePath() { return std::string(SWINGSIM_SOURCE_DIR) + "/models/damping-table-default.yaml"; }
-
-ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions o, const std::string& folder) {
+// The participant of `model` (read from `label`) as YAML text, checked by the loader.
+ImportedParticipantYaml formatImported(const OsimModel& model, const std::string& label, OsimImportOptions o, const std::string& folder) {
   o.kneeModelPath = std::filesystem::absolute(o.kneeModelPath).lexically_normal().string();
   loadKneeModel(o.kneeModelPath);  // a knee model that does not load is refused before anything is written
-  const OsimParticipant imported = calcOsimParticipant(loadOsimModel(modelPath), o);
+  const OsimParticipant imported = calcOsimParticipant(model, o);
   const std::string text = formatParticipantYaml(imported.participant, folder, imported.provenance);
   // What is written loads as it is: the loader's checks apply here, before any file is
   // written. The model's own checks (io/osim_model_checks.h) come first and name its
@@ -37,10 +35,23 @@ ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, Osim
   try {
     parseParticipant(text, folder + "/" + kImportedName);
   } catch (const InputError& e) {
-    throw InputError(modelPath + ": the participant imported from it is refused: " + dropImportedPrefix(e.what()) +
+    throw InputError(label + ": the participant imported from it is refused: " + dropImportedPrefix(e.what()) +
                      " (in the participant YAML, not written)");
   }
   return {text, imported.participant.name};
+}
+
+}  // namespace
+
+std::string defaultImportKneePath() { return std::string(SWINGSIM_SOURCE_DIR) + "/models/damping-table-default.yaml"; }
+
+ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions o, const std::string& folder) {
+  return formatImported(loadOsimModel(modelPath), modelPath, std::move(o), folder);
+}
+
+ImportedParticipantYaml importOsimParticipantText(const std::string& modelText, const std::string& label, OsimImportOptions o,
+                                                  const std::string& folder) {
+  return formatImported(parseOsimModel(modelText, label), label, std::move(o), folder);
 }
 
 }  // namespace swingsim

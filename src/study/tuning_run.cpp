@@ -11,64 +11,9 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "report/tuning_report.h"
-#include "swing/knee_setup.h"
+#include "study/tuning_model.h"
 
 namespace swingsim {
-namespace {
-
-// The knee model, lowering and added mass at knob values.
-struct TunedSetting {
-  KneeModel knee;
-  double lowering = 0;
-  AddedMass added;
-};
-
-class TuningModel {
- public:
-  explicit TuningModel(const TuningStudy& s)
-      : study_(s), participant_(loadParticipant(s.participantPath)), knobs_(s.kneeModelPath), base_(loadKneeModel(s.kneeModelPath)) {
-    for (const TuningKnob& k : s.knobs)
-      if (k.key != kLoweringKnob && k.key != kAddedMassKnob && k.key != kAddedMassDistanceKnob) kneeKeys_.push_back(k.key);
-  }
-  TunedSetting at(const std::vector<double>& values) const {
-    TunedSetting t;
-    t.lowering = study_.lowering;
-    t.added = study_.added;
-    std::vector<double> kneeValues;
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      const std::string& key = study_.knobs[i].key;
-      if (key == kLoweringKnob) t.lowering = values[i];
-      else if (key == kAddedMassKnob) t.added.mass = values[i];
-      else if (key == kAddedMassDistanceKnob) t.added.distanceBelowKnee = values[i];
-      else kneeValues.push_back(values[i]);
-    }
-    t.knee = kneeKeys_.empty() ? base_ : knobs_.make(kneeKeys_, kneeValues);
-    return t;
-  }
-  SwingResult simulate(const std::vector<double>& values, const SwingOptions& options) const {
-    const TunedSetting t = at(values);
-    return simulateSwing(makeSwingSetup(participant_, t.knee, t.lowering, t.added), options);
-  }
-  const Participant& participant() const { return participant_; }
-
- private:
-  const TuningStudy& study_;
-  Participant participant_;
-  KneeModelKnobs knobs_;
-  KneeModel base_;
-  std::vector<std::string> kneeKeys_;
-};
-
-// simulate's options: the default integrator and the energy bookkeeping it turns on, so every
-// swing of the tuning is the one `swingsim simulate` gives for the same files (the bookkeeping's
-// extra states move the integrator's steps: without it P1's swing time differs by ~4e-5 s).
-SwingOptions simulateOptions() {
-  SwingOptions o;
-  o.trackImpactEnergy = true;
-  return o;
-}
-
-}  // namespace
 
 TuningReportInputs makeTuningReportInputs(const TuningRun& run, const std::string& kneeFile) {
   TuningReportInputs in;
@@ -88,7 +33,7 @@ TuningReportInputs makeTuningReportInputs(const TuningRun& run, const std::strin
 
 TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& control) {
   const auto start = std::chrono::steady_clock::now();
-  const TuningModel model(study);
+  const TuningModel model(loadParticipant(study.participantPath), study.kneeModelPath, study.knobs, study.lowering, study.added);
   volatile bool localStop = false;
   volatile bool* stop = control.stop != nullptr ? control.stop : &localStop;
   std::atomic<long> swings{0};
@@ -99,7 +44,7 @@ TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& co
       *stop = true;
       throw RunError("stopped");
     }
-    return model.simulate(x, simulateOptions());
+    return model.simulate(x, makeTuningSwingOptions());
   };
   ProgressReporter progress("tune " + study.name, "start points");
   TuningSettings settings = study.settings;

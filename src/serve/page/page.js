@@ -210,6 +210,7 @@ async function loadParticipant() {
   state.yaml = { participant: answer.json.participant_yaml, knee: answer.json.knee_yaml, name: answer.json.name };
   buildForm(answer.json.fields);
   buildKneeStates(answer.json.knee_states);
+  buildTuneKnobs();
   $('knee').value = answer.json.knee_model;
   $('lowering').max = Math.min(0.2, Math.floor(answer.json.max_lowering_m * 200) / 200);
   simulateNow();
@@ -222,13 +223,14 @@ async function loadKnee() {
   const answer = await post('api/participant', legRequest());
   if (answer.status !== 200) { showNoSwing(answer.json); return; }
   buildKneeStates(answer.json.knee_states);
+  buildTuneKnobs();
   state.inputTime = performance.now();
   simulateNow();
 }
 
-function download(name, text) {
+function download(name, text, type = 'application/yaml') {
   const link = document.createElement('a');
-  link.href = URL.createObjectURL(new Blob([text], { type: 'application/yaml' }));
+  link.href = URL.createObjectURL(new Blob([text], { type }));
   link.download = name;
   link.click();
   URL.revokeObjectURL(link.href);
@@ -253,8 +255,89 @@ async function runSweep() {
       `; symmetry with the sound limb (${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s) at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm` :
       `; the sound limb's ${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s is not reached (closest at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm)`;
   }
+  if (Number($('mass').value) > 0) text += ' (the sweep is of the leg without the added mass)';
   $('sweep-summary').textContent = text;
   $('sweep-figure').innerHTML = s.figure_svg;
+}
+
+// An OpenSim model made a participant by import-osim's sequence; the page then holds it as an upload.
+async function importOsim() {
+  const file = $('osim-upload').files[0];
+  if (!file) return;
+  $('export-status').textContent = `importing ${file.name}...`;
+  const answer = await post('api/import_osim', {
+    osim_text: await file.text(), file_name: file.name, side: $('osim-side').value, knee: $('knee').value || undefined,
+  });
+  $('export-status').textContent = '';
+  if (answer.status !== 200) { showError(answer.json); return; }
+  state.participantYaml = answer.json.participant_yaml;
+  $('upload').value = '';
+  await loadParticipant();
+  $('export-status').textContent = `imported ${answer.json.name} from ${file.name}: its hip moment is the project's default, an assumption`;
+}
+
+async function exportOsim() {
+  const answer = await post('api/export_osim', { ...legRequest(), side: $('osim-side').value });
+  if (answer.status !== 200) { showError(answer.json); return; }
+  download(answer.json.osim_file_name, answer.json.osim_text, 'application/xml');
+  download(answer.json.sto_file_name, answer.json.sto_text, 'text/plain');
+  $('export-status').textContent = `${answer.json.osim_file_name} and ${answer.json.sto_file_name}: in OpenSim, File > Open Model, then File > Load Motion`;
+}
+
+async function exportReport() {
+  $('export-status').textContent = 'sweeping for the report...';
+  const answer = await post('api/report', legRequest());
+  if (answer.status !== 200) { $('export-status').textContent = ''; showError(answer.json); return; }
+  download(answer.json.file_name, answer.json.html, 'text/html');
+  $('export-status').textContent = `${answer.json.file_name}: the sweep of this leg (without the added mass)`;
+}
+
+// The knobs the tuning may move: the sliders of the lowering, model_scale and the states' damping.
+function tunableSliders() {
+  return [$('lowering'), $('scale'), ...document.querySelectorAll('#knee-states input[type=range]'), $('mass'), $('position')];
+}
+const kTuneKeys = {
+  lowering: 'lowering_m', scale: 'knee_effects.model_scale', mass: 'added_mass_kg', position: 'added_mass_below_knee_m',
+};
+
+function buildTuneKnobs() {
+  const box = $('tune-knobs');
+  box.textContent = '';
+  for (const slider of tunableSliders()) {
+    const row = document.createElement('label');
+    row.className = 'tune-knob';
+    row.innerHTML = '<input type="checkbox"> <span></span>';
+    row.querySelector('input').value = slider.id;
+    row.querySelector('input').checked = slider.id === 'lowering' || slider.id === 'scale';
+    row.querySelector('span').textContent = document.querySelector(`label[for="${slider.id}"]`).textContent;
+    box.append(row);
+  }
+}
+
+async function runTune() {
+  const knobs = [];
+  for (const box of document.querySelectorAll('#tune-knobs input:checked')) {
+    const slider = $(box.value);
+    const key = kTuneKeys[slider.id] || slider.name;
+    knobs.push({ key, min: Number(slider.min), max: Number(slider.max), log_scale: key === 'knee_effects.model_scale' });
+  }
+  $('tune-summary').textContent = 'tuning...';
+  const answer = await post('api/tune', { ...legRequest(), knobs });
+  if (answer.status !== 200) { $('tune-summary').textContent = ''; showError(answer.json); return; }
+  const t = answer.json;
+  const parts = t.knobs.map((k) => `${k.key} ${Number(k.value).toPrecision(4)}${k.at_range_end ? ' (at a range end)' : ''}`);
+  const time = t.targets.find((x) => x.quantity === 'swing_time_s');
+  const unmet = t.targets.filter((x) => !x.met).map((x) => x.quantity);
+  $('tune-summary').textContent = `${t.feasible ? '' : 'NO SETTING MEETS THE LIMITS; closest: '}${parts.join(', ')}: swing ` +
+    `${time.value.toFixed(4)} s${unmet.length ? `; not met: ${unmet.join(', ')}` : '; every target met'} ` +
+    `(${t.evaluations} swings, ${t.seconds.toFixed(1)} s). ${t.identifiable ? '' : t.identifiability}`;
+  for (const k of t.knobs) {
+    const slider = tunableSliders().find((s) => (kTuneKeys[s.id] || s.name) === k.key);
+    if (!slider) continue;
+    slider.step = 'any';  // the tuned value itself, not the nearest step
+    slider.value = k.value;
+    slider.dispatchEvent(new Event('input'));
+  }
 }
 
 function bindSlider(id, digits, unit) {
@@ -290,6 +373,10 @@ async function start() {
   $('export-participant').addEventListener('click', () => exportYaml('participant'));
   $('export-knee').addEventListener('click', () => exportYaml('knee'));
   $('sweep-button').addEventListener('click', runSweep);
+  $('osim-upload').addEventListener('change', importOsim);
+  $('export-osim').addEventListener('click', exportOsim);
+  $('export-report').addEventListener('click', exportReport);
+  $('tune-button').addEventListener('click', runTune);
   await loadParticipant();
 }
 

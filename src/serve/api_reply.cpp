@@ -1,0 +1,38 @@
+#include "serve/api_reply.h"
+
+#include "core/input_error.h"
+#include "serve/leg_request.h"
+
+namespace swingsim {
+namespace {
+
+ApiReply replyError(int status, const std::string& message) {
+  Json error = {{"error", message}};
+  if (status == 400) {
+    const std::string key = findErrorKey(message);
+    error["key"] = key;
+    const auto at = message.find(key + ": ");
+    error["message"] = key.empty() || at == std::string::npos ? message : message.substr(at);
+  }
+  return {status, error.dump()};
+}
+
+}  // namespace
+
+ApiReply answerOrError(const std::function<Json()>& answer) {
+  try {
+    return {200, answer().dump()};
+  } catch (const Json::parse_error&) {
+    return replyError(400, "request: expected a JSON object");
+  } catch (const InputError& e) {
+    return replyError(400, e.what());
+  } catch (const RunError& e) {
+    return replyError(422, e.what());
+  } catch (const std::exception& e) {
+    return replyError(500, e.what());
+  }
+}
+
+Json readRequestBody(const std::string& body) { return Json::parse(body.empty() ? "{}" : body); }
+
+}  // namespace swingsim

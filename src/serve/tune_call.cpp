@@ -1,0 +1,152 @@
+// swingsim serve's tuning (serve/serve_api.h): the page's knobs moved at once toward the
+// sound limb's swing time within a peak-flexion window and a toe-clearance limit, by the
+// same tuning `swingsim tune` runs (sweep/knee_tuning.h, study/tuning_model.h), under the
+// server's budget.
+#include <chrono>
+#include <cmath>
+
+#include "core/input_error.h"
+#include "core/units.h"
+#include "serve/serve_api.h"
+#include "study/tuning_model.h"
+#include "study/tuning_study.h"
+
+namespace swingsim {
+namespace {
+
+constexpr int kMaxTuneKnobs = 4;
+constexpr int kTuneStartPoints = 24;     // as swingsim tune's default
+constexpr double kTuneMaxSeconds = 10;   // s of polish, the budget of one request
+
+// A knob's key: the lowering, the added mass or its position, or a number of the knee file
+// (KneeModelKnobs::checkKey: its value then gets the knee loader's checks).
+void checkTuneKnobKey(const Json& knob, const KneeModelKnobs& knee) {
+  const std::string key = knob.is_object() && knob.contains("key") && knob["key"].is_string() ? knob["key"].get<std::string>() : "";
+  if (key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob) return;
+  const std::string problem = key.empty() ? "no key" : knee.checkKey(key);
+  if (!problem.empty())
+    throw InputError("knobs: expected {key, min, max} with a key of lowering_m, added_mass_kg, added_mass_below_knee_m or a "
+                     "number of the knee model file, e.g. knee_effects.model_scale (got " + knob.dump() + ": " + problem + ")");
+}
+
+double readFinite(const Json& v, const std::string& key) {
+  if (!v.is_number() || !std::isfinite(v.get<double>())) throw InputError(key + ": expected a number (got " + v.dump() + ")");
+  return v.get<double>();
+}
+
+// "knobs": [{"key", "min", "max", "log_scale"}], 1 to kMaxTuneKnobs of them.
+std::vector<TuningKnob> readTuneKnobs(const Json& body, const KneeModelKnobs& knee) {
+  if (!body.contains("knobs") || !body["knobs"].is_array() || body["knobs"].empty() || body["knobs"].size() > kMaxTuneKnobs)
+    throw InputError("knobs: expected 1 to " + std::to_string(kMaxTuneKnobs) + " knobs, each {key, min, max} (got " +
+                     (body.contains("knobs") ? body["knobs"].dump() : std::string("none")) + ")");
+  std::vector<TuningKnob> knobs;
+  for (const Json& k : body["knobs"]) {
+    checkTuneKnobKey(k, knee);
+    TuningKnob knob;
+    knob.key = k["key"].get<std::string>();
+    knob.lower = readFinite(k.value("min", Json()), knob.key + ".min");
+    knob.upper = readFinite(k.value("max", Json()), knob.key + ".max");
+    knob.logScale = k.value("log_scale", false);
+    if (!(knob.lower < knob.upper)) throw InputError(knob.key + ": expected min below max (got " + k.dump() + ")");
+    if (knob.logScale && !(knob.lower > 0)) throw InputError(knob.key + ": expected min > 0 on a log scale (got " + k.dump() + ")");
+    knobs.push_back(knob);
+  }
+  return knobs;
+}
+
+// The swing time (the sound limb's unless given), and the flexion window and clearance limit
+// as hard limits (defaults: studies/tune-p1-damping.yaml's assumptions, docs/serve.md).
+std::vector<TuningTarget> readTuneTargets(const Json& body, const Participant& p) {
+  const Json targets = body.value("targets", Json::object());
+  if (!targets.is_object()) throw InputError("targets: expected a map (got " + targets.dump() + ")");
+  TuningTarget time;
+  const Json given = targets.value("swing_time_s", Json());
+  if (given.is_null() && !p.soundLimbSwingTime)
+    throw InputError("sound_limb_swing_time_s: expected the sound limb's swing time, s, to tune toward (got none: give it in "
+                     "the form, or a swing_time_s target)");
+  time.lower = time.upper = given.is_null() ? *p.soundLimbSwingTime : readFinite(given, "swing_time_s");
+  if (!(time.lower > 0 && time.lower < 3)) throw InputError("swing_time_s: expected 0 to 3 s (got " + formatNumber(time.lower) + ")");
+  time.scale = tuningTargetScale(TuningQuantity::kSwingTime);
+  TuningTarget flexion{TuningQuantity::kPeakKneeFlexion, 60 * kDegToRad, 90 * kDegToRad, true, 1,
+                       tuningTargetScale(TuningQuantity::kPeakKneeFlexion)};
+  if (targets.contains("peak_knee_flexion_deg")) {
+    const Json& w = targets["peak_knee_flexion_deg"];
+    if (!w.is_array() || w.size() != 2) throw InputError("peak_knee_flexion_deg: expected [min, max] in deg (got " + w.dump() + ")");
+    flexion.lower = readFinite(w[0], "peak_knee_flexion_deg") * kDegToRad;
+    flexion.upper = readFinite(w[1], "peak_knee_flexion_deg") * kDegToRad;
+  }
+  TuningTarget clearance{TuningQuantity::kMinToeClearance, 0.08, std::numeric_limits<double>::infinity(), true, 1,
+                         tuningTargetScale(TuningQuantity::kMinToeClearance)};
+  if (targets.contains("min_toe_clearance_m")) clearance.lower = readFinite(targets["min_toe_clearance_m"], "min_toe_clearance_m");
+  return {time, flexion, clearance};
+}
+
+// Each knob at both ends of its range (the others at their lower ends) through the knee
+// model's loader and the leg's geometry, as a tuning study's knobs are checked: a range the
+// leg or the knee file refuses is a 400 naming the knob, not a tuning of failed swings.
+void checkKnobEnds(const TuningModel& model, const std::vector<TuningKnob>& knobs) {
+  const double maxLowering = calcMaxLowering(model.participant());
+  std::vector<double> values;
+  for (const TuningKnob& k : knobs) values.push_back(k.lower);
+  for (std::size_t i = 0; i < knobs.size(); ++i) {
+    const TuningKnob& k = knobs[i];
+    if (k.key == kLoweringKnob && !(k.lower >= 0 && k.upper <= maxLowering))
+      throw InputError(k.key + ": expected a range within 0 to " + formatNumber(maxLowering) + " m, this leg's largest lowering (got " +
+                       formatNumber(k.lower) + " to " + formatNumber(k.upper) + ")");
+    for (const double end : {k.lower, k.upper}) {
+      std::vector<double> at = values;
+      at[i] = end;
+      try {
+        model.at(at);
+      } catch (const InputError& e) {
+        throw InputError(k.key + ": expected a range the knee model accepts (got " + formatNumber(end) + ": " + e.what() + ")");
+      }
+    }
+  }
+}
+
+// A target's value in the page's units (s, deg, m, deg/s).
+double toPageUnits(TuningQuantity q, double v) {
+  return q == TuningQuantity::kPeakKneeFlexion || q == TuningQuantity::kMaxStopImpactSpeed ? v * kRadToDeg : v;
+}
+
+Json makeTuneJson(const TuningResult& r, double seconds) {
+  Json knobs = Json::array(), targets = Json::array();
+  for (std::size_t k = 0; k < r.knobs.size(); ++k)
+    knobs.push_back({{"key", r.knobs[k].key},
+                     {"value", k < r.best.knobs.size() ? Json(r.best.knobs[k]) : Json(nullptr)},
+                     {"at_range_end", k < r.knobAtBound.size() && r.knobAtBound[k]}});
+  for (const TargetOutcome& t : r.targets)
+    targets.push_back({{"quantity", tuningQuantityKey(t.target.quantity)},
+                       {"value", toPageUnits(t.target.quantity, t.value)},
+                       {"hard", t.target.hard},
+                       {"met", t.met}});
+  return {{"knobs", knobs}, {"targets", targets}, {"feasible", r.feasible}, {"identifiable", r.identifiable},
+          {"identifiability", r.identifiability}, {"evaluations", r.evaluations}, {"seconds", seconds},
+          {"swing_time_s", std::isfinite(r.best.swingTime) ? Json(r.best.swingTime) : Json(nullptr)}};
+}
+
+}  // namespace
+
+ApiReply ServeApi::tune(const std::string& body) const {
+  return answerOrError([&] {
+    const auto start = std::chrono::steady_clock::now();
+    const Json json = readRequestBody(body);
+    const LegRequest request = readLegRequest(json);
+    Leg leg = loadLeg(request, files_, limits_);
+    const std::vector<TuningKnob> knobs = readTuneKnobs(json, KneeModelKnobs(leg.knee.path));
+    const std::vector<TuningTarget> targets = readTuneTargets(json, leg.participant);
+    const TuningModel model(std::move(leg.participant), leg.knee.path, knobs, request.lowering, request.added, request.kneeSettings);
+    checkKnobEnds(model, knobs);
+    SwingOptions options = makeTuningSwingOptions();
+    options.maxWallSeconds = limits_.maxSwingWallSeconds;
+    TuningSettings settings;
+    settings.startPoints = kTuneStartPoints;
+    settings.jobs = 1;  // one request, one thread: the server's pool serves the others
+    settings.maxSeconds = kTuneMaxSeconds;
+    const TuningResult r = runKneeTuning(knobs, targets, [&](const std::vector<double>& x) { return model.simulate(x, options); }, settings);
+    return makeTuneJson(r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  });
+}
+
+}  // namespace swingsim

@@ -1,0 +1,68 @@
+#include "study/tuning_model.h"
+
+#include "io/knee_model_loader.h"
+#include "study/tuning_study.h"
+#include "swing/knee_setup.h"
+
+namespace swingsim {
+namespace {
+
+bool isLegKnob(const std::string& key) { return key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob; }
+
+// The fixed settings' keys and values, then the knee knobs' (a fixed key that is also a knob is left out).
+std::pair<std::vector<std::string>, std::vector<double>> listFixedSettings(const std::vector<std::pair<std::string, double>>& fixed,
+                                                                           const std::vector<TuningKnob>& knobs) {
+  std::vector<std::string> keys;
+  std::vector<double> values;
+  for (const auto& [key, value] : fixed) {
+    bool isKnob = false;
+    for (const TuningKnob& k : knobs) isKnob = isKnob || k.key == key;
+    if (isKnob) continue;
+    keys.push_back(key);
+    values.push_back(value);
+  }
+  return {keys, values};
+}
+
+}  // namespace
+
+TuningModel::TuningModel(Participant participant, const std::string& kneePath, std::vector<TuningKnob> knobs, double lowering,
+                         AddedMass added, std::vector<std::pair<std::string, double>> fixedKneeSettings)
+    : participant_(std::move(participant)), kneeFile_(kneePath), knobs_(std::move(knobs)), lowering_(lowering), added_(added),
+      fixed_(std::move(fixedKneeSettings)) {
+  const auto [keys, values] = listFixedSettings(fixed_, knobs_);
+  base_ = keys.empty() ? loadKneeModel(kneePath) : kneeFile_.make(keys, values);
+}
+
+TunedSetting TuningModel::at(const std::vector<double>& values) const {
+  TunedSetting t;
+  t.lowering = lowering_;
+  t.added = added_;
+  auto [keys, kneeValues] = listFixedSettings(fixed_, knobs_);
+  bool kneeKnob = false;
+  for (std::size_t i = 0; i < values.size() && i < knobs_.size(); ++i) {
+    const std::string& key = knobs_[i].key;
+    if (key == kLoweringKnob) t.lowering = values[i];
+    else if (key == kAddedMassKnob) t.added.mass = values[i];
+    else if (key == kAddedMassDistanceKnob) t.added.distanceBelowKnee = values[i];
+    if (isLegKnob(key)) continue;
+    keys.push_back(key);
+    kneeValues.push_back(values[i]);
+    kneeKnob = true;
+  }
+  t.knee = kneeKnob ? kneeFile_.make(keys, kneeValues) : base_;
+  return t;
+}
+
+SwingResult TuningModel::simulate(const std::vector<double>& values, const SwingOptions& options) const {
+  const TunedSetting t = at(values);
+  return simulateSwing(makeSwingSetup(participant_, t.knee, t.lowering, t.added), options);
+}
+
+SwingOptions makeTuningSwingOptions() {
+  SwingOptions o;
+  o.trackImpactEnergy = true;
+  return o;
+}
+
+}  // namespace swingsim

@@ -1,0 +1,185 @@
+// swingsim serve's export, import, report and tuning calls (serve/serve_api.h), without
+// HTTP: each gives what the command line's own sequence gives for the same leg (export-osim
+// and simulate's .sto, import-osim, sweep's report.html, swingsim tune), and refuses bad
+// input by the key the page shows it beside.
+#include "serve/serve_api.h"
+
+#include <unistd.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/output_files.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "io/trajectory_writer.h"
+#include "study/osim_export.h"
+#include "study/osim_import.h"
+#include "study/tuning_run.h"
+#include "study/tuning_study.h"
+#include "swing/knee_setup.h"
+
+namespace swingsim {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+const ServeApi& api() {
+  static const ServeApi a(ShippedFiles(SWINGSIM_SOURCE_DIR), ServeLimits{});
+  return a;
+}
+
+Json call(ApiReply (ServeApi::*f)(const std::string&) const, const Json& body, int expectedStatus = 200) {
+  const ApiReply r = (api().*f)(body.dump());
+  EXPECT_EQ(r.status, expectedStatus) << r.body;
+  return Json::parse(r.body);
+}
+
+const std::string kSource = SWINGSIM_SOURCE_DIR;
+const std::string kSubject01 = kSource + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim";
+
+TEST(ServeExportOsim, IsExportOsimsModelAndSimulatesSto) {
+  const Json j = call(&ServeApi::exportOsim, {{"participant", "p1"}, {"lowering_m", 0.05}, {"side", "l"},
+                                              {"added_mass_kg", 0.5}, {"added_mass_position_m", 0.2}});
+  const Participant p = loadParticipant(kSource + "/participants/p1.yaml");
+  const KneeModel knee = loadKneeModel(p.kneeModelPath);
+  const AddedMass added{0.5, 0.2};
+  const std::string stem = makeTrajectoryFileStem(p.name, 0.05);
+  EXPECT_EQ(j["osim_file_name"], stem + ".osim");
+  EXPECT_EQ(j["osim_text"], formatParticipantOsim(p, knee, OsimExportOptions{'l', 0.05, added}, stem + ".sto"));
+  SwingOptions options;
+  options.trackImpactEnergy = true;  // simulate's
+  const SwingResult r = simulateSwing(makeSwingSetup(p, knee, 0.05, added), options);
+  EXPECT_EQ(j["sto_text"], formatTrajectorySto(r.trajectory, stem, 'l'));
+  EXPECT_THAT(j["sto_text"].get<std::string>(), HasSubstr("knee_angle_l"));
+}
+
+TEST(ServeExportOsim, RefusesAWrongSide) {
+  EXPECT_EQ(call(&ServeApi::exportOsim, {{"participant", "p1"}, {"side", "x"}}, 400)["key"], "side");
+}
+
+TEST(ServeImportOsim, IsImportOsimsParticipantAndLoadsAsAnUpload) {
+  const Json j = call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"file_name", "/home/a/subject01.osim"}, {"side", "l"}});
+  OsimImportOptions o;
+  o.side = 'l';
+  o.kneeModelPath = kSource + "/models/damping-table-default.yaml";
+  const ImportedParticipantYaml cli = importOsimParticipant(kSubject01, o, kSource + "/participants");
+  // The same participant; only the header's file name differs (the upload's name, no folder).
+  const auto dropComments = [](const std::string& text) {
+    std::string out, line;
+    std::istringstream in(text);
+    while (std::getline(in, line))
+      if (line.rfind("#", 0) != 0) out += line + "\n";
+    return out;
+  };
+  std::string expected = dropComments(cli.text);
+  const std::string file = "gait2354_subject01_simbody.osim";
+  expected.replace(expected.find(file), file.size(), "subject01.osim");
+  EXPECT_EQ(dropComments(j["participant_yaml"]), expected);
+  EXPECT_EQ(j["name"], cli.name);
+  EXPECT_THAT(j["participant_yaml"].get<std::string>(), HasSubstr("model subject01.osim"));
+  EXPECT_THAT(j["participant_yaml"].get<std::string>(), Not(HasSubstr("/home/a")));
+  const Json described = call(&ServeApi::describeParticipant, {{"participant_yaml", j["participant_yaml"]}});
+  EXPECT_EQ(described["knee_model"], "damping-table-default");
+}
+
+TEST(ServeImportOsim, RefusesWhatIsNotAModelByItsKey) {
+  const Json notXml = call(&ServeApi::importOsim, {{"osim_text", "<OpenSimDocument"}, {"file_name", "bad.osim"}}, 400);
+  EXPECT_THAT(notXml["error"].get<std::string>(), HasSubstr("bad.osim:1:"));
+  EXPECT_EQ(call(&ServeApi::importOsim, {{"file_name", "x.osim"}}, 400)["key"], "osim_text");
+  EXPECT_EQ(call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"side", "both"}}, 400)["key"], "side");
+  EXPECT_EQ(call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"knee", "../../etc/passwd"}}, 400)["key"], "knee");
+  EXPECT_EQ(call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"shank_mass_kg", -1}}, 400)["key"], "shank_mass_kg");
+}
+
+TEST(ServeReport, IsTheSweepsSelfContainedReport) {
+  const Json request = {{"participant", "p1"}, {"lowering_step_m", 0.05}};
+  const Json j = call(&ServeApi::report, request);
+  const Json sweep = call(&ServeApi::sweep, request);
+  EXPECT_EQ(j["file_name"], "P1-sweep-report.html");
+  const std::string html = j["html"];
+  EXPECT_THAT(html, HasSubstr("<svg"));
+  EXPECT_THAT(html, HasSubstr("P1"));
+  EXPECT_THAT(html, HasSubstr("without a study file (swingsim serve"));
+  EXPECT_THAT(html, Not(HasSubstr("<script")));
+  EXPECT_THAT(html, Not(HasSubstr("src=\"http")));
+  char fastest[32];
+  std::snprintf(fastest, sizeof fastest, "%.4f", sweep["fastest_swing_time_s"].get<double>());
+  EXPECT_THAT(html, HasSubstr(fastest));
+}
+
+// P1's damping-table knee tuned over the lowering and model_scale, as a `kind: knee-tuning`
+// study with the same knobs and targets would be by `swingsim tune`.
+const Json kTuneRequest = {{"participant", "p1"},
+                           {"knobs", {{{"key", "lowering_m"}, {"min", 0}, {"max", 0.06}},
+                                      {{"key", "knee_effects.model_scale"}, {"min", 0.5}, {"max", 8}, {"log_scale", true}}}}};
+
+TEST(ServeTune, IsSwingsimTunesResultForTheSameKnobs) {
+  const Json j = call(&ServeApi::tune, kTuneRequest);
+  const auto dir = std::filesystem::temp_directory_path() / ("ServeTune-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string study = (dir / "tune.yaml").string();
+  std::ofstream(study) << "kind: knee-tuning\nparticipant: " << kSource << "/participants/p1.yaml\nknee_model: " << kSource
+                       << "/models/damping-table-default.yaml\nknobs:\n  - {key: lowering_m, range: [0, 0.06]}\n"
+                       << "  - {key: knee_effects.model_scale, range: [0.5, 8], log_scale: true}\n"
+                       << "targets:\n  swing_time_s: {value: sound_limb, weight: 1}\n"
+                       << "  peak_knee_flexion_deg: {min: 60, max: 90, hard: true}\n  min_toe_clearance_m: {min: 0.08, hard: true}\n";
+  SweepRunControl control;
+  const TuningRun cli = runTuningStudy(loadTuningStudy(study), 1, control);
+  ASSERT_EQ(j["knobs"].size(), 2u);
+  EXPECT_EQ(j["knobs"][0]["value"].get<double>(), cli.result.best.knobs[0]);
+  EXPECT_EQ(j["knobs"][1]["value"].get<double>(), cli.result.best.knobs[1]);
+  EXPECT_EQ(j["swing_time_s"].get<double>(), cli.result.best.swingTime);
+  EXPECT_EQ(j["feasible"], cli.result.feasible);
+}
+
+TEST(ServeTune, ItsSettingSwingsAsTheSimulateCallShowsIt) {
+  const Json j = call(&ServeApi::tune, kTuneRequest);
+  const Json before = call(&ServeApi::simulate, {{"participant", "p1"}});
+  const Json after = call(&ServeApi::simulate, {{"participant", "p1"},
+                                                {"lowering_m", j["knobs"][0]["value"]},
+                                                {"knee_settings", {{"knee_effects.model_scale", j["knobs"][1]["value"]}}}});
+  EXPECT_EQ(after["swing_time_s"].get<double>(), j["swing_time_s"].get<double>());
+  const double sound = 0.499;  // P1's sound_limb_swing_time_s (participants/p1.yaml, Burkett 2004 Table 4)
+  EXPECT_LT(std::abs(after["swing_time_s"].get<double>() - sound), std::abs(before["swing_time_s"].get<double>() - sound));
+  for (const Json& t : j["targets"])
+    if (t["hard"].get<bool>()) EXPECT_TRUE(t["met"].get<bool>()) << t.dump();
+}
+
+TEST(ServeTune, RefusesBadKnobsAndTargetsByTheirKey) {
+  const auto refuse = [](Json body) { return call(&ServeApi::tune, body, 400)["key"].get<std::string>(); };
+  Json none = kTuneRequest;
+  none.erase("knobs");
+  EXPECT_EQ(refuse(none), "knobs");
+  Json five = kTuneRequest;
+  for (int k = 0; k < 3; ++k) five["knobs"].push_back(five["knobs"][0]);
+  EXPECT_EQ(refuse(five), "knobs");
+  Json traversal = kTuneRequest;
+  traversal["knobs"][0]["key"] = "../../etc/passwd";
+  EXPECT_EQ(refuse(traversal), "knobs");
+  Json far = kTuneRequest;
+  far["knobs"][0]["max"] = 5.0;
+  EXPECT_EQ(refuse(far), "lowering_m");
+  Json logZero = kTuneRequest;
+  logZero["knobs"][1]["min"] = 0;
+  EXPECT_EQ(refuse(logZero), "knee_effects.model_scale");
+  Json badScale = kTuneRequest;
+  badScale["knobs"][1]["min"] = -1;
+  badScale["knobs"][1]["log_scale"] = false;
+  EXPECT_EQ(refuse(badScale), "knee_effects.model_scale");
+  Json noSound = kTuneRequest;
+  noSound["edits"] = {{"sound_limb_swing_time_s", ""}};
+  std::string p1 = readFile(kSource + "/participants/p1.yaml");
+  p1 = p1.substr(0, p1.find("sound_limb_swing_time_s"));
+  noSound.erase("edits");
+  noSound.erase("participant");
+  noSound["participant_yaml"] = p1;
+  EXPECT_EQ(refuse(noSound), "sound_limb_swing_time_s");
+}
+
+}  // namespace
+}  // namespace swingsim
