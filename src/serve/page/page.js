@@ -207,6 +207,7 @@ async function loadParticipant() {
   if (answer.status !== 200) { showError(answer.json); return; }
   state.edits = {};
   state.knee = null;
+  for (const id of ['sweep-summary', 'sweep-figure', 'tune-summary']) $(id).textContent = '';  // another leg's
   state.yaml = { participant: answer.json.participant_yaml, knee: answer.json.knee_yaml, name: answer.json.name };
   buildForm(answer.json.fields);
   buildKneeStates(answer.json.knee_states);
@@ -325,7 +326,8 @@ async function runTune() {
   const answer = await post('api/tune', { ...legRequest(), knobs });
   if (answer.status !== 200) { $('tune-summary').textContent = ''; showError(answer.json); return; }
   const t = answer.json;
-  const parts = t.knobs.map((k) => `${k.key} ${Number(k.value).toPrecision(4)}${k.at_range_end ? ' (at a range end)' : ''}`);
+  const value = (k) => (k.key === 'lowering_m' ? `${(k.value * 1000).toFixed(1)} mm` : `${Number(k.value.toPrecision(4))}`);
+  const parts = t.knobs.map((k) => `${k.key} ${value(k)}${k.at_range_end ? ' (at a range end)' : ''}`);
   const time = t.targets.find((x) => x.quantity === 'swing_time_s');
   const unmet = t.targets.filter((x) => !x.met).map((x) => x.quantity);
   $('tune-summary').textContent = `${t.feasible ? '' : 'NO SETTING MEETS THE LIMITS; closest: '}${parts.join(', ')}: swing ` +
