@@ -82,6 +82,13 @@ KneeModelKnobs::KneeModelKnobs(const std::string& path) : path_(path) {
   text_ = readText(path);
 }
 
+KneeModelKnobs KneeModelKnobs::fromText(const std::string& text, const std::string& path) {
+  parseKneeModel(text, path);  // the text itself must load: its own messages come first
+  return KneeModelKnobs(path, text);
+}
+
+KneeModel KneeModelKnobs::load() const { return parseKneeModel(text_, path_); }
+
 std::string KneeModelKnobs::checkKey(const std::string& key) const {
   YAML::Node root = YAML::Load(text_);
   YAML::Node node;

@@ -5,6 +5,7 @@
 // through the knee model loader, so a knob gets every check the file's own value gets and
 // works for every knee kind without knowing it.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/knee_model.h"
@@ -15,6 +16,12 @@ class KneeModelKnobs {
  public:
   /// Reads the model file (checked by loading it once). Throws InputError.
   explicit KneeModelKnobs(const std::string& path);
+  /// A knee model from its YAML text (an upload), `path` naming it in messages and as the
+  /// model's path (relative paths in it resolve against its folder). Throws InputError.
+  static KneeModelKnobs fromText(const std::string& text, const std::string& path);
+
+  /// The model as the file gives it, no key set.
+  KneeModel load() const;
 
   /// "" if `key` can be a knob: it names a number in the file, or an absent key inside the
   /// file's maps (the loader decides whether it knows it, when a value is set); else what
@@ -30,6 +37,7 @@ class KneeModelKnobs {
   const std::string& path() const { return path_; }
 
  private:
+  KneeModelKnobs(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {}
   std::string path_, text_;
 };
 

@@ -81,18 +81,30 @@ YAML::Node findMapNode(YAML::Node root, const std::string& key) {
   return node;
 }
 
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+  for (auto at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  return text;
+}
+
 std::string formatShippedKneeList(const ShippedFiles& files) {
   std::string list;
   for (const auto& n : files.getKneeNames()) list += (list.empty() ? "" : ", ") + n;
   return list;
 }
 
-// An upload's knee_model as ../models/NAME.yaml of a shipped model, and no measured thigh
-// file: the server reads no path an upload gives. True if knee_model was rewritten to that form.
-bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files) {
+const std::string kUploadedKneeName = "upload-knee.yaml";
+
+// An upload's knee_model as ../models/NAME.yaml of a shipped model (or, with a knee upload,
+// that upload's name), and no measured thigh file: the server reads no path an upload gives.
+// True if knee_model was rewritten.
+bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files, bool kneeUploaded) {
   if (root["thigh_kinematics"])
     throw InputError("thigh_kinematics: expected none in an uploaded participant (swingsim serve reads no file an upload "
                      "names; use drive: hip_moment) (got a thigh_kinematics entry)");
+  if (kneeUploaded) {
+    root["knee_model"] = "../models/" + kUploadedKneeName;  // a name only: the knee comes from the upload's text
+    return true;
+  }
   if (!root["knee_model"] || !root["knee_model"].IsScalar()) return false;  // the loader says what is missing
   std::string name = root["knee_model"].Scalar();
   const std::string prefix = "../models/", suffix = ".yaml";
@@ -101,7 +113,8 @@ bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files) {
     name = name.substr(0, name.size() - suffix.size());
   const auto& names = files.getKneeNames();
   if (std::find(names.begin(), names.end(), name) == names.end())
-    throw InputError("knee_model: expected a shipped knee model by name, one of " + formatShippedKneeList(files) + " (got '" +
+    throw InputError("knee_model: expected a shipped knee model by name, one of " + formatShippedKneeList(files) +
+                     ", or a knee model uploaded with it (got '" +
                      root["knee_model"].Scalar() + "')");
   if (root["knee_model"].Scalar() == prefix + name + suffix) return false;
   root["knee_model"] = prefix + name + suffix;
@@ -122,7 +135,7 @@ Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles
   }
   if (!root.IsMap()) throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
   // The text as given where nothing was changed, so that messages give the upload's own lines.
-  const bool rewritten = uploaded && checkUploadedPaths(root, files);
+  const bool rewritten = uploaded && checkUploadedPaths(root, files, request.kneeYaml.has_value());
   for (const auto& [key, value] : request.edits) findMapNode(root, key) = value;
   YAML::Emitter out;
   out << root;
@@ -130,23 +143,33 @@ Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles
     return parseParticipant(uploaded && !rewritten && request.edits.empty() ? text : std::string(out.c_str()), source);
   } catch (const InputError& e) {
     if (!uploaded) throw;
-    // An upload is upload.yaml to its user: no path of the server's in its messages.
-    std::string message = e.what();
-    for (auto at = message.find(source); at != std::string::npos; at = message.find(source, at))
-      message.replace(at, source.size(), "upload.yaml");
-    throw InputError(message);
+    throw InputError(replaceAll(e.what(), source, "upload.yaml"));  // no path of the server's in an upload's messages
   }
 }
 
-KneeModel loadRequestKnee(const LegRequest& request, const Participant& p, const ShippedFiles& files) {
-  const std::string path = request.knee ? files.findKneePath(*request.knee) : p.kneeModelPath;
+// The knee model file: the request's upload, a shipped one by name, or the participant's.
+KneeModelKnobs loadRequestKneeFile(const LegRequest& request, const Participant& p, const ShippedFiles& files) {
+  if (!request.kneeYaml) return KneeModelKnobs(request.knee ? files.findKneePath(*request.knee) : p.kneeModelPath);
+  try {
+    if (!YAML::Load(*request.kneeYaml).IsMap()) throw InputError("knee_yaml: expected a map of knee model keys (got another YAML document)");
+  } catch (const YAML::Exception& e) {
+    throw InputError("knee_yaml: expected a knee model file in YAML (got a YAML error: " + e.msg + ")");
+  }
+  const std::string path = files.getModelsDir() + "/" + kUploadedKneeName;
+  try {
+    return KneeModelKnobs::fromText(*request.kneeYaml, path);
+  } catch (const InputError& e) {
+    throw InputError(replaceAll(e.what(), path, kUploadedKneeName));
+  }
+}
+
+KneeModel loadRequestKnee(const LegRequest& request, const KneeModelKnobs& knobs) {
   std::vector<std::string> keys;
   std::vector<double> values;
   for (const auto& [key, value] : request.kneeSettings) {
     keys.push_back(key);
     values.push_back(value);
   }
-  const KneeModelKnobs knobs(path);
   for (const auto& key : keys)
     if (const std::string problem = knobs.checkKey(key); !problem.empty()) throw InputError(key + ": " + problem);
   return knobs.make(keys, values);  // the loader's message names the key (its line is the edited tree's)
@@ -175,6 +198,8 @@ LegRequest readLegRequest(const Json& body) {
     throw InputError("participant: expected a shipped participant's name or a participant_yaml upload (got neither)");
   r.edits = readEdits(body);
   r.knee = readText(body, "knee");
+  r.kneeYaml = readText(body, "knee_yaml");
+  if (r.knee && r.kneeYaml) throw InputError("knee_yaml: expected a shipped knee by name or an uploaded knee model, not both (got both)");
   r.kneeSettings = readKneeSettings(body);
   r.lowering = readNumber(body, "lowering_m", 0);
   if (const std::string problem = checkLowering(r.lowering); !problem.empty())
@@ -194,8 +219,9 @@ Leg loadLeg(const LegRequest& request, const ShippedFiles& files, const ServeLim
   if (p.swingEnd.timeLimit > limits.maxSwingTimeLimit)
     throw InputError("swing_end.time_limit_s: expected at most " + formatNumber(limits.maxSwingTimeLimit) +
                      " s on swingsim serve (its simulation budget) (got " + formatNumber(p.swingEnd.timeLimit) + ")");
-  KneeModel knee = loadRequestKnee(request, p, files);
-  return {std::move(p), std::move(knee)};
+  KneeModelKnobs kneeFile = loadRequestKneeFile(request, p, files);
+  KneeModel knee = loadRequestKnee(request, kneeFile);
+  return {std::move(p), std::move(knee), std::move(kneeFile)};
 }
 
 std::string findErrorKey(const std::string& message) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/json_file.h"
+#include "io/knee_model_knobs.h"
 #include "model/knee_model.h"
 #include "model/leg_parameters.h"
 #include "serve/shipped_files.h"
@@ -33,13 +34,14 @@ struct LegRequest {
   std::optional<std::string> participantYaml;   ///< an uploaded participant file's text
   std::vector<std::pair<std::string, std::string>> edits;  ///< editableParticipantKeys() -> the text typed
   std::optional<std::string> knee;              ///< a shipped knee model's name; nullopt: the participant's
+  std::optional<std::string> kneeYaml;          ///< or an uploaded knee model file's text
   std::vector<std::pair<std::string, double>> kneeSettings;  ///< knee model key path -> value (file units)
   double lowering = 0;                          ///< m
   AddedMass added;                              ///< kg at m below the knee
 };
 
 /// Reads a request body: {"participant": NAME | "participant_yaml": TEXT, "edits": {KEY:
-/// VALUE}, "knee": NAME, "knee_settings": {KEY: NUMBER}, "lowering_m", "added_mass_kg",
+/// VALUE}, "knee": NAME | "knee_yaml": TEXT, "knee_settings": {KEY: NUMBER}, "lowering_m", "added_mass_kg",
 /// "added_mass_position_m"}. Throws InputError naming the key for a wrong type or range.
 LegRequest readLegRequest(const Json& body);
 
@@ -47,11 +49,14 @@ LegRequest readLegRequest(const Json& body);
 struct Leg {
   Participant participant;
   KneeModel knee;
+  KneeModelKnobs kneeFile;  ///< the knee model's file (shipped or uploaded), whose numbers can be set
 };
 
 /// Loads the request's participant (with its edits) and knee model (with its settings).
 /// An uploaded participant may name a shipped knee model only (NAME, NAME.yaml or
-/// ../models/NAME.yaml) and no thigh_kinematics file: no file an upload names is read.
+/// ../models/NAME.yaml), or bring its own as knee_yaml (then its knee_model is not read), and
+/// no thigh_kinematics file: no file an upload names is read. An uploaded knee model is read
+/// from its text, named upload-knee.yaml in messages.
 /// Throws InputError for bad input, and for a swing_end.time_limit_s above the budget.
 Leg loadLeg(const LegRequest& request, const ShippedFiles& files, const ServeLimits& limits);
 

@@ -134,9 +134,9 @@ ApiReply ServeApi::tune(const std::string& body) const {
     const Json json = readRequestBody(body);
     const LegRequest request = readLegRequest(json);
     Leg leg = loadLeg(request, files_, limits_);
-    const std::vector<TuningKnob> knobs = readTuneKnobs(json, KneeModelKnobs(leg.knee.path));
+    const std::vector<TuningKnob> knobs = readTuneKnobs(json, leg.kneeFile);
     const std::vector<TuningTarget> targets = readTuneTargets(json, leg.participant);
-    const TuningModel model(std::move(leg.participant), leg.knee.path, knobs, request.lowering, request.added, request.kneeSettings);
+    const TuningModel model(std::move(leg.participant), leg.kneeFile, knobs, request.lowering, request.added, request.kneeSettings);
     checkKnobEnds(model, knobs);
     SwingOptions options = makeTuningSwingOptions();
     options.maxWallSeconds = limits_.maxSwingWallSeconds;

@@ -1,6 +1,5 @@
 #include "study/tuning_model.h"
 
-#include "io/knee_model_loader.h"
 #include "study/tuning_study.h"
 #include "swing/knee_setup.h"
 
@@ -26,12 +25,12 @@ std::pair<std::vector<std::string>, std::vector<double>> listFixedSettings(const
 
 }  // namespace
 
-TuningModel::TuningModel(Participant participant, const std::string& kneePath, std::vector<TuningKnob> knobs, double lowering,
+TuningModel::TuningModel(Participant participant, KneeModelKnobs knee, std::vector<TuningKnob> knobs, double lowering,
                          AddedMass added, std::vector<std::pair<std::string, double>> fixedKneeSettings)
-    : participant_(std::move(participant)), kneeFile_(kneePath), knobs_(std::move(knobs)), lowering_(lowering), added_(added),
+    : participant_(std::move(participant)), kneeFile_(std::move(knee)), knobs_(std::move(knobs)), lowering_(lowering), added_(added),
       fixed_(std::move(fixedKneeSettings)) {
   const auto [keys, values] = listFixedSettings(fixed_, knobs_);
-  base_ = keys.empty() ? loadKneeModel(kneePath) : kneeFile_.make(keys, values);
+  base_ = keys.empty() ? kneeFile_.load() : kneeFile_.make(keys, values);
 }
 
 TunedSetting TuningModel::at(const std::vector<double>& values) const {

@@ -23,10 +23,10 @@ struct TunedSetting {
 class TuningModel {
  public:
   /// `knobs` in the order of the values later given; knob keys other than kLoweringKnob,
-  /// kAddedMassKnob and kAddedMassDistanceKnob are keys of the knee file at `kneePath`.
+  /// kAddedMassKnob and kAddedMassDistanceKnob are keys of the knee file `knee`.
   /// `fixedKneeSettings` are set at every point, before the knobs (a setting also a knob is
   /// the knob's). `lowering` and `added` hold where they are not knobs. Throws InputError.
-  TuningModel(Participant participant, const std::string& kneePath, std::vector<TuningKnob> knobs, double lowering,
+  TuningModel(Participant participant, KneeModelKnobs knee, std::vector<TuningKnob> knobs, double lowering,
               AddedMass added, std::vector<std::pair<std::string, double>> fixedKneeSettings = {});
 
   TunedSetting at(const std::vector<double>& values) const;

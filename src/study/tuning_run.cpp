@@ -33,7 +33,7 @@ TuningReportInputs makeTuningReportInputs(const TuningRun& run, const std::strin
 
 TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& control) {
   const auto start = std::chrono::steady_clock::now();
-  const TuningModel model(loadParticipant(study.participantPath), study.kneeModelPath, study.knobs, study.lowering, study.added);
+  const TuningModel model(loadParticipant(study.participantPath), KneeModelKnobs(study.kneeModelPath), study.knobs, study.lowering, study.added);
   volatile bool localStop = false;
   volatile bool* stop = control.stop != nullptr ? control.stop : &localStop;
   std::atomic<long> swings{0};

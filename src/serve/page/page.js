@@ -21,7 +21,7 @@ for (const seg of ['thigh', 'shank', 'foot']) {
 }
 
 const state = {
-  participant: null, participantYaml: null, edits: {}, knee: null, yaml: {},
+  participant: null, participantYaml: null, edits: {}, knee: null, kneeYaml: null, yaml: {},
   latest: 0, inputTime: null, inFlight: 0, wanted: false,
 };
 window.swingsimUpdates = [];  // ms from a knob's input to the numbers shown (the browser test reads it)
@@ -38,7 +38,8 @@ function legRequest() {
   };
   if (state.participantYaml !== null) body.participant_yaml = state.participantYaml;
   else body.participant = state.participant;
-  if (state.knee) body.knee = state.knee;
+  if (state.kneeYaml !== null) body.knee_yaml = state.kneeYaml;
+  else if (state.knee) body.knee = state.knee;
   return body;
 }
 
@@ -212,14 +213,30 @@ async function loadParticipant() {
   buildForm(answer.json.fields);
   buildKneeStates(answer.json.knee_states);
   buildTuneKnobs();
-  $('knee').value = answer.json.knee_model;
+  $('knee').value = state.kneeYaml === null ? answer.json.knee_model : '';
   $('lowering').max = Math.min(0.2, Math.floor(answer.json.max_lowering_m * 200) / 200);
   simulateNow();
 }
 
-// A knee chosen from the list: its swing-state sliders, then one swing.
+// A knee chosen from the list (or uploaded: it then stays for the participants loaded after
+// it, so a participant whose knee_model is that file can be uploaded next): its swing-state
+// sliders, then one swing.
 async function loadKnee() {
   state.knee = $('knee').value;
+  state.kneeYaml = null;
+  $('knee-upload').value = '';
+  await describeKnee();
+}
+
+async function uploadKnee() {
+  const file = $('knee-upload').files[0];
+  if (!file) return;
+  state.kneeYaml = await file.text();
+  state.knee = null;
+  await describeKnee();
+}
+
+async function describeKnee() {
   $('knee-states').textContent = '';
   const answer = await post('api/participant', legRequest());
   if (answer.status !== 200) { showNoSwing(answer.json); return; }
@@ -368,6 +385,7 @@ async function start() {
     loadParticipant();
   });
   $('knee').addEventListener('change', loadKnee);
+  $('knee-upload').addEventListener('change', uploadKnee);
   bindSlider('lowering', 3, ' m');
   bindSlider('mass', 2, ' kg');
   bindSlider('position', 2, ' m');
