@@ -97,15 +97,6 @@ py::tuple importOsim(const py::object& model, const py::object& side, const py::
   return py::make_tuple(toPython(YAML::Load(imported.text)), imported.name);
 }
 
-/// An added shank mass from its two arguments (both or neither).
-std::optional<AddedMass> readAddedMassArguments(const py::object& mass, const py::object& below) {
-  if (mass.is_none() != below.is_none())
-    throw py::type_error("export_osim(): added_mass_kg and added_mass_below_knee_m: give both or neither");
-  if (mass.is_none()) return std::nullopt;
-  return AddedMass{readNumberArgument(mass, "export_osim(): added_mass_kg", checkPositive),
-                   readNumberArgument(below, "export_osim(): added_mass_below_knee_m", checkPositive)};
-}
-
 /// `swingsim export-osim PARTICIPANT --side S --lowering M [--add-mass KG@M]` written to the
 /// file `path`; returns it.
 std::string exportOsim(const py::object& participant, const py::object& pathValue, const py::object& loweringValue,
@@ -114,7 +105,7 @@ std::string exportOsim(const py::object& participant, const py::object& pathValu
   OsimExportOptions options;
   options.side = readChoiceArgument(side, "export_osim(): side", {"r", "l"}).front();
   options.lowering = readNumberArgument(loweringValue, "export_osim(): lowering_m", checkLowering);
-  options.added = readAddedMassArguments(addedMass, addedBelow);
+  options.added = readAddedMassArguments(addedMass, addedBelow, "export_osim()");
   const Participant p = readParticipant(participant, "export_osim");
   const KneeModel knee = readKnee(py::none(), p, "export_osim");
   // An edited Participant's messages name "ORIGIN (edited in Python)": its origin file is an input too.

@@ -165,6 +165,14 @@ double readNumberArgument(const py::handle& value, const std::string& where, std
   return v;
 }
 
+std::optional<AddedMass> readAddedMassArguments(const py::object& mass, const py::object& below, const std::string& function) {
+  if (mass.is_none() != below.is_none())
+    throw py::type_error(function + ": added_mass_kg and added_mass_below_knee_m: give both or neither");
+  if (mass.is_none()) return std::nullopt;
+  return AddedMass{readNumberArgument(mass, function + ": added_mass_kg", checkPositive),
+                   readNumberArgument(below, function + ": added_mass_below_knee_m", checkPositive)};
+}
+
 std::string readTextArgument(const py::handle& value, const std::string& where) {
   if (!py::isinstance<py::str>(value)) throwTypeError(where, "expected text (str)", value);
   return value.cast<std::string>();

@@ -6,10 +6,12 @@
 #include <pybind11/pybind11.h>
 #include <yaml-cpp/yaml.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "io/json_file.h"
+#include "model/leg_parameters.h"
 #include "study/run_arguments.h"
 
 namespace swingsim::python {
@@ -49,6 +51,11 @@ std::string readTextArgument(const pybind11::handle& value, const std::string& w
 std::string readChoiceArgument(const pybind11::handle& value, const std::string& where, const std::vector<std::string>& choices);
 /// An argument as a flag: a bool or numpy bool (TypeError naming `where`; 1 and 0 too).
 bool readFlagArgument(const pybind11::handle& value, const std::string& where);
+
+/// An added shank mass from its two arguments, added_mass_kg and added_mass_below_knee_m,
+/// both positive (InputError) or both None (TypeError for one alone), `function` naming the
+/// call ("export_osim()").
+std::optional<AddedMass> readAddedMassArguments(const pybind11::object& mass, const pybind11::object& below, const std::string& function);
 
 /// An argument as a path: a str or an os.PathLike giving one (TypeError naming `where`).
 bool isPathArgument(const pybind11::handle& value);

@@ -68,19 +68,33 @@ py::dict trajectoryArrays(const SwingTrajectory& trajectory) {
   return arrays;
 }
 
+/// The integrator and its accuracy as simulate's --integrator and --accuracy: the method at
+/// its converged setting unless accuracy says otherwise.
+SwingOptions readSwingOptionArguments(const py::object& integrator, const py::object& accuracy) {
+  SwingOptions options;
+  options.trackImpactEnergy = true;  // as the CLI's simulate: one swing, the bookkeeping is cheap
+  if (!integrator.is_none()) {
+    options.integrator = *findIntegrator(readChoiceArgument(integrator, "simulate(): integrator", integratorKeys()));
+    options.accuracy = calcConvergedAccuracy(options.integrator);
+  }
+  if (!accuracy.is_none()) options.accuracy = readNumberArgument(accuracy, "simulate(): accuracy", checkAccuracy);
+  return options;
+}
+
 /// One swing as `swingsim simulate --json` describes it, plus "knee_model" and the
 /// trajectory's columns as numpy arrays under "trajectory".
-py::dict simulate(const py::object& participant, const py::object& loweringValue, const py::object& knee) {
+py::dict simulate(const py::object& participant, const py::object& loweringValue, const py::object& knee, const py::object& addedMass,
+                  const py::object& addedBelow, const py::object& integrator, const py::object& accuracy) {
   const double lowering = readNumberArgument(loweringValue, "simulate(): lowering_m", checkLowering);
+  const AddedMass added = readAddedMassArguments(addedMass, addedBelow, "simulate()").value_or(AddedMass{});
+  const SwingOptions options = readSwingOptionArguments(integrator, accuracy);
   Participant loaded = readParticipant(participant, "simulate");
   const KneeModel model = readKnee(knee, loaded, "simulate");
   std::optional<SwingSetup> setup;
   SwingResult result;
   {
     py::gil_scoped_release release;
-    setup = makeSwingSetup(std::move(loaded), model, lowering);
-    SwingOptions options;
-    options.trackImpactEnergy = true;  // as the CLI's simulate: one swing, the bookkeeping is cheap
+    setup = makeSwingSetup(std::move(loaded), model, lowering, added);
     result = simulateSwing(*setup, options);
   }
   py::dict out = toPython(makeSimulateJson(*setup, result));
@@ -316,7 +330,9 @@ PYBIND11_MODULE(_swingsim, m) {
   m.def("load_knee_dict",
         [](const py::object& path) { return python::loadKneeDict(python::readPathArgument(path, "load_knee(): path")); },
         py::arg("path"));
-  m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none());
+  m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none(),
+        py::arg("added_mass_kg") = py::none(), py::arg("added_mass_below_knee_m") = py::none(), py::arg("integrator") = py::none(),
+        py::arg("accuracy") = py::none());
   m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
         py::arg("jobs") = 0, py::arg("out") = py::none());
   m.def("fit", &python::fit, py::arg("study_path"));

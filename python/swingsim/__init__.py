@@ -425,13 +425,19 @@ class SwingResult:
                 f"swing_time_s={self.swing_time_s})")
 
 
-def simulate(participant, lowering_m=0.0, knee=None):
-    """One swing, as `swingsim simulate PARTICIPANT --lowering M [--knee MODEL]`.
+def simulate(participant, lowering_m=0.0, knee=None, added_mass_kg=None, added_mass_below_knee_m=None,
+             integrator=None, accuracy=None):
+    """One swing, as `swingsim simulate PARTICIPANT --lowering M [--knee MODEL] [--add-mass
+    KG@M] [--integrator METHOD] [--accuracy A]`.
 
     participant: a path or a Participant; lowering_m: knee-axis lowering below the standard
-    location, m; knee: None (the participant's knee_model), a path or a KneeModel. Returns a
-    SwingResult (times s, angles deg, moments N m)."""
-    return SwingResult(_swingsim.simulate(participant, lowering_m, knee))
+    location, m; knee: None (the participant's knee_model), a path or a KneeModel;
+    added_mass_kg and added_mass_below_knee_m: a mass on the shank, kg, at m below the knee
+    (both or neither); integrator: None (the default) or one of the command line's
+    --integrator names, at its converged accuracy unless accuracy (relative, 1e-14 to 0.01)
+    is given. Returns a SwingResult (times s, angles deg, moments N m)."""
+    return SwingResult(_swingsim.simulate(participant, lowering_m, knee, added_mass_kg, added_mass_below_knee_m,
+                                          integrator, accuracy))
 
 
 def sweep(study_path, uncertainty=0, seed=None, jobs=0, out=None):

@@ -129,3 +129,32 @@ def test_simulate_releases_the_gil(repo, tmp_path):
         pytest.fail("simulate held the GIL: the thread that feeds its participant file never ran (5 min)")
     assert child.returncode == 0, child.stderr
     assert float(child.stdout) == pytest.approx(swingsim.simulate(str(source)).swing_time_s, abs=EXACT)
+
+
+@pytest.mark.parametrize("options,cli_args", [
+    ({"added_mass_kg": 0.5, "added_mass_below_knee_m": 0.2}, ["--add-mass", "0.5@0.2"]),
+    ({"integrator": "runge-kutta-merson", "accuracy": 1e-6}, ["--integrator", "runge-kutta-merson", "--accuracy", "1e-6"]),
+    ({"integrator": "runge-kutta-feldberg"}, ["--integrator", "runge-kutta-feldberg"]),
+])
+def test_simulate_options_equal_cli(repo, cli, tmp_path, options, cli_args):
+    """simulate's added mass, integrator and accuracy arguments as the command line's options."""
+    participant = repo / "participants" / "p1.yaml"
+    expected = run_cli_simulate(cli, tmp_path, participant, "--lowering", "0.05", *cli_args)
+    plain = swingsim.simulate(participant, lowering_m=0.05)
+    result = swingsim.simulate(participant, lowering_m=0.05, **options)
+    assert result.swing_time_s == pytest.approx(expected["swing_time_s"], abs=EXACT)
+    assert result.peak_knee_flexion_deg == pytest.approx(expected["peak_knee_flexion_deg"], abs=EXACT)
+    if "added_mass_kg" in options:  # the mass is felt, far above the integrator's error
+        assert abs(result.swing_time_s - plain.swing_time_s) > MEASURABLE_S
+
+
+def test_simulate_option_errors_name_the_argument(repo):
+    participant = repo / "participants" / "p1.yaml"
+    with pytest.raises(TypeError, match="added_mass_kg and added_mass_below_knee_m: give both or neither"):
+        swingsim.simulate(participant, added_mass_kg=0.5)
+    with pytest.raises(swingsim.InputError, match=r"simulate\(\): added_mass_kg"):
+        swingsim.simulate(participant, added_mass_kg=-1, added_mass_below_knee_m=0.2)
+    with pytest.raises(swingsim.InputError, match=r"simulate\(\): integrator"):
+        swingsim.simulate(participant, integrator="euler")
+    with pytest.raises(swingsim.InputError, match=r"simulate\(\): accuracy"):
+        swingsim.simulate(participant, accuracy=0.5)
