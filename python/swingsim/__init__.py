@@ -173,6 +173,33 @@ class _FileRecord(Record):
     def _check_deletion(self):
         self.validate()
 
+    def _named_files(self, value=None, key=""):
+        """(key, path) of every text value that names an existing file, resolved as the loader
+        resolves it (relative to the origin's folder)."""
+        value = self._values if value is None else value
+        if isinstance(value, Record):
+            value = value._values
+        if isinstance(value, dict):
+            for k, v in value.items():
+                yield from self._named_files(v, f"{key}.{k}" if key else str(k))
+        elif isinstance(value, (list, tuple)):
+            for i, v in enumerate(value):
+                yield from self._named_files(v, f"{key}[{i}]")
+        elif isinstance(value, str) and value:
+            candidate = self.resolve(value)
+            if _os.path.isfile(candidate):
+                yield key, candidate
+
+    def _refuse_overwriting_an_input(self, path):
+        """save() may replace the object's own file, never a file it names (its knee model,
+        its records): that input would be lost."""
+        if not _os.path.exists(path):
+            return
+        for key, named in self._named_files():
+            if _os.path.samefile(named, path):
+                raise InputError(f"save(): path: expected a file other than the {key} this object names "
+                                 f"(got {path!r}, which is {key}: writing it would replace that input)")
+
     def validate(self):
         """Checks every field as the C++ loader checks the file (`swingsim simulate` reads a
         participant so); raises InputError naming the key, the value and the origin with
@@ -188,6 +215,7 @@ class _FileRecord(Record):
         path = _os.fspath(path)
         if not isinstance(path, str):
             raise TypeError(_argument_problem("save(): path", "expected a path (str or os.PathLike)", path))
+        self._refuse_overwriting_an_input(path)
         text = _swingsim.format_record(self._as_file(), _os.path.dirname(path) or ".")
         _write_text(path, text)
         object.__setattr__(self, "_values", type(self)._loader(path))

@@ -117,3 +117,21 @@ def test_study_round_trip_rewrites_its_paths(repo, tmp_path):
     assert again.to_dict() == s.to_dict()
     assert again.acceptance.max_effects == 2
     assert (tmp_path / again.participant).resolve() == (repo / "participants" / "p1.yaml").resolve()
+
+
+def test_save_refuses_to_replace_a_file_it_names(repo, tmp_path):
+    """save() over the object's knee model (a file it names) is refused and the knee file is
+    left as it was; over its own file it is an edit in place."""
+    (tmp_path / "participants").mkdir()
+    (tmp_path / "models").mkdir()
+    shutil.copy(repo / "participants" / "p1.yaml", tmp_path / "participants" / "p1.yaml")
+    knee = tmp_path / "models" / "damping-table-default.yaml"
+    shutil.copy(repo / "models" / "damping-table-default.yaml", knee)
+    before = knee.read_text()
+    p = swingsim.load_participant(tmp_path / "participants" / "p1.yaml")
+    with pytest.raises(swingsim.InputError, match=r"save\(\): path: expected a file other than the knee_model"):
+        p.save(knee)
+    assert knee.read_text() == before
+    p.segments.shank.mass_kg = 1.2
+    p.save(tmp_path / "participants" / "p1.yaml")
+    assert swingsim.load_participant(tmp_path / "participants" / "p1.yaml").segments.shank.mass_kg == 1.2
