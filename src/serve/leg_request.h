@@ -24,6 +24,7 @@ struct ServeLimits {
   double maxSwingTimeLimit = 3.0;        ///< s, the largest swing_end.time_limit_s simulated
   double maxSwingWallSeconds = 5.0;      ///< s of wall-clock time one swing may take
   int maxSweepPoints = 41;               ///< lowerings of one sweep (0 to 0.2 m in 5 mm steps)
+  double maxTuneWallSeconds = 30;        ///< s of one tuning; then it stops with the best setting so far
 };
 
 /// The participant keys the form edits (YAML key paths, in the file's units).

@@ -51,8 +51,9 @@ class ServeApi {
   /// "targets": {"swing_time_s" (default the sound limb's), "peak_knee_flexion_deg": [min,
   /// max] (default [60, 90]), "min_toe_clearance_m" (default 0.08)}): the setting that brings
   /// the swing time to the target within the hard limits (swingsim tune's method, 24 start
-  /// points, at most 10 s of polish): {"knobs": [{"key", "value", "at_range_end"}], "targets",
-  /// "feasible", "identifiable", "identifiability", "evaluations", "seconds", "swing_time_s"}.
+  /// points, at most 10 s of polish, 30 s in all, then the best so far with "interrupted"):
+  /// {"knobs": [{"key", "value", "at_range_end"}], "targets", "feasible", "interrupted",
+  /// "identifiable", "identifiability", "evaluations", "seconds", "swing_time_s"}.
   ApiReply tune(const std::string& body) const;
 
   const ServeLimits& getLimits() const { return limits_; }

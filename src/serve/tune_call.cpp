@@ -16,7 +16,7 @@ namespace {
 
 constexpr int kMaxTuneKnobs = 4;
 constexpr int kTuneStartPoints = 24;     // as swingsim tune's default
-constexpr double kTuneMaxSeconds = 10;   // s of polish, the budget of one request
+constexpr double kTuneMaxSeconds = 10;   // s of polish
 
 // A knob's key: the lowering, the added mass or its position, or a number of the knee file
 // (KneeModelKnobs::checkKey: its value then gets the knee loader's checks).
@@ -121,7 +121,8 @@ Json makeTuneJson(const TuningResult& r, double seconds) {
                        {"value", toPageUnits(t.target.quantity, t.value)},
                        {"hard", t.target.hard},
                        {"met", t.met}});
-  return {{"knobs", knobs}, {"targets", targets}, {"feasible", r.feasible}, {"identifiable", r.identifiable},
+  return {{"knobs", knobs}, {"targets", targets}, {"feasible", r.feasible}, {"interrupted", r.interrupted},
+          {"identifiable", r.identifiable},
           {"identifiability", r.identifiability}, {"evaluations", r.evaluations}, {"seconds", seconds},
           {"swing_time_s", std::isfinite(r.best.swingTime) ? Json(r.best.swingTime) : Json(nullptr)}};
 }
@@ -144,8 +145,21 @@ ApiReply ServeApi::tune(const std::string& body) const {
     settings.startPoints = kTuneStartPoints;
     settings.jobs = 1;  // one request, one thread: the server's pool serves the others
     settings.maxSeconds = kTuneMaxSeconds;
-    const TuningResult r = runKneeTuning(knobs, targets, [&](const std::vector<double>& x) { return model.simulate(x, options); }, settings);
-    return makeTuneJson(r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    volatile bool stop = false;
+    const TuningEvaluator evaluate = [&](const std::vector<double>& x) {
+      if (stop || seconds() > limits_.maxTuneWallSeconds) {
+        stop = true;
+        throw RunError("stopped at swingsim serve's budget");
+      }
+      return model.simulate(x, options);
+    };
+    TuningResult r = runKneeTuning(knobs, targets, evaluate, settings, {}, &stop);
+    r.interrupted = r.interrupted || stop;
+    if (!r.best.ran)
+      throw RunError("tune: stopped at swingsim serve's budget of " + formatNumber(limits_.maxTuneWallSeconds) +
+                     " s before any swing ran");
+    return makeTuneJson(r, seconds());
   });
 }
 

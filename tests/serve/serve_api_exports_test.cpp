@@ -150,6 +150,19 @@ TEST(ServeTune, ItsSettingSwingsAsTheSimulateCallShowsIt) {
     if (t["hard"].get<bool>()) EXPECT_TRUE(t["met"].get<bool>()) << t.dump();
 }
 
+// A tuning past the server's budget stops between swings and says so; with no swing run it
+// is a failed run (422), never knob values of a setting not simulated. The budget here is
+// 0 s, so the first swing is already past it: no clock decides the outcome.
+TEST(ServeTune, StopsAtTheBudgetAndSaysSo) {
+  ServeLimits limits;
+  limits.maxTuneWallSeconds = 0;
+  const ServeApi tight(ShippedFiles(SWINGSIM_SOURCE_DIR), limits);
+  const ApiReply r = tight.tune(kTuneRequest.dump());
+  const Json j = Json::parse(r.body);
+  EXPECT_EQ(r.status, 422) << r.body;
+  EXPECT_THAT(j["error"].get<std::string>(), HasSubstr("budget of 0 s before any swing ran"));
+}
+
 TEST(ServeTune, RefusesBadKnobsAndTargetsByTheirKey) {
   const auto refuse = [](Json body) { return call(&ServeApi::tune, body, 400)["key"].get<std::string>(); };
   Json none = kTuneRequest;

@@ -349,7 +349,8 @@ async function runTune() {
   const unmet = t.targets.filter((x) => !x.met).map((x) => x.quantity);
   $('tune-summary').textContent = `${t.feasible ? '' : 'NO SETTING MEETS THE LIMITS; closest: '}${parts.join(', ')}: swing ` +
     `${time.value.toFixed(4)} s${unmet.length ? `; not met: ${unmet.join(', ')}` : '; every target met'} ` +
-    `(${t.evaluations} swings, ${t.seconds.toFixed(1)} s). ${t.identifiable ? '' : t.identifiability}`;
+    `(${t.evaluations} swings, ${t.seconds.toFixed(1)} s${t.interrupted ? ', stopped at the server\'s time budget: the best so far' : ''}). ` +
+    `${t.identifiable ? '' : t.identifiability}`;
   for (const k of t.knobs) {
     const slider = tunableSliders().find((s) => (kTuneKeys[s.id] || s.name) === k.key);
     if (!slider) continue;
