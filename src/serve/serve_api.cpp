@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <limits>
 
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
@@ -94,8 +95,26 @@ void readSweepGrid(const Json& body, const ServeLimits& limits, SweepStudy& stud
                      " lowerings: step " + formatNumber(study.loweringStep) + " m to " + formatNumber(study.loweringMax) + " m)");
 }
 
-Json makeSweepJson(const SweepStudy& study, const SweepResults& results) {
-  const ParticipantSweep& ps = results.participants.front();
+// The curve the page shows: the plain sweep, or with an added mass the sweep of that mass
+// (the study's added-mass grid), its fastest and its symmetry lowering.
+ParticipantSweep selectShownCurve(const ParticipantSweep& ps, const Participant& p, const AddedMass& added) {
+  if (added.mass <= 0) return ps;
+  ParticipantSweep shown = ps;
+  shown.points = ps.massPoints;
+  shown.massPoints.clear();
+  shown.best = ps.bestWithMass;
+  std::vector<double> lowerings, times;
+  for (const SweepPoint& pt : shown.points) {
+    if (!pt.onGrid) continue;
+    lowerings.push_back(pt.lowering);
+    times.push_back(pt.ok ? pt.result.swingTime : std::numeric_limits<double>::quiet_NaN());
+  }
+  shown.symmetry = calcSymmetryLowering(lowerings, times, p.soundLimbSwingTime.value_or(0));
+  return shown;
+}
+
+Json makeSweepJson(const SweepStudy& study, const SweepResults& results, const AddedMass& added) {
+  const ParticipantSweep ps = selectShownCurve(results.participants.front(), study.participants.front(), added);
   Json lowerings = Json::array(), times = Json::array();
   for (const SweepPoint& pt : ps.points) {
     if (!pt.onGrid) continue;
@@ -111,6 +130,8 @@ Json makeSweepJson(const SweepStudy& study, const SweepResults& results) {
   Json sweepJson = Json::parse(formatSweepJson(results));
   return {{"participant", ps.name},
           {"lowering_step_m", study.loweringStep},
+          {"added_mass_kg", added.mass},
+          {"added_mass_position_m", added.distanceBelowKnee},
           {"lowerings_m", lowerings},
           {"swing_times_s", times},
           {"fastest_lowering_m", best ? Json(best->lowering) : Json(nullptr)},
@@ -123,6 +144,7 @@ Json makeSweepJson(const SweepStudy& study, const SweepResults& results) {
 struct LegSweep {
   SweepStudy study;
   SweepResults results;
+  AddedMass added;  ///< the request's (0 kg: none)
 };
 
 // The sweep of a request's leg over its lowering grid, on one thread (the server's pool
@@ -138,6 +160,11 @@ LegSweep runLegSweep(const Json& json, const ShippedFiles& files, const ServeLim
   leg.participant.kneeModelPath = leg.knee.path;
   run.study.kneeModels.emplace(leg.knee.path, leg.knee);
   run.study.participants.push_back(std::move(leg.participant));
+  run.added = request.added;
+  if (request.added.mass > 0) {  // the added-mass grid beside the plain sweep, at the request's mass and position
+    run.study.addedMasses = {0.0, request.added.mass};
+    run.study.addedMassDistances = {request.added.distanceBelowKnee};
+  }
   run.results = runSweep(run.study, 1);
   return run;
 }
@@ -201,7 +228,7 @@ ApiReply ServeApi::simulate(const std::string& body) const {
 ApiReply ServeApi::sweep(const std::string& body) const {
   return answerOrError([&] {
     const LegSweep run = runLegSweep(readRequestBody(body), files_, limits_);
-    return makeSweepJson(run.study, run.results);
+    return makeSweepJson(run.study, run.results, run.added);
   });
 }
 

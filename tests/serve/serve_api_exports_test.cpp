@@ -112,6 +112,29 @@ TEST(ServeReport, IsTheSweepsSelfContainedReport) {
   EXPECT_THAT(html, HasSubstr(fastest));
 }
 
+// With an added mass the sweep shown is the leg's with it: each lowering's swing time is the
+// one simulateSwing gives with that mass (the sweep's options), and differs from the plain
+// sweep's by far more than the integrator's 0.1 ms.
+TEST(ServeSweep, WithAnAddedMassShowsTheLegWithIt) {
+  const Json plain = call(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}});
+  const Json heavy = call(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}, {"added_mass_kg", 1.0},
+                                             {"added_mass_position_m", 0.25}});
+  EXPECT_EQ(heavy["added_mass_kg"], 1.0);
+  const Participant p = loadParticipant(kSource + "/participants/p1.yaml");
+  const KneeModel knee = loadKneeModel(p.kneeModelPath);
+  ASSERT_EQ(heavy["lowerings_m"].size(), plain["lowerings_m"].size());
+  for (std::size_t k = 0; k < heavy["lowerings_m"].size(); ++k) {
+    const double lowering = heavy["lowerings_m"][k];
+    const SwingResult r = simulateSwing(makeSwingSetup(p, knee, lowering, AddedMass{1.0, 0.25}), SwingOptions{});
+    EXPECT_EQ(heavy["swing_times_s"][k].get<double>(), r.swingTime) << lowering;
+    EXPECT_GT(std::abs(heavy["swing_times_s"][k].get<double>() - plain["swing_times_s"][k].get<double>()), 1e-3) << lowering;
+  }
+  double fastest = 1e9;
+  for (const Json& t : heavy["swing_times_s"]) fastest = std::min(fastest, t.get<double>());
+  EXPECT_EQ(heavy["fastest_swing_time_s"].get<double>(), fastest);
+  EXPECT_EQ(heavy["symmetry"]["sound_limb_swing_time_s"], 0.499);
+}
+
 // P1's damping-table knee tuned over the lowering and model_scale, as a `kind: knee-tuning`
 // study with the same knobs and targets would be by `swingsim tune`.
 const Json kTuneRequest = {{"participant", "p1"},

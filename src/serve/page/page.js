@@ -273,7 +273,7 @@ async function runSweep() {
       `; symmetry with the sound limb (${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s) at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm` :
       `; the sound limb's ${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s is not reached (closest at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm)`;
   }
-  if (Number($('mass').value) > 0) text += ' (the sweep is of the leg without the added mass)';
+  if (s.added_mass_kg > 0) text += ` (with the added ${s.added_mass_kg.toFixed(2)} kg at ${s.added_mass_position_m.toFixed(2)} m below the knee)`;
   $('sweep-summary').textContent = text;
   $('sweep-figure').innerHTML = s.figure_svg;
 }
@@ -307,7 +307,7 @@ async function exportReport() {
   const answer = await post('api/report', legRequest());
   if (answer.status !== 200) { $('export-status').textContent = ''; showError(answer.json); return; }
   download(answer.json.file_name, answer.json.html, 'text/html');
-  $('export-status').textContent = `${answer.json.file_name}: the sweep of this leg (without the added mass)`;
+  $('export-status').textContent = `${answer.json.file_name}: the sweep of this leg (and of it with the added mass, if any)`;
 }
 
 // The knobs the tuning may move: the sliders of the lowering, model_scale and the states' damping.
