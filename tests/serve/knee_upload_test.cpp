@@ -7,6 +7,7 @@
 
 #include "core/output_files.h"
 #include "serve/serve_api.h"
+#include "serve_api_calls.h"
 
 namespace swingsim {
 namespace {
@@ -14,24 +15,15 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const ServeApi& api() {
-  static const ServeApi a(ShippedFiles(SWINGSIM_SOURCE_DIR), ServeLimits{});
-  return a;
-}
-
-Json call(ApiReply (ServeApi::*f)(const std::string&) const, const Json& body, int expectedStatus = 200) {
-  const ApiReply r = (api().*f)(body.dump());
-  EXPECT_EQ(r.status, expectedStatus) << r.body;
-  return Json::parse(r.body);
-}
+using serve_test::callServeApi;
 
 const std::string kSource = SWINGSIM_SOURCE_DIR;
 std::string readShipped(const std::string& relative) { return readFile(kSource + "/" + relative); }
 
 TEST(KneeUpload, SwingsAsTheShippedFileOfTheSameText) {
   const std::string text = readShipped("models/microprocessor-knee-osl.yaml");
-  Json shipped = call(&ServeApi::simulate, {{"participant", "p2"}, {"knee", "microprocessor-knee-osl"}, {"lowering_m", 0.03}});
-  Json uploaded = call(&ServeApi::simulate, {{"participant", "p2"}, {"knee_yaml", text}, {"lowering_m", 0.03}});
+  Json shipped = callServeApi(&ServeApi::simulate, {{"participant", "p2"}, {"knee", "microprocessor-knee-osl"}, {"lowering_m", 0.03}});
+  Json uploaded = callServeApi(&ServeApi::simulate, {{"participant", "p2"}, {"knee_yaml", text}, {"lowering_m", 0.03}});
   EXPECT_EQ(uploaded["knee_model"], "upload-knee");
   ASSERT_TRUE(shipped["swing_time_s"].is_number());
   EXPECT_EQ(uploaded["swing_time_s"], shipped["swing_time_s"]);
@@ -42,25 +34,25 @@ TEST(KneeUpload, AnUploadedParticipantMayNameIt) {
   std::string p1 = readShipped("participants/p1.yaml");
   const std::string from = "../models/damping-table-default.yaml";
   p1.replace(p1.find(from), from.size(), "my-own-knee.yaml");
-  const Json refused = call(&ServeApi::describeParticipant, {{"participant_yaml", p1}}, 400);
+  const Json refused = callServeApi(&ServeApi::describeParticipant, {{"participant_yaml", p1}}, 400);
   EXPECT_EQ(refused["key"], "knee_model");
   EXPECT_THAT(refused["error"].get<std::string>(), HasSubstr("uploaded with it"));
   const Json request = {{"participant_yaml", p1}, {"knee_yaml", readShipped("models/damping-table-default.yaml")}};
-  EXPECT_EQ(call(&ServeApi::describeParticipant, request)["knee_model"], "upload-knee");
-  const Json own = call(&ServeApi::simulate, request);
-  const Json shipped = call(&ServeApi::simulate, {{"participant", "p1"}});
+  EXPECT_EQ(callServeApi(&ServeApi::describeParticipant, request)["knee_model"], "upload-knee");
+  const Json own = callServeApi(&ServeApi::simulate, request);
+  const Json shipped = callServeApi(&ServeApi::simulate, {{"participant", "p1"}});
   EXPECT_EQ(own["swing_time_s"], shipped["swing_time_s"]);
 }
 
 TEST(KneeUpload, ABadValueIsNamedByKeyWithoutAServerPath) {
   std::string text = readShipped("models/damping-table-default.yaml");
   text += "knee_effects:\n  model_scale: -2\n";
-  const Json bad = call(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", text}}, 400);
+  const Json bad = callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", text}}, 400);
   EXPECT_THAT(bad["error"].get<std::string>(), HasSubstr("upload-knee.yaml"));
   EXPECT_THAT(bad["error"].get<std::string>(), Not(HasSubstr(kSource)));
   EXPECT_THAT(bad["key"].get<std::string>(), HasSubstr("model_scale"));
-  EXPECT_EQ(call(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", "{ not: [yaml"}}, 400)["key"], "knee_yaml");
-  EXPECT_EQ(call(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", text}, {"knee", "passive-knee"}}, 400)["key"], "knee_yaml");
+  EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", "{ not: [yaml"}}, 400)["key"], "knee_yaml");
+  EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", text}, {"knee", "passive-knee"}}, 400)["key"], "knee_yaml");
 }
 
 TEST(KneeUpload, TheTuningSetsItsNumbers) {
@@ -68,9 +60,9 @@ TEST(KneeUpload, TheTuningSetsItsNumbers) {
   const Json request = {{"participant", "p1"},
                         {"knee_yaml", readShipped("models/microprocessor-knee-osl.yaml")},
                         {"knobs", {{{"key", key}, {"min", 0.5}, {"max", 12}, {"log_scale", true}}}}};
-  const Json tuned = call(&ServeApi::tune, request);
+  const Json tuned = callServeApi(&ServeApi::tune, request);
   ASSERT_EQ(tuned["knobs"].size(), 1u);
-  const Json swing = call(&ServeApi::simulate, {{"participant", "p1"},
+  const Json swing = callServeApi(&ServeApi::simulate, {{"participant", "p1"},
                                                 {"knee_yaml", request["knee_yaml"]},
                                                 {"knee_settings", {{key, tuned["knobs"][0]["value"]}}}});
   EXPECT_EQ(swing["swing_time_s"], tuned["swing_time_s"]);

@@ -3,6 +3,7 @@
 // and simulate's .sto, import-osim, sweep's report.html, swingsim tune), and refuses bad
 // input by the key the page shows it beside.
 #include "serve/serve_api.h"
+#include "serve_api_calls.h"
 
 #include <unistd.h>
 
@@ -28,22 +29,13 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const ServeApi& api() {
-  static const ServeApi a(ShippedFiles(SWINGSIM_SOURCE_DIR), ServeLimits{});
-  return a;
-}
-
-Json call(ApiReply (ServeApi::*f)(const std::string&) const, const Json& body, int expectedStatus = 200) {
-  const ApiReply r = (api().*f)(body.dump());
-  EXPECT_EQ(r.status, expectedStatus) << r.body;
-  return Json::parse(r.body);
-}
+using serve_test::callServeApi;
 
 const std::string kSource = SWINGSIM_SOURCE_DIR;
 const std::string kSubject01 = kSource + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim";
 
 TEST(ServeExportOsim, IsExportOsimsModelAndSimulatesSto) {
-  const Json j = call(&ServeApi::exportOsim, {{"participant", "p1"}, {"lowering_m", 0.05}, {"side", "l"},
+  const Json j = callServeApi(&ServeApi::exportOsim, {{"participant", "p1"}, {"lowering_m", 0.05}, {"side", "l"},
                                               {"added_mass_kg", 0.5}, {"added_mass_position_m", 0.2}});
   const Participant p = loadParticipant(kSource + "/participants/p1.yaml");
   const KneeModel knee = loadKneeModel(p.kneeModelPath);
@@ -59,11 +51,11 @@ TEST(ServeExportOsim, IsExportOsimsModelAndSimulatesSto) {
 }
 
 TEST(ServeExportOsim, RefusesAWrongSide) {
-  EXPECT_EQ(call(&ServeApi::exportOsim, {{"participant", "p1"}, {"side", "x"}}, 400)["key"], "side");
+  EXPECT_EQ(callServeApi(&ServeApi::exportOsim, {{"participant", "p1"}, {"side", "x"}}, 400)["key"], "side");
 }
 
 TEST(ServeImportOsim, IsImportOsimsParticipantAndLoadsAsAnUpload) {
-  const Json j = call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"file_name", "/home/a/subject01.osim"}, {"side", "l"}});
+  const Json j = callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"file_name", "/home/a/subject01.osim"}, {"side", "l"}});
   OsimImportOptions o;
   o.side = 'l';
   o.kneeModelPath = kSource + "/models/damping-table-default.yaml";
@@ -83,23 +75,23 @@ TEST(ServeImportOsim, IsImportOsimsParticipantAndLoadsAsAnUpload) {
   EXPECT_EQ(j["name"], cli.name);
   EXPECT_THAT(j["participant_yaml"].get<std::string>(), HasSubstr("model subject01.osim"));
   EXPECT_THAT(j["participant_yaml"].get<std::string>(), Not(HasSubstr("/home/a")));
-  const Json described = call(&ServeApi::describeParticipant, {{"participant_yaml", j["participant_yaml"]}});
+  const Json described = callServeApi(&ServeApi::describeParticipant, {{"participant_yaml", j["participant_yaml"]}});
   EXPECT_EQ(described["knee_model"], "damping-table-default");
 }
 
 TEST(ServeImportOsim, RefusesWhatIsNotAModelByItsKey) {
-  const Json notXml = call(&ServeApi::importOsim, {{"osim_text", "<OpenSimDocument"}, {"file_name", "bad.osim"}}, 400);
+  const Json notXml = callServeApi(&ServeApi::importOsim, {{"osim_text", "<OpenSimDocument"}, {"file_name", "bad.osim"}}, 400);
   EXPECT_THAT(notXml["error"].get<std::string>(), HasSubstr("bad.osim:1:"));
-  EXPECT_EQ(call(&ServeApi::importOsim, {{"file_name", "x.osim"}}, 400)["key"], "osim_text");
-  EXPECT_EQ(call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"side", "both"}}, 400)["key"], "side");
-  EXPECT_EQ(call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"knee", "../../etc/passwd"}}, 400)["key"], "knee");
-  EXPECT_EQ(call(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"shank_mass_kg", -1}}, 400)["key"], "shank_mass_kg");
+  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"file_name", "x.osim"}}, 400)["key"], "osim_text");
+  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"side", "both"}}, 400)["key"], "side");
+  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"knee", "../../etc/passwd"}}, 400)["key"], "knee");
+  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"shank_mass_kg", -1}}, 400)["key"], "shank_mass_kg");
 }
 
 TEST(ServeReport, IsTheSweepsSelfContainedReport) {
   const Json request = {{"participant", "p1"}, {"lowering_step_m", 0.05}};
-  const Json j = call(&ServeApi::report, request);
-  const Json sweep = call(&ServeApi::sweep, request);
+  const Json j = callServeApi(&ServeApi::report, request);
+  const Json sweep = callServeApi(&ServeApi::sweep, request);
   EXPECT_EQ(j["file_name"], "P1-sweep-report.html");
   const std::string html = j["html"];
   EXPECT_THAT(html, HasSubstr("<svg"));
@@ -116,8 +108,8 @@ TEST(ServeReport, IsTheSweepsSelfContainedReport) {
 // one simulateSwing gives with that mass (the sweep's options), and differs from the plain
 // sweep's by far more than the integrator's 0.1 ms.
 TEST(ServeSweep, WithAnAddedMassShowsTheLegWithIt) {
-  const Json plain = call(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}});
-  const Json heavy = call(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}, {"added_mass_kg", 1.0},
+  const Json plain = callServeApi(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}});
+  const Json heavy = callServeApi(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}, {"added_mass_kg", 1.0},
                                              {"added_mass_position_m", 0.25}});
   EXPECT_EQ(heavy["added_mass_kg"], 1.0);
   const Participant p = loadParticipant(kSource + "/participants/p1.yaml");
@@ -142,7 +134,7 @@ const Json kTuneRequest = {{"participant", "p1"},
                                       {{"key", "knee_effects.model_scale"}, {"min", 0.5}, {"max", 8}, {"log_scale", true}}}}};
 
 TEST(ServeTune, IsSwingsimTunesResultForTheSameKnobs) {
-  const Json j = call(&ServeApi::tune, kTuneRequest);
+  const Json j = callServeApi(&ServeApi::tune, kTuneRequest);
   const auto dir = std::filesystem::temp_directory_path() / ("ServeTune-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string study = (dir / "tune.yaml").string();
@@ -161,9 +153,9 @@ TEST(ServeTune, IsSwingsimTunesResultForTheSameKnobs) {
 }
 
 TEST(ServeTune, ItsSettingSwingsAsTheSimulateCallShowsIt) {
-  const Json j = call(&ServeApi::tune, kTuneRequest);
-  const Json before = call(&ServeApi::simulate, {{"participant", "p1"}});
-  const Json after = call(&ServeApi::simulate, {{"participant", "p1"},
+  const Json j = callServeApi(&ServeApi::tune, kTuneRequest);
+  const Json before = callServeApi(&ServeApi::simulate, {{"participant", "p1"}});
+  const Json after = callServeApi(&ServeApi::simulate, {{"participant", "p1"},
                                                 {"lowering_m", j["knobs"][0]["value"]},
                                                 {"knee_settings", {{"knee_effects.model_scale", j["knobs"][1]["value"]}}}});
   EXPECT_EQ(after["swing_time_s"].get<double>(), j["swing_time_s"].get<double>());
@@ -187,7 +179,7 @@ TEST(ServeTune, StopsAtTheBudgetAndSaysSo) {
 }
 
 TEST(ServeTune, RefusesBadKnobsAndTargetsByTheirKey) {
-  const auto refuse = [](Json body) { return call(&ServeApi::tune, body, 400)["key"].get<std::string>(); };
+  const auto refuse = [](Json body) { return callServeApi(&ServeApi::tune, body, 400)["key"].get<std::string>(); };
   Json none = kTuneRequest;
   none.erase("knobs");
   EXPECT_EQ(refuse(none), "knobs");
