@@ -169,8 +169,10 @@ std::optional<AddedMass> readAddedMassArguments(const py::object& mass, const py
   if (mass.is_none() != below.is_none())
     throw py::type_error(function + ": added_mass_kg and added_mass_below_knee_m: give both or neither");
   if (mass.is_none()) return std::nullopt;
-  return AddedMass{readNumberArgument(mass, function + ": added_mass_kg", checkPositive),
-                   readNumberArgument(below, function + ": added_mass_below_knee_m", checkPositive)};
+  // As the command line's --add-mass KG@M: neither negative (0 kg adds nothing; 0 m is at the knee).
+  const auto notNegative = [](double v) { return v >= 0 ? std::string() : std::string("expected a value >= 0"); };
+  return AddedMass{readNumberArgument(mass, function + ": added_mass_kg", notNegative),
+                   readNumberArgument(below, function + ": added_mass_below_knee_m", notNegative)};
 }
 
 std::string readTextArgument(const py::handle& value, const std::string& where) {

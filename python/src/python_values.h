@@ -53,8 +53,8 @@ std::string readChoiceArgument(const pybind11::handle& value, const std::string&
 bool readFlagArgument(const pybind11::handle& value, const std::string& where);
 
 /// An added shank mass from its two arguments, added_mass_kg and added_mass_below_knee_m,
-/// both positive (InputError) or both None (TypeError for one alone), `function` naming the
-/// call ("export_osim()").
+/// both >= 0 as the command line's --add-mass (InputError) or both None (TypeError for one
+/// alone), `function` naming the call ("export_osim()").
 std::optional<AddedMass> readAddedMassArguments(const pybind11::object& mass, const pybind11::object& below, const std::string& function);
 
 /// An argument as a path: a str or an os.PathLike giving one (TypeError naming `where`).

@@ -17,7 +17,8 @@ class KneeModelKnobs {
   /// Reads the model file (checked by loading it once). Throws InputError.
   explicit KneeModelKnobs(const std::string& path);
   /// A knee model from its YAML text (an upload), `path` naming it in messages and as the
-  /// model's path (relative paths in it resolve against its folder). Throws InputError.
+  /// model's path (knee model files name no other file, so nothing is read there). Throws
+  /// InputError.
   static KneeModelKnobs fromText(const std::string& text, const std::string& path);
 
   /// The model as the file gives it, no key set.

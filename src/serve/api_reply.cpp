@@ -14,14 +14,14 @@ ApiReply replyError(int status, const std::string& message) {
     const auto at = message.find(key + ": ");
     error["message"] = key.empty() || at == std::string::npos ? message : message.substr(at);
   }
-  return {status, error.dump()};
+  return {status, error.dump(-1, ' ', false, Json::error_handler_t::replace)};  // a message with bad UTF-8 still answers
 }
 
 }  // namespace
 
 ApiReply answerOrError(const std::function<Json()>& answer) {
   try {
-    return {200, answer().dump()};
+    return {200, answer().dump(-1, ' ', false, Json::error_handler_t::replace)};
   } catch (const Json::parse_error&) {
     return replyError(400, "request: expected a JSON object");
   } catch (const InputError& e) {

@@ -94,17 +94,14 @@ std::string formatShippedKneeList(const ShippedFiles& files) {
 
 const std::string kUploadedKneeName = "upload-knee.yaml";
 
-// An upload's knee_model as ../models/NAME.yaml of a shipped model (or, with a knee upload,
-// that upload's name), and no measured thigh file: the server reads no path an upload gives.
-// True if knee_model was rewritten.
+// An upload's knee_model as ../models/NAME.yaml of a shipped model (with a knee upload it is
+// not read, so not checked), and no measured thigh file: the server reads no path an upload
+// gives. True if knee_model was rewritten.
 bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files, bool kneeUploaded) {
   if (root["thigh_kinematics"])
     throw InputError("thigh_kinematics: expected none in an uploaded participant (swingsim serve reads no file an upload "
                      "names; use drive: hip_moment) (got a thigh_kinematics entry)");
-  if (kneeUploaded) {
-    root["knee_model"] = "../models/" + kUploadedKneeName;  // a name only: the knee comes from the upload's text
-    return true;
-  }
+  if (kneeUploaded) return false;  // its knee_model is a name only: the knee comes from the knee upload's text
   if (!root["knee_model"] || !root["knee_model"].IsScalar()) return false;  // the loader says what is missing
   std::string name = root["knee_model"].Scalar();
   const std::string prefix = "../models/", suffix = ".yaml";

@@ -25,6 +25,8 @@ struct ServeLimits {
   double maxSwingWallSeconds = 5.0;      ///< s of wall-clock time one swing may take
   int maxSweepPoints = 41;               ///< lowerings of one sweep (0 to 0.2 m in 5 mm steps)
   double maxTuneWallSeconds = 30;        ///< s of one tuning; then it stops with the best setting so far
+  long maxTuneSwings = 3000;             ///< swings of one tuning (P1 over 2 knobs takes ~500); then the same
+  int maxConcurrentTunes = 2;            ///< tunings at once (the pool has 4 threads: the page's swings keep 2)
 };
 
 /// The participant keys the form edits (YAML key paths, in the file's units).

@@ -1,5 +1,6 @@
 // swingsim serve's OpenSim calls (serve/serve_api.h): an uploaded .osim made a participant
 // by import-osim's sequence, and the page's leg exported as export-osim and simulate write it.
+#include <algorithm>
 #include <optional>
 
 #include "core/input_error.h"
@@ -29,24 +30,28 @@ std::optional<double> readOptionalPositive(const Json& body, const std::string& 
   return v.get<double>();
 }
 
-// The upload's file name for messages: its last path part, at most 100 characters, no control characters.
+// The upload's file name for messages: its last path part, at most 100 bytes cut at a UTF-8
+// character's start, control characters as '_'.
 std::string readUploadLabel(const Json& body) {
   std::string label = body.contains("file_name") && body["file_name"].is_string() ? body["file_name"].get<std::string>() : "";
   label = label.substr(label.find_last_of("/\\") == std::string::npos ? 0 : label.find_last_of("/\\") + 1);
   for (char& c : label)
     if (static_cast<unsigned char>(c) < 0x20) c = '_';
-  return label.empty() ? "upload.osim" : label.substr(0, 100);
+  std::size_t end = std::min<std::size_t>(label.size(), 100);
+  while (end > 0 && end < label.size() && (static_cast<unsigned char>(label[end]) & 0xC0) == 0x80) --end;  // not inside a character
+  return end == 0 ? "upload.osim" : label.substr(0, end);
 }
 
 }  // namespace
 
 ApiReply ServeApi::importOsim(const std::string& body) const {
-  return answerOrError([&] {
+  return hideServerPaths(answerOrError([&] {
     const Json json = readRequestBody(body);
     if (!json.is_object() || !json.contains("osim_text") || !json["osim_text"].is_string())
       throw InputError("osim_text: expected the text of an OpenSim model file (.osim)");
     OsimImportOptions o;
     o.side = readSide(json);
+    if (json.contains("knee") && !json["knee"].is_string()) throw InputError("knee: expected a shipped knee model's name (got " + json["knee"].dump() + ")");
     o.kneeModelPath = files_.findKneePath(json.value("knee", std::string("damping-table-default")));
     o.shankMass = readOptionalPositive(json, "shank_mass_kg");
     o.footMass = readOptionalPositive(json, "foot_mass_kg");
@@ -54,11 +59,11 @@ ApiReply ServeApi::importOsim(const std::string& body) const {
     const ImportedParticipantYaml imported =
         importOsimParticipantText(json["osim_text"].get<std::string>(), readUploadLabel(json), o, files_.getParticipantsDir());
     return Json{{"participant_yaml", imported.text}, {"name", imported.name}};
-  });
+  }));
 }
 
 ApiReply ServeApi::exportOsim(const std::string& body) const {
-  return answerOrError([&] {
+  return hideServerPaths(answerOrError([&] {
     const Json json = readRequestBody(body);
     const LegRequest request = readLegRequest(json);
     const char side = readSide(json);
@@ -74,7 +79,7 @@ ApiReply ServeApi::exportOsim(const std::string& body) const {
                 {"osim_text", osim},
                 {"sto_file_name", stem + ".sto"},
                 {"sto_text", formatTrajectorySto(r.trajectory, stem, side)}};
-  });
+  }));
 }
 
 }  // namespace swingsim

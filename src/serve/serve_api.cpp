@@ -173,6 +173,14 @@ LegSweep runLegSweep(const Json& json, const ShippedFiles& files, const ServeLim
 
 ServeApi::ServeApi(ShippedFiles files, ServeLimits limits) : files_(std::move(files)), limits_(limits) {}
 
+ApiReply ServeApi::hideServerPaths(ApiReply reply) const {
+  for (const std::string& dir : files_.getDataDirSpellings()) {
+    const std::string prefix = dir + "/";
+    for (auto at = reply.body.find(prefix); at != std::string::npos; at = reply.body.find(prefix, at)) reply.body.erase(at, prefix.size());
+  }
+  return reply;
+}
+
 ApiReply ServeApi::listFiles() const {
   return reply({{"participants", files_.getParticipantNames()},
                 {"knee_models", files_.getKneeNames()},
@@ -186,9 +194,10 @@ ApiReply ServeApi::listFiles() const {
 }
 
 ApiReply ServeApi::describeParticipant(const std::string& body) const {
-  return answerOrError([&] {
-    const Leg leg = loadLeg(readLegRequest(readRequestBody(body)), files_, limits_);
-    const Participant& p = leg.participant;
+  return hideServerPaths(answerOrError([&] {
+    Leg leg = loadLeg(readLegRequest(readRequestBody(body)), files_, limits_);
+    Participant& p = leg.participant;
+    p.kneeModelPath = leg.knee.path;  // the export names the knee in use (chosen or uploaded), as the knee export is named
     const std::string participantYaml = formatParticipantYaml(p, files_.getParticipantsDir());
     KneeModelSpec spec = leg.knee.spec;
     if (spec.name.empty()) spec.name = leg.knee.name;
@@ -201,11 +210,11 @@ ApiReply ServeApi::describeParticipant(const std::string& body) const {
                 {"participant_yaml", participantYaml},
                 {"knee_yaml", formatKneeModelYaml(spec)},
                 {"knee_states", readKneeStates(formatKneeModelYaml(spec))}};
-  });
+  }));
 }
 
 ApiReply ServeApi::simulate(const std::string& body) const {
-  return answerOrError([&] {
+  return hideServerPaths(answerOrError([&] {
     const LegRequest request = readLegRequest(readRequestBody(body));
     Leg leg = loadLeg(request, files_, limits_);
     const double hipHeight = calcHipHeight(leg.participant);
@@ -222,22 +231,22 @@ ApiReply ServeApi::simulate(const std::string& body) const {
     json["hip_height_m"] = hipHeight;
     json["trajectory"] = makeTrajectorySamples(r.trajectory);
     return json;
-  });
+  }));
 }
 
 ApiReply ServeApi::sweep(const std::string& body) const {
-  return answerOrError([&] {
+  return hideServerPaths(answerOrError([&] {
     const LegSweep run = runLegSweep(readRequestBody(body), files_, limits_);
     return makeSweepJson(run.study, run.results, run.added);
-  });
+  }));
 }
 
 ApiReply ServeApi::report(const std::string& body) const {
-  return answerOrError([&] {
+  return hideServerPaths(answerOrError([&] {
     const LegSweep run = runLegSweep(readRequestBody(body), files_, limits_);
     const auto files = makeSweepReport(run.study, run.results);
     return Json{{"file_name", run.study.name + "-report.html"}, {"html", files.at("report.html")}};
-  });
+  }));
 }
 
 }  // namespace swingsim

@@ -4,7 +4,9 @@
 // and Python do (loaders, makeSwingSetup, simulateSwing, runSweep, the report's JSON and SVG)
 // and has no physics of its own. Bad input is 400 with {"error", "key", "message"}: the
 // loaders' `key: expected (got V)` text and the key, for the page to show beside its field;
-// a swing that fails (RunError) is 422 {"error"}. Every call is safe from several threads.
+// a swing that fails (RunError) is 422 {"error"}. No answer names the server's data folder.
+// Every call is safe from several threads.
+#include <atomic>
 #include <string>
 
 #include "serve/api_reply.h"
@@ -51,7 +53,8 @@ class ServeApi {
   /// "targets": {"swing_time_s" (default the sound limb's), "peak_knee_flexion_deg": [min,
   /// max] (default [60, 90]), "min_toe_clearance_m" (default 0.08)}): the setting that brings
   /// the swing time to the target within the hard limits (swingsim tune's method, 24 start
-  /// points, at most 10 s of polish, 30 s in all, then the best so far with "interrupted"):
+  /// points, at most 10 s of polish, 30 s or 3000 swings in all, then the best so far with
+  /// "interrupted"; 503 while limits.maxConcurrentTunes others run):
   /// {"knobs": [{"key", "value", "at_range_end"}], "targets", "feasible", "interrupted",
   /// "identifiable", "identifiability", "evaluations", "seconds", "swing_time_s"}.
   ApiReply tune(const std::string& body) const;
@@ -59,8 +62,13 @@ class ServeApi {
   const ServeLimits& getLimits() const { return limits_; }
 
  private:
+  /// `reply` with the server's data folder taken out of every path in it ("<data>/models/x.yaml"
+  /// -> "models/x.yaml"): no answer shows where the server's files are.
+  ApiReply hideServerPaths(ApiReply reply) const;
+
   ShippedFiles files_;
   ServeLimits limits_;
+  mutable std::atomic<int> tunesRunning_{0};
 };
 
 }  // namespace swingsim

@@ -40,6 +40,22 @@ ShippedFiles::ShippedFiles(const std::string& dataDir)
       participantNames_(listYamlStems(participantsDir_)),
       kneeNames_(listYamlStems(modelsDir_)) {}
 
+std::vector<std::string> ShippedFiles::getDataDirSpellings() const {
+  const fs::path given = fs::path(participantsDir_).parent_path();
+  std::vector<std::string> spellings;
+  std::string absolute = fs::absolute(given).lexically_normal().string();
+  if (absolute.size() > 1 && absolute.back() == '/') absolute.pop_back();
+  spellings.push_back(absolute);
+  std::error_code error;
+  const fs::path canonical = fs::canonical(given, error);
+  if (!error) spellings.push_back(canonical.string());
+  if (given.is_absolute()) spellings.push_back(given.string());
+  // Longest first, so a longer spelling goes before a shorter one inside it; never "/" itself.
+  std::sort(spellings.begin(), spellings.end(), [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  spellings.erase(std::remove_if(spellings.begin(), spellings.end(), [](const std::string& d) { return d.size() <= 1; }), spellings.end());
+  return spellings;
+}
+
 std::string ShippedFiles::findParticipantPath(const std::string& name, const std::string& key) const {
   return findIn(participantNames_, participantsDir_, name, key, "a shipped participant");
 }

@@ -24,6 +24,10 @@ class ShippedFiles {
   /// The knee model folder (participants name models as ../models/NAME.yaml).
   const std::string& getModelsDir() const { return modelsDir_; }
   const std::string& getParticipantsDir() const { return participantsDir_; }
+  /// The folder holding participants/ and models/ as absolute paths (as given when absolute,
+  /// made absolute, and with links resolved; longest first; never "/"): the server's own
+  /// location, which answers never show (ServeApi hides it).
+  std::vector<std::string> getDataDirSpellings() const;
 
  private:
   std::string participantsDir_, modelsDir_;

@@ -2,6 +2,7 @@
 // sound limb's swing time within a peak-flexion window and a toe-clearance limit, by the
 // same tuning `swingsim tune` runs (sweep/knee_tuning.h, study/tuning_model.h), under the
 // server's budget.
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -22,7 +23,7 @@ constexpr double kTuneMaxSeconds = 10;   // s of polish
 // (KneeModelKnobs::checkKey: its value then gets the knee loader's checks).
 void checkTuneKnobKey(const Json& knob, const KneeModelKnobs& knee) {
   const std::string key = knob.is_object() && knob.contains("key") && knob["key"].is_string() ? knob["key"].get<std::string>() : "";
-  if (key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob) return;
+  if (isLegTuningKnob(key)) return;
   const std::string problem = key.empty() ? "no key" : knee.checkKey(key);
   if (!problem.empty())
     throw InputError("knobs: expected {key, min, max} with a key of lowering_m, added_mass_kg, added_mass_below_knee_m or a "
@@ -46,6 +47,8 @@ std::vector<TuningKnob> readTuneKnobs(const Json& body, const KneeModelKnobs& kn
     knob.key = k["key"].get<std::string>();
     knob.lower = readFinite(k.value("min", Json()), knob.key + ".min");
     knob.upper = readFinite(k.value("max", Json()), knob.key + ".max");
+    if (k.contains("log_scale") && !k["log_scale"].is_boolean())
+      throw InputError(knob.key + ".log_scale: expected true or false (got " + k["log_scale"].dump() + ")");
     knob.logScale = k.value("log_scale", false);
     if (!(knob.lower < knob.upper)) throw InputError(knob.key + ": expected min below max (got " + k.dump() + ")");
     if (knob.logScale && !(knob.lower > 0)) throw InputError(knob.key + ": expected min > 0 on a log scale (got " + k.dump() + ")");
@@ -65,7 +68,9 @@ std::vector<TuningTarget> readTuneTargets(const Json& body, const Participant& p
     throw InputError("sound_limb_swing_time_s: expected the sound limb's swing time, s, to tune toward (got none: give it in "
                      "the form, or a swing_time_s target)");
   time.lower = time.upper = given.is_null() ? *p.soundLimbSwingTime : readFinite(given, "swing_time_s");
-  if (!(time.lower > 0 && time.lower < 3)) throw InputError("swing_time_s: expected 0 to 3 s (got " + formatNumber(time.lower) + ")");
+  if (!(time.lower > 0 && time.lower < p.swingEnd.timeLimit))
+    throw InputError("swing_time_s: expected 0 to the swing's time limit, " + formatNumber(p.swingEnd.timeLimit) + " s (got " +
+                     formatNumber(time.lower) + ")");
   time.scale = tuningTargetScale(TuningQuantity::kSwingTime);
   TuningTarget flexion{TuningQuantity::kPeakKneeFlexion, 60 * kDegToRad, 90 * kDegToRad, true, 1,
                        tuningTargetScale(TuningQuantity::kPeakKneeFlexion)};
@@ -79,30 +84,6 @@ std::vector<TuningTarget> readTuneTargets(const Json& body, const Participant& p
                          tuningTargetScale(TuningQuantity::kMinToeClearance)};
   if (targets.contains("min_toe_clearance_m")) clearance.lower = readFinite(targets["min_toe_clearance_m"], "min_toe_clearance_m");
   return {time, flexion, clearance};
-}
-
-// Each knob at both ends of its range (the others at their lower ends) through the knee
-// model's loader and the leg's geometry, as a tuning study's knobs are checked: a range the
-// leg or the knee file refuses is a 400 naming the knob, not a tuning of failed swings.
-void checkKnobEnds(const TuningModel& model, const std::vector<TuningKnob>& knobs) {
-  const double maxLowering = calcMaxLowering(model.participant());
-  std::vector<double> values;
-  for (const TuningKnob& k : knobs) values.push_back(k.lower);
-  for (std::size_t i = 0; i < knobs.size(); ++i) {
-    const TuningKnob& k = knobs[i];
-    if (k.key == kLoweringKnob && !(k.lower >= 0 && k.upper <= maxLowering))
-      throw InputError(k.key + ": expected a range within 0 to " + formatNumber(maxLowering) + " m, this leg's largest lowering (got " +
-                       formatNumber(k.lower) + " to " + formatNumber(k.upper) + ")");
-    for (const double end : {k.lower, k.upper}) {
-      std::vector<double> at = values;
-      at[i] = end;
-      try {
-        model.at(at);
-      } catch (const InputError& e) {
-        throw InputError(k.key + ": expected a range the knee model accepts (got " + formatNumber(end) + ": " + e.what() + ")");
-      }
-    }
-  }
 }
 
 // A target's value in the page's units (s, deg, m, deg/s).
@@ -130,7 +111,15 @@ Json makeTuneJson(const TuningResult& r, double seconds) {
 }  // namespace
 
 ApiReply ServeApi::tune(const std::string& body) const {
-  return answerOrError([&] {
+  // At most limits_.maxConcurrentTunes at once: the others are told to come back.
+  struct Slot {
+    std::atomic<int>& running;
+    ~Slot() { --running; }
+  } slot{tunesRunning_};
+  if (++tunesRunning_ > limits_.maxConcurrentTunes)
+    return {503, Json{{"error", "tune: " + std::to_string(limits_.maxConcurrentTunes) +
+                                    " tunings are under way on this server (its budget); try again when one ends"}}.dump()};
+  return hideServerPaths(answerOrError([&] {
     const auto start = std::chrono::steady_clock::now();
     const Json json = readRequestBody(body);
     const LegRequest request = readLegRequest(json);
@@ -138,7 +127,7 @@ ApiReply ServeApi::tune(const std::string& body) const {
     const std::vector<TuningKnob> knobs = readTuneKnobs(json, leg.kneeFile);
     const std::vector<TuningTarget> targets = readTuneTargets(json, leg.participant);
     const TuningModel model(std::move(leg.participant), leg.kneeFile, knobs, request.lowering, request.added, request.kneeSettings);
-    checkKnobEnds(model, knobs);
+    model.checkKnobRanges();  // a range the leg or the knee file refuses is a 400 naming the knob, before any swing
     SwingOptions options = makeTuningSwingOptions();
     options.maxWallSeconds = limits_.maxSwingWallSeconds;
     TuningSettings settings;
@@ -147,8 +136,9 @@ ApiReply ServeApi::tune(const std::string& body) const {
     settings.maxSeconds = kTuneMaxSeconds;
     const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     volatile bool stop = false;
+    std::atomic<long> swings{0};
     const TuningEvaluator evaluate = [&](const std::vector<double>& x) {
-      if (stop || seconds() > limits_.maxTuneWallSeconds) {
+      if (stop || seconds() > limits_.maxTuneWallSeconds || swings.fetch_add(1) >= limits_.maxTuneSwings) {
         stop = true;
         throw RunError("stopped at swingsim serve's budget");
       }
@@ -157,10 +147,10 @@ ApiReply ServeApi::tune(const std::string& body) const {
     TuningResult r = runKneeTuning(knobs, targets, evaluate, settings, {}, &stop);
     r.interrupted = r.interrupted || stop;
     if (!r.best.ran)
-      throw RunError("tune: stopped at swingsim serve's budget of " + formatNumber(limits_.maxTuneWallSeconds) +
-                     " s before any swing ran");
+      throw RunError("tune: stopped at swingsim serve's budget (" + formatNumber(limits_.maxTuneWallSeconds) + " s, " +
+                     std::to_string(limits_.maxTuneSwings) + " swings) before any swing ran");
     return makeTuneJson(r, seconds());
-  });
+  }));
 }
 
 }  // namespace swingsim

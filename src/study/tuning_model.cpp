@@ -1,12 +1,11 @@
 #include "study/tuning_model.h"
 
+#include "core/input_error.h"
 #include "study/tuning_study.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim {
 namespace {
-
-bool isLegKnob(const std::string& key) { return key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob; }
 
 // The fixed settings' keys and values, then the knee knobs' (a fixed key that is also a knob is left out).
 std::pair<std::vector<std::string>, std::vector<double>> listFixedSettings(const std::vector<std::pair<std::string, double>>& fixed,
@@ -24,6 +23,18 @@ std::pair<std::vector<std::string>, std::vector<double>> listFixedSettings(const
 }
 
 }  // namespace
+
+bool isLegTuningKnob(const std::string& key) { return key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob; }
+
+void checkLegAtKnob(const Participant& p, double lowering, AddedMass added, const std::string& key, double value) {
+  if (key == kLoweringKnob) lowering = value;
+  if (key == kAddedMassKnob) added.mass = value;
+  if (key == kAddedMassDistanceKnob) added.distanceBelowKnee = value;
+  if (added.mass < 0) throw InputError("an added mass must not be negative");
+  if (added.distanceBelowKnee < 0) throw InputError("an added mass's position must not be negative (it is below the knee)");
+  if (lowering < 0) throw InputError("a lowering must not be negative (the knee axis moves down from the standard location)");
+  calcLegGeometry(p, lowering, added);
+}
 
 TuningModel::TuningModel(Participant participant, KneeModelKnobs knee, std::vector<TuningKnob> knobs, double lowering,
                          AddedMass added, std::vector<std::pair<std::string, double>> fixedKneeSettings)
@@ -44,13 +55,32 @@ TunedSetting TuningModel::at(const std::vector<double>& values) const {
     if (key == kLoweringKnob) t.lowering = values[i];
     else if (key == kAddedMassKnob) t.added.mass = values[i];
     else if (key == kAddedMassDistanceKnob) t.added.distanceBelowKnee = values[i];
-    if (isLegKnob(key)) continue;
+    if (isLegTuningKnob(key)) continue;
     keys.push_back(key);
     kneeValues.push_back(values[i]);
     kneeKnob = true;
   }
   t.knee = kneeKnob ? kneeFile_.make(keys, kneeValues) : base_;
   return t;
+}
+
+void TuningModel::checkKnobRanges() const {
+  std::vector<double> values;
+  for (const TuningKnob& k : knobs_) values.push_back(k.lower);
+  for (std::size_t i = 0; i < knobs_.size(); ++i) {
+    const TuningKnob& k = knobs_[i];
+    for (const double end : {k.lower, k.upper}) {
+      std::vector<double> at = values;
+      at[i] = end;
+      try {
+        if (isLegTuningKnob(k.key)) checkLegAtKnob(participant_, lowering_, added_, k.key, end);
+        else this->at(at);
+      } catch (const InputError& e) {
+        throw InputError(k.key + ": expected a range the " + (isLegTuningKnob(k.key) ? "leg" : "knee model") + " accepts (got " +
+                         formatNumber(end) + ": " + e.what() + ")");
+      }
+    }
+  }
 }
 
 SwingResult TuningModel::simulate(const std::vector<double>& values, const SwingOptions& options) const {

@@ -13,6 +13,15 @@
 
 namespace swingsim {
 
+/// Whether a knob is the leg's (kLoweringKnob, kAddedMassKnob, kAddedMassDistanceKnob), not a
+/// key of the knee file.
+bool isLegTuningKnob(const std::string& key);
+
+/// The leg at `value` of leg knob `key`, the lowering and added mass otherwise `lowering` and
+/// `added`: throws InputError where the leg geometry refuses it (a negative mass or lowering,
+/// a shank too short, a mass below the shank's end).
+void checkLegAtKnob(const Participant& p, double lowering, AddedMass added, const std::string& key, double value);
+
 /// The knee model, lowering and added mass at knob values.
 struct TunedSetting {
   KneeModel knee;
@@ -29,7 +38,13 @@ class TuningModel {
   TuningModel(Participant participant, KneeModelKnobs knee, std::vector<TuningKnob> knobs, double lowering,
               AddedMass added, std::vector<std::pair<std::string, double>> fixedKneeSettings = {});
 
+  /// The knee model (the fixed settings, then the knee knobs' values), lowering and added
+  /// mass at `values` (one a knob). Throws InputError where the knee loader refuses a value.
   TunedSetting at(const std::vector<double>& values) const;
+  /// Each knob at both ends of its range, the others at their lower ends, through the knee
+  /// loader or the leg geometry (checkLegAtKnob): throws InputError naming the knob and the
+  /// end, so no point of the ranges is refused later.
+  void checkKnobRanges() const;
   /// One swing at `values`; safe from several threads. Throws RunError, InputError.
   SwingResult simulate(const std::vector<double>& values, const SwingOptions& options) const;
   const Participant& participant() const { return participant_; }

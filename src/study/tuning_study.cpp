@@ -8,30 +8,17 @@
 #include "io/knee_model_knobs.h"
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
+#include "study/tuning_model.h"
 
 namespace swingsim {
 namespace {
-
-bool isLegKnob(const std::string& key) { return key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob; }
-
-// The leg at `value` of a leg knob (the others at the study's fixed values): throws InputError.
-void tryLegKnob(const Participant& p, const TuningStudy& s, const std::string& key, double value) {
-  AddedMass added = s.added;
-  double lowering = s.lowering;
-  if (key == kLoweringKnob) lowering = value;
-  if (key == kAddedMassKnob) added.mass = value;
-  if (key == kAddedMassDistanceKnob) added.distanceBelowKnee = value;
-  if (added.mass < 0) throw InputError("an added mass must not be negative");
-  if (lowering < 0) throw InputError("a lowering must not be negative (the knee axis moves down from the standard location)");
-  calcLegGeometry(p, lowering, added);
-}
 
 // One knob: key, range, log_scale; tried at both range ends (through the knee model loader
 // or the leg geometry), so no point of the range is refused later.
 TuningKnob readKnob(YamlMap& m, const Participant& p, const KneeModelKnobs& knee, const TuningStudy& s) {
   TuningKnob k;
   k.key = m.getString("key");
-  if (!isLegKnob(k.key)) {
+  if (!isLegTuningKnob(k.key)) {
     const std::string problem = knee.checkKey(k.key);
     if (!problem.empty())
       m.fail("key", "expected " + std::string(kLoweringKnob) + ", " + kAddedMassKnob + ", " + kAddedMassDistanceKnob +
@@ -47,8 +34,8 @@ TuningKnob readKnob(YamlMap& m, const Participant& p, const KneeModelKnobs& knee
   if (k.logScale && k.lower <= 0) m.fail("log_scale", "a log-scaled knob needs a range above 0", formatNumber(k.lower));
   for (double end : range) {
     try {
-      if (isLegKnob(k.key))
-        tryLegKnob(p, s, k.key, end);
+      if (isLegTuningKnob(k.key))
+        checkLegAtKnob(p, s.lowering, s.added, k.key, end);
       else
         knee.make({k.key}, {end});
     } catch (const InputError& e) {

@@ -5,6 +5,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "core/output_files.h"
 #include "serve/serve_api.h"
 #include "serve_api_calls.h"
@@ -53,6 +56,35 @@ TEST(KneeUpload, ABadValueIsNamedByKeyWithoutAServerPath) {
   EXPECT_THAT(bad["key"].get<std::string>(), HasSubstr("model_scale"));
   EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", "{ not: [yaml"}}, 400)["key"], "knee_yaml");
   EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", text}, {"knee", "passive-knee"}}, 400)["key"], "knee_yaml");
+}
+
+// No answer shows where the server's files are: the data folder is taken out of every path,
+// in errors (a knee setting or a tuning range the uploaded knee refuses) and in results (the
+// report names the knee file it used).
+TEST(KneeUpload, NoAnswerNamesTheServersFolder) {
+  const std::string knee = readShipped("models/damping-table-default.yaml");
+  const std::vector<std::pair<ApiReply (ServeApi::*)(const std::string&) const, Json>> requests = {
+      {&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", knee}, {"knee_settings", {{"knee_effects.model_scale", -2}}}}},
+      {&ServeApi::tune, {{"participant", "p1"}, {"knee_yaml", knee},
+                         {"knobs", {{{"key", "knee_effects.model_scale"}, {"min", -1}, {"max", 2}}}}}},
+      {&ServeApi::report, {{"participant", "p1"}, {"lowering_step_m", 0.1}}},
+      {&ServeApi::sweep, {{"participant", "p1"}, {"knee_yaml", knee}, {"lowering_step_m", 0.1}}},
+  };
+  for (const auto& [call, body] : requests) {
+    const ApiReply r = (serve_test::shippedServeApi().*call)(body.dump());
+    EXPECT_THAT(r.body, Not(HasSubstr(kSource))) << body.dump().substr(0, 200);
+  }
+  const ApiReply report = serve_test::shippedServeApi().report(requests[2].second.dump());
+  EXPECT_THAT(report.body, HasSubstr("models/damping-table-default.yaml"));
+}
+
+// A long file name of multi-byte characters is cut at a character's start: the refusal is a
+// 400 with valid JSON, not a 500.
+TEST(KneeUpload, ALongNonAsciiFileNameIsStillAClearRefusal) {
+  std::string name;
+  for (int k = 0; k < 80; ++k) name += "\xc3\xa9";  // e acute, 2 bytes each
+  const Json j = callServeApi(&ServeApi::importOsim, {{"osim_text", "<not xml"}, {"file_name", name + ".osim"}}, 400);
+  EXPECT_THAT(j["error"].get<std::string>(), HasSubstr("\xc3\xa9:1:"));
 }
 
 TEST(KneeUpload, TheTuningSetsItsNumbers) {

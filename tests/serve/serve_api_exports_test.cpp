@@ -175,7 +175,40 @@ TEST(ServeTune, StopsAtTheBudgetAndSaysSo) {
   const ApiReply r = tight.tune(kTuneRequest.dump());
   const Json j = Json::parse(r.body);
   EXPECT_EQ(r.status, 422) << r.body;
-  EXPECT_THAT(j["error"].get<std::string>(), HasSubstr("budget of 0 s before any swing ran"));
+  EXPECT_THAT(j["error"].get<std::string>(), HasSubstr("budget (0 s, 3000 swings) before any swing ran"));
+}
+
+// Stopped by the swing budget after the start set (24 swings), the best so far comes back
+// marked interrupted, and it is a setting that was simulated: /api/simulate at its knobs
+// gives its swing time.
+TEST(ServeTune, StoppedItReturnsTheBestSimulatedSoFar) {
+  ServeLimits limits;
+  limits.maxTuneSwings = 30;
+  const ServeApi tight(ShippedFiles(SWINGSIM_SOURCE_DIR), limits);
+  const ApiReply r = tight.tune(kTuneRequest.dump());
+  ASSERT_EQ(r.status, 200) << r.body;
+  const Json j = Json::parse(r.body);
+  EXPECT_TRUE(j["interrupted"].get<bool>());
+  EXPECT_LE(j["evaluations"].get<int>(), 31);
+  const Json swing = callServeApi(&ServeApi::simulate, {{"participant", "p1"},
+                                                        {"lowering_m", j["knobs"][0]["value"]},
+                                                        {"knee_settings", {{"knee_effects.model_scale", j["knobs"][1]["value"]}}}});
+  EXPECT_EQ(swing["swing_time_s"].get<double>(), j["swing_time_s"].get<double>());
+}
+
+TEST(ServeTune, RefusesBeyondItsConcurrentTunings) {
+  ServeLimits limits;
+  limits.maxConcurrentTunes = 0;
+  const ServeApi none(ShippedFiles(SWINGSIM_SOURCE_DIR), limits);
+  const ApiReply r = none.tune(kTuneRequest.dump());
+  EXPECT_EQ(r.status, 503);
+  EXPECT_THAT(r.body, HasSubstr("tunings are under way"));
+  limits.maxConcurrentTunes = 1;  // the slot is given back: one at a time runs, twice in a row
+  const ServeApi one(ShippedFiles(SWINGSIM_SOURCE_DIR), limits);
+  Json cheap = kTuneRequest;
+  cheap["knobs"] = {{{"key", "lowering_m"}, {"min", 0}, {"max", 0.02}}};
+  EXPECT_EQ(one.tune(cheap.dump()).status, 200);
+  EXPECT_EQ(one.tune(cheap.dump()).status, 200);
 }
 
 TEST(ServeTune, RefusesBadKnobsAndTargetsByTheirKey) {
@@ -200,13 +233,21 @@ TEST(ServeTune, RefusesBadKnobsAndTargetsByTheirKey) {
   badScale["knobs"][1]["log_scale"] = false;
   EXPECT_EQ(refuse(badScale), "knee_effects.model_scale");
   Json noSound = kTuneRequest;
-  noSound["edits"] = {{"sound_limb_swing_time_s", ""}};
   std::string p1 = readFile(kSource + "/participants/p1.yaml");
   p1 = p1.substr(0, p1.find("sound_limb_swing_time_s"));
-  noSound.erase("edits");
   noSound.erase("participant");
   noSound["participant_yaml"] = p1;
   EXPECT_EQ(refuse(noSound), "sound_limb_swing_time_s");
+  Json badMass = kTuneRequest;
+  badMass["knobs"][0] = {{"key", "added_mass_kg"}, {"min", -5}, {"max", 2}};
+  EXPECT_EQ(refuse(badMass), "added_mass_kg");
+  Json farMass = kTuneRequest;
+  farMass["added_mass_kg"] = 1.0;
+  farMass["knobs"][0] = {{"key", "added_mass_below_knee_m"}, {"min", 0}, {"max", 3}};
+  EXPECT_EQ(refuse(farMass), "added_mass_below_knee_m");
+  Json badFlag = kTuneRequest;
+  badFlag["knobs"][1]["log_scale"] = "yes";
+  EXPECT_EQ(refuse(badFlag), "knee_effects.model_scale.log_scale");
 }
 
 }  // namespace

@@ -198,6 +198,21 @@ function buildForm(fields) {
   }
 }
 
+// The knee's own settings on its sliders (model_scale, the states' damping), their steps as
+// built (a tuning sets 'any'), and the tuning's knob list; no result of another leg or knee stays.
+function showKneeSettings(json) {
+  const scale = json.knee_settings['knee_effects.model_scale'];
+  $('scale').max = Math.max(3, Math.ceil(scale));
+  $('scale').min = Math.min(0.2, scale);
+  $('scale').step = 0.05;
+  $('scale').value = scale;
+  $('scale').dispatchEvent(new Event('show'));
+  for (const [id, step] of [['lowering', 0.005], ['mass', 0.05], ['position', 0.01]]) $(id).step = step;
+  buildKneeStates(json.knee_states);
+  buildTuneKnobs();
+  for (const id of ['sweep-summary', 'sweep-figure', 'tune-summary']) $(id).textContent = '';
+}
+
 // Loads the participant (shipped or uploaded): its form, its knee, then one swing.
 async function loadParticipant() {
   const body = legRequest();
@@ -208,11 +223,9 @@ async function loadParticipant() {
   if (answer.status !== 200) { showError(answer.json); return; }
   state.edits = {};
   state.knee = null;
-  for (const id of ['sweep-summary', 'sweep-figure', 'tune-summary']) $(id).textContent = '';  // another leg's
   state.yaml = { participant: answer.json.participant_yaml, knee: answer.json.knee_yaml, name: answer.json.name };
   buildForm(answer.json.fields);
-  buildKneeStates(answer.json.knee_states);
-  buildTuneKnobs();
+  showKneeSettings(answer.json);
   $('knee').value = state.kneeYaml === null ? answer.json.knee_model : '';
   $('lowering').max = Math.min(0.2, Math.floor(answer.json.max_lowering_m * 200) / 200);
   simulateNow();
@@ -228,20 +241,24 @@ async function loadKnee() {
   await describeKnee();
 }
 
+// A knee model file: kept (and sent with every request) only once the server has read it.
 async function uploadKnee() {
   const file = $('knee-upload').files[0];
   if (!file) return;
-  state.kneeYaml = await file.text();
+  const kneeYaml = await file.text();
+  const answer = await post('api/participant', { ...legRequest(), knee: undefined, knee_yaml: kneeYaml, knee_settings: {} });
+  if (answer.status !== 200) { showError(answer.json); $('knee-upload').value = ''; return; }
+  state.kneeYaml = kneeYaml;
   state.knee = null;
   await describeKnee();
 }
 
 async function describeKnee() {
   $('knee-states').textContent = '';
-  const answer = await post('api/participant', legRequest());
+  const body = { ...legRequest(), knee_settings: {} };  // the new knee's own settings
+  const answer = await post('api/participant', body);
   if (answer.status !== 200) { showNoSwing(answer.json); return; }
-  buildKneeStates(answer.json.knee_states);
-  buildTuneKnobs();
+  showKneeSettings(answer.json);
   state.inputTime = performance.now();
   simulateNow();
 }
@@ -340,7 +357,18 @@ async function runTune() {
     knobs.push({ key, min: Number(slider.min), max: Number(slider.max), log_scale: key === 'knee_effects.model_scale' });
   }
   $('tune-summary').textContent = 'tuning...';
-  const answer = await post('api/tune', { ...legRequest(), knobs });
+  $('tune-button').disabled = true;
+  const asked = JSON.stringify(legRequest());
+  let answer;
+  try {
+    answer = await post('api/tune', { ...legRequest(), knobs });
+  } finally {
+    $('tune-button').disabled = false;
+  }
+  if (JSON.stringify(legRequest()) !== asked) {  // the leg or a knob moved meanwhile: this answer is for another leg
+    $('tune-summary').textContent = 'the leg changed while tuning; tune again';
+    return;
+  }
   if (answer.status !== 200) { $('tune-summary').textContent = ''; showError(answer.json); return; }
   const t = answer.json;
   const value = (k) => (k.key === 'lowering_m' ? `${(k.value * 1000).toFixed(1)} mm` : `${Number(k.value.toPrecision(4))}`);
@@ -364,6 +392,7 @@ function bindSlider(id, digits, unit) {
   const slider = $(id);
   const show = () => { $(`${id}-value`).textContent = `${Number(slider.value).toFixed(digits)}${unit}`; };
   slider.addEventListener('input', () => { show(); scheduleSimulate(); });
+  slider.addEventListener('show', show);  // a value set by the page, not the user: shown, no request
   show();
 }
 
