@@ -174,6 +174,13 @@ KneeModel loadRequestKnee(const LegRequest& request, const KneeModelKnobs& knobs
 
 }  // namespace
 
+SwingOptions makeServeSwingOptions(const ServeLimits& limits, ServeSwing kind) {
+  SwingOptions options;
+  options.maxWallSeconds = limits.maxSwingWallSeconds;
+  options.trackImpactEnergy = kind == ServeSwing::kAsSimulate;
+  return options;
+}
+
 const std::vector<std::string>& editableParticipantKeys() {
   static const std::vector<std::string> kKeys = [] {
     std::vector<std::string> keys = {"height_m", "body_mass_kg"};

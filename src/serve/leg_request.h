@@ -14,6 +14,7 @@
 #include "model/knee_model.h"
 #include "model/leg_parameters.h"
 #include "serve/shipped_files.h"
+#include "swing/swing_simulation.h"
 
 namespace swingsim {
 
@@ -28,6 +29,13 @@ struct ServeLimits {
   long maxTuneSwings = 3000;             ///< swings of one tuning (P1 over 2 knobs takes ~500); then the same
   int maxConcurrentTunes = 2;            ///< tunings at once (the pool has 4 threads: the page's swings keep 2)
 };
+
+/// The options of the server's swings under `limits` (the wall-clock budget of one swing):
+/// kAsSimulate those of `swingsim simulate` and `swingsim tune` (the energy bookkeeping on:
+/// its extra states move the integrator's steps, so a swing shown is simulate's to the last
+/// bit), kAsSweep those of `swingsim sweep`.
+enum class ServeSwing { kAsSimulate, kAsSweep };
+SwingOptions makeServeSwingOptions(const ServeLimits& limits, ServeSwing kind);
 
 /// The participant keys the form edits (YAML key paths, in the file's units).
 const std::vector<std::string>& editableParticipantKeys();

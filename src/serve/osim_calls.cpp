@@ -71,9 +71,7 @@ ApiReply ServeApi::exportOsim(const std::string& body) const {
     const std::string stem = makeTrajectoryFileStem(leg.participant.name, request.lowering);
     const std::optional<AddedMass> added = request.added.mass > 0 ? std::optional<AddedMass>(request.added) : std::nullopt;
     const std::string osim = formatParticipantOsim(leg.participant, leg.knee, OsimExportOptions{side, request.lowering, added}, stem + ".sto");
-    SwingOptions options;
-    options.maxWallSeconds = limits_.maxSwingWallSeconds;
-    options.trackImpactEnergy = true;  // simulate's options, so the .sto is simulate's
+    const SwingOptions options = makeServeSwingOptions(limits_, ServeSwing::kAsSimulate);  // so the .sto is simulate's
     const SwingResult r = simulateSwing(makeSwingSetup(std::move(leg.participant), leg.knee, request.lowering, request.added), options);
     return Json{{"osim_file_name", stem + ".osim"},
                 {"osim_text", osim},

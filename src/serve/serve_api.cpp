@@ -73,11 +73,6 @@ Json makeTrajectorySamples(const SwingTrajectory& tr) {
   return samples;
 }
 
-SwingOptions makeServeSwingOptions(const ServeLimits& limits) {
-  SwingOptions options;
-  options.maxWallSeconds = limits.maxSwingWallSeconds;
-  return options;
-}
 
 // The sweep's lowering grid from the request; refused above the point budget.
 void readSweepGrid(const Json& body, const ServeLimits& limits, SweepStudy& study) {
@@ -156,7 +151,7 @@ LegSweep runLegSweep(const Json& json, const ShippedFiles& files, const ServeLim
   Leg leg = loadLeg(request, files, limits);
   run.study.name = leg.participant.name + "-sweep";
   run.study.includePublishedLowerings = false;
-  run.study.swing = makeServeSwingOptions(limits);
+  run.study.swing = makeServeSwingOptions(limits, ServeSwing::kAsSweep);
   leg.participant.kneeModelPath = leg.knee.path;
   run.study.kneeModels.emplace(leg.knee.path, leg.knee);
   run.study.participants.push_back(std::move(leg.participant));
@@ -219,8 +214,7 @@ ApiReply ServeApi::simulate(const std::string& body) const {
     Leg leg = loadLeg(request, files_, limits_);
     const double hipHeight = calcHipHeight(leg.participant);
     const SwingSetup setup = makeSwingSetup(std::move(leg.participant), leg.knee, request.lowering, request.added);
-    SwingOptions options = makeServeSwingOptions(limits_);
-    options.trackImpactEnergy = true;  // as the command line's simulate: one swing, the bookkeeping is cheap
+    const SwingOptions options = makeServeSwingOptions(limits_, ServeSwing::kAsSimulate);
     const SwingResult r = simulateSwing(setup, options);
     Json json = makeSimulateJson(setup, r);
     json["knee_model"] = stemOf(leg.knee.path);

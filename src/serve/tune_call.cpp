@@ -128,8 +128,7 @@ ApiReply ServeApi::tune(const std::string& body) const {
     const std::vector<TuningTarget> targets = readTuneTargets(json, leg.participant);
     const TuningModel model(std::move(leg.participant), leg.kneeFile, knobs, request.lowering, request.added, request.kneeSettings);
     model.checkKnobRanges();  // a range the leg or the knee file refuses is a 400 naming the knob, before any swing
-    SwingOptions options = makeTuningSwingOptions();
-    options.maxWallSeconds = limits_.maxSwingWallSeconds;
+    const SwingOptions options = makeServeSwingOptions(limits_, ServeSwing::kAsSimulate);  // as swingsim tune's: simulate's
     TuningSettings settings;
     settings.startPoints = kTuneStartPoints;
     settings.jobs = 1;  // one request, one thread: the server's pool serves the others
