@@ -50,6 +50,12 @@ constexpr MeasuredCoverage kMeasured[] = {
      "k_N_per_m and c_Ns_per_m held it in 20 of 20 too (bias +2.4 % and +2.0 %, SD 0.4 % and 0.3 %); each bias is "
      "several SDs (the 2-phase base's phase 2 stands for the truth's phases 2 and 3, whose misfit the hyperextension "
      "switch's transition shares), yet the intervals, half-widths about 30 times the SD, held it"},
+    // The sweep plant, a command a case (20 seeds, 1671 and 1695 s wall at nice 19, load 4-8):
+    //   bash scripts/diagnosis-calibration.sh --seeds 20 --jobs 1 --only sweep/hip_effort (sweep/hip_tempo)
+    // at exponent -1.5 and -15 % per 100 mm, where a table's rows just show them
+    // (tests/identify/sweep_calibration_cases.h).
+    {"hip_effort_adaptation", "exponent", 20, 9, 20, 18, -2.5, 9.3, ""},
+    {"hip_tempo_lowering", "change_per_100mm", 20, 10, 20, 17, -5.3, 16.5, ""},
     // The sweep plant (docs/diagnosis.md, "Why the sweep names almost nothing"): candidates
     // whose hidden sizes no table of swing times can show get no seeds (seeds 0), only why.
     {"knee_friction_scale", "", 0, 0, 0, 0, kNaN, kNaN, kAfterSwingEnd},

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "report/diagnosis_coverage.h"
 #include "report/diagnosis_report.h"
@@ -61,6 +62,27 @@ TEST(SweepCoverageRows, AnAcceptedUnmeasurableCandidateGetsTheLineAndNoCountsInT
   EXPECT_EQ(row["seeds"], 0);
   EXPECT_TRUE(row["bias_percent"].is_null()) << row.dump();
   EXPECT_NE(row["caveat"].get<std::string>().find("moves no swing time"), std::string::npos);
+}
+
+// The candidates the sweep can show, hidden with 20 seeds (docs/diagnosis.md's sweep table),
+// quote their own counts and their own parameter.
+TEST(SweepCoverageRows, TheMeasuredSweepCandidatesQuoteTheirOwnTwentySeeds) {
+  for (const auto& [effect, parameter] : {std::pair<const char*, const char*>{"hip_effort_adaptation", "exponent"},
+                                      {"hip_tempo_lowering", "change_per_100mm"}}) {
+    const auto m = findMeasuredCoverage(effect);
+    ASSERT_TRUE(m.has_value()) << effect;
+    EXPECT_EQ(std::string(m->parameter), parameter);
+    EXPECT_EQ(m->seeds, 20) << effect;
+    EXPECT_LE(m->named, m->seeds) << effect;
+    EXPECT_LE(m->covered, m->scored) << effect;
+    EXPECT_LE(m->scored, m->seeds) << effect;
+    const std::string line = formatMeasuredCoverage(effect);
+    EXPECT_NE(line.find("named first in " + std::to_string(m->named) + " of 20 seeds; the 95 % interval of " +
+                        parameter + " held the truth in " + std::to_string(m->covered) + " of " +
+                        std::to_string(m->scored)),
+              std::string::npos)
+        << line;
+  }
 }
 
 }  // namespace
