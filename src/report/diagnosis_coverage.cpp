@@ -8,13 +8,8 @@ namespace swingsim {
 
 namespace {
 
-// Measured by the calibration study on 2026-11-26, 20 noise seeds a case (1-20), 162 s wall
-// on 2 cores:
-//   bash scripts/diagnosis-calibration.sh --seeds 20 --jobs 2
-// (out/calibration/calibration.csv). Sizes and truths: tests/identify/diagnosis_calibration.h;
-// the table and what it means: docs/diagnosis.md, "How far the intervals can be trusted
-// (calibration)". Re-measure and update together when the diagnosis changes.
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Why a sweep candidate gets no seeds (docs/diagnosis.md, "Why the sweep names almost nothing").
 constexpr const char* kAfterSwingEnd =
     "the sweep cannot measure it: it acts below the knee angle at which a swing ends (friction below 4 deg, the stop "
     "below 0 deg, the swing's end at 6 deg), so it moves no swing time (under 1e-5 ms in the calibration study); a "
@@ -24,6 +19,12 @@ constexpr const char* kTakenByTimeScale =
     "lowerings, which the participant's own hip time scale takes up (0.4-1.0 ms left against 8.8 ms of row noise in "
     "the calibration study); a record of the hip moment or thigh angle could";
 
+// Measured by the calibration study on 2026-11-26, 20 noise seeds a case (1-20), 162 s wall
+// on 2 cores:
+//   bash scripts/diagnosis-calibration.sh --seeds 20 --jobs 2
+// (out/calibration/calibration.csv). Sizes and truths: tests/identify/diagnosis_calibration.h;
+// the table and what it means: docs/diagnosis.md, "How far the intervals can be trusted
+// (calibration)". Re-measure and update together when the diagnosis changes.
 constexpr MeasuredCoverage kMeasured[] = {
     // effect, parameter, seeds, named first, scored, covered, bias %, SD %, caveat
     {"knee_coulomb_friction", "moment_Nm", 20, 20, 20, 20, 5.9, 19.9, ""},
