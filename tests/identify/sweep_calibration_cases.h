@@ -5,7 +5,8 @@
 // rule), each sweep candidate the generator can hide at a stated size away from the files,
 // plus a null, diagnosed as a user's sweep study. As IndependentSweepDiagnosis: every
 // participant at 0-200 mm in 50 mm steps where the truth ends a swing, 20 trials a row with
-// Burkett Table 3's trial-to-trial SD, the truth's hip drive 6 % faster than the files'.
+// Burkett Table 3's trial-to-trial SD; unlike it, the truth's hip drive is 4 % slower than the
+// files' (kSweepTruthTempo).
 #include <unistd.h>
 
 #include <cmath>
