@@ -62,10 +62,13 @@ Json parametersJson(const std::vector<EffectParameter>& parameters) {
 Json coverageJson(const std::vector<std::string>& accepted) {
   Json out = Json::object();
   for (const auto& a : accepted)
-    if (const auto m = findMeasuredCoverage(a))
-      out[a] = {{"parameter", m->parameter}, {"seeds", m->seeds},         {"named_first", m->named},
-                {"scored", m->scored}, {"covered", m->covered}, {"bias_percent", m->biasPercent}, {"sd_percent", m->sdPercent},
+    if (const auto m = findMeasuredCoverage(a)) {
+      // A row without seeds (the sweep cannot measure the effect) has no bias or SD: null.
+      const auto orNull = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+      out[a] = {{"parameter", m->parameter}, {"seeds", m->seeds}, {"named_first", m->named}, {"scored", m->scored},
+                {"covered", m->covered}, {"bias_percent", orNull(m->biasPercent)}, {"sd_percent", orNull(m->sdPercent)},
                 {"caveat", m->caveat}};
+    }
   return out;
 }
 

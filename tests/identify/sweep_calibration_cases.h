@@ -5,7 +5,8 @@
 // rule), each sweep candidate the generator can hide at a stated size away from the files,
 // plus a null, diagnosed as a user's sweep study. As IndependentSweepDiagnosis: every
 // participant at 0-200 mm in 50 mm steps where the truth ends a swing, 20 trials a row with
-// Burkett Table 3's trial-to-trial SD, the truth's hip drive 6 % faster than the files'.
+// Burkett Table 3's trial-to-trial SD; unlike it, the truth's hip drive is 4 % slower than the
+// files' (kSweepTruthTempo).
 #include <unistd.h>
 
 #include <cmath>
@@ -83,14 +84,17 @@ struct SweepHidden {
 
 /// A null and each candidate the generator can hide. Sizes are away from the files (and from
 /// the candidates' starting values), inside each candidate's range
-/// (identify/sweep_effects.cpp) and large enough to move a swing time by a few trial SDs.
+/// (identify/sweep_effects.cpp). The hip effort and hip tempo sizes are the smallest of 1, 1.5
+/// and 2 x the first study's (-1, -0.1) whose RMS change after each participant's mean
+/// (calcSweepEffectSize) reaches twice a row's 8.8 ms noise, where the seed-1 likelihood
+/// ratios put the acceptance threshold (docs/diagnosis.md).
 inline std::vector<SweepHidden> sweepHiddenEffects() {
   using ST = SweepTruth;
   return {
       {"", "", 0, "none (hip drive 4 % slower than the files)", nullptr},
-      {"hip_effort_adaptation", "exponent", -1.0, "exponent -1", [](ST& t) { t.effects.hipEffortExponent = -1.0; }},
-      {"hip_tempo_lowering", "change_per_100mm", -0.1, "time scale -10 % per 100 mm",
-       [](ST& t) { t.effects.timeScaleSlope = -0.1; }},
+      {"hip_effort_adaptation", "exponent", -1.5, "exponent -1.5", [](ST& t) { t.effects.hipEffortExponent = -1.5; }},
+      {"hip_tempo_lowering", "change_per_100mm", -0.15, "time scale -15 % per 100 mm",
+       [](ST& t) { t.effects.timeScaleSlope = -0.15; }},
       // One value: a switch, named or not; its "interval" is the value itself.
       {"com_rule_proportional", "", 0, "COMs proportional to the new lengths",
        [](ST& t) { t.effects.comRule = independent::ComRule::kProportional; }},

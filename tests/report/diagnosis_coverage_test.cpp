@@ -22,7 +22,7 @@ Diagnosis acceptedFriction() {
   return dg;
 }
 
-// Every swing and cylinder candidate the study hid has a row; the sweep's it did not measure.
+// Every swing and cylinder candidate the study hid has a row; a candidate without one has no line.
 TEST(DiagnosisCoverage, EveryMeasuredCandidateHasARow) {
   for (const char* effect : {"knee_coulomb_friction", "knee_viscous_damping", "extension_assist_spring",
                              "toe_off_velocity", "hip_moment_scale", "shank_mass_scale", "below_knee_mass_scale",
@@ -35,8 +35,8 @@ TEST(DiagnosisCoverage, EveryMeasuredCandidateHasARow) {
     EXPECT_LE(m->scored, m->seeds) << effect;
     EXPECT_LE(m->named, m->seeds) << effect;
   }
-  EXPECT_FALSE(findMeasuredCoverage("hip_effort_adaptation").has_value());
-  EXPECT_EQ(formatMeasuredCoverage("hip_effort_adaptation"), "");
+  EXPECT_FALSE(findMeasuredCoverage("com_rule_proportional").has_value());
+  EXPECT_EQ(formatMeasuredCoverage("com_rule_proportional"), "");
 }
 
 TEST(DiagnosisCoverage, TheLineAppearsForAnAcceptedEffect) {
