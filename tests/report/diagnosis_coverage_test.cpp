@@ -35,8 +35,10 @@ TEST(DiagnosisCoverage, EveryMeasuredCandidateHasARow) {
     EXPECT_LE(m->scored, m->seeds) << effect;
     EXPECT_LE(m->named, m->seeds) << effect;
   }
-  EXPECT_FALSE(findMeasuredCoverage("com_rule_proportional").has_value());
-  EXPECT_EQ(formatMeasuredCoverage("com_rule_proportional"), "");
+  EXPECT_FALSE(findMeasuredCoverage("an_effect_never_measured").has_value());
+  EXPECT_EQ(formatMeasuredCoverage("an_effect_never_measured"), "");
+  // The COM rule switch was measured (20 seeds, named in none): its line says why, no counts.
+  EXPECT_NE(formatMeasuredCoverage("com_rule_proportional").find("cannot tell the two COM rules apart"), std::string::npos);
 }
 
 TEST(DiagnosisCoverage, TheLineAppearsForAnAcceptedEffect) {
