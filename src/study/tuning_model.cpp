@@ -22,14 +22,19 @@ std::pair<std::vector<std::string>, std::vector<double>> listFixedSettings(const
   return {keys, values};
 }
 
+// Leg knob `key` at `value` into the lowering or the added mass (another key: nothing).
+void applyLegKnob(const std::string& key, double value, double& lowering, AddedMass& added) {
+  if (key == kLoweringKnob) lowering = value;
+  if (key == kAddedMassKnob) added.mass = value;
+  if (key == kAddedMassDistanceKnob) added.distanceBelowKnee = value;
+}
+
 }  // namespace
 
 bool isLegTuningKnob(const std::string& key) { return key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob; }
 
 void checkLegAtKnob(const Participant& p, double lowering, AddedMass added, const std::string& key, double value) {
-  if (key == kLoweringKnob) lowering = value;
-  if (key == kAddedMassKnob) added.mass = value;
-  if (key == kAddedMassDistanceKnob) added.distanceBelowKnee = value;
+  applyLegKnob(key, value, lowering, added);
   if (added.mass < 0) throw InputError("an added mass must not be negative");
   if (added.distanceBelowKnee < 0) throw InputError("an added mass's position must not be negative (it is below the knee)");
   if (lowering < 0) throw InputError("a lowering must not be negative (the knee axis moves down from the standard location)");
@@ -39,22 +44,19 @@ void checkLegAtKnob(const Participant& p, double lowering, AddedMass added, cons
 TuningModel::TuningModel(Participant participant, KneeModelKnobs knee, std::vector<TuningKnob> knobs, double lowering,
                          AddedMass added, std::vector<std::pair<std::string, double>> fixedKneeSettings)
     : participant_(std::move(participant)), kneeFile_(std::move(knee)), knobs_(std::move(knobs)), lowering_(lowering), added_(added),
-      fixed_(std::move(fixedKneeSettings)) {
-  const auto [keys, values] = listFixedSettings(fixed_, knobs_);
-  base_ = keys.empty() ? kneeFile_.load() : kneeFile_.make(keys, values);
+      fixed_(listFixedSettings(fixedKneeSettings, knobs_)) {
+  base_ = fixed_.first.empty() ? kneeFile_.load() : kneeFile_.make(fixed_.first, fixed_.second);
 }
 
 TunedSetting TuningModel::at(const std::vector<double>& values) const {
   TunedSetting t;
   t.lowering = lowering_;
   t.added = added_;
-  auto [keys, kneeValues] = listFixedSettings(fixed_, knobs_);
+  auto [keys, kneeValues] = fixed_;
   bool kneeKnob = false;
   for (std::size_t i = 0; i < values.size() && i < knobs_.size(); ++i) {
     const std::string& key = knobs_[i].key;
-    if (key == kLoweringKnob) t.lowering = values[i];
-    else if (key == kAddedMassKnob) t.added.mass = values[i];
-    else if (key == kAddedMassDistanceKnob) t.added.distanceBelowKnee = values[i];
+    applyLegKnob(key, values[i], t.lowering, t.added);
     if (isLegTuningKnob(key)) continue;
     keys.push_back(key);
     kneeValues.push_back(values[i]);

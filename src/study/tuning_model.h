@@ -55,7 +55,8 @@ class TuningModel {
   std::vector<TuningKnob> knobs_;
   double lowering_ = 0;
   AddedMass added_;
-  std::vector<std::pair<std::string, double>> fixed_;
+  /// The fixed settings that are not knobs: keys and values, set before the knobs' at every point.
+  std::pair<std::vector<std::string>, std::vector<double>> fixed_;
   KneeModel base_;
 };
 
