@@ -238,29 +238,33 @@ async function loadKnee() {
   state.knee = $('knee').value;
   state.kneeYaml = null;
   $('knee-upload').value = '';
-  await describeKnee();
+  $('knee-states').textContent = '';  // the old knee's states do not belong to this one
+  await describeKnee(showNoSwing);
 }
 
-// A knee model file: kept (and sent with every request) only once the server has read it.
+// A knee model file: kept (and sent with every request) only once the server has read it;
+// a refused one leaves the knee as it was.
 async function uploadKnee() {
   const file = $('knee-upload').files[0];
   if (!file) return;
-  const kneeYaml = await file.text();
-  const answer = await post('api/participant', { ...legRequest(), knee: undefined, knee_yaml: kneeYaml, knee_settings: {} });
-  if (answer.status !== 200) { showError(answer.json); $('knee-upload').value = ''; return; }
-  state.kneeYaml = kneeYaml;
+  const before = { kneeYaml: state.kneeYaml, knee: state.knee };
+  state.kneeYaml = await file.text();
   state.knee = null;
-  await describeKnee();
+  if (await describeKnee(showError)) return;
+  Object.assign(state, before);  // the knee shown stays, with its sliders
+  $('knee-upload').value = '';
 }
 
-async function describeKnee() {
-  $('knee-states').textContent = '';
+// The current knee's sliders from the server, then one swing; false if refused (`showRefusal`
+// shows why).
+async function describeKnee(showRefusal) {
   const body = { ...legRequest(), knee_settings: {} };  // the new knee's own settings
   const answer = await post('api/participant', body);
-  if (answer.status !== 200) { showNoSwing(answer.json); return; }
+  if (answer.status !== 200) { showRefusal(answer.json); return false; }
   showKneeSettings(answer.json);
   state.inputTime = performance.now();
   simulateNow();
+  return true;
 }
 
 function download(name, text, type = 'application/yaml') {
