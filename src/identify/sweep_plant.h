@@ -92,7 +92,14 @@ class SweepPlant final : public DiagnosisPlant {
   /// (`free`: indices of the fitted ones) on the others' rows; the held-out participant is
   /// calibrated on its own standard row and predicted.
   void addHeldOutFolds(const SubsetFit& full, const std::vector<std::size_t>& free, SweepModelParams& fitted,
-                       PlantFit& out) const;
+                       const SweepModelParams& start, PlantFit& out) const;
+  /// One fold's fit of the shared values on `others`: from the full fit's values (`fitted`),
+  /// and again from the values the fit started from (`start`) when those fit the fold better;
+  /// the better of the two.
+  SubsetFit fitFold(const SweepModelParams& fitted, const SweepModelParams& start,
+                    const std::vector<std::size_t>& others) const;
+  /// The sum of squared whitened residuals of `predictions` (by position in `subset`).
+  double calcSubsetRss(const std::vector<std::size_t>& subset, const std::vector<Prediction>& predictions) const;
   /// Participant i's lowered-row residuals (measured - model), whitened (dimensionless).
   std::vector<double> standardized(std::size_t i, const Prediction& p) const;
 

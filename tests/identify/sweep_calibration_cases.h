@@ -35,9 +35,10 @@ struct SweepTruth {
   std::function<void(independent::SweepParticipant&)> participant;
 };
 
-/// The sweep table of `truth` (noise seed `seed`), diagnosed as a user's sweep study over
-/// every sweep candidate, one effect at most.
-inline Diagnosis diagnoseSweep(const SweepTruth& truth, std::uint64_t seed, const std::string& tag) {
+/// The sweep table of `truth` (noise seed `seed`) as a user's sweep study over every sweep
+/// candidate, one effect at most: `use` gets its plant and study while their files exist.
+inline void withSweepCalibrationPlant(const SweepTruth& truth, std::uint64_t seed, const std::string& tag,
+                                      const std::function<void(const DiagnosisPlant&, const DiagnosisStudy&)>& use) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("swingsim-calibration-" + tag + "-" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -69,8 +70,17 @@ inline Diagnosis diagnoseSweep(const SweepTruth& truth, std::uint64_t seed, cons
   }
   const DiagnosisStudy study = loadDiagnosisStudy((dir / "study.yaml").string());
   const auto plant = loadDiagnosisPlant(study, 0);
-  Diagnosis dg = runDiagnosis(*plant, study.settings);
+  use(*plant, study);
   if (!std::getenv("SWINGSIM_KEEP_TEST_FILES")) fs::remove_all(dir);
+}
+
+/// The sweep table of `truth` (noise seed `seed`), diagnosed as a user's sweep study over
+/// every sweep candidate, one effect at most.
+inline Diagnosis diagnoseSweep(const SweepTruth& truth, std::uint64_t seed, const std::string& tag) {
+  Diagnosis dg;
+  withSweepCalibrationPlant(truth, seed, tag, [&](const DiagnosisPlant& plant, const DiagnosisStudy& study) {
+    dg = runDiagnosis(plant, study.settings);
+  });
   return dg;
 }
 
