@@ -217,6 +217,7 @@ CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& curre
   // Cross-validated plants: significant on the training rows of every fold, so the test
   // that counts is the least significant fold's.
   if (!s.foldRss.empty() && s.foldRss.size() == current.foldRss.size() && s.foldResidual.size() == s.foldRss.size()) {
+    c.allRowsPValue = t.p;
     for (std::size_t f = 0; f < s.foldRss.size(); ++f) {
       const LrTest fold = calcLrTest(current.foldRss[f], s.foldRss[f], s.foldResidual[f], dof);
       c.foldPValues.push_back(fold.p);

@@ -49,9 +49,12 @@ struct EffectScore {
   std::vector<double> validationRmse;  ///< per validation file
   /// Cross-validated plants: the held-out RMSE pooled over all folds (NaN otherwise), and
   /// the likelihood-ratio p of each fold's training rows (empty otherwise; pValue is their
-  /// largest, the least significant fold).
+  /// largest, the least significant fold), and the p of the same test on every training row
+  /// (NaN otherwise), which the rule does not use: where the two differ, one participant
+  /// carries the evidence.
   double pooledValidationRmse = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> foldPValues;
+  double allRowsPValue = std::numeric_limits<double>::quiet_NaN();
   double effectiveSamples = 0;         ///< n_eff of its training residual
   double likelihoodRatio = 0;          ///< n_eff ln(RSS_current / RSS_candidate)
   int dof = 0;                         ///< added parameters (a profiled grid parameter counts one)

@@ -88,6 +88,7 @@ Json candidateJson(const CandidateScore& c, int step, const std::vector<std::str
   // fold's p (the rule needs every fold significant).
   if (std::isfinite(c.pooledValidationRmse)) j["pooled_validation_rmse"] = c.pooledValidationRmse;
   if (!c.foldPValues.empty()) j["fold_p_values"] = c.foldPValues;
+  if (std::isfinite(c.allRowsPValue)) j["all_rows_p_value"] = c.allRowsPValue;
   j["train_rmse"] = c.trainRmse;
   j["delta_bic"] = c.deltaBic;
   j["likelihood_ratio"] = c.likelihoodRatio;

@@ -56,6 +56,10 @@ struct SeedOutcome {
   /// The hidden candidate's first-step score, which says which part of the acceptance rule
   /// held or failed: its likelihood ratio, Bonferroni p, and the rule's other tests.
   double firstLr = NAN, firstPAdjusted = NAN;
+  /// Cross-validated plants (the sweep): the p of each leave-one-out fold and of every row
+  /// (unadjusted); the rule takes the largest fold's.
+  std::string firstFoldP;
+  double firstAllRowsP = NAN;
   bool firstSignificant = false, firstBic = false, firstValidation = false, firstPhysical = false;
   /// The final model's own fitted parameters, "name=value" separated by ";" (the cylinder's
   /// switch constants after a joint refit): where a spread comes from.
@@ -242,6 +246,9 @@ inline SeedOutcome readOutcome(const CalibrationCase& c, const Diagnosis& dg) {
       if (first.effect == c.effect && first.notApplicable.empty()) {
         o.firstLr = first.likelihoodRatio;
         o.firstPAdjusted = first.pAdjusted;
+        o.firstAllRowsP = first.allRowsPValue;
+        for (std::size_t f = 0; f < first.foldPValues.size(); ++f)
+          o.firstFoldP += (f ? ";" : "") + std::to_string(first.foldPValues[f]);
         o.firstSignificant = first.significant;
         o.firstBic = first.bicImproves;
         o.firstValidation = first.validationImproves;

@@ -102,7 +102,8 @@ int main(int argc, char** argv) try {
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   csv << "plant,effect,size,truth,parameter,seeds,named,other_named,scored,covered,not_wald,bias,sd,seconds\n";
   seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note,"
-           "first_lr,first_p_adjusted,first_significant,first_bic,first_validation,first_physical,final_parameters\n";
+           "first_lr,first_p_adjusted,first_significant,first_bic,first_validation,first_physical,final_parameters,"
+           "first_all_rows_p,first_fold_p\n";
   const auto start = std::chrono::steady_clock::now();
   for (const auto& c : calibrationCases()) {
     if (!selected(o.only, c.plant + "/" + caseName(c))) continue;
@@ -121,7 +122,8 @@ int main(int argc, char** argv) try {
       seeds << c.plant << "," << caseName(c) << "," << o.first + i << "," << r.namedFirst << "," << r.otherNamed << ","
             << r.estimate << "," << r.lower << "," << r.upper << ",\"" << r.intervalNote << "\"," << r.firstLr << ","
             << r.firstPAdjusted << "," << r.firstSignificant << "," << r.firstBic << "," << r.firstValidation << ","
-            << r.firstPhysical << ",\"" << r.finalParameters << "\"\n";
+            << r.firstPhysical << ",\"" << r.finalParameters << "\"," << r.firstAllRowsP << ",\"" << r.firstFoldP
+            << "\"\n";
     }
     seeds.flush();
     std::cerr << c.plant << "/" << caseName(c) << ": " << secs << " s\n";
