@@ -276,6 +276,11 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
       verdict += std::string(" ") + kNoInformation;
     } else if (!c.accepted) {
       if (!c.significant) verdict += " not significant;";
+      // Cross-validated (the sweep): the rule's p is the least significant fold's. Where the
+      // all-rows test is far stronger, one left-out participant carries the evidence.
+      if (!c.significant && !c.foldPValues.empty() && std::isfinite(c.allRowsPValue) && c.allRowsPValue < c.pValue)
+        verdict += " (its least significant fold p " + fmt("%.2g", c.pValue) + "; all participants' rows p " +
+                   fmt("%.2g", c.allRowsPValue) + ", unadjusted);";
       if (!c.bicImproves) verdict += " BIC worse;";
       if (!c.validationImproves) verdict += " validation did not fall enough;";
       if (!c.physical) verdict += " wrong sign;";

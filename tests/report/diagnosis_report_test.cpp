@@ -143,6 +143,25 @@ TEST(DiagnosisText, StepLineAndTablePrintThePooledTrainingRmseAndDefineMeAndTheW
   EXPECT_NE(formatComparisonTable(c).find("ME: the largest |measured - model|"), std::string::npos);
 }
 
+// A sweep candidate that the folds reject but all rows support: the ranking gives both p.
+TEST(DiagnosisText, TheRankingGivesTheAllRowsPBesideTheFoldThatFails) {
+  EffectScore c;
+  c.effect = "hip_tempo_lowering";
+  c.validationRmse = {9.0};
+  c.foldPValues = {1e-5, 3e-4, 0.8};
+  c.pValue = 0.8;
+  c.pAdjusted = 1.0;
+  c.allRowsPValue = 6.9e-4;
+  c.significant = false;
+  const std::string table = formatCandidateRanking({&c}, "ms", 1);
+  EXPECT_NE(table.find("not significant; (its least significant fold p 0.8; all participants' rows p 0.00069, unadjusted);"),
+            std::string::npos)
+      << table;
+  // Without folds (swing, cylinder) nothing is added.
+  c.foldPValues.clear();
+  EXPECT_EQ(formatCandidateRanking({&c}, "ms", 1).find("all participants"), std::string::npos);
+}
+
 // A candidate without information: the ranking says so and gives no other reason.
 TEST(DiagnosisText, TheRankingSaysACandidateWithoutInformationHasNone) {
   EffectScore silent;
