@@ -60,6 +60,11 @@ struct SeedOutcome {
   /// (unadjusted); the rule takes the largest fold's.
   std::string firstFoldP;
   double firstAllRowsP = NAN;
+  /// The smallest all-rows p of any first-step candidate times the number scored (the
+  /// Bonferroni p the rule would use without folds), and whose: on a null, how close the
+  /// all-rows test comes to a false acceptance.
+  double firstBestAllRowsPAdjusted = NAN;
+  std::string firstBestAllRows;
   bool firstSignificant = false, firstBic = false, firstValidation = false, firstPhysical = false;
   /// The final model's own fitted parameters, "name=value" separated by ";" (the cylinder's
   /// switch constants after a joint refit): where a spread comes from.
@@ -241,6 +246,18 @@ inline SeedOutcome readOutcome(const CalibrationCase& c, const Diagnosis& dg) {
   SeedOutcome o;
   o.namedFirst = !c.effect.empty() && !dg.accepted.empty() && dg.accepted.front() == c.effect;
   o.otherNamed = !dg.accepted.empty() && !o.namedFirst;
+  if (!dg.steps.empty()) {
+    int scored = 0;
+    for (const auto& first : dg.steps.front().candidates) {
+      if (!first.notApplicable.empty()) continue;
+      ++scored;
+      if (std::isfinite(first.allRowsPValue) && !(first.allRowsPValue >= o.firstBestAllRowsPAdjusted)) {
+        o.firstBestAllRowsPAdjusted = first.allRowsPValue;
+        o.firstBestAllRows = first.effect;
+      }
+    }
+    o.firstBestAllRowsPAdjusted = std::min(1.0, o.firstBestAllRowsPAdjusted * scored);
+  }
   if (!dg.steps.empty())
     for (const auto& first : dg.steps.front().candidates)
       if (first.effect == c.effect && first.notApplicable.empty()) {

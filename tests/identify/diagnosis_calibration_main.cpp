@@ -103,7 +103,7 @@ int main(int argc, char** argv) try {
   csv << "plant,effect,size,truth,parameter,seeds,named,other_named,scored,covered,not_wald,bias,sd,seconds\n";
   seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note,"
            "first_lr,first_p_adjusted,first_significant,first_bic,first_validation,first_physical,final_parameters,"
-           "first_all_rows_p,first_fold_p\n";
+           "first_all_rows_p,first_fold_p,best_all_rows_p_adjusted,best_all_rows\n";
   const auto start = std::chrono::steady_clock::now();
   for (const auto& c : calibrationCases()) {
     if (!selected(o.only, c.plant + "/" + caseName(c))) continue;
@@ -123,7 +123,7 @@ int main(int argc, char** argv) try {
             << r.estimate << "," << r.lower << "," << r.upper << ",\"" << r.intervalNote << "\"," << r.firstLr << ","
             << r.firstPAdjusted << "," << r.firstSignificant << "," << r.firstBic << "," << r.firstValidation << ","
             << r.firstPhysical << ",\"" << r.finalParameters << "\"," << r.firstAllRowsP << ",\"" << r.firstFoldP
-            << "\"\n";
+            << "\"," << r.firstBestAllRowsPAdjusted << "," << r.firstBestAllRows << "\n";
     }
     seeds.flush();
     std::cerr << c.plant << "/" << caseName(c) << ": " << secs << " s\n";
