@@ -42,9 +42,11 @@ constexpr MeasuredCoverage kMeasured[] = {
     // Truth drawn with seed 42 (on seed 7's the one training speed hides the slow latch: named 3 of 20).
     {"switch_delay", "latch_rate_per_s", 20, 19, 19, 15, 0.04, 2.7,
      "the latch rate's Wald interval from the joint refit held the truth in 15 of 19 seeds (79 %), not 95 %: the "
-     "estimates scatter by about 1.4 times the standard error it implies (a profile-likelihood interval is narrower "
-     "still: 11 of 19); the candidate's profiled time constant is conditional on switch constants held while it is "
-     "scored and held the truth in none"},
+     "estimates scatter by about 1.4 times the standard error it implies, read it as that much too narrow. The "
+     "scatter comes with the switch widths and xhy that one training record leaves loose (held at their truths, the "
+     "interval held it in 20 of 20), and no interval built around the estimate sees it (profile likelihood 11 of "
+     "19; a sandwich covariance and a parametric bootstrap of the fitted model widened none); the candidate's "
+     "profiled time constant is conditional on switch constants held while it is scored and held the truth in none"},
     // A 4-phase truth from a 2-phase base: Chien Table 1's phase 4 (f -488.12 N, k 563313 N/m,
     // c 14672.2 N s/m) is the candidate's law term for term inside hyperextension.
     {"hyperextension_phase", "f_N", 20, 20, 20, 20, -4.4, 0.80,
