@@ -121,9 +121,10 @@ inline Diagnosis diagnoseSwing(const independent::SwingTruth& truth, const indep
 }
 
 /// The bench records of `truth` (noise seed `seed`), diagnosed from a `basePhases` Mauch model
-/// with the switch constants fitted: train normal, validate slow and fast.
+/// with the switch constants fitted: train on the walking speeds `trainGaits` (Chien's
+/// normal), validate on the others.
 inline Diagnosis diagnoseCylinder(const independent::MauchTruth& truth, std::uint64_t seed, const std::string& tag,
-                                  int basePhases = 4) {
+                                  int basePhases = 4, const std::vector<std::string>& trainGaits = {"normal"}) {
   const fs::path dir = scratchDir(tag);
   fs::create_directories(dir);
   std::vector<BenchData> train, validate;
@@ -131,7 +132,8 @@ inline Diagnosis diagnoseCylinder(const independent::MauchTruth& truth, std::uin
   for (const auto& g : independent::chienGaits()) {
     const std::string path = (dir / (g.name + ".csv")).string();
     independent::writeCsv(independent::generate(truth, g, kBenchNoiseN, s++), path);
-    (g.name == "normal" ? train : validate).push_back(readBenchCsv(path, 20));
+    const bool training = std::find(trainGaits.begin(), trainGaits.end(), g.name) != trainGaits.end();
+    (training ? train : validate).push_back(readBenchCsv(path, 20));
   }
   fs::remove_all(dir);
   MauchCylinderParams start;
@@ -162,12 +164,13 @@ inline CalibrationCase swingCase(std::string effect, std::string parameter, doub
 // `hide` adds the effect; diagnosed from a `basePhases` model.
 inline CalibrationCase cylinderCase(std::string effect, std::string parameter, double truthValue, std::string size,
                                     std::function<void(independent::MauchTruth& truth)> hide, int basePhases = 4,
-                                    std::uint64_t truthSeed = kCylinderTruthSeed) {
+                                    std::uint64_t truthSeed = kCylinderTruthSeed,
+                                    std::vector<std::string> trainGaits = {"normal"}) {
   CalibrationCase c{"cylinder", std::move(effect), std::move(parameter), truthValue, std::move(size), {}};
-  c.diagnose = [hide, basePhases, truthSeed](std::uint64_t seed, const std::string& tag) {
+  c.diagnose = [hide, basePhases, truthSeed, trainGaits](std::uint64_t seed, const std::string& tag) {
     auto truth = independent::drawTruth(4, truthSeed);
     if (hide) hide(truth);
-    return diagnoseCylinder(truth, seed, tag, basePhases);
+    return diagnoseCylinder(truth, seed, tag, basePhases, trainGaits);
   };
   return c;
 }
@@ -218,6 +221,11 @@ inline std::vector<CalibrationCase> calibrationCases() {
       // speed, half the drawn truths hide a slow latch: IndependentCylinderDiagnosis).
       cylinderCase("switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms, truth drawn with seed 42",
                    [](MT& t) { t.latchRate = 40.0; }, 4, 42),
+      // The same truth trained on two speeds (normal and fast, validated on slow): one record
+      // leaves the switch widths and xhy loose and the latch rate's interval too narrow
+      // (docs/diagnosis.md); a second speed pins them.
+      cylinderCase("switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms, truth drawn with seed 42, trained on normal and fast",
+                   [](MT& t) { t.latchRate = 40.0; }, 4, 42, {"normal", "fast"}),
       // A 4-phase truth diagnosed from a 2-phase base: inside hyperextension both give the 4th
       // phase's law alone (the base phases are gated off by S8), so the candidate's f, k, c are
       // Chien Table 1's phase 4 term for term; outside it the base's phase 2 stands for the
