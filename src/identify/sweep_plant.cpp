@@ -319,8 +319,12 @@ void SweepPlant::addHeldOutFolds(const SubsetFit& full, const std::vector<std::s
       fold = fitFold(fitted, start, others);
     }
     ResidualSegments segments;
-    for (std::size_t o = 0; o < others.size(); ++o) segments.push_back(standardized(others[o], fold.predictions[o]));
-    out.foldRss.push_back(calcSubsetRss(others, fold.predictions));
+    double rss = 0;
+    for (std::size_t o = 0; o < others.size(); ++o) {
+      segments.push_back(standardized(others[o], fold.predictions[o]));
+      for (double z : segments.back()) rss += z * z;
+    }
+    out.foldRss.push_back(rss);
     out.foldResidual.push_back(segments);
     const std::string& name = participants_[inModel_[s]].nominal.participant.name;
     std::vector<double> errors;

@@ -277,7 +277,8 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
     } else if (!c.accepted) {
       if (!c.significant) verdict += " not significant;";
       // Cross-validated (the sweep): the rule's p is the least significant fold's. Where the
-      // all-rows test is far stronger, one left-out participant carries the evidence.
+      // all-rows test is stronger, the left-out participant of that fold carries evidence the
+      // others do not show.
       if (!c.significant && !c.foldPValues.empty() && std::isfinite(c.allRowsPValue) && c.allRowsPValue < c.pValue)
         verdict += " (its least significant fold p " + fmt("%.2g", c.pValue) + "; all participants' rows p " +
                    fmt("%.2g", c.allRowsPValue) + ", unadjusted);";

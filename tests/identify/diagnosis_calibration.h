@@ -263,22 +263,19 @@ inline SeedOutcome readOutcome(const CalibrationCase& c, const Diagnosis& dg) {
         o.firstBestAllRowsPAdjusted = first.allRowsPValue;
         o.firstBestAllRows = first.effect;
       }
+      if (first.effect != c.effect) continue;
+      o.firstLr = first.likelihoodRatio;
+      o.firstPAdjusted = first.pAdjusted;
+      o.firstAllRowsP = first.allRowsPValue;
+      for (std::size_t f = 0; f < first.foldPValues.size(); ++f)
+        o.firstFoldP += (f ? ";" : "") + std::to_string(first.foldPValues[f]);
+      o.firstSignificant = first.significant;
+      o.firstBic = first.bicImproves;
+      o.firstValidation = first.validationImproves;
+      o.firstPhysical = first.physical;
     }
     o.firstBestAllRowsPAdjusted = std::min(1.0, o.firstBestAllRowsPAdjusted * scored);
   }
-  if (!dg.steps.empty())
-    for (const auto& first : dg.steps.front().candidates)
-      if (first.effect == c.effect && first.notApplicable.empty()) {
-        o.firstLr = first.likelihoodRatio;
-        o.firstPAdjusted = first.pAdjusted;
-        o.firstAllRowsP = first.allRowsPValue;
-        for (std::size_t f = 0; f < first.foldPValues.size(); ++f)
-          o.firstFoldP += (f ? ";" : "") + std::to_string(first.foldPValues[f]);
-        o.firstSignificant = first.significant;
-        o.firstBic = first.bicImproves;
-        o.firstValidation = first.validationImproves;
-        o.firstPhysical = first.physical;
-      }
   for (const auto& p : dg.finalParameters) {
     std::ostringstream v;
     v.precision(6);
@@ -317,7 +314,7 @@ inline std::vector<SeedOutcome> runCase(const CalibrationCase& c, std::uint64_t 
       const std::string tag = c.plant + "-" + (c.effect.empty() ? "null" : c.effect) + "-" + std::to_string(seed);
       try {
         // Each record of a study takes the next noise seed: spaced so no two studies share one.
-        out[static_cast<std::size_t>(i)] = readOutcome(c, c.diagnose(seed * 7919, tag));
+        out[static_cast<std::size_t>(i)] = readOutcome(c, c.diagnose(seed * kNoiseSeedFactor, tag));
       } catch (const std::exception& e) {
         out[static_cast<std::size_t>(i)].otherNamed = true;  // a failed run counts against the method
         out[static_cast<std::size_t>(i)].intervalNote = std::string("run failed: ") + e.what();

@@ -26,6 +26,8 @@ namespace swingsim::calibration {
 
 constexpr int kSweepTrials = 20;          // trials a row (Burkett: 5; 20 as IndependentSweepDiagnosis)
 constexpr double kSweepTruthTempo = 1.04;  // the truth's hip time scale over the files'
+/// The calibration's seed k draws its records' noise with seed k x this (runCase).
+constexpr std::uint64_t kNoiseSeedFactor = 7919;
 
 /// What the truth hides: the generator's hidden effects, its model (the files keep the
 /// default SweepModel) and a change to the participants after their files are written.

@@ -26,8 +26,8 @@ TEST(SweepFoldFit, ACandidateStartedAtItsNeutralValueFitsNoFoldWorseThanTheModel
   SWINGSIM_RELEASE_ONLY();
   calibration::SweepTruth truth;
   truth.effects.timeScaleSlope = -0.15;  // the calibration study's hip_tempo_lowering case
-  // Calibration seed 15 (diagnosis_calibration draws noise seed 7919 x the seed).
-  calibration::withSweepCalibrationPlant(truth, 15 * 7919, "fold-fit", [](const DiagnosisPlant& plant, const DiagnosisStudy&) {
+  // Calibration seed 15.
+  calibration::withSweepCalibrationPlant(truth, 15 * calibration::kNoiseSeedFactor, "fold-fit", [](const DiagnosisPlant& plant, const DiagnosisStudy&) {
     const PlantFit base = plant.fit(*plant.baseModel());
     for (const char* name : {"hip_tempo_lowering", "hip_effort_adaptation"}) {
       SCOPED_TRACE(name);
@@ -50,7 +50,7 @@ TEST(SweepFoldFit, TheScoreKeepsTheAllRowsTestBesideTheFoldsTheRuleUses) {
   SWINGSIM_RELEASE_ONLY();
   calibration::SweepTruth truth;
   truth.effects.timeScaleSlope = -0.15;
-  calibration::withSweepCalibrationPlant(truth, 15 * 7919, "fold-p", [](const DiagnosisPlant& plant, const DiagnosisStudy& study) {
+  calibration::withSweepCalibrationPlant(truth, 15 * calibration::kNoiseSeedFactor, "fold-p", [](const DiagnosisPlant& plant, const DiagnosisStudy& study) {
     const PlantFit base = plant.fit(*plant.baseModel());
     const CandidateScore c =
         scoreCandidate(plant, base, findEffect(PlantKind::kSweep, "hip_tempo_lowering")->id, study.settings, nullptr);
