@@ -120,14 +120,20 @@ void printSwingOutcome(const SwingResult& r, const Participant& p) {
     printTrialEnd(*r.trialEnd, p);
   else
     std::printf("  swing time          %.4f s\n", r.swingTime);
+  if (const std::optional<double> entry = calcFirstZoneEntry(r))
+    std::printf("  knee first in zone  %.4f s (continuous in the settings; the swing end waits until the knee stays in "
+                "the zone)\n", *entry);
   if (r.peakKneeFlexion)
     std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion->flexion * kRadToDeg,
                 r.peakKneeFlexion->time);
   else
     std::printf("  peak knee flexion   none (no knee peak above the zone of stability)\n");
-  if (r.bounce)
-    std::printf("  bounce              yes: the knee left the zone of stability %d time%s, up to %s\n", r.bounces,
-                r.bounces == 1 ? "" : "s", fmtOrNone("%.1f deg", r.bounceHeight, kRadToDeg).c_str());
+  if (r.bounce && r.bounceHeight)
+    std::printf("  bounce              yes: the knee left the zone of stability %d time%s, up to %.1f deg\n", r.bounces,
+                r.bounces == 1 ? "" : "s", *r.bounceHeight * kRadToDeg);
+  else if (r.bounce)  // left the zone; the run ended before the rebound peaked, or the peak fell in one step
+    std::printf("  bounce              yes: the knee left the zone of stability %d time%s (its peak was not "
+                "recorded)\n", r.bounces, r.bounces == 1 ? "" : "s");
   else
     std::printf("  bounce              no\n");
 }

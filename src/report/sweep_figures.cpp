@@ -46,15 +46,26 @@ SvgPlot makeSwingTimeFigure(const ParticipantSweep& ps, const ParticipantUncerta
   plot.setTitle(ps.name + ": swing time vs knee-axis lowering (cf. Burkett 2004 Fig. 4)");
   plot.setXLabel("knee-axis lowering below standard (m)");
   plot.setYLabel("swing time (s)");
+  // The grid and both sides of each jump, the line broken at every jump (never drawn across one).
+  std::vector<std::pair<double, double>> samples;
+  for (const auto& pt : ps.points) samples.emplace_back(pt.lowering, pt.ok ? pt.result.swingTime : kNaN);
+  for (const SwingTimeJump& j : ps.jumps) {
+    samples.emplace_back(j.below.lowering, j.below.swingTime);
+    samples.emplace_back(j.calcLowering(), kNaN);
+    samples.emplace_back(j.above.lowering, j.above.swingTime);
+  }
+  std::stable_sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<double> x, y;
-  for (const auto& pt : ps.points) {
-    x.push_back(pt.lowering);
-    y.push_back(pt.ok ? pt.result.swingTime : kNaN);
+  for (const auto& [lowering, time] : samples) {
+    x.push_back(lowering);
+    y.push_back(time);
   }
   if (pu)
     plot.addFill(pu->bandLowerings, pu->bandP05, pu->bandP95, "5-95 % over the assumptions (docs/uncertainty.md)",
                  svgPaletteColor(0));
   plot.addLine(x, y, "this model", svgPaletteColor(0), 2.0);
+  for (std::size_t k = 0; k < ps.jumps.size(); ++k)
+    plot.addVLine(ps.jumps[k].calcLowering(), k == 0 ? "swing-time jump (a rebound past the zone)" : "", "#888888");
   double xMax = x.empty() ? 0.2 : x.back();
   if (const PublishedParticipant* pub = ps.published)
     for (const auto& row : pub->table4) xMax = std::max(xMax, row.lowering);

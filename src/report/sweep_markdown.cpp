@@ -402,6 +402,28 @@ std::string formatFastestSection(const SweepStudy& study, const SweepResults& re
   return md + "\n";
 }
 
+// Every jump of the swing time along the lowering, with its cause and the continuous companion
+// (the knee's first entry into the zone) on both sides; says so when there is none.
+std::string formatJumpsSection(const SweepResults& results) {
+  std::string md = "## Jumps of the swing time\n\n";
+  md += "The swing ends once the knee stays inside the zone of stability, so a knee that rebounds just past the "
+        "zone's edge swings a whole excursion longer than one that stops just short of it: the swing time jumps "
+        "there (docs/swing-time-jumps.md). Each jump between neighbouring grid lowerings is narrowed by bisection to " +
+        fmt("%.1f", kJumpBracket * 1000) + " mm; no symmetry lowering or interpolated time is read across one. The knee's "
+        "first entry into the zone is continuous across a jump: the difference between the two columns is the "
+        "settle rule's share.\n\n";
+  std::string rows;
+  for (const auto& ps : results.participants)
+    for (const SwingTimeJump& j : ps.jumps)
+      rows += mdRow({ps.name, fmt("%.4f", j.calcLowering()), fmt("%.4f", j.below.swingTime) + " -> " + fmt("%.4f", j.above.swingTime),
+                     fmtOrNone("%.4f", j.below.firstZoneEntry) + " -> " + fmtOrNone("%.4f", j.above.firstZoneEntry),
+                     j.describeCause()});
+  if (rows.empty()) return md + "No participant's swing time jumps between neighbouring grid lowerings.\n\n";
+  md += mdRow({"participant", "jump at (m)", "swing time (s)", "first zone entry (s)", "cause"});
+  md += mdRow({"---", "---", "---", "---", "---"});
+  return md + rows + "\n";
+}
+
 // Lowering and added shank mass together; "" if no participant swept added mass.
 std::string formatMassSection(const SweepResults& results) {
   bool anyMass = false;
@@ -526,6 +548,7 @@ std::map<std::string, std::string> makeSweepReport(const SweepStudy& study, cons
   md += formatTable4SymmetrySection(results);
   md += formatTable4ValidationSection(results);
   md += formatFastestSection(study, results);
+  md += formatJumpsSection(results);
   md += formatSymmetrySection(results, uncertainty);
   md += formatTerminalImpactSection(results);
   md += formatMassSection(results);

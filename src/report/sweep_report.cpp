@@ -100,9 +100,10 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
       const SweepPoint& b = ps.points[static_cast<std::size_t>(ps.best)];
       out += "  fastest: " + fmt("%.3f", b.lowering) + " m, " + fmt("%.4f", b.result.swingTime) + " s";
       if (pub) out += " (Burkett's model: " + fmt("%.3f", pub->predictedBestLowering) + " m)";
-      out += "\n";
+      out += formatJumpBesideBest(ps) + "\n";
     }
-    if (ps.symmetry.given) out += "  " + formatSymmetryLine(ps.symmetry) + "\n";
+    for (const SwingTimeJump& j : ps.jumps) out += "  jump: " + j.describe() + "\n";
+    if (ps.symmetry.given) out += "  " + formatSymmetryLine(ps.symmetry, ps.jumps) + "\n";
     if (ps.bestWithMass >= 0) {
       const SweepPoint& b = ps.massPoints[static_cast<std::size_t>(ps.bestWithMass)];
       out += "  fastest with added shank mass: lowering " + fmt("%.3f", b.lowering) + " m + " + fmt("%.2f", b.added.mass) +
@@ -135,12 +136,13 @@ Json sensitivityJson(const ParticipantUncertainty& pu) {
 
 /// The participant's name and the sweep's per-lowering arrays (NaN where the swing did not end).
 Json sweepPointsJson(const ParticipantSweep& ps) {
-  std::vector<double> lowering, swing, peak, clearance, bounceHeight;
+  std::vector<double> lowering, swing, zoneEntry, peak, clearance, bounceHeight;
   std::vector<bool> bounce, ok;
   std::vector<int> bounces;
   for (const auto& pt : ps.points) {
     lowering.push_back(pt.lowering);
     swing.push_back(pt.ok ? pt.result.swingTime : kNaN);
+    zoneEntry.push_back(pt.ok ? calcFirstZoneEntry(pt.result).value_or(kNaN) : kNaN);
     peak.push_back(pt.ok ? peakFlexion(pt.result).value_or(kNaN) * kRadToDeg : kNaN);
     clearance.push_back(pt.ok ? pt.result.minToeClearance.value_or(kNaN) : kNaN);
     bounce.push_back(pt.ok && pt.result.bounce);
@@ -148,7 +150,8 @@ Json sweepPointsJson(const ParticipantSweep& ps) {
     bounceHeight.push_back(pt.ok ? pt.result.bounceHeight.value_or(kNaN) * kRadToDeg : kNaN);
     ok.push_back(pt.ok);
   }
-  return {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing}, {"peak_knee_flexion_deg", peak},
+  return {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing},
+          {"first_zone_entry_s", zoneEntry}, {"peak_knee_flexion_deg", peak},
           {"bounce", bounce}, {"bounces", bounces}, {"bounce_height_deg", bounceHeight}, {"swing_ended", ok},
           {"min_toe_clearance_m", clearance}};
 }
@@ -201,6 +204,8 @@ void addBestJson(const ParticipantSweep& ps, Json& j) {
     const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
     j["best_lowering_m"] = b.lowering;
     j["best_swing_time_s"] = b.result.swingTime;
+    const SwingTimeJump* beside = jumpBesideBest(ps);
+    j["best_beside_jump_m"] = beside ? Json(beside->calcLowering()) : Json(nullptr);
   } else {
     j["best_lowering_m"] = nullptr;
     j["best_swing_time_s"] = nullptr;
@@ -220,7 +225,9 @@ Json symmetryJson(const SymmetryLowering& sym) {
   const auto orNull = [&](double v) { return sym.found ? Json(v) : Json(nullptr); };
   return {{"sound_limb_swing_time_s", sym.soundTime}, {"lowering_m", orNull(sym.lowering)},
           {"reached", sym.found && sym.reached}, {"prosthetic_swing_time_s", orNull(sym.prostheticTime)},
-          {"gap_s", orNull(sym.gap)}, {"ratio", orNull(sym.calcRatio())}};
+          {"gap_s", orNull(sym.gap)}, {"ratio", orNull(sym.calcRatio())},
+          {"across_jump", sym.acrossJump}, {"jump_from_m", sym.acrossJump ? Json(sym.jumpFrom) : Json(nullptr)},
+          {"jump_to_m", sym.acrossJump ? Json(sym.jumpTo) : Json(nullptr)}};
 }
 
 /// Burkett's published rows for the participant beside ours, or null for one not in the paper.
@@ -262,6 +269,9 @@ Json participantJson(const SweepResults& results, const ParticipantSweep& ps, co
   for (const auto& c : results.terminalImpact)
     if (c.participant == ps.name) j["terminal_impact"] = terminalImpactJson(c);
   addBestJson(ps, j);
+  Json jumps = Json::array();
+  for (const SwingTimeJump& jump : ps.jumps) jumps.push_back(makeSwingTimeJumpJson(jump));
+  j["swing_time_jumps"] = jumps;
   if (ps.symmetry.given) j["symmetry"] = symmetryJson(ps.symmetry);
   j["published"] = publishedJson(ps);
   if (const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name)) addUncertaintyJson(*pu, *uncertainty, j);

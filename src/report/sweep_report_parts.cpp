@@ -49,11 +49,43 @@ std::string formatAssumptionValue(const std::string& key, double v) {
 
 std::string unitSuffix(const std::string& unit) { return unit == "choice" || unit == "1" ? "" : " " + unit; }
 
-std::string formatSymmetryLine(const SymmetryLowering& sym) {
+const SwingTimeJump* jumpBesideBest(const ParticipantSweep& ps) {
+  if (ps.best < 0) return nullptr;
+  const auto best = static_cast<std::size_t>(ps.best);
+  const double at = ps.points[best].lowering;
+  for (std::size_t k = 0; k < ps.points.size(); ++k) {
+    if (k == best || !ps.points[k].onGrid) continue;
+    const SwingTimeJump* j = findJumpBetween(ps.jumps, at, ps.points[k].lowering);
+    // Only a neighbour: no grid point between the two.
+    bool between = false;
+    for (const SweepPoint& pt : ps.points)
+      between = between || (pt.onGrid && pt.lowering > std::min(at, ps.points[k].lowering) + 1e-12 &&
+                             pt.lowering < std::max(at, ps.points[k].lowering) - 1e-12);
+    if (j && !between) return j;
+  }
+  return nullptr;
+}
+
+std::string formatJumpBesideBest(const ParticipantSweep& ps) {
+  const SwingTimeJump* j = jumpBesideBest(ps);
+  return j ? " (at the edge of its piece: " + j->describe() + ")" : "";
+}
+
+std::string formatSymmetryLine(const SymmetryLowering& sym, const std::vector<SwingTimeJump>& jumps) {
   std::string out = "best symmetry with the sound limb (" + fmt("%.3f", sym.soundTime) + " s): ";
   if (!sym.found) return out + "no swing ended";
-  if (sym.reached) return out + fmt("%.3f", sym.lowering) + " m (the swing times cross there; prosthetic/sound 1.00)";
-  return out + "not reached; closest " + fmt("%.3f", sym.lowering) + " m, " + fmt("%.4f", sym.prostheticTime) + " s, " +
+  const SwingTimeJump* jump = sym.acrossJump ? findJumpBetween(jumps, sym.jumpFrom, sym.jumpTo) : nullptr;
+  const std::string jumpText = jump ? jump->describe()
+                                    : "the swing jumps between " + fmt("%.4f", sym.jumpFrom) + " and " +
+                                          fmt("%.4f", sym.jumpTo) + " m";
+  if (sym.reached) {
+    out += fmt("%.3f", sym.lowering) + " m (the swing times cross there; prosthetic/sound 1.00)";
+    if (sym.acrossJump) out += "; not at " + fmt("%.3f", sym.jumpFrom) + "-" + fmt("%.3f", sym.jumpTo) + " m, where " + jumpText;
+    return out;
+  }
+  if (sym.acrossJump) out += "not reached: " + jumpText + ";";
+  else out += "not reached;";
+  return out + " closest " + fmt("%.3f", sym.lowering) + " m, " + fmt("%.4f", sym.prostheticTime) + " s, " +
          fmt("%.0f", std::fabs(sym.gap) * 1000) + " ms " + (sym.gap < 0 ? "faster" : "slower") +
          " than the sound limb (prosthetic/sound " + fmt("%.2f", sym.calcRatio()) + ")";
 }

@@ -26,8 +26,14 @@ std::string formatAssumptionValue(const std::string& key, double v);
 /// " N m" after a value; nothing for a choice or a dimensionless value (unit "1").
 std::string unitSuffix(const std::string& unit);
 /// One line on the symmetry lowering (sym.given): where the prosthetic swing time meets the
-/// sound limb's, or the closest point with its gap when it never does.
-std::string formatSymmetryLine(const SymmetryLowering& sym);
+/// sound limb's, or the closest point with its gap when it never does; where the swing time
+/// jumps over the sound limb's, the jump of `jumps` with its cause.
+std::string formatSymmetryLine(const SymmetryLowering& sym, const std::vector<SwingTimeJump>& jumps = {});
+/// The jump next to grid point `best` of ps.points (between it and a neighbouring grid
+/// lowering), or nullptr: a fastest swing beside a jump lies at the edge of its piece.
+const SwingTimeJump* jumpBesideBest(const ParticipantSweep& ps);
+/// " (a jump beside it: the swing jumps from ... at ... m (...))" or "" (jumpBesideBest).
+std::string formatJumpBesideBest(const ParticipantSweep& ps);
 /// A lowering in m with 3 decimals, "no end" if not finite.
 std::string formatLoweringOrNone(double v);
 

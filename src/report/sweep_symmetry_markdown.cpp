@@ -59,7 +59,8 @@ std::string formatSymmetrySection(const SweepResults& results, const Uncertainty
     std::vector<std::string> cells = {ps.name, fmt("%.3f", sym.soundTime),
                                       ps.best >= 0 ? fmt("%.3f", ps.points[static_cast<std::size_t>(ps.best)].lowering) : "none ended"};
     if (sym.found)
-      cells.insert(cells.end(), {fmt("%.3f", sym.lowering), sym.reached ? "yes" : "no", fmt("%.4f", sym.prostheticTime),
+      cells.insert(cells.end(), {fmt("%.3f", sym.lowering),
+                                 sym.reached ? "yes" : sym.acrossJump ? "no: the swing time jumps over it" : "no", fmt("%.4f", sym.prostheticTime),
                                  fmt("%+.0f", sym.gap * 1000), fmt("%.3f", sym.calcRatio())});
     else
       cells.insert(cells.end(), {"no swing end", "", "", "", ""});

@@ -28,6 +28,7 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
   Json json = {{"participant", participant},
           {"lowering_m", lowering},
           {"swing_time_s", std::isfinite(r.swingTime) ? Json(r.swingTime) : Json(nullptr)},
+          {"first_zone_entry_s", calcFirstZoneEntry(r) ? Json(*calcFirstZoneEntry(r)) : Json(nullptr)},
           {"peak_knee_flexion_deg", peak ? Json(peak->flexion * kRadToDeg) : Json(nullptr)},
           {"peak_knee_flexion_time_s", peak ? Json(peak->time) : Json(nullptr)},
           {"bounce", r.bounce},
@@ -55,6 +56,21 @@ Json makeSimulateJson(const SwingSetup& setup, const SwingResult& r) {
   json["drive"] = driveKey(setup.participant.drive);
   json["drive_description"] = describeDrive(setup.participant);
   return json;
+}
+
+Json makeSwingTimeJumpJson(const SwingTimeJump& jump) {
+  const auto entry = [](const PieceSample& s) { return s.firstZoneEntry ? Json(*s.firstZoneEntry) : Json(nullptr); };
+  return {{"lowering_m", jump.calcLowering()},
+          {"from_m", jump.below.lowering},
+          {"to_m", jump.above.lowering},
+          {"swing_time_from_s", jump.below.swingTime},
+          {"swing_time_to_s", jump.above.swingTime},
+          {"bounces_from", jump.below.bounces},
+          {"bounces_to", jump.above.bounces},
+          {"first_zone_entry_from_s", entry(jump.below)},
+          {"first_zone_entry_to_s", entry(jump.above)},
+          {"cause", jump.describeCause()},
+          {"text", jump.describe()}};
 }
 
 }  // namespace swingsim

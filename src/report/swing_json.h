@@ -3,11 +3,13 @@
 #include <string>
 
 #include "io/json_file.h"
+#include "sweep/swing_time_jumps.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
 
-/// Writes {"participant", "lowering_m", "swing_time_s", "peak_knee_flexion_deg",
+/// Writes {"participant", "lowering_m", "swing_time_s", "first_zone_entry_s" (calcFirstZoneEntry,
+/// null if none), "peak_knee_flexion_deg",
 /// "peak_knee_flexion_time_s", "bounce", "bounces", "bounce_height_deg", "stop_impacts":
 /// [{time_s, impact_rate_rad_s, rebound_rate_rad_s, restitution, max_penetration_deg,
 /// rebound_height_deg, kinetic_energy_at_contact_J, work_to_rebound_top_J: {cause: J}}],
@@ -25,5 +27,11 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
 /// What `swingsim simulate --json` writes: makeSwingResultJson of the setup's participant
 /// and lowering, plus "drive" (driveKey) and "drive_description" (describeDrive).
 Json makeSimulateJson(const SwingSetup& setup, const SwingResult& r);
+
+/// One jump of the swing time along the lowering (sweep/swing_time_jumps.h): {"lowering_m",
+/// "from_m", "to_m", "swing_time_from_s", "swing_time_to_s", "bounces_from", "bounces_to",
+/// "first_zone_entry_from_s", "first_zone_entry_to_s" (null if the knee never entered),
+/// "cause", "text"}; "from" is the smaller lowering.
+Json makeSwingTimeJumpJson(const SwingTimeJump& jump);
 
 }  // namespace swingsim

@@ -34,13 +34,28 @@ std::string describeKind(const TuningTarget& t) {
   return t.hard ? "hard" : "soft, weight " + format("%g", t.weight);
 }
 
+// "band [0.019, 0.025] (down: peak_knee_flexion_deg 90.2, past its limit by 0.2; up: swing time +11 ms)"
+std::string describeBand(const KnobBand& b) {
+  return "band [" + format("%.6g", b.low) + ", " + format("%.6g", b.high) + "] (down: " + b.lowStop + "; up: " + b.highStop + ")";
+}
+
 void printKnobs(std::ostringstream& s, const TuningResult& r) {
   s << "  knobs\n";
+  const ResolutionCheck& res = r.resolution;
   for (std::size_t k = 0; k < r.knobs.size(); ++k) {
     const TuningKnob& knob = r.knobs[k];
     s << "    " << padded(knob.key, 36) << format("%-12.6g", r.best.knobs[k])
       << "range [" << format("%g", knob.lower) << ", " << format("%g", knob.upper) << "]" << (knob.logScale ? " log" : "")
+      << (knob.resolution > 0 ? ", step " + format("%g", knob.resolution) : "")
       << (k < r.knobAtBound.size() && r.knobAtBound[k] ? "  AT A RANGE END" : "") << "\n";
+    if (k < res.bands.size()) s << "      " << describeBand(res.bands[k]) << "\n";
+  }
+  if (res.ran) {
+    s << "  at resolution       " << (res.holds ? "" : "NOT HELD: ") << res.verdict << "\n";
+    s << "  continuous optimum  " << formatTuningPoint(r.knobs, res.continuous) << "\n";
+    if (!res.bands.empty())
+      s << "  tolerance bands     each knob alone, in steps of its resolution, with every hard limit met and the swing "
+           "time within " << format("%.0f", res.window * 1000) << " ms of the result's\n";
   }
 }
 
@@ -65,8 +80,9 @@ void printSensitivity(std::ostringstream& s, const TuningResult& r) {
     s << "    " << padded(key, 36);
     for (std::size_t i = 0; i < r.targets.size(); ++i) {
       const TuningQuantity q = r.targets[i].target.quantity;
+      const double d = r.sensitivity(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
       s << "  " << tuningQuantityKey(q) << " "
-        << format("%+.4g", toTargetUnit(q, r.sensitivity(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k))));
+        << (std::isfinite(d) ? format("%+.4g", toTargetUnit(q, d)) : std::string("none (a swing beside the result failed)"));
     }
     s << "\n";
   }
@@ -217,11 +233,25 @@ std::string formatTuningJson(const TuningReportInputs& in) {
   j["stop_reason"] = r.stopReason;
   j["evaluations"] = r.evaluations;
   Json knobs = Json::array();
-  for (std::size_t k = 0; k < r.knobs.size(); ++k)
-    knobs.push_back({{"key", r.knobs[k].key}, {"min", r.knobs[k].lower}, {"max", r.knobs[k].upper},
-                     {"log_scale", r.knobs[k].logScale}, {"value", r.best.knobs[k]},
-                     {"at_range_end", k < r.knobAtBound.size() && r.knobAtBound[k]}});
+  const ResolutionCheck& res = r.resolution;
+  for (std::size_t k = 0; k < r.knobs.size(); ++k) {
+    Json knob = {{"key", r.knobs[k].key}, {"min", r.knobs[k].lower}, {"max", r.knobs[k].upper},
+                 {"log_scale", r.knobs[k].logScale}, {"value", r.best.knobs[k]},
+                 {"resolution", r.knobs[k].resolution > 0 ? Json(r.knobs[k].resolution) : Json(nullptr)},
+                 {"at_range_end", k < r.knobAtBound.size() && r.knobAtBound[k]}};
+    if (k < res.bands.size())
+      knob["tolerance_band"] = {{"low", res.bands[k].low}, {"high", res.bands[k].high},
+                                {"low_stop", res.bands[k].lowStop}, {"high_stop", res.bands[k].highStop}};
+    knobs.push_back(knob);
+  }
   j["knobs"] = knobs;
+  if (res.ran) {
+    Json corners = Json::array();
+    for (const TuningPoint& p : res.corners) corners.push_back(makePointJson(p, "rounding neighbour"));
+    j["resolution"] = {{"holds", res.holds}, {"verdict", res.verdict}, {"cells_tried", res.cellsTried},
+                       {"tolerance_window_s", res.window}, {"continuous", makePointJson(res.continuous, "continuous")},
+                       {"neighbours", corners}};
+  }
   j["targets"] = makeTargetsJson(r);
   j["swing"] = makePointJson(r.best, "result");
   j["identifiable"] = r.identifiable;

@@ -15,6 +15,7 @@
 #include "report/sweep_markdown.h"
 #include "report/sweep_report.h"
 #include "report/swing_json.h"
+#include "report/sweep_report_parts.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 
@@ -98,13 +99,24 @@ ParticipantSweep selectShownCurve(const ParticipantSweep& ps, const Participant&
   shown.points = ps.massPoints;
   shown.massPoints.clear();
   shown.best = ps.bestWithMass;
+  // The added-mass grid is not bisected: neighbours with different bounce counts are taken to
+  // lie on different pieces (no crossing is interpolated between them), and no jump is drawn.
+  shown.jumps.clear();
   std::vector<double> lowerings, times;
+  std::vector<int> pieces;
+  int piece = 0;
+  const SweepPoint* lastEnded = nullptr;
   for (const SweepPoint& pt : shown.points) {
     if (!pt.onGrid) continue;
+    if (pt.ok) {
+      if (lastEnded && lastEnded->result.bounces != pt.result.bounces) ++piece;
+      lastEnded = &pt;
+    }
     lowerings.push_back(pt.lowering);
     times.push_back(pt.ok ? pt.result.swingTime : std::numeric_limits<double>::quiet_NaN());
+    pieces.push_back(piece);
   }
-  shown.symmetry = calcSymmetryLowering(lowerings, times, p.soundLimbSwingTime.value_or(0));
+  shown.symmetry = calcSymmetryLowering(lowerings, times, p.soundLimbSwingTime.value_or(0), pieces);
   return shown;
 }
 
@@ -121,7 +133,10 @@ Json makeSweepJson(const SweepStudy& study, const SweepResults& results, const A
   if (ps.symmetry.given)
     symmetry = {{"sound_limb_swing_time_s", ps.symmetry.soundTime}, {"found", ps.symmetry.found},
                 {"reached", ps.symmetry.reached}, {"lowering_m", ps.symmetry.lowering},
-                {"prosthetic_swing_time_s", ps.symmetry.prostheticTime}};
+                {"prosthetic_swing_time_s", ps.symmetry.prostheticTime}, {"across_jump", ps.symmetry.acrossJump},
+                {"text", sweep_report_parts::formatSymmetryLine(ps.symmetry, ps.jumps)}};
+  Json jumps = Json::array();
+  for (const SwingTimeJump& j : ps.jumps) jumps.push_back(makeSwingTimeJumpJson(j));
   Json sweepJson = Json::parse(formatSweepJson(results));
   return {{"participant", ps.name},
           {"lowering_step_m", study.loweringStep},
@@ -132,6 +147,7 @@ Json makeSweepJson(const SweepStudy& study, const SweepResults& results, const A
           {"fastest_lowering_m", best ? Json(best->lowering) : Json(nullptr)},
           {"fastest_swing_time_s", best ? Json(best->result.swingTime) : Json(nullptr)},
           {"symmetry", symmetry},
+          {"jumps", jumps},
           {"figure_svg", makeSwingTimeFigure(ps, nullptr).render()},
           {"sweep", sweepJson}};
 }

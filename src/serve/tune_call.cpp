@@ -11,6 +11,7 @@
 #include "serve/serve_api.h"
 #include "study/tuning_model.h"
 #include "study/tuning_study.h"
+#include "sweep/tuning_resolution.h"
 
 namespace swingsim {
 namespace {
@@ -52,6 +53,13 @@ std::vector<TuningKnob> readTuneKnobs(const Json& body, const KneeModelKnobs& kn
     knob.logScale = k.value("log_scale", false);
     if (!(knob.lower < knob.upper)) throw InputError(knob.key + ": expected min below max (got " + k.dump() + ")");
     if (knob.logScale && !(knob.lower > 0)) throw InputError(knob.key + ": expected min > 0 on a log scale (got " + k.dump() + ")");
+    // The finest step a person can set (sweep/tuning_resolution.h): given, or implied by the key's unit.
+    if (k.contains("resolution")) knob.resolution = readFinite(k["resolution"], knob.key + ".resolution");
+    else if (const std::optional<double> byUnit = findDefaultKnobResolution(knob.key)) knob.resolution = *byUnit;
+    else throw InputError(knob.key + ".resolution: the unit cannot be told from the key; expected the finest step a person "
+                          "can set (got none)");
+    if (!(knob.resolution > 0 && knob.resolution <= knob.upper - knob.lower))
+      throw InputError(knob.key + ".resolution: expected above 0 and at most the range (got " + k.dump() + ")");
     knobs.push_back(knob);
   }
   return knobs;

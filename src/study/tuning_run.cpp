@@ -2,11 +2,13 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/progress_reporter.h"
+#include "core/text_format.h"
 #include "io/knee_model_knobs.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -70,13 +72,26 @@ TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& co
   return run;
 }
 
+std::string describeTunedKneeMisses(const TuningResult& r) {
+  std::string out;
+  for (const TargetOutcome& o : r.targets) {
+    if (!o.target.hard || o.met) continue;
+    const TuningQuantity q = o.target.quantity;
+    out += "\nMISSES the hard limit " + std::string(tuningQuantityKey(q)) + ": " + fmt("%.4g", toTargetUnit(q, o.value)) +
+           ", outside its window by " + fmt("%.3g", std::fabs(toTargetUnit(q, o.margin))) + " (no setting tried met it)";
+  }
+  if (r.resolution.ran && !r.resolution.holds) out += "\nNOT HELD at the knobs' resolution: " + r.resolution.verdict;
+  return out;
+}
+
 std::string formatTunedSimulateCommand(const TuningRun& run, const std::string& kneeFile) {
   std::string c = "swingsim simulate " + run.study.participantPath + " --knee " + kneeFile;
   char buffer[96];
-  std::snprintf(buffer, sizeof buffer, " --lowering %.17g", run.lowering);
+  // 12 digits: a value on a knob's grid prints as set (0.022, not 0.021999999999999999).
+  std::snprintf(buffer, sizeof buffer, " --lowering %.12g", run.lowering);
   c += buffer;
   if (run.added.mass > 0) {
-    std::snprintf(buffer, sizeof buffer, " --add-mass %.17g@%.17g", run.added.mass, run.added.distanceBelowKnee);
+    std::snprintf(buffer, sizeof buffer, " --add-mass %.12g@%.12g", run.added.mass, run.added.distanceBelowKnee);
     c += buffer;
   }
   return c;
@@ -93,7 +108,7 @@ void writeTuningOutputs(const TuningRun& run, const std::string& folder, const s
   in.commandLine = commandLine;
   StagedOutput staged(folder);
   const std::string header = "Tuned by swingsim tune from " + run.study.kneeModelPath + " (study " + run.study.path +
-                             "); re-run: " + in.simulateCommand;
+                             "); re-run: " + in.simulateCommand + describeTunedKneeMisses(run.result);
   staged.add("tuned-knee.yaml", formatKneeModelYaml(run.tunedKnee.spec, header));
   staged.add("tuning.md", formatTuningMarkdown(in));
   const std::string document = formatTuningJson(in);

@@ -30,6 +30,10 @@ struct TuningRun {
 /// terminal; the stop flag, polled, and the test stop after N swings). Throws InputError.
 TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& control);
 
+/// Lines for the tuned knee file's header: each hard limit the result misses, by how much, and
+/// a result that does not hold at the knobs' resolution; "" when it meets them all.
+std::string describeTunedKneeMisses(const TuningResult& r);
+
 /// `swingsim simulate` arguments that re-run the tuned swing, with the tuned knee at `kneeFile`.
 std::string formatTunedSimulateCommand(const TuningRun& run, const std::string& kneeFile);
 

@@ -9,6 +9,7 @@
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
 #include "study/tuning_model.h"
+#include "sweep/tuning_resolution.h"
 
 namespace swingsim {
 namespace {
@@ -42,6 +43,16 @@ TuningKnob readKnob(YamlMap& m, const Participant& p, const KneeModelKnobs& knee
       m.fail("range", "every value of the range must be usable; at " + formatNumber(end) + ": " + e.what(), formatNumber(end));
     }
   }
+  // The finest step a person can set: stated, or implied by the key's unit suffix.
+  const std::optional<double> byUnit = findDefaultKnobResolution(k.key);
+  if (m.has("resolution")) k.resolution = m.getDouble("resolution", mustBePositive);
+  else if (byUnit) k.resolution = *byUnit;
+  else
+    m.fail("resolution", "the unit of " + k.key + " cannot be told from its key: state the finest step a person can set "
+                         "(docs/tuning.md, \"Settings at the knob's resolution\")", "none");
+  if (!(k.resolution <= k.upper - k.lower))
+    m.fail("resolution", "expected a step no larger than the range (" + formatNumber(k.upper - k.lower) + ")",
+           formatNumber(k.resolution));
   m.finish();
   return k;
 }
@@ -101,6 +112,7 @@ void readSettings(YamlMap& yaml, TuningStudy& s) {
     s.settings.startPoints = static_cast<int>(n);
   }
   if (yaml.has("seed")) s.settings.seed = yaml.getWhole("seed", 1000000000, "1000000000");
+  s.settings.toleranceWindow = yaml.getDouble("tolerance_window_s", s.settings.toleranceWindow, mustBePositive);
   s.lowering = yaml.getDouble("lowering_m", 0.0, mustBeNonNegative);
   if (yaml.has("added_mass")) {
     YamlMap m = yaml.getMap("added_mass");

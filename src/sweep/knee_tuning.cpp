@@ -10,6 +10,7 @@
 #include "numerics/latin_hypercube.h"
 #include "sweep/sweep.h"
 #include "sweep/tuning_analysis.h"
+#include "sweep/tuning_resolution.h"
 
 namespace swingsim {
 
@@ -45,6 +46,7 @@ double TuningPoint::value(TuningQuantity q) const {
 
 void scoreTuningPoint(TuningPoint& point, const SwingResult& swing, const std::vector<TuningTarget>& targets) {
   point.swingTime = swing.swingTime;
+  point.bounces = swing.bounces;
   if (swing.peakKneeFlexion) point.peakKneeFlexion = swing.peakKneeFlexion->flexion;
   if (swing.minToeClearance) point.minToeClearance = *swing.minToeClearance;
   point.maxStopImpactSpeed = 0;
@@ -68,11 +70,8 @@ void scoreTuningPoint(TuningPoint& point, const SwingResult& swing, const std::v
   }
 }
 
-namespace {
-
-// One swing at `knobs`, scored; a swing that cannot run is a failed point, not an error.
-TuningPoint evaluatePoint(const std::vector<double>& knobs, const std::vector<TuningTarget>& targets,
-                          const TuningEvaluator& evaluate) {
+TuningPoint evaluateTuningPoint(const std::vector<double>& knobs, const std::vector<TuningTarget>& targets,
+                                const TuningEvaluator& evaluate) {
   TuningPoint point;
   point.knobs = knobs;
   try {
@@ -83,6 +82,8 @@ TuningPoint evaluatePoint(const std::vector<double>& knobs, const std::vector<Tu
   }
   return point;
 }
+
+namespace {
 
 // Knob values of a unit-cube point: linear, or geometric for a log-scaled knob.
 std::vector<double> knobValuesAt(const std::vector<TuningKnob>& knobs, const std::vector<double>& unit) {
@@ -106,7 +107,7 @@ std::vector<TuningPoint> runStartSet(const std::vector<TuningKnob>& knobs, const
       static_cast<int>(unit.size()), settings.jobs,
       [&](int i) {
         const auto index = static_cast<std::size_t>(i);
-        points[index] = evaluatePoint(knobValuesAt(knobs, unit[index]), targets, evaluate);
+        points[index] = evaluateTuningPoint(knobValuesAt(knobs, unit[index]), targets, evaluate);
         done[index] = 1;
       },
       progress, stopFlag);
@@ -166,7 +167,7 @@ class PolishResiduals {
   TuningPoint runOrReuse(const std::vector<double>& x) const {
     if (!evaluated_.empty() && evaluated_.back().ran && evaluated_.back().knobs == x) return evaluated_.back();
     if (stop_ != nullptr && *stop_) throw RunError("stopped");
-    evaluated_.push_back(evaluatePoint(x, targets_, evaluate_));
+    evaluated_.push_back(evaluateTuningPoint(x, targets_, evaluate_));
     if (!evaluated_.back().ran) throw RunError(evaluated_.back().failure);
     return evaluated_.back();
   }
@@ -185,7 +186,7 @@ class PolishResiduals {
       const auto i = static_cast<std::size_t>(j);
       std::vector<double> x = all;
       x[free_[i]] += steps[i];
-      moved[i] = evaluatePoint(x, targets_, evaluate_);
+      moved[i] = evaluateTuningPoint(x, targets_, evaluate_);
     }, {}, stop_);
     if (stop_ != nullptr && *stop_) throw RunError("stopped");
     for (const TuningPoint& q : moved) evaluated_.push_back(q);
@@ -405,6 +406,12 @@ TuningResult runKneeTuning(const std::vector<TuningKnob>& knobs, const std::vect
   if (!result.interrupted) polishFromBestStarts(knobs, targets, evaluate, settings, stopFlag, result);
   result.interrupted = stopFlag != nullptr && *stopFlag;
   result.best = findBestTuningPoint(result.startSet, result.polished);
+  if (!result.interrupted) {
+    result.resolution = checkTuningResolution(knobs, targets, evaluate, result.best, settings.toleranceWindow,
+                                              settings.jobs, stopFlag);
+    if (result.resolution.ran) result.best = result.resolution.result;
+    result.interrupted = stopFlag != nullptr && *stopFlag;
+  }
   result.feasible = result.best.feasible();
   result.evaluations = static_cast<int>(result.startSet.size() + result.polished.size());
   if (!result.interrupted) analyseTuningResult(targets, evaluate, settings.jobs, result);

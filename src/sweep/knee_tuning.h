@@ -27,6 +27,9 @@ struct TuningKnob {
   std::string key;
   double lower = 0, upper = 1;
   bool logScale = false;
+  /// The finest step a person can set, in the knob's unit (tuning_resolution.h): the result is
+  /// given on multiples of it. 0: continuous (no rounding).
+  double resolution = 0;
 };
 
 /// What a target constrains, in SI inside (s, rad, m, rad/s).
@@ -59,6 +62,7 @@ struct TuningPoint {
   double peakKneeFlexion = std::numeric_limits<double>::quiet_NaN(); ///< rad
   double minToeClearance = std::numeric_limits<double>::quiet_NaN(); ///< m
   double maxStopImpactSpeed = 0;  ///< rad/s; 0 without an impact
+  int bounces = 0;                ///< SwingResult::bounces: the continuous piece of the swing time
   double cost = std::numeric_limits<double>::infinity();  ///< soft cost (sum of squared residuals)
   double hardViolation = std::numeric_limits<double>::infinity();  ///< sum of hard misses / scale; 0: feasible
   bool feasible() const { return ran && hardViolation == 0; }
@@ -91,6 +95,9 @@ struct TuningSettings {
   int polishStarts = 3;
   HardLimitPenalty penalty;
   double maxSeconds = 120;  ///< wall-clock budget of the polish
+  /// s: the tolerance bands' swing-time window (checkTuningResolution); the study's
+  /// `tolerance_window_s`
+  double toleranceWindow = 0.010;
 };
 
 /// What a target did at the result.
@@ -100,6 +107,28 @@ struct TargetOutcome {
   double margin = 0;  ///< distance inside the window (>= 0: met), negative: missed by that much
   bool met = false;
   bool binding = false;  ///< a hard limit at its edge (margin within kBindingFraction of its scale)
+};
+
+// The result at each knob's resolution (sweep/tuning_resolution.h).
+/// How far one knob can move alone from the result, in whole steps of its resolution.
+struct KnobBand {
+  double low = 0, high = 0;       ///< knob units: the last values that still hold
+  std::string lowStop, highStop;  ///< what stopped the walk each way ("range end", "peak_knee_flexion_deg", ...)
+};
+
+/// The result at resolution and its check.
+struct ResolutionCheck {
+  bool ran = false;      ///< some knob has a resolution and the check ran (else nothing below is set)
+  bool holds = false;    ///< every corner of the chosen cell meets every hard limit on one piece
+  TuningPoint continuous;           ///< the polish's optimum, before rounding
+  TuningPoint result;               ///< the best corner of the chosen cell (or, if none holds, of the first)
+  std::vector<TuningPoint> corners; ///< of the chosen cell
+  int cellsTried = 0;
+  /// One sentence: holds ("all 16 rounding neighbours meet every hard limit"), moved inside, or
+  /// cannot (which limit breaks at which neighbour, by how much).
+  std::string verdict;
+  double window = 0;                ///< s, the swing-time window of the bands
+  std::vector<KnobBand> bands;      ///< one per knob (empty if it does not hold)
 };
 
 struct TuningResult {
@@ -116,6 +145,9 @@ struct TuningResult {
   /// Where that polish ended (Ceres' solution). When it breaks a hard limit (the penalty lets a
   /// strongly pulled solution past it), `best` is the best evaluated point that meets them instead.
   TuningPoint polishEnd;
+  /// The result moved onto the knobs' resolutions and checked on its rounding neighbours;
+  /// when it ran, `best` is its result (the continuous optimum is resolution.continuous).
+  ResolutionCheck resolution;
   std::vector<TargetOutcome> targets;
   std::vector<bool> knobAtBound;
   /// d quantity / d knob at the result (targets x knobs, SI per knob unit), central

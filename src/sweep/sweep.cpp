@@ -262,15 +262,42 @@ int pickBest(std::vector<SweepPoint>& pts) {
   return best;
 }
 
-// The symmetry lowering over the points `best` is chosen from (on the grid, swing ended).
+// The symmetry lowering over the points `best` is chosen from (on the grid, swing ended) and
+// the two sides of each jump, each on its piece.
 SymmetryLowering calcGridSymmetry(const ParticipantSweep& ps, const Participant& p) {
-  std::vector<double> lowerings, swingTimes;
-  for (const SweepPoint& pt : ps.points) {
-    if (!pt.onGrid) continue;
-    lowerings.push_back(pt.lowering);
-    swingTimes.push_back(pt.ok ? pt.result.swingTime : std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::pair<double, double>> samples;  // (lowering m, swing time s)
+  for (const SweepPoint& pt : ps.points)
+    if (pt.onGrid) samples.emplace_back(pt.lowering, pt.ok ? pt.result.swingTime : std::numeric_limits<double>::quiet_NaN());
+  for (const SwingTimeJump& j : ps.jumps) {
+    samples.emplace_back(j.below.lowering, j.below.swingTime);
+    samples.emplace_back(j.above.lowering, j.above.swingTime);
   }
-  return calcSymmetryLowering(lowerings, swingTimes, p.soundLimbSwingTime.value_or(0));
+  std::sort(samples.begin(), samples.end());
+  std::vector<double> lowerings, swingTimes;
+  std::vector<int> pieces;
+  for (const auto& [lowering, time] : samples) {
+    lowerings.push_back(lowering);
+    swingTimes.push_back(time);
+    pieces.push_back(calcPieceIndex(ps.jumps, lowering));
+  }
+  return calcSymmetryLowering(lowerings, swingTimes, p.soundLimbSwingTime.value_or(0), pieces);
+}
+
+// The jumps between neighbouring grid lowerings of one participant's plain sweep, each
+// bisected with swings of the same set-up (no trajectory).
+std::vector<SwingTimeJump> findGridJumps(const SweepStudy& study, const Participant& p,
+                                         const std::shared_ptr<const KneeLawSum>& knee, const ParticipantSweep& ps) {
+  std::vector<PieceSample> grid;
+  for (const SweepPoint& pt : ps.points)
+    if (pt.onGrid && pt.ok) grid.push_back(makePieceSample(pt.lowering, pt.result));
+  const PieceSampler sample = [&](double lowering) -> std::optional<PieceSample> {
+    SweepPoint pt;
+    pt.lowering = lowering;
+    runSweepPoint(study, p, knee, pt, true);
+    if (!pt.ok) return std::nullopt;
+    return makePieceSample(lowering, pt.result);
+  };
+  return findSwingTimeJumps(grid, sample, p.swingEnd.zoneOfStability);
 }
 
 }  // namespace
@@ -297,6 +324,13 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
   };
   runParallelJobs(total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
 
+  // The jumps, one participant a job; not after an interrupt (the grid is incomplete).
+  if (!(stopFlag && *stopFlag)) {
+    runParallelJobs(static_cast<int>(results.participants.size()), jobs, [&](int i) {
+      const auto k = static_cast<std::size_t>(i);
+      results.participants[k].jumps = findGridJumps(study, study.participants[k], knees[k], results.participants[k]);
+    });
+  }
   for (std::size_t i = 0; i < results.participants.size(); ++i) {
     ParticipantSweep& ps = results.participants[i];
     ps.best = pickBest(ps.points);

@@ -15,6 +15,7 @@
 #include "sweep/burkett_published.h"
 #include "sweep/calibration.h"
 #include "sweep/sweep_symmetry.h"
+#include "sweep/swing_time_jumps.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -72,12 +73,15 @@ struct ParticipantSweep {
   std::string capNote;           ///< non-empty if the study's maximum was capped
   std::vector<SweepPoint> points;       ///< the plain sweep (no added mass), by lowering
   std::vector<SweepPoint> massPoints;   ///< the added-mass grid (may be empty)
+  /// The jumps of the swing time between neighbouring grid lowerings of `points`, each
+  /// narrowed to kJumpBracket (swing_time_jumps.h), by lowering.
+  std::vector<SwingTimeJump> jumps;
   /// Index into points of the fastest swing, -1 if none ended.
   int best = -1;
   int bestWithMass = -1;  ///< index into massPoints, -1 if none
   /// The lowering whose grid swing time is closest to the participant's sound limb
   /// (Participant::soundLimbSwingTime; symmetry.given false without one), over the same
-  /// points as `best`.
+  /// points as `best` and the two sides of each jump, interpolated only inside one piece.
   SymmetryLowering symmetry;
 };
 

@@ -7,7 +7,7 @@
 namespace swingsim {
 
 SymmetryLowering calcSymmetryLowering(const std::vector<double>& lowerings, const std::vector<double>& swingTimes,
-                                      double soundTime) {
+                                      double soundTime, const std::vector<int>& pieces) {
   SymmetryLowering out;
   if (!(soundTime > 0) || !std::isfinite(soundTime)) return out;
   out.given = true;
@@ -24,10 +24,19 @@ SymmetryLowering calcSymmetryLowering(const std::vector<double>& lowerings, cons
     if (!std::isfinite(swingTimes[k])) continue;
     const double gap = swingTimes[k] - soundTime;
     if (gap == 0) return reachedAt(lowerings[k]);
-    // The first sign change between neighbours: linear interpolation of the crossing.
+    // The first sign change between neighbours on one piece: linear interpolation of the
+    // crossing. Across a jump it is no crossing: remember the first such jump.
     if (k + 1 < n && std::isfinite(swingTimes[k + 1]) && (swingTimes[k + 1] - soundTime) * gap < 0) {
-      const double next = swingTimes[k + 1] - soundTime;
-      return reachedAt(lowerings[k] + (lowerings[k + 1] - lowerings[k]) * gap / (gap - next));
+      const bool samePiece = pieces.size() < n || pieces[k] == pieces[k + 1];
+      if (samePiece) {
+        const double next = swingTimes[k + 1] - soundTime;
+        return reachedAt(lowerings[k] + (lowerings[k + 1] - lowerings[k]) * gap / (gap - next));
+      }
+      if (!out.acrossJump) {
+        out.acrossJump = true;
+        out.jumpFrom = lowerings[k];
+        out.jumpTo = lowerings[k + 1];
+      }
     }
     // Closest so far; a tie keeps the smaller lowering.
     if (nearest < 0 || std::fabs(gap) < std::fabs(swingTimes[static_cast<std::size_t>(nearest)] - soundTime))

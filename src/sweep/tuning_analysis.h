@@ -42,6 +42,11 @@ Eigen::VectorXd calcTuningResiduals(const TuningPoint& point, const std::vector<
 Eigen::VectorXd calcTuningResidualSlopes(const TuningPoint& point, const std::vector<TuningTarget>& targets,
                                          const HardLimitPenalty& penalty, const std::vector<LimitHold>& holds = {});
 
+/// One swing at `knobs`, scored against `targets`; a swing that cannot run (evaluate throws)
+/// is a failed point (ran false, its failure text), never an error.
+TuningPoint evaluateTuningPoint(const std::vector<double>& knobs, const std::vector<TuningTarget>& targets,
+                                const TuningEvaluator& evaluate);
+
 /// The better point of two lists: feasible first, then the lower cost, else the lower hard
 /// violation; a point that did not run is never better than one that did.
 TuningPoint findBestTuningPoint(const std::vector<TuningPoint>& a, const std::vector<TuningPoint>& b);

@@ -103,7 +103,7 @@ void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& ru
     double s;
     Kind kind;
   };
-  Crossing crossings[5];
+  Crossing crossings[5];  // at most 4: the thigh, and a knee peak with two zone crossings
   int count = 0;
   const double thigh0 = a.hip - target, thigh1 = b.hip - target;
   if (isRising(thigh0, thigh1)) {
@@ -128,7 +128,11 @@ void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& ru
   } else if (zone0 > 0 && zone1 > 0 && a.kneeRate > 0 && b.kneeRate < 0) {
     const double top = findRoot(kneeRateAt, h);  // a knee maximum rising out of the zone
     if (zoneWitness(top) < 0) {
+      // Out, its peak and back in within the step: the peak's witness (the rate above the
+      // zone) has no sign change at the step ends, so it is added here, or the rebound's
+      // height would be lost.
       crossings[count++] = {findRoot(zoneWitness, h, 0, top), kLeaves};
+      crossings[count++] = {top, kPeak};
       crossings[count++] = {findRoot(zoneWitness, h, top, 1), kEnters};
     }
   }

@@ -120,4 +120,10 @@ std::string TrialEnd::describe() const {
 
 SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) { return SwingRun(setup, options).run(); }
 
+std::optional<double> calcFirstZoneEntry(const SwingResult& result) {
+  for (const SwingEvent& e : result.events)
+    if (e.name == "knee_enters_zone") return e.time;
+  return std::nullopt;
+}
+
 }  // namespace swingsim

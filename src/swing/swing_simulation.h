@@ -149,6 +149,12 @@ struct SwingResult {
   std::optional<TrialEnd> trialEnd;
 };
 
+/// s since toe-off of the knee's first entry into the zone of stability after its peak (the
+/// first "knee_enters_zone" event); absent if it never entered. The swing time's continuous
+/// companion: a rebound past the zone makes the swing time jump (the end waits for the next
+/// entry), never this.
+std::optional<double> calcFirstZoneEntry(const SwingResult& result);
+
 /// The participant-level inputs one swing needs, after loading. Built by makeSwingSetup
 /// (swing/knee_setup.h).
 struct SwingSetup {

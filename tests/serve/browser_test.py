@@ -142,6 +142,10 @@ def check_tune(driver):
     check(match is not None, f"no swing time in the tuning's summary: {summary!r}")
     shown = text_of(driver, "swing-time")
     check(shown == f"{match.group(1)} s", f"page shows {shown!r} after tuning, the tuning reports {match.group(1)} s")
+    # The tuning moved the leg: the sweep of the leg before is cleared, not shown beside it.
+    sweep = text_of(driver, "sweep-summary")
+    check(sweep.startswith("the leg changed"), f"the sweep of the leg before the tuning is still shown: {sweep!r}")
+    check(not driver.find_elements(By.CSS_SELECTOR, "#sweep-figure svg"), "the sweep figure of the leg before is still shown")
 
 
 def check_osim_import(driver):

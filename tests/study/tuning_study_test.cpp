@@ -76,6 +76,20 @@ TEST(TuningStudy, RefusesARangeTheKneeModelOrTheLegCannotTake) {
   EXPECT_NE(log.find("knobs[0].log_scale: a log-scaled knob needs a range above 0"), std::string::npos) << log;
 }
 
+TEST(TuningStudy, AKnobsResolutionIsStatedOrToldByItsUnitElseRefused) {
+  const std::string m = refusal(study("  - key: hyperextension_stop.restitution\n    range: [0.2, 0.9]\n", kTargets));
+  EXPECT_NE(m.find("knobs[0].resolution: the unit of hyperextension_stop.restitution cannot be told from its key"),
+            std::string::npos) << m;
+  const std::string wide = refusal(study("  - key: lowering_m\n    range: [0, 0.05]\n    resolution: 0.1\n", kTargets));
+  EXPECT_NE(wide.find("knobs[0].resolution: expected a step no larger than the range (0.05) (got 0.1)"), std::string::npos)
+      << wide;
+  const TuningStudy stated = loadTuningStudy(writeTemp(
+      "study.yaml", study("  - key: hyperextension_stop.restitution\n    range: [0.2, 0.9]\n    resolution: 0.05\n"
+                          "  - key: lowering_m\n    range: [0, 0.05]\n", kTargets)));
+  EXPECT_DOUBLE_EQ(stated.knobs[0].resolution, 0.05);
+  EXPECT_DOUBLE_EQ(stated.knobs[1].resolution, 0.001);  // 1 mm, by the unit
+}
+
 TEST(TuningStudy, RefusesAnUnknownTargetAndAHardLimitWithAWeight) {
   const std::string m = refusal(study(kKnobs, "  stance_time_s: {value: 0.5}\n"));
   EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:8: targets\.stance_time_s: unknown key)"))) << m;

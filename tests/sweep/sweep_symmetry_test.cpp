@@ -34,6 +34,29 @@ TEST(SweepSymmetry, CrossingIsInterpolatedBetweenTheGridPointsAroundIt) {
   EXPECT_DOUBLE_EQ(s.calcRatio(), 1.0);
 }
 
+TEST(SweepSymmetry, NoCrossingIsInterpolatedAcrossAJumpBetweenPieces) {
+  // The same curve with a jump between 0.01 m and 0.02 m (pieces 0 and 1): 0.43 s lies in the
+  // jump, so no lowering gives it; the closest point is 0.02 m (0.42 s, 10 ms faster).
+  const SymmetryLowering s = calcSymmetryLowering(kGrid, kTimes, 0.43, {0, 0, 1, 1});
+  ASSERT_TRUE(s.given && s.found);
+  EXPECT_FALSE(s.reached);
+  EXPECT_TRUE(s.acrossJump);
+  EXPECT_DOUBLE_EQ(s.jumpFrom, 0.01);
+  EXPECT_DOUBLE_EQ(s.jumpTo, 0.02);
+  EXPECT_DOUBLE_EQ(s.lowering, 0.02);
+  EXPECT_NEAR(s.gap, -0.01, kRounding);
+}
+
+TEST(SweepSymmetry, ACrossingInsideAPieceBeyondAJumpIsStillReached) {
+  // Times 0.50, 0.46 | 0.38, 0.48 with the jump between 0.01 and 0.02 m: 0.43 s is jumped over
+  // first, then crossed inside the second piece at 0.02 + 0.01 * 0.05 / 0.10 = 0.025 m.
+  const SymmetryLowering s = calcSymmetryLowering(kGrid, {0.50, 0.46, 0.38, 0.48}, 0.43, {0, 0, 1, 1});
+  EXPECT_TRUE(s.reached);
+  EXPECT_NEAR(s.lowering, 0.025, kRounding);
+  EXPECT_TRUE(s.acrossJump);
+  EXPECT_DOUBLE_EQ(s.jumpFrom, 0.01);
+}
+
 TEST(SweepSymmetry, ExactGridHitIsThatLowering) {
   const SymmetryLowering s = calcSymmetryLowering(kGrid, kTimes, 0.42);
   EXPECT_TRUE(s.reached);

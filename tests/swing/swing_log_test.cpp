@@ -64,6 +64,26 @@ TEST(SwingEvents, NoBouncePeakLeavesTheBounceHeightAbsent) {
   EXPECT_DOUBLE_EQ(log.peak->flexion, kPeak);
 }
 
+TEST(SwingEvents, AReboundOutAndBackWithinOneStepKeepsItsHeight) {
+  // One step of 10 ms whose ends are both just inside the zone (knee 0.099 rad), rising at its
+  // start and falling at its end (1 rad/s each way, no acceleration): the Hermite interpolant
+  // peaks at 0.099 + 0.01 / 4 = 0.1015 rad at mid-step, above the zone's 0.1 rad.
+  SwingLog log(kDwell);
+  log.onThighAtTarget(0.05);
+  log.onKneePeak(0.10, kPeak, kZone);
+  log.onKneeZone(0.20, true);
+  SwingEndRule rule;
+  rule.zoneOfStability = kZone;
+  rule.thighTargetFlexion = -1;  // the thigh already at its target, above it throughout
+  // Inside the settle dwell after the entry at 0.20 s.
+  const StepEnd a{0.25, 0.5, 0.099, 0, 1.0, 0, 0, 0, 0};
+  const StepEnd b{0.26, 0.5, 0.099, 0, -1.0, 0, 0, 0, 0};
+  handleStepEvents(a, b, rule, log);
+  EXPECT_EQ(log.bounces, 1);
+  ASSERT_TRUE(log.bounceHeight);
+  EXPECT_NEAR(*log.bounceHeight, 0.1015, 1e-9);
+}
+
 TEST(SwingEvents, KneeInTheZoneBeforeTheThighWaitsForTheThigh) {
   SwingLog log(kDwell);
   log.onKneePeak(0.20, kPeak, kZone);

@@ -129,6 +129,7 @@ function showSwing(json) {
 // request and no knob moved while it was under way (then the newest knobs go out at once
 // and this answer is dropped): the numbers shown always belong to the knobs shown.
 async function simulateNow() {
+  clearSweep();
   document.body.dataset.busy = '1';
   const id = ++state.latest;
   const started = state.inputTime;
@@ -282,18 +283,29 @@ async function exportYaml(which) {
   else download(`${answer.json.knee_model}.yaml`, answer.json.knee_yaml);
 }
 
+// The leg changed (every change asks for a new swing): a sweep shown belongs to the leg
+// before, so it is cleared, never left beside the new leg.
+function clearSweep() {
+  if ($('sweep-summary').textContent === '') return;
+  $('sweep-summary').textContent = 'the leg changed: run the sweep again';
+  $('sweep-figure').innerHTML = '';
+}
+
 async function runSweep() {
   $('sweep-summary').textContent = 'sweeping...';
+  const asked = JSON.stringify(legRequest());
   const answer = await post('api/sweep', legRequest());
+  if (JSON.stringify(legRequest()) !== asked) {  // the leg moved meanwhile: this answer is for another leg
+    $('sweep-summary').textContent = 'the leg changed while sweeping; run the sweep again';
+    return;
+  }
   if (answer.status !== 200) { $('sweep-summary').textContent = ''; showError(answer.json); return; }
   const s = answer.json;
   let text = s.fastest_lowering_m === null ? 'no lowering ended a swing' :
     `fastest swing ${s.fastest_swing_time_s.toFixed(4)} s at ${(s.fastest_lowering_m * 1000).toFixed(0)} mm`;
-  if (s.symmetry) {
-    text += s.symmetry.reached ?
-      `; symmetry with the sound limb (${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s) at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm` :
-      `; the sound limb's ${s.symmetry.sound_limb_swing_time_s.toFixed(3)} s is not reached (closest at ${(s.symmetry.lowering_m * 1000).toFixed(0)} mm)`;
-  }
+  if (s.symmetry) text += `; ${s.symmetry.text}`;
+  // A jump of the swing time (a rebound past the zone of stability): no answer is read across it.
+  for (const j of s.jumps) text += `; jump: ${j.text}`;
   if (s.added_mass_kg > 0) text += ` (with the added ${s.added_mass_kg.toFixed(2)} kg at ${s.added_mass_position_m.toFixed(2)} m below the knee)`;
   $('sweep-summary').textContent = text;
   $('sweep-figure').innerHTML = s.figure_svg;

@@ -1,0 +1,75 @@
+#pragma once
+// Where the swing time jumps along the knee-axis lowering. Burkett's swing end waits for the
+// knee to stay inside the zone of stability; a knee that rebounds just past the zone's edge
+// adds a whole excursion to the swing, one that stops just short of it adds nothing. So the
+// swing time is a piecewise continuous function of the lowering with jumps where the rebound
+// grazes the zone (docs/swing-time-jumps.md). This unit finds each jump between neighbouring
+// lowerings of a grid, narrows it by bisection, names its cause, and gives every lowering the
+// continuous piece it lies on, so that no answer (a symmetry crossing, an interpolated time)
+// is read across a jump.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "swing/swing_simulation.h"
+
+namespace swingsim {
+
+/// m: a jump is narrowed until its two sides are this close (0.1 mm, a tenth of the finest
+/// setting a prosthetist can make at the knee axis).
+constexpr double kJumpBracket = 1e-4;
+
+/// s: a change of the swing time across one bracket larger than this is a jump. Where the
+/// swing time is continuous its slope along the lowering stays below about 3 s/m on the
+/// shipped participants (a 10 mm step moves it by at most ~30 ms), so across 0.1 mm it moves
+/// by at most ~0.3 ms; a jump is a whole rebound excursion (tens of ms).
+constexpr double kJumpMinSize = 0.002;
+
+/// What one swing at one lowering says about which continuous piece it lies on.
+struct PieceSample {
+  double lowering = 0;     ///< m
+  double swingTime = 0;    ///< s
+  int bounces = 0;         ///< SwingResult::bounces: the piece's signature
+  /// s, the knee's first entry into the zone after its peak (the continuous companion of the
+  /// swing time); absent if it never entered
+  std::optional<double> firstZoneEntry;
+  /// rad, highest knee flexion after the knee first left the zone (SwingResult::bounceHeight)
+  std::optional<double> bounceHeight;
+};
+
+/// The sample of an ended swing at `lowering`.
+PieceSample makePieceSample(double lowering, const SwingResult& result);
+
+/// One jump of the swing time between two lowerings at most kJumpBracket apart.
+struct SwingTimeJump {
+  PieceSample below, above;  ///< the two sides (below: the smaller lowering)
+  double zoneOfStability = 0;  ///< rad, the zone's edge the rebound is measured against
+  /// m, the jump's lowering (the middle of its bracket)
+  double calcLowering() const { return 0.5 * (below.lowering + above.lowering); }
+  /// Its cause: "a rebound 0.1 deg past the zone" (one side has no bounce), "one more bounce
+  /// (2 against 1)".
+  std::string describeCause() const;
+  /// "the swing jumps from 0.518 s to 0.386 s at 0.1655 m (a rebound 0.1 deg past the zone)".
+  std::string describe() const;
+};
+
+/// Simulates one swing at a lowering (m) and returns its sample, or nullopt if no swing ended.
+using PieceSampler = std::function<std::optional<PieceSample>(double lowering)>;
+
+/// The jumps between neighbouring samples of `grid` (sorted by lowering; ended swings only):
+/// each neighbouring pair whose bounce counts differ is bisected with `sample` down to
+/// kJumpBracket; a bracket whose swing time changes by more than kJumpMinSize is a jump. A pair
+/// with the same bounce count is taken as continuous (a jump out and back between two grid
+/// points is not seen: docs/swing-time-jumps.md). A bisection point with no swing end stops
+/// that pair's bisection at the bracket reached so far, and the jump is reported there.
+std::vector<SwingTimeJump> findSwingTimeJumps(const std::vector<PieceSample>& grid, const PieceSampler& sample,
+                                              double zoneOfStability);
+
+/// The piece index (0, 1, ...) of a lowering: how many jumps lie below it.
+int calcPieceIndex(const std::vector<SwingTimeJump>& jumps, double lowering);
+
+/// The jump between lowerings `a` and `b` (either order), or nullptr if they lie on one piece.
+const SwingTimeJump* findJumpBetween(const std::vector<SwingTimeJump>& jumps, double a, double b);
+
+}  // namespace swingsim

@@ -1,0 +1,102 @@
+// The jumps of the swing time along the lowering (sweep/swing_time_jumps.h), on a
+// hand-written piecewise function of the lowering whose jumps are known exactly: a jump is
+// narrowed to its lowering, named by its cause, and a change of bounce count without a jump
+// in the swing time is no jump.
+#include "sweep/swing_time_jumps.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/units.h"
+
+namespace swingsim {
+namespace {
+
+constexpr double kZone = 6 * kDegToRad;
+constexpr double kJumpAt = 0.1655;  // m, where the hand-written knee stops rebounding past the zone
+
+// A knee that rebounds past the zone below kJumpAt (one bounce, a whole 130 ms excursion more)
+// and stays inside above it; the rest of the swing time falls by 0.5 s/m with the lowering.
+std::optional<PieceSample> reboundingKnee(double lowering) {
+  PieceSample s;
+  s.lowering = lowering;
+  s.firstZoneEntry = 0.40 - 0.5 * lowering;
+  s.bounces = lowering < kJumpAt ? 1 : 0;
+  s.swingTime = *s.firstZoneEntry + (s.bounces ? 0.13 : 0.0);
+  if (s.bounces) s.bounceHeight = kZone + (kJumpAt - lowering) * 10 * kDegToRad;  // 0.1 deg past at 10 mm
+  return s;
+}
+
+std::vector<PieceSample> grid(const PieceSampler& f) {
+  std::vector<PieceSample> out;
+  for (int k = 0; k <= 20; ++k) out.push_back(*f(0.01 * k));
+  return out;
+}
+
+TEST(SwingTimeJumps, AJumpIsNarrowedToItsLoweringAndNamedByItsCause) {
+  int swings = 0;
+  const PieceSampler counted = [&](double d) {
+    ++swings;
+    return reboundingKnee(d);
+  };
+  const std::vector<SwingTimeJump> jumps = findSwingTimeJumps(grid(reboundingKnee), counted, kZone);
+  ASSERT_EQ(jumps.size(), 1u);
+  const SwingTimeJump& j = jumps[0];
+  EXPECT_LE(j.above.lowering - j.below.lowering, kJumpBracket);
+  EXPECT_LT(j.below.lowering, kJumpAt);
+  EXPECT_GE(j.above.lowering, kJumpAt);
+  EXPECT_NEAR(j.calcLowering(), kJumpAt, kJumpBracket);
+  EXPECT_NEAR(j.below.swingTime - j.above.swingTime, 0.13, 0.001);
+  // The continuous companion barely moves across the bracket.
+  EXPECT_NEAR(*j.below.firstZoneEntry, *j.above.firstZoneEntry, kJumpBracket);
+  // At the narrowed edge the rebound passes the zone by at most 10 deg/m x 0.1 mm = 0.001 deg.
+  double past = 0;
+  ASSERT_EQ(std::sscanf(j.describeCause().c_str(), "a rebound %lf deg past the zone", &past), 1) << j.describeCause();
+  EXPECT_GT(past, 0);
+  EXPECT_LE(past, 0.001);
+  EXPECT_NE(j.describe().find("the swing jumps from 0.447 s to 0.317 s at 0.165"), std::string::npos) << j.describe();
+  // 10 mm down to 0.1 mm: 7 halvings.
+  EXPECT_EQ(swings, 7);
+}
+
+TEST(SwingTimeJumps, ABounceCountChangeWithoutAJumpInTheSwingTimeIsNoJump) {
+  // A bounce before the thigh reaches its target does not move the swing end.
+  const PieceSampler f = [](double d) {
+    std::optional<PieceSample> s = reboundingKnee(d);
+    s->swingTime = *s->firstZoneEntry;
+    return s;
+  };
+  EXPECT_TRUE(findSwingTimeJumps(grid(f), f, kZone).empty());
+}
+
+TEST(SwingTimeJumps, OneMoreBounceIsNamedSo) {
+  const PieceSampler f = [](double d) {
+    std::optional<PieceSample> s = reboundingKnee(d);
+    s->bounces += 1;
+    return s;
+  };
+  const std::vector<SwingTimeJump> jumps = findSwingTimeJumps(grid(f), f, kZone);
+  ASSERT_EQ(jumps.size(), 1u);
+  EXPECT_EQ(jumps[0].describeCause(), "one more bounce (2 against 1)");
+}
+
+TEST(SwingTimeJumps, ASwingThatDoesNotEndStopsTheBisectionWhereItIs) {
+  const PieceSampler failing = [](double) { return std::optional<PieceSample>(); };
+  const std::vector<SwingTimeJump> jumps = findSwingTimeJumps(grid(reboundingKnee), failing, kZone);
+  ASSERT_EQ(jumps.size(), 1u);
+  EXPECT_DOUBLE_EQ(jumps[0].below.lowering, 0.16);
+  EXPECT_DOUBLE_EQ(jumps[0].above.lowering, 0.17);
+}
+
+TEST(SwingTimeJumps, PiecesCountTheJumpsBelowALowering) {
+  const std::vector<SwingTimeJump> jumps = findSwingTimeJumps(grid(reboundingKnee), reboundingKnee, kZone);
+  EXPECT_EQ(calcPieceIndex(jumps, 0.10), 0);
+  EXPECT_EQ(calcPieceIndex(jumps, 0.17), 1);
+  EXPECT_NE(findJumpBetween(jumps, 0.17, 0.16), nullptr);
+  EXPECT_EQ(findJumpBetween(jumps, 0.15, 0.16), nullptr);
+}
+
+}  // namespace
+}  // namespace swingsim
