@@ -161,6 +161,16 @@ std::string cellProblem(const std::vector<TuningKnob>& knobs, const std::vector<
   return "";
 }
 
+// How far a cell is from holding: its corners' hard violations (in scale units), a corner
+// without a swing or on another piece counting as kFarFromHolding each.
+constexpr double kFarFromHolding = 1e6;
+double cellViolation(const std::vector<TuningPoint>& corners) {
+  double v = 0;
+  for (const TuningPoint& p : corners)
+    v += !p.ran ? kFarFromHolding : p.hardViolation + (p.bounces != corners.front().bounces ? kFarFromHolding : 0);
+  return v;
+}
+
 std::vector<TuningPoint> cornerPoints(const PointCache& cache, const std::vector<std::vector<double>>& corners) {
   std::vector<TuningPoint> out;
   for (const auto& x : corners) out.push_back(cache.at(x));
@@ -204,6 +214,52 @@ std::vector<KnobBand> findBands(const std::vector<TuningKnob>& knobs, const std:
     (up ? bands[k].highStop : bands[k].lowStop) = stop;
   }, {}, stopFlag);
   return bands;
+}
+
+// From a cell that does not hold, steps to the neighbouring cell (one grid step in any
+// combination of knobs) that is closest to holding, until one holds (the best-cost corner of
+// the best cell that holds is the result), none comes closer, or kMaxCellMoves steps.
+void moveInside(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, PointCache& cache,
+                const Cell& first, const std::vector<double>& x, const std::string& firstProblem, ResolutionCheck& check) {
+  Cell current = first;
+  double currentViolation = cellViolation(check.corners);
+  for (int move = 1; move <= kMaxCellMoves; ++move) {
+    const std::vector<Cell> cells = neighbourCells(knobs, current);
+    std::vector<std::vector<double>> wanted;
+    for (const Cell& c : cells)
+      for (const auto& corner : cornersOf(knobs, c, x)) wanted.push_back(corner);
+    cache.run(wanted);
+    check.cellsTried += static_cast<int>(cells.size());
+    const Cell* closest = nullptr;
+    double closestViolation = currentViolation;
+    for (const Cell& c : cells) {
+      const std::vector<TuningPoint> corners = cornerPoints(cache, cornersOf(knobs, c, x));
+      if (cellProblem(knobs, targets, corners).empty()) {
+        const TuningPoint best = findBestTuningPoint(corners, {});
+        if (!check.holds || findBestTuningPoint({best}, {check.result}).knobs == best.knobs) {
+          check.result = best;
+          check.corners = corners;
+          check.holds = true;
+        }
+      } else if (const double v = cellViolation(corners); v < closestViolation) {
+        closest = &c;
+        closestViolation = v;
+      }
+    }
+    if (check.holds) {
+      check.verdict = "moved " + std::to_string(move) + (move == 1 ? " step" : " steps") +
+                      " inside: the cell around the optimum fails (" + firstProblem + "); the cell chosen has all " +
+                      std::to_string(check.corners.size()) + " corners meeting every hard limit on one piece of the "
+                      "swing time";
+      return;
+    }
+    if (!closest) break;
+    current = *closest;
+    currentViolation = closestViolation;
+  }
+  check.verdict = "cannot: no cell within " + std::to_string(kMaxCellMoves) + " grid steps of the optimum (searched "
+                  "toward the limits' inside) has every corner meeting every hard limit on one piece of the swing time; "
+                  "around the optimum: " + firstProblem;
 }
 
 }  // namespace
@@ -251,29 +307,7 @@ ResolutionCheck checkTuningResolution(const std::vector<TuningKnob>& knobs, cons
     check.verdict = "cannot: the cell around the optimum fails (" + firstProblem + "), and with " +
                     std::to_string(rounded) + " knobs its neighbouring cells are not searched";
   } else {
-    const std::vector<Cell> cells = neighbourCells(knobs, first);
-    std::vector<std::vector<double>> wanted;
-    for (const Cell& c : cells)
-      for (const auto& x : cornersOf(knobs, c, continuous.knobs)) wanted.push_back(x);
-    cache.run(wanted);
-    check.cellsTried += static_cast<int>(cells.size());
-    bool found = false;
-    for (const Cell& c : cells) {
-      const std::vector<TuningPoint> corners = cornerPoints(cache, cornersOf(knobs, c, continuous.knobs));
-      if (!cellProblem(knobs, targets, corners).empty()) continue;
-      const TuningPoint best = findBestTuningPoint(corners, {});
-      if (!found || findBestTuningPoint({best}, {check.result}).knobs == best.knobs) {
-        check.result = best;
-        check.corners = corners;
-        found = true;
-      }
-    }
-    check.holds = found;
-    check.verdict = found ? "moved one step inside: the cell around the optimum fails (" + firstProblem +
-                                "); the neighbouring cell chosen has all " + std::to_string(check.corners.size()) +
-                                " corners meeting every hard limit on one piece of the swing time"
-                          : "cannot: no cell within one step of the optimum has every corner meeting every hard limit "
-                            "on one piece of the swing time; around the optimum: " + firstProblem;
+    moveInside(knobs, targets, cache, first, continuous.knobs, firstProblem, check);
   }
   if (check.holds && !(stopFlag && *stopFlag))
     check.bands = findBands(knobs, targets, cache, check.result, window, jobs, stopFlag);

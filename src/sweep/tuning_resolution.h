@@ -6,8 +6,9 @@
 // and checked on every neighbour: the corners of the grid cell around it (each knob rounded
 // down and up, all combinations) must all meet every hard limit and lie on one continuous
 // piece of the swing time (no jump between them: swing_time_jumps.h). Where the cell around
-// the optimum fails, the neighbouring cells are tried and the best that holds is the result;
-// where none holds, the result says it cannot. Each knob's tolerance band then says how far it
+// the optimum fails, the search steps cell by cell (one grid step in any combination of knobs)
+// toward the cell closest to holding, and the best cell that holds is the result; where none
+// holds within kMaxCellMoves steps, the result says it cannot. Each knob's tolerance band then says how far it
 // can move alone, in steps of its resolution, with every hard limit met and the swing time
 // within a window.
 #include <optional>
@@ -25,8 +26,10 @@ namespace swingsim {
 std::optional<double> findDefaultKnobResolution(const std::string& key);
 
 /// The most knobs whose neighbouring cells are searched when the cell around the optimum fails
-/// (4^n swings for n knobs: 4096 at 6).
+/// (up to 4^n swings a step for n knobs: 4096 at 6).
 constexpr int kMaxKnobsForCellSearch = 6;
+/// The most steps of the grid the search moves from the cell around the optimum.
+constexpr int kMaxCellMoves = 12;
 /// The most steps of its resolution a tolerance band walks each way from the result.
 constexpr int kMaxBandSteps = 40;
 

@@ -122,3 +122,43 @@ TEST(TuningRun, StoppedAfterAFewSwingsItIsInterruptedWithABestPoint) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// The shipped tunes at the knobs' resolution: where the tune meets every hard limit, every
+// rounding neighbour of the result meets them too, each knob's value is on its grid and inside
+// its tolerance band; P2, whose tune meets no limit, says it cannot and its knee file says so.
+TEST(TuningRun, TheShippedTunesHoldAtEveryRoundingNeighbourOrSayTheyCannot) {
+  SWINGSIM_RELEASE_ONLY();  // five tunes, about 30 s on 2 cores
+  for (const std::string name : {"tune-p1-damping", "tune-microprocessor-p1", "tune-microprocessor-p3",
+                                 "tune-microprocessor-p4", "tune-microprocessor-p2"}) {
+    SweepRunControl control;
+    const TuningRun run = runTuningStudy(loadTuningStudy(kRoot + "/studies/" + name + ".yaml"), 0, control);
+    const ResolutionCheck& res = run.result.resolution;
+    ASSERT_TRUE(res.ran) << name;
+    if (name == "tune-microprocessor-p2") {
+      EXPECT_FALSE(run.result.feasible) << name;
+      EXPECT_FALSE(res.holds) << name;
+      EXPECT_EQ(res.verdict.rfind("cannot", 0), 0u) << res.verdict;
+      EXPECT_NE(describeTunedKneeMisses(run.result).find("MISSES the hard limit"), std::string::npos);
+      continue;
+    }
+    EXPECT_TRUE(run.result.feasible) << name;
+    ASSERT_TRUE(res.holds) << name << ": " << res.verdict;
+    EXPECT_GE(res.corners.size(), 2u) << name;
+    for (const TuningPoint& corner : res.corners) EXPECT_TRUE(corner.feasible()) << name;
+    EXPECT_EQ(describeTunedKneeMisses(run.result), "") << name;
+    ASSERT_EQ(res.bands.size(), run.result.knobs.size()) << name;
+    for (std::size_t k = 0; k < run.result.knobs.size(); ++k) {
+      const TuningKnob& knob = run.result.knobs[k];
+      const double value = run.result.best.knobs[k];
+      EXPECT_NEAR(value / knob.resolution, std::round(value / knob.resolution), 1e-9) << name << " " << knob.key;
+      EXPECT_LE(res.bands[k].low, value) << name << " " << knob.key;
+      EXPECT_GE(res.bands[k].high, value) << name << " " << knob.key;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace swingsim

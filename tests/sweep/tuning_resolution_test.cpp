@@ -84,7 +84,7 @@ TEST(TuningResolution, AnOptimumOnALimitsEdgeMovesOneStepInside) {
   const ResolutionCheck c = checkTuningResolution(knobs(), targets, plane, optimum, 0.010, 1);
   ASSERT_TRUE(c.ran);
   EXPECT_TRUE(c.holds) << c.verdict;
-  EXPECT_NE(c.verdict.find("moved one step inside"), std::string::npos) << c.verdict;
+  EXPECT_NE(c.verdict.find("moved 1 step inside"), std::string::npos) << c.verdict;
   EXPECT_NE(c.verdict.find("peak_knee_flexion_deg 91"), std::string::npos) << c.verdict;
   for (const TuningPoint& p : c.corners) EXPECT_TRUE(p.feasible()) << p.peakKneeFlexion * kRadToDeg;
   EXPECT_TRUE(c.result.feasible());
