@@ -164,6 +164,16 @@ ScaledStart calcScaledStart(const std::vector<BoundedParameter>& parameters) {
 }
 
 /// Ceres' options from ours: dense QR, silent, one thread.
+// Why Ceres stopped, in the words of the problem rather than the solver's: a cost it could not
+// evaluate is a model run that failed (a swing without an end), not a solver fault.
+std::string describeStop(const ceres::Solver::Summary& summary) {
+  if (summary.message.find("evaluation failed") != std::string::npos)
+    return "a model run near the last step failed (no result to compare), so the fit stopped at the best point so far";
+  if (summary.termination_type == ceres::NO_CONVERGENCE)
+    return "the iteration limit was reached (" + std::to_string(summary.iterations.size() - 1) + " iterations)";
+  return summary.message;
+}
+
 ceres::Solver::Options makeSolverOptions(const BoundedFitSettings& settings) {
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
@@ -245,7 +255,7 @@ BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const 
   out.x = toValues(parameters, u.data());
   out.iterations = static_cast<int>(summary.iterations.size()) - 1;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
-  if (!out.converged) out.stopReason = summary.message;
+  if (!out.converged) out.stopReason = describeStop(summary);
   out.atBound = calcAtBound(scaled);
 
   const Eigen::Index ni = static_cast<Eigen::Index>(n);

@@ -139,6 +139,9 @@ std::string formatTuningSummary(const TuningReportInputs& in) {
   if (r.feasible && r.polishEnd.ran && !r.polishEnd.feasible())
     s << "  polish end          Ceres' solution breaks a hard limit (its penalty let it past); the result is the best "
          "evaluated setting that meets every one\n";
+  if (r.best.dwellCutByRecord)
+    s << "  record end          the measured record ends inside the settle dwell (knee in the zone, thigh at its "
+         "target): the swing end is the knee's entry into the zone, the dwell unconfirmed\n";
   printKnobs(s, r);
   printTargets(s, in);
   s << "  binding             " << describeBinding(r) << "\n";
@@ -184,6 +187,7 @@ Json makePointJson(const TuningPoint& p, const char* stage) {
   j["min_toe_clearance_m"] = finiteOrNull(p.minToeClearance);
   j["max_stop_impact_deg_s"] = p.ran ? Json(p.maxStopImpactSpeed * kRadToDeg) : Json(nullptr);
   j["cost"] = finiteOrNull(p.cost);
+  j["settle_dwell_cut_by_record"] = p.dwellCutByRecord;
   if (!p.ran) j["failure"] = p.failure;
   return j;
 }

@@ -46,6 +46,15 @@ double TuningPoint::value(TuningQuantity q) const {
 
 void scoreTuningPoint(TuningPoint& point, const SwingResult& swing, const std::vector<TuningTarget>& targets) {
   point.swingTime = swing.swingTime;
+  // A measured record that ends while the knee rests in the zone with the thigh at its target
+  // (only the settle dwell unfinished): the swing end is that entry, as the dwell would have
+  // confirmed unless the knee left the zone after the record.
+  point.dwellCutByRecord = false;
+  if (!std::isfinite(point.swingTime) && swing.trialEnd && swing.trialEnd->unmet == "settle_dwell" &&
+      swing.trialEnd->dwellDone) {
+    point.swingTime = swing.trialEnd->time - *swing.trialEnd->dwellDone;
+    point.dwellCutByRecord = true;
+  }
   point.bounces = swing.bounces;
   if (swing.peakKneeFlexion) point.peakKneeFlexion = swing.peakKneeFlexion->flexion;
   if (swing.minToeClearance) point.minToeClearance = *swing.minToeClearance;
@@ -58,7 +67,8 @@ void scoreTuningPoint(TuningPoint& point, const SwingResult& swing, const std::v
     const double value = point.value(t.quantity);
     if (!std::isfinite(value)) {
       point.ran = false;
-      point.failure = std::string("the swing has no ") + tuningQuantityKey(t.quantity);
+      point.failure = std::string("the swing has no ") + tuningQuantityKey(t.quantity) +
+                      (swing.trialEnd ? " (" + swing.trialEnd->describe() + ")" : "");
       point.cost = point.hardViolation = std::numeric_limits<double>::infinity();
       return;
     }

@@ -63,6 +63,9 @@ struct TuningPoint {
   double minToeClearance = std::numeric_limits<double>::quiet_NaN(); ///< m
   double maxStopImpactSpeed = 0;  ///< rad/s; 0 without an impact
   int bounces = 0;                ///< SwingResult::bounces: the continuous piece of the swing time
+  /// A measured record ended inside the settle dwell (the knee in the zone, the thigh at its
+  /// target): swingTime is the knee's entry into the zone, the dwell unconfirmed.
+  bool dwellCutByRecord = false;
   double cost = std::numeric_limits<double>::infinity();  ///< soft cost (sum of squared residuals)
   double hardViolation = std::numeric_limits<double>::infinity();  ///< sum of hard misses / scale; 0: feasible
   bool feasible() const { return ran && hardViolation == 0; }

@@ -166,3 +166,32 @@ TEST(KneeTuning, TheStopFlagEndsTheRunWithTheBestPointSoFar) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// A measured record that ends inside the settle dwell (the knee resting in the zone with the
+// thigh at its target) still gives a swing time: the entry into the zone, flagged; one that
+// ends with the knee still flexed is a failed point that says why.
+TEST(KneeTuning, ARecordEndingInsideTheSettleDwellGivesTheEntryAsTheSwingEnd) {
+  const std::vector<TuningTarget> targets = {{TuningQuantity::kSwingTime, 0.4, 0.4, false, 1, 0.01}};
+  SwingResult swing;
+  swing.swingTime = std::numeric_limits<double>::quiet_NaN();
+  swing.trialEnd = TrialEnd{"settle_dwell", 0.386, 0.05, 0.3, 0.5, 0.35, 0.1, 0.040, 0.15};
+  TuningPoint p;
+  scoreTuningPoint(p, swing, targets);
+  EXPECT_TRUE(p.ran);
+  EXPECT_TRUE(p.dwellCutByRecord);
+  EXPECT_NEAR(p.swingTime, 0.386 - 0.040, 1e-12);
+
+  swing.trialEnd = TrialEnd{"knee_zone", 0.386, 0.4, 0.3, 0.5, 0.35, 0.1, std::nullopt, 0.15};
+  TuningPoint q;
+  scoreTuningPoint(q, swing, targets);
+  EXPECT_FALSE(q.ran);
+  EXPECT_FALSE(q.dwellCutByRecord);
+  EXPECT_NE(q.failure.find("the swing has no swing_time_s (the measured trial ended at 0.386 s"), std::string::npos)
+      << q.failure;
+}
+
+}  // namespace
+}  // namespace swingsim
