@@ -148,9 +148,26 @@ def check_tune(driver):
     check(not driver.find_elements(By.CSS_SELECTOR, "#sweep-figure svg"), "the sweep figure of the leg before is still shown")
 
 
-def check_osim_import(driver):
-    """Imports OpenSim's scaled gait2354 subject01 (shipped) through the page's file input."""
+def cli_imported_swing_time(binary, osim, knee, shank_kg, foot_kg):
+    """swingsim import-osim with the prosthesis's masses, then swingsim simulate at 0 m."""
+    with tempfile.TemporaryDirectory() as out:
+        participant = os.path.join(out, "imported.yaml")
+        subprocess.run([binary, "import-osim", osim, "--shank-mass-kg", str(shank_kg), "--foot-mass-kg", str(foot_kg),
+                        "--knee", os.path.abspath(f"models/{knee}.yaml"), "--out", participant],
+                       capture_output=True, text=True, check=True)
+        run = subprocess.run([binary, "simulate", participant, "--out", out], capture_output=True, text=True, check=True)
+    match = re.search(r"swing time\s+(\d+\.\d+) s", run.stdout)
+    check(match is not None, f"no swing time in swingsim simulate's output:\n{run.stdout}")
+    return match.group(1)
+
+
+def check_osim_import(driver, binary):
+    """Imports OpenSim's scaled gait2354 subject01 (shipped) through the page's file input, with
+    a prosthesis's shank and foot masses: at 0 m and the knee file's own settings the page's
+    person swings as import-osim's with the same masses under swingsim simulate."""
     path = os.path.abspath("studies/data/opensim-subject01/gait2354_subject01_simbody.osim")
+    driver.find_element(By.ID, "osim-shank-mass").send_keys("1.2")
+    driver.find_element(By.ID, "osim-foot-mass").send_keys("0.9")
     driver.find_element(By.ID, "osim-upload").send_keys(path)
     WebDriverWait(driver, WAIT_S).until(lambda d: text_of(d, "export-status").startswith("imported"))
     wait_idle(driver)
@@ -159,6 +176,15 @@ def check_osim_import(driver):
     check("subject01_r" in status, f"import status {status!r}")
     height = driver.find_element(By.NAME, "height_m").get_attribute("value")
     check(height.startswith("1.79"), f"the imported height in the form: {height!r}")
+    knee = driver.find_element(By.ID, "knee").get_attribute("value")
+    for slider, value in (("lowering", "0"), ("scale", "1")):
+        driver.execute_script("const s = document.getElementById(arguments[0]); s.value = arguments[1];"
+                              "s.dispatchEvent(new Event('input', {bubbles: true}))", slider, value)
+        wait_idle(driver)
+    shown = text_of(driver, "swing-time")
+    expected = cli_imported_swing_time(binary, path, knee, 1.2, 0.9)
+    print(f"imported with a 1.2 kg shank and a 0.9 kg foot, knee {knee}: page {shown}, command line {expected} s")
+    check(shown == f"{expected} s", f"page shows {shown!r}, import-osim + simulate give {expected} s")
 
 
 def check_bad_mass(driver):
@@ -203,7 +229,7 @@ def main():
         if args.screenshot:
             driver.save_screenshot(re.sub(r"\.png$", "-bad-mass.png", args.screenshot))
         check_console(driver, ("400 (Bad Request)",))  # the bad mass's answer only
-        check_osim_import(driver)
+        check_osim_import(driver, args.binary)
         if args.screenshot:
             driver.save_screenshot(re.sub(r"\.png$", "-osim.png", args.screenshot))
         check_console(driver, ("422 (Unprocessable",))  # the imported leg's swing may not end under the default hip moment

@@ -316,8 +316,11 @@ async function importOsim() {
   const file = $('osim-upload').files[0];
   if (!file) return;
   $('export-status').textContent = `importing ${file.name}...`;
+  // The prosthesis's masses, as import-osim's --shank-mass-kg and --foot-mass-kg (empty: the model's).
+  const mass = (id) => ($(id).value === '' ? undefined : Number($(id).value));
   const answer = await post('api/import_osim', {
     osim_text: await file.text(), file_name: file.name, side: $('osim-side').value, knee: $('knee').value || undefined,
+    shank_mass_kg: mass('osim-shank-mass'), foot_mass_kg: mass('osim-foot-mass'),
   });
   $('export-status').textContent = '';
   if (answer.status !== 200) { showError(answer.json); return; }
