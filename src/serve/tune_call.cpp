@@ -108,11 +108,14 @@ Json makeTuneJson(const TuningResult& r, double seconds) {
   for (const TargetOutcome& t : r.targets)
     targets.push_back({{"quantity", tuningQuantityKey(t.target.quantity)},
                        {"value", toPageUnits(t.target.quantity, t.value)},
+                       {"min", std::isfinite(t.target.lower) ? Json(toPageUnits(t.target.quantity, t.target.lower)) : Json(nullptr)},
+                       {"max", std::isfinite(t.target.upper) ? Json(toPageUnits(t.target.quantity, t.target.upper)) : Json(nullptr)},
                        {"hard", t.target.hard},
                        {"met", t.met}});
   return {{"knobs", knobs}, {"targets", targets}, {"feasible", r.feasible}, {"interrupted", r.interrupted},
           {"identifiable", r.identifiable},
           {"identifiability", r.identifiability}, {"evaluations", r.evaluations}, {"seconds", seconds},
+          {"resolution", r.resolution.ran ? Json("At the knobs' resolution: " + r.resolution.verdict + ".") : Json(nullptr)},
           {"swing_time_s", std::isfinite(r.best.swingTime) ? Json(r.best.swingTime) : Json(nullptr)}};
 }
 

@@ -28,7 +28,7 @@ try:
     from selenium.webdriver.chrome.service import Service
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
-    from selenium.webdriver.support.ui import WebDriverWait
+    from selenium.webdriver.support.ui import Select, WebDriverWait
 except ImportError:
     print("skipped: python3-selenium is not installed (scripts/bootstrap.sh)")
     sys.exit(77)
@@ -161,6 +161,22 @@ def cli_imported_swing_time(binary, osim, knee, shank_kg, foot_kg):
     return match.group(1)
 
 
+def check_walking_tune(driver):
+    """The walking targets, with a swing time typed in: the tuning uses them (its summary gives
+    the targets the server tuned toward)."""
+    Select(driver.find_element(By.ID, "tune-gait")).select_by_value("walking")
+    check(driver.find_element(By.ID, "tune-flexion-max").get_attribute("value") == "70", "walking defaults not set")
+    driver.find_element(By.ID, "tune-time").send_keys("0.45")
+    driver.execute_script("document.getElementById('tune-summary').textContent = ''")
+    driver.find_element(By.ID, "tune-button").click()
+    WebDriverWait(driver, WAIT_S).until(lambda d: "swings," in text_of(d, "tune-summary"))
+    wait_idle(driver)
+    summary = text_of(driver, "tune-summary")
+    print(f"walking tune: {summary}")
+    check("targets: swing 0.450 s, peak flexion 55-70 deg, toe clearance at least 0.010 m" in summary,
+          f"the walking targets were not used: {summary!r}")
+
+
 def check_osim_import(driver, binary):
     """Imports OpenSim's scaled gait2354 subject01 (shipped) through the page's file input, with
     a prosthesis's shank and foot masses: at 0 m and the knee file's own settings the page's
@@ -223,6 +239,7 @@ def main():
         check_lowering(driver, args.binary)
         check_sweep(driver)
         check_tune(driver)
+        check_walking_tune(driver)
         if args.screenshot:
             driver.save_screenshot(args.screenshot)
         check_bad_mass(driver)

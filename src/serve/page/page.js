@@ -368,6 +368,30 @@ function buildTuneKnobs() {
   }
 }
 
+// The tuning's targets by gait (assumptions, said on the page): peak knee flexion window (deg)
+// and the least toe clearance (m).
+const kTuneDefaults = {
+  running: { flexion: [60, 90], clearance: 0.08 },  // studies/tune-p1-damping.yaml
+  walking: { flexion: [55, 70], clearance: 0.01 },  // Winter's natural cadence peaks at 67 deg
+};
+
+function setTuneDefaults() {
+  const d = kTuneDefaults[$('tune-gait').value];
+  $('tune-flexion-min').value = d.flexion[0];
+  $('tune-flexion-max').value = d.flexion[1];
+  $('tune-clearance').value = d.clearance;
+}
+
+// The targets as the form holds them; an empty swing time is the sound limb's.
+function tuneTargets() {
+  const targets = {
+    peak_knee_flexion_deg: [Number($('tune-flexion-min').value), Number($('tune-flexion-max').value)],
+    min_toe_clearance_m: Number($('tune-clearance').value),
+  };
+  if ($('tune-time').value !== '') targets.swing_time_s = Number($('tune-time').value);
+  return targets;
+}
+
 async function runTune() {
   const knobs = [];
   for (const box of document.querySelectorAll('#tune-knobs input:checked')) {
@@ -380,7 +404,7 @@ async function runTune() {
   const asked = JSON.stringify(legRequest());
   let answer;
   try {
-    answer = await post('api/tune', { ...legRequest(), knobs });
+    answer = await post('api/tune', { ...legRequest(), knobs, targets: tuneTargets() });
   } finally {
     $('tune-button').disabled = false;
   }
@@ -394,10 +418,14 @@ async function runTune() {
   const parts = t.knobs.map((k) => `${k.key} ${value(k)}${k.at_range_end ? ' (at a range end)' : ''}`);
   const time = t.targets.find((x) => x.quantity === 'swing_time_s');
   const unmet = t.targets.filter((x) => !x.met).map((x) => x.quantity);
+  const flexion = t.targets.find((x) => x.quantity === 'peak_knee_flexion_deg');
+  const clearance = t.targets.find((x) => x.quantity === 'min_toe_clearance_m');
+  const targetsText = `targets: swing ${time.min.toFixed(3)} s, peak flexion ${flexion.min.toFixed(0)}-${flexion.max.toFixed(0)} deg, ` +
+    `toe clearance at least ${clearance.min.toFixed(3)} m`;
   $('tune-summary').textContent = `${t.feasible ? '' : 'NO SETTING MEETS THE LIMITS; closest: '}${parts.join(', ')}: swing ` +
     `${time.value.toFixed(4)} s${unmet.length ? `; not met: ${unmet.join(', ')}` : '; every target met'} ` +
     `(${t.evaluations} swings, ${t.seconds.toFixed(1)} s${t.interrupted ? ', stopped at the server\'s time budget: the best so far' : ''}). ` +
-    `${t.identifiable ? '' : t.identifiability}`;
+    `${targetsText}. ${t.resolution ? t.resolution : ''} ${t.identifiable ? '' : t.identifiability}`;
   for (const k of t.knobs) {
     const slider = tunableSliders().find((s) => (kTuneKeys[s.id] || s.name) === k.key);
     if (!slider) continue;
@@ -446,6 +474,7 @@ async function start() {
   $('export-osim').addEventListener('click', exportOsim);
   $('export-report').addEventListener('click', exportReport);
   $('tune-button').addEventListener('click', runTune);
+  $('tune-gait').addEventListener('change', setTuneDefaults);
   await loadParticipant();
 }
 
