@@ -177,6 +177,30 @@ def check_walking_tune(driver):
           f"the walking targets were not used: {summary!r}")
 
 
+def check_microprocessor_knee(driver, binary):
+    """The microprocessor knee: a damping, stiffness and equilibrium slider per swing state (the
+    knobs the shipped tunes move), and at the file's own values the page's swing is the command
+    line's (a file value off a slider's step is kept, not rounded)."""
+    Select(driver.find_element(By.ID, "knee")).select_by_value("microprocessor-knee-osl")
+    WebDriverWait(driver, WAIT_S).until(lambda d: len(d.find_elements(By.CSS_SELECTOR, "#knee-states input[type=range]")) == 9)
+    labels = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#knee-states label")]
+    check(any("stiffness" in x for x in labels) and any("equilibrium" in x for x in labels), f"state sliders: {labels}")
+    for slider, value in (("lowering", "0"), ("scale", "1")):
+        driver.execute_script("const s = document.getElementById(arguments[0]); s.value = arguments[1];"
+                              "s.dispatchEvent(new Event('input', {bubbles: true}))", slider, value)
+        wait_idle(driver)
+    shown = text_of(driver, "swing-time")
+    with tempfile.TemporaryDirectory() as out:
+        run = subprocess.run([binary, "simulate", "participants/p1.yaml", "--knee", "models/microprocessor-knee-osl.yaml",
+                              "--out", out], capture_output=True, text=True, check=True)
+    match = re.search(r"swing time\s+(\d+\.\d+) s", run.stdout)
+    check(match is not None, f"no swing time in swingsim simulate's output:\n{run.stdout}")
+    print(f"microprocessor knee at 0 m: page {shown}, swingsim simulate {match.group(1)} s")
+    check(shown == f"{match.group(1)} s", f"page shows {shown!r}, swingsim simulate gives {match.group(1)} s")
+    Select(driver.find_element(By.ID, "knee")).select_by_value("damping-table-default")
+    wait_idle(driver)
+
+
 def check_osim_import(driver, binary):
     """Imports OpenSim's scaled gait2354 subject01 (shipped) through the page's file input, with
     a prosthesis's shank and foot masses: at 0 m and the knee file's own settings the page's
@@ -240,6 +264,7 @@ def main():
         check_sweep(driver)
         check_tune(driver)
         check_walking_tune(driver)
+        check_microprocessor_knee(driver, args.binary)
         if args.screenshot:
             driver.save_screenshot(args.screenshot)
         check_bad_mass(driver)

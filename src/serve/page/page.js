@@ -50,29 +50,50 @@ function kneeSettings() {
   return settings;
 }
 
-// One damping slider per state of a microprocessor knee (0 to 4 times the file's value).
+// A microprocessor knee's swing-state settings, each a slider stepping at its resolution (the
+// step a prosthetist can set, as swingsim tune gives its result): the damping (0.1 N m s/rad)
+// and stiffness (1 N m/rad), 0 to 4 times the file's value, and the equilibrium angle (1 deg),
+// 0 to 120 deg; the shipped tunes move all three.
+const kStateKnobs = [
+  { key: 'damping_Nm_s_per_rad', label: 'damping', unit: 'N m s/rad', step: 0.1, digits: 1 },
+  { key: 'stiffness_Nm_per_rad', label: 'stiffness', unit: 'N m/rad', step: 1, digits: 0 },
+  { key: 'equilibrium_deg', label: 'equilibrium', unit: 'deg', step: 1, digits: 0, max: 120 },
+];
+
 function buildKneeStates(states) {
   const box = $('knee-states');
   box.textContent = '';
   states.forEach((state, i) => {
-    if (state.damping_Nm_s_per_rad === null) return;
-    const key = `impedance_state_machine.states[${i}].damping_Nm_s_per_rad`;
-    const row = document.createElement('div');
-    row.className = 'slider';
-    row.innerHTML = '<label></label><input type="range"><output></output>';
-    const slider = row.querySelector('input');
-    const top = Math.max(1, 4 * state.damping_Nm_s_per_rad);
-    Object.assign(slider, { id: `state-${i}`, name: key, min: 0, max: top, step: top / 200, value: state.damping_Nm_s_per_rad });
-    row.querySelector('label').textContent = `${state.name} damping`;
-    row.querySelector('label').htmlFor = slider.id;
-    const output = row.querySelector('output');
-    const show = () => { output.textContent = `${Number(slider.value).toFixed(3)} N m s/rad`; };
-    slider.addEventListener('input', () => { show(); scheduleSimulate(); });
-    show();
-    const error = document.createElement('p');
-    error.className = 'field-error';
-    error.dataset.errorFor = key;
-    box.append(row, error);
+    for (const knob of kStateKnobs) {
+      if (state[knob.key] === null) continue;
+      const key = `impedance_state_machine.states[${i}].${knob.key}`;
+      const row = document.createElement('div');
+      row.className = 'slider';
+      row.innerHTML = '<label></label><input type="range"><output></output>';
+      const slider = row.querySelector('input');
+      const top = knob.max || Math.max(knob.step * 10, Math.ceil(4 * state[knob.key] / knob.step) * knob.step);
+      // A file value off the knob's grid is kept as it is (the swing is the file's); a moved
+      // slider then steps at the resolution only once the value is on the grid.
+      const onGrid = Math.abs(state[knob.key] / knob.step - Math.round(state[knob.key] / knob.step)) < 1e-9;
+      Object.assign(slider, { id: `state-${i}-${knob.label}`, name: key, min: 0, max: top, step: onGrid ? knob.step : 'any',
+                              value: state[knob.key] });
+      row.querySelector('label').textContent = `${state.name} ${knob.label}`;
+      row.querySelector('label').htmlFor = slider.id;
+      const output = row.querySelector('output');
+      // At the resolution's digits, or (a file's value off the grid) as the file gives it, at most 3 decimals.
+      const show = () => {
+        const v = Number(slider.value);
+        const onStep = Math.abs(v / knob.step - Math.round(v / knob.step)) < 1e-9;
+        output.textContent = `${onStep ? v.toFixed(knob.digits) : String(Number(v.toFixed(3)))} ${knob.unit}`;
+      };
+      slider.addEventListener('input', () => { show(); scheduleSimulate(); });
+      slider.addEventListener('show', show);  // a value set by the page (a tuning), not the user
+      show();
+      const error = document.createElement('p');
+      error.className = 'field-error';
+      error.dataset.errorFor = key;
+      box.append(row, error);
+    }
   });
 }
 
@@ -429,7 +450,7 @@ async function runTune() {
   for (const k of t.knobs) {
     const slider = tunableSliders().find((s) => (kTuneKeys[s.id] || s.name) === k.key);
     if (!slider) continue;
-    slider.step = 'any';  // the tuned value itself, not the nearest step
+    slider.step = 'any';  // the tuned value itself (on the knob's grid: swingsim tune's resolution)
     slider.value = k.value;
     slider.dispatchEvent(new Event('input'));
   }
