@@ -9,6 +9,7 @@
 
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/text_format.h"
 #include "io/knee_model_knobs.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
@@ -81,6 +82,40 @@ YAML::Node findMapNode(YAML::Node root, const std::string& key) {
   return node;
 }
 
+// The form's edits into `root`. A segment's mass edited without its inertia keeps its radius of
+// gyration: the inertia scales with the mass (as import-osim's --shank-mass-kg), so a lighter
+// prosthetic shank is not given the intact one's inertia.
+void applyEdits(YAML::Node& root, const std::vector<std::pair<std::string, std::string>>& edits) {
+  const auto edited = [&](const std::string& key) {
+    for (const auto& e : edits)
+      if (e.first == key) return true;
+    return false;
+  };
+  std::vector<std::pair<std::string, double>> inertiaScales;  // (inertia key, new mass / old mass)
+  for (const auto& [key, value] : edits) {
+    const std::string suffix = ".mass_kg";
+    if (key.rfind("segments.", 0) != 0 || key.size() <= suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    const std::string inertiaKey = key.substr(0, key.size() - suffix.size()) + ".inertia_kgm2";
+    if (edited(inertiaKey)) continue;
+    try {
+      const double oldMass = findMapNode(root, key).as<double>(), newMass = std::stod(value);
+      if (oldMass > 0 && newMass > 0 && std::isfinite(newMass)) inertiaScales.emplace_back(inertiaKey, newMass / oldMass);
+    } catch (const std::exception&) {
+      // Not numbers: the participant loader says what is wrong with the edited value.
+    }
+  }
+  for (const auto& [key, value] : edits) findMapNode(root, key) = value;
+  for (const auto& [key, scale] : inertiaScales) {
+    YAML::Node inertia = findMapNode(root, key);
+    try {
+      inertia = fmt("%.17g", inertia.as<double>() * scale);
+    } catch (const YAML::Exception&) {
+      // Not a number in the file: the loader refuses it with its own message.
+    }
+  }
+}
+
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
   for (auto at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
   return text;
@@ -133,7 +168,7 @@ Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles
   if (!root.IsMap()) throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
   // The text as given where nothing was changed, so that messages give the upload's own lines.
   const bool rewritten = uploaded && checkUploadedPaths(root, files, request.kneeYaml.has_value());
-  for (const auto& [key, value] : request.edits) findMapNode(root, key) = value;
+  applyEdits(root, request.edits);
   YAML::Emitter out;
   out << root;
   try {

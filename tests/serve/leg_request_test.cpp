@@ -56,6 +56,18 @@ TEST(ShippedFilesTest, RefusesPathTraversalNames) {
   }
 }
 
+TEST(LegRequestTest, AMassEditKeepsTheSegmentsRadiusOfGyrationUnlessTheInertiaIsEditedToo) {
+  const Leg intact = load({{"participant", "p1"}});
+  const double mass = intact.participant.shank.mass, inertia = intact.participant.shank.inertia;
+  // Half the shank's mass: its inertia about the COM halves with it (the same radius of gyration).
+  const Leg lighter = load({{"participant", "p1"}, {"edits", {{"segments.shank.mass_kg", std::to_string(mass / 2)}}}});
+  EXPECT_NEAR(lighter.participant.shank.inertia, inertia * std::stod(std::to_string(mass / 2)) / mass, 1e-15);
+  EXPECT_DOUBLE_EQ(lighter.participant.thigh.inertia, intact.participant.thigh.inertia);
+  // Both edited: the inertia as given.
+  const Leg both = load({{"participant", "p1"}, {"edits", {{"segments.shank.mass_kg", "0.5"}, {"segments.shank.inertia_kgm2", "0.01"}}}});
+  EXPECT_DOUBLE_EQ(both.participant.shank.inertia, 0.01);
+}
+
 TEST(LegRequestTest, LoadsAShippedParticipantAndItsKnee) {
   const Leg leg = load({{"participant", "p1"}});
   EXPECT_EQ(leg.participant.name, "P1");
