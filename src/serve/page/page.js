@@ -206,7 +206,10 @@ function buildForm(fields) {
     input.name = key;
     input.id = `field-${key}`;
     row.querySelector('label').htmlFor = input.id;
-    input.value = value === null ? '' : String(value);
+    // Six significant digits on the page (an imported model's 0.438772163... reads 0.438772); the
+    // exact value stays the file's and is sent only once the field is edited.
+    input.value = value === null ? '' : typeof value === 'number' ? String(Number(value.toPrecision(6))) : String(value);
+    if (typeof value === 'number') input.title = `in the file: ${value}`;
     input.addEventListener('change', () => {
       if (input.value.trim() === '') delete state.edits[key]; else state.edits[key] = input.value.trim();
       state.inputTime = performance.now();
