@@ -216,50 +216,90 @@ std::vector<KnobBand> findBands(const std::vector<TuningKnob>& knobs, const std:
   return bands;
 }
 
+// The cells one grid step around `current`: the best that holds (by its best corner), and the
+// one that does not hold closest to holding (below `violationBelow`).
+struct NeighbourScan {
+  std::optional<Cell> holding;
+  std::vector<TuningPoint> holdingCorners;
+  TuningPoint holdingBest;
+  std::optional<Cell> closest;
+  double closestViolation = 0;
+};
+
+NeighbourScan scanNeighbours(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
+                             PointCache& cache, const Cell& current, const std::vector<double>& x, double violationBelow,
+                             int& cellsTried) {
+  const std::vector<Cell> cells = neighbourCells(knobs, current);
+  std::vector<std::vector<double>> wanted;
+  for (const Cell& c : cells)
+    for (const auto& corner : cornersOf(knobs, c, x)) wanted.push_back(corner);
+  cache.run(wanted);
+  cellsTried += static_cast<int>(cells.size());
+  NeighbourScan scan;
+  scan.closestViolation = violationBelow;
+  for (const Cell& c : cells) {
+    const std::vector<TuningPoint> corners = cornerPoints(cache, cornersOf(knobs, c, x));
+    if (cellProblem(knobs, targets, corners).empty()) {
+      const TuningPoint best = findBestTuningPoint(corners, {});
+      if (!scan.holding || best.cost < scan.holdingBest.cost) {
+        scan.holding = c;
+        scan.holdingCorners = corners;
+        scan.holdingBest = best;
+      }
+    } else if (const double v = cellViolation(corners); v < scan.closestViolation) {
+      scan.closest = c;
+      scan.closestViolation = v;
+    }
+  }
+  return scan;
+}
+
 // From a cell that does not hold, steps to the neighbouring cell (one grid step in any
-// combination of knobs) that is closest to holding, until one holds (the best-cost corner of
-// the best cell that holds is the result), none comes closer, or kMaxCellMoves steps.
+// combination of knobs) that is closest to holding, until one holds, none comes closer, or
+// kMaxCellMoves steps; then, from the cell that holds, to a neighbouring cell that holds with a
+// lower cost while there is one (at most kMaxCellMoves steps): the best corner of the last is
+// the result.
 void moveInside(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, PointCache& cache,
                 const Cell& first, const std::vector<double>& x, const std::string& firstProblem, ResolutionCheck& check) {
   Cell current = first;
   double currentViolation = cellViolation(check.corners);
-  for (int move = 1; move <= kMaxCellMoves; ++move) {
-    const std::vector<Cell> cells = neighbourCells(knobs, current);
-    std::vector<std::vector<double>> wanted;
-    for (const Cell& c : cells)
-      for (const auto& corner : cornersOf(knobs, c, x)) wanted.push_back(corner);
-    cache.run(wanted);
-    check.cellsTried += static_cast<int>(cells.size());
-    const Cell* closest = nullptr;
-    double closestViolation = currentViolation;
-    for (const Cell& c : cells) {
-      const std::vector<TuningPoint> corners = cornerPoints(cache, cornersOf(knobs, c, x));
-      if (cellProblem(knobs, targets, corners).empty()) {
-        const TuningPoint best = findBestTuningPoint(corners, {});
-        if (!check.holds || findBestTuningPoint({best}, {check.result}).knobs == best.knobs) {
-          check.result = best;
-          check.corners = corners;
-          check.holds = true;
-        }
-      } else if (const double v = cellViolation(corners); v < closestViolation) {
-        closest = &c;
-        closestViolation = v;
-      }
+  int inside = 0;
+  for (int move = 1; move <= kMaxCellMoves && !check.holds; ++move) {
+    const NeighbourScan scan = scanNeighbours(knobs, targets, cache, current, x, currentViolation, check.cellsTried);
+    if (scan.holding) {
+      current = *scan.holding;
+      check.result = scan.holdingBest;
+      check.corners = scan.holdingCorners;
+      check.holds = true;
+      inside = move;
+    } else if (scan.closest) {
+      current = *scan.closest;
+      currentViolation = scan.closestViolation;
+    } else {
+      break;
     }
-    if (check.holds) {
-      check.verdict = "moved " + std::to_string(move) + (move == 1 ? " step" : " steps") +
-                      " inside: the cell around the optimum fails (" + firstProblem + "); the cell chosen has all " +
-                      std::to_string(check.corners.size()) + " corners meeting every hard limit on one piece of the "
-                      "swing time";
-      return;
-    }
-    if (!closest) break;
-    current = *closest;
-    currentViolation = closestViolation;
   }
-  check.verdict = "cannot: no cell within " + std::to_string(kMaxCellMoves) + " grid steps of the optimum (searched "
-                  "toward the limits' inside) has every corner meeting every hard limit on one piece of the swing time; "
-                  "around the optimum: " + firstProblem;
+  if (!check.holds) {
+    check.verdict = "cannot: no cell within " + std::to_string(kMaxCellMoves) + " grid steps of the optimum (searched "
+                    "toward the limits' inside) has every corner meeting every hard limit on one piece of the swing "
+                    "time; around the optimum: " + firstProblem;
+    return;
+  }
+  int along = 0;
+  for (; along < kMaxCellMoves; ++along) {
+    const NeighbourScan scan = scanNeighbours(knobs, targets, cache, current, x, 0, check.cellsTried);
+    if (!scan.holding || !(scan.holdingBest.cost < check.result.cost)) break;
+    current = *scan.holding;
+    check.result = scan.holdingBest;
+    check.corners = scan.holdingCorners;
+  }
+  check.verdict = "moved " + std::to_string(inside) + (inside == 1 ? " step" : " steps") +
+                  " inside: the cell around the optimum fails (" + firstProblem + ")" +
+                  (along > 0 ? ", then " + std::to_string(along) + (along == 1 ? " step" : " steps") +
+                                   " to cells that hold at a lower cost"
+                             : "") +
+                  "; the cell chosen has all " + std::to_string(check.corners.size()) +
+                  " corners meeting every hard limit on one piece of the swing time";
 }
 
 }  // namespace

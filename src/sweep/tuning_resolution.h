@@ -7,8 +7,9 @@
 // down and up, all combinations) must all meet every hard limit and lie on one continuous
 // piece of the swing time (no jump between them: swing_time_jumps.h). Where the cell around
 // the optimum fails, the search steps cell by cell (one grid step in any combination of knobs)
-// toward the cell closest to holding, and the best cell that holds is the result; where none
-// holds within kMaxCellMoves steps, the result says it cannot. Each knob's tolerance band then says how far it
+// toward the cell closest to holding, then from the first that holds to neighbouring cells
+// that hold at a lower cost; the best corner of the last is the result. Where none holds
+// within kMaxCellMoves steps, the result says it cannot. Each knob's tolerance band then says how far it
 // can move alone, in steps of its resolution, with every hard limit met and the swing time
 // within a window.
 #include <optional>
