@@ -162,3 +162,40 @@ TEST(TuningRun, TheShippedTunesHoldAtEveryRoundingNeighbourOrSayTheyCannot) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// A measured-thigh drive can be tuned: P1's prosthesis driven by the left thigh of OpenSim's
+// Gait10dof18musc walk (swing 1), whose record ends while the knee rests in the zone, inside
+// the settle dwell. The swing end is then the knee's entry into the zone, and the report says so.
+TEST(TuningRun, AMeasuredThighDriveWhoseRecordEndsInsideTheSettleDwellIsTuned) {
+  const auto dir = tempDir("measured");
+  const std::string participant = (dir / "p1-measured.yaml").string();
+  std::ofstream(participant)
+      << "name: P1-measured-thigh\nheight_m: 1.83\nbody_mass_kg: 70\nsegments:\n"
+      << "  thigh: {length_m: 0.410, mass_kg: 3.350, com_from_distal_m: 0.284, inertia_kgm2: 0.0264}\n"
+      << "  shank: {length_m: 0.515, mass_kg: 0.785, com_from_distal_m: 0.260, inertia_kgm2: 0.0161}\n"
+      << "  foot:  {length_m: 0.240, mass_kg: 1.030, com_from_distal_m: 0.140, inertia_kgm2: 0.0059}\n"
+      << "knee_friction_Nm: 10\nknee_model: " << kRoot << "/models/damping-table-default.yaml\n"
+      << "swing_end: {thigh_target_flexion_deg: 10, zone_of_stability_deg: 6, time_limit_s: 1.5, settle_dwell_s: 0.15}\n"
+      << "toe_clearance: {gait: walking}\ndrive: thigh_kinematics\n"
+      << "thigh_kinematics: {file: " << kRoot << "/tests/data/opensim-gait10dof/subject01_walk_IK.mot, hip: hip_flexion_l, "
+      << "knee: knee_angle_l, knee_sign: -1, swing: 1}\n";
+  const std::string study = (dir / "study.yaml").string();
+  std::ofstream(study) << "kind: knee-tuning\nparticipant: " << participant
+                       << "\nknobs:\n  - key: knee_effects.model_scale\n    range: [0.5, 4]\n    log_scale: true\n"
+                       << "targets:\n  swing_time_s: {value: 0.55}\n  peak_knee_flexion_deg: {min: 50, max: 75, hard: true}\n";
+  SweepRunControl control;
+  const TuningRun run = runTuningStudy(loadTuningStudy(study), 0, control);
+  ASSERT_TRUE(run.result.best.ran) << run.result.best.failure;
+  EXPECT_TRUE(run.result.feasible);
+  EXPECT_TRUE(run.result.best.dwellCutByRecord);
+  EXPECT_TRUE(std::isfinite(run.result.best.swingTime));
+  const std::string summary = formatTuningSummary(makeTuningReportInputs(run, "tuned-knee.yaml"));
+  EXPECT_NE(summary.find("the measured record ends inside the settle dwell"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("nan"), std::string::npos) << summary;
+}
+
+}  // namespace
+}  // namespace swingsim
