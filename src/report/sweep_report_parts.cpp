@@ -80,7 +80,7 @@ std::string formatSymmetryLine(const SymmetryLowering& sym, const std::vector<Sw
                                           fmt("%.4f", sym.jumpTo) + " m";
   if (sym.reached) {
     out += fmt("%.3f", sym.lowering) + " m (the swing times cross there; prosthetic/sound 1.00)";
-    if (sym.acrossJump) out += "; not at " + fmt("%.3f", sym.jumpFrom) + "-" + fmt("%.3f", sym.jumpTo) + " m, where " + jumpText;
+    if (sym.acrossJump) out += "; not at " + fmt("%.4f", sym.jumpFrom) + "-" + fmt("%.4f", sym.jumpTo) + " m, where " + jumpText;
     return out;
   }
   if (sym.acrossJump) out += "not reached: " + jumpText + ";";

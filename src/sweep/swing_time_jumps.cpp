@@ -15,10 +15,21 @@ PieceSample makePieceSample(double lowering, const SwingResult& result) {
   s.bounces = result.bounces;
   s.firstZoneEntry = calcFirstZoneEntry(result);
   s.bounceHeight = result.bounceHeight;
+  for (const SwingEvent& e : result.events)
+    if (e.name == "thigh_at_target") {
+      s.thighAtTarget = e.time;
+      break;
+    }
   return s;
 }
 
 std::string SwingTimeJump::describeCause() const {
+  if (below.bounces == above.bounces) {
+    if (below.thighAtTarget && above.thighAtTarget && std::fabs(*below.thighAtTarget - *above.thighAtTarget) > kJumpMinSize)
+      return "the thigh's flexion grazing its target: it reaches it " +
+             fmt("%.3f", std::fabs(*below.thighAtTarget - *above.thighAtTarget)) + " s later on one side";
+    return "the swing end moves by " + fmt("%.0f", std::fabs(above.swingTime - below.swingTime) * 1000) + " ms";
+  }
   const PieceSample& more = below.bounces > above.bounces ? below : above;
   const PieceSample& fewer = below.bounces > above.bounces ? above : below;
   if (fewer.bounces == 0) {
@@ -39,16 +50,31 @@ std::string SwingTimeJump::describe() const {
 
 namespace {
 
-// Narrows [lo, hi] (different bounce counts) by bisection to kJumpBracket; the side a midpoint
-// joins is the one with its bounce count (a count unlike both joins the upper side, so the
-// bracket keeps the lower side's piece edge).
+// Whether midpoint `m` joins side `lo` of [lo, hi]: by its bounce count where the sides' differ
+// (a count unlike both joins the upper side, so the bracket keeps the lower side's piece edge),
+// else by the nearer swing time.
+bool joinsLower(const PieceSample& m, const PieceSample& lo, const PieceSample& hi) {
+  if (lo.bounces != hi.bounces) return m.bounces == lo.bounces;
+  return std::fabs(m.swingTime - lo.swingTime) <= std::fabs(m.swingTime - hi.swingTime);
+}
+
+// Narrows [lo, hi] by bisection to kJumpBracket.
 void narrowJump(PieceSample& lo, PieceSample& hi, const PieceSampler& sample) {
   while (hi.lowering - lo.lowering > kJumpBracket) {
     const double mid = 0.5 * (lo.lowering + hi.lowering);
     const std::optional<PieceSample> m = sample(mid);
     if (!m) return;  // no swing end in between: the bracket so far is the answer
-    (m->bounces == lo.bounces ? lo : hi) = *m;
+    (joinsLower(*m, lo, hi) ? lo : hi) = *m;
   }
+}
+
+// s: the step between neighbours above which a pair with one bounce count is bisected.
+double calcJumpScreen(const std::vector<PieceSample>& grid) {
+  std::vector<double> steps;
+  for (std::size_t k = 0; k + 1 < grid.size(); ++k) steps.push_back(std::fabs(grid[k + 1].swingTime - grid[k].swingTime));
+  if (steps.empty()) return kJumpScreenFloor;
+  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+  return std::max(kJumpScreenFloor, kJumpScreenFactor * steps[steps.size() / 2]);
 }
 
 }  // namespace
@@ -56,8 +82,9 @@ void narrowJump(PieceSample& lo, PieceSample& hi, const PieceSampler& sample) {
 std::vector<SwingTimeJump> findSwingTimeJumps(const std::vector<PieceSample>& grid, const PieceSampler& sample,
                                               double zoneOfStability) {
   std::vector<SwingTimeJump> jumps;
+  const double screen = calcJumpScreen(grid);
   for (std::size_t k = 0; k + 1 < grid.size(); ++k) {
-    if (grid[k].bounces == grid[k + 1].bounces) continue;
+    if (grid[k].bounces == grid[k + 1].bounces && std::fabs(grid[k + 1].swingTime - grid[k].swingTime) <= screen) continue;
     SwingTimeJump jump;
     jump.below = grid[k];
     jump.above = grid[k + 1];

@@ -21,10 +21,16 @@ namespace swingsim {
 constexpr double kJumpBracket = 1e-4;
 
 /// s: a change of the swing time across one bracket larger than this is a jump. Where the
-/// swing time is continuous its slope along the lowering stays below about 3 s/m on the
-/// shipped participants (a 10 mm step moves it by at most ~30 ms), so across 0.1 mm it moves
-/// by at most ~0.3 ms; a jump is a whole rebound excursion (tens of ms).
+/// swing time is continuous a 10 mm step moves it by at most ~15 ms on the shipped participants
+/// and the imported OpenSim legs (1.5 s/m), so across 0.1 mm by at most ~0.15 ms; a jump is a
+/// whole rebound excursion or a late thigh (tens of ms).
 constexpr double kJumpMinSize = 0.002;
+/// A pair of neighbouring grid lowerings with the same bounce count is bisected too when its
+/// swing times differ by more than this many times the grid's median neighbour difference
+/// (and at least kJumpScreenFloor): a jump that keeps the bounce count (the thigh's flexion
+/// grazing its target) shows only in the size of the step.
+constexpr double kJumpScreenFactor = 3;
+constexpr double kJumpScreenFloor = 0.005;  ///< s
 
 /// What one swing at one lowering says about which continuous piece it lies on.
 struct PieceSample {
@@ -36,6 +42,8 @@ struct PieceSample {
   std::optional<double> firstZoneEntry;
   /// rad, highest knee flexion after the knee first left the zone (SwingResult::bounceHeight)
   std::optional<double> bounceHeight;
+  /// s, when the thigh first reached its target flexion; absent if it never did
+  std::optional<double> thighAtTarget;
 };
 
 /// The sample of an ended swing at `lowering`.
@@ -48,7 +56,8 @@ struct SwingTimeJump {
   /// m, the jump's lowering (the middle of its bracket)
   double calcLowering() const { return 0.5 * (below.lowering + above.lowering); }
   /// Its cause: "a rebound 0.1 deg past the zone" (one side has no bounce), "one more bounce
-  /// (2 against 1)".
+  /// (2 against 1)", "the thigh's flexion grazing its target: it reaches it 0.114 s later on one
+  /// side", or "the swing end moves by 61 ms" where neither explains it.
   std::string describeCause() const;
   /// "the swing jumps from 0.518 s to 0.386 s at 0.1655 m (a rebound 0.1 deg past the zone)".
   std::string describe() const;
@@ -58,11 +67,13 @@ struct SwingTimeJump {
 using PieceSampler = std::function<std::optional<PieceSample>(double lowering)>;
 
 /// The jumps between neighbouring samples of `grid` (sorted by lowering; ended swings only):
-/// each neighbouring pair whose bounce counts differ is bisected with `sample` down to
-/// kJumpBracket; a bracket whose swing time changes by more than kJumpMinSize is a jump. A pair
-/// with the same bounce count is taken as continuous (a jump out and back between two grid
-/// points is not seen: docs/swing-time-jumps.md). A bisection point with no swing end stops
-/// that pair's bisection at the bracket reached so far, and the jump is reported there.
+/// each neighbouring pair whose bounce counts differ, or whose swing times differ by more than
+/// the screen (kJumpScreenFactor x the median neighbour difference, at least kJumpScreenFloor),
+/// is bisected with `sample` down to kJumpBracket, a midpoint joining the side with its bounce
+/// count (where the two sides' differ) or else the side whose swing time is nearer; a bracket
+/// whose swing time changes by more than kJumpMinSize is a jump. A jump out and back between
+/// two grid points is not seen (docs/swing-time-jumps.md). A bisection point with no swing end
+/// stops that pair's bisection at the bracket reached so far, and the jump is reported there.
 std::vector<SwingTimeJump> findSwingTimeJumps(const std::vector<PieceSample>& grid, const PieceSampler& sample,
                                               double zoneOfStability);
 

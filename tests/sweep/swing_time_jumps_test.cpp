@@ -100,3 +100,44 @@ TEST(SwingTimeJumps, PiecesCountTheJumpsBelowALowering) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// The thigh's half of the swing-end rule: above kThighJumpAt the thigh's flexion peaks just
+// short of its target and reaches it 0.1 s later; the bounce count is the same throughout.
+constexpr double kThighJumpAt = 0.1829;
+
+std::optional<PieceSample> grazingThigh(double lowering) {
+  PieceSample s;
+  s.lowering = lowering;
+  s.firstZoneEntry = 0.38 - 0.05 * lowering;
+  s.thighAtTarget = lowering < kThighJumpAt ? 0.32 : 0.42;
+  s.swingTime = std::max(*s.firstZoneEntry, *s.thighAtTarget + 0.02);
+  return s;
+}
+
+TEST(SwingTimeJumps, AJumpThatKeepsTheBounceCountIsFoundByItsSizeAndNamedByTheThigh) {
+  std::vector<PieceSample> grid;
+  for (int k = 0; k <= 20; ++k) grid.push_back(*grazingThigh(0.01 * k));
+  const std::vector<SwingTimeJump> jumps = findSwingTimeJumps(grid, grazingThigh, kZone);
+  ASSERT_EQ(jumps.size(), 1u);
+  EXPECT_NEAR(jumps[0].calcLowering(), kThighJumpAt, kJumpBracket);
+  EXPECT_EQ(jumps[0].describeCause(), "the thigh's flexion grazing its target: it reaches it 0.100 s later on one side");
+}
+
+TEST(SwingTimeJumps, ASteepButContinuousStepIsNoJump) {
+  // 30 ms over one 10 mm step (ten times the others), linear inside it: bisected, then dropped.
+  const PieceSampler steep = [](double d) {
+    PieceSample s;
+    s.lowering = d;
+    s.swingTime = 0.5 - 0.3 * d - (d > 0.10 ? 3.0 * (std::min(d, 0.11) - 0.10) : 0.0);
+    return std::optional<PieceSample>(s);
+  };
+  std::vector<PieceSample> grid;
+  for (int k = 0; k <= 20; ++k) grid.push_back(*steep(0.01 * k));
+  EXPECT_TRUE(findSwingTimeJumps(grid, steep, kZone).empty());
+}
+
+}  // namespace
+}  // namespace swingsim
