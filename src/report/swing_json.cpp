@@ -28,7 +28,7 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
   Json json = {{"participant", participant},
           {"lowering_m", lowering},
           {"swing_time_s", std::isfinite(r.swingTime) ? Json(r.swingTime) : Json(nullptr)},
-          {"first_zone_entry_s", calcFirstZoneEntry(r) ? Json(*calcFirstZoneEntry(r)) : Json(nullptr)},
+          {"first_zone_entry_s", jsonOrNull(calcFirstZoneEntry(r))},
           {"peak_knee_flexion_deg", peak ? Json(peak->flexion * kRadToDeg) : Json(nullptr)},
           {"peak_knee_flexion_time_s", peak ? Json(peak->time) : Json(nullptr)},
           {"bounce", r.bounce},

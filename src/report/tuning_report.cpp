@@ -112,9 +112,7 @@ std::string describeSearch(const TuningResult& r) {
 
 }  // namespace
 
-double toTargetUnit(TuningQuantity q, double si) {
-  return q == TuningQuantity::kPeakKneeFlexion || q == TuningQuantity::kMaxStopImpactSpeed ? si * kRadToDeg : si;
-}
+double toTargetUnit(TuningQuantity q, double si) { return tuningQuantityInKeyUnit(q, si); }
 
 std::string formatTuningPoint(const std::vector<TuningKnob>& knobs, const TuningPoint& p) {
   if (!p.ran) return "none (no swing ran)";

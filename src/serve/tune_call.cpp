@@ -94,11 +94,6 @@ std::vector<TuningTarget> readTuneTargets(const Json& body, const Participant& p
   return {time, flexion, clearance};
 }
 
-// A target's value in the page's units (s, deg, m, deg/s).
-double toPageUnits(TuningQuantity q, double v) {
-  return q == TuningQuantity::kPeakKneeFlexion || q == TuningQuantity::kMaxStopImpactSpeed ? v * kRadToDeg : v;
-}
-
 Json makeTuneJson(const TuningResult& r, double seconds) {
   Json knobs = Json::array(), targets = Json::array();
   for (std::size_t k = 0; k < r.knobs.size(); ++k)
@@ -107,9 +102,9 @@ Json makeTuneJson(const TuningResult& r, double seconds) {
                      {"at_range_end", k < r.knobAtBound.size() && r.knobAtBound[k]}});
   for (const TargetOutcome& t : r.targets)
     targets.push_back({{"quantity", tuningQuantityKey(t.target.quantity)},
-                       {"value", toPageUnits(t.target.quantity, t.value)},
-                       {"min", std::isfinite(t.target.lower) ? Json(toPageUnits(t.target.quantity, t.target.lower)) : Json(nullptr)},
-                       {"max", std::isfinite(t.target.upper) ? Json(toPageUnits(t.target.quantity, t.target.upper)) : Json(nullptr)},
+                       {"value", tuningQuantityInKeyUnit(t.target.quantity, t.value)},
+                       {"min", std::isfinite(t.target.lower) ? Json(tuningQuantityInKeyUnit(t.target.quantity, t.target.lower)) : Json(nullptr)},
+                       {"max", std::isfinite(t.target.upper) ? Json(tuningQuantityInKeyUnit(t.target.quantity, t.target.upper)) : Json(nullptr)},
                        {"hard", t.target.hard},
                        {"met", t.met}});
   return {{"knobs", knobs}, {"targets", targets}, {"feasible", r.feasible}, {"interrupted", r.interrupted},

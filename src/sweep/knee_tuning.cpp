@@ -24,6 +24,10 @@ const char* tuningQuantityKey(TuningQuantity q) {
   return "";
 }
 
+double tuningQuantityInKeyUnit(TuningQuantity q, double si) {
+  return q == TuningQuantity::kPeakKneeFlexion || q == TuningQuantity::kMaxStopImpactSpeed ? si * kRadToDeg : si;
+}
+
 double tuningTargetScale(TuningQuantity q) {
   switch (q) {
     case TuningQuantity::kSwingTime: return 0.01;

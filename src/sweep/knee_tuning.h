@@ -49,6 +49,9 @@ struct TuningTarget {
   double weight = 1;  ///< soft targets only
   double scale = 1;   ///< the miss that costs as much as 1 (SI), tuningTargetScale
 };
+/// A quantity (SI) in the unit its study key names: deg for peak flexion and stop-impact speed
+/// (deg/s), else as it is (s, m).
+double tuningQuantityInKeyUnit(TuningQuantity q, double si);
 /// The residual unit of a quantity: 0.01 s, 1 deg, 0.005 m, 10 deg/s (in SI). A soft target
 /// missed by one unit adds its weight to the cost.
 double tuningTargetScale(TuningQuantity q);

@@ -96,11 +96,6 @@ std::vector<Cell> neighbourCells(const std::vector<TuningKnob>& knobs, const Cel
   return cells;
 }
 
-// A quantity in the unit its study key names (deg for angles and rates, else SI).
-double inKeyUnit(TuningQuantity q, double value) {
-  return q == TuningQuantity::kPeakKneeFlexion || q == TuningQuantity::kMaxStopImpactSpeed ? value * kRadToDeg : value;
-}
-
 // "lowering_m 0.022, ...equilibrium_deg 42"
 std::string describeKnobs(const std::vector<TuningKnob>& knobs, const std::vector<double>& values) {
   std::string out;
@@ -115,8 +110,8 @@ std::string describeFailure(const std::vector<TuningTarget>& targets, const Tuni
     if (!t.hard) continue;
     const double miss = calcTargetMiss(t, p.value(t.quantity));
     if (miss != 0)
-      return std::string(tuningQuantityKey(t.quantity)) + " " + fmt("%.4g", inKeyUnit(t.quantity, p.value(t.quantity))) +
-             ", past its limit by " + fmt("%.2g", std::fabs(inKeyUnit(t.quantity, miss)));
+      return std::string(tuningQuantityKey(t.quantity)) + " " + fmt("%.4g", tuningQuantityInKeyUnit(t.quantity, p.value(t.quantity))) +
+             ", past its limit by " + fmt("%.2g", std::fabs(tuningQuantityInKeyUnit(t.quantity, miss)));
   }
   return "";
 }
