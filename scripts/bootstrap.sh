@@ -3,7 +3,7 @@
 # Usage: bash scripts/bootstrap.sh [extra cmake args]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
+packages=(build-essential cmake ccache libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
           nlohmann-json3-dev libboost-math-dev libcli11-dev libceres-dev libtinyxml2-dev
           pybind11-dev python3-dev python3-numpy python3-pytest universal-ctags
           libcpp-httplib-dev chromium chromium-driver python3-selenium

@@ -13,6 +13,7 @@
 #include "core/input_error.h"
 #include "io/participant_loader.h"
 #include "report/diagnosis_report.h"
+#include "../cli/release_only.h"
 
 namespace swingsim {
 namespace {
@@ -126,6 +127,7 @@ void expectRecovered(const Hidden& h, const Diagnosis& dg, double widen) {
 }
 
 TEST(SwingDiagnosis, EveryHiddenEffectIsFoundWithItsParameterAndTheErrorFallsToTheNoise) {
+  SWINGSIM_RELEASE_ONLY();  // 50-180 s under the sanitizers
   for (const auto& name : effectNames(PlantKind::kSwing)) {
     const Hidden h = hidden(name, 1.0);
     const Data d = makeData(h.truth, 101);
@@ -139,6 +141,7 @@ TEST(SwingDiagnosis, EveryHiddenEffectIsFoundWithItsParameterAndTheErrorFallsToT
 }
 
 TEST(SwingDiagnosis, NullDataAcceptNothingInAtLeastNineteenOfTwentySeeds) {
+  SWINGSIM_RELEASE_ONLY();  // 50-180 s under the sanitizers
   int falseAcceptances = 0, falseAlarms = 0;
   for (int seed = 0; seed < kNullSeeds; ++seed) {
     const Data d = makeData({}, 5000 + 10 * static_cast<std::uint64_t>(seed));

@@ -12,6 +12,7 @@
 #include "hidden_damper_comparison.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosis_study.h"
+#include "../cli/release_only.h"
 
 namespace swingsim {
 namespace {
@@ -56,6 +57,7 @@ TEST(SwingResidualPlot, FivePanelsWithTitlesAxisUnitsAndSwingPhaseBands) {
 // One schema for both plants: the cylinder and the swing demo diagnoses write the same
 // top-level keys, each candidate the same keys, and the plant and unit say which is which.
 TEST(DiagnosisJson, CylinderAndSwingShareOneSchema) {
+  SWINGSIM_RELEASE_ONLY();  // 50-180 s under the sanitizers
   std::vector<Json> docs;
   for (const char* file : {"/studies/diagnose-demo-cylinder.yaml", "/studies/diagnose-demo-swing.yaml"}) {
     const DiagnosisStudy study = loadDiagnosisStudy(kRoot + file);

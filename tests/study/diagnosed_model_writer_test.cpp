@@ -10,6 +10,7 @@
 #include "identify/swing_plant.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "../cli/release_only.h"
 
 namespace swingsim {
 namespace {
@@ -47,6 +48,7 @@ TEST(DiagnosedModel, CylinderModelLoadsBackWithTheRefittedCoefficientsAndTheAcce
 }
 
 TEST(DiagnosedModel, SwingKneeModelAndParticipantLoadBackAndGiveTheFinalModelsKneeMoment) {
+  SWINGSIM_RELEASE_ONLY();  // 50-180 s under the sanitizers
   const DiagnosisStudy study = loadDiagnosisStudy(kRoot + "/studies/diagnose-demo-swing.yaml");
   const auto plant = loadDiagnosisPlant(study, 8);
   const Diagnosis dg = runDiagnosis(*plant, study.settings);
