@@ -17,6 +17,7 @@
 
 #include "run_swingsim.h"
 #include "../core/cpu_time.h"
+#include "../test_build.h"
 
 namespace swingsim {
 namespace {

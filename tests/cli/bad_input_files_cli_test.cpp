@@ -20,6 +20,7 @@
 #include "../core/cpu_time.h"
 #include "study/uncertainty_swings_file.h"
 #include "sweep/sweep.h"
+#include "../test_build.h"
 
 namespace swingsim {
 namespace {

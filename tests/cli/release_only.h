@@ -4,13 +4,7 @@
 // must stay under an hour. Use SWINGSIM_RELEASE_ONLY() as a test's first statement.
 #include <gtest/gtest.h>
 
-namespace swingsim::testing {
-#ifdef SWINGSIM_SANITIZED
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-}  // namespace swingsim::testing
+#include "../test_build.h"
 
 #define SWINGSIM_RELEASE_ONLY()                                                         \
   do {                                                                                  \

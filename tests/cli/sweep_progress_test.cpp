@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include "../test_build.h"
 
 namespace swingsim {
 namespace {

@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "run_swingsim.h"
+#include "../test_build.h"
 
 namespace {
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "run_swingsim.h"
+#include "../test_build.h"
 
 namespace {
 

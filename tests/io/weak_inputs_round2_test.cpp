@@ -13,6 +13,7 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
+#include "../test_build.h"
 
 namespace {
 

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "run_swingsim.h"
+#include "../test_build.h"
 
 namespace swingsim::testing {
 namespace {
