@@ -151,19 +151,22 @@ std::size_t riseStart(const std::vector<double>& knee, std::size_t peak) {
 }
 
 /// Walking toe-off before the swing peak at row `peak`: the fastest knee flexion on the rise
-/// to it from the stance's last extension minimum. nullopt if the rise starts at the first
-/// row or is still speeding up where the file ends.
+/// to it from the stance's last extension minimum. A rise cut by the file's start counts when
+/// its fastest flexion lies past the file's first rate (the knee still speeding up there).
+/// nullopt if it does not, or if the rise is still speeding up where the file ends.
 std::optional<double> findWalkingToeOff(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak) {
   const std::size_t start = riseStart(knee, peak);
   // Central differences need a row either side; a peak on the last row still has its rise.
+  const std::size_t first = std::max<std::size_t>(start, 1);
   const std::size_t last = std::min(peak, knee.size() - 2);
-  if (start == 0 || last < start + 2) return std::nullopt;
+  if (knee.size() < 3 || last < first + 2) return std::nullopt;
   std::vector<double> rate(knee.size(), 0.0);
-  for (std::size_t k = start; k <= last; ++k) rate[k] = (knee[k + 1] - knee[k - 1]) / (t[k + 1] - t[k - 1]);
-  std::size_t fastest = start + 1;
-  for (std::size_t k = start + 1; k < last; ++k)
+  for (std::size_t k = first; k <= last; ++k) rate[k] = (knee[k + 1] - knee[k - 1]) / (t[k + 1] - t[k - 1]);
+  std::size_t fastest = first + 1;
+  for (std::size_t k = first + 1; k < last; ++k)
     if (rate[k] > rate[fastest]) fastest = k;
   if (rate[last] > rate[fastest]) return std::nullopt;  // still speeding up where the file ends
+  if (start == 0 && rate[first] >= rate[fastest]) return std::nullopt;  // the fastest may lie before the file
   return vertexTime(t, rate, fastest);
 }
 
@@ -199,9 +202,34 @@ std::optional<double> findRunningHeelContact(const std::vector<double>& t, const
   return std::nullopt;
 }
 
+/// Why the first swing (peak at row `peak`, its toe-off `toeOff` with the bias removed) might
+/// be counted by the force plates and not by the kinematics, or the other way round; empty
+/// when it cannot. A peak on the first row is a swing already past its toe-off; so is a rise
+/// cut by the file's start that reaches its peak sooner than any later swing of the file
+/// reaches its own from toe-off (`shortestRise`, s, less the rules' accuracy).
+std::string describeLeadingAmbiguity(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak,
+                                     const std::optional<double>& toeOff, std::optional<double> shortestRise, bool running) {
+  const double accuracy = running ? kRunningAccuracyS : kWalkingAccuracyS;
+  if (peak == 0) return "";
+  if (!toeOff) {
+    if (riseStart(knee, peak) != 0) return "";
+    if (shortestRise && t[peak] - t.front() < *shortestRise - accuracy) return "";
+    return "the file starts while the knee rises into its first swing (peak at " + seconds(t[peak]) +
+           "): whether that swing's toe-off lies inside the file the kinematics cannot tell";
+  }
+  if (*toeOff >= t.front() + accuracy) return "";
+  return "the first swing's toe-off (" + seconds(*toeOff) + ") lies within the kinematic rules' accuracy (" + ms(accuracy) +
+         ") of the file's start: the force plates could place it before the file";
+}
+
 /// Kinematic events with the rule's bias removed, the swing peaks and the gait.
 struct KinematicEvents {
   std::vector<Event> events;
+  /// Why the first swing's number is not the force's to give, when it may not be: its toe-off
+  /// lies so near the file's start (within the rules' accuracy, or its rise cut by the start
+  /// without a toe-off placed) that the force plates could count the swing or not. Empty when
+  /// the numbering is sure.
+  std::string numberingAmbiguity;
   std::vector<double> peakTimes;
   std::optional<double> stride;  ///< s
   GaitChoice gait;
@@ -225,14 +253,19 @@ KinematicEvents calcKinematicEvents(const MotionTable& table, const MotionColumn
   const bool running = out.gait.gait == Gait::kRunning;
   const double toeOffBias = running ? kRunningToeOffBiasS : kWalkingToeOffBiasS;
   const double heelBias = running ? kRunningHeelContactBiasS : kWalkingHeelContactBiasS;
+  std::optional<double> firstToeOff, shortestRise;  // the first swing's toe-off; the later swings' least toe-off to peak
   for (std::size_t p = 0; p < peaks.size(); ++p) {
     out.peakTimes.push_back(t[peaks[p]]);
-    const auto toeOff = running ? findRunningToeOff(t, a.knee, peaks[p]) : findWalkingToeOff(t, a.knee, peaks[p]);
-    if (toeOff) out.events.push_back({*toeOff - toeOffBias, Kind::ToeOff, "kinematics"});
+    auto toeOff = running ? findRunningToeOff(t, a.knee, peaks[p]) : findWalkingToeOff(t, a.knee, peaks[p]);
+    if (toeOff) *toeOff -= toeOffBias;
+    if (toeOff) out.events.push_back({*toeOff, Kind::ToeOff, "kinematics"});
+    if (p == 0) firstToeOff = toeOff;
+    if (p > 0 && toeOff) shortestRise = std::min(shortestRise.value_or(t[peaks[p]] - *toeOff), t[peaks[p]] - *toeOff);
     const std::size_t end = p + 1 < peaks.size() ? peaks[p + 1] : t.size();
     const auto heel = running ? findRunningHeelContact(t, a.knee, peaks[p], end) : findWalkingHeelContact(t, a, peaks[p], end);
     if (heel) out.events.push_back({*heel - heelBias, Kind::HeelContact, "kinematics"});
   }
+  if (!peaks.empty()) out.numberingAmbiguity = describeLeadingAmbiguity(t, a.knee, peaks[0], firstToeOff, shortestRise, running);
   return out;
 }
 
@@ -408,8 +441,17 @@ std::vector<FoundSwing> mergeEvents(const std::vector<Event>& force, const Kinem
   return swings;
 }
 
-SwingList makeList(std::vector<FoundSwing> swings, const KinematicEvents& kin, const MotionTable& kinematics) {
+/// The list of `swings`; the kinematics' numbering ambiguity kept when `leadByKinematics`
+/// (no force, or a force that starts after the kinematics), and said in its notes.
+SwingList makeList(std::vector<FoundSwing> swings, const KinematicEvents& kin, const MotionTable& kinematics,
+                   bool leadByKinematics = true) {
   SwingList out;
+  if (leadByKinematics && !kin.numberingAmbiguity.empty()) {
+    out.numberingAmbiguity = kin.numberingAmbiguity;
+    out.notes.push_back("swing numbers: " + kin.numberingAmbiguity + ", so a force file could number the swings one apart " +
+                        "from these; a study's `swing: K` on this file needs its force file (grf:) or the swing's times " +
+                        "(toe_off_s, heel_contact_s)");
+  }
   out.swings = std::move(swings);
   out.gait = kin.gait.gait;
   out.gaitBasis = kin.gait.basis;
@@ -488,11 +530,17 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
     if (settings.fallbackToKinematics) return kinematicsOnly(bad);
     throw InputError(where + bad);
   }
-  return makeList(mergeEvents(forceEvents, kin, t.front(), t.back(), g.front(), g.back()), kin, kinematics);
+  return makeList(mergeEvents(forceEvents, kin, t.front(), t.back(), g.front(), g.back()), kin, kinematics,
+                  g.front() > t.front() + kEventToleranceS);
 }
 
 FoundSwing selectSwing(const SwingList& list, const MotionTable& table, const std::string& knee, int k) {
   const std::vector<FoundSwing>& swings = list.swings;
+  if (!list.numberingAmbiguity.empty())
+    throw InputError(table.path + ": swing: " + std::to_string(k) + ": " + list.numberingAmbiguity + " (" + knee + ", " +
+                     gaitName(list.gait) + " rules), so the force plates could number this file's swings one apart from " +
+                     "the kinematics: give its force file (a diagnosis study's grf:), or the swing's times instead of its number " +
+                     "(toe_off_s, heel_contact_s; `swingsim swings FILE` lists them)");
   if (swings.empty())
     throw InputError(table.path + ": swing: " + std::to_string(k) + ": the file holds no complete swing of " + knee +
                      " (toe-off and heel contact both inside it; " + gaitName(list.gait) + " rules, " + list.gaitBasis +

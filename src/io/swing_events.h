@@ -86,6 +86,9 @@ struct SwingList {
   bool kinematicAccuracyBeyondTwoFrames = false;
   /// Anything the user must know: a force file that fell back to the kinematics, and why.
   std::vector<std::string> notes;
+  /// Set when the kinematics decide the first swing and the force plates might number the
+  /// swings otherwise (a toe-off at the file's start): why. selectSwing then refuses `swing: K`.
+  std::string numberingAmbiguity;
 };
 
 /// The events of one kind of source, each list in time order, file time, s.

@@ -256,7 +256,7 @@ TEST(ParticipantThighMotion, SwingNumberCutsTheKthSwingAndKeepsTheKnee) {
   EXPECT_THAT(text, HasSubstr("swing: 1}"));
   EXPECT_EQ(parseParticipant(text, dir + "/roundtrip.yaml").thighKinematics.time, t.time);
   EXPECT_THAT(thighError(map + ", swing: 1, toe_off_s: 0.2}"), HasSubstr("thigh_kinematics.swing: either swing"));
-  EXPECT_THAT(thighError(map + ", swing: 4}"), HasSubstr("subject01_walk_IK.mot: swing: expected a swing number from 1 to 1"));
+  EXPECT_THAT(thighError(map + ", swing: 4}"), HasSubstr("subject01_walk_IK.mot: swing: expected a swing number from 1 to 2"));
 }
 
 TEST(ParticipantThighMotion, TheStatedGaitPicksTheSwingsEventRules) {

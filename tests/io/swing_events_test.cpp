@@ -107,10 +107,15 @@ TEST(SwingEvents, KinematicRulesMatchTheSyntheticGaitsClosedForm) {
 }
 
 TEST(SwingEvents, ASwingCutByTheFilesStartOrEndIsLeftOut) {
-  // Starts mid-rise of the first swing (0.65 s): its toe-off is not in the file.
-  const auto late = findSwings(syntheticGait(0.65, 2.3), rightColumns(false), std::nullopt);
+  // Starts after the first swing's fastest flexion (0.75 s): its toe-off is not in the file.
+  const auto late = findSwings(syntheticGait(0.75, 2.3), rightColumns(false), std::nullopt);
   ASSERT_EQ(late.size(), 1u);
   EXPECT_NEAR(late[0].toeOff, syntheticToeOff(1) - kWalkingToeOffBiasS, kVertexS);
+  // Starts mid-rise before it (0.65 s): the knee still speeds up, so the fastest flexion, and
+  // the toe-off, lie inside the file: the first swing counts.
+  const auto cutRise = findSwings(syntheticGait(0.65, 2.3), rightColumns(false), std::nullopt);
+  ASSERT_EQ(cutRise.size(), 2u);
+  EXPECT_NEAR(cutRise[0].toeOff, syntheticToeOff(0) - kWalkingToeOffBiasS, kVertexS);
   // Ends before the second swing's heel contact (about 2.02 s).
   const auto early = findSwings(syntheticGait(0, 1.9), rightColumns(false), std::nullopt);
   ASSERT_EQ(early.size(), 1u);
@@ -240,7 +245,7 @@ const std::vector<TrialCase>& publicTrials() {
       {"walk", kIk2392, kGrf, "l", "1_ground_force_vy", -1, Gait::kWalking, 4, 0},
       {"walk", kIk2354, kGrf, "r", "ground_force_vy", -1, Gait::kWalking, 2, 0},
       {"walk", kIk2354, kGrf, "l", "1_ground_force_vy", -1, Gait::kWalking, 2, 0},
-      {"walk", kIk10dof, kGrf, "r", "ground_force_vy", -1, Gait::kWalking, 3, 1},
+      {"walk", kIk10dof, kGrf, "r", "ground_force_vy", -1, Gait::kWalking, 4, 0},
       {"walk", kIk10dof, kGrf, "l", "1_ground_force_vy", -1, Gait::kWalking, 4, 0},
       {"rajagopal", kRajagopalIk, kRajagopalGrf, "r", "R_ground_force_vy", 1, Gait::kRunning, 14, 0},
       {"rajagopal", kRajagopalIk, kRajagopalGrf, "l", "L_ground_force_vy", 1, Gait::kRunning, 13, 1},
@@ -275,9 +280,9 @@ double meanOf(const std::vector<double>& x) {
 
 // The measured distances are in docs/swing-events.md (this test prints them). The IK and GRF
 // files of each trial share the lab clock. Unseen: the Gait2392 IK starts (0.5 s) after the
-// right swing's peak, so its heel contact (0.618 s) has no swing peak before it; the
-// Gait10dof IK starts (0 s) mid-rise of the right knee, so its toe-off (0.165 s) has no rise
-// start; the runs' files end (4.99 s, 9.97 s) before the swing peak after a left toe-off
+// right swing's peak, so its heel contact (0.618 s) has no swing peak before it (the Gait10dof
+// IK starts (0 s) mid-rise of the right knee: its toe-off (0.165 s) is the fastest flexion
+// of the rise inside the file, seen); the runs' files end (4.99 s, 9.97 s) before the swing peak after a left toe-off
 // (4.892 s, 9.963 s), and Hamner's starts (0 s) after the left swing's peak, before its heel
 // contact (0.067 s). The gait is detected from the stride on every file.
 TEST(SwingEvents, KinematicRulesAgainstTheForcePlatesPerGait) {
@@ -362,6 +367,58 @@ TEST(SwingEvents, BadInputNamesFileKeyExpectedAndFound) {
   zero.thresholdN = 0;
   EXPECT_THAT(inputErrorOf([&] { findSwings(gait, rightColumns(false), later, zero); }),
               HasSubstr("grf.mot: ground_force_vy: threshold_N: expected a positive force, N (got 0)"));
+}
+
+/// `table` from its row `first` on: a recording started later.
+MotionTable cutFrom(const MotionTable& table, std::size_t first) {
+  MotionTable out = table;
+  for (auto& c : out.columns) c.erase(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(first));
+  out.rowLines.erase(out.rowLines.begin(), out.rowLines.begin() + static_cast<std::ptrdiff_t>(first));
+  return out;
+}
+
+// `swing: K` without a force file: the kinematics number each swing as the force plates do,
+// or refuse the number. Every public trial, both feet, its IK started at every frame of its
+// first stride (as if the recording had begun later): where the kinematic list is not
+// refused, its K-th swing is the force list's K-th (the same toe-off within 50 ms); where
+// it is, selectSwing says why and what to give instead, and the force list selects.
+TEST(SwingEvents, KinematicNumberingIsTheForcesOrRefused) {
+  int refused = 0, checked = 0;
+  for (const TrialCase& c : publicTrials()) {
+    const MotionTable ik = readMotionTable(c.ik), grf = readMotionTable(c.grf);
+    const MotionColumns columns = legColumns(c.side, c.kneeSign);
+    GrfSettings settings;
+    settings.path = c.grf;
+    settings.verticalForce = c.force;
+    const std::vector<double>& t = ik.columns.front();
+    const std::size_t stride = static_cast<std::size_t>(std::lround((c.gait == Gait::kRunning ? 0.7 : 1.2) / (t[1] - t[0])));
+    for (std::size_t first = 0; first < stride && first + 10 < t.size(); first += c.subject == "walk" ? 1 : 3) {
+      const MotionTable cut = cutFrom(ik, first);
+      const SwingList kin = listSwings(cut, columns, std::nullopt, c.gait);
+      SwingList force;
+      try {
+        force = listSwings(cut, columns, grf, settings, c.gait);
+      } catch (const InputError&) {  // the force file's own checks refuse this cut (too little stance left)
+        continue;
+      }
+      const std::string where = c.ik + " " + c.side + " from " + std::to_string(cut.columns.front().front()) + " s";
+      EXPECT_TRUE(force.numberingAmbiguity.empty()) << where;  // the force covers every trial's start
+      if (!kin.numberingAmbiguity.empty()) {
+        ++refused;
+        EXPECT_THAT(inputErrorOf([&] { selectSwing(kin, cut, columns.knee, 1); }),
+                    HasSubstr("number this file's swings one apart from the kinematics: give its force file"))
+            << where;
+        continue;
+      }
+      const std::size_t n = std::min(kin.swings.size(), force.swings.size());
+      EXPECT_GE(n + 1, force.swings.size()) << where;  // at most the last swing, cut by the end, differs
+      for (std::size_t k = 0; k < n; ++k, ++checked)
+        EXPECT_NEAR(kin.swings[k].toeOff, force.swings[k].toeOff, kEventToleranceS) << where << " swing " << k + 1;
+    }
+  }
+  std::printf("numbered as the force: %d swings; refused: %d starts\n", checked, refused);
+  EXPECT_GT(checked, 100);
+  EXPECT_GT(refused, 0);
 }
 
 }  // namespace
