@@ -71,6 +71,9 @@ void printTargets(std::ostringstream& s, const TuningReportInputs& in) {
       << (o.binding ? "  BINDS" : "") << "\n";
   }
   if (!in.swingTimeSource.empty()) s << "    (swing time target from " << in.swingTimeSource << ")\n";
+  if (in.chance != nullptr && in.chance->ran)
+    s << "  chance              " << in.chance->verdict << ", over the sweep's assumption ranges (seed "
+      << in.chance->options.seed << ")\n";
 }
 
 void printSensitivity(std::ostringstream& s, const TuningResult& r) {
@@ -255,6 +258,16 @@ std::string formatTuningJson(const TuningReportInputs& in) {
                        {"neighbours", corners}};
   }
   j["targets"] = makeTargetsJson(r);
+  if (in.chance != nullptr && in.chance->ran) {
+    const TuningChance& c = *in.chance;
+    Json misses = Json::object();
+    for (std::size_t t = 0; t < r.targets.size() && t < c.misses.size(); ++t)
+      if (r.targets[t].target.hard) misses[tuningQuantityKey(r.targets[t].target.quantity)] = c.misses[t];
+    j["chance_of_meeting_hard_limits"] = {{"samples", c.options.samples}, {"seed", c.options.seed}, {"met", c.met},
+                                          {"chance", c.chance()}, {"ci95", {c.low, c.high}}, {"failed", c.failed},
+                                          {"misses", misses}, {"nominal_swing_time_s", c.nominalSwingTime},
+                                          {"verdict", c.verdict}};
+  }
   j["swing"] = makePointJson(r.best, "result");
   j["identifiable"] = r.identifiable;
   j["identifiability"] = r.identifiability;

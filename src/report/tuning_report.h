@@ -4,6 +4,7 @@
 #include <string>
 
 #include "sweep/knee_tuning.h"
+#include "sweep/tuning_chance.h"
 
 namespace swingsim {
 
@@ -19,6 +20,9 @@ struct TuningReportInputs {
   double seconds = 0;           ///< wall time
   int jobs = 0;                 ///< threads (0: all cores)
   const TuningResult* result = nullptr;
+  /// The chance of meeting every hard limit over the assumptions' ranges; null or not ran
+  /// when the study did not ask for it.
+  const TuningChance* chance = nullptr;
 };
 
 /// A target quantity in its file unit (deg for angles and rates, else SI).

@@ -30,6 +30,7 @@ TuningReportInputs makeTuningReportInputs(const TuningRun& run, const std::strin
   in.seconds = run.seconds;
   in.jobs = run.jobs;
   in.result = &run.result;
+  in.chance = &run.chance;
   return in;
 }
 
@@ -67,6 +68,12 @@ TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& co
     run.tunedKnee.spec.source = "swingsim tune " + study.path + " from " + study.kneeModelPath;
     run.lowering = t.lowering;
     run.added = t.added;
+    if (study.chance.samples > 0) {
+      if (control.terminal) std::fprintf(stderr, "tune %s: chance of meeting the hard limits, %d samples\n",
+                                         study.name.c_str(), study.chance.samples);
+      run.chance = calcTuningChance({model.participant(), t.knee, t.lowering, t.added, makeTuningSwingOptions()},
+                                    study.targets, study.chance, jobs, stop);
+    }
   }
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

@@ -22,6 +22,7 @@ struct TuningRun {
   KneeModel tunedKnee;   ///< the knee model at the result
   double lowering = 0;   ///< m, at the result
   AddedMass added;       ///< at the result
+  TuningChance chance;   ///< of meeting every hard limit at the result (the study's `uncertainty:`)
   double seconds = 0;    ///< wall time of the tuning
   int jobs = 0;
 };

@@ -8,6 +8,7 @@
 #include "io/knee_model_knobs.h"
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
+#include "study/run_arguments.h"
 #include "study/tuning_model.h"
 #include "sweep/tuning_resolution.h"
 
@@ -114,6 +115,14 @@ void readSettings(YamlMap& yaml, TuningStudy& s) {
   if (yaml.has("seed")) s.settings.seed = yaml.getWhole("seed", 1000000000, "1000000000");
   s.settings.toleranceWindow = yaml.getDouble("tolerance_window_s", s.settings.toleranceWindow, mustBePositive);
   s.lowering = yaml.getDouble("lowering_m", 0.0, mustBeNonNegative);
+  if (yaml.has("uncertainty")) {  // as a sweep study's: samples (1 to 100000) and an optional seed
+    YamlMap m = yaml.getMap("uncertainty");
+    s.chance.samples = static_cast<int>(m.getWhole("samples", static_cast<std::uint64_t>(uncertaintySamplesRange().max),
+                                                   std::to_string(uncertaintySamplesRange().max)));
+    if (s.chance.samples < 1) m.fail("samples", uncertaintySamplesRange().expected, std::to_string(s.chance.samples));
+    if (m.has("seed")) s.chance.seed = m.getWhole("seed", kMaxSeed, std::to_string(kMaxSeed));
+    m.finish();
+  }
   if (yaml.has("added_mass")) {
     YamlMap m = yaml.getMap("added_mass");
     s.added.mass = m.getDouble("mass_kg", mustBeNonNegative);

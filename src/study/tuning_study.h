@@ -6,6 +6,7 @@
 
 #include "model/leg_parameters.h"
 #include "sweep/knee_tuning.h"
+#include "sweep/tuning_chance.h"
 
 namespace swingsim {
 
@@ -28,6 +29,9 @@ struct TuningStudy {
   TuningSettings settings;       ///< start_points, seed (jobs from the caller)
   /// Where the swing-time target came from: "" (a number), or the participant's file and key.
   std::string swingTimeSource;
+  /// `uncertainty: {samples, seed}`: the chance of the result meeting every hard limit over the
+  /// sweep's assumption ranges (sweep/tuning_chance.h); samples 0 when not asked for.
+  TuningChanceOptions chance;
 };
 
 /// Reads a `kind: knee-tuning` study: every key checked, each knob tried at both ends of

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <filesystem>
 #include <fstream>
 
@@ -108,6 +110,13 @@ TEST(TuningRun, TheReportedSwingIsTheOneTheTunedFilesGive) {
   EXPECT_EQ(again.swingTime, run.result.best.swingTime);
   EXPECT_EQ(again.peakKneeFlexion->flexion, run.result.best.peakKneeFlexion);
   EXPECT_EQ(*again.minToeClearance, run.result.best.minToeClearance);
+  // The study asks for the chance of meeting the limits: its nominal draw is this swing.
+  ASSERT_TRUE(run.chance.ran);
+  EXPECT_EQ(run.chance.options.samples, 200);
+  EXPECT_NEAR(run.chance.nominalSwingTime, run.result.best.swingTime, 1e-12);
+  EXPECT_EQ(run.chance.misses.at(0), 0);  // the swing time is a soft target
+  EXPECT_GE(run.chance.met + run.chance.failed + run.chance.misses.at(1) + run.chance.misses.at(2), 200);
+  std::printf("%s\n", run.chance.verdict.c_str());
 }
 
 TEST(TuningRun, StoppedAfterAFewSwingsItIsInterruptedWithABestPoint) {

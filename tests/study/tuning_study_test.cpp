@@ -120,5 +120,22 @@ TEST(TuningStudy, RefusesAKnobGivenTwice) {
   EXPECT_NE(m.find("knobs[1].key: this knob appears twice (got lowering_m)"), std::string::npos) << m;
 }
 
+// `uncertainty: {samples, seed}` asks for the chance of meeting the hard limits (as a sweep
+// study's uncertainty map): read, and a bad count or an unknown key refused at its line.
+TEST(TuningStudy, UncertaintyAsksForTheChanceOfMeetingTheLimits) {
+  const TuningStudy plain = loadTuningStudy(writeTemp("study.yaml", study(kKnobs, kTargets)));
+  EXPECT_EQ(plain.chance.samples, 0);
+  const TuningStudy asked =
+      loadTuningStudy(writeTemp("study.yaml", study(kKnobs, kTargets) + "uncertainty: {samples: 50, seed: 3}\n"));
+  EXPECT_EQ(asked.chance.samples, 50);
+  EXPECT_EQ(asked.chance.seed, 3u);
+  const std::string zero = refusal(study(kKnobs, kTargets) + "uncertainty: {samples: 0}\n");
+  EXPECT_TRUE(std::regex_search(zero, std::regex(R"(study\.yaml:9: uncertainty\.samples: expected a whole number of samples from 1)")))
+      << zero;
+  const std::string typo = refusal(study(kKnobs, kTargets) + "uncertainty: {sample: 50}\n");
+  EXPECT_NE(typo.find("uncertainty"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("sample"), std::string::npos) << typo;
+}
+
 }  // namespace
 }  // namespace swingsim
