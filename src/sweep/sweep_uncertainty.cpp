@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/input_error.h"
+#include "sweep/swing_time_jumps.h"
 #include "swing/knee_setup.h"
 
 namespace swingsim {
@@ -26,12 +27,15 @@ double percentileSorted(const std::vector<double>& v, double q) {
 }
 
 // The nominal symmetry lowering and its interval over the samples (no sound-limb time: none).
+// Each curve is kept as times only, so a step beyond the jump screen is taken for a jump
+// (calcScreenedPieces): a sample whose sound-limb time falls in one does not reach it.
 void addSymmetry(ParticipantUncertainty& pu, double soundTime) {
-  pu.symmetry = calcSymmetryLowering(pu.nominal.lowerings, pu.nominal.swingTimes, soundTime);
+  pu.symmetry = calcSymmetryLowering(pu.nominal.lowerings, pu.nominal.swingTimes, soundTime,
+                                     calcScreenedPieces(pu.nominal.swingTimes));
   if (!pu.symmetry.given) return;
   std::vector<double> lowerings;
   for (const auto& s : pu.samples) {
-    const SymmetryLowering sample = calcSymmetryLowering(s.lowerings, s.swingTimes, soundTime);
+    const SymmetryLowering sample = calcSymmetryLowering(s.lowerings, s.swingTimes, soundTime, calcScreenedPieces(s.swingTimes));
     if (!sample.found) continue;  // counted in samplesWithoutSwingEnd
     lowerings.push_back(sample.lowering);
     if (!sample.reached) ++pu.symmetryNotReached;

@@ -68,10 +68,12 @@ void narrowJump(PieceSample& lo, PieceSample& hi, const PieceSampler& sample) {
   }
 }
 
-// s: the step between neighbours above which a pair with one bounce count is bisected.
-double calcJumpScreen(const std::vector<PieceSample>& grid) {
+// s: the step between neighbours of `times` (ended swings: finite neighbours only) above
+// which a pair with one bounce count is bisected.
+double calcJumpScreen(const std::vector<double>& times) {
   std::vector<double> steps;
-  for (std::size_t k = 0; k + 1 < grid.size(); ++k) steps.push_back(std::fabs(grid[k + 1].swingTime - grid[k].swingTime));
+  for (std::size_t k = 0; k + 1 < times.size(); ++k)
+    if (std::isfinite(times[k]) && std::isfinite(times[k + 1])) steps.push_back(std::fabs(times[k + 1] - times[k]));
   if (steps.empty()) return kJumpScreenFloor;
   std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
   return std::max(kJumpScreenFloor, kJumpScreenFactor * steps[steps.size() / 2]);
@@ -82,7 +84,9 @@ double calcJumpScreen(const std::vector<PieceSample>& grid) {
 std::vector<SwingTimeJump> findSwingTimeJumps(const std::vector<PieceSample>& grid, const PieceSampler& sample,
                                               double zoneOfStability) {
   std::vector<SwingTimeJump> jumps;
-  const double screen = calcJumpScreen(grid);
+  std::vector<double> times;
+  for (const PieceSample& p : grid) times.push_back(p.swingTime);
+  const double screen = calcJumpScreen(times);
   for (std::size_t k = 0; k + 1 < grid.size(); ++k) {
     if (grid[k].bounces == grid[k + 1].bounces && std::fabs(grid[k + 1].swingTime - grid[k].swingTime) <= screen) continue;
     SwingTimeJump jump;
@@ -93,6 +97,17 @@ std::vector<SwingTimeJump> findSwingTimeJumps(const std::vector<PieceSample>& gr
     if (std::fabs(jump.above.swingTime - jump.below.swingTime) > kJumpMinSize) jumps.push_back(jump);
   }
   return jumps;
+}
+
+std::vector<int> calcScreenedPieces(const std::vector<double>& swingTimes) {
+  const double screen = calcJumpScreen(swingTimes);
+  std::vector<int> pieces(swingTimes.size(), 0);
+  for (std::size_t k = 1; k < swingTimes.size(); ++k) {
+    const bool jump = std::isfinite(swingTimes[k]) && std::isfinite(swingTimes[k - 1]) &&
+                      std::fabs(swingTimes[k] - swingTimes[k - 1]) > screen;
+    pieces[k] = pieces[k - 1] + (jump ? 1 : 0);
+  }
+  return pieces;
 }
 
 int calcPieceIndex(const std::vector<SwingTimeJump>& jumps, double lowering) {

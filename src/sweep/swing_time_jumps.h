@@ -77,6 +77,13 @@ using PieceSampler = std::function<std::optional<PieceSample>(double lowering)>;
 std::vector<SwingTimeJump> findSwingTimeJumps(const std::vector<PieceSample>& grid, const PieceSampler& sample,
                                               double zoneOfStability);
 
+/// Piece indices (one per grid point) of a swing-time curve known only on its grid, as the
+/// uncertainty analysis keeps its samples (times, no bounce counts, nothing to bisect): a
+/// neighbour step beyond the jump screen (kJumpScreenFactor x the median neighbour step, at
+/// least kJumpScreenFloor) starts a new piece. A steep continuous stretch beyond the screen is
+/// split too: an answer there is withheld, never read across a jump.
+std::vector<int> calcScreenedPieces(const std::vector<double>& swingTimes);
+
 /// The piece index (0, 1, ...) of a lowering: how many jumps lie below it.
 int calcPieceIndex(const std::vector<SwingTimeJump>& jumps, double lowering);
 

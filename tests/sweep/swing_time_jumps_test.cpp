@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "core/units.h"
+#include "sweep/sweep_symmetry.h"
 
 namespace swingsim {
 namespace {
@@ -137,6 +138,25 @@ TEST(SwingTimeJumps, ASteepButContinuousStepIsNoJump) {
   std::vector<PieceSample> grid;
   for (int k = 0; k <= 20; ++k) grid.push_back(*steep(0.01 * k));
   EXPECT_TRUE(findSwingTimeJumps(grid, steep, kZone).empty());
+}
+
+// A curve known only on its grid (an uncertainty sample): a step beyond 3x the median step
+// (at least 5 ms) starts a new piece; a swing that did not end (NaN) splits nothing; and the
+// symmetry lowering of such a sample is not read across that step.
+TEST(SwingTimeJumps, ScreenedPiecesSplitAGridCurveAtAStepBeyondTheScreen) {
+  const double nan = std::nan("");
+  EXPECT_EQ(calcScreenedPieces({0.50, 0.49, 0.48, 0.40, 0.39}), (std::vector<int>{0, 0, 0, 1, 1}));
+  EXPECT_EQ(calcScreenedPieces({0.50, 0.496, 0.492, 0.488}), (std::vector<int>{0, 0, 0, 0}));  // below the 5 ms floor
+  EXPECT_EQ(calcScreenedPieces({0.50, nan, 0.48, 0.47, 0.46}), (std::vector<int>{0, 0, 0, 0, 0}));
+  const std::vector<double> lowerings{0, 0.01, 0.02, 0.03, 0.04};
+  const std::vector<double> times{0.50, 0.49, 0.48, 0.40, 0.39};
+  const SymmetryLowering across = calcSymmetryLowering(lowerings, times, 0.45, calcScreenedPieces(times));
+  EXPECT_FALSE(across.reached);
+  EXPECT_TRUE(across.acrossJump);
+  EXPECT_DOUBLE_EQ(across.jumpFrom, 0.02);
+  const SymmetryLowering inside = calcSymmetryLowering(lowerings, times, 0.485, calcScreenedPieces(times));
+  EXPECT_TRUE(inside.reached);
+  EXPECT_NEAR(inside.lowering, 0.015, 1e-12);
 }
 
 }  // namespace
