@@ -257,10 +257,13 @@ KinematicEvents calcKinematicEvents(const MotionTable& table, const MotionColumn
   for (std::size_t p = 0; p < peaks.size(); ++p) {
     out.peakTimes.push_back(t[peaks[p]]);
     auto toeOff = running ? findRunningToeOff(t, a.knee, peaks[p]) : findWalkingToeOff(t, a.knee, peaks[p]);
-    if (toeOff) *toeOff -= toeOffBias;
-    if (toeOff) out.events.push_back({*toeOff, Kind::ToeOff, "kinematics"});
+    if (toeOff) {
+      *toeOff -= toeOffBias;
+      out.events.push_back({*toeOff, Kind::ToeOff, "kinematics"});
+      const double rise = t[peaks[p]] - *toeOff;
+      if (p > 0) shortestRise = std::min(shortestRise.value_or(rise), rise);
+    }
     if (p == 0) firstToeOff = toeOff;
-    if (p > 0 && toeOff) shortestRise = std::min(shortestRise.value_or(t[peaks[p]] - *toeOff), t[peaks[p]] - *toeOff);
     const std::size_t end = p + 1 < peaks.size() ? peaks[p + 1] : t.size();
     const auto heel = running ? findRunningHeelContact(t, a.knee, peaks[p], end) : findWalkingHeelContact(t, a, peaks[p], end);
     if (heel) out.events.push_back({*heel - heelBias, Kind::HeelContact, "kinematics"});

@@ -250,6 +250,17 @@ double calcAssumptionValue(const SweepAssumption& assumption, const AssumptionRa
   return range.low + u * (range.high - range.low);
 }
 
+std::vector<AssumptionRange> calcAssumptionRanges(const SweepVariant& variant) {
+  std::vector<AssumptionRange> ranges;
+  for (const SweepAssumption& a : sweepAssumptions()) ranges.push_back(a.calcRange(variant));
+  return ranges;
+}
+
+void applyAssumptionDraw(SweepVariant& variant, const std::vector<AssumptionRange>& ranges, const std::vector<double>& u) {
+  const auto& table = sweepAssumptions();
+  for (std::size_t k = 0; k < table.size(); ++k) table[k].apply(variant, calcAssumptionValue(table[k], ranges[k], u[k]));
+}
+
 KneeLawSum makeSweepVariantKnee(const SweepVariant& variant) {
   KneeModel model = variant.knee;
   model.law = makeKneeModelLaw(model.spec);

@@ -63,6 +63,14 @@ const std::vector<SweepAssumption>& sweepAssumptions();
 /// log(value) for a logUniform entry, or (discrete) low if u < 0.5 else high.
 double calcAssumptionValue(const SweepAssumption& assumption, const AssumptionRange& range, double u);
 
+/// The ranges of every assumption of sweepAssumptions() for `variant` (its values as loaded),
+/// in the table's order.
+std::vector<AssumptionRange> calcAssumptionRanges(const SweepVariant& variant);
+
+/// Sets every assumption of sweepAssumptions() on `variant` to its value at fraction `u[k]` of
+/// `ranges[k]` (calcAssumptionValue): one Monte Carlo draw.
+void applyAssumptionDraw(SweepVariant& variant, const std::vector<AssumptionRange>& ranges, const std::vector<double>& u);
+
 /// A variant's knee law: the knee model's law rebuilt from `variant.knee.spec`
 /// (makeKneeModelLaw) plus the participant's friction (makeKneeLaw).
 KneeLawSum makeSweepVariantKnee(const SweepVariant& variant);

@@ -121,8 +121,7 @@ SweepVariant UncertaintyPlan::makeVariant(const UncertaintyRun& run) const {
       table[run.assumption].apply(v, range[run.assumption].high);
       break;
     case UncertaintyRun::Kind::kSample:
-      for (std::size_t k = 0; k < table.size(); ++k)
-        table[k].apply(v, calcAssumptionValue(table[k], range[k], draws[run.sample][k]));
+      applyAssumptionDraw(v, range, draws[run.sample]);
       break;
   }
   return v;
@@ -172,8 +171,7 @@ UncertaintyPlan planSweepUncertainty(const SweepStudy& study, const UncertaintyO
   using Kind = UncertaintyRun::Kind;
   for (std::size_t i = 0; i < study.participants.size(); ++i) {
     plan.nominals.push_back(makeNominalVariant(study, study.participants[i]));
-    plan.ranges.emplace_back();
-    for (const auto& a : table) plan.ranges.back().push_back(a.calcRange(plan.nominals.back()));
+    plan.ranges.push_back(calcAssumptionRanges(plan.nominals.back()));
   }
   for (std::size_t i = 0; i < study.participants.size(); ++i) {
     addRun({i, Kind::kNominal, 0, 0, {}, 0});

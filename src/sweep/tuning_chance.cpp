@@ -18,17 +18,13 @@ namespace {
 /// z of the two-sided 95 % normal interval.
 constexpr double kZ95 = 1.959963984540054;
 
-/// The tuned leg with every assumption at its drawn value (`u` one fraction per entry of
-/// sweepAssumptions(); empty: every one at the files' value), as one swing.
-SwingResult simulateDraw(const TunedLeg& leg, const std::vector<double>& u) {
-  const auto& table = sweepAssumptions();
-  SweepVariant v;
-  v.participant = leg.participant;
-  v.knee = leg.knee;
-  v.swing = leg.options;
-  const SweepVariant nominal = v;
-  for (std::size_t k = 0; k < u.size() && k < table.size(); ++k)
-    table[k].apply(v, calcAssumptionValue(table[k], table[k].calcRange(nominal), u[k]));
+/// The tuned leg (`nominal`: its variant as loaded, `ranges` its assumptions' ranges) with
+/// every assumption at its drawn value (`u` one fraction per entry of sweepAssumptions();
+/// empty: every one at the files' value), as one swing.
+SwingResult simulateDraw(const TunedLeg& leg, const SweepVariant& nominal, const std::vector<AssumptionRange>& ranges,
+                         const std::vector<double>& u) {
+  SweepVariant v = nominal;
+  if (!u.empty()) applyAssumptionDraw(v, ranges, u);
   const auto knee = std::make_shared<const KneeLawSum>(makeSweepVariantKnee(v));
   const Participant adapted = calcAdaptedParticipant(v.participant, leg.lowering, v.hipEffortExponent);
   return simulateSwing(makeSwingSetup(adapted, knee, leg.lowering, leg.added), v.swing);
@@ -64,12 +60,17 @@ TuningChance calcTuningChance(const TunedLeg& leg, const std::vector<TuningTarge
   c.misses.assign(targets.size(), 0);
   if (options.samples <= 0) return c;
   const std::vector<std::vector<double>> draws = drawUncertaintySamples(options.samples, options.seed);
+  SweepVariant nominal;
+  nominal.participant = leg.participant;
+  nominal.knee = leg.knee;
+  nominal.swing = leg.options;
+  const std::vector<AssumptionRange> ranges = calcAssumptionRanges(nominal);
   // Job 0 is the nominal draw; job s + 1 the s-th sample.
   std::vector<TuningPoint> points(draws.size() + 1);
   const int ran = runParallelJobs(static_cast<int>(points.size()), jobs, [&](int j) {
     const std::vector<double> u = j == 0 ? std::vector<double>{} : draws[static_cast<std::size_t>(j - 1)];
     points[static_cast<std::size_t>(j)] =
-        evaluateTuningPoint({}, targets, [&](const std::vector<double>&) { return simulateDraw(leg, u); });
+        evaluateTuningPoint({}, targets, [&](const std::vector<double>&) { return simulateDraw(leg, nominal, ranges, u); });
   }, {}, stop);
   if (ran < static_cast<int>(points.size()) || (stop != nullptr && *stop)) return c;
   c.nominalSwingTime = points.front().swingTime;
