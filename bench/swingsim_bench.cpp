@@ -17,6 +17,8 @@
 #include "study/diagnosis_study.h"
 #include "io/yaml_reader.h"
 #include "report/cylinder_fit_report.h"
+#include "knee/knee_added_effects.h"
+#include "knee/knee_expression.h"
 #include "leg/leg_model.h"
 #include "swing/reference_swing.h"
 #include "swing/simbody_ode.h"
@@ -71,6 +73,30 @@ void BM_SwingSimbody(benchmark::State& state) {
   state.counters["realizations_to_end"] = r.realizationsToEnd;  // the rest integrate the bounce window
 }
 BENCHMARK(BM_SwingSimbody)->ArgName("variant")->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
+
+// One P1 swing (set-up included) with an added knee damper of 0.3 N m s/rad: argument 0 as
+// the library's record (KneeAddedEffects), 1 as a user's expression "-c * knee_rate_rad_s"
+// (knee/knee_expression.h, muparser). Issue 54: the expression at most 1.2x the library's.
+void BM_SwingAddedDamper(benchmark::State& state) {
+  KneeLawSum law = *p1().knee;
+  if (state.range(0) == 0) {
+    KneeAddedEffectsParams damper;
+    damper.viscousDamping = 0.3;
+    law.add(std::make_unique<KneeAddedEffects>(damper));
+  } else {
+    law.add(std::make_unique<KneeExpressionMoment>(
+        KneeExpressionParams{"damper", "-c * knee_rate_rad_s", {{"c", "N m s/rad", 0.3}}}));
+  }
+  const auto shared = std::make_shared<const KneeLawSum>(std::move(law));
+  SwingResult r;
+  for (auto _ : state) {
+    r = simulateSwing(makeSwingSetup(p1().participant, shared, 0.0), SwingOptions{});
+    keep(r.swingTime);
+  }
+  state.counters["swing_time_ms"] = 1e3 * r.swingTime;
+  state.counters["realizations"] = r.realizations;
+}
+BENCHMARK(BM_SwingAddedDamper)->ArgName("expression")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // One realization of the P1 leg to the Acceleration stage, as the default integrator asks
 // for it (SimbodyOde: write t, q, u, realize, read the derivatives), at a new state each

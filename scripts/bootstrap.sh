@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 packages=(build-essential cmake ccache libeigen3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
-          nlohmann-json3-dev libboost-math-dev libcli11-dev libceres-dev libtinyxml2-dev
+          nlohmann-json3-dev libboost-math-dev libcli11-dev libceres-dev libtinyxml2-dev libmuparser-dev
           pybind11-dev python3-dev python3-numpy python3-pytest universal-ctags
           libcpp-httplib-dev chromium chromium-driver python3-selenium
           jupyter-nbconvert python3-ipykernel python3-matplotlib)

@@ -85,7 +85,13 @@ std::vector<EffectParameter> baseIntervals(const DiagnosisPlant& plant, const Pl
 }
 
 std::vector<EffectId> resolveEffects(PlantKind plant, const std::vector<std::string>& requested) {
-  const std::vector<std::string> names = resolveCandidates(requested, effectNames(plant));
+  // The library's names, and a user's effects the study registered (identify/user_swing_effect.h).
+  std::vector<std::string> known = effectNames(plant);
+  for (const auto& n : requested) {
+    const EffectDescriptor* d = findEffect(plant, n);
+    if (d && isUserEffect(d->id)) known.push_back(n);
+  }
+  const std::vector<std::string> names = resolveCandidates(requested, known);
   std::vector<EffectId> ids;
   for (const auto& n : names) ids.push_back(findEffect(plant, n)->id);
   return ids;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/units.h"
+#include "identify/user_swing_effect.h"
 
 namespace swingsim {
 
@@ -120,7 +121,17 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
 const SwingEffectRecord& findSwingEffectRecord(EffectId effect) {
   for (const auto& r : swingEffectRecords())
     if (r.id == effect) return r;
+  if (const SwingEffectRecord* user = findUserSwingEffectRecord(effect)) return *user;
   throw std::invalid_argument("not a swing effect: " + describeEffect(effect).name);
+}
+
+std::vector<const SwingEffectRecord*> presentSwingEffectRecords(const SwingEffects& effects) {
+  std::vector<const SwingEffectRecord*> out;
+  for (const auto& r : swingEffectRecords())
+    if (effects.has(r.id)) out.push_back(&r);
+  for (EffectId id : effects.present)
+    if (isUserEffect(id)) out.push_back(&findSwingEffectRecord(id));
+  return out;
 }
 
 bool SwingEffects::has(EffectId effect) const { return std::find(present.begin(), present.end(), effect) != present.end(); }
@@ -134,6 +145,7 @@ SwingEffects addSwingEffectTo(const SwingEffects& effects, EffectId effect, doub
   const SwingEffectRecord& r = findSwingEffectRecord(effect);
   SwingEffects e = effects;
   e.setPresent(effect, true);
+  if (r.setPresence) r.setPresence(e, true);
   for (const auto& slot : r.slots) slot.value(e) = slot.bounds.start;
   if (r.gridValue) r.gridValue(e) = gridValue;
   return e;
@@ -143,6 +155,10 @@ SwingEffects removeSwingEffect(const SwingEffects& effects, EffectId effect) {
   const SwingEffectRecord& r = findSwingEffectRecord(effect);
   SwingEffects e = effects;
   e.setPresent(effect, false);
+  if (r.setPresence) {
+    r.setPresence(e, false);
+    return e;  // its values left with it
+  }
   for (const auto& slot : r.slots) slot.value(e) = slot.bounds.start;
   return e;
 }
@@ -152,6 +168,7 @@ SwingEffects copySwingEffect(const SwingEffects& effects, const SwingEffects& fr
   SwingEffects e = effects;
   SwingEffects source = from;  // the accessors take a writable model
   e.setPresent(effect, true);
+  if (r.setPresence) r.setPresence(e, true);
   for (const auto& slot : r.slots) slot.value(e) = slot.value(source);
   if (r.gridValue) r.gridValue(e) = r.gridValue(source);
   return e;

@@ -4,7 +4,10 @@
 // bounds and report units, the grid value, where it acts on the leg, its physical sign rule
 // and when it does not apply. The user-facing text (name, sentences, parameter names, grid)
 // is the effect's descriptor in model/effect_table.cpp. Adding a swing candidate: its
-// descriptor, its record, its test (tests/identify/swing_effects_test.cpp).
+// descriptor, its record, its test (tests/identify/swing_effects_test.cpp). A user's effect
+// (an expression in a study's candidates) is a record of the same kind, made at run time
+// (identify/user_swing_effect.h).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,7 @@ namespace swingsim {
 /// effect is not used).
 struct SwingEffects {
   std::vector<EffectId> present;                 ///< the effects in the model, in the order added
-  KneeAddedEffectsParams knee;                   ///< friction, damping, spring values
+  KneeAddedEffectsParams knee;                   ///< friction, damping, spring values; users' expressions
   double toeOffHipRate = 0, toeOffKneeRate = 0;  ///< rad/s at toe-off
   double hipMomentScale = 1;                     ///< multiplies the measured hip moment
   double shankMassScale = 1;                     ///< multiplies shank mass and inertia
@@ -36,7 +39,7 @@ struct SwingEffects {
 struct SwingEffectSlot {
   BoundedParameter bounds;
   double reportScale;                ///< value times this = reported value (rad/s -> deg/s)
-  double& (*value)(SwingEffects&);   ///< where the value lives
+  std::function<double&(SwingEffects&)> value;  ///< where the value lives
 };
 
 /// One candidate effect of the swing plant. Hooks left null do nothing.
@@ -56,12 +59,19 @@ struct SwingEffectRecord {
   void (*applyToHipDrive)(const SwingEffects&, std::vector<double>& moments) = nullptr;
   /// On the toe-off state of a hip-moment driven swing (rates start at zero).
   void (*applyToToeOff)(const SwingEffects&, double& hipRate, double& kneeRate) = nullptr;
+  /// Run when the effect is switched on or off, before its slots are set: a user's
+  /// expression enters or leaves the knee's added effects.
+  std::function<void(SwingEffects&, bool present)> setPresence = nullptr;
 };
 
 /// Every swing effect's record, in the effect table's order.
 const std::vector<SwingEffectRecord>& swingEffectRecords();
-/// The record of `effect`; throws std::invalid_argument if it is not a swing effect.
+/// The record of `effect` (the library's or a registered user's); throws
+/// std::invalid_argument if it is not a swing effect.
 const SwingEffectRecord& findSwingEffectRecord(EffectId effect);
+/// The records of the effects present in `effects`: the library's in table order, then the
+/// users' in the order added (the order of the fit's free parameters).
+std::vector<const SwingEffectRecord*> presentSwingEffectRecords(const SwingEffects& effects);
 
 /// `effects` with `effect` present at its start values (`gridValue`: its grid value, SI).
 SwingEffects addSwingEffectTo(const SwingEffects& effects, EffectId effect, double gridValue);

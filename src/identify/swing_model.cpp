@@ -41,6 +41,7 @@ KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& param
   for (std::size_t i = 0; i + 1 < model.size(); ++i)
     law.add(std::make_unique<ScaledKneeLaw>(model.part(i), params.kneeModelScale));
   if (params.effects.knee.any()) law.add(std::make_unique<KneeAddedEffects>(params.effects.knee));
+  addKneeExpressionLaws(law, params.effects.knee);
   if (model.size() > 0) law.add(model.part(model.size() - 1).clone());
   KneeModel stopless;  // makeKneeLaw adds the participant's Tc
   stopless.law = law;

@@ -49,11 +49,10 @@ std::vector<Slot> slotsOf(const SwingEffects& e) {
   // The knee model's scale: positive, within 20x down and up (log-scaled).
   s.push_back({std::nullopt, {"", 1.0, 0.05, 20.0, true, 1.0}, 1.0,
                [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
-  for (const auto& record : swingEffectRecords())
-    if (e.has(record.id))
-      for (const auto& slot : record.slots)
-        s.push_back({record.id, slot.bounds, slot.reportScale,
-                     [value = slot.value](SwingModelParams& p) -> double& { return value(p.effects); }});
+  for (const SwingEffectRecord* record : presentSwingEffectRecords(e))
+    for (const auto& slot : record->slots)
+      s.push_back({record->id, slot.bounds, slot.reportScale,
+                   [value = slot.value](SwingModelParams& p) -> double& { return value(p.effects); }});
   return s;
 }
 
@@ -212,7 +211,44 @@ SwingPlant::PoseFit SwingPlant::fitPose(const SwingModelParams& params, std::siz
 
 PlantModelPtr SwingPlant::baseModel() const { return std::make_shared<SwingModel>(SwingModelParams{}); }
 
-PlantFit SwingPlant::fit(const PlantModel& model) const { return fitWith(model, std::nullopt); }
+namespace {
+
+// A user's effect just switched on (every value at its start) is fitted from two more starts,
+// at 10 % and 50 % of each parameter's range: an effect that acts only in part of the state
+// (a cushion near extension) can hold a local minimum at zero, where a small value moves the
+// swing's ending the wrong way (measured on the independent generator's cushion,
+// tests/identify/user_swing_effect_test.cpp). The library's records are fitted from their start.
+std::vector<SwingModelParams> moreUserStarts(const SwingModelParams& params) {
+  std::vector<SwingModelParams> out;
+  for (const SwingEffectRecord* r : presentSwingEffectRecords(params.effects)) {
+    if (!isUserEffect(r->id)) continue;
+    SwingEffects e = params.effects;
+    bool fresh = true;
+    for (const auto& slot : r->slots) fresh = fresh && slot.value(e) == slot.bounds.start;
+    if (!fresh) continue;
+    for (double share : {0.1, 0.5}) {
+      SwingModelParams p = params;
+      for (const auto& slot : r->slots) slot.value(p.effects) = slot.bounds.lower + share * (slot.bounds.upper - slot.bounds.lower);
+      out.push_back(p);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+PlantFit SwingPlant::fit(const PlantModel& model) const {
+  PlantFit best = fitWith(model, std::nullopt);
+  for (const SwingModelParams& start : moreUserStarts(swingParams(model))) {
+    try {
+      PlantFit f = fitWith(SwingModel(start), std::nullopt);
+      if (f.rss < best.rss) best = std::move(f);
+    } catch (const RunError&) {
+      // the model cannot run from this start: the fit from the user's start stands
+    }
+  }
+  return best;
+}
 
 std::optional<double> SwingPlant::calcHeldParameterRss(const PlantModel& fitted, const std::string& parameter,
                                                        double value) const {

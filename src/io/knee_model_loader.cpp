@@ -185,6 +185,28 @@ template <class A>
 void serialize(A& a, KneeAddedEffectsParams& p, AssistOf) { a.number("stiffness_Nm_per_rad", p.assistStiffness, mustBeNonNegative); }
 
 template <class A>
+void serialize(A& a, KneeExpressionParameter& q) {
+  a.optionalText("unit", q.unit);
+  a.number("value", q.value);
+}
+
+template <class A>
+void serialize(A& a, KneeExpressionParams& x) {
+  a.text("name", x.name);
+  a.text("knee_moment_Nm", x.expression);
+  a.namedMaps("parameters", x.parameters, &KneeExpressionParameter::name);
+  if constexpr (A::kReading) {
+    std::string problem;
+    try {
+      checkKneeExpression(x);
+    } catch (const KneeExpressionError& e) {
+      problem = describeKneeExpressionError(x.expression, e);
+    }
+    a.require(problem.empty(), "knee_moment_Nm", problem, [&] { return x.expression; });
+  }
+}
+
+template <class A>
 void serialize(A& a, KneeAddedEffectsParams& p) {
   a.optionalNumber("model_scale", p.modelScale, mustBePositive);
   // The writer writes a law only where it acts; the reader learns from the file.
@@ -192,6 +214,10 @@ void serialize(A& a, KneeAddedEffectsParams& p) {
   a.optionalMap("coulomb_friction", p, coulomb, KneeCoulombOf{});
   a.optionalMap("viscous_damping", p, viscous, ViscousOf{});
   a.optionalMap("extension_assist_spring", p, assist, AssistOf{});
+  // Users' knee moments (knee/knee_expression.h), as a diagnosis saves an accepted one.
+  bool expressions = !p.expressions.empty();
+  if constexpr (A::kReading) expressions = a.has("expressions");
+  if (expressions) a.mapList("expressions", p.expressions);
 }
 
 template <class A>

@@ -141,6 +141,39 @@ class YamlReadArchive {
       item.map->finish();
     }
   }
+  /// A list whose items are each a text value (stored in `v[i].*text`, not resolved as a
+  /// path) or a mapping read through serialize(); `isPlain` is the writer's choice.
+  template <class T>
+  void textOrMapList(const char* key, std::vector<T>& v, std::string T::*text, bool (*isPlain)(const T&),
+                     const std::string& textMeaning) {
+    (void)isPlain;
+    v.clear();
+    for (auto& item : map_.getTextOrMapList(key, textMeaning)) {
+      v.emplace_back();
+      if (!item.map) {
+        v.back().*text = item.text;
+        continue;
+      }
+      YamlReadArchive a(*item.map);
+      serialize(a, v.back());
+      item.map->finish();
+    }
+  }
+  /// A mapping of named mappings ({c: {unit: N m, min: 0}}): one T each, in the file's order,
+  /// its key stored in `v[i].*name`.
+  template <class T>
+  void namedMaps(const char* key, std::vector<T>& v, std::string T::*name) {
+    v.clear();
+    YamlMap outer = map_.getMap(key);
+    for (const std::string& k : outer.keys()) {
+      YamlMap child = outer.getMap(k);
+      YamlReadArchive a(child);
+      v.emplace_back();
+      v.back().*name = k;
+      serialize(a, v.back());
+      child.finish();
+    }
+  }
   /// A check across fields: fails with `file:line: key: what (got GOT)` unless `ok`.
   void require(bool ok, const char* key, const std::string& what, const std::function<std::string()>& got) {
     if (!ok) map_.fail(key, what, got());
@@ -234,6 +267,31 @@ class YamlWriteArchive {
       out_ << YAML::EndMap;
     }
     out_ << YAML::EndSeq;
+  }
+  template <class T>
+  void textOrMapList(const char* key, std::vector<T>& v, std::string T::*text, bool (*isPlain)(const T&),
+                     const std::string&) {
+    out_ << YAML::Key << key << YAML::Value << YAML::BeginSeq;
+    for (auto& item : v) {
+      if (isPlain(item)) {
+        out_ << item.*text;
+        continue;
+      }
+      out_ << YAML::BeginMap;
+      serialize(*this, item);
+      out_ << YAML::EndMap;
+    }
+    out_ << YAML::EndSeq;
+  }
+  template <class T>
+  void namedMaps(const char* key, std::vector<T>& v, std::string T::*name) {
+    out_ << YAML::Key << key << YAML::Value << YAML::BeginMap;
+    for (auto& item : v) {
+      out_ << YAML::Key << item.*name << YAML::Value << YAML::Flow << YAML::BeginMap;
+      serialize(*this, item);
+      out_ << YAML::EndMap;
+    }
+    out_ << YAML::EndMap;
   }
   void require(bool, const char*, const std::string&, const std::function<std::string()>&) {}
 

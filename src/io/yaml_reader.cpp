@@ -333,7 +333,13 @@ std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
 
 bool YamlMap::isMap(const std::string& key) const { return has(key) && node_[key].IsMap(); }
 
-std::vector<YamlMap::TextOrMap> YamlMap::getTextOrMapList(const std::string& key) {
+std::vector<std::string> YamlMap::keys() const {
+  std::vector<std::string> out;
+  for (const auto& kv : node_) out.push_back(kv.first.IsScalar() ? kv.first.Scalar() : "?");
+  return out;
+}
+
+std::vector<YamlMap::TextOrMap> YamlMap::getTextOrMapList(const std::string& key, const std::string& textMeaning) {
   YAML::Node n = require(key);
   if (!n.IsSequence()) fail(key, "expected a list", describe(n));
   std::vector<TextOrMap> out;
@@ -344,7 +350,7 @@ std::vector<YamlMap::TextOrMap> YamlMap::getTextOrMapList(const std::string& key
     else if (n[i].IsMap())
       out.push_back({"", YamlMap(n[i], path_, prefix_ + item + ".")});
     else
-      fail(item, "expected a file name or a mapping of keys", describe(n[i]));
+      fail(item, "expected " + textMeaning + " or a mapping of keys", describe(n[i]));
   }
   return out;
 }

@@ -56,8 +56,10 @@ class YamlMap {
   bool isMap(const std::string& key) const;
   /// One item of a list whose items are each a text value or a mapping.
   struct TextOrMap;
-  /// A list whose items are each a text value or a mapping.
-  std::vector<TextOrMap> getTextOrMapList(const std::string& key);
+  /// A list whose items are each a text value (`textMeaning` in messages) or a mapping.
+  std::vector<TextOrMap> getTextOrMapList(const std::string& key, const std::string& textMeaning = "a file name");
+  /// The keys of the mapping, in the file's order (none is marked used).
+  std::vector<std::string> keys() const;
 
   /// Throws if the mapping holds a key that no accessor asked for.
   void finish() const;

@@ -17,6 +17,10 @@ double KneeAddedEffects::calcMoment(const KneeKinematics& knee, const double* /*
          p_.viscousDamping * knee.flexionRate - p_.assistStiffness * knee.flexion;
 }
 
+void addKneeExpressionLaws(KneeLawSum& law, const KneeAddedEffectsParams& params) {
+  for (const auto& x : params.expressions) law.add(std::make_unique<KneeExpressionMoment>(x));
+}
+
 ScaledKneeLaw::ScaledKneeLaw(const KneeLaw& law, double scale) : law_(law.clone()), scale_(scale) {
   if (!std::isfinite(scale)) throw std::invalid_argument("scaled knee law: scale must be finite");
 }

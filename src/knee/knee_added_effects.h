@@ -3,6 +3,9 @@
 // Coulomb friction over the whole range (beyond the knee unit's Tc below 4 deg), extra
 // viscous damping, and an extension-assist spring. Read from a knee model's
 // `knee_effects:` block, so an augmented model runs in `swingsim simulate --knee`.
+#include <vector>
+
+#include "knee/knee_expression.h"
 #include "knee/knee_law.h"
 
 namespace swingsim {
@@ -18,8 +21,14 @@ struct KneeAddedEffectsParams {
   /// Scale on the knee model's own resisting law (the swing diagnosis refits it); applied
   /// by the loader (ScaledKneeLaw), not by this law.
   double modelScale = 1.0;
+  /// Users' knee moments (knee/knee_expression.h), each its own law after these three.
+  std::vector<KneeExpressionParams> expressions;
+  /// Whether friction, damping or the spring acts (the expressions are laws of their own).
   bool any() const { return coulombMoment != 0 || viscousDamping != 0 || assistStiffness != 0; }
 };
+
+/// Adds one KneeExpressionMoment per expression of `params` to `law`.
+void addKneeExpressionLaws(KneeLawSum& law, const KneeAddedEffectsParams& params);
 
 /// Sum of the three added moments. Positive moment = flexion direction (KneeLaw).
 /// Throws std::invalid_argument for a non-finite value or smoothingRate <= 0 (signs are the

@@ -13,6 +13,11 @@ namespace swingsim {
 struct KneeKinematics {
   double flexion = 0;      ///< knee flexion angle, rad
   double flexionRate = 0;  ///< knee flexion angular velocity, rad/s
+  /// The hip and the time, for a law that depends on more than the knee (a user's expression,
+  /// knee/knee_expression.h); the library's laws read only the two above.
+  double hipFlexion = 0;      ///< thigh from hanging straight down, forward +, rad
+  double hipFlexionRate = 0;  ///< rad/s
+  double time = 0;            ///< since toe-off, s
 };
 
 /// A knee moment law. `calcMoment` returns the moment the law applies about the knee, in

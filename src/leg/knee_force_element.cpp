@@ -24,7 +24,8 @@ std::string KneeForceElement::getWorkPartName(int i) const {
 
 KneeKinematics KneeForceElement::kinematics(const State& s) const {
   const MobilizedBody& shank = matter_.getMobilizedBody(shank_);
-  return {shank.getOneQ(s, 0), shank.getOneU(s, 0)};
+  const MobilizedBody& thigh = shank.getParentMobilizedBody();
+  return {shank.getOneQ(s, 0), shank.getOneU(s, 0), thigh.getOneQ(s, 0), thigh.getOneU(s, 0), s.getTime()};
 }
 
 void KneeForceElement::realizeTopology(State& s) const {

@@ -69,13 +69,24 @@ struct EffectDescriptor {
   int degreesOfFreedom() const { return fittedParameters + (grid.empty() ? 0 : 1); }
 };
 
+/// The first id of a user's effect (an expression, identify/user_swing_effect.h): ids from
+/// here on are given out at run time by registerUserEffect.
+constexpr int kFirstUserEffectId = 1000;
+/// Whether `id` is a user's effect rather than the library's.
+inline bool isUserEffect(EffectId id) { return static_cast<int>(id) >= kFirstUserEffectId; }
+/// Registers a user's effect (its descriptor's id is ignored) and returns its id: the same
+/// id for a descriptor registered before with the same name, sentence and parameters, a new
+/// one otherwise. Thread-safe; registered descriptors live as long as the process.
+EffectId registerUserEffect(EffectDescriptor descriptor);
+
 /// The whole library, cylinder effects first, in a fixed order.
 const std::vector<EffectDescriptor>& effectTable();
-/// The descriptor of an effect.
+/// The descriptor of an effect (the library's or a registered user's).
 const EffectDescriptor& describeEffect(EffectId id);
 /// Names of the effects of one plant, in table order.
 std::vector<std::string> effectNames(PlantKind plant);
-/// The effect of `plant` called `name`; nullptr if there is none.
+/// The effect of `plant` called `name`: the library's, else the user's effect registered last
+/// under that name; nullptr if there is none.
 const EffectDescriptor* findEffect(PlantKind plant, const std::string& name);
 /// Short name of a plant for messages and JSON: "cylinder", "swing".
 std::string plantName(PlantKind plant);

@@ -20,6 +20,7 @@ KneeLawSum makeKneeModelLaw(const KneeModelSpec& spec) {
       law = scaled;
     }
     law.add(std::make_unique<KneeAddedEffects>(spec.kneeEffects));
+    addKneeExpressionLaws(law, spec.kneeEffects);
   }
   law.add(std::make_unique<JointStop>(spec.stop));
   return law;

@@ -1,5 +1,7 @@
 #include "study/diagnosis_study.h"
 
+#include <algorithm>
+
 #include "core/output_files.h"
 #include "identify/cylinder_plant.h"
 #include "identify/swing_plant.h"
@@ -180,17 +182,73 @@ void serializeRecordStudy(A& a, DiagnosisStudy& s) {
 }
 
 template <class A>
+void serialize(A& a, UserEffectParameter& q) {
+  a.optionalText("unit", q.unit);
+  a.number("min", q.min);
+  a.number("max", q.max);
+  a.number("start", q.start);
+}
+
+// A user's effect among the candidates (identify/user_swing_effect.h): checked and registered
+// as it is read, so an error names its line.
+template <class A>
+void serialize(A& a, UserSwingEffect& u) {
+  a.text("name", u.name);
+  a.text("knee_moment_Nm", u.expression);
+  a.namedMaps("parameters", u.parameters, &UserEffectParameter::name);
+  if constexpr (A::kReading) {
+    try {
+      registerUserSwingEffect(u);
+    } catch (const KneeExpressionError& e) {
+      a.require(false, "knee_moment_Nm", describeKneeExpressionError(u.expression, e), [&] { return u.expression; });
+    } catch (const std::invalid_argument& e) {
+      a.require(false, "parameters", e.what(), [&] { return u.name; });
+    }
+  }
+}
+
+// The candidates as written: library names as text, users' effects as maps.
+template <class A>
+void serializeCandidateList(A& a, DiagnosisStudy& s) {
+  std::vector<UserSwingEffect> entries;
+  if constexpr (!A::kReading)
+    for (const auto& n : s.settings.candidates) {
+      auto user = std::find_if(s.userEffects.begin(), s.userEffects.end(), [&](const UserSwingEffect& u) { return u.name == n; });
+      entries.push_back(user != s.userEffects.end() ? *user : UserSwingEffect{n, "", {}});
+    }
+  a.textOrMapList("candidates", entries, &UserSwingEffect::name,
+                  +[](const UserSwingEffect& u) { return u.expression.empty(); }, "an effect's name");
+  if constexpr (A::kReading) {
+    s.settings.candidates.clear();
+    s.userEffects.clear();
+    for (const auto& e : entries) {
+      a.require(std::find(s.settings.candidates.begin(), s.settings.candidates.end(), e.name) == s.settings.candidates.end(),
+                "candidates", "an effect named twice", [&] { return e.name; });
+      a.require(e.expression.empty() || s.plant == PlantKind::kSwing, "candidates",
+                "a user's expression is a swing effect (knee_moment_Nm); a " + plantName(s.plant) + " study names library effects",
+                [&] { return e.name; });
+      s.settings.candidates.push_back(e.name);
+      if (!e.expression.empty()) s.userEffects.push_back(e);
+    }
+  }
+}
+
+template <class A>
 void serializeCandidates(A& a, DiagnosisStudy& s) {
   // Candidates: all of the plant's effects unless the study names some.
   bool namesCandidates = !s.settings.candidates.empty();
   if constexpr (A::kReading) namesCandidates = a.has("candidates");
   if (namesCandidates) {
-    a.texts("candidates", s.settings.candidates);
+    serializeCandidateList(a, s);
     a.require(!s.settings.candidates.empty(), "candidates", "expected at least one effect", [] { return std::string("an empty list"); });
     std::string all;
     for (const auto& k : effectNames(s.plant)) all += (all.empty() ? "" : ", ") + k;
     for (const auto& c : s.settings.candidates)
-      a.require(findEffect(s.plant, c) != nullptr, "candidates", "unknown " + plantName(s.plant) + " effect (known: " + all + ")",
+      a.require(findEffect(s.plant, c) != nullptr, "candidates",
+                "unknown " + plantName(s.plant) + " effect (known: " + all + ")" +
+                    (s.plant == PlantKind::kSwing ? "; or write your own as {name: NAME, knee_moment_Nm: EXPRESSION, "
+                                                    "parameters: {P: {unit: U, min: A, max: B, start: C}}} (docs/diagnosis.md)"
+                                                  : ""),
                 [&] { return c; });
   }
   bool acceptance = true;

@@ -26,6 +26,7 @@
 
 #include "core/output_paths.h"
 #include "identify/diagnosis_engine.h"
+#include "identify/user_swing_effect.h"
 #include "io/motion_file.h"
 #include "io/swing_events.h"
 #include "model/leg_parameters.h"
@@ -69,6 +70,9 @@ struct DiagnosisStudy {
   /// (`moving_hip`, default true); false pins the hip in space as Burkett did.
   bool movingHip = true;
   EffectSelectionSettings settings;
+  /// swing: the users' effects among `candidates:` (an expression each, registered when the
+  /// study is read; settings.candidates names them in the list's order).
+  std::vector<UserSwingEffect> userEffects;
   bool fitSwitches = false;           ///< cylinder: refit switch widths and xhy before the baseline
   double plotSeconds = 2.0;           ///< cylinder: s of each record shown in residual-vs-time plots
   double integratorTolerance = 1e-8;  ///< swing: reference integrator tolerance in every refit

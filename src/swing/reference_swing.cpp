@@ -11,6 +11,52 @@
 
 namespace swingsim {
 
+namespace {
+
+// The chain's constant terms (docs/reference-swing.md): the shank-and-foot body's COM angle
+// gamma off the shank axis, the inertia terms and the gravity moments.
+struct ChainTerms {
+  double gamma, m11, m22, m2L1r2, massMoment1, massMoment2, gravity1, gravity2;
+};
+
+ChainTerms calcChainTerms(const LegGeometry& g) {
+  const double m1 = g.thighMass, a1 = g.thighCom, I1 = g.thighInertia, L1 = g.thighLength;
+  const double ms = g.shankMass, as = g.shankCom, Is = g.shankInertia, L2 = g.shankLength;
+  const double mf = g.footMass, cf = g.footComForward, If = g.footInertia;
+  const double ma = g.added.mass, da = g.added.distanceBelowKnee;
+  const double m2 = ms + mf + ma;
+  const double momentX = mf * cf;                      // m2 r2 sin gamma
+  const double momentY = ms * as + mf * L2 + ma * da;  // m2 r2 cos gamma
+  const double r2 = std::hypot(momentX, momentY) / m2;
+  ChainTerms c{};
+  c.gamma = std::atan2(momentX, momentY);
+  c.m11 = I1 + m1 * a1 * a1 + m2 * L1 * L1;
+  c.m22 = Is + ms * as * as + If + mf * (cf * cf + L2 * L2) + ma * da * da;
+  c.m2L1r2 = m2 * L1 * r2;
+  c.massMoment1 = m1 * a1 + m2 * L1;
+  c.massMoment2 = m2 * r2;
+  c.gravity1 = c.massMoment1 * kGravity;
+  c.gravity2 = c.massMoment2 * kGravity;
+  return c;
+}
+
+}  // namespace
+
+KneeMomentNeeded calcKneeMomentNeeded(const LegGeometry& g, double hip, double hipRate, double hipAcc, double knee,
+                                      double kneeAcc) {
+  // The shank row of the equations with the hip fixed, solved for the knee moment:
+  // m12 phi'' + m22 beta'' = -M + m2 L1 r2 sin(phi - beta) phi'^2 - m2 r2 g sin(beta).
+  const ChainTerms c = calcChainTerms(g);
+  const double beta = hip - knee + c.gamma, betaAcc = hipAcc - kneeAcc;
+  const double m12 = c.m2L1r2 * std::cos(hip - beta);
+  KneeMomentNeeded out;
+  out.moment = -(m12 * hipAcc + c.m22 * betaAcc) + c.m2L1r2 * std::sin(hip - beta) * hipRate * hipRate -
+               c.gravity2 * std::sin(beta);
+  out.perHipAcceleration = -(m12 + c.m22);
+  out.perKneeAcceleration = c.m22;
+  return out;
+}
+
 // The equations of motion, derived by hand (2-DOF Lagrangian): docs/reference-swing.md; the
 // moving hip's support-acceleration forces: docs/moving-hip.md.
 class ReferenceSwing::Equations final : public OdeSystem {
@@ -23,22 +69,15 @@ class ReferenceSwing::Equations final : public OdeSystem {
         hipStop_(makeHipStop(hipRange)),
         thigh_(std::move(thigh)),
         hip_(std::move(hip)) {
-    const double m1 = g.thighMass, a1 = g.thighCom, I1 = g.thighInertia, L1 = g.thighLength;
-    const double ms = g.shankMass, as = g.shankCom, Is = g.shankInertia, L2 = g.shankLength;
-    const double mf = g.footMass, cf = g.footComForward, If = g.footInertia;
-    const double ma = g.added.mass, da = g.added.distanceBelowKnee;
-    const double m2 = ms + mf + ma;
-    const double momentX = mf * cf;                      // m2 r2 sin gamma
-    const double momentY = ms * as + mf * L2 + ma * da;  // m2 r2 cos gamma
-    const double r2 = std::hypot(momentX, momentY) / m2;
-    gamma_ = std::atan2(momentX, momentY);
-    m11_ = I1 + m1 * a1 * a1 + m2 * L1 * L1;
-    m22_ = Is + ms * as * as + If + mf * (cf * cf + L2 * L2) + ma * da * da;
-    m2L1r2_ = m2 * L1 * r2;
-    massMoment1_ = m1 * a1 + m2 * L1;
-    massMoment2_ = m2 * r2;
-    gravity1_ = massMoment1_ * kGravity;
-    gravity2_ = massMoment2_ * kGravity;
+    const ChainTerms c = calcChainTerms(g);
+    gamma_ = c.gamma;
+    m11_ = c.m11;
+    m22_ = c.m22;
+    m2L1r2_ = c.m2L1r2;
+    massMoment1_ = c.massMoment1;
+    massMoment2_ = c.massMoment2;
+    gravity1_ = c.gravity1;
+    gravity2_ = c.gravity2;
   }
 
   int numStates() const override { return 4 + numLawStates_; }
@@ -51,7 +90,7 @@ class ReferenceSwing::Equations final : public OdeSystem {
   /// The derivatives and the hip moment (the drive's, or the one a prescribed thigh needs).
   void calcDerivativesAndHipMoment(double t, const double* y, double* dydt, double& hipMoment) const {
     const double phi = y[0], beta = y[1], phiDot = y[2], betaDot = y[3];
-    const KneeKinematics knee{calcKneeFlexion(y), phiDot - betaDot};
+    const KneeKinematics knee{calcKneeFlexion(y), phiDot - betaDot, phi, phiDot, t};
     const double* z = y + 4;
     const double kneeMoment = law_->calcMoment(knee, z);
     const double s = std::sin(phi - beta);
@@ -92,7 +131,9 @@ class ReferenceSwing::Equations final : public OdeSystem {
     return hipMoment;
   }
   /// The knee law's moment at y, N m.
-  double calcKneeMoment(const double* y) const { return law_->calcMoment({calcKneeFlexion(y), y[2] - y[3]}, y + 4); }
+  double calcKneeMoment(double t, const double* y) const {
+    return law_->calcMoment({calcKneeFlexion(y), y[2] - y[3], y[0], y[2], t}, y + 4);
+  }
 
   double calcKneeFlexion(const double* y) const { return calcKneeFlexion(y[0], y[1]); }
   double calcKneeFlexion(double phi, double beta) const { return phi - beta + gamma_; }
@@ -281,7 +322,7 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
     out.hipFlexionRate.push_back(y[2]);
     out.kneeFlexionRate.push_back(y[2] - y[3]);
     out.hipMoment.push_back(eq.calcHipMoment(t, y));
-    out.kneeMoment.push_back(eq.calcKneeMoment(y));
+    out.kneeMoment.push_back(eq.calcKneeMoment(t, y));
   }
   return out;
 }

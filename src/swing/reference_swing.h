@@ -38,6 +38,18 @@ struct ReferenceSwingEnd {
   long steps = 0;                  ///< accepted integrator steps
 };
 
+/// The knee moment (N m, + = flexion) a leg's motion needs at one instant, from the reference
+/// integrator's own equations (their shank row, docs/reference-swing.md) with the hip fixed:
+/// inverse dynamics. Hip = thigh from hanging straight down (rad), knee flexion (rad), their
+/// rates and accelerations. With the moment, its derivatives by the two accelerations (the
+/// terms through which a smoother's noise reaches it).
+struct KneeMomentNeeded {
+  double moment = 0;
+  double perHipAcceleration = 0, perKneeAcceleration = 0;  ///< N m per rad/s^2
+};
+KneeMomentNeeded calcKneeMomentNeeded(const LegGeometry& g, double hip, double hipRate, double hipAcc, double knee,
+                                      double kneeAcc);
+
 class ReferenceSwing {
  public:
   /// Copies everything it needs (the knee law is cloned). The hip range becomes the same

@@ -26,6 +26,7 @@
 #include "identify/diagnosis_engine.h"
 #include "io/bench_csv.h"
 #include "sweep_calibration_cases.h"
+#include "study/diagnosed_model_writer.h"
 #include "study/diagnosis_study.h"
 
 namespace swingsim::calibration {
@@ -98,8 +99,11 @@ inline independent::SwingSamples keepEvery(const independent::SwingSamples& s, s
 /// The swing study of `truth` (the user's participant and knee files from `files`), noise
 /// seed `seed` (the next ones for the other records), each record keeping every `every`-th
 /// sample, diagnosed as a user's files: train normal, validate slow and fast.
+/// `studyTail`: YAML appended to the study (a `candidates:` list); `saveKnee`: where
+/// `diagnose --save-model` would write the diagnosed knee model ("": not written).
 inline Diagnosis diagnoseSwing(const independent::SwingTruth& truth, const independent::SwingTruth& files,
-                               std::uint64_t seed, const std::string& tag, std::size_t every = 1) {
+                               std::uint64_t seed, const std::string& tag, std::size_t every = 1,
+                               const std::string& studyTail = "", const std::string& saveKnee = "") {
   const fs::path dir = scratchDir(tag);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -111,11 +115,12 @@ inline Diagnosis diagnoseSwing(const independent::SwingTruth& truth, const indep
   {
     std::ofstream study(dir / "study.yaml");
     study << "kind: swing-diagnosis\nname: calibration-" << tag << "\nparticipant: participant.yaml\n"
-          << "base_model: knee.yaml\ntrain: [normal.csv]\nvalidate: [slow.csv, fast.csv]\n";
+          << "base_model: knee.yaml\ntrain: [normal.csv]\nvalidate: [slow.csv, fast.csv]\n" << studyTail;
   }
   const DiagnosisStudy study = loadDiagnosisStudy((dir / "study.yaml").string());
   const auto plant = loadDiagnosisPlant(study, 8);
   Diagnosis dg = runDiagnosis(*plant, study.settings);
+  if (!saveKnee.empty()) saveDiagnosedModel(study, *plant, dg, saveKnee, "diagnosis_calibration.h");
   fs::remove_all(dir);
   return dg;
 }

@@ -50,6 +50,14 @@ struct SwingTruth {
   /// k (theta - phi - offset) flexing the hip and extending the knee. N m/rad.
   double strapStiffness = 0;
   double strapOffset = 0.0;      // rad
+  /// Outside the library: a hydraulic cushion that resists extension only near full
+  /// extension: -cushion * rate while the knee extends below `cushionBelow`. N m s/rad.
+  double cushionDamping = 0;
+  double cushionBelow = 20.0 * kPi / 180.0;  // rad
+  /// Outside the library: a stiffening that resists flexion only in deep flexion:
+  /// -stiffening * (theta - stiffeningFrom) beyond `stiffeningFrom`. N m/rad.
+  double stiffening = 0;
+  double stiffeningFrom = 55.0 * kPi / 180.0;  // rad
   /// The drive that really acts is this times the recorded hip moment (library:
   /// hip_moment_scale); the CSV keeps the recorded one.
   double hipDriveGain = 1.0;
@@ -93,6 +101,8 @@ inline double kneeMoment(const SwingTruth& m, double theta, double thetaDot, dou
   double M = -c * thetaDot;
   M += -m.extraViscous * thetaDot - m.coulomb * std::tanh(thetaDot / m.coulombRate) - m.assistStiffness * theta;
   M += -m.strapStiffness * (theta - phi - m.strapOffset);
+  if (thetaDot < 0 && theta < m.cushionBelow) M += -m.cushionDamping * thetaDot;
+  if (theta > m.stiffeningFrom) M += -m.stiffening * (theta - m.stiffeningFrom);
   return M;
 }
 

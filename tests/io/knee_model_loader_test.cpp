@@ -128,6 +128,10 @@ TEST(KneeModelFormat, LoadWriteLoadGivesTheSameModel) {
   knee.kneeEffects.coulombMoment = 0.7;
   knee.kneeEffects.coulombSmoothingRate = 2.0;
   knee.kneeEffects.viscousDamping = 0.3;
+  // A user's expression in the hip's state and the time too, as a diagnosis saves it.
+  knee.kneeEffects.expressions.push_back(
+      {"my_cushion", "-c * knee_rate_rad_s * (knee_deg < 20 ? 1 : 0) + k * hip_rad * time_s",
+       {{"c", "N m s/rad", 1.25}, {"k", "N m/(rad s)", -0.5}}});
   knee.hasStop = true;
   knee.stop.lower = -2.5 * kDegToRad;
   knee.stop.stiffness = 1500;
@@ -141,10 +145,34 @@ TEST(KneeModelFormat, LoadWriteLoadGivesTheSameModel) {
     for (double flexion : {-0.05, 0.0, 0.3, 1.0})
       for (double rate : {-5.0, 0.0, 2.0}) {
         std::vector<double> z(static_cast<std::size_t>(std::max(1, original.numStates())), 1.0);
-        const KneeKinematics k{flexion, rate};
+        const KneeKinematics k{flexion, rate, 0.4, 1.0, 0.2};
         EXPECT_EQ(back.law.calcMoment(k, z.data()), original.calcMoment(k, z.data())) << spec.name << " " << flexion << " " << rate;
       }
   }
+}
+
+// A user's expression that does not parse is refused at its line with the parser's message
+// and where in the expression it stopped.
+TEST(KneeModelLoader, ABadUserExpressionNamesItsLineAndPosition) {
+  const std::string path = writeTemp("bad-expression.yaml", R"(kind: damping_table
+damping_table: {flexion_deg: [0, 70], moment_Nm: [2, 2]}
+knee_effects:
+  expressions:
+    - name: my_cushion
+      knee_moment_Nm: "-c * knee_rte_rad_s"
+      parameters: {c: {unit: N m s/rad, value: 1}}
+)");
+  const std::string e = errorOf(path);
+  EXPECT_THAT(e, HasSubstr("bad-expression.yaml:6: knee_effects.expressions[0].knee_moment_Nm:"));
+  EXPECT_THAT(e, HasSubstr("knee_rte_rad_s"));
+  EXPECT_THAT(e, HasSubstr("character 6"));
+  const std::string unused = writeTemp("unused-parameter.yaml", R"(kind: damping_table
+damping_table: {flexion_deg: [0, 70], moment_Nm: [2, 2]}
+knee_effects:
+  expressions:
+    - {name: x, knee_moment_Nm: "-2 * knee_rate_rad_s", parameters: {c: {value: 1}}}
+)");
+  EXPECT_THAT(errorOf(unused), HasSubstr("parameter 'c' is not used"));
 }
 
 }  // namespace

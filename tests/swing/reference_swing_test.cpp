@@ -16,6 +16,7 @@
 #include "leg/hip_path.h"
 #include "leg/thigh_motion.h"
 #include "io/knee_model_loader.h"
+#include "knee/knee_expression.h"
 #include "io/participant_loader.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
@@ -145,6 +146,23 @@ TEST(ReferenceSwing, IntegratesKneeLawStatesLikeSimbody) {
   EXPECT_LT(c.maxHipDiff, kAngleTol);
   EXPECT_LT(c.maxKneeDiff, kAngleTol);
   EXPECT_NEAR(c.referenceSwingTime, c.simbodySwingTime, kSwingTimeTol);
+}
+
+// A user's expression (knee/knee_expression.h) that reads the hip's angle and rate and the
+// time: both integrators must hand the law the same hip state and time since toe-off.
+TEST(ReferenceSwing, PassesTheHipAndTheTimeToAUsersExpressionLikeSimbody) {
+  const Participant p = load("p1");
+  KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
+  law.add(std::make_unique<KneeExpressionMoment>(KneeExpressionParams{
+      "hip and time", "-a * hip_rad * knee_rate_rad_s - b * time_s * sin(hip_rate_rad_s)", {{"a", "", 0.3}, {"b", "", 0.5}}}));
+  const Comparison c = compare(p, std::make_shared<const KneeLawSum>(std::move(law)), 0.0);
+  EXPECT_LT(c.maxHipDiff, kAngleTol);
+  EXPECT_LT(c.maxKneeDiff, kAngleTol);
+  EXPECT_NEAR(c.referenceSwingTime, c.simbodySwingTime, kSwingTimeTol);
+  // ...and the term acts: without it the swing is another.
+  const auto plain = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  const Comparison without = compare(p, plain, 0.0);
+  EXPECT_GT(std::abs(without.simbodySwingTime - c.simbodySwingTime), 1e-3);
 }
 
 TEST(ReferenceSwing, ConservesEnergyWithKneeLawsAndHipMomentOff) {
