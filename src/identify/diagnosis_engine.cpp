@@ -211,6 +211,7 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                                         [](const RecordComparison& r) { return !r.training; }),
                          training.records.end());
   out.structureNote = describeResidualStructure(training, nEffRatio);
+  out.missingNote = plant.describeMissing(*out.final.model);
   out.verdict = "NOT explained: ";
   if (!atNoise)
     out.verdict += "the held-out error on " + worstStem + " is " + fmtRatio(worstRatio) + " x the measurement noise (" +
@@ -221,7 +222,7 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
     out.verdict += out.finalWhiteness.computed ? "the final residual is not white"
                                                : "whether the final residual is white cannot be told (" +
                                                      out.finalWhiteness.note + ")";
-  out.verdict += ". What remains: " + out.structureNote + ".";
+  out.verdict += ". What remains: " + (out.missingNote.empty() ? "" : out.missingNote + "; ") + out.structureNote + ".";
   if (!out.steps.empty()) out.verdict += describeTried(out.steps.back(), training.unit);
   out.power = adviseRecordsForPower(out, settings);
   if (out.power) out.verdict += describePowerAdvice(*out.power);

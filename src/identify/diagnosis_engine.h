@@ -135,6 +135,9 @@ class DiagnosisPlant {
   /// none): the swing reruns the model with Simbody, since its refits use the reference
   /// integrator.
   virtual std::string verify(const PlantModel&) const { return ""; }
+  /// Where the force the measurements need and the model lacks acts in the measured state
+  /// (the swing's missing knee moment, identify/missing_moment.h); "" if the plant cannot say.
+  virtual std::string describeMissing(const PlantModel&) const { return ""; }
   /// A quantity the model applies against an independent measurement the fit never sees
   /// (the swing's knee moment against inverse dynamics); nullopt if the data have none.
   virtual std::optional<HeldBackComparison> compareHeldBack(const PlantModel&) const { return std::nullopt; }
@@ -208,6 +211,7 @@ struct Diagnosis {
   double whitenessLevel = 0.01;
   bool finalResidualWhite = true;
   std::string structureNote;  ///< where the remaining structure is, if not explained
+  std::string missingNote;    ///< where the missing force acts in the measured state, if not explained
   std::vector<std::string> warnings;
   /// The noise each record's held-out error is judged against (unit of the data), and where
   /// it comes from ("estimated from the data" or "set in the study").

@@ -17,6 +17,7 @@
 #include "numerics/bounded_least_squares.h"
 #include "swing/knee_setup.h"
 #include "swing/reference_swing.h"
+#include "identify/missing_moment.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -469,6 +470,21 @@ std::vector<NoiseEstimate> SwingPlant::estimateRecordNoise() const {
       out.push_back(estimateNoise(r.time, kneeDeg));
     }
   return out;
+}
+
+std::string SwingPlant::describeMissing(const PlantModel& model) const {
+  const SwingModelParams& params = swingParams(model);
+  std::vector<SwingRecord> records;
+  std::vector<SwingPrediction> references;
+  for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) {
+    records.push_back(record(i));
+    try {
+      references.push_back(fitPose(params, i).prediction);
+    } catch (const RunError& e) {
+      return "missing moment not computed: the model does not run along " + record(i).stem + " (" + e.what() + ")";
+    }
+  }
+  return describeMissingMoment(calcMissingMoment(base_, params, records, references));
 }
 
 }  // namespace swingsim

@@ -51,6 +51,9 @@ class SwingPlant final : public DiagnosisPlant {
   /// The model once more with Simbody (simulateSwing) along every record at its fitted pose:
   /// the largest knee difference to the reference integrator the refits used.
   std::string verify(const PlantModel& model) const override;
+  /// The missing knee moment over every record (training and held out), each smoothed around
+  /// the model's own swing along it (identify/missing_moment.h).
+  std::string describeMissing(const PlantModel& model) const override;
   /// The model's knee moment along every record that has a measured one (knee_moment_Nm,
   /// e.g. from inverse dynamics; never fitted) against it.
   std::optional<HeldBackComparison> compareHeldBack(const PlantModel& model) const override;

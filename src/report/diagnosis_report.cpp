@@ -418,6 +418,7 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"verdict", dg.verdict},
           {"more_swings_for_power", powerJson(dg.power)},
           {"structure", dg.structureNote},
+          {"missing", dg.missingNote},
           {"warnings", dg.warnings}};
   if (!dg.accepted.empty()) out["interval_coverage"] = coverageJson(dg.accepted);
   if (std::isfinite(dg.baseline.pooledValidationRmse))

@@ -109,6 +109,9 @@ TEST(UserSwingEffect, ACushionOutsideTheLibraryIsExplainedByTheUsersExpression) 
   const Diagnosis library = diagnose(truth, 91, "cushion-library",
                                      "candidates: [knee_coulomb_friction, knee_viscous_damping, extension_assist_spring]\n");
   EXPECT_FALSE(library.explained) << library.verdict;
+  std::printf("  library: %s\n", library.missingNote.c_str());
+  EXPECT_EQ(library.missingNote.rfind("missing moment: +", 0), 0u) << "where it acts leads the remains";
+  EXPECT_NE(library.missingNote.find("resisting extension"), std::string::npos) << library.missingNote;
 
   const std::string saved = (std::filesystem::temp_directory_path() / ("user-cushion-" + std::to_string(::getpid()) + ".yaml")).string();
   const Diagnosis dg = diagnose(truth, 91, "cushion-user", kCushionCandidates, saved);
