@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "../cli/release_only.h"
 #include "diagnosis_calibration.h"
 #include "io/knee_model_loader.h"
 #include "diagnosis_outcome.h"
@@ -104,6 +105,7 @@ Diagnosis diagnose(const independent::SwingTruth& truth, std::uint64_t seed, con
 // user's expression of the right form is accepted, its interval holds the truth and the
 // held-out error falls to the noise.
 TEST(UserSwingEffect, ACushionOutsideTheLibraryIsExplainedByTheUsersExpression) {
+  SWINGSIM_RELEASE_ONLY();  // two diagnoses; the sanitized pass runs the null below
   independent::SwingTruth truth;
   truth.cushionDamping = 1.5;  // N m s/rad below 20 deg while extending
   const Diagnosis library = diagnose(truth, 91, "cushion-library",
@@ -149,6 +151,7 @@ TEST(UserSwingEffect, ANullAcceptsNeitherTheLibraryNorTheUsersExpression) {
 // An expression that is a library effect (-c rate is knee_viscous_damping) fits exactly as the
 // library's record does: the two records are of one kind.
 TEST(UserSwingEffect, AnExpressionOfALibraryEffectScoresAsTheLibrarys) {
+  SWINGSIM_RELEASE_ONLY();
   independent::SwingTruth truth;
   truth.extensionFactor = 0.5;
   truth.extraViscous = 0.15;
