@@ -100,7 +100,8 @@ std::vector<EffectId> resolveEffects(PlantKind plant, const std::vector<std::str
 // How many records like the training ones would give the closest candidate of the last step
 // kPowerTarget power; nullopt if a candidate was significant (the sample size was not the
 // limit) or none carries information.
-std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const EffectSelectionSettings& settings) {
+std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const EffectSelectionSettings& settings,
+                                                 const std::vector<std::string>& heldOutStems) {
   if (out.steps.empty() || out.steps.back().chosen >= 0) return std::nullopt;
   int applicable = 0;
   for (const auto& c : out.steps.back().candidates) {
@@ -116,6 +117,14 @@ std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const Eff
   a.dof = std::max(1, closest->dof);
   a.level = settings.alpha / applicable;
   a.recordsNow = static_cast<int>(out.final.trainResidual.size());
+  const DiagnosisStep& last = out.steps.back();
+  for (std::size_t v = 0; v < closest->validationRmse.size() && v < last.currentValidationRmse.size(); ++v)
+    if (!(closest->validationRmse[v] < last.currentValidationRmse[v])) {
+      a.lowersHeldOut = false;
+      a.heldOutNote += (a.heldOutNote.empty() ? "" : ", ") + fmtRatio(last.currentValidationRmse[v]) + " to " +
+                       fmtRatio(closest->validationRmse[v]) + " on " +
+                       (v < heldOutStems.size() ? heldOutStems[v] : "held-out record " + std::to_string(v + 1));
+    }
   a.records = out.plant == PlantKind::kSweep ? "participants" : "swings";
   // The fitted effect's LR is the estimate of its noncentrality on these records.
   a.recordsNeeded = calcRecordsForPower(a.likelihoodRatio / std::max(1, a.recordsNow), a.dof, a.level, kPowerTarget);
@@ -125,6 +134,9 @@ std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const Eff
 // The power advice for the closest candidate, which the sentence before has named.
 std::string describePowerAdvice(const PowerAdvice& a) {
   const std::string at = " at the acceptance rule's level (alpha " + fmtRatio(a.level) + " after Bonferroni)";
+  if (!a.lowersHeldOut)
+    return " The closest does not lower the held-out error (RMSE " + a.heldOutNote + "): more " + a.records +
+           " like these would not make it the missing effect.";
   if (a.recordsNeeded == 0)
     return " No candidate is significant, and the closest has no likelihood gain: more " + a.records +
            " like these would not make it so.";
@@ -224,7 +236,7 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                                                      out.finalWhiteness.note + ")";
   out.verdict += ". What remains: " + (out.missingNote.empty() ? "" : out.missingNote + "; ") + out.structureNote + ".";
   if (!out.steps.empty()) out.verdict += describeTried(out.steps.back(), training.unit);
-  out.power = adviseRecordsForPower(out, settings);
+  out.power = adviseRecordsForPower(out, settings, plant.validationStems());
   if (out.power) out.verdict += describePowerAdvice(*out.power);
   out.verdict += " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";
 }

@@ -344,8 +344,14 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   }
   out += "\naccepted effects, in order:\n";
   if (dg.accepted.empty()) out += "  none\n";
+  // The calibration study's line describes an effect of the library found alone in data it
+  // explains; quoted for these data only when the final model explains them (issue 54).
   for (const auto& c : dg.acceptedScores)
-    out += formatAcceptedEffect(c, describeEffect(c.id).sentence) + formatMeasuredCoverage(c.effect);
+    out += formatAcceptedEffect(c, describeEffect(c.id).sentence) +
+           (dg.explained ? formatMeasuredCoverage(c.effect)
+                         : (findMeasuredCoverage(c.effect) ? "    interval check not quoted: the final model does not explain these "
+                                                             "data, the calibration study's condition\n"
+                                                           : ""));
   for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
   for (const auto& c : dg.confounds) out += "confound: " + c + "\n";
   for (const auto& p : dg.finalParameters) out += formatBaseParameter("", " after:", p);
@@ -385,7 +391,8 @@ Json powerJson(const std::optional<PowerAdvice>& a) {
   if (!a) return nullptr;
   return {{"effect", a->effect},           {"likelihood_ratio", a->likelihoodRatio}, {"dof", a->dof},
           {"level", a->level},             {"power", kPowerTarget},                  {"training_swings", a->recordsNow},
-          {"swings_needed", a->recordsNeeded}};
+          {"swings_needed", a->lowersHeldOut ? a->recordsNeeded : 0},
+          {"lowers_held_out_error", a->lowersHeldOut}};
 }
 
 Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comparison& after) {
@@ -420,7 +427,7 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"structure", dg.structureNote},
           {"missing", dg.missingNote},
           {"warnings", dg.warnings}};
-  if (!dg.accepted.empty()) out["interval_coverage"] = coverageJson(dg.accepted);
+  if (!dg.accepted.empty() && dg.explained) out["interval_coverage"] = coverageJson(dg.accepted);
   if (std::isfinite(dg.baseline.pooledValidationRmse))
     out["pooled_validation_rmse"] = {{"baseline", dg.baseline.pooledValidationRmse},
                                      {"final", dg.final.pooledValidationRmse}};

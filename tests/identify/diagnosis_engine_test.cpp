@@ -239,6 +239,10 @@ TEST(DiagnosisEngine, ACandidateWithoutInformationHasNoIntervalAndIsNeverTheClos
   EXPECT_EQ(findClosestCandidate(dg.steps[0]), &inertia);
   ASSERT_TRUE(dg.power.has_value());
   EXPECT_EQ(dg.power->effect, "inertia");
+  // Issue 54: its held-out error stays at 2.0, so no number of swings is advised for it.
+  EXPECT_FALSE(dg.power->lowersHeldOut);
+  EXPECT_NE(dg.verdict.find("The closest does not lower the held-out error"), std::string::npos) << dg.verdict;
+  EXPECT_EQ(dg.verdict.find("more swings like these ("), std::string::npos) << dg.verdict;
 
   const std::string& v = dg.verdict;
   EXPECT_NE(v.find("no information in these records: orifice_quadratic"), std::string::npos) << v;

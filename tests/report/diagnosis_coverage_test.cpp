@@ -19,6 +19,7 @@ Diagnosis acceptedFriction() {
   friction.parameters = {{"moment_Nm", 0.5, 0.4, 0.6, ""}, {"smoothing_deg_s", 17.0, 11.5, 28.6, ""}};
   dg.accepted = {"knee_coulomb_friction"};
   dg.acceptedScores = {friction};
+  dg.explained = true;
   return dg;
 }
 
@@ -54,6 +55,18 @@ TEST(DiagnosisCoverage, TheLineAppearsForAnAcceptedEffect) {
   ASSERT_TRUE(j.contains("interval_coverage"));
   EXPECT_EQ(j["interval_coverage"]["knee_coulomb_friction"]["covered"], m->covered);
   EXPECT_EQ(j["interval_coverage"]["knee_coulomb_friction"]["scored"], m->scored);
+}
+
+// Issue 54: the calibration study's line describes a library effect found alone in data it
+// explains; a final model that does not explain these data does not quote it (a near miss
+// would borrow the whole-range effect's record).
+TEST(DiagnosisCoverage, NotQuotedWhenTheFinalModelDoesNotExplainTheData) {
+  Diagnosis dg = acceptedFriction();
+  dg.explained = false;
+  const std::string text = formatDiagnosisText(dg, Comparison{}, Comparison{});
+  EXPECT_EQ(text.find("interval check (calibration study"), std::string::npos) << text;
+  EXPECT_NE(text.find("interval check not quoted: the final model does not explain these data"), std::string::npos) << text;
+  EXPECT_FALSE(makeDiagnosisJson(dg, Comparison{}, Comparison{}).contains("interval_coverage"));
 }
 
 TEST(DiagnosisCoverage, NoLineWhenNothingIsAccepted) {

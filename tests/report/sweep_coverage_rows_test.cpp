@@ -22,6 +22,7 @@ Diagnosis acceptedSweepEffect(EffectId id, const std::string& effect, const std:
   c.parameters = {{parameter, 1.0, 0.9, 1.1, ""}};
   dg.accepted = {effect};
   dg.acceptedScores = {c};
+  dg.explained = true;  // the line is quoted for data the final model explains
   return dg;
 }
 
