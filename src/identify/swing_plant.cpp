@@ -484,7 +484,11 @@ std::string SwingPlant::describeMissing(const PlantModel& model) const {
       return "missing moment not computed: the model does not run along " + record(i).stem + " (" + e.what() + ")";
     }
   }
-  return describeMissingMoment(calcMissingMoment(base_, params, records, references));
+  try {
+    return describeMissingMoment(calcMissingMoment(base_, params, records, references));
+  } catch (const std::exception& e) {  // a user's expression not finite at a measured state
+    return std::string("missing moment not computed: ") + e.what();
+  }
 }
 
 }  // namespace swingsim

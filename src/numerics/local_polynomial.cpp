@@ -23,7 +23,7 @@ LocalPolynomialFit fitLocalPolynomial(const std::vector<double>& time, const std
     while (time[lo] < time[i] - halfWindow) ++lo;
     while (hi < n && time[hi] <= time[i] + halfWindow) ++hi;
     const Eigen::Index m = static_cast<Eigen::Index>(hi - lo);
-    if (m < degree + 2) throw std::invalid_argument("fitLocalPolynomial: fewer than degree + 2 samples in a window");
+    if (m < degree + 2) continue;  // too few samples to tell the fit from the noise: left NaN
     // Columns (t - t_i)^k / halfWindow^k: scaled so the normal equations stay well conditioned.
     Eigen::MatrixXd a(m, degree + 1);
     Eigen::VectorXd y(m);

@@ -8,7 +8,8 @@
 namespace swingsim {
 
 /// The smoothed signal and its derivatives at every sample, NaN where the window does not fit
-/// inside the record (the first and last `halfWindow` seconds).
+/// inside the record (the first and last `halfWindow` seconds) or holds fewer than degree + 2
+/// samples (a sparse record).
 struct LocalPolynomialFit {
   std::vector<double> value, rate, acceleration;
   /// Standard deviation of each estimate per unit standard deviation of white noise on the
@@ -22,8 +23,8 @@ struct LocalPolynomialFit {
 };
 
 /// Fits a polynomial of `degree` (2 or more) to the samples within `halfWindow` s of each
-/// sample. Throws std::invalid_argument if time and values differ in length, the degree is
-/// below 2, or the window holds fewer than degree + 2 samples anywhere inside the record.
+/// sample. Throws std::invalid_argument if time and values differ in length or the degree is
+/// below 2.
 LocalPolynomialFit fitLocalPolynomial(const std::vector<double>& time, const std::vector<double>& values,
                                       double halfWindow, int degree = 3);
 

@@ -209,7 +209,9 @@ TEST(ImpedanceStateMachine, DissipativeModeOnlyResists) {
         if (law.calcImpedanceMoment(knee, z) * rate > 0) ++pushedBack;
         // Fast enough that tanh(rate / w) = 1: a resisting moment passes unchanged.
         const double impedance = law.calcImpedanceMoment(knee, z);
-        if (std::abs(rate) >= 0.5 && impedance * rate <= 0) EXPECT_NEAR(m, impedance, 1e-9 * std::abs(impedance));
+        if (std::abs(rate) >= 0.5 && impedance * rate <= 0) {
+          EXPECT_NEAR(m, impedance, 1e-9 * std::abs(impedance));
+        }
       }
   EXPECT_GT(pushedBack, 10);  // the projection had work to do
 }

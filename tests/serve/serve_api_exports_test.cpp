@@ -162,7 +162,9 @@ TEST(ServeTune, ItsSettingSwingsAsTheSimulateCallShowsIt) {
   const double sound = 0.499;  // P1's sound_limb_swing_time_s (participants/p1.yaml, Burkett 2004 Table 4)
   EXPECT_LT(std::abs(after["swing_time_s"].get<double>() - sound), std::abs(before["swing_time_s"].get<double>() - sound));
   for (const Json& t : j["targets"])
-    if (t["hard"].get<bool>()) EXPECT_TRUE(t["met"].get<bool>()) << t.dump();
+    if (t["hard"].get<bool>()) {
+      EXPECT_TRUE(t["met"].get<bool>()) << t.dump();
+    }
 }
 
 // A tuning past the server's budget stops between swings and says so; with no swing run it
