@@ -147,10 +147,10 @@ MissingMoment calcMissingMoment(const SwingBase& base, const SwingModelParams& p
     kneeNoises.back() = kneeNoise;
     for (std::size_t i = 0; i < r.time.size(); ++i) {
       if (!std::isfinite(knee.acceleration[i]) || !std::isfinite(hip.acceleration[i])) continue;
-      bool nearStop = false;
-      for (std::size_t j = 0; j < r.time.size() && !nearStop; ++j)
-        nearStop = std::abs(r.time[j] - r.time[i]) <= kHalfWindowS && r.kneeFlexion[j] < kStopMarginRad;
-      if (nearStop) continue;
+      // The smoother's own window: left out if any of its samples is near the stop.
+      const auto from = r.kneeFlexion.begin() + static_cast<std::ptrdiff_t>(knee.windowStart[i]);
+      const auto to = from + static_cast<std::ptrdiff_t>(knee.accelerationWeights[i].size());
+      if (std::any_of(from, to, [](double q) { return q < kStopMarginRad; })) continue;
       const KneeMomentNeeded need =
           calcKneeMomentNeeded(g, hip.value[i], hip.rate[i], hip.acceleration[i], knee.value[i], knee.acceleration[i]);
       const double applied =

@@ -14,7 +14,7 @@ LocalPolynomialFit fitLocalPolynomial(const std::vector<double>& time, const std
   const std::size_t n = time.size();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   LocalPolynomialFit f;
-  for (auto* v : {&f.value, &f.rate, &f.acceleration, &f.valueGain, &f.rateGain, &f.accelerationGain}) v->assign(n, nan);
+  for (auto* v : {&f.value, &f.rate, &f.acceleration, &f.accelerationGain}) v->assign(n, nan);
   f.windowStart.assign(n, 0);
   f.accelerationWeights.assign(n, {});
   std::size_t lo = 0, hi = 0;  // the window [lo, hi)
@@ -39,8 +39,6 @@ LocalPolynomialFit fitLocalPolynomial(const std::vector<double>& time, const std
     f.value[i] = c[0];
     f.rate[i] = c[1] / halfWindow;
     f.acceleration[i] = 2.0 * c[2] / (halfWindow * halfWindow);
-    f.valueGain[i] = pinv.row(0).norm();
-    f.rateGain[i] = pinv.row(1).norm() / halfWindow;
     f.accelerationGain[i] = 2.0 * pinv.row(2).norm() / (halfWindow * halfWindow);
     f.windowStart[i] = lo;
     f.accelerationWeights[i].resize(static_cast<std::size_t>(m));

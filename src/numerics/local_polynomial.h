@@ -12,9 +12,9 @@ namespace swingsim {
 /// samples (a sparse record).
 struct LocalPolynomialFit {
   std::vector<double> value, rate, acceleration;
-  /// Standard deviation of each estimate per unit standard deviation of white noise on the
+  /// Standard deviation of the acceleration per unit standard deviation of white noise on the
   /// samples: sd(acceleration[i]) = noise * accelerationGain[i].
-  std::vector<double> valueGain, rateGain, accelerationGain;
+  std::vector<double> accelerationGain;
   /// acceleration[i] = sum over k of accelerationWeights[i][k] * values[windowStart[i] + k]:
   /// the filter itself, so the noise of any linear combination of the estimates (a mean over
   /// many samples, whose windows overlap) can be found exactly.

@@ -345,7 +345,8 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   out += "\naccepted effects, in order:\n";
   if (dg.accepted.empty()) out += "  none\n";
   // The calibration study's line describes an effect of the library found alone in data it
-  // explains; quoted for these data only when the final model explains them (issue 54).
+  // explains; quoted for these data only when the final model explains them (a near miss that
+  // leaves the data unexplained would borrow a whole-range effect's record).
   for (const auto& c : dg.acceptedScores)
     out += formatAcceptedEffect(c, describeEffect(c.id).sentence) +
            (dg.explained ? formatMeasuredCoverage(c.effect)
