@@ -229,6 +229,8 @@ CandidateScore scoreCandidate(const DiagnosisPlant& plant, const PlantFit& curre
   c.validationRmse = s.validationRmse;
   c.pooledValidationRmse = s.pooledValidationRmse;
   applyTestAndValidation(c, t, dof, current.validationRmse, settings, current.pooledValidationRmse);
+  // Cross-validated plants test every fold's training rows already (above).
+  if (s.foldRss.empty()) applyRecordRule(c, current.trainResidual, s.trainResidual, dof, settings.alpha);
   const double inflate = calcStandardErrorInflation(static_cast<double>(s.samples), t.nEff);
   c.parameters = parametersWithIntervals(plant, s, id, inflate);
   c.informative = carriesInformation(plant, current, s, id, grid[best], t.lr, c.parameters, inflate);

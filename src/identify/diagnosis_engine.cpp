@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "identify/candidate_score.h"
+#include "identify/record_agreement.h"
 #include "numerics/profile_likelihood.h"
 
 namespace swingsim {
@@ -175,7 +176,9 @@ std::string describeTried(const DiagnosisStep& step, const std::string& unit) {
   for (double v : closest->validationRmse) worst = std::max(worst, v);
   return out + " The closest (largest likelihood ratio on the training records) is " + closest->effect + " (LR " +
          fmtRatio(closest->likelihoodRatio) + "; " + describeCandidateParameters(*closest) +
-         "); it leaves a held-out error of " + fmtRatio(worst) + " " + unit + " (largest over the held-out records).";
+         "); it leaves a held-out error of " + fmtRatio(worst) + " " + unit + " (largest over the held-out records)." +
+         (closest->recordsAgree ? "" : " Refitted on each record alone, its " + closest->agreement +
+                                           ": it stands for a law of another shape.");
 }
 
 // The verdict: is what remains measurement noise? Noise per record from the study or the
@@ -326,6 +329,17 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     std::vector<EffectScore*> scores;
     for (auto& c : step.candidates) scores.push_back(&c);
     step.chosen = applicable == 0 ? -1 : applyAcceptanceRule(scores, settings.alpha);
+    // The record-agreement rule, on the chosen candidate only (a refit per record): one that
+    // fails it is rejected and the rule chooses again among the rest.
+    while (step.chosen >= 0) {
+      CandidateScore& c = step.candidates[static_cast<std::size_t>(step.chosen)];
+      const RecordAgreement agreement =
+          checkRecordAgreement(plant, best[static_cast<std::size_t>(step.chosen)], c.id, settings.alpha);
+      c.agreement = agreement.describe();
+      if (agreement.agrees) break;
+      c.recordsAgree = false;
+      step.chosen = applyAcceptanceRule(scores, settings.alpha);
+    }
     if (step.chosen < 0) {
       out.steps.push_back(step);
       break;

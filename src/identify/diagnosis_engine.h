@@ -149,6 +149,12 @@ class DiagnosisPlant {
                                                      double /*value*/) const {
     return std::nullopt;
   }
+  /// Every record the plant holds (training, then held out) by its stem; and the same plant
+  /// with record `index` of that list as its only training record and none held out, for the
+  /// record-agreement rule (identify/record_agreement.h). Empty / nullptr: the plant does not
+  /// take part in that rule.
+  virtual std::vector<std::string> recordStems() const { return {}; }
+  virtual std::unique_ptr<DiagnosisPlant> withOnlyRecord(std::size_t /*index*/) const { return nullptr; }
 };
 
 /// One candidate scored on top of the current model.

@@ -40,6 +40,33 @@ void applyTestAndValidation(EffectScore& c, const LrTest& t, int dof, const std:
   }
 }
 
+void applyRecordRule(EffectScore& c, const ResidualSegments& currentTrain, const ResidualSegments& candidateTrain,
+                     int dof, double alpha) {
+  c.noRecordWorse = true;
+  c.trainRecordRmse.clear();
+  c.currentTrainRecordRmse.clear();
+  c.trainRecordWorsening.clear();
+  if (candidateTrain.size() != currentTrain.size()) return;
+  const auto sumSquares = [](const std::vector<double>& r) {
+    double s = 0;
+    for (double v : r) s += v * v;
+    return s;
+  };
+  const double limit = calcChiSquaredQuantile(1.0 - alpha, std::max(1, dof));
+  for (std::size_t r = 0; r < candidateTrain.size(); ++r) {
+    const double rssCandidate = sumSquares(candidateTrain[r]), rssCurrent = sumSquares(currentTrain[r]);
+    const double n = static_cast<double>(candidateTrain[r].size());
+    c.trainRecordRmse.push_back(n > 0 ? std::sqrt(rssCandidate / n) : 0.0);
+    c.currentTrainRecordRmse.push_back(currentTrain[r].empty() ? 0.0 : std::sqrt(rssCurrent / currentTrain[r].size()));
+    const double worsening = candidateTrain[r].empty() || !(rssCurrent > 0)
+                                 ? 0.0
+                                 : calcEffectiveSampleSize({candidateTrain[r]}) * std::log(rssCandidate / rssCurrent);
+    c.trainRecordWorsening.push_back(worsening);
+    // One record: the pooled test is the record's own, and the rule says nothing more.
+    if (candidateTrain.size() > 1 && !(worsening <= limit)) c.noRecordWorse = false;
+  }
+}
+
 double calcStandardErrorInflation(double samples, double effectiveSamples) {
   return std::sqrt(samples / std::max(1.0, effectiveSamples));
 }
@@ -61,7 +88,8 @@ int applyAcceptanceRule(std::vector<EffectScore*> scores, double alpha) {
     c.pAdjusted = std::isfinite(c.pValue) ? std::min(1.0, c.pValue * applicable) : 1.0;
     c.significant = std::isfinite(c.pValue) && c.pAdjusted < alpha;
     c.bicImproves = c.bicImproves && std::isfinite(c.deltaBic);
-    c.accepted = c.informative && c.significant && c.bicImproves && c.validationImproves && c.physical;
+    c.accepted = c.informative && c.significant && c.bicImproves && c.validationImproves && c.noRecordWorse &&
+                 c.recordsAgree && c.physical;
     if (c.accepted && (chosen < 0 || c.deltaBic < scores[static_cast<std::size_t>(chosen)]->deltaBic))
       chosen = static_cast<int>(i);
   }

@@ -47,6 +47,10 @@ struct EffectScore {
   std::string notApplicable;           ///< non-empty: not scored, and why
   double trainRmse = 0;                ///< units of the data (N, deg)
   std::vector<double> validationRmse;  ///< per validation file
+  /// Per training record (fixed-split plants): the RMSE at the candidate's fit and at the
+  /// current model's, and n ln(RSS ratio) on the record's effective sample size, n_eff
+  /// ln(RSS_candidate / RSS_current): positive where the pooled fit made the record worse.
+  std::vector<double> trainRecordRmse, currentTrainRecordRmse, trainRecordWorsening;
   /// Cross-validated plants: the held-out RMSE pooled over all folds (NaN otherwise), and
   /// the likelihood-ratio p of each fold's training rows (empty otherwise; pValue is their
   /// largest, the least significant fold), and the p of the same test on every training row
@@ -62,6 +66,13 @@ struct EffectScore {
   double deltaBic = 0;                 ///< -LR + dof ln(n_eff) (< 0: better)
   std::vector<EffectParameter> parameters;
   bool significant = false, bicImproves = false, validationImproves = false, physical = false;
+  /// The pooled fit made no training record significantly worse (applyRecordRule); true
+  /// where the plant has one training record or is cross-validated.
+  bool noRecordWorse = true;
+  /// The chosen candidate refitted on each record alone gave one value within the intervals
+  /// (identify/record_agreement.h); true where not tested. `agreement`: what that test found.
+  bool recordsAgree = true;
+  std::string agreement;
   /// False: the candidate's fit moves no residual (its parameters' intervals say nothing
   /// within their physical range); reported as kNoInformation, without intervals, and never
   /// accepted or named as the closest candidate.
@@ -81,6 +92,15 @@ struct LrTest {
   double nEff = 0, lr = 0, p = 1, deltaBic = 0;
 };
 LrTest calcLrTest(double rssSmaller, double rssBigger, const ResidualSegments& biggerResidual, int dof);
+
+/// The near-miss rule (docs/diagnosis.md, "The acceptance rule"): a candidate fitted on
+/// several training records must not buy its pooled gain by making one of them worse. For each
+/// record, n_eff ln(RSS_candidate / RSS_current) on the record's own effective sample size (of
+/// the candidate's residual) is held against the chi^2(dof) quantile at 1 - alpha: above it,
+/// the record is significantly worse and the candidate fails (`noRecordWorse` false). With one
+/// training record the rule is empty (the held-out rule judges each other record).
+void applyRecordRule(EffectScore& score, const ResidualSegments& currentTrain, const ResidualSegments& candidateTrain,
+                     int dof, double alpha);
 
 /// Writes the test into `score` (n_eff, LR, dof, p, delta BIC, bicImproves) and whether the
 /// held-out error fell by at least the settings' margin: every record's RMSE from

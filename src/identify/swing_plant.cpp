@@ -390,6 +390,18 @@ std::vector<std::string> SwingPlant::validationStems() const {
   return stems;
 }
 
+std::vector<std::string> SwingPlant::recordStems() const {
+  std::vector<std::string> stems;
+  for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) stems.push_back(record(i).stem);
+  return stems;
+}
+
+std::unique_ptr<DiagnosisPlant> SwingPlant::withOnlyRecord(std::size_t index) const {
+  if (index >= train_.size() + validate_.size()) return nullptr;
+  return std::make_unique<SwingPlant>(base_, std::vector<SwingRecord>{record(index)}, std::vector<SwingRecord>{},
+                                      tolerance_);
+}
+
 std::string SwingPlant::verify(const PlantModel& model) const {
   const SwingModelParams& params = swingParams(model);
   const Participant participant = applyParticipantEffects(base_.participant, params.effects);

@@ -62,6 +62,8 @@ class SwingPlant final : public DiagnosisPlant {
   std::optional<double> calcHeldParameterRss(const PlantModel& fitted, const std::string& parameter,
                                              double value) const override;
   std::vector<std::string> warnings() const override { return base_.notes; }
+  std::vector<std::string> recordStems() const override;
+  std::unique_ptr<DiagnosisPlant> withOnlyRecord(std::size_t index) const override;
 
   const SwingBase& base() const { return base_; }
 

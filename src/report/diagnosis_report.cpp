@@ -103,6 +103,13 @@ Json candidateJson(const CandidateScore& c, int step, const std::vector<std::str
   j["significant"] = c.significant;
   j["bic_improves"] = c.bicImproves;
   j["validation_improves"] = c.validationImproves;
+  j["no_training_record_worse"] = c.noRecordWorse;
+  if (!c.trainRecordRmse.empty()) {
+    j["train_record_rmse"] = c.trainRecordRmse;
+    j["current_train_record_rmse"] = c.currentTrainRecordRmse;
+  }
+  j["records_agree"] = c.recordsAgree;
+  if (!c.agreement.empty()) j["record_agreement"] = c.agreement;
   j["physical_sign"] = c.physical;
   j["where"] = c.where;
   return j;
@@ -284,6 +291,8 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
                    fmt("%.2g", c.allRowsPValue) + ", unadjusted);";
       if (!c.bicImproves) verdict += " BIC worse;";
       if (!c.validationImproves) verdict += " validation did not fall enough;";
+      if (!c.noRecordWorse) verdict += " made a training record worse;";
+      if (!c.recordsAgree) verdict += " its value differs between records;";
       if (!c.physical) verdict += " wrong sign;";
     }
     // A refit no better than the current model has LR 0; round-off may make it -1e-12 ("-0.0").

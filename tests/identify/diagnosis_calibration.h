@@ -98,12 +98,13 @@ inline independent::SwingSamples keepEvery(const independent::SwingSamples& s, s
 
 /// The swing study of `truth` (the user's participant and knee files from `files`), noise
 /// seed `seed` (the next ones for the other records), each record keeping every `every`-th
-/// sample, diagnosed as a user's files: train normal, validate slow and fast.
+/// sample, diagnosed as a user's files: `split` (default: train normal, validate slow and fast).
 /// `studyTail`: YAML appended to the study (a `candidates:` list); `saveKnee`: where
 /// `diagnose --save-model` would write the diagnosed knee model ("": not written).
 inline Diagnosis diagnoseSwing(const independent::SwingTruth& truth, const independent::SwingTruth& files,
                                std::uint64_t seed, const std::string& tag, std::size_t every = 1,
-                               const std::string& studyTail = "", const std::string& saveKnee = "") {
+                               const std::string& studyTail = "", const std::string& saveKnee = "",
+                               const std::string& split = "train: [normal.csv]\nvalidate: [slow.csv, fast.csv]\n") {
   const fs::path dir = scratchDir(tag);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -115,7 +116,7 @@ inline Diagnosis diagnoseSwing(const independent::SwingTruth& truth, const indep
   {
     std::ofstream study(dir / "study.yaml");
     study << "kind: swing-diagnosis\nname: calibration-" << tag << "\nparticipant: participant.yaml\n"
-          << "base_model: knee.yaml\ntrain: [normal.csv]\nvalidate: [slow.csv, fast.csv]\n" << studyTail;
+          << "base_model: knee.yaml\n" << split << studyTail;
   }
   const DiagnosisStudy study = loadDiagnosisStudy((dir / "study.yaml").string());
   const auto plant = loadDiagnosisPlant(study, 8);

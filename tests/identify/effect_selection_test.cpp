@@ -92,3 +92,47 @@ TEST(EffectSelection, RecordAmbiguityKeepsGroupsOfTwoOrMoreWithAdvice) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// A residual of n samples of alternating sign and size `a`: lag-1 autocorrelation -1,
+// clamped to 0, so n_eff = n.
+std::vector<double> alternating(std::size_t n, double a) {
+  std::vector<double> r(n);
+  for (std::size_t i = 0; i < n; ++i) r[i] = i % 2 ? -a : a;
+  return r;
+}
+
+TEST(EffectSelection, ARecordThePooledFitMakesSignificantlyWorseFailsTheRecordRule) {
+  // Record 0 falls from 2 to 1; record 1 rises by a factor 1.5 in RSS: 200 ln 1.5 = 81 >
+  // chi^2_1(0.99) = 6.63.
+  EffectScore c;
+  applyRecordRule(c, {alternating(200, 2.0), alternating(200, 1.0)},
+                  {alternating(200, 1.0), alternating(200, std::sqrt(1.5))}, 1, 0.01);
+  EXPECT_FALSE(c.noRecordWorse);
+  ASSERT_EQ(c.trainRecordWorsening.size(), 2u);
+  EXPECT_NEAR(c.trainRecordWorsening[1], 200 * std::log(1.5), 1e-9);
+  EXPECT_NEAR(c.trainRecordRmse[0], 1.0, 1e-12);
+  EXPECT_NEAR(c.currentTrainRecordRmse[1], 1.0, 1e-12);
+  // A rise of 1 % in RSS (200 ln 1.01 = 2.0) is within what noise does.
+  applyRecordRule(c, {alternating(200, 2.0), alternating(200, 1.0)},
+                  {alternating(200, 1.0), alternating(200, std::sqrt(1.01))}, 1, 0.01);
+  EXPECT_TRUE(c.noRecordWorse);
+  // One training record: the pooled test is its own, and the rule says nothing more.
+  applyRecordRule(c, {alternating(200, 1.0)}, {alternating(200, 2.0)}, 1, 0.01);
+  EXPECT_TRUE(c.noRecordWorse);
+  // And the acceptance rule reads it.
+  c.informative = c.significant = c.bicImproves = c.validationImproves = c.physical = true;
+  c.pValue = 1e-9;
+  c.noRecordWorse = false;
+  EXPECT_EQ(applyAcceptanceRule({&c}, 0.01), -1);
+  c.noRecordWorse = true;
+  c.recordsAgree = false;
+  EXPECT_EQ(applyAcceptanceRule({&c}, 0.01), -1);
+  c.recordsAgree = true;
+  EXPECT_EQ(applyAcceptanceRule({&c}, 0.01), 0);
+}
+
+}  // namespace
+}  // namespace swingsim
