@@ -226,7 +226,8 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                                         [](const RecordComparison& r) { return !r.training; }),
                          training.records.end());
   out.structureNote = describeResidualStructure(training, nEffRatio);
-  out.missingNote = plant.describeMissing(*out.final.model);
+  out.missing = plant.calcMissing(*out.final.model);
+  if (out.missing) out.missingNote = describeMissingMoment(*out.missing);
   out.verdict = "NOT explained: ";
   if (!atNoise)
     out.verdict += "the held-out error on " + worstStem + " is " + fmtRatio(worstRatio) + " x the measurement noise (" +
@@ -330,11 +331,13 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     for (auto& c : step.candidates) scores.push_back(&c);
     step.chosen = applicable == 0 ? -1 : applyAcceptanceRule(scores, settings.alpha);
     // The record-agreement rule, on the chosen candidate only (a refit per record): one that
-    // fails it is rejected and the rule chooses again among the rest.
+    // fails it is rejected and the rule chooses again among the rest. Its level is the
+    // likelihood-ratio test's, Bonferroni over the candidates scored: one family-wise
+    // decision per step.
     while (step.chosen >= 0) {
       CandidateScore& c = step.candidates[static_cast<std::size_t>(step.chosen)];
-      const RecordAgreement agreement =
-          checkRecordAgreement(plant, best[static_cast<std::size_t>(step.chosen)], c.id, settings.alpha);
+      const RecordAgreement agreement = checkRecordAgreement(plant, best[static_cast<std::size_t>(step.chosen)], c.id,
+                                                             settings.alpha / std::max(1, applicable));
       c.agreement = agreement.describe();
       if (agreement.agrees) break;
       c.recordsAgree = false;

@@ -17,6 +17,7 @@
 
 #include "identify/comparison.h"
 #include "identify/effect_selection.h"
+#include "identify/missing_moment.h"
 #include "model/effect_table.h"
 #include "numerics/noise_estimate.h"
 #include "numerics/residual_analysis.h"
@@ -136,8 +137,9 @@ class DiagnosisPlant {
   /// integrator.
   virtual std::string verify(const PlantModel&) const { return ""; }
   /// Where the force the measurements need and the model lacks acts in the measured state
-  /// (the swing's missing knee moment, identify/missing_moment.h); "" if the plant cannot say.
-  virtual std::string describeMissing(const PlantModel&) const { return ""; }
+  /// (the swing's missing knee moment, identify/missing_moment.h; its note says why it was not
+  /// computed); nullopt if the plant cannot say.
+  virtual std::optional<MissingMoment> calcMissing(const PlantModel&) const { return std::nullopt; }
   /// A quantity the model applies against an independent measurement the fit never sees
   /// (the swing's knee moment against inverse dynamics); nullopt if the data have none.
   virtual std::optional<HeldBackComparison> compareHeldBack(const PlantModel&) const { return std::nullopt; }
@@ -222,6 +224,8 @@ struct Diagnosis {
   bool finalResidualWhite = true;
   std::string structureNote;  ///< where the remaining structure is, if not explained
   std::string missingNote;    ///< where the missing force acts in the measured state, if not explained
+  /// The missing moment itself (the map a figure draws), where the plant computes one.
+  std::optional<MissingMoment> missing;
   std::vector<std::string> warnings;
   /// The noise each record's held-out error is judged against (unit of the data), and where
   /// it comes from ("estimated from the data" or "set in the study").

@@ -35,7 +35,7 @@ double calcHeterogeneityP(const std::vector<double>& values, const std::vector<d
 std::string RecordAgreement::describe() const {
   if (!tested) return "";
   std::string out = parameter + (agrees ? " agrees between records" : " differs between records") + " (heterogeneity p " +
-                    fmt("%.2g", pAdjusted) + "):";
+                    fmt("%.2g", pAdjusted) + ", level " + fmt("%.2g", level) + "):";
   for (std::size_t i = 0; i < estimates.size(); ++i)
     out += fmt(" %s %.4g (%.4g .. %.4g)", estimates[i].stem.c_str(), estimates[i].value, estimates[i].lower,
                estimates[i].upper) +
@@ -45,6 +45,7 @@ std::string RecordAgreement::describe() const {
 
 RecordAgreement checkRecordAgreement(const DiagnosisPlant& plant, const PlantFit& pooled, EffectId id, double alpha) {
   RecordAgreement out;
+  out.level = alpha;
   const std::vector<std::string> stems = plant.recordStems();
   const int fitted = describeEffect(id).fittedParameters;
   if (stems.size() < 2 || fitted <= 0) return out;

@@ -27,6 +27,7 @@ struct RecordAgreement {
   /// parameters) and its per-record estimates.
   std::string parameter;
   double pAdjusted = std::numeric_limits<double>::quiet_NaN();
+  double level = 0;  ///< the test's level: it differs where pAdjusted < level
   std::vector<RecordEstimate> estimates;
   /// One sentence for the report: why it failed, or how it held.
   std::string describe() const;

@@ -484,22 +484,25 @@ std::vector<NoiseEstimate> SwingPlant::estimateRecordNoise() const {
   return out;
 }
 
-std::string SwingPlant::describeMissing(const PlantModel& model) const {
+std::optional<MissingMoment> SwingPlant::calcMissing(const PlantModel& model) const {
   const SwingModelParams& params = swingParams(model);
   std::vector<SwingRecord> records;
   std::vector<SwingPrediction> references;
+  MissingMoment failed;
   for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) {
     records.push_back(record(i));
     try {
       references.push_back(fitPose(params, i).prediction);
     } catch (const RunError& e) {
-      return "missing moment not computed: the model does not run along " + record(i).stem + " (" + e.what() + ")";
+      failed.note = "not computed: the model does not run along " + record(i).stem + " (" + e.what() + ")";
+      return failed;
     }
   }
   try {
-    return describeMissingMoment(calcMissingMoment(base_, params, records, references));
+    return calcMissingMoment(base_, params, records, references);
   } catch (const std::exception& e) {  // a user's expression not finite at a measured state
-    return std::string("missing moment not computed: ") + e.what();
+    failed.note = std::string("not computed: ") + e.what();
+    return failed;
   }
 }
 

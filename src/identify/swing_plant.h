@@ -53,7 +53,7 @@ class SwingPlant final : public DiagnosisPlant {
   std::string verify(const PlantModel& model) const override;
   /// The missing knee moment over every record (training and held out), each smoothed around
   /// the model's own swing along it (identify/missing_moment.h).
-  std::string describeMissing(const PlantModel& model) const override;
+  std::optional<MissingMoment> calcMissing(const PlantModel& model) const override;
   /// The model's knee moment along every record that has a measured one (knee_moment_Nm,
   /// e.g. from inverse dynamics; never fitted) against it.
   std::optional<HeldBackComparison> compareHeldBack(const PlantModel& model) const override;

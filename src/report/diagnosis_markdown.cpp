@@ -2,6 +2,7 @@
 
 #include "core/output_files.h"
 #include "report/diagnosis_report.h"
+#include "report/missing_moment_plot.h"
 
 namespace swingsim {
 
@@ -26,6 +27,14 @@ void writeDiagnosisReport(const std::string& outDir, const DiagnosisReportInput&
           formatHeldBackText(b, *in.heldAfter) + "```\n\n![" + b.quantity + "](held-back.svg)\n\n";
     for (const auto& w : in.heldWarnings) md += "Warning: " + w + "\n\n";
     writeFileAtomic(outDir + "/held-back.svg", renderHeldBackSvg(b, *in.heldAfter, b.quantity));
+  }
+  // Where the moment the model lacks acts, in the measured state (not explained only).
+  if (const auto& m = in.diagnosis->missing; m && !m->kneeDeg.empty() && !in.diagnosis->explained) {
+    md += "## The missing moment, where it acts\n\n" + in.diagnosis->missingNote +
+          "\n\n![missing knee moment over measured knee flexion](missing-moment.svg)\n\n" +
+          (m->note.empty() ? "" : "Note: " + m->note + "\n\n");
+    writeFileAtomic(outDir + "/missing-moment.svg",
+                    renderMissingMomentSvg(*m, "The knee moment the measured swings need minus the model's"));
   }
   for (const auto& p : writeResidualPlots(outDir, "before", *in.before))
     md += "- before: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";

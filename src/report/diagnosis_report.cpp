@@ -438,6 +438,18 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
           {"missing", dg.missingNote},
           {"warnings", dg.warnings}};
   if (!dg.accepted.empty() && dg.explained) out["interval_coverage"] = coverageJson(dg.accepted);
+  // The regions of the missing moment as numbers (the sentence is `missing`).
+  if (dg.missing && !dg.explained) {
+    Json regions = Json::array();
+    for (const auto& r : dg.missing->regions)
+      regions.push_back({{"extending", r.extending},
+                         {"moment_Nm", r.moment},
+                         {"bin_means_Nm", {r.low, r.high}},
+                         {"knee_deg", {r.kneeLowDeg, r.kneeHighDeg}},
+                         {"knee_rate_deg_s", {r.rateLowDegS, r.rateHighDegS}},
+                         {"samples", r.samples}});
+    out["missing_regions"] = regions;
+  }
   if (std::isfinite(dg.baseline.pooledValidationRmse))
     out["pooled_validation_rmse"] = {{"baseline", dg.baseline.pooledValidationRmse},
                                      {"final", dg.final.pooledValidationRmse}};

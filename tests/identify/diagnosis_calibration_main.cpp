@@ -68,7 +68,12 @@ std::string caseName(const CalibrationCase& c) { return c.effect.empty() ? "null
 // One markdown row: named, other, coverage, bias and spread (with the bias in % of the truth).
 std::string markdownRow(const CalibrationCase& c, const CaseSummary& s) {
   std::string row = "| " + c.plant + " | " + caseName(c) + " | " + c.size + " | " + std::to_string(s.seeds) + " | ";
-  row += c.effect.empty() ? "- | " + std::to_string(s.other) + " false | " : std::to_string(s.named) + " | " + std::to_string(s.other) + " | ";
+  // Before the near-miss rules (SeedOutcome::beforeNamedFirst), from the same fits.
+  const std::string before = " (before " + std::to_string(s.beforeNamed) + ")";
+  const std::string otherBefore = " (before " + std::to_string(s.beforeOther) + ")";
+  row += c.effect.empty() || c.effect.rfind("outside:", 0) == 0
+             ? "- | " + std::to_string(s.other) + " false" + otherBefore + " | "
+             : std::to_string(s.named) + before + " | " + std::to_string(s.other) + otherBefore + " | ";
   if (c.parameter.empty() || s.scored == 0) return row + "- | - | - | - |";
   row += c.parameter + " | " + std::to_string(s.covered) + "/" + std::to_string(s.scored);
   if (s.oneSided > 0) row += " (" + std::to_string(s.oneSided) + " not Wald)";
@@ -100,7 +105,8 @@ int main(int argc, char** argv) try {
   std::ofstream md(o.out + "/calibration.md"), csv(o.out + "/calibration.csv"), seeds(o.out + "/calibration-seeds.csv");
   md << "| plant | hidden effect | size | seeds | named first | other named | parameter | 95 % CI holds truth | bias (mean - truth) | SD |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "plant,effect,size,truth,parameter,seeds,named,other_named,scored,covered,not_wald,bias,sd,seconds\n";
+  csv << "plant,effect,size,truth,parameter,seeds,named,other_named,scored,covered,not_wald,bias,sd,seconds,"
+         "named_before,other_named_before\n";
   seeds << "plant,effect,seed,named_first,other_named,estimate,lower,upper,note,"
            "first_lr,first_p_adjusted,first_significant,first_bic,first_validation,first_physical,final_parameters,"
            "first_all_rows_p,first_fold_p,best_all_rows_p_adjusted,best_all_rows\n";
@@ -115,7 +121,7 @@ int main(int argc, char** argv) try {
     md.flush();
     csv << c.plant << "," << caseName(c) << ",\"" << c.size << "\"," << c.truth << "," << c.parameter << "," << s.seeds << ","
         << s.named << "," << s.other << "," << s.scored << "," << s.covered << "," << s.oneSided << "," << s.bias << ","
-        << s.sd << "," << secs << "\n";
+        << s.sd << "," << secs << "," << s.beforeNamed << "," << s.beforeOther << "\n";
     csv.flush();
     for (std::size_t i = 0; i < outcomes.size(); ++i) {
       const auto& r = outcomes[i];
