@@ -3,9 +3,9 @@
 #include <muParser.h>
 
 #include <cmath>
-#include <regex>
 #include <set>
 
+#include "core/identifier.h"
 #include "core/units.h"
 
 namespace swingsim {
@@ -64,10 +64,9 @@ std::string variableList() {
 }
 
 void checkParameterNames(const KneeExpressionParams& p) {
-  static const std::regex kIdentifier("[A-Za-z_][A-Za-z0-9_]*");
   std::set<std::string> seen;
   for (const auto& q : p.parameters) {
-    if (!std::regex_match(q.name, kIdentifier))
+    if (!isIdentifier(q.name))
       throw KneeExpressionError("parameter '" + q.name + "': expected a name of letters, digits and _, not starting with a digit", -1);
     for (const auto& v : kneeExpressionVariables())
       if (q.name == v.name)

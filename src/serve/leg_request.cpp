@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 #include <sstream>
 
+#include "core/identifier.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/text_format.h"
@@ -52,8 +52,17 @@ std::vector<std::pair<std::string, std::string>> readEdits(const Json& body) {
 
 // A knee setting the page offers: the scale of the knee law, a microprocessor knee's states.
 bool isKneeSettingKey(const std::string& key) {
-  static const std::regex kAllowed(R"(knee_effects\.model_scale|impedance_state_machine\.states\[[0-9]{1,2}\]\.[A-Za-z_]+)");
-  return std::regex_match(key, kAllowed);
+  if (key == "knee_effects.model_scale") return true;
+  // impedance_state_machine.states[I].KEY, I of one or two digits, KEY of letters and _.
+  const std::string_view prefix = "impedance_state_machine.states[";
+  if (key.compare(0, prefix.size(), prefix) != 0) return false;
+  std::size_t i = prefix.size(), digits = 0;
+  while (i < key.size() && std::isdigit(static_cast<unsigned char>(key[i]))) ++i, ++digits;
+  if (digits < 1 || digits > 2 || key.compare(i, 2, "].") != 0) return false;
+  const std::string_view name = std::string_view(key).substr(i + 2);
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+  });
 }
 
 std::vector<std::pair<std::string, double>> readKneeSettings(const Json& body) {
@@ -263,10 +272,28 @@ Leg loadLeg(const LegRequest& request, const ShippedFiles& files, const ServeLim
   return {std::move(p), std::move(knee), std::move(kneeFile)};
 }
 
+namespace {
+
+// The key at `at` when "KEY: " starts there ("" otherwise).
+std::string keyAt(const std::string& message, std::size_t at) {
+  const std::size_t n = identifierLength(std::string_view(message).substr(std::min(at, message.size())), ".[]");
+  return n > 0 && message.compare(at + n, 2, ": ") == 0 ? message.substr(at, n) : "";
+}
+
+}  // namespace
+
 std::string findErrorKey(const std::string& message) {
-  static const std::regex kKey(R"(^(?:[^\n]*?:[0-9]+: )?([A-Za-z_][A-Za-z0-9_.\[\]]*): )");
-  std::smatch m;
-  return std::regex_search(message, m, kKey) ? m[1].str() : "";
+  // "FILE:LINE: KEY: ..." (the first such prefix on the first line whose key follows), else
+  // "KEY: ...".
+  const std::size_t lineEnd = std::min(message.find('\n'), message.size());
+  for (std::size_t i = 0; i < lineEnd; ++i) {
+    if (message[i] != ':') continue;
+    std::size_t j = i + 1;
+    while (j < message.size() && std::isdigit(static_cast<unsigned char>(message[j]))) ++j;
+    if (j == i + 1 || message.compare(j, 2, ": ") != 0) continue;
+    if (std::string key = keyAt(message, j + 2); !key.empty()) return key;
+  }
+  return keyAt(message, 0);
 }
 
 }  // namespace swingsim

@@ -140,3 +140,31 @@ TEST(LegRequestTest, KnobsOutOfRangeNameTheirKey) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// Issue 57: a long key or message (under the body limit) ended `swingsim serve` with SIGSEGV
+// in std::regex, which recursed once per character. The scans are plain loops now.
+TEST(LegRequestTest, AVeryLongMessageOrKeyIsScannedWithoutRecursion) {
+  const std::string longKey(200000, 'a');
+  EXPECT_EQ(findErrorKey(longKey + ": expected a number"), longKey);
+  EXPECT_EQ(findErrorKey("request.yaml:12: " + longKey), "");
+  EXPECT_EQ(findErrorKey(std::string(200000, ':') + "1: x: y"), "x");
+  EXPECT_EQ(findErrorKey("p.yaml:3: segments.shank.mass_kg: expected"), "segments.shank.mass_kg");
+  EXPECT_EQ(findErrorKey("a:b:7: c[1].d: bad"), "c[1].d") << "the first prefix whose key follows";
+  EXPECT_EQ(findErrorKey("no key here"), "");
+  const auto settings = [](const std::string& key) {
+    return readLegRequest(Json::parse(R"({"participant": "p1", "knee_settings": {")" + key + R"(": 2}})")).kneeSettings;
+  };
+  EXPECT_THROW(settings(std::string(100000, 'k')), InputError);
+  EXPECT_THROW(settings("impedance_state_machine.states[1]." + std::string(100000, 'k') + "1"), InputError);
+  EXPECT_EQ(settings("impedance_state_machine.states[12].stiffness").size(), 1u);
+  EXPECT_EQ(settings("knee_effects.model_scale").size(), 1u);
+  EXPECT_THROW(settings("impedance_state_machine.states[123].k"), InputError);
+  EXPECT_THROW(settings("impedance_state_machine.states[].k"), InputError);
+  EXPECT_THROW(settings("impedance_state_machine.states[1].k2"), InputError);
+}
+
+}  // namespace
+}  // namespace swingsim
