@@ -236,10 +236,13 @@ void serialize(A& a, ImpedanceTransition& t, StateListContext* context) {
   if constexpr (A::kReading) context->previousWhere = a.yaml().where("to");
   const std::vector<std::pair<std::string, ThresholdSide>> sides = {
       {"any", ThresholdSide::kAny}, {"above", ThresholdSide::kAbove}, {"below", ThresholdSide::kBelow}};
+  // A threshold is written only beside its side (read, it is refused without one below).
   a.choice("when_flexion", t.flexionSide, sides, true);
-  a.optionalAngle("flexion_deg", t.flexion, mustBePlausible(kKneeAngleRangeDeg, "a knee angle"));
+  if (A::kReading || t.flexionSide != ThresholdSide::kAny)
+    a.optionalAngle("flexion_deg", t.flexion, mustBePlausible(kKneeAngleRangeDeg, "a knee angle"));
   a.choice("when_rate", t.rateSide, sides, true);
-  a.optionalAngle("rate_deg_s", t.rate, mustBePlausible(kKneeRateRangeDegS, "a knee speed"));
+  if (A::kReading || t.rateSide != ThresholdSide::kAny)
+    a.optionalAngle("rate_deg_s", t.rate, mustBePlausible(kKneeRateRangeDegS, "a knee speed"));
   a.optionalNumber("min_time_s", t.minTime, [](double v) {
     return v >= 0 && v <= kMaxMinTimeInState ? std::string()
                                               : "expected a time in state from 0 to " + formatNumber(kMaxMinTimeInState) + " s";
@@ -249,6 +252,13 @@ void serialize(A& a, ImpedanceTransition& t, StateListContext* context) {
               "expected its threshold, flexion_deg, beside it", [] { return std::string("no flexion_deg"); });
     a.require(t.rateSide == ThresholdSide::kAny || a.has("rate_deg_s"), "when_rate",
               "expected its threshold, rate_deg_s, beside it", [] { return std::string("no rate_deg_s"); });
+    // A threshold without its side would be ignored: the state would end at once (issue 57).
+    a.require(!a.has("flexion_deg") || t.flexionSide != ThresholdSide::kAny, "flexion_deg",
+              "expected its side beside it, when_flexion: above or below",
+              [] { return std::string("no side (or when_flexion: any)"); });
+    a.require(!a.has("rate_deg_s") || t.rateSide != ThresholdSide::kAny, "rate_deg_s",
+              "expected its side beside it, when_rate: above or below",
+              [] { return std::string("no side (or when_rate: any)"); });
   }
 }
 

@@ -125,6 +125,13 @@ TEST(ImpedanceKneeModel, MissingAndSurplusTransitionsAreRefused) {
   EXPECT_THAT(errorOf(replaced(kValid, "        flexion_deg: 50\n", "")),
               HasSubstr("mp.yaml:12: impedance_state_machine.states[0].transition.when_flexion: expected its threshold, "
                         "flexion_deg, beside it (got no flexion_deg)"));
+  // A threshold without its side (issue 57): it was ignored, the state ended at once and P1
+  // swung 0.257 s instead of 0.429 s.
+  EXPECT_THAT(errorOf(replaced(kValid, "        when_flexion: above\n", "")),
+              HasSubstr("impedance_state_machine.states[0].transition.flexion_deg: expected its side beside it, "
+                        "when_flexion: above or below (got no side (or when_flexion: any))"));
+  EXPECT_THAT(errorOf(replaced(kValid, "when_flexion: above", "when_flexion: any")),
+              HasSubstr("transition.flexion_deg: expected its side beside it"));
 }
 
 TEST(ImpedanceKneeModel, LatchTimeMustBeFast) {
