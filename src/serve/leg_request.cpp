@@ -237,6 +237,51 @@ const std::vector<std::string>& editableParticipantKeys() {
   return kKeys;
 }
 
+const std::vector<std::string>& legRequestKeys() {
+  static const std::vector<std::string> keys = {"participant", "participant_yaml", "edits",  "knee",
+                                                "knee_yaml",   "knee_settings",    "lowering_m", "added_mass_kg",
+                                                "added_mass_position_m"};
+  return keys;
+}
+
+namespace {
+
+// Levenshtein distance, for "did you mean" (keys are short; a long one is cut first).
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+void checkRequestKeys(const Json& body, const std::vector<std::string>& extra) {
+  if (!body.is_object()) return;  // readLegRequest says what is wrong with it
+  std::vector<std::string> known = legRequestKeys();
+  known.insert(known.end(), extra.begin(), extra.end());
+  for (const auto& [key, value] : body.items()) {
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    const std::string shown = key.size() > 60 ? key.substr(0, 60) + "..." : key;
+    std::string closest;
+    std::size_t best = 3;  // at most two edits away
+    for (const auto& k : known)
+      if (const std::size_t d = editDistance(shown, k); d < best) best = d, closest = k;
+    std::string all;
+    for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
+    throw InputError(shown + ": unknown request key" + (closest.empty() ? "" : " (did you mean " + closest + "?)") +
+                     "; this call takes " + all);
+  }
+}
+
 LegRequest readLegRequest(const Json& body) {
   if (!body.is_object()) throw InputError("request: expected a JSON object (got " + describeJson(body) + ")");
   LegRequest r;

@@ -56,6 +56,15 @@ struct LegRequest {
 /// "added_mass_position_m"}. Throws InputError naming the key for a wrong type or range.
 LegRequest readLegRequest(const Json& body);
 
+/// The top-level keys readLegRequest reads.
+const std::vector<std::string>& legRequestKeys();
+
+/// Refuses a key of `body` that is neither a leg request's nor in `extra` (a misspelt key,
+/// `lowring_m`, was ignored and the unchanged swing answered): InputError naming the key, the
+/// closest known key when one is near, and the keys the call takes. Long keys are cut in the
+/// message.
+void checkRequestKeys(const Json& body, const std::vector<std::string>& extra);
+
 /// The participant and knee model a request gives, loaded and checked.
 struct Leg {
   Participant participant;

@@ -65,6 +65,7 @@ ApiReply ServeApi::importOsim(const std::string& body) const {
 ApiReply ServeApi::exportOsim(const std::string& body) const {
   return hideServerPaths(answerOrError([&] {
     const Json json = readRequestBody(body);
+    checkRequestKeys(json, {"side"});
     const LegRequest request = readLegRequest(json);
     const char side = readSide(json);
     Leg leg = loadLeg(request, files_, limits_);

@@ -161,6 +161,7 @@ struct LegSweep {
 // The sweep of a request's leg over its lowering grid, on one thread (the server's pool
 // serves other requests meanwhile). The study is named after the participant.
 LegSweep runLegSweep(const Json& json, const ShippedFiles& files, const ServeLimits& limits) {
+  checkRequestKeys(json, {"lowering_step_m", "lowering_max_m"});
   const LegRequest request = readLegRequest(json);
   LegSweep run;
   readSweepGrid(json, limits, run.study);
@@ -206,7 +207,9 @@ ApiReply ServeApi::listFiles() const {
 
 ApiReply ServeApi::describeParticipant(const std::string& body) const {
   return hideServerPaths(answerOrError([&] {
-    Leg leg = loadLeg(readLegRequest(readRequestBody(body)), files_, limits_);
+    const Json asked = readRequestBody(body);
+    checkRequestKeys(asked, {});
+    Leg leg = loadLeg(readLegRequest(asked), files_, limits_);
     Participant& p = leg.participant;
     p.kneeModelPath = leg.knee.path;  // the export names the knee in use (chosen or uploaded), as the knee export is named
     const std::string participantYaml = formatParticipantYaml(p, files_.getParticipantsDir());
@@ -226,7 +229,9 @@ ApiReply ServeApi::describeParticipant(const std::string& body) const {
 
 ApiReply ServeApi::simulate(const std::string& body) const {
   return hideServerPaths(answerOrError([&] {
-    const LegRequest request = readLegRequest(readRequestBody(body));
+    const Json asked = readRequestBody(body);
+    checkRequestKeys(asked, {});
+    const LegRequest request = readLegRequest(asked);
     Leg leg = loadLeg(request, files_, limits_);
     const double hipHeight = calcHipHeight(leg.participant);
     const SwingSetup setup = makeSwingSetup(std::move(leg.participant), leg.knee, request.lowering, request.added);

@@ -128,6 +128,7 @@ ApiReply ServeApi::tune(const std::string& body) const {
   return hideServerPaths(answerOrError([&] {
     const auto start = std::chrono::steady_clock::now();
     const Json json = readRequestBody(body);
+    checkRequestKeys(json, {"knobs", "targets"});
     const LegRequest request = readLegRequest(json);
     Leg leg = loadLeg(request, files_, limits_);
     const std::vector<TuningKnob> knobs = readTuneKnobs(json, leg.kneeFile);

@@ -168,3 +168,31 @@ TEST(LegRequestTest, AVeryLongMessageOrKeyIsScannedWithoutRecursion) {
 
 }  // namespace
 }  // namespace swingsim
+
+namespace swingsim {
+namespace {
+
+// Issue 57: a misspelt request key (lowring_m) was ignored and the unchanged swing answered.
+TEST(LegRequestTest, AnUnknownRequestKeyIsRefusedWithTheClosestKnownOne) {
+  const Json body = Json::parse(R"({"participant": "p1", "lowring_m": 0.02})");
+  try {
+    checkRequestKeys(body, {});
+    FAIL() << "accepted a misspelt key";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("lowring_m: unknown request key (did you mean lowering_m?)"));
+    EXPECT_EQ(findErrorKey(e.what()), "lowring_m");
+  }
+  EXPECT_NO_THROW(checkRequestKeys(Json::parse(R"({"participant": "p1", "lowering_m": 0.02, "side": "l"})"), {"side"}));
+  EXPECT_THROW(checkRequestKeys(Json::parse(R"({"participant": "p1", "side": "l"})"), {}), InputError);
+  // A long unknown key is cut in the message.
+  const std::string longKey(5000, 'z');
+  try {
+    checkRequestKeys(Json::parse(R"({")" + longKey + R"(": 1})"), {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_LT(std::string(e.what()).size(), 600u);
+  }
+}
+
+}  // namespace
+}  // namespace swingsim
