@@ -257,7 +257,13 @@ class Participant(_FileRecord):
             raise InputError(_argument_problem("set_mass(): keep", "expected 'radius_of_gyration' or 'inertia'", keep))
         values = self._values["segments"][segment]
         if keep == "radius_of_gyration":
-            values["inertia_kgm2"] = values["inertia_kgm2"] * float(kg) / values["mass_kg"]
+            old = values["mass_kg"]
+            if not (isinstance(old, _numbers.Real) and _math.isfinite(old) and old > 0):
+                # No radius of gyration to keep from a massless segment (was ZeroDivisionError).
+                raise InputError(_argument_problem(
+                    "set_mass(): keep", "expected 'inertia' (the segment's mass is " + repr(old) +
+                    " kg, so it has no radius of gyration to keep; set inertia_kgm2 too)", keep))
+            values["inertia_kgm2"] = values["inertia_kgm2"] * float(kg) / old
         values["mass_kg"] = float(kg)
 
 

@@ -58,3 +58,13 @@ def test_arguments_are_checked(repo, args, error, match):
     with pytest.raises(error, match=match):
         p.set_mass(*args)
     assert p.to_dict() == before
+
+
+def test_a_massless_segment_needs_keep_inertia(repo):
+    # Issue 57: set_mass on a 0 kg segment raised ZeroDivisionError.
+    p = swingsim.load_participant(repo / "participants" / "p1.yaml")
+    p.segments.foot.mass_kg = 0.0
+    with pytest.raises(ValueError, match="set_mass\\(\\): keep: expected 'inertia' \\(the segment's mass is 0.0 kg"):
+        p.set_mass("foot", 1.0)
+    p.set_mass("foot", 1.0, keep="inertia")
+    assert p.segments.foot.mass_kg == 1.0

@@ -295,6 +295,25 @@ int scoreCandidates(const DiagnosisPlant& plant, const PlantFit& current, const 
   return applicable;
 }
 
+// The acceptance rule's choice, then the record-agreement rule on the chosen candidate only
+// (a refit per record): one that fails it is rejected and the rule chooses again among the
+// rest. Its level is the likelihood-ratio test's, Bonferroni over the `applicable`
+// candidates scored: one family-wise decision per step. Returns the index chosen, or -1.
+int chooseAgreeingCandidate(const DiagnosisPlant& plant, const std::vector<PlantFit>& best, double alpha, int applicable,
+                            const std::vector<EffectScore*>& scores, DiagnosisStep& step) {
+  int chosen = applyAcceptanceRule(scores, alpha);
+  while (chosen >= 0) {
+    CandidateScore& c = step.candidates[static_cast<std::size_t>(chosen)];
+    const RecordAgreement agreement =
+        checkRecordAgreement(plant, best[static_cast<std::size_t>(chosen)], c.id, alpha / std::max(1, applicable));
+    c.agreement = agreement.describe();
+    if (agreement.agrees) break;
+    c.recordsAgree = false;
+    chosen = applyAcceptanceRule(scores, alpha);
+  }
+  return chosen;
+}
+
 }  // namespace
 
 const CandidateScore* findClosestCandidate(const DiagnosisStep& step) {
@@ -329,20 +348,7 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     const int applicable = scoreCandidates(plant, current, ids, settings, progress, stepNo, step, best);
     std::vector<EffectScore*> scores;
     for (auto& c : step.candidates) scores.push_back(&c);
-    step.chosen = applicable == 0 ? -1 : applyAcceptanceRule(scores, settings.alpha);
-    // The record-agreement rule, on the chosen candidate only (a refit per record): one that
-    // fails it is rejected and the rule chooses again among the rest. Its level is the
-    // likelihood-ratio test's, Bonferroni over the candidates scored: one family-wise
-    // decision per step.
-    while (step.chosen >= 0) {
-      CandidateScore& c = step.candidates[static_cast<std::size_t>(step.chosen)];
-      const RecordAgreement agreement = checkRecordAgreement(plant, best[static_cast<std::size_t>(step.chosen)], c.id,
-                                                             settings.alpha / std::max(1, applicable));
-      c.agreement = agreement.describe();
-      if (agreement.agrees) break;
-      c.recordsAgree = false;
-      step.chosen = applyAcceptanceRule(scores, settings.alpha);
-    }
+    step.chosen = applicable == 0 ? -1 : chooseAgreeingCandidate(plant, best, settings.alpha, applicable, scores, step);
     if (step.chosen < 0) {
       out.steps.push_back(step);
       break;

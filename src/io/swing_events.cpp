@@ -293,6 +293,16 @@ void checkThreshold(const MotionTable& grf, const GrfSettings& settings) {
                      formatNumber(settings.thresholdN) + ")");
 }
 
+/// "" if the force crosses `thresholdN` at all; else what to fix, with the peak (a threshold
+/// above the peak found no event, and the run said only "no complete swing", rc 0).
+std::string checkThresholdBelowPeak(const std::vector<double>& force, double thresholdN) {
+  if (force.empty()) return "";
+  const double peak = *std::max_element(force.begin(), force.end());
+  if (peak >= thresholdN) return "";
+  return "threshold_N: expected a threshold below the force's peak, " + formatNumber(peak) + " N (got " +
+         formatNumber(thresholdN) + " N: --threshold-N, a study's threshold_N)";
+}
+
 /// The median step of a time column, s; 0 for fewer than two rows.
 double medianStep(const std::vector<double>& t) {
   std::vector<double> steps;
@@ -469,6 +479,8 @@ const char* gaitName(Gait gait) { return gait == Gait::kRunning ? "running" : "w
 
 SwingEventTimes findGrfEvents(const MotionTable& grf, const GrfSettings& settings) {
   checkThreshold(grf, settings);
+  if (const std::string bad = checkThresholdBelowPeak(grf.column(settings.verticalForce), settings.thresholdN); !bad.empty())
+    throw InputError(grf.path + ": " + settings.verticalForce + ": " + bad);
   return splitByKind(calcGrfEvents(grf, settings));
 }
 
@@ -511,6 +523,10 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
                             " to " + formatNumber(g.back()) + " s)";
     if (settings.fallbackToKinematics) return kinematicsOnly(bad);
     throw InputError(grf.path + ":" + std::to_string(grf.rowLines.front()) + ": " + bad);
+  }
+  if (const std::string bad = checkThresholdBelowPeak(grf.columns[force], settings.thresholdN); !bad.empty()) {
+    if (settings.fallbackToKinematics) return kinematicsOnly(bad);
+    throw InputError(where + bad);
   }
   const std::vector<Event> forceEvents = calcGrfEvents(grf, settings);
   const bool loadedAtStart = grf.columns[force].front() >= settings.thresholdN;

@@ -33,6 +33,19 @@ ApiReply answerOrError(const std::function<Json()>& answer) {
   }
 }
 
-Json readRequestBody(const std::string& body) { return Json::parse(body.empty() ? "{}" : body); }
+Json readRequestBody(const std::string& body) {
+  // Nesting is bounded before anything recurses over the document (dump, destruction).
+  const auto depthGuard = [](int depth, Json::parse_event_t, Json&) {
+    if (depth > kMaxRequestDepth)
+      throw InputError("request: expected JSON nested at most " + std::to_string(kMaxRequestDepth) + " deep (got deeper)");
+    return true;
+  };
+  try {
+    return Json::parse(body.empty() ? "{}" : body, depthGuard);
+  } catch (const Json::out_of_range& e) {  // a number beyond a double (1e400): a 400, not a 500
+    const std::string what = e.what();
+    throw InputError("request: expected numbers a double holds (got " + (what.size() > 160 ? what.substr(0, 160) + "..." : what) + ")");
+  }
+}
 
 }  // namespace swingsim

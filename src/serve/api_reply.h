@@ -18,7 +18,11 @@ struct ApiReply {
 /// field), a failed run (RunError) 422 {"error"}, anything else 500 {"error"}.
 ApiReply answerOrError(const std::function<Json()>& answer);
 
-/// A request body as JSON (empty: {}). Throws Json::parse_error.
+/// The deepest nesting of a request's JSON the server reads (the page's deepest is 3).
+inline constexpr int kMaxRequestDepth = 64;
+
+/// A request body as JSON (empty: {}). Throws Json::parse_error; InputError for nesting past
+/// kMaxRequestDepth or a number a double cannot hold (1e400).
 Json readRequestBody(const std::string& body);
 
 }  // namespace swingsim

@@ -60,6 +60,8 @@ std::vector<TuningKnob> readTuneKnobs(const Json& body, const KneeModelKnobs& kn
                           "can set (got none)");
     if (!(knob.resolution > 0 && knob.resolution <= knob.upper - knob.lower))
       throw InputError(knob.key + ".resolution: expected above 0 and at most the range (got " + k.dump() + ")");
+    for (const TuningKnob& earlier : knobs)  // as swingsim tune's study file refuses it
+      if (earlier.key == knob.key) throw InputError(knob.key + ": expected each knob once (got it twice)");
     knobs.push_back(knob);
   }
   return knobs;
@@ -87,6 +89,8 @@ std::vector<TuningTarget> readTuneTargets(const Json& body, const Participant& p
     if (!w.is_array() || w.size() != 2) throw InputError("peak_knee_flexion_deg: expected [min, max] in deg (got " + w.dump() + ")");
     flexion.lower = readFinite(w[0], "peak_knee_flexion_deg") * kDegToRad;
     flexion.upper = readFinite(w[1], "peak_knee_flexion_deg") * kDegToRad;
+    if (!(flexion.lower < flexion.upper))
+      throw InputError("peak_knee_flexion_deg: expected [min, max] with min < max (got " + w.dump() + ")");
   }
   TuningTarget clearance{TuningQuantity::kMinToeClearance, 0.08, std::numeric_limits<double>::infinity(), true, 1,
                          tuningTargetScale(TuningQuantity::kMinToeClearance)};

@@ -47,6 +47,10 @@ struct CalibrationCase {
   std::function<Diagnosis(std::uint64_t seed, const std::string& tag)> diagnose;
 };
 
+/// A case whose hidden effect is outside the library ("outside:..."): no candidate is the
+/// truth, so any acceptance counts as "other named".
+inline bool isOutsideLibrary(const CalibrationCase& c) { return c.effect.rfind("outside:", 0) == 0; }
+
 /// What one seed gave.
 struct SeedOutcome {
   bool namedFirst = false;  ///< the hidden effect was the first accepted

@@ -71,7 +71,7 @@ std::string markdownRow(const CalibrationCase& c, const CaseSummary& s) {
   // Before the near-miss rules (SeedOutcome::beforeNamedFirst), from the same fits.
   const std::string before = " (before " + std::to_string(s.beforeNamed) + ")";
   const std::string otherBefore = " (before " + std::to_string(s.beforeOther) + ")";
-  row += c.effect.empty() || c.effect.rfind("outside:", 0) == 0
+  row += c.effect.empty() || isOutsideLibrary(c)
              ? "- | " + std::to_string(s.other) + " false" + otherBefore + " | "
              : std::to_string(s.named) + before + " | " + std::to_string(s.other) + otherBefore + " | ";
   if (c.parameter.empty() || s.scored == 0) return row + "- | - | - | - |";

@@ -367,6 +367,16 @@ TEST(SwingEvents, BadInputNamesFileKeyExpectedAndFound) {
   zero.thresholdN = 0;
   EXPECT_THAT(inputErrorOf([&] { findSwings(gait, rightColumns(false), later, zero); }),
               HasSubstr("grf.mot: ground_force_vy: threshold_N: expected a positive force, N (got 0)"));
+
+  // Issue 57: a threshold above the force's peak found no event and said only "no complete
+  // swing" (rc 0); it is refused naming the peak.
+  const auto stance = [](double t) { return t < 0.6 || t > 1.0 ? 700.0 : 0.0; };
+  GrfSettings aboveThePeak;
+  aboveThePeak.thresholdN = 900;
+  const std::string message = "threshold_N: expected a threshold below the force's peak, 700 N (got 900 N";
+  EXPECT_THAT(inputErrorOf([&] { findSwings(gait, rightColumns(false), grfTable(0, 2.3, 0.002, stance), aboveThePeak); }),
+              HasSubstr("grf.mot: ground_force_vy: " + message));
+  EXPECT_THAT(inputErrorOf([&] { findGrfEvents(grfTable(0, 2.3, 0.002, stance), aboveThePeak); }), HasSubstr(message));
 }
 
 /// `table` from its row `first` on: a recording started later.

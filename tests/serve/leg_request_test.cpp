@@ -196,3 +196,23 @@ TEST(LegRequestTest, AnUnknownRequestKeyIsRefusedWithTheClosestKnownOne) {
 
 }  // namespace
 }  // namespace swingsim
+
+#include "serve/api_reply.h"
+
+namespace swingsim {
+namespace {
+
+// Issue 57: JSON nested 30,000 deep and a number beyond a double (a 500 naming no key).
+TEST(LegRequestTest, DeepNestingAndAnOverflowingNumberAreRequestErrors) {
+  const std::string deep = R"({"participant": "p1", "edits": )" + std::string(30000, '[') + std::string(30000, ']') + "}";
+  const ApiReply nested = answerOrError([&] { return readRequestBody(deep); });
+  EXPECT_EQ(nested.status, 400);
+  EXPECT_THAT(nested.body, HasSubstr("nested at most 64 deep"));
+  const ApiReply huge = answerOrError([&] { return readRequestBody(R"({"lowering_m": 1e400})"); });
+  EXPECT_EQ(huge.status, 400);
+  EXPECT_THAT(huge.body, HasSubstr("expected numbers a double holds"));
+  EXPECT_EQ(answerOrError([&] { return readRequestBody(R"({"knee_settings": {"a": [1, {"b": 2}]}})"); }).status, 200);
+}
+
+}  // namespace
+}  // namespace swingsim

@@ -250,6 +250,16 @@ TEST(ServeTune, RefusesBadKnobsAndTargetsByTheirKey) {
   Json badFlag = kTuneRequest;
   badFlag["knobs"][1]["log_scale"] = "yes";
   EXPECT_EQ(refuse(badFlag), "knee_effects.model_scale.log_scale");
+  // Issue 57: as swingsim tune's study files, a knob given twice and a reversed flexion window.
+  Json twice = kTuneRequest;
+  twice["knobs"][1] = twice["knobs"][0];
+  EXPECT_EQ(refuse(twice), twice["knobs"][0]["key"].get<std::string>());
+  Json reversed = kTuneRequest;
+  reversed["targets"]["peak_knee_flexion_deg"] = {90, 60};
+  EXPECT_EQ(refuse(reversed), "peak_knee_flexion_deg");
+  Json misspelt = kTuneRequest;
+  misspelt["knob"] = misspelt["knobs"];
+  EXPECT_EQ(refuse(misspelt), "knob");
 }
 
 }  // namespace

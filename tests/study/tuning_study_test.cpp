@@ -120,6 +120,12 @@ TEST(TuningStudy, RefusesAKnobGivenTwice) {
   EXPECT_NE(m.find("knobs[1].key: this knob appears twice (got lowering_m)"), std::string::npos) << m;
 }
 
+// Issue 57: a fixed lowering beside a lowering knob was dropped without a word.
+TEST(TuningStudy, RefusesAFixedLoweringBesideALoweringKnob) {
+  const std::string m = refusal(study(kKnobs, kTargets) + "lowering_m: 0.02\n");
+  EXPECT_NE(m.find("knobs[0].key: a lowering knob or a fixed lowering_m, not both"), std::string::npos) << m;
+}
+
 // `uncertainty: {samples, seed}` asks for the chance of meeting the hard limits (as a sweep
 // study's uncertainty map): read, and a bad count or an unknown key refused at its line.
 TEST(TuningStudy, UncertaintyAsksForTheChanceOfMeetingTheLimits) {
