@@ -80,15 +80,20 @@ Command addSwingsCommand(CLI::App& app) {
   sub->add_option("--side", a->side, "which leg: r or l; reads hip_flexion_<side> and knee_angle_<side> (default r)")
       ->type_name("r|l")
       ->check(oneOf({"r", "l"}));
-  addTextOption(sub, "--grf", a->grf, "OpenSim ground reaction force .mot on the same clock (default: none, events from the kinematics)",
-                "GRF.mot");
+  CLI::Option* grf = addTextOption(sub, "--grf", a->grf,
+                                   "OpenSim ground reaction force .mot on the same clock (default: none, events from the kinematics)",
+                                   "GRF.mot");
+  // The force's options without a force file would be ignored without a word: refused.
   addTextOption(sub, "--vertical-force", a->verticalForce,
-                "the foot's vertical force column in the GRF file, N (default ground_force_vy for r, 1_ground_force_vy for l)", "LABEL");
+                "the foot's vertical force column in the GRF file, N (default ground_force_vy for r, 1_ground_force_vy for l)", "LABEL")
+      ->needs(grf);
   sub->add_option("--threshold-N", a->thresholdN, "vertical force below which the foot is in the air, N (default 20)")
       ->type_name("N")
-      ->check(finiteNumber(checkForceThreshold));
+      ->check(finiteNumber(checkForceThreshold))
+      ->needs(grf);
   sub->add_flag("--fallback-to-kinematics", a->fallbackToKinematics,
-                "a force file that fails its checks gives way to the kinematics' events (said in the listing) instead of an error");
+                "a force file that fails its checks gives way to the kinematics' events (said in the listing) instead of an error")
+      ->needs(grf);
   addTextOption(sub, "--gait", a->gait, "walking or running: which kinematic event rules (default: detected from the stride)",
                 "walking|running")
       ->check(oneOf({"walking", "running"}));

@@ -112,4 +112,13 @@ TEST(SwingsCommand, BadInputExitsWithAMessageAndWritesNothing) {
   EXPECT_FALSE(fs::exists(json));
 }
 
+// Issue 57: the force's options without --grf were ignored without a word.
+TEST(SwingsCommand, ForceOptionsWithoutAForceFileAreRefused) {
+  for (const char* option : {"--threshold-N 30", "--vertical-force 1_ground_force_vy", "--fallback-to-kinematics"}) {
+    const CliRun r = runSwingsim("swings " + kIk + " " + option);
+    EXPECT_NE(r.code, 0) << option;
+    EXPECT_THAT(r.output, HasSubstr("requires --grf")) << option << ": " << r.output;
+  }
+}
+
 }  // namespace
