@@ -111,8 +111,19 @@ void writeThrough(const std::string& path, const std::string& contents) {
   std::fflush(stdout);
   std::fflush(stderr);
   int fd = -1;
+  // The process's own stdout or stderr (/dev/stdout while stdout goes to a file): written
+  // through a duplicate of that descriptor, which shares its offset, so the text printed
+  // after follows this file's contents instead of overwriting them (issue 57: `--json
+  // /dev/stdout > file` opened the file a second time at its own offset).
+  struct stat target {};
+  if (::stat(path.c_str(), &target) == 0)
+    for (const int own : {STDOUT_FILENO, STDERR_FILENO}) {
+      struct stat open {};
+      if (fd < 0 && ::fstat(own, &open) == 0 && open.st_dev == target.st_dev && open.st_ino == target.st_ino)
+        fd = ::dup(own);
+    }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kFifoWaitSeconds);
-  for (;;) {
+  while (fd < 0) {
     fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd >= 0) break;
     // ENXIO: a FIFO without a reader yet.

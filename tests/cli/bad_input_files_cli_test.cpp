@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "core/output_files.h"
+#include "io/json_file.h"
 #include "release_only.h"
 #include "run_swingsim.h"
 #include "../core/cpu_time.h"
@@ -122,6 +123,25 @@ TEST(BadInputFilesCli, JsonToDevStdoutIsStreamedAndTheLinkStays) {
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status("/dev/stdout"))) << "/dev/stdout was replaced by a file";
   for (const auto& e : fs::directory_iterator("/dev"))
     EXPECT_EQ(e.path().filename().string().find("stdout.tmp-"), std::string::npos) << e.path();
+}
+
+// Issue 57: with stdout redirected to a file, `--json /dev/stdout` opened that file a second
+// time at its own offset, and the text printed after overwrote the JSON. Now the JSON goes
+// through stdout's own descriptor: the file holds the text before, the whole JSON, the text
+// after, each once.
+TEST(BadInputFilesCli, JsonToDevStdoutRedirectedToAFileIsWrittenOnceInOrder) {
+  if (!fs::is_symlink(fs::symlink_status("/dev/stdout"))) GTEST_SKIP() << "/dev/stdout is not a link here";
+  const fs::path dir = freshDir("dev-stdout-file");
+  const fs::path file = dir / "both.txt";
+  const auto r = runSwingsim("simulate " + writeP1(dir).string() + " --json /dev/stdout --out " + (dir / "out").string() +
+                             " > " + file.string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  const std::string all = slurp(file);
+  const auto open = all.find("{\n"), close = all.rfind("\n}");
+  ASSERT_NE(open, std::string::npos) << all;
+  ASSERT_NE(close, std::string::npos) << all;
+  EXPECT_TRUE(swingsim::Json::accept(all.substr(open, close + 2 - open))) << "the JSON is whole: " << all;
+  EXPECT_THAT(all.substr(0, open), HasSubstr("swing time")) << "the text printed before the JSON is kept";
 }
 
 // A complete one-shard analysis of a study at `studyPath` (relative), as `sweep --shard 0/1` writes it.
