@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "core/output_files.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "report/stick_figure_animation.h"
@@ -260,7 +261,8 @@ ApiReply ServeApi::report(const std::string& body) const {
   return hideServerPaths(answerOrError([&] {
     const LegSweep run = runLegSweep(readRequestBody(body), files_, limits_);
     const auto files = makeSweepReport(run.study, run.results);
-    return Json{{"file_name", run.study.name + "-report.html"}, {"html", files.at("report.html")}};
+    // The participant's name as a file stem that stays one file name (a hostile name reached it unchanged).
+    return Json{{"file_name", makeSafeFileStem(run.study.name) + "-report.html"}, {"html", files.at("report.html")}};
   }));
 }
 

@@ -104,6 +104,19 @@ TEST(ServeReport, IsTheSweepsSelfContainedReport) {
   EXPECT_THAT(html, HasSubstr(fastest));
 }
 
+// Issue 57: a hostile participant name reached the report's file name unchanged.
+TEST(ServeReport, AHostileNameGivesASafeFileName) {
+  std::string p1 = readFile(kSource + "/participants/p1.yaml");
+  const auto at = p1.find("name: P1");
+  ASSERT_NE(at, std::string::npos);
+  p1.replace(at, 8, "name: \"../../x/evil name\"");
+  const Json j = callServeApi(&ServeApi::report, {{"participant_yaml", p1}, {"lowering_step_m", 0.1}});
+  const std::string name = j["file_name"];
+  EXPECT_EQ(name.find('/'), std::string::npos) << name;
+  EXPECT_EQ(name.find(' '), std::string::npos) << name;
+  EXPECT_NE(name.find("-report.html"), std::string::npos) << name;
+}
+
 // With an added mass the sweep shown is the leg's with it: each lowering's swing time is the
 // one simulateSwing gives with that mass (the sweep's options), and differs from the plain
 // sweep's by far more than the integrator's 0.1 ms.
