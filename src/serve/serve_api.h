@@ -61,6 +61,10 @@ class ServeApi {
 
   const ServeLimits& getLimits() const { return limits_; }
 
+  /// The server is stopping (SIGTERM, Ctrl-C): a tuning under way ends at its next swing with
+  /// the best so far, "interrupted", instead of running to its budget.
+  void requestStop() { stopping_ = true; }
+
  private:
   /// `reply` with the server's data folder taken out of every path in it ("<data>/models/x.yaml"
   /// -> "models/x.yaml"): no answer shows where the server's files are.
@@ -69,6 +73,7 @@ class ServeApi {
   ShippedFiles files_;
   ServeLimits limits_;
   mutable std::atomic<int> tunesRunning_{0};
+  std::atomic<bool> stopping_{false};
 };
 
 }  // namespace swingsim

@@ -148,14 +148,15 @@ ApiReply ServeApi::tune(const std::string& body) const {
     volatile bool stop = false;
     std::atomic<long> swings{0};
     const TuningEvaluator evaluate = [&](const std::vector<double>& x) {
-      if (stop || seconds() > limits_.maxTuneWallSeconds || swings.fetch_add(1) >= limits_.maxTuneSwings) {
+      if (stop || stopping_ || seconds() > limits_.maxTuneWallSeconds || swings.fetch_add(1) >= limits_.maxTuneSwings) {
         stop = true;
-        throw RunError("stopped at swingsim serve's budget");
+        throw RunError(stopping_ ? "swingsim serve is stopping" : "stopped at swingsim serve's budget");
       }
       return model.simulate(x, options);
     };
     TuningResult r = runKneeTuning(knobs, targets, evaluate, settings, {}, &stop);
     r.interrupted = r.interrupted || stop;
+    if (!r.best.ran && stopping_) throw RunError("tune: swingsim serve is stopping; no swing ran");
     if (!r.best.ran)
       throw RunError("tune: stopped at swingsim serve's budget (" + formatNumber(limits_.maxTuneWallSeconds) + " s, " +
                      std::to_string(limits_.maxTuneSwings) + " swings) before any swing ran");

@@ -126,7 +126,10 @@ WebServer::~WebServer() = default;
 int WebServer::getPort() const { return impl_->port; }
 std::string WebServer::getOrigin() const { return impl_->guard->getOrigin(); }
 void WebServer::run() { impl_->server.listen_after_bind(); }
-void WebServer::stop() { impl_->server.stop(); }
+void WebServer::stop() {
+  impl_->api.requestStop();  // a tuning under way ends at its next swing (SIGTERM waited for all of it)
+  impl_->server.stop();
+}
 bool WebServer::isRunning() const { return impl_->server.is_running(); }
 
 }  // namespace swingsim

@@ -211,6 +211,16 @@ TEST(ServeTune, StoppedItReturnsTheBestSimulatedSoFar) {
   EXPECT_EQ(swing["swing_time_s"].get<double>(), j["swing_time_s"].get<double>());
 }
 
+// Issue 57: SIGTERM during a tuning waited for the whole tuning (up to its 30 s budget). A
+// stopping server's tuning ends at its next swing.
+TEST(ServeTune, AStoppingServerEndsATuningAtItsNextSwing) {
+  ServeApi api(ShippedFiles(SWINGSIM_SOURCE_DIR), ServeLimits{});
+  api.requestStop();
+  const ApiReply r = api.tune(kTuneRequest.dump());
+  EXPECT_EQ(r.status, 422) << r.body;  // it ran its whole tuning (200) before
+  EXPECT_THAT(r.body, HasSubstr("swingsim serve is stopping; no swing ran"));
+}
+
 TEST(ServeTune, RefusesBeyondItsConcurrentTunings) {
   ServeLimits limits;
   limits.maxConcurrentTunes = 0;
