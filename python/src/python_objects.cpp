@@ -24,7 +24,18 @@ std::string folderOf(const std::string& path) {
 }
 
 bool isPackageObject(const py::handle& value, const char* name) {
-  return py::isinstance(value, py::module_::import("swingsim").attr(name));
+  if (py::isinstance(value, py::module_::import("swingsim").attr(name))) return true;
+  // An object made before importlib.reload(swingsim) (a notebook's autoreload) is an instance
+  // of the class as it was: the same class by module and name anywhere in its MRO (it was
+  // refused with "expected a swingsim.Participant, got swingsim.Participant").
+  for (const py::handle cls : py::type::of(value).attr("__mro__")) {
+    const py::object module = py::getattr(cls, "__module__", py::none());
+    const py::object qualname = py::getattr(cls, "__qualname__", py::none());
+    if (py::isinstance<py::str>(module) && py::isinstance<py::str>(qualname) && module.cast<std::string>() == "swingsim" &&
+        qualname.cast<std::string>() == name)
+      return true;
+  }
+  return false;
 }
 
 std::pair<std::string, std::string> objectAsYaml(const py::handle& object, const char* what) {
