@@ -148,14 +148,17 @@ def _write_text(path, text):
 
 
 class _FileRecord(Record):
-    """A Record of a file: `origin` is its path (relative paths in it resolve against the
-    origin's folder; messages about edited values name it)."""
+    """A Record of a file: `origin` is its absolute path (relative paths in it resolve against
+    the origin's folder, wherever the current folder goes later; messages about edited values
+    name it)."""
 
     _loader = None  # the module function that loads one into a dict
 
     def __init__(self, values, origin):
         super().__init__(values)
-        object.__setattr__(self, "origin", _os.fspath(origin))
+        # Absolute at once: after os.chdir an object loaded by a relative path resolved its
+        # knee_model against the new folder (issue 57).
+        object.__setattr__(self, "origin", _os.path.abspath(_os.fspath(origin)))
 
     def resolve(self, path):
         """A path written in the file (``p.knee_model``) as a path from the current folder:
@@ -219,7 +222,7 @@ class _FileRecord(Record):
         text = _swingsim.format_record(self._as_file(), _os.path.dirname(path) or ".")
         _write_text(path, text)
         object.__setattr__(self, "_values", type(self)._loader(path))
-        object.__setattr__(self, "origin", path)
+        object.__setattr__(self, "origin", _os.path.abspath(path))
         return path
 
     def __repr__(self):

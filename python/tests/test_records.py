@@ -135,3 +135,13 @@ def test_save_refuses_to_replace_a_file_it_names(repo, tmp_path):
     p.segments.shank.mass_kg = 1.2
     p.save(tmp_path / "participants" / "p1.yaml")
     assert swingsim.load_participant(tmp_path / "participants" / "p1.yaml").segments.shank.mass_kg == 1.2
+
+
+def test_an_object_loaded_by_a_relative_path_keeps_its_folder_after_chdir(repo, tmp_path, monkeypatch):
+    # Issue 57: after os.chdir an object loaded by a relative path swung with another folder's knee.
+    monkeypatch.chdir(repo)
+    p = swingsim.load_participant("participants/p1.yaml")
+    expected = swingsim.simulate(p).swing_time_s
+    monkeypatch.chdir(tmp_path)
+    assert p.origin == str(repo / "participants" / "p1.yaml")
+    assert swingsim.simulate(p).swing_time_s == expected
