@@ -79,22 +79,29 @@ py::object scalarToPython(const std::string& text) {
   return py::str(text);
 }
 
-void emit(YAML::Emitter& out, const py::handle& value, const std::string& where) {
+// The deepest nesting a record's YAML takes (a knee file's is 5): a list that contains itself
+// recursed without bound and crashed the interpreter (issue 57).
+constexpr int kMaxYamlDepth = 64;
+
+void emit(YAML::Emitter& out, const py::handle& value, const std::string& where, int depth = 0) {
+  if (depth > kMaxYamlDepth)
+    throw InputError(where.substr(0, 200) + ": expected at most " + std::to_string(kMaxYamlDepth) +
+                     " levels of lists and mappings (got deeper: a list or mapping that contains itself?)");
   if (py::isinstance<py::dict>(value)) {
     out << YAML::BeginMap;
     for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
       out << YAML::Key << py::str(key).cast<std::string>() << YAML::Value;
-      emit(out, item, where + "." + py::str(key).cast<std::string>());
+      emit(out, item, where + "." + py::str(key).cast<std::string>(), depth + 1);
     }
     out << YAML::EndMap;
   } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     out << YAML::Flow << YAML::BeginSeq;
-    for (const auto& item : value) emit(out, item, where + "[]");
+    for (const auto& item : value) emit(out, item, where + "[]", depth + 1);
     out << YAML::EndSeq;
   } else if (py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"))) {
     out << (value.cast<bool>() ? "true" : "false");
   } else if (isNumpy(value, "ndarray")) {
-    emit(out, numpyAsList(value, where), where);
+    emit(out, numpyAsList(value, where), where, depth + 1);
   } else if (py::isinstance<py::str>(value)) {
     out << YAML::DoubleQuoted << value.cast<std::string>();
   } else if (py::hasattr(value, "__index__")) {

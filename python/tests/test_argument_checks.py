@@ -243,3 +243,13 @@ def test_diagnose_is_held_to_a_row_limit_as_on_the_command_line(repo):
         swingsim.diagnose(repo / "studies" / "diagnose-demo-swing.yaml", max_rows=2.5)
     with pytest.raises(swingsim.InputError, match=r"diagnose\(\): max_rows"):
         swingsim.diagnose(repo / "studies" / "diagnose-demo-swing.yaml", max_rows=0)
+
+
+def test_a_list_that_contains_itself_is_refused_not_a_crash(repo):
+    # Issue 57: the YAML emitter recursed without bound and crashed the interpreter.
+    p = swingsim.load_participant(repo / "participants" / "p1.yaml")
+    loop = [1.0]
+    loop.append(loop)
+    p["notes"] = loop
+    with pytest.raises(ValueError, match="levels of lists and mappings"):
+        swingsim.simulate(p)
