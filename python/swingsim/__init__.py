@@ -291,6 +291,9 @@ class SwingRecord:
         import numpy
         if not isinstance(name, str):
             raise TypeError(_argument_problem("SwingRecord(): name", "expected text (str)", name))
+        # The name stands in the study for a file name: a path (../../etc/passwd) is refused.
+        if not name or name.startswith(".") or any(c in name for c in "/\\\0"):
+            raise InputError(_argument_problem("SwingRecord(): name", "expected a plain name (no folder, no leading dot)", name))
         self.name = name
         given = dict(zip(self._COLUMNS, (time_s, hip_flexion_deg, knee_flexion_deg, hip_moment_Nm, knee_moment_Nm)))
         for key, values in given.items():

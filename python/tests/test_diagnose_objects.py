@@ -105,7 +105,20 @@ def test_study_checks_name_the_key(study_file):
     assert str(error.value) == "diagnose(): study: expected a path or a swingsim.DiagnosisStudy, got int 42"
 
 
+def test_a_record_timed_in_ms_is_refused_at_once(study_file):
+    # Issue 57: a record timed in ms sent the diagnosis integrating past 60 s.
+    s = swingsim.load_study(study_file)
+    t = numpy.linspace(0, 500.0, 20)  # ms
+    s["train"] = [swingsim.SwingRecord("ms", t, numpy.zeros(20), numpy.linspace(0, 60, 20), numpy.zeros(20))]
+    with pytest.raises(swingsim.InputError, match="record ms.*time_s: expected one swing in seconds.*in ms\\?"):
+        swingsim.diagnose(s)
+
+
 def test_swing_record_arguments():
+    # Issue 57: a record's name stands for a file name in the study: no path.
+    for bad in ("../../../etc/passwd", "a/b", "", ".hidden"):
+        with pytest.raises(swingsim.InputError, match="SwingRecord\\(\\): name: expected a plain name"):
+            swingsim.SwingRecord(bad, [0, 1, 2], [0, 1, 2], [0, 1, 2])
     with pytest.raises(swingsim.InputError, match="SwingRecord\\(\\): knee_flexion_deg: expected 3 values"):
         swingsim.SwingRecord("r", [0, 1, 2], [0, 1, 2], [0, 1])
     with pytest.raises(TypeError, match="SwingRecord\\(\\): hip_flexion_deg"):

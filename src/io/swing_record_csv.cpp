@@ -41,6 +41,13 @@ SwingRecord recordFromTable(const CsvTable& t, const std::string& path) {
                      "; a swing flexes it by tens of degrees): the column looks like radians, expected degrees");
   const auto& time = t.column("time_s");
   const double t0 = time.front();
+  // One swing lasts well under 2 s; a record timed in ms spans hundreds of "seconds" and sent
+  // a diagnosis integrating for minutes (issue 57).
+  constexpr double kMaxSwingRecordSpanS = 10;
+  if (time.back() - t0 > kMaxSwingRecordSpanS)
+    throw InputError(path + ": time_s: expected one swing in seconds, spanning at most " + formatNumber(kMaxSwingRecordSpanS) +
+                     " s (got " + formatNumber(time.back() - t0) + " s from the first sample to the last" +
+                     (time.back() - t0 < 1e4 ? ": in ms?" : "") + ")");
   for (double v : time) r.time.push_back(v - t0);
   for (double v : t.column("hip_flexion_deg")) r.hipFlexion.push_back(v * kDegToRad);
   for (double v : t.column("knee_flexion_deg")) r.kneeFlexion.push_back(v * kDegToRad);

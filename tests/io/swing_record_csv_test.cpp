@@ -93,6 +93,16 @@ TEST(SwingRecordCsv, KneeInRadiansOrTooFewRowsAreRefused) {
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("short.csv: too few data rows (got 2, need at least 10)"));
   }
+  // Issue 57: a record timed in ms (a diagnosis then integrated for minutes).
+  std::string ms = "time_s,hip_flexion_deg,knee_flexion_deg\n";
+  for (int i = 0; i < 12; ++i) ms += std::to_string(40 * i) + ",10," + std::to_string(5 * i) + "\n";
+  try {
+    readSwingRecord(writeTemp("ms.csv", ms));
+    ADD_FAILURE() << "a record in ms was read";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("ms.csv: time_s: expected one swing in seconds, spanning at most 10 s (got 440 s from "
+                                    "the first sample to the last: in ms?)"));
+  }
 }
 
 }  // namespace
