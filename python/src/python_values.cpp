@@ -80,7 +80,7 @@ py::object scalarToPython(const std::string& text) {
 }
 
 // The deepest nesting a record's YAML takes (a knee file's is 5): a list that contains itself
-// recursed without bound and crashed the interpreter (issue 57).
+// recursed without bound and crashed the interpreter.
 constexpr int kMaxYamlDepth = 64;
 
 void emit(YAML::Emitter& out, const py::handle& value, const std::string& where, int depth = 0) {

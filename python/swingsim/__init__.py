@@ -157,7 +157,7 @@ class _FileRecord(Record):
     def __init__(self, values, origin):
         super().__init__(values)
         # Absolute at once: after os.chdir an object loaded by a relative path resolved its
-        # knee_model against the new folder (issue 57).
+        # knee_model against the new folder.
         object.__setattr__(self, "origin", _os.path.abspath(_os.fspath(origin)))
 
     def resolve(self, path):

@@ -2,7 +2,7 @@
 // Names in files and requests checked by a plain scan: an identifier is a letter or _ and
 // then letters, digits and _ (plus any of `extra`). No std::regex: libstdc++'s matcher
 // recurses once per character, and a 60 kB key or message from a request overflowed the
-// stack of `swingsim serve` (issue 57).
+// stack of `swingsim serve`.
 #include <cctype>
 #include <string_view>
 

@@ -113,7 +113,7 @@ void writeThrough(const std::string& path, const std::string& contents) {
   int fd = -1;
   // The process's own stdout or stderr (/dev/stdout while stdout goes to a file): written
   // through a duplicate of that descriptor, which shares its offset, so the text printed
-  // after follows this file's contents instead of overwriting them (issue 57: `--json
+  // after follows this file's contents instead of overwriting them (`--json
   // /dev/stdout > file` opened the file a second time at its own offset).
   struct stat target {};
   if (::stat(path.c_str(), &target) == 0)

@@ -252,7 +252,7 @@ void serialize(A& a, ImpedanceTransition& t, StateListContext* context) {
               "expected its threshold, flexion_deg, beside it", [] { return std::string("no flexion_deg"); });
     a.require(t.rateSide == ThresholdSide::kAny || a.has("rate_deg_s"), "when_rate",
               "expected its threshold, rate_deg_s, beside it", [] { return std::string("no rate_deg_s"); });
-    // A threshold without its side would be ignored: the state would end at once (issue 57).
+    // A threshold without its side would be ignored: the state would end at once.
     a.require(!a.has("flexion_deg") || t.flexionSide != ThresholdSide::kAny, "flexion_deg",
               "expected its side beside it, when_flexion: above or below",
               [] { return std::string("no side (or when_flexion: any)"); });

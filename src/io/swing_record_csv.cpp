@@ -42,7 +42,7 @@ SwingRecord recordFromTable(const CsvTable& t, const std::string& path) {
   const auto& time = t.column("time_s");
   const double t0 = time.front();
   // One swing lasts well under 2 s; a record timed in ms spans hundreds of "seconds" and sent
-  // a diagnosis integrating for minutes (issue 57).
+  // a diagnosis integrating for minutes.
   constexpr double kMaxSwingRecordSpanS = 10;
   if (time.back() - t0 > kMaxSwingRecordSpanS)
     throw InputError(path + ": time_s: expected one swing in seconds, spanning at most " + formatNumber(kMaxSwingRecordSpanS) +

@@ -155,7 +155,7 @@ TuningStudy loadTuningStudy(const std::string& path) {
     s.knobs.push_back(readKnob(m, p, knee, s));
     for (std::size_t i = 0; i + 1 < s.knobs.size(); ++i)
       if (s.knobs[i].key == s.knobs.back().key) m.fail("key", "this knob appears twice", s.knobs.back().key);
-    // A fixed lowering beside a lowering knob would be dropped without a word (issue 57).
+    // A fixed lowering beside a lowering knob would be dropped without a word.
     if (s.knobs.back().key == "lowering_m" && yaml.has("lowering_m"))
       m.fail("key", "a lowering knob or a fixed lowering_m, not both (the knob moves the lowering; remove lowering_m: " +
                         formatNumber(s.lowering) + ")",
