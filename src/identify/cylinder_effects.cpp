@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "identify/user_cylinder_effect.h"
 
 namespace swingsim {
 
@@ -159,7 +160,20 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
 const CylinderEffectRecord& findCylinderEffectRecord(EffectId effect) {
   for (const auto& r : cylinderEffectRecords())
     if (r.id == effect) return r;
+  if (const CylinderEffectRecord* user = findUserCylinderEffectRecord(effect)) return *user;
   throw std::invalid_argument("not a cylinder effect: " + describeEffect(effect).name);
+}
+
+std::vector<const CylinderEffectRecord*> presentCylinderEffectRecords(const MauchCylinderParams& p) {
+  std::vector<const CylinderEffectRecord*> out;
+  for (const auto& r : cylinderEffectRecords())
+    if (r.has(p)) out.push_back(&r);
+  for (const auto& x : p.effects.expressions) {
+    const EffectDescriptor* d = findEffect(PlantKind::kCylinder, x.name);
+    const CylinderEffectRecord* user = d ? findUserCylinderEffectRecord(d->id) : nullptr;
+    if (user) out.push_back(user);
+  }
+  return out;
 }
 
 std::vector<int> cylinderEffectColumns(const MauchCylinderParams& p, EffectId effect) {

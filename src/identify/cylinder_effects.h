@@ -5,7 +5,10 @@
 // whether its acceptance frees the switch constants. The effect's law is the Mauch cylinder's
 // (knee/mauch_cylinder.h); its user-facing text (name, sentences, parameter names, grid) is
 // its descriptor in model/effect_table.cpp. Adding a cylinder candidate: its law, its
-// descriptor, its record, its test (tests/identify/cylinder_effects_test.cpp).
+// descriptor, its record, its test (tests/identify/cylinder_effects_test.cpp). A user's effect
+// (a cylinder_force_N expression in a study's candidates) is a record of the same kind, made
+// at run time (identify/user_cylinder_effect.h).
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +16,7 @@
 #include "identify/bench_data.h"
 #include "knee/mauch_cylinder.h"
 #include "model/effect_table.h"
+#include "numerics/bounded_least_squares.h"
 
 namespace swingsim {
 
@@ -27,33 +31,40 @@ enum class CylinderRefit {
 struct CylinderEffectRecord {
   EffectId id;
   /// Whether a model has the effect.
-  bool (*has)(const MauchCylinderParams&);
+  std::function<bool(const MauchCylinderParams&)> has = nullptr;
   /// Switches it on: its linear coefficients 0 until fitted, its grid value set (SI).
-  void (*add)(MauchCylinderParams&, double gridValue);
+  std::function<void(MauchCylinderParams&, double gridValue)> add = nullptr;
   /// Switches it off (for the effect size: the model without it).
-  void (*remove)(MauchCylinderParams&);
+  std::function<void(MauchCylinderParams&)> remove = nullptr;
   /// Its reported values, in the descriptor's parameter order.
-  std::vector<double> (*values)(const MauchCylinderParams&);
+  std::function<std::vector<double>(const MauchCylinderParams&)> values = nullptr;
   /// The sign rule on a fitted model; `train` gives the recorded stroke. `note` says the
   /// rule and the value.
-  bool (*isPhysical)(const MauchCylinderParams&, const std::vector<BenchData>& train, std::string& note);
+  std::function<bool(const MauchCylinderParams&, const std::vector<BenchData>& train, std::string& note)> isPhysical = nullptr;
   /// Regression columns it adds (MauchCylinder::calcRegressorRow) and their place among the
   /// added effects' columns (0 first); -1: no column.
   int columns = 0;
   int columnRank = -1;
   /// Why it cannot be added to a model (""), checked before "already in the model"; null: none.
-  std::string (*notApplicable)(const MauchCylinderParams&) = nullptr;
+  std::function<std::string(const MauchCylinderParams&)> notApplicable = nullptr;
   /// `model` with b's effect taken from `fromB`; null: add it at b's grid value (or 0).
-  void (*combine)(MauchCylinderParams& model, const MauchCylinderParams& fromB) = nullptr;
+  std::function<void(MauchCylinderParams& model, const MauchCylinderParams& fromB)> combine = nullptr;
   CylinderRefit refit = CylinderRefit::kNone;
   /// A larger model that nests the accepted one, tried after the joint refit; null: none.
-  std::optional<MauchCylinderParams> (*nestingModel)(const MauchCylinderParams&) = nullptr;
+  std::function<std::optional<MauchCylinderParams>(const MauchCylinderParams&)> nestingModel = nullptr;
+  /// A user's effect: the bounds of its expression's parameters, in their order, fitted
+  /// around the regression (CylinderPlant::fit); empty for the library's.
+  std::vector<BoundedParameter> expressionBounds = {};
 };
 
-/// Every cylinder effect's record, in the effect table's order.
+/// Every library cylinder effect's record, in the effect table's order.
 const std::vector<CylinderEffectRecord>& cylinderEffectRecords();
-/// The record of `effect`; throws std::invalid_argument if it is not a cylinder effect.
+/// The record of `effect` (the library's or a registered user's,
+/// identify/user_cylinder_effect.h); throws std::invalid_argument if it is not a cylinder effect.
 const CylinderEffectRecord& findCylinderEffectRecord(EffectId effect);
+/// The records of the effects `p` has: the library's in table order, then the users' in the
+/// order of `p.effects.expressions`.
+std::vector<const CylinderEffectRecord*> presentCylinderEffectRecords(const MauchCylinderParams& p);
 /// Regression columns of `effect` in `p` (after the 3 coefficients of each phase); empty if
 /// the model does not have it.
 std::vector<int> cylinderEffectColumns(const MauchCylinderParams& p, EffectId effect);

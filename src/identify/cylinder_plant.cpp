@@ -8,6 +8,8 @@
 
 #include "core/input_error.h"
 #include "identify/cylinder_effects.h"
+#include "identify/cylinder_regression.h"
+#include "identify/user_cylinder_effect.h"
 
 namespace swingsim {
 
@@ -124,6 +126,61 @@ namespace {
 const CylinderModel& asCylinderModel(const PlantModel& model) { return dynamic_cast<const CylinderModel&>(model); }
 }  // namespace
 
+namespace {
+
+// One parameter of a user's expression in a model, as a free parameter of the fit.
+struct ExpressionSlot {
+  EffectId effect;
+  std::size_t expression, parameter;
+  BoundedParameter bounds;
+};
+
+// The parameters of the model's registered users' expressions (an expression of the base
+// model's file that no study states stays as it is), each starting from its present value.
+std::vector<ExpressionSlot> findExpressionSlots(const MauchCylinderParams& p) {
+  std::vector<ExpressionSlot> out;
+  for (std::size_t i = 0; i < p.effects.expressions.size(); ++i) {
+    const KneeExpressionParams& x = p.effects.expressions[i];
+    const EffectDescriptor* d = findEffect(PlantKind::kCylinder, x.name);
+    const CylinderEffectRecord* r = d ? findUserCylinderEffectRecord(d->id) : nullptr;
+    if (!r || r->expressionBounds.size() != x.parameters.size()) continue;
+    for (std::size_t j = 0; j < x.parameters.size(); ++j) {
+      BoundedParameter b = r->expressionBounds[j];
+      b.start = std::min(std::max(x.parameters[j].value, b.lower), b.upper);
+      out.push_back({d->id, i, j, b});
+    }
+  }
+  return out;
+}
+
+void setExpressionValues(MauchCylinderParams& p, const std::vector<ExpressionSlot>& slots, const Eigen::VectorXd& v) {
+  for (std::size_t k = 0; k < slots.size(); ++k)
+    p.effects.expressions[slots[k].expression].parameters[slots[k].parameter].value = v(static_cast<Eigen::Index>(k));
+}
+
+}  // namespace
+
+BoundedFitResult CylinderPlant::fitExpressions(MauchCylinderParams& params) const {
+  const std::vector<ExpressionSlot> slots = findExpressionSlots(params);
+  std::vector<BoundedParameter> bounds;
+  for (const auto& s : slots) bounds.push_back(s.bounds);
+  // Variable projection (Golub & Pereyra 1973): at each trial of the expressions'
+  // parameters the coefficients are the regression's on what the expressions leave, at the
+  // model's switch constants.
+  const ResidualFunction residual = [&](const Eigen::VectorXd& v) {
+    MauchCylinderParams q = params;
+    setExpressionValues(q, slots, v);
+    Eigen::MatrixXd X;
+    Eigen::VectorXd y;
+    buildRegression(q, train_, X, y);
+    const LinearFit f = fitLeastSquares(X, y);
+    return Eigen::VectorXd(y - X * Eigen::Map<const Eigen::VectorXd>(f.coefficients.data(), X.cols()));
+  };
+  BoundedFitResult r = solveBoundedLeastSquares(residual, bounds);
+  setExpressionValues(params, slots, r.x);
+  return r;
+}
+
 PlantFit CylinderPlant::fit(const PlantModel& model) const {
   // With fit_switches, every candidate refits the switch widths and xhy too (a polish from
   // the baseline's multi-start fit): a hidden effect bends them, and the candidate that
@@ -134,10 +191,21 @@ PlantFit CylinderPlant::fit(const PlantModel& model) const {
   options.fitSwitches = fitSwitches_ || m.switchesFree;
   options.fitLatchRate = m.latchFree;
   options.multiStart = false;
-  const CylinderFit fitted = fitCylinder(m.params, train_, options);
+  // A user's expression: its parameters first, at the model's switch constants; then the
+  // coefficients (and the switch constants the options free) at those parameters.
+  MauchCylinderParams params = m.params;
+  const std::vector<ExpressionSlot> slots = findExpressionSlots(params);
+  BoundedFitResult expressions;
+  if (!slots.empty()) expressions = fitExpressions(params);
+  const CylinderFit fitted = fitCylinder(params, train_, options);
   PlantFit s = summarize(fitted);
   s.model = std::make_shared<CylinderModel>(fitted.params, m.switchesFree, m.latchFree);
   if (m.switchesFree) s.baseParameters = freedSwitchConstants(fitted);
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    if (s.effectErrors.empty() || s.effectErrors.back().first != slots[k].effect) s.effectErrors.emplace_back(slots[k].effect, std::vector<double>{});
+    const auto i = static_cast<Eigen::Index>(k);
+    s.effectErrors.back().second.push_back(i < expressions.standardErrors.size() ? expressions.standardErrors(i) : NAN);
+  }
   return s;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The Mauch cylinder on a bench as a plant of the diagnosis engine (identify/diagnosis_engine.h):
 // the model is a MauchCylinderParams; its free parameters are the regression coefficients
-// (identify/cylinder_fit.h), refitted with every candidate effect; the compared quantity is
+// (identify/cylinder_fit.h), refitted with every candidate effect, and the parameters of users'
+// expressions (identify/user_cylinder_effect.h), fitted around the regression; the compared quantity is
 // the cylinder force (N); phases are the model's dominant gates (Chien 2014 Eqs. 2-11).
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "identify/cylinder_fit.h"
 #include "identify/diagnosis_engine.h"
 #include "knee/mauch_cylinder.h"
+#include "numerics/bounded_least_squares.h"
 
 namespace swingsim {
 
@@ -79,6 +81,9 @@ class CylinderPlant final : public DiagnosisPlant {
  private:
   /// A fitted model as the engine takes it: residuals, held-out RMSE, named constants.
   PlantFit summarize(const CylinderFit& fitted) const;
+  /// The parameters of the users' expressions in `params` (written there), fitted within
+  /// their bounds with the coefficients projected out at the model's switch constants.
+  BoundedFitResult fitExpressions(MauchCylinderParams& params) const;
   /// The joint fit of refitAccepted for one model structure.
   PlantFit fitJointly(const MauchCylinderParams& params, bool fitLatchRate) const;
 

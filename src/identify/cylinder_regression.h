@@ -16,16 +16,19 @@
 namespace swingsim {
 
 // The training records laid end to end with what does not depend on the model's constants:
-// the measured force and, for an added inertia, the piston acceleration estimate.
+// the measured force less the users' expression forces and, for an added inertia, the piston acceleration estimate.
 struct TrainingSet {
   TrainingSet(const MauchCylinderParams& model, const std::vector<BenchData>& files) : files(files) {
     for (const auto& d : files) rows += static_cast<Eigen::Index>(d.time.size());
     y.resize(rows);
     Eigen::Index r = 0;
+    // The users' expression forces add no column: the regression fits what they leave.
+    const CylinderExpressionForces expressions(model.effects.expressions);
     for (const auto& d : files) {
       accel.push_back(model.effects.inertia ? estimatePistonVelocity(d.time, d.velocity)
                                             : std::vector<double>(d.time.size(), 0.0));
-      for (double f : d.force) y(r++) = f;
+      for (std::size_t i = 0; i < d.force.size(); ++i)
+        y(r++) = d.force[i] - (expressions.empty() ? 0.0 : expressions.calcForce(d.position[i], d.velocity[i]));
     }
   }
   const std::vector<BenchData>& files;

@@ -1,34 +1,16 @@
 #include "identify/user_swing_effect.h"
 
 #include <algorithm>
-#include <cmath>
-#include <deque>
-#include <mutex>
 #include <stdexcept>
 
 #include "core/input_error.h"
 
 namespace swingsim {
 
-KneeExpressionParams UserSwingEffect::startLaw() const {
-  KneeExpressionParams law{name, expression, {}};
-  for (const auto& q : parameters) law.parameters.push_back({q.name, q.unit, q.start});
-  return law;
-}
-
 namespace {
 
-struct Registered {
-  EffectId id;
-  SwingEffectRecord record;
-};
-
-struct Registry {
-  std::mutex mutex;
-  std::deque<Registered> entries;  // append-only: records handed out stay valid
-};
-Registry& registry() {
-  static Registry r;
+UserRecordRegistry<SwingEffectRecord>& registry() {
+  static UserRecordRegistry<SwingEffectRecord> r;
   return r;
 }
 
@@ -36,33 +18,6 @@ KneeExpressionParams* findExpression(SwingEffects& e, const std::string& name) {
   for (auto& x : e.knee.expressions)
     if (x.name == name) return &x;
   return nullptr;
-}
-
-void checkBounds(const UserSwingEffect& effect) {
-  for (const auto& q : effect.parameters) {
-    const std::string where = effect.name + ": parameter '" + q.name + "': ";
-    if (!std::isfinite(q.min) || !std::isfinite(q.max) || !std::isfinite(q.start))
-      throw std::invalid_argument(where + "min, max and start must be finite numbers");
-    if (!(q.min < q.max)) throw std::invalid_argument(where + "expected min < max");
-    if (q.start < q.min || q.start > q.max) throw std::invalid_argument(where + "expected start within [min, max]");
-  }
-  if (effect.parameters.empty())
-    throw std::invalid_argument(effect.name + ": expected at least one parameter to fit (parameters: {NAME: {unit, min, max, start}})");
-}
-
-// "a user's expression: <expression>" and its parameters named with their units.
-EffectDescriptor describeUserEffect(const UserSwingEffect& effect) {
-  EffectDescriptor d{};
-  d.plant = PlantKind::kSwing;
-  d.name = effect.name;
-  d.sentence = "a user's knee moment (N m, + = flexion): " + effect.expression;
-  d.mechanism = "written by the user in the study (no library effect); its bounds are its physical rule:";
-  for (const auto& q : effect.parameters)
-    d.mechanism += " " + q.name + " in [" + formatNumber(q.min) + ", " + formatNumber(q.max) + "] from " + formatNumber(q.start) + ";";
-  d.separatedBy = "records that reach the states where the expression acts";
-  for (const auto& q : effect.parameters) d.parameters.push_back(q.name + (q.unit.empty() ? "" : " (" + q.unit + ")"));
-  d.fittedParameters = static_cast<int>(effect.parameters.size());
-  return d;
 }
 
 bool boundsAreTheRule(const SwingEffects&, std::string& note) {
@@ -73,10 +28,7 @@ bool boundsAreTheRule(const SwingEffects&, std::string& note) {
 SwingEffectRecord makeRecord(EffectId id, const UserSwingEffect& effect) {
   SwingEffectRecord r{id, {}};
   for (std::size_t j = 0; j < effect.parameters.size(); ++j) {
-    const auto& q = effect.parameters[j];
-    const double typical = std::max({std::abs(q.start), std::abs(q.min), std::abs(q.max)}) * 0.1;
-    BoundedParameter b{q.name, q.start, q.min, q.max, false, typical > 0 ? typical : 1.0};
-    r.slots.push_back({b, 1.0, [name = effect.name, j](SwingEffects& e) -> double& {
+    r.slots.push_back({userEffectBound(effect, j), 1.0, [name = effect.name, j](SwingEffects& e) -> double& {
                          KneeExpressionParams* x = findExpression(e, name);
                          if (!x) throw std::logic_error(name + ": a user's effect read while absent");
                          return x->parameters[j].value;
@@ -95,26 +47,13 @@ SwingEffectRecord makeRecord(EffectId id, const UserSwingEffect& effect) {
 }  // namespace
 
 EffectId registerUserSwingEffect(const UserSwingEffect& effect) {
-  const EffectDescriptor* known = findEffect(PlantKind::kSwing, effect.name);
-  if (known && !isUserEffect(known->id))
-    throw std::invalid_argument(effect.name + ": the name of a library effect; give your effect another name");
-  checkBounds(effect);
+  checkUserEffect(effect, PlantKind::kSwing);
   checkKneeExpression(effect.startLaw());
-  const EffectId id = registerUserEffect(describeUserEffect(effect));
-  Registry& r = registry();
-  std::lock_guard<std::mutex> lock(r.mutex);
-  for (const auto& e : r.entries)
-    if (e.id == id) return id;
-  r.entries.push_back({id, makeRecord(id, effect)});
+  const EffectId id = registerUserEffect(describeUserEffect(effect, PlantKind::kSwing, "knee moment (N m, + = flexion)"));
+  registry().add(id, [&] { return makeRecord(id, effect); });
   return id;
 }
 
-const SwingEffectRecord* findUserSwingEffectRecord(EffectId id) {
-  Registry& r = registry();
-  std::lock_guard<std::mutex> lock(r.mutex);
-  for (const auto& e : r.entries)
-    if (e.id == id) return &e.record;
-  return nullptr;
-}
+const SwingEffectRecord* findUserSwingEffectRecord(EffectId id) { return registry().find(id); }
 
 }  // namespace swingsim

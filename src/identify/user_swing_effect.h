@@ -8,26 +8,13 @@
 #include <vector>
 
 #include "identify/swing_effects.h"
+#include "identify/user_effect.h"
 #include "knee/knee_expression.h"
 
 namespace swingsim {
 
-/// One parameter of a user's effect: its unit (a label), its physical bounds and the value a
-/// fit starts from. The bounds are the effect's rule (as the library's sign rules are): set
-/// them from physics, not from the data.
-struct UserEffectParameter {
-  std::string name, unit;
-  double min = 0, max = 0, start = 0;
-};
-
-/// A user's effect as a study states it.
-struct UserSwingEffect {
-  std::string name;        ///< a name no library effect has
-  std::string expression;  ///< the knee moment, N m, + = flexion
-  std::vector<UserEffectParameter> parameters;
-  /// The knee law's parameters (name, unit, value) at the start values.
-  KneeExpressionParams startLaw() const;
-};
+/// A user's swing effect: its expression is a knee moment, N m, + = flexion.
+using UserSwingEffect = UserEffect;
 
 /// Checks `effect` (its expression parses with its parameters; bounds ordered and finite,
 /// start within them; the name is not the library's) and registers it as a swing effect;

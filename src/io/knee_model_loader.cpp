@@ -148,6 +148,10 @@ template <class A>
 void serialize(A& a, MauchAddedEffects& e, InertiaOf) { a.number("mass_kg", e.pistonMass); }
 template <class A>
 void serialize(A& a, MauchAddedEffects& e, PositionDampingOf) { a.number("coefficient_Ns_per_m2", e.positionDamping); }
+// A user's cylinder force (knee/cylinder_expression.h), as a diagnosis saves an accepted one.
+struct CylinderForceOf {};
+template <class A>
+void serialize(A& a, KneeExpressionParams& x, CylinderForceOf);
 template <class A>
 void serialize(A& a, MauchPhaseCoefficients& c) {
   a.number("f_N", c.f);
@@ -167,6 +171,9 @@ void serializeAddedEffects(A& a, MauchAddedEffects& e, int phases) {
   a.optionalMap("orifice_quadratic", e, e.orificeQuadratic, OrificeOf{});
   a.optionalMap("inertia", e, e.inertia, InertiaOf{});
   a.optionalMap("position_dependent_damping", e, e.positionDependentDamping, PositionDampingOf{});
+  bool expressions = !e.expressions.empty();
+  if constexpr (A::kReading) expressions = a.has("expressions");
+  if (expressions) a.mapList("expressions", e.expressions, CylinderForceOf{});
 }
 
 }  // namespace
@@ -203,6 +210,22 @@ void serialize(A& a, KneeExpressionParams& x) {
       problem = describeKneeExpressionError(x.expression, e);
     }
     a.require(problem.empty(), "knee_moment_Nm", problem, [&] { return x.expression; });
+  }
+}
+
+template <class A>
+void serialize(A& a, KneeExpressionParams& x, CylinderForceOf) {
+  a.text("name", x.name);
+  a.text("cylinder_force_N", x.expression);
+  a.namedMaps("parameters", x.parameters, &KneeExpressionParameter::name);
+  if constexpr (A::kReading) {
+    std::string problem;
+    try {
+      checkCylinderExpression(x);
+    } catch (const KneeExpressionError& e) {
+      problem = describeKneeExpressionError(x.expression, e);
+    }
+    a.require(problem.empty(), "cylinder_force_N", problem, [&] { return x.expression; });
   }
 }
 

@@ -7,53 +7,17 @@
 // ExpressionBasedCoordinateForce (an expression in q and qdot inside the model file).
 #include <memory>
 #include <mutex>
-#include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "knee/expression_parser.h"
 #include "knee/knee_law.h"
 
 namespace swingsim {
 
-/// One named parameter of an expression: its value in the user's unit (the expression is
-/// written in that unit; swingsim does not convert it).
-struct KneeExpressionParameter {
-  std::string name;  ///< an identifier the expression uses: "c"
-  std::string unit;  ///< a label for reports: "N m s/rad"
-  double value = 0;
-};
-
-/// A user's knee moment: a name, the expression and its parameters.
-struct KneeExpressionParams {
-  std::string name;        ///< the effect's name: "my_cushion"
-  std::string expression;  ///< the knee moment, N m, + = flexion
-  std::vector<KneeExpressionParameter> parameters;
-};
-
-/// The state variables an expression may use, each with its unit and meaning, in the order
-/// a user is told them.
-struct KneeExpressionVariable {
-  const char* name;
-  const char* meaning;
-};
+/// The state variables a knee moment's expression may use, each with its unit and meaning,
+/// in the order a user is told them.
 const std::vector<KneeExpressionVariable>& kneeExpressionVariables();
-
-/// A parse error: the parser's message and the 0-based character position in the
-/// expression (-1: not tied to a position).
-class KneeExpressionError : public std::invalid_argument {
- public:
-  KneeExpressionError(const std::string& message, int position)
-      : std::invalid_argument(message), position_(position) {}
-  int position() const { return position_; }
-
- private:
-  int position_;
-};
-
-/// One line for a user: the parser's message and where in `expression` it stopped
-/// ("Unexpected token "x" found at position 12. (character 13: "x * 2")").
-std::string describeKneeExpressionError(const std::string& expression, const KneeExpressionError& error);
 
 /// Throws KneeExpressionError if the expression does not parse, uses a name that is neither
 /// a state variable nor one of its parameters, if a parameter's name is not an identifier or
@@ -72,11 +36,10 @@ class KneeExpressionMoment final : public KneeLaw {
   std::string name() const override { return p_.name; }
   double calcMoment(const KneeKinematics& knee, const double* z) const override;
   std::unique_ptr<KneeLaw> clone() const override { return std::make_unique<KneeExpressionMoment>(p_); }
-  struct Parser;  ///< the parser bound to its variables (knee_expression.cpp)
 
  private:
   KneeExpressionParams p_;
-  std::unique_ptr<Parser> parser_;
+  std::unique_ptr<ExpressionParser> parser_;
   mutable std::mutex mutex_;
 };
 

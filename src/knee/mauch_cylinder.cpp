@@ -93,6 +93,7 @@ MauchCylinder::MauchCylinder(MauchCylinderParams params) : p_(std::move(params))
               std::isfinite(e.positionDamping),
           "added effect parameters must be finite");
   require(std::isfinite(e.coulombWidth) && e.coulombWidth > 0, "Coulomb friction width must be positive, m/s");
+  expressions_ = CylinderExpressionForces(e.expressions);  // KneeExpressionError is an invalid_argument
 }
 
 std::vector<double> MauchCylinder::calcGates(const MauchSwitches& s) const {
@@ -133,7 +134,7 @@ double MauchCylinder::calcForce(double x, double xd, double xdd, double s2) cons
   if (e.orificeQuadratic) force += e.orificeCoefficient * xd * std::fabs(xd);
   if (e.inertia) force += e.pistonMass * xdd;
   if (e.positionDependentDamping) force += e.positionDamping * x * xd;
-  return force;
+  return force + calcExpressionForce(x, xd);
 }
 
 std::vector<double> MauchCylinder::calcRegressorRow(double x, double xd, double xdd, double s2) const {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "knee/cylinder_expression.h"
 #include "knee/knee_geometry.h"
 #include "knee/knee_law.h"
 
@@ -58,12 +59,17 @@ struct MauchAddedEffects {
   /// Damping that varies along the stroke, cx x xd (cx in N s/m^2): metering grooves.
   bool positionDependentDamping = false;
   double positionDamping = 0;
+  /// Users' forces written as expressions in the piston's position and speed
+  /// (knee/cylinder_expression.h), as a diagnosis saves an accepted one. They add no
+  /// regression column: a fit subtracts them from the measured force (their parameters are
+  /// fitted around the regression, identify/cylinder_plant.h).
+  std::vector<KneeExpressionParams> expressions;
 
   /// Number of regression coefficients the enabled effects add (3 + 1 + 1 + 1 + 1 at most).
   int numCoefficients() const {
     return (hyperextensionPhase ? 3 : 0) + coulombFriction + orificeQuadratic + inertia + positionDependentDamping;
   }
-  bool any() const { return numCoefficients() > 0; }
+  bool any() const { return numCoefficients() > 0 || !expressions.empty(); }
 };
 
 struct MauchCylinderParams {
@@ -142,6 +148,9 @@ class MauchCylinder final : public KneeLaw {
   void calcRegressorRow(double x, double xd, double xdd, double s2, double* row) const;
   /// Coefficients flattened in the regressor's order.
   std::vector<double> getCoefficientVector() const;
+  /// The users' expression forces (N) at x (m), xd (m/s): 0 without any. Part of calcForce,
+  /// not of the regressor row.
+  double calcExpressionForce(double x, double xd) const { return expressions_.empty() ? 0.0 : expressions_.calcForce(x, xd); }
 
   std::string name() const override;
   int numStates() const override { return 1; }
@@ -154,6 +163,7 @@ class MauchCylinder final : public KneeLaw {
  private:
   MauchCylinderParams p_;
   KneeGeometry geometry_;
+  CylinderExpressionForces expressions_;
 };
 
 }  // namespace swingsim

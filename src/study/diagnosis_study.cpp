@@ -4,6 +4,7 @@
 
 #include "core/output_files.h"
 #include "identify/cylinder_plant.h"
+#include "identify/user_cylinder_effect.h"
 #include "identify/swing_plant.h"
 #include "identify/sweep_plant.h"
 #include "io/bench_csv.h"
@@ -189,18 +190,30 @@ void serialize(A& a, UserEffectParameter& q) {
   a.number("start", q.start);
 }
 
-// A user's effect among the candidates (identify/user_swing_effect.h): checked and registered
-// as it is read, so an error names its line.
+// A user's effect among the candidates: a knee moment (identify/user_swing_effect.h) or a
+// cylinder force (identify/user_cylinder_effect.h), checked and registered as it is read, so
+// an error names its line.
 template <class A>
-void serialize(A& a, UserSwingEffect& u) {
+void serialize(A& a, UserEffect& u) {
   a.text("name", u.name);
-  a.text("knee_moment_Nm", u.expression);
+  if constexpr (A::kReading) {
+    u.plant = a.has("cylinder_force_N") ? PlantKind::kCylinder : PlantKind::kSwing;
+    a.require(!a.has("cylinder_force_N") || !a.has("knee_moment_Nm"), "cylinder_force_N",
+              "expected one expression: knee_moment_Nm (a swing study) or cylinder_force_N (a cylinder study)",
+              [] { return std::string("both"); });
+  }
+  const char* key = u.plant == PlantKind::kCylinder ? "cylinder_force_N" : "knee_moment_Nm";
+  a.text(key, u.expression);
   a.namedMaps("parameters", u.parameters, &UserEffectParameter::name);
   if constexpr (A::kReading) {
     try {
-      registerUserSwingEffect(u);
+      if (u.plant == PlantKind::kCylinder) {
+        registerUserCylinderEffect(u);
+      } else {
+        registerUserSwingEffect(u);
+      }
     } catch (const KneeExpressionError& e) {
-      a.require(false, "knee_moment_Nm", describeKneeExpressionError(u.expression, e), [&] { return u.expression; });
+      a.require(false, key, describeKneeExpressionError(u.expression, e), [&] { return u.expression; });
     } catch (const std::invalid_argument& e) {
       a.require(false, "parameters", e.what(), [&] { return u.name; });
     }
@@ -210,22 +223,25 @@ void serialize(A& a, UserSwingEffect& u) {
 // The candidates as written: library names as text, users' effects as maps.
 template <class A>
 void serializeCandidateList(A& a, DiagnosisStudy& s) {
-  std::vector<UserSwingEffect> entries;
+  std::vector<UserEffect> entries;
   if constexpr (!A::kReading)
     for (const auto& n : s.settings.candidates) {
-      auto user = std::find_if(s.userEffects.begin(), s.userEffects.end(), [&](const UserSwingEffect& u) { return u.name == n; });
-      entries.push_back(user != s.userEffects.end() ? *user : UserSwingEffect{n, "", {}});
+      auto user = std::find_if(s.userEffects.begin(), s.userEffects.end(), [&](const UserEffect& u) { return u.name == n; });
+      entries.push_back(user != s.userEffects.end() ? *user : UserEffect{n, "", {}});
     }
-  a.textOrMapList("candidates", entries, &UserSwingEffect::name,
-                  +[](const UserSwingEffect& u) { return u.expression.empty(); }, "an effect's name");
+  a.textOrMapList("candidates", entries, &UserEffect::name,
+                  +[](const UserEffect& u) { return u.expression.empty(); }, "an effect's name");
   if constexpr (A::kReading) {
     s.settings.candidates.clear();
     s.userEffects.clear();
     for (const auto& e : entries) {
       a.require(std::find(s.settings.candidates.begin(), s.settings.candidates.end(), e.name) == s.settings.candidates.end(),
                 "candidates", "an effect named twice", [&] { return e.name; });
-      a.require(e.expression.empty() || s.plant == PlantKind::kSwing, "candidates",
-                "a user's expression is a swing effect (knee_moment_Nm); a " + plantName(s.plant) + " study names library effects",
+      a.require(e.expression.empty() || e.plant == s.plant, "candidates",
+                s.plant == PlantKind::kSweep
+                    ? "a sweep study names library effects (a user's expression is a swing's knee_moment_Nm or a cylinder's cylinder_force_N)"
+                    : "a " + plantName(s.plant) + " study's own effect is " +
+                          (s.plant == PlantKind::kSwing ? "a knee moment (knee_moment_Nm)" : "a cylinder force (cylinder_force_N)"),
                 [&] { return e.name; });
       s.settings.candidates.push_back(e.name);
       if (!e.expression.empty()) s.userEffects.push_back(e);

@@ -70,9 +70,9 @@ struct DiagnosisStudy {
   /// (`moving_hip`, default true); false pins the hip in space as Burkett did.
   bool movingHip = true;
   EffectSelectionSettings settings;
-  /// swing: the users' effects among `candidates:` (an expression each, registered when the
+  /// swing and cylinder: the users' effects among `candidates:` (an expression each, registered when the
   /// study is read; settings.candidates names them in the list's order).
-  std::vector<UserSwingEffect> userEffects;
+  std::vector<UserEffect> userEffects;
   bool fitSwitches = false;           ///< cylinder: refit switch widths and xhy before the baseline
   double plotSeconds = 2.0;           ///< cylinder: s of each record shown in residual-vs-time plots
   double integratorTolerance = 1e-8;  ///< swing: reference integrator tolerance in every refit

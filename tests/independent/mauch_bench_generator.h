@@ -47,6 +47,10 @@ struct MauchTruth {
   /// Outside the library: oil/air compliance, the whole force lags its law by a first-order
   /// filter with this time constant (s). 0 = off.
   double complianceLag = 0;
+  /// Outside the library: an elastic end stop in deep flexion, K (x - start)^2 beyond `start`
+  /// (N/m^2, m), a force of position alone that grows faster than any phase's k x. 0 = off.
+  double endStop = 0;
+  double endStopStart = 0.02;
 };
 
 /// Chien 2014 Table 1, F90E90.
@@ -138,6 +142,7 @@ inline double lawForce(const MauchTruth& m, double x, double xd, double s2) {
   F += m.orifice * xd * std::abs(xd);
   F += m.coulomb * std::tanh(xd / m.coulombWidth);
   F += m.positionDamping * x * xd;
+  if (x > m.endStopStart) F += m.endStop * (x - m.endStopStart) * (x - m.endStopStart);
   return F;
 }
 
