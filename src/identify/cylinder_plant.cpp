@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "identify/cylinder_effects.h"
 #include "identify/cylinder_regression.h"
+#include "identify/missing_force.h"
 #include "identify/user_cylinder_effect.h"
 
 namespace swingsim {
@@ -397,6 +398,14 @@ std::vector<std::string> CylinderPlant::validationStems() const {
   std::vector<std::string> stems;
   for (const auto& d : validate_) stems.push_back(d.stem);
   return stems;
+}
+
+std::string CylinderPlant::describeMissingForce(const PlantModel& model) const {
+  std::vector<BenchData> records = train_;
+  records.insert(records.end(), validate_.begin(), validate_.end());
+  std::vector<double> noise;
+  for (const auto& n : estimateRecordNoise()) noise.push_back(n.sigma);
+  return swingsim::describeMissingForce(calcMissingForce(cylinderParams(model), records, noise));
 }
 
 std::vector<NoiseEstimate> CylinderPlant::estimateRecordNoise() const {

@@ -63,6 +63,8 @@ class CylinderPlant final : public DiagnosisPlant {
   /// Noise of the measured force of every record (N).
   std::vector<NoiseEstimate> estimateRecordNoise() const override;
   std::vector<std::string> warnings() const override { return warnings_; }
+  /// The missing force along every record, training and held out (identify/missing_force.h).
+  std::string describeMissingForce(const PlantModel& model) const override;
   /// After switch_delay or hyperextension_phase is accepted: one joint fit of every
   /// coefficient, the switch widths, xhy and (with a slow latch) the latch rate, within their
   /// ranges, from the candidate's solution and from the multi-start grid (the better one);

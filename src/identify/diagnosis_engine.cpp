@@ -227,7 +227,7 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                          training.records.end());
   out.structureNote = describeResidualStructure(training, nEffRatio);
   out.missing = plant.calcMissing(*out.final.model);
-  if (out.missing) out.missingNote = describeMissingMoment(*out.missing);
+  out.missingNote = out.missing ? describeMissingMoment(*out.missing) : plant.describeMissingForce(*out.final.model);
   out.verdict = "NOT explained: ";
   if (!atNoise)
     out.verdict += "the held-out error on " + worstStem + " is " + fmtRatio(worstRatio) + " x the measurement noise (" +

@@ -140,6 +140,9 @@ class DiagnosisPlant {
   /// (the swing's missing knee moment, identify/missing_moment.h; its note says why it was not
   /// computed); nullopt if the plant cannot say.
   virtual std::optional<MissingMoment> calcMissing(const PlantModel&) const { return std::nullopt; }
+  /// Where the missing quantity acts, as one line, for a plant that measures it directly (the
+  /// cylinder's force on a bench: identify/missing_force.h); "" if the plant does not.
+  virtual std::string describeMissingForce(const PlantModel&) const { return ""; }
   /// A quantity the model applies against an independent measurement the fit never sees
   /// (the swing's knee moment against inverse dynamics); nullopt if the data have none.
   virtual std::optional<HeldBackComparison> compareHeldBack(const PlantModel&) const { return std::nullopt; }

@@ -35,6 +35,10 @@ void writeDiagnosisReport(const std::string& outDir, const DiagnosisReportInput&
           (m->note.empty() ? "" : "Note: " + m->note + "\n\n");
     writeFileAtomic(outDir + "/missing-moment.svg",
                     renderMissingMomentSvg(*m, "The knee moment the measured swings need minus the model's"));
+  } else if (!in.diagnosis->missing && !in.diagnosis->missingNote.empty() && !in.diagnosis->explained) {
+    md += "## The missing force, where it acts\n\n" + in.diagnosis->missingNote +
+          "\n\n(The measured force minus the model's at the measured piston motion, over every record, in 2 mm "
+          "position bins; a region departs from zero beyond 3.5 standard errors of the noise.)\n\n";
   }
   for (const auto& p : writeResidualPlots(outDir, "before", *in.before))
     md += "- before: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";

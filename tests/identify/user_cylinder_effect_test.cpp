@@ -120,6 +120,13 @@ TEST(UserCylinderEffect, AnEndStopOutsideTheLibraryIsExplainedByTheUsersExpressi
   const Diagnosis before = diagnoseStudy(library, "stop-library");
   fs::remove_all(library.dir);
   EXPECT_FALSE(before.explained) << before.verdict;
+  // Where the missing force acts: its largest region pushes the piston out (+) in deep flexion,
+  // starting within 5 mm of the stop's 20 mm (the refitted phases absorb part of it elsewhere).
+  std::printf("  library: %s\n", before.missingNote.c_str());
+  EXPECT_EQ(before.missingNote.rfind("missing force: +", 0), 0u) << before.missingNote;
+  const std::size_t at = before.missingNote.find(" at piston ");
+  ASSERT_NE(at, std::string::npos) << before.missingNote;
+  EXPECT_NEAR(std::stod(before.missingNote.substr(at + 11)), 20.0, 5.0) << before.missingNote;
 
   const StudyFiles user = writeStudy(truth, 301, "stop-user", kStopCandidates);
   const std::string saved = (user.dir / "diagnosed.yaml").string();
