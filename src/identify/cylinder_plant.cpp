@@ -408,6 +408,19 @@ std::string CylinderPlant::describeMissingForce(const PlantModel& model) const {
   return swingsim::describeMissingForce(calcMissingForce(cylinderParams(model), records, noise));
 }
 
+std::vector<std::string> CylinderPlant::recordStems() const {
+  std::vector<std::string> stems;
+  for (const auto* records : {&train_, &validate_})
+    for (const auto& d : *records) stems.push_back(d.stem);
+  return stems;
+}
+
+std::unique_ptr<DiagnosisPlant> CylinderPlant::withOnlyRecord(std::size_t index) const {
+  if (index >= train_.size() + validate_.size()) return nullptr;
+  const BenchData& d = index < train_.size() ? train_[index] : validate_[index - train_.size()];
+  return std::make_unique<CylinderPlant>(start_, std::vector<BenchData>{d}, std::vector<BenchData>{}, false, plotSeconds_);
+}
+
 std::vector<NoiseEstimate> CylinderPlant::estimateRecordNoise() const {
   std::vector<NoiseEstimate> out;
   for (const auto* records : {&train_, &validate_})

@@ -63,6 +63,11 @@ class CylinderPlant final : public DiagnosisPlant {
   /// Noise of the measured force of every record (N).
   std::vector<NoiseEstimate> estimateRecordNoise() const override;
   std::vector<std::string> warnings() const override { return warnings_; }
+  /// Every record's stem, training then held out; a plant with one of them as its only
+  /// training record (from this plant's start model, its switch constants as fitted), for the
+  /// record-agreement rule.
+  std::vector<std::string> recordStems() const override;
+  std::unique_ptr<DiagnosisPlant> withOnlyRecord(std::size_t index) const override;
   /// The missing force along every record, training and held out (identify/missing_force.h).
   std::string describeMissingForce(const PlantModel& model) const override;
   /// After switch_delay or hyperextension_phase is accepted: one joint fit of every
