@@ -3,6 +3,7 @@
 #include "cli/option_checks.h"
 #include "core/output_files.h"
 #include "core/output_paths.h"
+#include "core/special_files.h"
 
 namespace swingsim::cli {
 
@@ -18,7 +19,15 @@ CLI::Option* addTextOption(CLI::App* sub, const std::string& flag, std::optional
 }
 
 CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json) {
-  return addTextOption(sub, "--json", json, "also write the machine-readable result to this JSON file", "FILE");
+  // `-`: the JSON alone on standard output (for a pipe into jq or a script); the text the
+  // command prints goes to standard error instead.
+  CLI::Option* option = sub->add_option_function<std::string>(
+      "--json", [&json](const std::string& v) { json = v == "-" ? takeStandardOutputForData() : v; },
+      "also write the machine-readable result to this JSON file (-: to standard output, the text then to standard "
+      "error)");
+  option->type_name("FILE");
+  option->check(CLI::Validator([](std::string& text) { return text == "-" ? std::string() : writableFilePath()(text); }, ""));
+  return option;
 }
 
 CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out) {

@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
+#include <mutex>
 #include <thread>
 
 #include "core/input_error.h"
@@ -155,6 +157,20 @@ void writeThrough(const std::string& path, const std::string& contents) {
   if (error)
     throw RunError(path + ": write failed after " + std::to_string(done) + " of " + std::to_string(contents.size()) +
                    " bytes (" + std::strerror(error) + ")");
+}
+
+std::string takeStandardOutputForData() {
+  static std::mutex mutex;
+  static std::string path;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (!path.empty()) return path;
+  std::cout.flush();
+  std::fflush(stdout);
+  const int saved = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
+  if (saved < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0)
+    throw RunError(std::string("--json -: cannot keep standard output for the JSON (") + std::strerror(errno) + ")");
+  path = "/proc/self/fd/" + std::to_string(saved);
+  return path;
 }
 
 }  // namespace swingsim

@@ -37,4 +37,11 @@ std::string resolveReplaceTarget(const std::string& path);
 /// RunError naming the file if it cannot be opened or written (no reader, reader gone).
 void writeThrough(const std::string& path, const std::string& contents);
 
+/// `--json -`: standard output is kept for the data alone. From the first call on, what the
+/// process prints to stdout goes to stderr, and the path returned (`/proc/self/fd/N`, a
+/// duplicate of the original stdout, written through as isWriteThroughTarget says) reaches
+/// the original stdout. The same path on every call. Throws RunError if the descriptors
+/// cannot be duplicated.
+std::string takeStandardOutputForData();
+
 }  // namespace swingsim

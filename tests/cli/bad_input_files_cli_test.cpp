@@ -114,6 +114,23 @@ TEST(BadInputFilesCli, CalibrateRefusesTheSameFileTwiceBeforeWritingAnything) {
   EXPECT_EQ(slurp(p), before);
 }
 
+// `--json -`: the JSON alone on standard output (through a pipe here, as into jq), the text on
+// standard error; no file named "-" is written.
+TEST(BadInputFilesCli, JsonDashIsTheJsonAloneOnStandardOutput) {
+  const fs::path dir = freshDir("json-dash");
+  const fs::path json = dir / "piped.json", text = dir / "text.txt";
+  const auto r = runSwingsim("simulate " + writeP1(dir).string() + " --json - 2> " + text.string() + " | cat > " +
+                             json.string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  const std::string piped = slurp(json);
+  ASSERT_FALSE(piped.empty());
+  EXPECT_EQ(piped.front(), '{') << piped;
+  EXPECT_EQ(piped[piped.find_last_not_of('\n')], '}') << piped;
+  EXPECT_THAT(piped, HasSubstr("\"swing_time_s\": "));
+  EXPECT_THAT(slurp(text), HasSubstr("swing time"));  // the text went to standard error
+  EXPECT_FALSE(fs::exists("-"));
+}
+
 TEST(BadInputFilesCli, JsonToDevStdoutIsStreamedAndTheLinkStays) {
   if (!fs::is_symlink(fs::symlink_status("/dev/stdout"))) GTEST_SKIP() << "/dev/stdout is not a link here";
   const fs::path dir = freshDir("dev-stdout");
