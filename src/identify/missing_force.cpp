@@ -1,8 +1,9 @@
 #include "identify/missing_force.h"
 
+#include "core/text_format.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -11,17 +12,6 @@ namespace swingsim {
 namespace {
 
 constexpr double kBinMm = 2.0;  // position bins: a tenth of a swing's stroke (about 26 mm)
-// A bin departs from zero when its mean is beyond this many standard errors: as the missing
-// moment's (the normal 99.9 % two-sided point with a Bonferroni allowance for ~30 bins).
-constexpr double kZ = 3.5;
-constexpr int kMinBinSamples = 5;
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 struct Bin {
   double sum = 0, variance = 0;  // sum of residuals, N; sum of their noise variances, N^2
   int n = 0;
@@ -78,7 +68,7 @@ std::vector<MissingForceRegion> calcMissingForce(const MauchCylinderParams& para
   for (const auto& [key, b] : bins) {
     const double mean = b.n > 0 ? b.sum / b.n : 0.0;
     const double se = std::sqrt(b.variance) / std::max(b.n, 1);
-    const int sign = b.n >= kMinBinSamples && std::abs(mean) > kZ * se ? (mean > 0 ? 1 : -1) : 0;
+    const int sign = b.n >= kMissingRegionMinSamples && std::abs(mean) > kMissingRegionZ * se ? (mean > 0 ? 1 : -1) : 0;
     if (sign != 0 && open && key.first == last.first && key.second == last.second + 1 && sign == lastSign) {
       extend(regions.back(), b, mean);
     } else if (sign != 0) {

@@ -13,6 +13,13 @@
 
 namespace swingsim {
 
+/// The rule both missing quantities (this force and the swing's moment) share: a bin departs
+/// from zero when its mean is beyond this many standard errors, the normal 99.9 % two-sided
+/// point with a Bonferroni allowance for about 30 bins (3.5 sd, p = 0.00047), and has at
+/// least this many samples.
+constexpr double kMissingRegionZ = 3.5;
+constexpr int kMissingRegionMinSamples = 5;
+
 /// One region of the measured state where the missing force departs from zero.
 struct MissingForceRegion {
   bool extending = false;             ///< the piston extends (speed < 0), else it compresses

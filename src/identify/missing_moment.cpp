@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 
+#include "core/text_format.h"
 #include "core/units.h"
+#include "identify/missing_force.h"
 #include "numerics/local_polynomial.h"
 #include "numerics/noise_estimate.h"
 #include "swing/reference_swing.h"
@@ -22,16 +23,6 @@ namespace {
 constexpr double kHalfWindowS = 0.08;
 constexpr double kStopMarginRad = 2.0 * kDegToRad;  // samples whose window comes this near extension are left out
 constexpr double kBinDeg = 5.0;
-// A bin departs from zero when its mean is beyond this many standard errors: the normal
-// 99.9 % two-sided point with a Bonferroni allowance for about 30 bins (3.5 sd, p = 0.00047).
-constexpr double kZ = 3.5;
-constexpr int kMinBinSamples = 5;
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // A bin's samples and, for its mean's noise, the weight each raw sample (record, row) has in
 // the sum of its missing moments through the two accelerations: the windows overlap, so the
@@ -58,10 +49,10 @@ std::vector<MissingMomentRegion> findRegions(const std::map<std::pair<bool, int>
   int lastIndex = 0, lastSign = 0;
   bool lastExtending = false;
   for (const auto& [key, b] : bins) {
-    if (b.n < kMinBinSamples) continue;
+    if (b.n < kMissingRegionMinSamples) continue;
     const double mean = b.sum / b.n;
     const double se = std::sqrt(b.variance(kneeNoises, hipNoises));
-    const int sign = std::abs(mean) > kZ * se ? (mean > 0 ? 1 : -1) : 0;
+    const int sign = std::abs(mean) > kMissingRegionZ * se ? (mean > 0 ? 1 : -1) : 0;
     if (sign == 0) {
       open = nullptr;
       continue;
