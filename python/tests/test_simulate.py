@@ -13,8 +13,8 @@ import swingsim
 # The module and the CLI call the same functions on the same inputs: results agree to the
 # last bit; this allows only for the JSON's shortest round-trip printing of doubles.
 EXACT = 1e-12
-# A change must exceed the converged integrator's 0.1 ms of swing time (README, Convergence
-# study) tenfold to count as measurable; angles likewise, far above its error.
+# A change must exceed the converged integrator's 0.1 ms of swing time (docs/speed.md,
+# "Convergence study") tenfold to count as measurable; angles likewise, far above its error.
 MEASURABLE_S = 1e-3
 MEASURABLE_DEG = 1.0
 

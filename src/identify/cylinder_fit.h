@@ -38,8 +38,8 @@ LinearFit fitLeastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y);
 /// few percent makes individual coefficients meaningless (only their sum is determined).
 constexpr double kIllConditionedLimit = 1e8;
 
-/// Physical ranges of the switch constants searched by the fit (docs/mauch.md, "Fitting the
-/// switch constants", says where each comes from).
+/// Physical ranges of the switch constants searched by the fit (docs/mauch.md, "Fitting", says
+/// where each comes from).
 struct SwitchConstantRanges {
   double velocityWidth[2] = {1e-5, 2e-2};     ///< m/s: sensor resolution .. 10 % of peak piston speed
   double positionWidth[2] = {1e-6, 2e-3};     ///< m: sensor resolution .. 5 % of the stroke

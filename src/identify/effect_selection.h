@@ -93,7 +93,7 @@ struct LrTest {
 };
 LrTest calcLrTest(double rssSmaller, double rssBigger, const ResidualSegments& biggerResidual, int dof);
 
-/// The near-miss rule (docs/diagnosis.md, "The acceptance rule"): a candidate fitted on
+/// The near-miss rule (docs/diagnosis.md, "A near miss cannot pass"): a candidate fitted on
 /// several training records must not buy its pooled gain by making one of them worse. For each
 /// record, n_eff ln(RSS_candidate / RSS_current) on the record's own effective sample size (of
 /// the candidate's residual) is held against the chi^2(dof) quantile at 1 - alpha: above it,

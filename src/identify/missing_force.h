@@ -4,7 +4,7 @@
 // position and the direction of motion, and said in one line per region where it departs from
 // zero beyond the measurement noise. The cylinder's counterpart of the swing's missing moment
 // (identify/missing_moment.h): a bench measures the force itself, so no inverse dynamics or
-// smoother is needed (docs/diagnosis.md, "The missing moment").
+// smoother is needed (docs/diagnosis.md, "The cylinder's missing force").
 #include <string>
 #include <vector>
 

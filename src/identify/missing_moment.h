@@ -6,7 +6,7 @@
 // band. Mapped over knee angle and the direction of motion, and said in one line per region
 // where it departs from zero beyond its band: the mechanism's place in the measured state,
 // where the residual of the angles points at its consequences (docs/diagnosis.md,
-// "The missing moment").
+// "The missing moment, where it acts").
 #include <string>
 #include <vector>
 

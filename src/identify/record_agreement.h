@@ -1,6 +1,6 @@
 #pragma once
-// The record-agreement rule of `swingsim diagnose` (docs/diagnosis.md, "The acceptance
-// rule"): an effect that is in the data has one value in every record. The chosen candidate,
+// The record-agreement rule of `swingsim diagnose` (docs/diagnosis.md, "A near miss
+// cannot pass"): an effect that is in the data has one value in every record. The chosen candidate,
 // already fitted on the pooled training records, is refitted on each record alone (training
 // and held out); where its parameter's per-record values differ by more than their intervals
 // allow (Cochran's heterogeneity test), it stands for a law of another shape that acts

@@ -13,7 +13,7 @@
 // standard row only and predicted at its lowered rows. A participant whose standard-location
 // time no time scale in range reaches is outside the model: reported (warnings), never in a
 // fold or a fit. Compared quantity: swing time in ms; the likelihood uses the lowered rows'
-// residuals over their standard errors (sd / sqrt(n)). docs/diagnosis.md, "Sweep plant".
+// residuals over their standard errors (sd / sqrt(n)). docs/diagnosis.md, "The sweep".
 #include <string>
 #include <vector>
 

@@ -360,7 +360,7 @@ void YamlMap::finish() const {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
     if (std::find(used_.begin(), used_.end(), key) == used_.end()) {
       throw InputError(path_ + ":" + std::to_string(kv.first.Mark().line + 1) + ": " + prefix_ +
-                       key + ": unknown key (check the spelling; see README 'File formats')");
+                       key + ": unknown key (check the spelling; see docs/formats.md)");
     }
   }
 }

@@ -31,8 +31,8 @@ struct DampingTableParams {
 /// Resisting moment from a damping table: a monotone cubic in flexion (monotone_cubic.h,
 /// flat ends) held constant outside the measured range. A dynamometer samples a smooth
 /// curve; the C1 interpolant has no kinks at the samples, where a linear one made the
-/// integrator reject steps and the swing time converge erratically with the accuracy (README,
-/// Convergence study). Throws std::invalid_argument on bad parameters.
+/// integrator reject steps and the swing time converge erratically with the accuracy (docs/speed.md,
+/// "Convergence study"). Throws std::invalid_argument on bad parameters.
 class DampingTable final : public KneeLaw {
  public:
   explicit DampingTable(DampingTableParams params);

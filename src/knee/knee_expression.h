@@ -1,7 +1,7 @@
 #pragma once
 // A knee moment a user writes as an expression (muparser, Debian's libmuparser-dev) in the
 // knee's and the hip's state and the time since toe-off: the effect a diagnosis finds missing
-// and no library effect stands for (docs/diagnosis.md, "Your own effect"). The result is a
+// and no library effect stands for (docs/diagnosis.md, "Your own effect: a knee moment you write"). The result is a
 // knee moment in N m, positive in flexion (KneeLaw's convention), so a moment resisting
 // extension is positive while the knee extends. In the spirit of OpenSim's
 // ExpressionBasedCoordinateForce (an expression in q and qdot inside the model file).

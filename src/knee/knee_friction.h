@@ -12,7 +12,7 @@ struct KneeFrictionParams {
   /// Width of the smooth switch-off around activeBelow, rad.
   double angleWidth = 0.5 * kDegToRad;
   /// Velocity smoothing: moment = -Tc tanh(rate / smoothingRate). Chosen by the
-  /// convergence study in the README; smaller makes the equations stiff.
+  /// convergence study (docs/speed.md, "Convergence study"); smaller makes the equations stiff.
   double smoothingRate = 1.0;  ///< rad/s
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // The hip moment that drives the swing, as a function of time since toe-off. Burkett 2004
 // measured it per participant on an isokinetic dynamometer but did not publish it; see the
-// README ("Assumptions") for the profile we use and how it is calibrated.
+// docs/assumptions.md ("Hip moment") for the profile we use and how it is calibrated.
 #include <string>
 #include <utility>
 #include <vector>

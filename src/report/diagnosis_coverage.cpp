@@ -9,7 +9,8 @@ namespace swingsim {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// Why a sweep candidate gets no seeds (docs/diagnosis.md, "Why the sweep names almost nothing").
+// Why a sweep candidate gets no seeds (docs/diagnosis.md, "Why the sweep names almost nothing
+// at these sizes").
 constexpr const char* kAfterSwingEnd =
     "the sweep cannot measure it: it acts below the knee angle at which a swing ends (friction below 4 deg, the stop "
     "below 0 deg, the swing's end at 6 deg), so it moves no swing time (under 1e-5 ms in the calibration study); a "
@@ -62,8 +63,9 @@ constexpr MeasuredCoverage kMeasured[] = {
     // (tests/identify/sweep_calibration_cases.h).
     {"hip_effort_adaptation", "exponent", 20, 9, 20, 18, -2.5, 9.3, ""},
     {"hip_tempo_lowering", "change_per_100mm", 20, 10, 20, 17, -5.3, 16.5, ""},
-    // The sweep plant (docs/diagnosis.md, "Why the sweep names almost nothing"): candidates
-    // whose hidden sizes no table of swing times can show get no seeds (seeds 0), only why.
+    // The sweep plant (docs/diagnosis.md, "Why the sweep names almost nothing at these
+    // sizes"): candidates whose hidden sizes no table of swing times can show get no seeds
+    // (seeds 0), only why.
     {"knee_friction_scale", "", 0, 0, 0, 0, kNaN, kNaN, kAfterSwingEnd},
     {"stop_restitution", "", 0, 0, 0, 0, kNaN, kNaN, kAfterSwingEnd},
     {"stop_stiffness", "", 0, 0, 0, 0, kNaN, kNaN, kAfterSwingEnd},

@@ -91,9 +91,10 @@ std::string formatTerminalImpactSection(const SweepResults& results) {
   std::string md = "## Terminal impact: bounce and the interior optimum (Burkett's findings)\n\n";
   md += "Burkett et al. saw the knee bounce out of extension at large lowerings for every participant, and their "
         "model's swing time rise again past an interior optimum. The hyperextension stop here is a Hertz contact with a "
-        "coefficient of restitution (README \"Terminal impact\"); the swing ends when the knee has settled in the zone "
-        "of stability, so a bounce lengthens it. Each participant's first stop impact is booked by cause (work from "
-        "contact to the top of the rebound), and the sweep is repeated without the knee friction near extension.\n\n";
+        "coefficient of restitution (docs/assumptions.md, \"Hyperextension stop\"); the swing ends when the knee has "
+        "settled in the zone of stability, so a bounce lengthens it. Each participant's first stop impact is booked "
+        "by cause (work from contact to the top of the rebound), and the sweep is repeated without the knee friction "
+        "near extension.\n\n";
   md += mdRow({"participant", "Tc (N m)", "bounces at", "interior optimum", "without friction: bounces at", "without friction: fastest (m)"});
   md += mdRow({"---", "---", "---", "---", "---", "---"});
   auto list = [](const std::vector<double>& v) {
@@ -528,10 +529,10 @@ std::string formatAssumptionsSection(const SweepStudy& study) {
   md += std::string("- Integrator: ") + integratorName(study.swing.integrator) + ", accuracy " +
         fmt("%g", study.swing.accuracy) +
         (study.swing.accuracy <= converged
-             ? " (swing times converged to 0.1 ms: README, Convergence study).\n"
+             ? " (swing times converged to 0.1 ms: docs/speed.md, \"Convergence study\").\n"
              : " -- LOOSER than the " + fmt("%g", converged) +
-                   " at which this integrator's swing times converge to 0.1 ms (README, Convergence study): "
-                   "its swing times may be off by more than that.\n");
+                   " at which this integrator's swing times converge to 0.1 ms (docs/speed.md, \"Convergence "
+                   "study\"): its swing times may be off by more than that.\n");
   return md;
 }
 

@@ -15,7 +15,7 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
 
 /// The `--json` document of the sweep issue; with `uncertainty`, each participant also has
 /// fastest_lowering_interval_m, fastest_time_interval_s, sensitivity, uncertainty_samples
-/// and seed (README, File formats).
+/// and seed (docs/formats.md, "Outputs"; docs/uncertainty.md, "JSON").
 std::string formatSweepJson(const SweepResults& results, const UncertaintyResults* uncertainty = nullptr);
 
 /// Plain-text summary of the uncertainty analysis: the intervals per participant and the

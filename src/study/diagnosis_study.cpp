@@ -163,7 +163,7 @@ void serializeRecordStudy(A& a, DiagnosisStudy& s) {
         if (!isMotionFile(p)) continue;
         a.require(hasMotionColumns, key,
                   "an OpenSim motion file needs the study's motion_columns map ({hip: NAME, knee: NAME, hip_moment: NAME}; "
-                  "README \"File formats\")", [&] { return p; });
+                  "docs/measured-data.md, \"Motion files and their columns\")", [&] { return p; });
         a.require(s.drive == SwingDrive::kThighKinematics || !motion.hipMoment.empty(), "motion_columns",
                   "hip_moment: expected the label of the hip moment column (N m), the drive the swing diagnosis needs",
                   [] { return std::string("no hip_moment key"); });

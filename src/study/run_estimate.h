@@ -18,7 +18,7 @@ struct RunSize {
   int jobs = 1;                 ///< worker threads, 0 = all cores
 };
 
-/// Seconds a swing takes on one core, for estimates (docs/robustness.md, "Large grids"):
+/// Seconds a swing takes on one core, for estimates (docs/robustness.md, "Large runs"):
 /// measured on the Burkett sweep (435
 /// swings of `swingsim sweep studies/burkett2004.yaml --jobs 1` in 2.7 s); a swing with a
 /// stiff knee or a tight accuracy can take several times longer: a rough estimate.

@@ -6,7 +6,7 @@
 // the run it belongs to (study, fingerprints of its inputs and of the assumption table,
 // samples, seed, slice), so a resume or a merge refuses swings from another run. Swing times
 // are written with 17 significant digits, so they read back bit for bit (docs/uncertainty.md,
-// "Interrupted runs and shards"). Its keys are listed once, for writing and reading
+// "Interrupted runs, shards and merge"). Its keys are listed once, for writing and reading
 // (io/json_archive.h).
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
-// Calibration of the one free hip-moment parameter per participant (README "Assumptions",
-// "Calibration"): the profile's time scale, chosen so the standard-location swing time equals a
+// Calibration of the one free hip-moment parameter per participant (docs/assumptions.md,
+// "Hip moment"): the profile's time scale, chosen so the standard-location swing time equals a
 // target (Burkett Table 3's model prediction).
 #include <limits>
 #include <optional>

@@ -164,7 +164,7 @@ std::uint64_t countSweepSwings(const SweepStudy& study);
 
 /// Largest plain sweep run unless the user raises the limit (`sweep --max-swings N`): about
 /// 230 times the Burkett study (435 swings), some 10 min on one core at the measured 6 ms a
-/// swing (docs/robustness.md, "Large grids"); a grid of millions of swings (long added-mass
+/// swing (docs/robustness.md, "Large runs"); a grid of millions of swings (long added-mass
 /// lists) would run for hours to days.
 constexpr std::uint64_t kDefaultMaxSweepSwings = 100000;
 

@@ -18,7 +18,8 @@ constexpr double kDurationLow = 0.15, kDurationHigh = 0.25;             // s, ea
 constexpr double kThighTargetLowDeg = 15, kThighTargetHighDeg = 25;     // deg
 constexpr double kFrictionLow = 5, kFrictionHigh = 15;                  // N m, the span of Burkett Table 2
 constexpr double kStopStiffnessLow = 1.25e4, kStopStiffnessHigh = 5.0e4;  // N m/rad^1.5 (knee/joint_stop.h)
-constexpr double kRestitutionLow = 0.3, kRestitutionHigh = 0.5;          // docs/assumptions.md, Sources
+// docs/assumptions.md, "Sources for the values no paper gives":
+constexpr double kRestitutionLow = 0.3, kRestitutionHigh = 0.5;
 constexpr double kSettleDwellLow = 0.10, kSettleDwellHigh = 0.20;        // s (model/leg_parameters.h)
 constexpr double kAccuracyLow = 3e-6, kAccuracyHigh = 2e-5;
 
@@ -46,7 +47,7 @@ void addChoiceAndTimeScale(std::vector<SweepAssumption>& table) {
     a.unit = "choice";
     a.discrete = true;
     a.choices = {"fixed_from_proximal", "proportional"};
-    a.source = "Burkett 2004's sentence on COMs allows both readings (README, Assumptions: COM rule); 50/50";
+    a.source = "Burkett 2004's sentence on COMs allows both readings (docs/assumptions.md, \"COM rule\"); 50/50";
     a.read = [](const SweepVariant& v) { return v.participant.comRule == ComRule::kProportional ? 1.0 : 0.0; };
     a.calcRange = [read = a.read](const SweepVariant& v) { return AssumptionRange{read(v), 0.0, 1.0, true}; };
     a.apply = [](SweepVariant& v, double x) {
@@ -144,7 +145,7 @@ void addSwingEndAndFriction(std::vector<SweepAssumption>& table) {
     a.name = "swing-end thigh target flexion";
     a.unit = "deg";
     a.source = "Burkett's \"defined position of flexion\" is not given; 15-25 deg around our 20 deg (25 deg was "
-               "tried and left P2 without a swing end from 0.10 m: README, Swing-end rule)";
+               "tried and left P2 without a swing end from 0.10 m: docs/assumptions.md, \"Swing-end rule\")";
     a.read = [](const SweepVariant& v) { return v.participant.swingEnd.thighTargetFlexion * kRadToDeg; };
     a.calcRange = [read = a.read](const SweepVariant& v) {
       return around(read(v), kThighTargetLowDeg, kThighTargetHighDeg);
@@ -213,8 +214,8 @@ void addStopAndIntegrator(std::vector<SweepAssumption>& table) {
     a.name = "integrator accuracy";
     a.unit = "1";
     a.logUniform = true;
-    a.source = "README convergence study: swing times converged to 0.1 ms from 2e-5 down; 3e-6 to 2e-5, drawn "
-               "uniformly in log(accuracy)";
+    a.source = "docs/speed.md, \"Convergence study\": swing times converged to 0.1 ms from 2e-5 down; 3e-6 to "
+               "2e-5, drawn uniformly in log(accuracy)";
     a.read = [](const SweepVariant& v) { return v.swing.accuracy; };
     a.calcRange = [read = a.read](const SweepVariant& v) { return around(read(v), kAccuracyLow, kAccuracyHigh); };
     a.apply = [](SweepVariant& v, double x) { v.swing.accuracy = x; };

@@ -40,7 +40,7 @@ double calcHipHeight(const Participant& p) {
 namespace {
 
 // Every integrator once: its YAML/CLI key, its display name, and the loosest accuracy at
-// which its swing times converge to 0.1 ms (README, Convergence study). In enum order.
+// which its swing times converge to 0.1 ms (docs/speed.md, "Convergence study"). In enum order.
 struct IntegratorInfo {
   const char* key;
   const char* name;

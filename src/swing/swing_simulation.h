@@ -38,7 +38,8 @@ std::optional<SwingIntegrator> findIntegrator(const std::string& key);
 std::string checkAccuracy(double accuracy);
 
 /// Integrator settings, one line each; what each one does and why is in docs/swing-options.md.
-/// The defaults are the converged settings of the README's convergence study.
+/// The defaults are the converged settings of the convergence study (docs/speed.md,
+/// "Convergence study").
 struct SwingOptions {
   double accuracy = 1e-5;           ///< relative (and absolute) accuracy of the integrator
   SwingIntegrator integrator = SwingIntegrator::kDormandPrince;  ///< which integrator steps the leg
@@ -177,8 +178,9 @@ const char* driveKey(SwingDrive drive);
 double calcHipHeight(const Participant& p);
 
 /// The loosest accuracy at which this integrator's swing time is converged to 0.1 ms in the
-/// README's convergence study (Dormand-Prince 1e-5 also over the whole sweep, by the guard
-/// test; Runge-Kutta-Merson 1e-4, Runge-Kutta-Feldberg 1e-5, Runge-Kutta 3 1e-3, Verlet 1e-5).
+/// convergence study (docs/speed.md, "Convergence study"; Dormand-Prince 1e-5 also over the
+/// whole sweep, by the guard test; Runge-Kutta-Merson 1e-4, Runge-Kutta-Feldberg 1e-5,
+/// Runge-Kutta 3 1e-3, Verlet 1e-5).
 double calcConvergedAccuracy(SwingIntegrator integrator);
 
 /// Options of the plain path: Simbody's Runge-Kutta-Merson with its event handlers at
@@ -186,10 +188,10 @@ double calcConvergedAccuracy(SwingIntegrator integrator);
 /// reference swing (reference_swing.h), so checks against the reference stay independent.
 SwingOptions makePlainPathOptions(double accuracy, double eventWindow);
 
-/// The fast path on Simbody's Runge-Kutta-Merson at `accuracy` (converged at 1e-4, README
-/// "Convergence study"): for results that must not share integration code with the
-/// reference swing (the synthetic truth of the swing diagnosis, the Simbody check of a
-/// diagnosed model).
+/// The fast path on Simbody's Runge-Kutta-Merson at `accuracy` (converged at 1e-4,
+/// docs/speed.md, "Convergence study"): for results that must not share integration code
+/// with the reference swing (the synthetic truth of the swing diagnosis, the Simbody check of
+/// a diagnosed model).
 SwingOptions makeSimbodyIntegratorOptions(double accuracy = 1e-4);
 
 /// Runs one swing (SwingRun, swing/swing_run.h). Throws RunError (with the time, the state

@@ -136,7 +136,7 @@ TEST(YamlArchive, FormatDegreesIsShortAndExact) {
 TEST(YamlArchive, BadInputNamesFileLineAndKey) {
   const std::string base = kSample;
   EXPECT_EQ(inputErrorOf(base + "extra: {name: w, mass_kg: -1}\n"), "sample.yaml:9: extra.mass_kg: must be positive (got -1)");
-  EXPECT_EQ(inputErrorOf(base + "unknown: 1\n"), "sample.yaml:9: unknown: unknown key (check the spelling; see README 'File formats')");
+  EXPECT_EQ(inputErrorOf(base + "unknown: 1\n"), "sample.yaml:9: unknown: unknown key (check the spelling; see docs/formats.md)");
   std::string twice = base;
   twice.replace(twice.find("count: 1"), 8, "count: 2");
   EXPECT_EQ(inputErrorOf(twice), "sample.yaml:4: count: must not exceed the number of items (got 2)");
