@@ -1,4 +1,5 @@
-# Type stub of the swingsim package (python/swingsim/__init__.py), for editors' completion
+# Type stub of the swingsim package (python/swingsim/__init__.py, which re-exports the names
+# defined in _errors.py, _records.py, _results.py and _calls.py), for editors' completion
 # and type checkers. Units are in the names, as in the YAML files (docs/python.md).
 import os
 from typing import Any, Dict, Iterator, KeysView, List, Optional, Union
