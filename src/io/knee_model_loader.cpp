@@ -197,36 +197,32 @@ void serialize(A& a, KneeExpressionParameter& q) {
   a.number("value", q.value);
 }
 
+// A user's expression under `key`, checked by `check` when read (the parser's message and
+// character at the key's line): a knee moment or a cylinder force.
 template <class A>
-void serialize(A& a, KneeExpressionParams& x) {
+void serializeExpression(A& a, KneeExpressionParams& x, const char* key, void (*check)(const KneeExpressionParams&)) {
   a.text("name", x.name);
-  a.text("knee_moment_Nm", x.expression);
+  a.text(key, x.expression);
   a.namedMaps("parameters", x.parameters, &KneeExpressionParameter::name);
   if constexpr (A::kReading) {
     std::string problem;
     try {
-      checkKneeExpression(x);
+      check(x);
     } catch (const KneeExpressionError& e) {
       problem = describeKneeExpressionError(x.expression, e);
     }
-    a.require(problem.empty(), "knee_moment_Nm", problem, [&] { return x.expression; });
+    a.require(problem.empty(), key, problem, [&] { return x.expression; });
   }
 }
 
 template <class A>
+void serialize(A& a, KneeExpressionParams& x) {
+  serializeExpression(a, x, "knee_moment_Nm", checkKneeExpression);
+}
+
+template <class A>
 void serialize(A& a, KneeExpressionParams& x, CylinderForceOf) {
-  a.text("name", x.name);
-  a.text("cylinder_force_N", x.expression);
-  a.namedMaps("parameters", x.parameters, &KneeExpressionParameter::name);
-  if constexpr (A::kReading) {
-    std::string problem;
-    try {
-      checkCylinderExpression(x);
-    } catch (const KneeExpressionError& e) {
-      problem = describeKneeExpressionError(x.expression, e);
-    }
-    a.require(problem.empty(), "cylinder_force_N", problem, [&] { return x.expression; });
-  }
+  serializeExpression(a, x, "cylinder_force_N", checkCylinderExpression);
 }
 
 template <class A>
