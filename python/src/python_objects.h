@@ -1,5 +1,5 @@
 #pragma once
-// The package's file objects (swingsim/__init__.py: Participant, KneeModel,
+// The package's file objects (swingsim/_records.py: Participant, KneeModel,
 // DiagnosisStudy) as the C++ loaders' input: an argument that is a path is loaded, an object
 // goes back to YAML text and through the same loader, so every check of a file applies.
 #include <pybind11/pybind11.h>
@@ -15,7 +15,7 @@ namespace swingsim::python {
 /// The folder of `path` ("." for a bare file name).
 std::string folderOf(const std::string& path);
 
-/// An instance of swingsim/__init__.py's class `name` (Participant, KneeModel, ...)?
+/// An instance of the package's class `name` (Participant, KneeModel, ...)?
 bool isPackageObject(const pybind11::handle& value, const char* name);
 
 /// An object's YAML text (its to_dict()) and the name its messages carry: its origin with

@@ -24,7 +24,15 @@ class Result(dict):
         return _copy.deepcopy(dict(self))
 
     def _summary(self):
-        return ", ".join(f"{k}={v!r}" for k, v in self.items() if not isinstance(v, (dict, list)))
+        # Scalars in full; a nested dict or list by its size, so a result of nested parts
+        # (a sweep's participants, a diagnosis's records) does not print as empty.
+        def brief(v):
+            if isinstance(v, dict):
+                return f"{{{len(v)} keys}}"
+            if isinstance(v, list):
+                return f"[{len(v)} items]"
+            return repr(v)
+        return ", ".join(f"{k}={brief(v)}" for k, v in self.items())
 
     def __repr__(self):
         return f"{type(self).__name__}({self._summary()})"

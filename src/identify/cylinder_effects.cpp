@@ -64,10 +64,18 @@ bool hasSlowLatch(const MauchCylinderParams& p) {
 // MauchCylinder::calcRegressorRow: hyperextension (3), Coulomb, orifice, inertia, position.
 const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
   using E = EffectId;
+  using K = PlantKind;
   using P = MauchCylinderParams;
   using Train = std::vector<BenchData>;
   static const std::vector<CylinderEffectRecord> table = {
-      {E::kCoulombFriction, [](const P& p) { return p.effects.coulombFriction; },
+      {{E::kCoulombFriction, K::kCylinder, "coulomb_friction",
+       "a seal friction force of constant size that always opposes the piston's motion",
+       "Chien 2014 tried a Coulomb term opposing motion (it made their fit worse)",
+       "records at several speeds (its size does not grow with speed)",
+       {"force_N", "width_m_per_s"}, 1,
+       // tanh width Fc tanh(xd / w), m/s
+       {0.002, 0.005, 0.01, 0.02, 0.05}, 1.0, false},
+       [](const P& p) { return p.effects.coulombFriction; },
        [](P& p, double grid) {
          p.effects.coulombFriction = true;
          p.effects.coulombForce = 0;
@@ -85,7 +93,12 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
          model.effects.coulombForce = 0;
          model.effects.coulombWidth = fromB.effects.coulombWidth;
        }},
-      {E::kOrificeQuadratic, [](const P& p) { return p.effects.orificeQuadratic; },
+      {{E::kOrificeQuadratic, K::kCylinder, "orifice_quadratic",
+       "extra resistance growing with the square of piston speed: turbulent flow through the orifices",
+       "Chien 2014: slow gait fits worst, likely non-linear flow through cylinder, orifices and valve",
+       "records at clearly different speeds (slow and fast walking)",
+       {"coefficient_Ns2_per_m2"}, 1, {}, 1.0, false},
+       [](const P& p) { return p.effects.orificeQuadratic; },
        [](P& p, double) {
          p.effects.orificeQuadratic = true;
          p.effects.orificeCoefficient = 0;
@@ -97,7 +110,12 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
          return p.effects.orificeCoefficient > 0;
        },
        1, 2},
-      {E::kInertia, [](const P& p) { return p.effects.inertia; },
+      {{E::kInertia, K::kCylinder, "inertia",
+       "a force proportional to piston acceleration: the moving mass of piston, rod and oil",
+       "Chien 2014 tried an acceleration term (it did not help on their data)",
+       "records with different frequency content (another cadence or a sine sweep)",
+       {"mass_kg"}, 1, {}, 1.0, false},
+       [](const P& p) { return p.effects.inertia; },
        [](P& p, double) {
          p.effects.inertia = true;
          p.effects.pistonMass = 0;
@@ -109,7 +127,12 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
          return p.effects.pistonMass > 0;
        },
        1, 3},
-      {E::kPositionDependentDamping, [](const P& p) { return p.effects.positionDependentDamping; },
+      {{E::kPositionDependentDamping, K::kCylinder, "position_dependent_damping",
+       "damping that changes along the stroke (metering grooves, valve opening with position)",
+       "Chien 2014's phases have constant damping; the valve geometry varies along the stroke",
+       "records with different knee-angle amplitudes",
+       {"coefficient_Ns_per_m2"}, 1, {}, 1.0, false},
+       [](const P& p) { return p.effects.positionDependentDamping; },
        [](P& p, double) {
          p.effects.positionDependentDamping = true;
          p.effects.positionDamping = 0;
@@ -117,7 +140,12 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
        [](P& p) { p.effects.positionDependentDamping = false; },
        [](const P& p) { return std::vector<double>{p.effects.positionDamping}; },
        positionDampingIsPhysical, 1, 4},
-      {E::kHyperextensionPhase, [](const P& p) { return p.effects.hyperextensionPhase; },
+      {{E::kHyperextensionPhase, K::kCylinder, "hyperextension_phase",
+       "a separate force law while the piston is hyperextended (Chien's 4th phase)",
+       "Chien 2014 Eq. 11: the 4-phase model adds hyperextension to the 2-phase model",
+       "records with longer or deeper hyperextension",
+       {"f_N", "k_N_per_m", "c_Ns_per_m"}, 3, {}, 1.0, false},
+       [](const P& p) { return p.effects.hyperextensionPhase; },
        [](P& p, double) {
          p.effects.hyperextensionPhase = true;
          p.effects.hyperextension = {};
@@ -136,7 +164,14 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
        [](const P& p) -> std::string { return p.phases != 2 ? "the 4-phase model already has a hyperextension phase" : ""; },
        nullptr, CylinderRefit::kSwitches, splitIntoFourPhases},
       // No column: a slower latch is the S2 latch rate k of Chien 2014 Eq. 6.
-      {E::kSwitchDelay, hasSlowLatch,
+      {{E::kSwitchDelay, K::kCylinder, "switch_delay",
+       "the valve latch (balance wheel) needs time to turn: swing flexion starts partly with stance resistance",
+       "Chien 2014 discussion: the balance-wheel release timing (about 0.1 s) is not reproduced by fast switches",
+       "records with longer hyperextension holds (a slow latch completes given time)",
+       {"time_constant_s"}, 0,
+       // latch time constant 1/k, s (Chien 2014: the balance-wheel delay is "about 0.1 s")
+       {0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1}, 1.0, false},
+       hasSlowLatch,
        [](P& p, double grid) { p.switches.latchRate = 1.0 / grid; },
        [](P& p) { p.switches.latchRate = kPublishedLatchRate; },
        [](const P& p) { return std::vector<double>{1.0 / p.switches.latchRate}; },
@@ -159,7 +194,7 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
 
 const CylinderEffectRecord& findCylinderEffectRecord(EffectId effect) {
   for (const auto& r : cylinderEffectRecords())
-    if (r.id == effect) return r;
+    if (r.id() == effect) return r;
   if (const CylinderEffectRecord* user = findUserCylinderEffectRecord(effect)) return *user;
   throw std::invalid_argument("not a cylinder effect: " + describeEffect(effect).name);
 }
@@ -186,7 +221,7 @@ std::vector<int> cylinderEffectColumns(const MauchCylinderParams& p, EffectId ef
   std::vector<int> cols;
   for (const auto* r : byColumn) {
     if (!r->has(p)) continue;
-    if (r->id == effect)
+    if (r->id() == effect)
       for (int i = 0; i < r->columns; ++i) cols.push_back(col + i);
     col += r->columns;
   }

@@ -4,8 +4,8 @@
 // off, its values, its regression columns, its physical sign rule, when it does not apply and
 // whether its acceptance frees the switch constants. The effect's law is the Mauch cylinder's
 // (knee/mauch_cylinder.h); its user-facing text (name, sentences, parameter names, grid) is
-// its descriptor in model/effect_table.cpp. Adding a cylinder candidate: its law, its
-// descriptor, its record, its test (tests/identify/cylinder_effects_test.cpp). A user's effect
+// its descriptor, the record's first part (identify/effect_table.h). Adding a cylinder
+// candidate: its law, its id, its record, its test (tests/identify/cylinder_effects_test.cpp). A user's effect
 // (a cylinder_force_N expression in a study's candidates) is a record of the same kind, made
 // at run time (identify/user_cylinder_effect.h).
 #include <functional>
@@ -15,7 +15,7 @@
 
 #include "identify/bench_data.h"
 #include "knee/mauch_cylinder.h"
-#include "model/effect_table.h"
+#include "identify/effect_table.h"
 #include "numerics/bounded_least_squares.h"
 
 namespace swingsim {
@@ -29,7 +29,9 @@ enum class CylinderRefit {
 
 /// One candidate effect of the cylinder plant. Hooks left null take the default named.
 struct CylinderEffectRecord {
-  EffectId id;
+  /// What the effect is, for users: name, sentences, parameters, grid (identify/effect_table.h).
+  EffectDescriptor descriptor;
+  EffectId id() const { return descriptor.id; }
   /// Whether a model has the effect.
   std::function<bool(const MauchCylinderParams&)> has = nullptr;
   /// Switches it on: its linear coefficients 0 until fitted, its grid value set (SI).

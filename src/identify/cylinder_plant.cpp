@@ -234,7 +234,7 @@ PlantFit CylinderPlant::summarize(const CylinderFit& fitted) const {
   }
   for (const auto& record : cylinderEffectRecords()) {
     if (!record.has(fitted.params)) continue;
-    const EffectDescriptor& descriptor = describeEffect(record.id);
+    const EffectDescriptor& descriptor = describeEffect(record.id());
     std::vector<double> se;
     for (int col : cylinderEffectColumns(fitted.params, descriptor.id)) {
       se.push_back(fitted.regression.standardErrors[static_cast<std::size_t>(col)]);

@@ -18,7 +18,7 @@
 #include "identify/comparison.h"
 #include "identify/effect_selection.h"
 #include "identify/missing_moment.h"
-#include "model/effect_table.h"
+#include "identify/effect_table.h"
 #include "numerics/noise_estimate.h"
 #include "numerics/residual_analysis.h"
 

@@ -1,13 +1,14 @@
 #pragma once
-// The sweep plant's candidate effects (identify/sweep_plant.h), one record each: the
-// assumption it sets, its physical range and where that range comes from (lawTable() in
-// sweep_effects.cpp), and how a model's shared values act on a participant's swing.
+// The sweep plant's candidate effects (identify/sweep_plant.h), one record each: its
+// descriptor (identify/effect_table.h), the assumption it sets, its physical range and where
+// that range comes from (sweepEffectLaws() in sweep_effects.cpp), and how a model's shared
+// values act on a participant's swing.
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "identify/diagnosis_engine.h"
-#include "model/effect_table.h"
+#include "identify/effect_table.h"
 #include "sweep/sweep_assumptions.h"
 
 namespace swingsim {
@@ -30,7 +31,9 @@ const SweepModelParams& sweepParams(const PlantModel& model);
 
 /// The range and law of one sweep effect (the table in sweep_effects.cpp).
 struct SweepEffectLaw {
-  EffectId id{};
+  /// What the effect is, for users: name, sentences, parameters (identify/effect_table.h).
+  EffectDescriptor descriptor;
+  EffectId id() const { return descriptor.id; }
   /// The assumption of sweepAssumptions() it sets ("" = the plant's own law: the hip tempo).
   std::string assumption;
   bool relative = false;  ///< the value multiplies each participant's own (Tc)
@@ -38,6 +41,8 @@ struct SweepEffectLaw {
   bool logScale = false;
   std::string rangeSource;  ///< why this range
 };
+/// Every sweep effect's law, in the effect table's order.
+const std::vector<SweepEffectLaw>& sweepEffectLaws();
 /// The law of a sweep effect; throws std::logic_error for another plant's effect.
 const SweepEffectLaw& findSweepEffectLaw(EffectId id);
 /// The assumption of sweepAssumptions() with `key`; throws std::logic_error if none.

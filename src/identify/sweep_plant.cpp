@@ -167,7 +167,7 @@ SweepPlant::SubsetFit SweepPlant::fitSubset(const SweepModelParams& model, const
   for (std::size_t k : free) {
     const SweepEffectLaw& law = findSweepEffectLaw(model.effects[k].first);
     BoundedParameter b;
-    b.name = describeEffect(law.id).name;
+    b.name = describeEffect(law.id()).name;
     b.start = std::clamp(model.effects[k].second, law.lower, law.upper);
     b.lower = law.lower;
     b.upper = law.upper;

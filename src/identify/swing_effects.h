@@ -2,9 +2,9 @@
 // The swing plant's candidate effects: one record per effect (swing_effects.cpp), holding
 // everything the plant needs of it: where its values live in the model, their physical
 // bounds and report units, the grid value, where it acts on the leg, its physical sign rule
-// and when it does not apply. The user-facing text (name, sentences, parameter names, grid)
-// is the effect's descriptor in model/effect_table.cpp. Adding a swing candidate: its
-// descriptor, its record, its test (tests/identify/swing_effects_test.cpp). A user's effect
+// and when it does not apply; first of all its descriptor, the user-facing text (name,
+// sentences, parameter names, grid; identify/effect_table.h). Adding a swing candidate: its
+// id, its record, its test (tests/identify/swing_effects_test.cpp). A user's effect
 // (an expression in a study's candidates) is a record of the same kind, made at run time
 // (identify/user_swing_effect.h).
 #include <functional>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "knee/knee_added_effects.h"
-#include "model/effect_table.h"
+#include "identify/effect_table.h"
 #include "model/leg_parameters.h"
 #include "numerics/bounded_least_squares.h"
 
@@ -44,7 +44,9 @@ struct SwingEffectSlot {
 
 /// One candidate effect of the swing plant. Hooks left null do nothing.
 struct SwingEffectRecord {
-  EffectId id;
+  /// What the effect is, for users: name, sentences, parameters, grid (identify/effect_table.h).
+  EffectDescriptor descriptor;
+  EffectId id() const { return descriptor.id; }
   /// Continuously fitted values, in the order of the descriptor's parameters.
   std::vector<SwingEffectSlot> slots;
   /// The descriptor's grid parameter (SI), or null when it has none.

@@ -82,7 +82,7 @@ SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& para
     initial.hipFlexionRate = 0.0;
     initial.kneeFlexionRate = 0.0;
     for (const auto& r : swingEffectRecords())
-      if (r.applyToToeOff && e.has(r.id)) r.applyToToeOff(e, initial.hipFlexionRate, initial.kneeFlexionRate);
+      if (r.applyToToeOff && e.has(r.id())) r.applyToToeOff(e, initial.hipFlexionRate, initial.kneeFlexionRate);
     swing.emplace(geometry, law, drive, participant.hipRange);
   }
   ReferenceTrajectory tr;

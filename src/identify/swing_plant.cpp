@@ -52,7 +52,7 @@ std::vector<Slot> slotsOf(const SwingEffects& e) {
                [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
   for (const SwingEffectRecord* record : presentSwingEffectRecords(e))
     for (const auto& slot : record->slots)
-      s.push_back({record->id, slot.bounds, slot.reportScale,
+      s.push_back({record->id(), slot.bounds, slot.reportScale,
                    [value = slot.value](SwingModelParams& p) -> double& { return value(p.effects); }});
   return s;
 }
@@ -222,7 +222,7 @@ namespace {
 std::vector<SwingModelParams> moreUserStarts(const SwingModelParams& params) {
   std::vector<SwingModelParams> out;
   for (const SwingEffectRecord* r : presentSwingEffectRecords(params.effects)) {
-    if (!isUserEffect(r->id)) continue;
+    if (!isUserEffect(r->id())) continue;
     SwingEffects e = params.effects;
     bool fresh = true;
     for (const auto& slot : r->slots) fresh = fresh && slot.value(e) == slot.bounds.start;

@@ -25,7 +25,7 @@ void removeExpression(Expressions& list, const std::string& name) {
 CylinderEffectRecord makeRecord(EffectId id, const UserEffect& effect) {
   using P = MauchCylinderParams;
   const std::string name = effect.name;
-  CylinderEffectRecord r{id};
+  CylinderEffectRecord r{describeEffect(id)};
   r.has = [name](const P& p) { return findExpression(p.effects.expressions, name) != p.effects.expressions.end(); };
   r.add = [name, law = effect.startLaw()](P& p, double) {
     removeExpression(p.effects.expressions, name);

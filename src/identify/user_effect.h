@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "knee/expression_parser.h"
-#include "model/effect_table.h"
+#include "identify/effect_table.h"
 #include "numerics/bounded_least_squares.h"
 
 namespace swingsim {

@@ -26,7 +26,7 @@ bool boundsAreTheRule(const SwingEffects&, std::string& note) {
 }
 
 SwingEffectRecord makeRecord(EffectId id, const UserSwingEffect& effect) {
-  SwingEffectRecord r{id, {}};
+  SwingEffectRecord r{describeEffect(id), {}};
   for (std::size_t j = 0; j < effect.parameters.size(); ++j) {
     r.slots.push_back({userEffectBound(effect, j), 1.0, [name = effect.name, j](SwingEffects& e) -> double& {
                          KneeExpressionParams* x = findExpression(e, name);

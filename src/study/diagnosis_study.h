@@ -3,7 +3,7 @@
 //   kind: cylinder-diagnosis | swing-diagnosis | sweep-diagnosis
 //   name, description (optional), base_model (knee model YAML), train, validate (record CSV
 //   lists, relative to the study), candidates (optional; default the plant's whole library,
-//   model/effect_table.h), acceptance: {alpha, min_validation_improvement, max_effects,
+//   identify/effect_table.h), acceptance: {alpha, min_validation_improvement, max_effects,
 //   whiteness_lags, measurement_noise (unit of the data; default: estimated from each
 //   record), explained_noise_ratio (1.2)} (optional; frozen here before the run).
 //   cylinder-diagnosis only: fit_switches (false), plot_seconds (2).

@@ -1,13 +1,17 @@
 #include "study/swing_kinematics_study.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
 
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
-#include "model/effect_table.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
+#include "identify/swing_effects.h"
 
 namespace swingsim {
 
@@ -15,46 +19,38 @@ namespace swingsim {
 
 namespace {
 
-struct CoulombOf {};
-struct ViscousOf {};
-struct AssistOf {};
-struct ToeOffOf {};
-struct HipScaleOf {};
-struct ShankScaleOf {};
-struct BelowKneeScaleOf {};
+// The check of a hidden value: within its record's physical bounds (reported units).
+ValueCheck withinBounds(double lower, double upper) {
+  return [lower, upper](double v) {
+    char bounds[96];
+    std::snprintf(bounds, sizeof bounds, "[%.4g, %.4g]", lower, upper);
+    return v >= lower && v <= upper ? std::string() : std::string("expected a value within the effect's physical bounds ") + bounds;
+  };
+}
 
 }  // namespace
 
 template <class A>
-void serialize(A& a, SwingHiddenEffects& h, CoulombOf) {
-  a.optionalAngle("smoothing_deg_s", h.coulombSmoothingRate, mustBePositive);
-  a.number("moment_Nm", h.coulombMoment, mustBeNonNegative);
+void serialize(A& a, SwingHiddenEffect& h, const SwingEffectRecord& r) {
+  const EffectDescriptor& d = r.descriptor;
+  if constexpr (A::kReading) {
+    h.values.assign(d.parameters.size(), 0.0);
+    if (r.gridValue) h.values.back() = d.grid[d.grid.size() / 2] * d.gridReportScale;
+  }
+  for (std::size_t j = 0; j < r.slots.size(); ++j) {
+    const SwingEffectSlot& slot = r.slots[j];
+    a.number(d.parameters[j].c_str(), h.values[j],
+             withinBounds(slot.bounds.lower * slot.reportScale, slot.bounds.upper * slot.reportScale));
+  }
+  if (r.gridValue) a.optionalNumber(d.parameters.back().c_str(), h.values.back(), mustBePositive);
 }
-template <class A>
-void serialize(A& a, SwingHiddenEffects& h, ViscousOf) { a.number("damping_Nm_s_per_rad", h.viscousDamping, mustBeNonNegative); }
-template <class A>
-void serialize(A& a, SwingHiddenEffects& h, AssistOf) { a.number("stiffness_Nm_per_rad", h.assistStiffness, mustBeNonNegative); }
-template <class A>
-void serialize(A& a, SwingHiddenEffects& h, ToeOffOf) {
-  a.angle("hip_rate_deg_s", h.toeOffHipRate, mustBePlausible(kJointRateRange, "a hip rate"));
-  a.angle("knee_rate_deg_s", h.toeOffKneeRate, mustBePlausible(kJointRateRange, "a knee rate"));
-}
-template <class A>
-void serialize(A& a, SwingHiddenEffects& h, HipScaleOf) { a.number("scale", h.hipScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
-template <class A>
-void serialize(A& a, SwingHiddenEffects& h, ShankScaleOf) { a.number("scale", h.shankScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
-template <class A>
-void serialize(A& a, SwingHiddenEffects& h, BelowKneeScaleOf) { a.number("scale", h.belowKneeScale, mustBePlausible(kAmplitudeScaleRange, "a scale")); }
 
 template <class A>
 void serialize(A& a, SwingHiddenEffects& h) {
-  a.optionalMap("knee_coulomb_friction", h, h.kneeCoulombFriction, CoulombOf{});
-  a.optionalMap("knee_viscous_damping", h, h.kneeViscousDamping, ViscousOf{});
-  a.optionalMap("extension_assist_spring", h, h.extensionAssistSpring, AssistOf{});
-  a.optionalMap("toe_off_velocity", h, h.toeOffVelocity, ToeOffOf{});
-  a.optionalMap("hip_moment_scale", h, h.hipMomentScale, HipScaleOf{});
-  a.optionalMap("shank_mass_scale", h, h.shankMassScale, ShankScaleOf{});
-  a.optionalMap("below_knee_mass_scale", h, h.belowKneeMassScale, BelowKneeScaleOf{});
+  const auto& records = swingEffectRecords();
+  h.effects.resize(records.size());
+  for (std::size_t i = 0; i < records.size(); ++i)
+    a.optionalMap(records[i].descriptor.name.c_str(), h.effects[i], h.effects[i].present, records[i]);
 }
 
 template <class A>
@@ -103,27 +99,42 @@ std::string formatSwingKinematicsStudyYaml(const SwingKinematicsStudy& study, co
   return writeYamlDocument(study, baseDir, "");
 }
 
+namespace {
+
+std::size_t hiddenIndex(const std::string& name) {
+  const auto& records = swingEffectRecords();
+  for (std::size_t i = 0; i < records.size(); ++i)
+    if (records[i].descriptor.name == name) return i;
+  throw std::invalid_argument("not a library swing effect: " + name);
+}
+
+}  // namespace
+
+bool SwingHiddenEffects::has(const std::string& name) const {
+  const std::size_t i = hiddenIndex(name);
+  return i < effects.size() && effects[i].present;
+}
+
+double SwingHiddenEffects::value(const std::string& name, const std::string& parameter) const {
+  const std::size_t i = hiddenIndex(name);
+  const auto& params = swingEffectRecords()[i].descriptor.parameters;
+  const auto j = static_cast<std::size_t>(std::find(params.begin(), params.end(), parameter) - params.begin());
+  if (j == params.size()) throw std::invalid_argument(name + " has no parameter " + parameter);
+  return has(name) ? effects[i].values[j] : std::numeric_limits<double>::quiet_NaN();
+}
+
 SwingModelParams makeHiddenTruth(const SwingHiddenEffects& h, std::vector<std::string>& names) {
   SwingModelParams truth;
-  // One hidden effect: added to the truth at `grid`, then its values set.
-  auto add = [&](bool present, const char* name, double grid) {
-    if (present) {
-      truth = addSwingEffect(truth, findEffect(PlantKind::kSwing, name)->id, grid);
-      names.push_back(name);
-    }
-    return present;
-  };
-  auto& e = truth.effects;
-  if (add(h.kneeCoulombFriction, "knee_coulomb_friction", h.coulombSmoothingRate)) e.knee.coulombMoment = h.coulombMoment;
-  if (add(h.kneeViscousDamping, "knee_viscous_damping", 0)) e.knee.viscousDamping = h.viscousDamping;
-  if (add(h.extensionAssistSpring, "extension_assist_spring", 0)) e.knee.assistStiffness = h.assistStiffness;
-  if (add(h.toeOffVelocity, "toe_off_velocity", 0)) {
-    e.toeOffHipRate = h.toeOffHipRate;
-    e.toeOffKneeRate = h.toeOffKneeRate;
+  const auto& records = swingEffectRecords();
+  for (std::size_t i = 0; i < records.size() && i < h.effects.size(); ++i) {
+    if (!h.effects[i].present) continue;
+    const SwingEffectRecord& r = records[i];
+    const std::vector<double>& v = h.effects[i].values;
+    const double grid = r.gridValue ? v.back() / r.descriptor.gridReportScale : 0.0;
+    truth = addSwingEffect(truth, r.id(), grid);
+    for (std::size_t j = 0; j < r.slots.size(); ++j) r.slots[j].value(truth.effects) = v[j] / r.slots[j].reportScale;
+    names.push_back(r.descriptor.name);
   }
-  if (add(h.hipMomentScale, "hip_moment_scale", 0)) e.hipMomentScale = h.hipScale;
-  if (add(h.shankMassScale, "shank_mass_scale", 0)) e.shankMassScale = h.shankScale;
-  if (add(h.belowKneeMassScale, "below_knee_mass_scale", 0)) e.belowKneeMassScale = h.belowKneeScale;
   return truth;
 }
 

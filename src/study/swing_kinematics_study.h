@@ -13,24 +13,24 @@ namespace swingsim {
 
 class YamlMap;
 
-/// `hidden_effects:`: effects the truth has and the base model lacks; a flag per block
-/// (present in the file) and its values.
+/// One block of `hidden_effects:`: a swing effect of the library (its key is the effect's
+/// name) with its values, read and written by the effect's own record (identify/swing_effects.h):
+/// the descriptor's parameters as keys, in their reported units, checked against the
+/// record's physical bounds. An absent grid parameter takes the grid's middle value.
+struct SwingHiddenEffect {
+  bool present = false;
+  std::vector<double> values;  ///< the descriptor's parameters, reported units (deg/s for a rate)
+};
+
+/// `hidden_effects:`: effects the truth has and the base model lacks, one block per library
+/// swing effect, in the effect table's order.
 struct SwingHiddenEffects {
-  bool kneeCoulombFriction = false;
-  double coulombMoment = 0;         ///< N m
-  double coulombSmoothingRate = 1;  ///< rad/s (smoothing_deg_s in the file)
-  bool kneeViscousDamping = false;
-  double viscousDamping = 0;        ///< N m s/rad
-  bool extensionAssistSpring = false;
-  double assistStiffness = 0;       ///< N m/rad
-  bool toeOffVelocity = false;
-  double toeOffHipRate = 0, toeOffKneeRate = 0;  ///< rad/s (deg/s in the file)
-  bool hipMomentScale = false;
-  double hipScale = 1;
-  bool shankMassScale = false;
-  double shankScale = 1;
-  bool belowKneeMassScale = false;
-  double belowKneeScale = 1;
+  std::vector<SwingHiddenEffect> effects = std::vector<SwingHiddenEffect>(effectNames(PlantKind::kSwing).size());
+  /// The value of `parameter` (a descriptor's parameter name) of the effect `name`; NaN if
+  /// that effect is not hidden. Throws std::invalid_argument for an unknown name or parameter.
+  double value(const std::string& name, const std::string& parameter) const;
+  /// Whether the effect `name` is hidden.
+  bool has(const std::string& name) const;
 };
 
 struct SwingKinematicsStudy {

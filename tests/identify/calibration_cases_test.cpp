@@ -10,7 +10,7 @@
 
 #include "diagnosis_calibration.h"
 #include "identify/sweep_effects.h"
-#include "model/effect_table.h"
+#include "identify/effect_table.h"
 
 namespace swingsim {
 namespace {

@@ -25,7 +25,7 @@ TEST(CylinderEffectRecords, OneRecordPerCylinderEffectMatchingItsDescriptor) {
     SCOPED_TRACE(d.name);
     ASSERT_LT(next, records.size()) << "no record";
     const CylinderEffectRecord& r = records[next++];
-    EXPECT_EQ(r.id, d.id) << "records out of the table's order";
+    EXPECT_EQ(r.id(), d.id) << "records out of the table's order";
     EXPECT_EQ(r.columns, d.fittedParameters);
     EXPECT_EQ(r.values(p).size(), d.parameters.size());
   }
@@ -40,10 +40,10 @@ TEST(CylinderEffectRecords, RefusesAnotherPlantsEffect) {
 // then Chien's fast one).
 TEST(CylinderEffectRecords, AddAndRemoveSwitchTheEffect) {
   for (const auto& r : cylinderEffectRecords()) {
-    SCOPED_TRACE(describeEffect(r.id).name);
+    SCOPED_TRACE(describeEffect(r.id()).name);
     MauchCylinderParams p = twoPhase();
     ASSERT_FALSE(r.has(p));
-    const auto& grid = describeEffect(r.id).grid;
+    const auto& grid = describeEffect(r.id()).grid;
     r.add(p, grid.empty() ? 0.0 : grid.back());
     EXPECT_TRUE(r.has(p));
     if (!grid.empty()) {
@@ -67,8 +67,8 @@ TEST(CylinderEffectRecords, ColumnsAreTheCylinderRegressorsColumns) {
   e.hyperextension = {55, 66, 77};
   const std::vector<double> b = MauchCylinder(p).getCoefficientVector();
   for (const auto& r : cylinderEffectRecords()) {
-    SCOPED_TRACE(describeEffect(r.id).name);
-    const std::vector<int> cols = cylinderEffectColumns(p, r.id);
+    SCOPED_TRACE(describeEffect(r.id()).name);
+    const std::vector<int> cols = cylinderEffectColumns(p, r.id());
     ASSERT_EQ(cols.size(), static_cast<std::size_t>(r.columns));
     const std::vector<double> values = r.values(p);
     for (std::size_t i = 0; i < cols.size(); ++i) EXPECT_EQ(b[static_cast<std::size_t>(cols[i])], values[i]);

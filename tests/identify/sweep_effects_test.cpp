@@ -23,7 +23,7 @@ TEST(SweepEffects, EverySweepEffectOfTheTableHasOneLawWithARange) {
     const EffectDescriptor* d = findEffect(PlantKind::kSweep, name);
     ASSERT_NE(d, nullptr) << name;
     const SweepEffectLaw& law = findSweepEffectLaw(d->id);
-    EXPECT_EQ(law.id, d->id) << name;
+    EXPECT_EQ(law.id(), d->id) << name;
     EXPECT_LE(law.lower, law.upper) << name;
     EXPECT_FALSE(law.rangeSource.empty()) << name;
     if (!law.assumption.empty()) {

@@ -20,7 +20,7 @@ TEST(SwingEffectRecords, OneRecordPerSwingEffectMatchingItsDescriptor) {
     SCOPED_TRACE(d.name);
     ASSERT_LT(next, records.size()) << "no record";
     const SwingEffectRecord& r = records[next++];
-    EXPECT_EQ(r.id, d.id) << "records out of the table's order";
+    EXPECT_EQ(r.id(), d.id) << "records out of the table's order";
     EXPECT_EQ(r.slots.size(), static_cast<std::size_t>(d.fittedParameters));
     EXPECT_EQ(r.gridValue != nullptr, !d.grid.empty());
     EXPECT_NE(r.isPhysical, nullptr);

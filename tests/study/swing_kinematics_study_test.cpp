@@ -23,8 +23,8 @@ TEST(SwingKinematicsStudy, ShippedStudyRoundTripsThroughTheWriter) {
   EXPECT_EQ(study.seed, 707u);
   ASSERT_EQ(study.conditions.size(), 3u);
   ASSERT_TRUE(study.hasHiddenEffects);
-  EXPECT_TRUE(study.hidden.extensionAssistSpring);
-  EXPECT_EQ(study.hidden.assistStiffness, 0.8);
+  EXPECT_TRUE(study.hidden.has("extension_assist_spring"));
+  EXPECT_EQ(study.hidden.value("extension_assist_spring", "stiffness_Nm_per_rad"), 0.8);
 
   const SwingKinematicsStudy back = parse(formatSwingKinematicsStudyYaml(study, "studies"), "studies/written.yaml");
   EXPECT_EQ(back.participantPath.substr(back.participantPath.rfind('/')), "/p1.yaml");
@@ -38,9 +38,9 @@ TEST(SwingKinematicsStudy, ShippedStudyRoundTripsThroughTheWriter) {
     EXPECT_EQ(back.conditions[i].timeScale, study.conditions[i].timeScale);
     EXPECT_EQ(back.conditions[i].amplitudeScale, study.conditions[i].amplitudeScale);
   }
-  EXPECT_TRUE(back.hidden.extensionAssistSpring);
-  EXPECT_FALSE(back.hidden.kneeCoulombFriction);
-  EXPECT_EQ(back.hidden.assistStiffness, 0.8);
+  EXPECT_TRUE(back.hidden.has("extension_assist_spring"));
+  EXPECT_FALSE(back.hidden.has("knee_coulomb_friction"));
+  EXPECT_EQ(back.hidden.value("extension_assist_spring", "stiffness_Nm_per_rad"), 0.8);
 }
 
 TEST(SwingKinematicsStudy, HiddenEffectsBuildTheTruthInFormatOrder) {
@@ -56,15 +56,16 @@ hidden_effects:
   toe_off_velocity: {hip_rate_deg_s: 90, knee_rate_deg_s: -45}
 )";
   const SwingKinematicsStudy study = parse(text, "studies/inline.yaml");
-  // The smoothing rate's default is 1 rad/s (57.3 deg/s in the file).
-  EXPECT_EQ(study.hidden.coulombSmoothingRate, 1.0);
-  EXPECT_EQ(study.hidden.toeOffKneeRate, -45 * kDegToRad);
+  // The smoothing rate, absent, takes the grid's middle value: 1 rad/s (57.3 deg/s in the file).
+  EXPECT_DOUBLE_EQ(study.hidden.value("knee_coulomb_friction", "smoothing_deg_s"), 1.0 * kRadToDeg);
+  EXPECT_EQ(study.hidden.value("toe_off_velocity", "knee_rate_deg_s"), -45);
   std::vector<std::string> names;
   const SwingModelParams truth = makeHiddenTruth(study.hidden, names);
   EXPECT_EQ(names, (std::vector<std::string>{"knee_coulomb_friction", "toe_off_velocity", "hip_moment_scale"}));
   EXPECT_EQ(truth.effects.knee.coulombMoment, 3.0);
   EXPECT_EQ(truth.effects.hipMomentScale, 1.2);
-  EXPECT_EQ(truth.effects.toeOffHipRate, 90 * kDegToRad);
+  EXPECT_DOUBLE_EQ(truth.effects.toeOffHipRate, 90 * kDegToRad);
+  EXPECT_DOUBLE_EQ(truth.effects.knee.coulombSmoothingRate, 1.0);
 }
 
 TEST(SwingKinematicsStudy, EmptyConditionsAreRefused) {
@@ -84,7 +85,8 @@ conditions: []
 }
 
 // Generator inputs outside their plausible range (core/plausible_ranges.h) are refused at
-// load: absurd noise once gave rc 0 and files that crashed `fit`.
+// load: absurd noise once gave rc 0 and files that crashed `fit`. A hidden effect's values
+// are checked against its record's physical bounds (a toe-off rate within 20 rad/s).
 TEST(SwingKinematicsStudy, NoiseAndRatesOutsideTheirPlausibleRangeAreRefused) {
   const auto errorOf = [](const std::string& noise, const std::string& rate) {
     const std::string text = "kind: swing-kinematics\nparticipant: ../participants/p1.yaml\n"
@@ -103,7 +105,7 @@ TEST(SwingKinematicsStudy, NoiseAndRatesOutsideTheirPlausibleRangeAreRefused) {
                                           "(motion capture angles are good to about 1 deg)", 0), 0u)
       << errorOf("1e300", "-45");
   EXPECT_EQ(errorOf("0.5", "1e9").rfind("studies/inline.yaml:8: hidden_effects.toe_off_velocity.knee_rate_deg_s: expected "
-                                        "a knee rate in [-3000, 3000] deg/s", 0), 0u)
+                                        "a value within the effect's physical bounds [-1146, 1146]", 0), 0u)
       << errorOf("0.5", "1e9");
 }
 

@@ -1,10 +1,12 @@
 #pragma once
-// The library of candidate physical effects that `swingsim diagnose` can add to a model:
-// one descriptor per effect, in one table (effect_table.cpp). A descriptor says which plant
+// The library of candidate physical effects that `swingsim diagnose` can add to a model,
+// seen the same way for every plant: one descriptor per effect. A descriptor says which plant
 // the effect belongs to, its parameters with units, the profiled grid of its non-linear
-// parameter, and the sentences the report prints. The law an effect adds lives with its plant
-// (identify/cylinder_plant.cpp, identify/swing_plant.cpp); everything else (CLI, report,
-// JSON, study YAML) reads this table. Adding an effect: one entry here, its law, its test.
+// parameter, and the sentences the report prints. Each descriptor is the first part of its
+// effect's one record, beside what the plant needs of it (identify/cylinder_effects.cpp,
+// identify/swing_effects.cpp, identify/sweep_effects.cpp); effectTable() gathers them, and
+// everything else (CLI, report, JSON, study YAML) reads that table. Adding an effect: its id
+// below, its record, its test (and its law, if the plant has no law it can reuse).
 #include <string>
 #include <vector>
 

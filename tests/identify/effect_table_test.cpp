@@ -1,4 +1,4 @@
-#include "model/effect_table.h"
+#include "identify/effect_table.h"
 
 #include <gtest/gtest.h>
 
