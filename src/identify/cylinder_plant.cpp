@@ -400,12 +400,12 @@ std::vector<std::string> CylinderPlant::validationStems() const {
   return stems;
 }
 
-std::string CylinderPlant::describeMissingForce(const PlantModel& model) const {
+std::optional<MissingForce> CylinderPlant::calcMissingForce(const PlantModel& model) const {
   std::vector<BenchData> records = train_;
   records.insert(records.end(), validate_.begin(), validate_.end());
   std::vector<double> noise;
   for (const auto& n : estimateRecordNoise()) noise.push_back(n.sigma);
-  return swingsim::describeMissingForce(calcMissingForce(cylinderParams(model), records, noise));
+  return swingsim::calcMissingForce(cylinderParams(model), records, noise);
 }
 
 std::vector<std::string> CylinderPlant::recordStems() const {

@@ -69,7 +69,7 @@ class CylinderPlant final : public DiagnosisPlant {
   std::vector<std::string> recordStems() const override;
   std::unique_ptr<DiagnosisPlant> withOnlyRecord(std::size_t index) const override;
   /// The missing force along every record, training and held out (identify/missing_force.h).
-  std::string describeMissingForce(const PlantModel& model) const override;
+  std::optional<MissingForce> calcMissingForce(const PlantModel& model) const override;
   /// After switch_delay or hyperextension_phase is accepted: one joint fit of every
   /// coefficient, the switch widths, xhy and (with a slow latch) the latch rate, within their
   /// ranges, from the candidate's solution and from the multi-start grid (the better one);

@@ -126,7 +126,7 @@ std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const Eff
                        fmtRatio(closest->validationRmse[v]) + " on " +
                        (v < heldOutStems.size() ? heldOutStems[v] : "held-out record " + std::to_string(v + 1));
     }
-  a.records = out.plant == PlantKind::kSweep ? "participants" : "swings";
+  a.records = out.plant == PlantKind::kSweep ? "participants" : out.plant == PlantKind::kCylinder ? "bench records" : "swings";
   // The fitted effect's LR is the estimate of its noncentrality on these records.
   a.recordsNeeded = calcRecordsForPower(a.likelihoodRatio / std::max(1, a.recordsNow), a.dof, a.level, kPowerTarget);
   return a;
@@ -227,7 +227,10 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                          training.records.end());
   out.structureNote = describeResidualStructure(training, nEffRatio);
   out.missing = plant.calcMissing(*out.final.model);
-  out.missingNote = out.missing ? describeMissingMoment(*out.missing) : plant.describeMissingForce(*out.final.model);
+  if (!out.missing) out.missingForce = plant.calcMissingForce(*out.final.model);
+  out.missingNote = out.missing        ? describeMissingMoment(*out.missing)
+                    : out.missingForce ? describeMissingForce(out.missingForce->regions)
+                                       : "";
   out.verdict = "NOT explained: ";
   if (!atNoise)
     out.verdict += "the held-out error on " + worstStem + " is " + fmtRatio(worstRatio) + " x the measurement noise (" +

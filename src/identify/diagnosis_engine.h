@@ -17,6 +17,7 @@
 
 #include "identify/comparison.h"
 #include "identify/effect_selection.h"
+#include "identify/missing_force.h"
 #include "identify/missing_moment.h"
 #include "identify/effect_table.h"
 #include "numerics/noise_estimate.h"
@@ -140,9 +141,9 @@ class DiagnosisPlant {
   /// (the swing's missing knee moment, identify/missing_moment.h; its note says why it was not
   /// computed); nullopt if the plant cannot say.
   virtual std::optional<MissingMoment> calcMissing(const PlantModel&) const { return std::nullopt; }
-  /// Where the missing quantity acts, as one line, for a plant that measures it directly (the
-  /// cylinder's force on a bench: identify/missing_force.h); "" if the plant does not.
-  virtual std::string describeMissingForce(const PlantModel&) const { return ""; }
+  /// Where the missing quantity acts, for a plant that measures it directly (the cylinder's
+  /// force on a bench: identify/missing_force.h); nullopt if the plant does not.
+  virtual std::optional<MissingForce> calcMissingForce(const PlantModel&) const { return std::nullopt; }
   /// A quantity the model applies against an independent measurement the fit never sees
   /// (the swing's knee moment against inverse dynamics); nullopt if the data have none.
   virtual std::optional<HeldBackComparison> compareHeldBack(const PlantModel&) const { return std::nullopt; }
@@ -229,6 +230,8 @@ struct Diagnosis {
   std::string missingNote;    ///< where the missing force acts in the measured state, if not explained
   /// The missing moment itself (the map a figure draws), where the plant computes one.
   std::optional<MissingMoment> missing;
+  /// The missing force itself (the cylinder's map a figure draws), where the plant computes one.
+  std::optional<MissingForce> missingForce;
   std::vector<std::string> warnings;
   /// The noise each record's held-out error is judged against (unit of the data), and where
   /// it comes from ("estimated from the data" or "set in the study").

@@ -11,7 +11,7 @@ namespace swingsim {
 
 namespace {
 
-constexpr double kBinMm = 2.0;  // position bins: a tenth of a swing's stroke (about 26 mm)
+constexpr double kBinMm = kMissingForceBinMm;
 struct Bin {
   double sum = 0, variance = 0;  // sum of residuals, N; sum of their noise variances, N^2
   int n = 0;
@@ -40,10 +40,11 @@ std::string MissingForceRegion::describe() const {
          fmt("%.0f", speedLowMmS) + " to " + fmt("%.0f", speedHighMmS) + " mm/s)";
 }
 
-std::vector<MissingForceRegion> calcMissingForce(const MauchCylinderParams& params, const std::vector<BenchData>& records,
-                                                 const std::vector<double>& noise) {
+MissingForce calcMissingForce(const MauchCylinderParams& params, const std::vector<BenchData>& records,
+                              const std::vector<double>& noise) {
   if (noise.size() != records.size()) throw std::invalid_argument("calcMissingForce: one noise per record");
   const MauchCylinder cylinder(params);
+  MissingForce out;
   std::map<std::pair<bool, int>, Bin> bins;  // (extending, position bin)
   for (std::size_t r = 0; r < records.size(); ++r) {
     const BenchData& d = records[r];
@@ -52,6 +53,10 @@ std::vector<MissingForceRegion> calcMissingForce(const MauchCylinderParams& para
       const double x = d.position[i] * 1e3, v = d.velocity[i] * 1e3;
       Bin& b = bins[{v < 0, static_cast<int>(std::floor(x / kBinMm))}];
       b.sum += d.force[i] - trace.force[i];
+      out.positionMm.push_back(x);
+      out.speedMmS.push_back(v);
+      out.forceN.push_back(d.force[i] - trace.force[i]);
+      out.noiseN.push_back(noise[r]);
       b.variance += noise[r] * noise[r];
       ++b.n;
       b.xLow = std::min(b.xLow, x);
@@ -61,7 +66,7 @@ std::vector<MissingForceRegion> calcMissingForce(const MauchCylinderParams& para
     }
   }
   // Runs of neighbouring bins (one direction) whose means depart from zero with one sign.
-  std::vector<MissingForceRegion> regions;
+  std::vector<MissingForceRegion>& regions = out.regions;
   bool open = false;
   std::pair<bool, int> last{false, 0};
   int lastSign = 0;
@@ -81,7 +86,7 @@ std::vector<MissingForceRegion> calcMissingForce(const MauchCylinderParams& para
   std::sort(regions.begin(), regions.end(), [](const MissingForceRegion& a, const MissingForceRegion& b) {
     return std::abs(a.force) * a.samples > std::abs(b.force) * b.samples;
   });
-  return regions;
+  return out;
 }
 
 std::string describeMissingForce(const std::vector<MissingForceRegion>& regions) {

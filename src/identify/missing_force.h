@@ -19,6 +19,8 @@ namespace swingsim {
 /// least this many samples.
 constexpr double kMissingRegionZ = 3.5;
 constexpr int kMissingRegionMinSamples = 5;
+/// Width of the cylinder's position bins, mm: a tenth of a swing's stroke (about 26 mm).
+constexpr double kMissingForceBinMm = 2.0;
 
 /// One region of the measured state where the missing force departs from zero.
 struct MissingForceRegion {
@@ -33,11 +35,16 @@ struct MissingForceRegion {
   std::string describe() const;
 };
 
+/// The missing force at every sample (the map a figure draws) and its regions.
+struct MissingForce {
+  std::vector<double> positionMm, speedMmS, forceN, noiseN;  ///< per sample; noise: its record's sd, N
+  std::vector<MissingForceRegion> regions;  ///< the largest (force x samples) first
+};
+
 /// The missing force of `records` under `params` (each record starting unlatched, S2 = 0, as
-/// bench records do), with each record's force noise `noise` (N, same order): its regions,
-/// the largest (force x samples) first.
-std::vector<MissingForceRegion> calcMissingForce(const MauchCylinderParams& params, const std::vector<BenchData>& records,
-                                                 const std::vector<double>& noise);
+/// bench records do), with each record's force noise `noise` (N, same order).
+MissingForce calcMissingForce(const MauchCylinderParams& params, const std::vector<BenchData>& records,
+                              const std::vector<double>& noise);
 
 /// One line for a report: the three largest regions ("; "-separated), or that none departs
 /// from zero.

@@ -2,7 +2,7 @@
 
 #include "core/output_files.h"
 #include "report/diagnosis_report.h"
-#include "report/missing_moment_plot.h"
+#include "report/missing_plot.h"
 
 namespace swingsim {
 
@@ -35,10 +35,13 @@ void writeDiagnosisReport(const std::string& outDir, const DiagnosisReportInput&
           (m->note.empty() ? "" : "Note: " + m->note + "\n\n");
     writeFileAtomic(outDir + "/missing-moment.svg",
                     renderMissingMomentSvg(*m, "The knee moment the measured swings need minus the model's"));
-  } else if (!in.diagnosis->missing && !in.diagnosis->missingNote.empty() && !in.diagnosis->explained) {
+  } else if (const auto& f = in.diagnosis->missingForce; f && !f->forceN.empty() && !in.diagnosis->explained) {
     md += "## The missing force, where it acts\n\n" + in.diagnosis->missingNote +
           "\n\n(The measured force minus the model's at the measured piston motion, over every record, in 2 mm "
-          "position bins; a region departs from zero beyond 3.5 standard errors of the noise.)\n\n";
+          "position bins; a region departs from zero beyond 3.5 standard errors of the noise.)\n\n"
+          "![missing cylinder force over measured piston position](missing-force.svg)\n\n";
+    writeFileAtomic(outDir + "/missing-force.svg",
+                    renderMissingForceSvg(*f, "The force the measured bench records need minus the model's"));
   }
   for (const auto& p : writeResidualPlots(outDir, "before", *in.before))
     md += "- before: [" + fileStem(p) + "](" + fileStem(p) + ".svg)\n";

@@ -38,7 +38,7 @@ TEST(MissingForce, IsNoneOnANullAndBeyondTheStopWithIt) {
       records.push_back(readBenchCsv(path.string(), 20));
       fs::remove(path);
     }
-    return calcMissingForce(chien, records, std::vector<double>(records.size(), kNoise));
+    return calcMissingForce(chien, records, std::vector<double>(records.size(), kNoise)).regions;
   };
   const auto null = regionsOf(truth);
   EXPECT_TRUE(null.empty()) << describeMissingForce(null);
@@ -64,7 +64,15 @@ TEST(MissingForce, SaysTheSignAndTheMotionOfAnOffset) {
     d.velocity.push_back(0.024 * std::cos(6.0 * t));
     d.force.push_back(30.0);  // the model (all coefficients 0) gives 0 N
   }
-  const auto regions = calcMissingForce(p, {d}, {1.0});
+  const MissingForce missing = calcMissingForce(p, {d}, {1.0});
+  // The map: every sample, with its record's noise.
+  ASSERT_EQ(missing.forceN.size(), d.force.size());
+  EXPECT_EQ(missing.positionMm.size(), d.force.size());
+  EXPECT_NEAR(missing.positionMm[0], 5.0, 1e-12);
+  EXPECT_NEAR(missing.speedMmS[0], 24.0, 1e-12);
+  EXPECT_NEAR(missing.forceN[0], 30.0, 1e-9);
+  EXPECT_EQ(missing.noiseN[0], 1.0);
+  const auto& regions = missing.regions;
   ASSERT_EQ(regions.size(), 2u) << describeMissingForce(regions);
   for (const auto& r : regions) {
     EXPECT_NEAR(r.force, 30.0, 1e-9);
