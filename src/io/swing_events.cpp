@@ -120,13 +120,32 @@ std::string seconds(double s) { return fmt("%.4f s", s); }
 struct GaitChoice {
   Gait gait = Gait::kWalking;
   std::string basis;
+  /// A stated gait that detection (stride, or one swing's knee peak) contradicts: what to
+  /// check ("" if none).
+  std::string contradiction;
 };
 
+GaitChoice detectGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks);
+
 /// The stated gait, else running for a stride under kRunningStrideS (or, with one swing, a
-/// knee peak above kRunningKneePeak), else walking.
+/// knee peak above kRunningKneePeak), else walking. A stated gait that detection
+/// contradicts is kept, and the contradiction said.
 GaitChoice chooseGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks,
                       std::optional<Gait> stated) {
-  if (stated) return {*stated, "stated"};
+  if (!stated) return detectGait(t, knee, peaks);
+  GaitChoice out{*stated, "stated", ""};
+  if (!peaks.empty()) {
+    const GaitChoice detected = detectGait(t, knee, peaks);
+    const std::string basis = detected.basis.rfind("detected: ", 0) == 0 ? detected.basis.substr(10) : detected.basis;
+    if (detected.gait != *stated)
+      out.contradiction = std::string("the gait is stated as ") + gaitName(*stated) + " but the trial looks like " +
+                          gaitName(detected.gait) + " (" + basis + "): its " + gaitName(*stated) +
+                          " event rules may misplace toe-off; check the stated gait";
+  }
+  return out;
+}
+
+GaitChoice detectGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks) {
   if (const auto stride = medianStride(t, peaks)) {
     const bool running = *stride < kRunningStrideS;
     return {running ? Gait::kRunning : Gait::kWalking,
@@ -465,6 +484,7 @@ SwingList makeList(std::vector<FoundSwing> swings, const KinematicEvents& kin, c
                         "from these; a study's `swing: K` on this file needs its force file (grf:) or the swing's times " +
                         "(toe_off_s, heel_contact_s)");
   }
+  if (!kin.gait.contradiction.empty()) out.notes.push_back(kin.gait.contradiction);
   out.swings = std::move(swings);
   out.gait = kin.gait.gait;
   out.gaitBasis = kin.gait.basis;

@@ -316,6 +316,29 @@ TEST(SwingEvents, KinematicRulesAgainstTheForcePlatesPerGait) {
   }
 }
 
+// A stated gait that detection (the stride, or one swing's knee peak) contradicts is kept (the
+// user may know better) and said; a stated gait detection agrees with says nothing.
+TEST(SwingEvents, AStatedGaitThatDetectionContradictsIsSaid) {
+  for (const TrialCase& c : publicTrials()) {
+    SCOPED_TRACE(c.ik);
+    const MotionTable ik = readMotionTable(c.ik);
+    const MotionColumns columns = legColumns(c.side, c.kneeSign);
+    const Gait other = c.gait == Gait::kRunning ? Gait::kWalking : Gait::kRunning;
+    const SwingList wrong = listSwings(ik, columns, std::nullopt, other);
+    EXPECT_EQ(wrong.gait, other);
+    EXPECT_EQ(wrong.gaitBasis, "stated");
+    const std::string expected = std::string("the gait is stated as ") + gaitName(other) + " but the trial looks like " +
+                                 gaitName(c.gait) + " (";
+    bool said = false;
+    for (const auto& note : wrong.notes) said = said || note.rfind(expected, 0) == 0;
+    std::string all;
+    for (const auto& note : wrong.notes) all += "\n  " + note;
+    EXPECT_TRUE(said) << "no note begins \"" << expected << "\"; notes:" << all;
+    for (const auto& note : listSwings(ik, columns, std::nullopt, c.gait).notes)
+      EXPECT_EQ(note.find("the gait is stated as"), std::string::npos) << note;
+  }
+}
+
 TEST(SwingEvents, TheFastestFlexionRuleWouldPlaceARunnersToeOffLate) {
   // Why running has a rule of its own: the walking rule on a run lands 60-120 ms late.
   const MotionTable ik = readMotionTable(kHamnerIk);
