@@ -40,3 +40,22 @@ def test_tune_refuses_a_bad_study_with_file_line_key(tmp_path, repo):
                      "targets:\n  swing_time_s: {value: 0.5}\n")
     with pytest.raises(swingsim.InputError, match=r"bad\.yaml:4: knobs\[0\]\.key: .*not a number"):
         swingsim.tune(study)
+
+
+def test_tune_writes_only_into_out(repo, tmp_path, monkeypatch):
+    # A tune from Python once wrote outside its out folder: here every file it writes is in
+    # out, and nothing beside the study, its participant or its knee model changes. Run from
+    # another working folder with a relative out, as a notebook would.
+    def files(folder):
+        return {p: p.stat().st_mtime_ns for p in folder.rglob("*") if p.is_file()}
+
+    watched = [repo / "studies", repo / "models", repo / "participants"]
+    before = [files(f) for f in watched]
+    work = tmp_path / "work"
+    work.mkdir()
+    monkeypatch.chdir(work)
+    swingsim.tune(repo / "studies" / "tune-p1-damping.yaml", out="rel-out")
+    assert sorted(p.name for p in work.rglob("*") if p.is_file()) == \
+        ["tradeoff.svg", "tuned-knee.yaml", "tuning.json", "tuning.md"]
+    assert all(p.parent == work / "rel-out" for p in work.rglob("*") if p.is_file())
+    assert [files(f) for f in watched] == before
