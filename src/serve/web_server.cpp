@@ -3,6 +3,8 @@
 #include <httplib.h>
 
 #include <algorithm>
+#include <condition_variable>
+#include <mutex>
 #include <optional>
 
 #include "core/input_error.h"
@@ -14,6 +16,36 @@ namespace swingsim {
 namespace {
 
 constexpr int kFirstFreeTries = 100;  // ports tried from the default 8080 up
+// cpp-httplib gives each connection a pool thread for as long as it is open: an idle keep-alive
+// connection or a slow sender holds one. The pool therefore has this many connections per
+// compute slot (at least kMinConnections), the compute itself is limited to ServeOptions::threads
+// (ComputeSlots), and an idle keep-alive connection is closed after kKeepAliveS.
+constexpr int kConnectionsPerSlot = 4;
+constexpr int kMinConnections = 16;
+constexpr int kKeepAliveS = 2;
+
+// At most `n` API calls compute at once; the others wait for a slot (their connection stays).
+class ComputeSlots {
+ public:
+  explicit ComputeSlots(int n) : free_(std::max(1, n)) {}
+  void acquire() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    freed_.wait(lock, [this] { return free_ > 0; });
+    --free_;
+  }
+  void release() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++free_;
+    }
+    freed_.notify_one();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable freed_;
+  int free_;
+};
 
 // The page may load its own files and talk to its own origin only; no other site may frame it.
 constexpr const char* kContentSecurityPolicy =
@@ -45,8 +77,9 @@ struct WebServer::Impl {
   httplib::Server server;
   int port = -1;
   std::optional<RequestGuard> guard;
+  ComputeSlots slots;
 
-  explicit Impl(const ServeOptions& o) : api(ShippedFiles(o.dataDir), o.limits) {}
+  explicit Impl(const ServeOptions& o) : api(ShippedFiles(o.dataDir), o.limits), slots(o.threads) {}
   void addRoutes();
   void addGuard();
 };
@@ -78,6 +111,11 @@ void WebServer::Impl::addRoutes() {
       if (req.body.size() > maxBytes)
         return sendJson(res, 413, Json{{"error", "request body: expected at most " + std::to_string(maxBytes) + " bytes (got " +
                                                      std::to_string(req.body.size()) + ")"}}.dump());
+      slots.acquire();
+      struct Release {
+        ComputeSlots& s;
+        ~Release() { s.release(); }
+      } release{slots};
       const ApiReply r = (api.*call)(req.body);
       sendJson(res, r.status, r.body);
     });
@@ -97,8 +135,9 @@ void WebServer::Impl::addRoutes() {
 
 WebServer::WebServer(const ServeOptions& options) : impl_(std::make_unique<Impl>(options)) {
   Impl& s = *impl_;
-  const int threads = options.threads;
-  s.server.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<std::size_t>(threads)); };
+  const int connections = std::max(kMinConnections, kConnectionsPerSlot * options.threads);
+  s.server.new_task_queue = [connections] { return new httplib::ThreadPool(static_cast<std::size_t>(connections)); };
+  s.server.set_keep_alive_timeout(kKeepAliveS);
   s.server.set_payload_max_length(std::max(options.limits.maxBodyBytes, options.limits.maxOsimBytes));
   s.server.set_default_headers({{"Content-Security-Policy", kContentSecurityPolicy},
                                 {"X-Content-Type-Options", "nosniff"},

@@ -17,7 +17,9 @@ struct ServeOptions {
   int port = 8080;
   bool firstFree = false;
   std::string dataDir = ".";  ///< holds participants/ and models/
-  int threads = 4;            ///< requests answered at once
+  /// API calls computed at once (others wait for a slot); the server holds 4 connections
+  /// per slot, at least 16, so idle or slow connections do not hold the compute.
+  int threads = 4;
   ServeLimits limits;
 };
 

@@ -8,6 +8,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -276,6 +283,43 @@ TEST_F(WebServerTest, ConcurrentRequestsAnswerAsSerialOnes) {
     EXPECT_EQ(concurrent[i], serial[i]) << "request " << i;
     EXPECT_THAT(serial[i], HasSubstr("\"swing_time_s\""));
   }
+}
+
+// Each open connection holds a pool thread (cpp-httplib): more slow senders than compute
+// slots (ServeOptions::threads, 4) once left the next request unanswered. Six connections
+// send a request one byte every 100 ms while a seventh asks for the file list.
+TEST_F(WebServerTest, SlowSendersDoNotStarveTheNextRequest) {
+  constexpr int kSlow = 6;
+  std::vector<int> sockets;
+  for (int i = 0; i < kSlow; ++i) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(server_->getPort()));
+    ::inet_pton(AF_INET, "127.0.0.1", &address.sin_addr);
+    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    sockets.push_back(fd);
+  }
+  std::atomic<bool> done{false};
+  std::vector<std::thread> senders;
+  for (int fd : sockets)
+    senders.emplace_back([fd, &done] {
+      const std::string request = "POST /api/simulate HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Slow: " + std::string(2000, 'a');
+      for (std::size_t k = 0; k < request.size() && !done; ++k) {
+        if (::send(fd, &request[k], 1, MSG_NOSIGNAL) != 1) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the senders are connected and sending
+  httplib::Client c = client();
+  c.set_connection_timeout(30, 0);
+  c.set_read_timeout(30, 0);
+  const auto r = c.Get("/api/files");
+  done = true;
+  for (auto& s : senders) s.join();
+  for (int fd : sockets) ::close(fd);
+  ASSERT_TRUE(r) << "no answer while " << kSlow << " slow senders were connected";
+  EXPECT_EQ(r->status, 200);
 }
 
 }  // namespace
