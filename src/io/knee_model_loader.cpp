@@ -1,6 +1,8 @@
 #include "io/knee_model_loader.h"
 
 #include <set>
+#include <utility>
+#include <variant>
 #include <stdexcept>
 
 #include "core/input_error.h"
@@ -328,43 +330,63 @@ void serialize(A& a, ImpedanceStateMachineParams& p) {
   }
 }
 
+// Each kind's own keys (the alternatives of KneeKind, model/knee_model.h).
+template <class A>
+void serializeKind(A& a, DampingTableKnee& k) {
+  a.map("damping_table", k.table);
+}
+template <class A>
+void serializeKind(A& a, ImpedanceStateMachineKnee& k) {
+  a.map("impedance_state_machine", k.stateMachine);
+}
+template <class A>
+void serializeKind(A& a, MauchKnee& k) {
+  MauchCylinderParams& c = k.cylinder;
+  a.integer("phases", c.phases);
+  a.require(c.phases == 2 || c.phases == 4, "phases", "must be 2 or 4 (Chien 2014 2-phase or 4-phase model)",
+            [&] { return std::to_string(c.phases); });
+  a.optionalMap("geometry", c.geometry, k.hasGeometry);
+  a.map("switches", c, SwitchesOf{});
+  a.number("flexion_dial_deg", k.flexionDial, mustBeDialSetting);
+  a.number("extension_dial_deg", k.extensionDial, mustBeDialSetting);
+  std::set<std::pair<double, double>> seen;
+  a.mapList("settings", k.settings, SettingContext{c.phases, &seen});
+  if (A::kReading) {
+    bool found = false;
+    for (const auto& s : k.settings) {
+      if (s.flexionDial != k.flexionDial || s.extensionDial != k.extensionDial) continue;
+      c.coefficients.assign(static_cast<std::size_t>(c.phases), {});
+      for (const auto& r : s.rows) c.coefficients[static_cast<std::size_t>(r.phase - 1)] = r.coefficients;
+      found = true;
+    }
+    a.require(found, "flexion_dial_deg", "no coefficient set in settings for this dial setting",
+              [&] { return "F" + formatNumber(k.flexionDial) + "E" + formatNumber(k.extensionDial); });
+  }
+  a.optionalMap("effects", c.effects, k.hasCylinderEffects, c.phases);
+}
+
+// `kind:`'s choices, one per alternative of KneeKind, and the alternative a choice makes.
+template <std::size_t... I>
+std::vector<std::pair<std::string, std::size_t>> kneeKindChoices(std::index_sequence<I...>) {
+  return {{std::variant_alternative_t<I, KneeKind>::kKey, I}...};
+}
+template <std::size_t... I>
+KneeKind makeKneeKind(std::size_t index, std::index_sequence<I...>) {
+  KneeKind kind;
+  ((index == I ? (kind.emplace<I>(), 0) : 0), ...);
+  return kind;
+}
+
 template <class A>
 void serialize(A& a, KneeModelSpec& k) {
-  a.choice("kind", k.kind,
-           {{"damping_table", KneeModelKind::kDampingTable},
-            {"mauch", KneeModelKind::kMauch},
-            {"impedance_state_machine", KneeModelKind::kImpedanceStateMachine}});
+  constexpr auto kinds = std::make_index_sequence<std::variant_size_v<KneeKind>>();
+  std::size_t index = k.kind.index();
+  a.choice("kind", index, kneeKindChoices(kinds));
+  if constexpr (A::kReading) k.kind = makeKneeKind(index, kinds);
   a.optionalText("name", k.name);
   a.optionalText("description", k.description);
   a.optionalText("source", k.source);
-  if (k.kind == KneeModelKind::kDampingTable) {
-    a.map("damping_table", k.table);
-  } else if (k.kind == KneeModelKind::kImpedanceStateMachine) {
-    a.map("impedance_state_machine", k.stateMachine);
-  } else {
-    MauchCylinderParams& c = k.cylinder;
-    a.integer("phases", c.phases);
-    a.require(c.phases == 2 || c.phases == 4, "phases", "must be 2 or 4 (Chien 2014 2-phase or 4-phase model)",
-              [&] { return std::to_string(c.phases); });
-    a.optionalMap("geometry", c.geometry, k.hasGeometry);
-    a.map("switches", c, SwitchesOf{});
-    a.number("flexion_dial_deg", k.flexionDial, mustBeDialSetting);
-    a.number("extension_dial_deg", k.extensionDial, mustBeDialSetting);
-    std::set<std::pair<double, double>> seen;
-    a.mapList("settings", k.settings, SettingContext{c.phases, &seen});
-    if (A::kReading) {
-      bool found = false;
-      for (const auto& s : k.settings) {
-        if (s.flexionDial != k.flexionDial || s.extensionDial != k.extensionDial) continue;
-        c.coefficients.assign(static_cast<std::size_t>(c.phases), {});
-        for (const auto& r : s.rows) c.coefficients[static_cast<std::size_t>(r.phase - 1)] = r.coefficients;
-        found = true;
-      }
-      a.require(found, "flexion_dial_deg", "no coefficient set in settings for this dial setting",
-                [&] { return "F" + formatNumber(k.flexionDial) + "E" + formatNumber(k.extensionDial); });
-    }
-    a.optionalMap("effects", c.effects, k.hasCylinderEffects, c.phases);
-  }
+  std::visit([&](auto& kind) { serializeKind(a, kind); }, k.kind);
   a.optionalMap("knee_effects", k.kneeEffects, k.hasKneeEffects);
   a.optionalMap("hyperextension_stop", k.stop, k.hasStop);
 }
@@ -373,12 +395,6 @@ void serialize(A& a, KneeModelSpec& k) {
 
 namespace {
 
-std::string kneeModelKindName(KneeModelKind kind) {
-  if (kind == KneeModelKind::kMauch) return "mauch";
-  if (kind == KneeModelKind::kImpedanceStateMachine) return "impedance_state_machine";
-  return "damping_table";
-}
-
 KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
   KneeModel model;
   model.path = path;
@@ -386,7 +402,6 @@ KneeModel readKneeModel(YamlMap& yaml, const std::string& path) {
   serialize(a, model.spec);
   yaml.finish();
   model.name = model.spec.name.empty() ? fileStem(path) : model.spec.name;
-  model.kind = kneeModelKindName(model.spec.kind);
   try {
     model.law = makeKneeModelLaw(model.spec);
   } catch (const std::invalid_argument& e) {
@@ -410,9 +425,9 @@ KneeModel parseKneeModel(const std::string& text, const std::string& path) {
 MauchCylinderParams loadMauchCylinder(const std::string& path) {
   YamlMap yaml = YamlMap::loadFile(path);
   const KneeModel model = readKneeModel(yaml, path);
-  if (model.spec.kind != KneeModelKind::kMauch)
-    yaml.fail("kind", "expected a Mauch cylinder model (kind: mauch)", model.kind);
-  return model.spec.cylinder;
+  const MauchKnee* mauch = model.spec.as<MauchKnee>();
+  if (!mauch) yaml.fail("kind", "expected a Mauch cylinder model (kind: mauch)", model.spec.kindKey());
+  return mauch->cylinder;
 }
 
 MauchAddedEffects readMauchAddedEffects(YamlMap& effects, int phases) {

@@ -4,14 +4,24 @@
 
 namespace swingsim {
 
+namespace {
+
+// The resisting law of each kind.
+std::unique_ptr<KneeLaw> makeResistingLaw(const DampingTableKnee& k) { return std::make_unique<DampingTable>(k.table); }
+std::unique_ptr<KneeLaw> makeResistingLaw(const MauchKnee& k) { return std::make_unique<MauchCylinder>(k.cylinder); }
+std::unique_ptr<KneeLaw> makeResistingLaw(const ImpedanceStateMachineKnee& k) {
+  return std::make_unique<ImpedanceStateMachine>(k.stateMachine);
+}
+
+}  // namespace
+
+const char* KneeModelSpec::kindKey() const {
+  return std::visit([](const auto& k) { return std::decay_t<decltype(k)>::kKey; }, kind);
+}
+
 KneeLawSum makeKneeModelLaw(const KneeModelSpec& spec) {
   KneeLawSum law;
-  if (spec.kind == KneeModelKind::kDampingTable)
-    law.add(std::make_unique<DampingTable>(spec.table));
-  else if (spec.kind == KneeModelKind::kMauch)
-    law.add(std::make_unique<MauchCylinder>(spec.cylinder));
-  else
-    law.add(std::make_unique<ImpedanceStateMachine>(spec.stateMachine));
+  law.add(std::visit([](const auto& k) { return makeResistingLaw(k); }, spec.kind));
   if (spec.hasKneeEffects) {
     if (spec.kneeEffects.modelScale != 1.0) {
       KneeLawSum scaled;

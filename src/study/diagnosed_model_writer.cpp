@@ -1,6 +1,7 @@
 #include "study/diagnosed_model_writer.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "core/input_error.h"
 #include "core/output_files.h"
@@ -25,13 +26,16 @@ KneeModelSpec diagnosedCylinder(const DiagnosisStudy& study, const MauchCylinder
   KneeModelSpec spec = loadKneeModel(study.baseModelPath).spec;
   spec.name = (spec.name.empty() ? fileStem(study.baseModelPath) : spec.name) + "-diagnosed";
   spec.description = "Augmented by swingsim diagnose (" + study.name + "): " + accepted;
-  spec.cylinder = final;
-  spec.hasCylinderEffects = final.effects.any();
+  MauchKnee* mauch = spec.as<MauchKnee>();
+  if (!mauch)  // the study's reader loads its base model as a cylinder (loadMauchCylinder)
+    throw std::logic_error(study.baseModelPath + ": a cylinder diagnosis's base model is not kind: mauch");
+  mauch->cylinder = final;
+  mauch->hasCylinderEffects = final.effects.any();
   MauchDialSetting setting;
-  setting.flexionDial = spec.flexionDial;
-  setting.extensionDial = spec.extensionDial;
+  setting.flexionDial = mauch->flexionDial;
+  setting.extensionDial = mauch->extensionDial;
   for (int i = 0; i < final.phases; ++i) setting.rows.push_back({i + 1, final.coefficients[static_cast<std::size_t>(i)]});
-  spec.settings = {setting};
+  mauch->settings = {setting};
   return spec;
 }
 

@@ -225,11 +225,12 @@ TEST(CylinderDiagnosis, AugmentedModelRoundTripsThroughTheModelYamlAndActsAsAKne
   h.truth.effects.positionDependentDamping = true;
   KneeModelSpec spec = loadKneeModel(kRoot + "/models/mauch-4phase.yaml").spec;
   spec.name = "roundtrip";
-  spec.cylinder = h.truth;
-  spec.hasCylinderEffects = true;
-  MauchDialSetting setting{spec.flexionDial, spec.extensionDial, {}};
+  MauchKnee& mauch = std::get<MauchKnee>(spec.kind);
+  mauch.cylinder = h.truth;
+  mauch.hasCylinderEffects = true;
+  MauchDialSetting setting{mauch.flexionDial, mauch.extensionDial, {}};
   for (int i = 0; i < h.truth.phases; ++i) setting.rows.push_back({i + 1, h.truth.coefficients[static_cast<std::size_t>(i)]});
-  spec.settings = {setting};
+  mauch.settings = {setting};
   const std::string yaml = formatKneeModelYaml(spec);
   const KneeModel km = parseKneeModel(yaml, "roundtrip.yaml");
   ASSERT_EQ(km.law.size(), 2u);  // cylinder, then the hyperextension stop

@@ -147,8 +147,10 @@ TEST(UserCylinderEffect, AnEndStopOutsideTheLibraryIsExplainedByTheUsersExpressi
   EXPECT_LT(testing::worstHeldOut(dg), testing::worstHeldOut(before));
   const KneeModel knee = loadKneeModel(saved);
   fs::remove_all(user.dir);
-  ASSERT_EQ(knee.spec.cylinder.effects.expressions.size(), 1u);
-  const KneeExpressionParams& x = knee.spec.cylinder.effects.expressions[0];
+  const MauchKnee* mauch = knee.spec.as<MauchKnee>();
+  ASSERT_NE(mauch, nullptr);
+  ASSERT_EQ(mauch->cylinder.effects.expressions.size(), 1u);
+  const KneeExpressionParams& x = mauch->cylinder.effects.expressions[0];
   EXPECT_EQ(x.name, "my_end_stop");
   ASSERT_EQ(x.parameters.size(), 2u);
   EXPECT_EQ(x.parameters[0].unit, "N/mm^2");

@@ -56,7 +56,7 @@ const ImpedanceStateMachine& lawOf(const KneeModel& m) { return dynamic_cast<con
 
 TEST(ImpedanceKneeModel, ShippedModelLoadsInSI) {
   const KneeModel m = loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/microprocessor-knee-osl.yaml");
-  EXPECT_EQ(m.kind, "impedance_state_machine");
+  EXPECT_STREQ(m.spec.kindKey(), "impedance_state_machine");
   const ImpedanceStateMachineParams& p = lawOf(m).params();
   ASSERT_EQ(p.states.size(), 3u);
   EXPECT_EQ(p.mode, ImpedanceMode::kPowered);

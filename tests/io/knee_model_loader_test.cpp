@@ -50,7 +50,7 @@ settings:
 
 TEST(KneeModelLoader, MauchFourPhaseModelWorksInRadiansWithItsLatchState) {
   const KneeModel model = loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-4phase.yaml");
-  EXPECT_EQ(model.kind, "mauch");
+  EXPECT_STREQ(model.spec.kindKey(), "mauch");
   ASSERT_EQ(model.law.size(), 2u);  // cylinder, then the hyperextension stop
   EXPECT_EQ(model.law.part(1).name(), "hyperextension stop");
   ASSERT_EQ(model.law.numStates(), 1);
@@ -115,12 +115,13 @@ TEST(KneeModelFormat, LoadWriteLoadGivesTheSameModel) {
   for (const char* f : {"/models/damping-table-default.yaml", "/models/mauch-2phase.yaml", "/models/mauch-4phase.yaml"})
     specs.push_back(loadKneeModel(root + f).spec);
   KneeModelSpec cylinder = specs[1];
-  cylinder.hasCylinderEffects = true;
-  cylinder.cylinder.effects.hyperextensionPhase = true;
-  cylinder.cylinder.effects.hyperextension = {-400, 5e5, 1.2e4};
-  cylinder.cylinder.effects.coulombFriction = true;
-  cylinder.cylinder.effects.coulombForce = 12.5;
-  cylinder.cylinder.effects.coulombWidth = 0.02;
+  MauchKnee& mauch = std::get<MauchKnee>(cylinder.kind);
+  mauch.hasCylinderEffects = true;
+  mauch.cylinder.effects.hyperextensionPhase = true;
+  mauch.cylinder.effects.hyperextension = {-400, 5e5, 1.2e4};
+  mauch.cylinder.effects.coulombFriction = true;
+  mauch.cylinder.effects.coulombForce = 12.5;
+  mauch.cylinder.effects.coulombWidth = 0.02;
   specs.push_back(cylinder);
   KneeModelSpec knee = specs[0];
   knee.hasKneeEffects = true;

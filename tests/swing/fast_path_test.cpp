@@ -145,7 +145,7 @@ TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
       KneeModel model = loadKneeModel(p.kneeModelPath);
       model.spec.stop.restitution = restitution;
       const SwingSetup setup = makeSwingSetup(
-          p, KneeModel{model.path, model.name, model.kind, makeKneeModelLaw(model.spec), model.spec});
+          p, KneeModel{model.path, model.name, makeKneeModelLaw(model.spec), model.spec});
       const SwingOptions plainOptions = makePlainPathOptions(kTightAccuracy, kTightEventWindow);
       const SwingResult fast = simulateSwing(setup);
       const SwingResult plain = simulateSwing(setup, plainOptions);

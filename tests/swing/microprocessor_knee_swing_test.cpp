@@ -34,7 +34,7 @@ Participant loadP1() { return loadParticipant(std::string(SWINGSIM_SOURCE_DIR) +
 KneeModel loadOsl() { return loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/microprocessor-knee-osl.yaml"); }
 
 KneeModel withMode(KneeModel model, ImpedanceMode mode) {
-  model.spec.stateMachine.mode = mode;
+  std::get<ImpedanceStateMachineKnee>(model.spec.kind).stateMachine.mode = mode;
   model.law = makeKneeModelLaw(model.spec);
   return model;
 }

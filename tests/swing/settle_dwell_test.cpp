@@ -49,7 +49,7 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees)
       KneeModelSpec spec = published.spec;
       if (v.restitution >= 0) spec.stop.restitution = v.restitution;
       const auto knee = std::make_shared<const KneeLawSum>(
-          makeKneeLaw(p, KneeModel{published.path, published.name, published.kind, makeKneeModelLaw(spec), spec}));
+          makeKneeLaw(p, KneeModel{published.path, published.name, makeKneeModelLaw(spec), spec}));
       for (double lowering : sweepLowerings(study, p)) {
         SCOPED_TRACE(p.name + " at " + std::to_string(lowering) + " m, " + v.name);
         const SwingSetup setup = makeSwingSetup(p, knee, lowering);
