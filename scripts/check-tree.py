@@ -19,6 +19,8 @@ Three checks, one line per problem, exit 1 if any (else one summary line, exit 0
   heading ignored.
 - architecture: docs/architecture.md names every folder of src/ (`src/<name>/` anywhere, or
   `<name>/` in a list item or a table row).
+- YAML in io/: no file of src/ outside src/io/, and none of python/src/, names yaml-cpp
+  (`YAML::` or its header); they read and edit YAML through io/ (io/yaml_tree.h).
 """
 import os
 import re
@@ -254,18 +256,38 @@ def check_architecture(problems):
     return len(folders)
 
 
+def check_yaml_in_io(problems):
+    checked = 0
+    for top in ("src", os.path.join("python", "src")):
+        for folder, _, files in os.walk(os.path.join(ROOT, top)):
+            if rel(folder).split(os.sep)[:2] == ["src", "io"]:
+                continue
+            for name in sorted(files):
+                if not name.endswith((".h", ".cpp")):
+                    continue
+                path = os.path.join(folder, name)
+                checked += 1
+                for number, line in enumerate((read_text(path) or "").splitlines(), 1):
+                    if "YAML::" in line or "yaml-cpp/" in line:
+                        problems.append(f"yaml: {rel(path)}:{number}: uses yaml-cpp outside src/io/ "
+                                        f"(read or edit YAML through io/, e.g. io/yaml_tree.h)")
+    return checked
+
+
 def main():
     problems = []
     units, with_test, allowed = check_mirror(problems)
     pointers = check_doc_pointers(problems)
     folders = check_architecture(problems)
+    yaml_free = check_yaml_in_io(problems)
     for p in problems:
         print(p)
     if problems:
         print(f"check-tree: {len(problems)} problem(s)", file=sys.stderr)
         return 1
     print(f"check-tree: OK: {units} units in src/ ({with_test} with their own test, {allowed} in {ALLOWLIST}), "
-          f"{pointers} doc pointers in src/ and python/, {folders} folders of src/ in {ARCHITECTURE}")
+          f"{pointers} doc pointers in src/ and python/, {folders} folders of src/ in {ARCHITECTURE}, "
+          f"{yaml_free} files outside src/io/ without yaml-cpp")
     return 0
 
 

@@ -27,7 +27,7 @@ namespace {
 /// The diagnosis study file at `path` as a dict (paths as written, relative to its folder).
 py::object loadStudyDict(const py::object& pathValue) {
   const std::string path = readPathArgument(pathValue, "load_study(): path");
-  return toPython(YAML::Load(formatDiagnosisStudyYaml(loadDiagnosisStudy(path), folderOf(path))));
+  return yamlTextToPython(formatDiagnosisStudyYaml(loadDiagnosisStudy(path), folderOf(path)));
 }
 
 /// `record` (a Participant, KneeModel or DiagnosisStudy) through its loader, and its YAML
@@ -94,7 +94,7 @@ py::tuple importOsim(const py::object& model, const py::object& side, const py::
     py::gil_scoped_release release;
     imported = importOsimParticipant(path, o, ".");
   }
-  return py::make_tuple(toPython(YAML::Load(imported.text)), imported.name);
+  return py::make_tuple(yamlTextToPython(imported.text), imported.name);
 }
 
 /// `swingsim export-osim PARTICIPANT --side S --lowering M [--add-mass KG@M]` written to the

@@ -83,33 +83,33 @@ py::object scalarToPython(const std::string& text) {
 // recursed without bound and crashed the interpreter.
 constexpr int kMaxYamlDepth = 64;
 
-void emit(YAML::Emitter& out, const py::handle& value, const std::string& where, int depth = 0) {
+void emit(YamlWriter& out, const py::handle& value, const std::string& where, int depth = 0) {
   if (depth > kMaxYamlDepth)
     throw InputError(where.substr(0, 200) + ": expected at most " + std::to_string(kMaxYamlDepth) +
                      " levels of lists and mappings (got deeper: a list or mapping that contains itself?)");
   if (py::isinstance<py::dict>(value)) {
-    out << YAML::BeginMap;
+    out.beginMap();
     for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
-      out << YAML::Key << py::str(key).cast<std::string>() << YAML::Value;
+      out.key(py::str(key).cast<std::string>());
       emit(out, item, where + "." + py::str(key).cast<std::string>(), depth + 1);
     }
-    out << YAML::EndMap;
+    out.endMap();
   } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    out << YAML::Flow << YAML::BeginSeq;
+    out.beginList();
     for (const auto& item : value) emit(out, item, where + "[]", depth + 1);
-    out << YAML::EndSeq;
+    out.endList();
   } else if (py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"))) {
-    out << (value.cast<bool>() ? "true" : "false");
+    out.plain(value.cast<bool>() ? "true" : "false");
   } else if (isNumpy(value, "ndarray")) {
     emit(out, numpyAsList(value, where), where, depth + 1);
   } else if (py::isinstance<py::str>(value)) {
-    out << YAML::DoubleQuoted << value.cast<std::string>();
+    out.quoted(value.cast<std::string>());
   } else if (py::hasattr(value, "__index__")) {
-    out << py::str(py::int_(py::reinterpret_borrow<py::object>(value))).cast<std::string>();
+    out.plain(py::str(py::int_(py::reinterpret_borrow<py::object>(value))).cast<std::string>());
   } else if (py::hasattr(value, "__float__")) {
-    out << formatNumber(value.cast<double>());
+    out.plain(formatNumber(value.cast<double>()));
   } else if (value.is_none()) {
-    out << YAML::Null;
+    out.null();
   } else {
     throw InputError(where + ": expected a number, text, list or mapping, found a Python " +
                      py::str(py::type::of(value).attr("__name__")).cast<std::string>());
@@ -118,25 +118,27 @@ void emit(YAML::Emitter& out, const py::handle& value, const std::string& where,
 
 }  // namespace
 
-py::object toPython(const YAML::Node& node) {
-  if (node.IsMap()) {
+py::object toPython(const YamlTree& node) {
+  if (node.isMap()) {
     py::dict d;
-    for (const auto& item : node) d[py::str(item.first.as<std::string>())] = toPython(item.second);
+    for (const auto& [key, item] : node.entries()) d[py::str(key)] = toPython(item);
     return std::move(d);
   }
-  if (node.IsSequence()) {
+  if (node.isList()) {
     py::list l;
-    for (const auto& item : node) l.append(toPython(item));
+    for (const auto& item : node.items()) l.append(toPython(item));
     return std::move(l);
   }
-  if (node.IsScalar()) return node.Tag() == "!" ? py::str(node.Scalar()) : scalarToPython(node.Scalar());
+  if (node.isScalar()) return node.isQuoted() ? py::str(node.scalar()) : scalarToPython(node.scalar());
   return py::none();
 }
 
+py::object yamlTextToPython(const std::string& text) { return toPython(YamlTree::parse(text, "yaml", "swingsim's own YAML")); }
+
 std::string toYamlText(const py::handle& value, const std::string& where) {
-  YAML::Emitter out;
+  YamlWriter out;
   emit(out, value, where);
-  return std::string(out.c_str()) + "\n";
+  return out.text() + "\n";
 }
 
 std::string describePython(const py::handle& value) {

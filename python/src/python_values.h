@@ -4,13 +4,13 @@
 // the file's units, keys as in the file) and go back to YAML text for the loaders, which
 // check them as they check a file.
 #include <pybind11/pybind11.h>
-#include <yaml-cpp/yaml.h>
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "io/json_file.h"
+#include "io/yaml_tree.h"
 #include "model/leg_parameters.h"
 #include "study/run_arguments.h"
 
@@ -23,7 +23,9 @@ pybind11::object toPython(const Json& json);
 
 /// A YAML document as Python objects: maps -> dict, sequences -> list, scalars -> bool
 /// (true/false), int, float or str, whichever reads the whole scalar; null -> None.
-pybind11::object toPython(const YAML::Node& node);
+pybind11::object toPython(const YamlTree& node);
+/// The YAML text swingsim wrote (a file format's writer) as Python objects, as toPython.
+pybind11::object yamlTextToPython(const std::string& text);
 
 /// The YAML text of a Python value built of dicts, lists/tuples, bools, numbers (numpy's
 /// too) and strings; floats in their shortest form that reads back to the same double.

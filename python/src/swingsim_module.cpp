@@ -49,7 +49,7 @@ namespace {
 /// The participant file at `path` as a dict in file units.
 py::object loadParticipantDict(const std::string& path) {
   const Participant p = loadParticipant(path);
-  return toPython(YAML::Load(formatParticipantYaml(p, folderOf(path))));
+  return yamlTextToPython(formatParticipantYaml(p, folderOf(path)));
 }
 
 /// The knee model file at `path` as a dict in file units, with its `name` always there.
@@ -57,7 +57,7 @@ py::object loadKneeDict(const std::string& path) {
   const KneeModel model = loadKneeModel(path);
   KneeModelSpec spec = model.spec;
   if (spec.name.empty()) spec.name = model.name;
-  return toPython(YAML::Load(formatKneeModelYaml(spec)));
+  return yamlTextToPython(formatKneeModelYaml(spec));
 }
 
 py::dict trajectoryArrays(const SwingTrajectory& trajectory) {

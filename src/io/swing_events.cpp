@@ -426,6 +426,29 @@ std::string findContradiction(const std::vector<Event>& force, bool loadedAtStar
   return "";
 }
 
+/// A clock offset between the force and the kinematics: every force event (at least 3 inside
+/// the kinematics' time, each with a kinematic event of its kind within 0.6 stride) lies one
+/// offset from its kinematic event, to within kEventToleranceS, and that offset is beyond
+/// kEventToleranceS. The offset (force minus kinematics, s), or nullopt.
+std::optional<double> findClockOffset(const std::vector<Event>& force, const KinematicEvents& kin, double t0, double t1) {
+  const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
+  std::vector<double> d;
+  for (const Event& f : force) {
+    if (f.time < t0 || f.time > t1) continue;
+    const Event* nearest = findNearest(kin.events, f.kind, f.time);
+    if (nearest && std::abs(nearest->time - f.time) <= 0.6 * stride) d.push_back(f.time - nearest->time);
+  }
+  constexpr std::size_t kMinEvents = 3;
+  if (d.size() < kMinEvents) return std::nullopt;
+  std::vector<double> sorted = d;
+  std::sort(sorted.begin(), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  if (std::abs(median) <= kEventToleranceS) return std::nullopt;
+  for (double x : d)
+    if (std::abs(x - median) > kEventToleranceS) return std::nullopt;
+  return median;
+}
+
 /// The other leg's columns (`_r` and `_l` swapped at the end of the hip and knee labels),
 /// when the file has them.
 std::optional<MotionColumns> otherLegColumns(const MotionTable& table, const MotionColumns& columns) {
@@ -554,7 +577,12 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
           findContradiction(forceEvents, loadedAtStart, kin, t.front(), t.back(), g.front(), g.back());
       !contradiction.empty()) {
     std::string other;
-    if (const auto otherLeg = otherLegColumns(kinematics, columns)) {
+    if (const auto offset = findClockOffset(forceEvents, kin, t.front(), t.back()))
+      other = ": every force event is about " + ms(std::abs(*offset)) + (*offset > 0 ? " later" : " earlier") +
+              " than the kinematics' (to within " + ms(kEventToleranceS) + "), so the two files' clocks differ by " +
+              "about that: shift the force file's time column by " + fmt("%+.3f", -*offset) +
+              " s (or the kinematics' by " + fmt("%+.3f", *offset) + " s) so that both share one clock";
+    if (const auto otherLeg = otherLegColumns(kinematics, columns); other.empty() && otherLeg) {
       const KinematicEvents otherKin = calcKinematicEvents(kinematics, *otherLeg, kin.gait.gait);
       if (findContradiction(forceEvents, loadedAtStart, otherKin, t.front(), t.back(), g.front(), g.back()).empty())
         other = "; they match the other leg's (" + otherLeg->hip + ", " + otherLeg->knee + "): is " + settings.verticalForce +

@@ -1,7 +1,5 @@
 #include "serve/leg_request.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -13,6 +11,7 @@
 #include "io/knee_model_knobs.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "io/yaml_tree.h"
 #include "study/run_arguments.h"
 
 namespace swingsim {
@@ -78,23 +77,10 @@ std::vector<std::pair<std::string, double>> readKneeSettings(const Json& body) {
   return settings;
 }
 
-// The node at dotted map path `key` in `root`, created if absent.
-YAML::Node findMapNode(YAML::Node root, const std::string& key) {
-  YAML::Node node = root;
-  std::stringstream parts(key);
-  std::string part;
-  while (std::getline(parts, part, '.')) {
-    if (!node.IsMap()) throw InputError(key + ": expected a map above '" + part + "' in the participant");
-    YAML::Node next = node[part];
-    node.reset(next);
-  }
-  return node;
-}
-
 // The form's edits into `root`. A segment's mass edited without its inertia keeps its radius of
 // gyration: the inertia scales with the mass (as import-osim's --shank-mass-kg), so a lighter
 // prosthetic shank is not given the intact one's inertia.
-void applyEdits(YAML::Node& root, const std::vector<std::pair<std::string, std::string>>& edits) {
+void applyEdits(YamlTree& root, const std::vector<std::pair<std::string, std::string>>& edits) {
   const auto edited = [&](const std::string& key) {
     for (const auto& e : edits)
       if (e.first == key) return true;
@@ -107,22 +93,19 @@ void applyEdits(YAML::Node& root, const std::vector<std::pair<std::string, std::
       continue;
     const std::string inertiaKey = key.substr(0, key.size() - suffix.size()) + ".inertia_kgm2";
     if (edited(inertiaKey)) continue;
+    const YamlTree oldMass = root.find(key);
     try {
-      const double oldMass = findMapNode(root, key).as<double>(), newMass = std::stod(value);
-      if (oldMass > 0 && newMass > 0 && std::isfinite(newMass)) inertiaScales.emplace_back(inertiaKey, newMass / oldMass);
+      const double newMass = std::stod(value);
+      if (oldMass.number() && *oldMass.number() > 0 && newMass > 0 && std::isfinite(newMass))
+        inertiaScales.emplace_back(inertiaKey, newMass / *oldMass.number());
     } catch (const std::exception&) {
-      // Not numbers: the participant loader says what is wrong with the edited value.
+      // Not a number: the participant loader says what is wrong with the edited value.
     }
   }
-  for (const auto& [key, value] : edits) findMapNode(root, key) = value;
-  for (const auto& [key, scale] : inertiaScales) {
-    YAML::Node inertia = findMapNode(root, key);
-    try {
-      inertia = fmt("%.17g", inertia.as<double>() * scale);
-    } catch (const YAML::Exception&) {
-      // Not a number in the file: the loader refuses it with its own message.
-    }
-  }
+  for (const auto& [key, value] : edits) root.set(key, value, "the participant");
+  for (const auto& [key, scale] : inertiaScales)
+    if (const auto inertia = root.find(key).number())  // else the loader refuses the file's value
+      root.set(key, fmt("%.17g", *inertia * scale), "the participant");
 }
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
@@ -141,13 +124,14 @@ const std::string kUploadedKneeName = "upload-knee.yaml";
 // An upload's knee_model as ../models/NAME.yaml of a shipped model (with a knee upload it is
 // not read, so not checked), and no measured thigh file: the server reads no path an upload
 // gives. True if knee_model was rewritten.
-bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files, bool kneeUploaded) {
-  if (root["thigh_kinematics"])
+bool checkUploadedPaths(YamlTree root, const ShippedFiles& files, bool kneeUploaded) {
+  if (!root.get("thigh_kinematics").isNull())
     throw InputError("thigh_kinematics: expected none in an uploaded participant (swingsim serve reads no file an upload "
                      "names; use drive: hip_moment) (got a thigh_kinematics entry)");
   if (kneeUploaded) return false;  // its knee_model is a name only: the knee comes from the knee upload's text
-  if (!root["knee_model"] || !root["knee_model"].IsScalar()) return false;  // the loader says what is missing
-  std::string name = root["knee_model"].Scalar();
+  const YamlTree knee = root.get("knee_model");
+  if (!knee.isScalar()) return false;  // the loader says what is missing
+  std::string name = knee.scalar();
   const std::string prefix = "../models/", suffix = ".yaml";
   if (name.rfind(prefix, 0) == 0) name = name.substr(prefix.size());
   if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
@@ -156,9 +140,9 @@ bool checkUploadedPaths(YAML::Node root, const ShippedFiles& files, bool kneeUpl
   if (std::find(names.begin(), names.end(), name) == names.end())
     throw InputError("knee_model: expected a shipped knee model by name, one of " + formatShippedKneeList(files) +
                      ", or a knee model uploaded with it (got '" +
-                     root["knee_model"].Scalar() + "')");
-  if (root["knee_model"].Scalar() == prefix + name + suffix) return false;
-  root["knee_model"] = prefix + name + suffix;
+                     knee.scalar() + "')");
+  if (knee.scalar() == prefix + name + suffix) return false;
+  root.set("knee_model", prefix + name + suffix, "the participant");
   return true;
 }
 
@@ -168,20 +152,13 @@ Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles
   // An upload resolves ../models/NAME.yaml as a shipped participant does; nothing is read there.
   const std::string source = uploaded ? files.getParticipantsDir() + "/upload.yaml" : files.findParticipantPath(request.participant);
   const std::string text = uploaded ? *request.participantYaml : readFile(source);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError("participant_yaml: expected a participant file in YAML (got a YAML error: " + e.msg + ")");
-  }
-  if (!root.IsMap()) throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
+  YamlTree root = YamlTree::parse(text, "participant_yaml", "a participant file");
+  if (!root.isMap()) throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
   // The text as given where nothing was changed, so that messages give the upload's own lines.
   const bool rewritten = uploaded && checkUploadedPaths(root, files, request.kneeYaml.has_value());
   applyEdits(root, request.edits);
-  YAML::Emitter out;
-  out << root;
   try {
-    return parseParticipant(uploaded && !rewritten && request.edits.empty() ? text : std::string(out.c_str()), source);
+    return parseParticipant(uploaded && !rewritten && request.edits.empty() ? text : root.emit(), source);
   } catch (const InputError& e) {
     if (!uploaded) throw;
     throw InputError(replaceAll(e.what(), source, "upload.yaml"));  // no path of the server's in an upload's messages
@@ -191,11 +168,8 @@ Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles
 // The knee model file: the request's upload, a shipped one by name, or the participant's.
 KneeModelKnobs loadRequestKneeFile(const LegRequest& request, const Participant& p, const ShippedFiles& files) {
   if (!request.kneeYaml) return KneeModelKnobs(request.knee ? files.findKneePath(*request.knee) : p.kneeModelPath);
-  try {
-    if (!YAML::Load(*request.kneeYaml).IsMap()) throw InputError("knee_yaml: expected a map of knee model keys (got another YAML document)");
-  } catch (const YAML::Exception& e) {
-    throw InputError("knee_yaml: expected a knee model file in YAML (got a YAML error: " + e.msg + ")");
-  }
+  if (!YamlTree::parse(*request.kneeYaml, "knee_yaml", "a knee model file").isMap())
+    throw InputError("knee_yaml: expected a map of knee model keys (got another YAML document)");
   const std::string path = files.getModelsDir() + "/" + kUploadedKneeName;
   try {
     return KneeModelKnobs::fromText(*request.kneeYaml, path);

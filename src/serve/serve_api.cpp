@@ -1,7 +1,5 @@
 #include "serve/serve_api.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -11,6 +9,7 @@
 #include "core/output_files.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "io/yaml_tree.h"
 #include "report/stick_figure_animation.h"
 #include "report/sweep_figures.h"
 #include "report/sweep_markdown.h"
@@ -29,14 +28,11 @@ ApiReply reply(const Json& json) { return {200, json.dump()}; }
 
 // The value of each editable key in the participant's YAML text, as the file writes it.
 Json readFields(const std::string& participantYaml) {
-  const YAML::Node root = YAML::Load(participantYaml);
+  const YamlTree root = YamlTree::parse(participantYaml, "participant", "a participant file");
   Json fields = Json::object();
   for (const std::string& key : editableParticipantKeys()) {
-    YAML::Node node = root;
-    std::stringstream parts(key);
-    std::string part;
-    while (node && std::getline(parts, part, '.')) node.reset(node.IsMap() ? node[part] : YAML::Node());
-    fields[key] = node && node.IsScalar() ? Json(node.as<double>()) : Json(nullptr);
+    const auto value = root.find(key).number();
+    fields[key] = value ? Json(*value) : Json(nullptr);
   }
   return fields;
 }
@@ -45,12 +41,12 @@ Json readFields(const std::string& participantYaml) {
 // states: name and the numbers of each), for the page's sliders; empty for another kind.
 Json readKneeStates(const std::string& kneeYaml) {
   Json states = Json::array();
-  const YAML::Node list = YAML::Load(kneeYaml)["impedance_state_machine"]["states"];
-  if (!list || !list.IsSequence()) return states;
-  for (const YAML::Node& state : list) {
-    Json s = {{"name", state["name"] ? state["name"].Scalar() : ""}};
-    for (const char* key : {"stiffness_Nm_per_rad", "damping_Nm_s_per_rad", "equilibrium_deg"})
-      s[key] = state[key] && state[key].IsScalar() ? Json(state[key].as<double>()) : Json(nullptr);
+  for (const YamlTree& state : YamlTree::parse(kneeYaml, "knee", "a knee model file").find("impedance_state_machine.states").items()) {
+    Json s = {{"name", state.get("name").scalar()}};
+    for (const char* key : {"stiffness_Nm_per_rad", "damping_Nm_s_per_rad", "equilibrium_deg"}) {
+      const auto value = state.get(key).number();
+      s[key] = value ? Json(*value) : Json(nullptr);
+    }
     states.push_back(s);
   }
   return states;

@@ -339,6 +339,34 @@ TEST(SwingEvents, AStatedGaitThatDetectionContradictsIsSaid) {
   }
 }
 
+// A force file on a clock 60 ms late (another system's trigger) is refused, and the message
+// says by how much and what to shift; the shift it gives makes the files agree.
+TEST(SwingEvents, AClockOffsetIsRefusedWithTheShiftThatFixesIt) {
+  const MotionTable ik = readMotionTable(kIk2392);
+  const MotionColumns columns = legColumns("l", -1);
+  GrfSettings settings;
+  settings.path = kGrf;
+  settings.verticalForce = "1_ground_force_vy";
+  MotionTable late = readMotionTable(kGrf);
+  for (double& time : late.columns.front()) time += 0.060;
+  std::string message;
+  try {
+    listSwings(ik, columns, late, settings);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  ASSERT_FALSE(message.empty()) << "a force 60 ms late was accepted";
+  EXPECT_NE(message.find("later than the kinematics'"), std::string::npos) << message;
+  const std::string cue = "shift the force file's time column by ";
+  const std::size_t at = message.find(cue);
+  ASSERT_NE(at, std::string::npos) << message;
+  const double shift = std::stod(message.substr(at + cue.size()));
+  EXPECT_NEAR(shift, -0.060, 0.025) << "the kinematic events' own accuracy (docs/swing-events.md)";
+  MotionTable shifted = late;
+  for (double& time : shifted.columns.front()) time += shift;
+  EXPECT_NO_THROW(listSwings(ik, columns, shifted, settings));
+}
+
 TEST(SwingEvents, TheFastestFlexionRuleWouldPlaceARunnersToeOffLate) {
   // Why running has a rule of its own: the walking rule on a run lands 60-120 ms late.
   const MotionTable ik = readMotionTable(kHamnerIk);
