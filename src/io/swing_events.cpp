@@ -386,21 +386,30 @@ std::string checkForceFile(const MotionTable& grf, const std::vector<double>& fo
   return "";
 }
 
+/// Each force event inside the kinematics' time [t0, t1] with the kinematic event of its kind
+/// nearest to it, where that lies within 0.6 strides (elsewhere the kinematics see no such event).
+std::vector<std::pair<const Event*, const Event*>> pairWithKinematicEvents(const std::vector<Event>& force,
+                                                                          const KinematicEvents& kin, double t0, double t1) {
+  const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
+  std::vector<std::pair<const Event*, const Event*>> pairs;
+  for (const Event& f : force) {
+    if (f.time < t0 || f.time > t1) continue;
+    const Event* nearest = findNearest(kin.events, f.kind, f.time);
+    if (nearest && std::abs(nearest->time - f.time) <= 0.6 * stride) pairs.emplace_back(&f, nearest);
+  }
+  return pairs;
+}
+
 /// The first way the force's events contradict the kinematics', "" if none: an event more
 /// than kEventToleranceS from the kinematic one of its kind (within 0.6 strides), a knee swing
 /// peak inside the force's stance, a force swing without a knee swing peak.
 std::string findContradiction(const std::vector<Event>& force, bool loadedAtStart, const KinematicEvents& kin, double t0,
                               double t1, double forceStart, double forceEnd) {
-  const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
-  for (const Event& f : force) {
-    if (f.time < t0 || f.time > t1) continue;
-    const Event* nearest = findNearest(kin.events, f.kind, f.time);
-    if (!nearest || std::abs(nearest->time - f.time) > 0.6 * stride) continue;  // the kinematics see no such event here
-    if (std::abs(nearest->time - f.time) > kEventToleranceS)
-      return std::string(f.kind == Kind::ToeOff ? "toe-off" : "heel contact") + " at " + seconds(f.time) + " is " +
-             ms(f.time - nearest->time) + " from the kinematics' (" + seconds(nearest->time) + "; at most " +
+  for (const auto& [f, nearest] : pairWithKinematicEvents(force, kin, t0, t1))
+    if (std::abs(nearest->time - f->time) > kEventToleranceS)
+      return std::string(f->kind == Kind::ToeOff ? "toe-off" : "heel contact") + " at " + seconds(f->time) + " is " +
+             ms(f->time - nearest->time) + " from the kinematics' (" + seconds(nearest->time) + "; at most " +
              ms(kEventToleranceS) + " expected)";
-  }
   // Stance from the force at a time: as at the file's first row, then as each event says (a
   // force that never falls below the threshold, e.g. both feet on one plate, is stance throughout).
   const auto inStance = [&](double time) {
@@ -431,13 +440,8 @@ std::string findContradiction(const std::vector<Event>& force, bool loadedAtStar
 /// offset from its kinematic event, to within kEventToleranceS, and that offset is beyond
 /// kEventToleranceS. The offset (force minus kinematics, s), or nullopt.
 std::optional<double> findClockOffset(const std::vector<Event>& force, const KinematicEvents& kin, double t0, double t1) {
-  const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
   std::vector<double> d;
-  for (const Event& f : force) {
-    if (f.time < t0 || f.time > t1) continue;
-    const Event* nearest = findNearest(kin.events, f.kind, f.time);
-    if (nearest && std::abs(nearest->time - f.time) <= 0.6 * stride) d.push_back(f.time - nearest->time);
-  }
+  for (const auto& [f, nearest] : pairWithKinematicEvents(force, kin, t0, t1)) d.push_back(f->time - nearest->time);
   constexpr std::size_t kMinEvents = 3;
   if (d.size() < kMinEvents) return std::nullopt;
   std::vector<double> sorted = d;

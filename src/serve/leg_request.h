@@ -27,7 +27,7 @@ struct ServeLimits {
   int maxSweepPoints = 41;               ///< lowerings of one sweep (0 to 0.2 m in 5 mm steps)
   double maxTuneWallSeconds = 30;        ///< s of one tuning; then it stops with the best setting so far
   long maxTuneSwings = 3000;             ///< swings of one tuning (P1 over 2 knobs takes ~500); then the same
-  int maxConcurrentTunes = 2;            ///< tunings at once (the pool has 4 threads: the page's swings keep 2)
+  int maxConcurrentTunes = 2;            ///< tunings at once (of 4 compute slots, ServeOptions::threads: the page's swings keep 2)
 };
 
 /// The options of the server's swings under `limits` (the wall-clock budget of one swing):

@@ -25,7 +25,7 @@ struct SwingHiddenEffect {
 /// `hidden_effects:`: effects the truth has and the base model lacks, one block per library
 /// swing effect, in the effect table's order.
 struct SwingHiddenEffects {
-  std::vector<SwingHiddenEffect> effects = std::vector<SwingHiddenEffect>(effectNames(PlantKind::kSwing).size());
+  std::vector<SwingHiddenEffect> effects;  ///< as read: one per library swing effect (none before)
   /// The value of `parameter` (a descriptor's parameter name) of the effect `name`; NaN if
   /// that effect is not hidden. Throws std::invalid_argument for an unknown name or parameter.
   double value(const std::string& name, const std::string& parameter) const;
