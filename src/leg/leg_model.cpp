@@ -15,6 +15,36 @@ MassProperties segmentMassProperties(double m, const Vec3& com, double izz) {
   return MassProperties(m, com, Inertia(izz).shiftFromMassCenter(com, m));
 }
 
+// The shank's rigid body in its frame (origin at the knee, -y towards the ankle): the shank
+// segment, an optional added point mass (Bach 1994) below the knee, and the foot welded at
+// the ankle at 90 deg to the shank, pointing forward (+x), its COM footComForward ahead of
+// the ankle. Masses add, COMs average by mass, inertias about the knee add.
+MassProperties calcShankFootMassProperties(const LegGeometry& g) {
+  const Vec3 ankle(0, -g.shankLength, 0);
+  struct Part {
+    double mass;
+    Vec3 com;
+    Inertia aboutKnee;
+  };
+  const Vec3 shankCom(0, -g.shankCom, 0), addedAt(0, -g.added.distanceBelowKnee, 0),
+      footCom = ankle + Vec3(g.footComForward, 0, 0);
+  const Part parts[] = {
+      {g.shankMass, shankCom, Inertia(g.shankInertia).shiftFromMassCenter(shankCom, g.shankMass)},
+      {g.added.mass, addedAt, Inertia::pointMassAt(addedAt, g.added.mass)},
+      {g.footMass, footCom, Inertia(g.footInertia).shiftFromMassCenter(footCom, g.footMass)},
+  };
+  double mass = 0;
+  Vec3 moment(0);
+  Inertia aboutKnee(0);
+  for (const Part& part : parts) {
+    if (!(part.mass > 0)) continue;
+    mass += part.mass;
+    moment += part.mass * part.com;
+    aboutKnee += part.aboutKnee;
+  }
+  return MassProperties(mass, moment / mass, aboutKnee);
+}
+
 // The measured thigh angle on the hip pin (q = hip flexion): position, rate and
 // acceleration from the same quintic spline, so each is the exact derivative of the last.
 class PrescribedThighImpl final : public Motion::Custom::Implementation {
@@ -74,12 +104,14 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
                    const HipPath* hipPath)
     : matter_(system_),
       forces_(system_),
-      footLength_(g.footLength) {
+      footLength_(g.footLength),
+      shankLength_(g.shankLength) {
   Force::UniformGravity(forces_, matter_, Vec3(0, -kGravity, 0));
 
-  // The orientation link of Burkett's DH chain: no mass, places the hip in space.
-  orientation_ = MobilizedBody::Weld(matter_.Ground(), Transform(Vec3(0, hipHeight, 0)),
-                                     Body::Massless(), Transform());
+  // Burkett's orientation link (a massless weld placing the hip in space) is the hip pin's
+  // inboard frame on Ground, and the foot (welded to the shank at the ankle) is part of the
+  // shank's rigid body: the same dynamics with two bodies fewer to realize (docs/speed.md).
+  const Transform hipInGround(Vec3(0, hipHeight, 0));
 
   if (hipPath != nullptr && prescribedThigh == nullptr)
     throw std::invalid_argument("LegModel: a moving hip needs the measured thigh drive");
@@ -88,32 +120,17 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
   // solved).
   movingHip_ = hipPath != nullptr;
   if (movingHip_) {
-    carrier_ = MobilizedBody::Translation(orientation_, Transform(), Body::Massless(), Transform());
+    carrier_ = MobilizedBody::Translation(matter_.Ground(), hipInGround, Body::Massless(), Transform());
     Motion::Custom(carrier_, new PrescribedHipImpl(*hipPath));
     kneeCoordinate_ = 4;
   }
-  MobilizedBody& hipParent = movingHip_ ? static_cast<MobilizedBody&>(carrier_) : static_cast<MobilizedBody&>(orientation_);
-  thigh_ = MobilizedBody::Pin(hipParent, Transform(),
-                              Body::Rigid(segmentMassProperties(g.thighMass, Vec3(0, -g.thighCom, 0), g.thighInertia)),
-                              Transform());
+  const Body::Rigid thighBody(segmentMassProperties(g.thighMass, Vec3(0, -g.thighCom, 0), g.thighInertia));
+  thigh_ = movingHip_ ? MobilizedBody::Pin(carrier_, Transform(), thighBody, Transform())
+                      : MobilizedBody::Pin(matter_.Ground(), hipInGround, thighBody, Transform());
 
-  // Shank, with an optional added point mass (Bach 1994) below the knee.
-  MassProperties shankProps = segmentMassProperties(g.shankMass, Vec3(0, -g.shankCom, 0), g.shankInertia);
-  if (g.added.mass > 0) {
-    const double m = g.shankMass + g.added.mass;
-    const Vec3 com = (g.shankMass * Vec3(0, -g.shankCom, 0) + g.added.mass * Vec3(0, -g.added.distanceBelowKnee, 0)) / m;
-    const Inertia inertiaAboutKnee =
-        shankProps.getInertia() + Inertia::pointMassAt(Vec3(0, -g.added.distanceBelowKnee, 0), g.added.mass);
-    shankProps = MassProperties(m, com, inertiaAboutKnee);
-  }
   const Rotation flip(Pi, XAxis);  // makes the knee pin's +q a flexion (see header)
-  shank_ = MobilizedBody::Pin(thigh_, Transform(flip, Vec3(0, -g.thighLength, 0)), Body::Rigid(shankProps),
+  shank_ = MobilizedBody::Pin(thigh_, Transform(flip, Vec3(0, -g.thighLength, 0)), Body::Rigid(calcShankFootMassProperties(g)),
                               Transform(flip, Vec3(0)));
-
-  // Foot welded at the ankle at 90 deg to the shank, pointing forward (+x of the shank).
-  foot_ = MobilizedBody::Weld(shank_, Transform(Vec3(0, -g.shankLength, 0)),
-                              Body::Rigid(segmentMassProperties(g.footMass, Vec3(g.footComForward, 0, 0), g.footInertia)),
-                              Transform());
 
   JointStopParams range;
   range.lower = hipRange.minFlexion;
@@ -187,8 +204,8 @@ LegPose LegModel::calcPose(const State& s) const {
   LegPose pose;
   pose.hip = at(thigh_, Vec3(0));
   pose.knee = at(shank_, Vec3(0));
-  pose.ankle = at(foot_, Vec3(0));
-  pose.toe = at(foot_, Vec3(footLength_, 0, 0));
+  pose.ankle = at(shank_, Vec3(0, -shankLength_, 0));
+  pose.toe = at(shank_, Vec3(footLength_, -shankLength_, 0));
   return pose;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
-// The Simbody model of the prosthetic leg (Burkett 2004 Fig. 2): Ground -> orientation
-// (welded frame placing the hip) -> thigh (pin at the hip) -> shank (pin at the knee) ->
-// foot (welded at the ankle, perpendicular to the shank). Planar, gravity -y, x forward.
+// The Simbody model of the prosthetic leg (Burkett 2004 Fig. 2): Ground -> thigh (pin at the
+// hip, its inboard frame Burkett's orientation link placing the hip) -> shank (pin at the
+// knee). The foot, welded at the ankle perpendicular to the shank, is part of the shank's
+// rigid body (its mass properties added in), so a realization has two bodies to compute.
+// Planar, gravity -y, x forward.
 //
-// With a measured pelvis (a HipPath) a hip carrier sits between the orientation frame and the
+// With a measured pelvis (a HipPath) a hip carrier sits between the hip's place and the
 // thigh: a massless body on a Translation mobilizer whose x, y follow the hip's path (z held
 // at 0), so the swing feels the hip's acceleration (docs/moving-hip.md). Without it the hip
 // is fixed in space, as Burkett assumed.
@@ -98,14 +100,13 @@ class LegModel {
   SimTK::MultibodySystem system_;
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;
-  SimTK::MobilizedBody::Weld orientation_;
   SimTK::MobilizedBody::Translation carrier_;  // only with a moving hip
   SimTK::MobilizedBody::Pin thigh_;
   SimTK::MobilizedBody::Pin shank_;
-  SimTK::MobilizedBody::Weld foot_;
   const KneeForceElement* knee_ = nullptr;    // owned by forces_
   const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_; null with a prescribed thigh
-  double footLength_;  // m, ankle to toe (for calcPose)
+  double footLength_;   // m, ankle to toe (for calcPose)
+  double shankLength_;  // m, knee to ankle (for calcPose)
   int kneeCoordinate_ = 1;
   bool movingHip_ = false;
 };
