@@ -13,7 +13,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
-all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz diagnosis_study_fuzz csv_fuzz motion_file_fuzz osim_model_fuzz)
+all_targets=(participant_fuzz knee_model_fuzz sweep_study_fuzz cylinder_study_fuzz diagnosis_study_fuzz csv_fuzz motion_file_fuzz osim_model_fuzz
+             serve_request_fuzz)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all_targets[@]}")
 
@@ -60,10 +61,23 @@ printf '\101swing\nversion=1\nnRows=6\nnColumns=4\ninDegrees=yes\nendheader\ntim
 # -max_len); a dictionary of its element and attribute names.
 seed osim_model_fuzz tests/data/*.osim
 
+# Request bodies, the first byte the call (serve_request_fuzz.cpp: 0 describe, 1 simulate, 2 tune).
+mkdir -p build-fuzz/seeds/serve_request_fuzz
+printf '\000{"participant": "p1", "edits": {"segments.shank.mass_kg": "1.2"}, "knee": "passive-knee"}' \
+  >build-fuzz/seeds/serve_request_fuzz/describe.json
+printf '\001{"participant": "p2", "lowering_m": 0.03, "added_mass_kg": 0.5, "added_mass_position_m": 0.2}' \
+  >build-fuzz/seeds/serve_request_fuzz/simulate.json
+printf '\002{"participant": "p1", "knobs": [{"key": "lowering_m", "min": 0, "max": 0.1}], "targets": {"swing_time_s": 0.4}}' \
+  >build-fuzz/seeds/serve_request_fuzz/tune.json
+{ printf '\000{"participant_yaml": '; python3 -c 'import json,sys; print(json.dumps(open("participants/p1.yaml").read()))'; printf '}'; } \
+  >build-fuzz/seeds/serve_request_fuzz/upload.json
+
 # A dictionary per YAML target: every key its seeds use, so mutations stay near valid files.
 dictionary() {  # dictionary TARGET -> path
   local dict="build-fuzz/seeds/$1.dict"
-  if [ "$1" = osim_model_fuzz ]; then
+  if [ "$1" = serve_request_fuzz ]; then
+    cat build-fuzz/seeds/"$1"/* | grep -oE '"[A-Za-z_.]+"' | sort -u | sed 's/"/\\"/g; s/.*/"&"/' >"$dict"
+  elif [ "$1" = osim_model_fuzz ]; then
     cat build-fuzz/seeds/"$1"/* | grep -oE '</?[A-Za-z_]+|[A-Za-z_]+="' | sort -u | sed 's/"/\\"/g; s/.*/"&"/' >"$dict"
   else
     cat build-fuzz/seeds/"$1"/* | grep -oE '[A-Za-z_]+:' | sort -u | sed 's/.*/"&"/' >"$dict"

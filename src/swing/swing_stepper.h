@@ -72,11 +72,12 @@ class SimbodyStepper final : public SwingStepper {
 // per step, first same as last, and nothing else per step.
 class DormandPrinceStepper final : public SwingStepper {
  public:
-  DormandPrinceStepper(const SimTK::MultibodySystem& system, const SimTK::State& initial, double accuracy,
+  /// Takes `initial` over as its working state (realized at the step ends and stages).
+  DormandPrinceStepper(const SimTK::MultibodySystem& system, SimTK::State initial, double accuracy,
                        std::vector<double> breakpoints)
-      : work_(initial), ode_(system, work_), y_(ode_.numStates()), breakpoints_(std::move(breakpoints)) {
-    ode_.readState(initial, y_.data());
-    start(initial.getTime(), accuracy);
+      : work_(std::move(initial)), ode_(system, work_), y_(ode_.numStates()), breakpoints_(std::move(breakpoints)) {
+    ode_.readState(work_, y_.data());
+    start(work_.getTime(), accuracy);
   }
   bool step(double tLimit) override {
     const double t = getTime();
