@@ -119,10 +119,10 @@ std::string seconds(double s) { return fmt("%.4f s", s); }
 
 struct GaitChoice {
   Gait gait = Gait::kWalking;
-  std::string basis;
+  std::string basis = "";
   /// A stated gait that detection (stride, or one swing's knee peak) contradicts: what to
   /// check ("" if none).
-  std::string contradiction;
+  std::string contradiction = "";
 };
 
 GaitChoice detectGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks);
