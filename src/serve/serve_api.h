@@ -7,6 +7,7 @@
 // a swing that fails (RunError) is 422 {"error"}. No answer names the server's data folder.
 // Every call is safe from several threads.
 #include <atomic>
+#include <functional>
 #include <string>
 
 #include "serve/api_reply.h"
@@ -57,7 +58,11 @@ class ServeApi {
   /// "interrupted"; 503 while limits.maxConcurrentTunes others run):
   /// {"knobs": [{"key", "value", "at_range_end"}], "targets", "feasible", "interrupted",
   /// "identifiable", "identifiability", "evaluations", "seconds", "swing_time_s"}.
-  ApiReply tune(const std::string& body) const;
+  /// `clientGone` (optional), asked before each swing: true once the request's client has
+  /// gone (serve/peer_watch.h); the tuning then ends as a stopping server's does, its answer
+  /// read by nobody, and its compute slot is free for the next request.
+  ApiReply tune(const std::string& body, const std::function<bool()>& clientGone) const;
+  ApiReply tune(const std::string& body) const { return tune(body, nullptr); }
 
   const ServeLimits& getLimits() const { return limits_; }
 

@@ -120,7 +120,7 @@ Json makeTuneJson(const TuningResult& r, double seconds) {
 
 }  // namespace
 
-ApiReply ServeApi::tune(const std::string& body) const {
+ApiReply ServeApi::tune(const std::string& body, const std::function<bool()>& clientGone) const {
   // At most limits_.maxConcurrentTunes at once: the others are told to come back.
   struct Slot {
     std::atomic<int>& running;
@@ -146,17 +146,23 @@ ApiReply ServeApi::tune(const std::string& body) const {
     settings.maxSeconds = kTuneMaxSeconds;
     const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     volatile bool stop = false;
+    bool gone = false;  // the client has closed its connection
     std::atomic<long> swings{0};
     const TuningEvaluator evaluate = [&](const std::vector<double>& x) {
-      if (stop || stopping_ || seconds() > limits_.maxTuneWallSeconds || swings.fetch_add(1) >= limits_.maxTuneSwings) {
+      if (!gone && clientGone && clientGone()) gone = true;
+      if (stop || stopping_ || gone || seconds() > limits_.maxTuneWallSeconds ||
+          swings.fetch_add(1) >= limits_.maxTuneSwings) {
         stop = true;
-        throw RunError(stopping_ ? "swingsim serve is stopping" : "stopped at swingsim serve's budget");
+        throw RunError(stopping_ ? "swingsim serve is stopping"
+                       : gone    ? "the client has gone"
+                                 : "stopped at swingsim serve's budget");
       }
       return model.simulate(x, options);
     };
     TuningResult r = runKneeTuning(knobs, targets, evaluate, settings, {}, &stop);
     r.interrupted = r.interrupted || stop;
     if (!r.best.ran && stopping_) throw RunError("tune: swingsim serve is stopping; no swing ran");
+    if (!r.best.ran && gone) throw RunError("tune: the client has gone; no swing ran");
     if (!r.best.ran)
       throw RunError("tune: stopped at swingsim serve's budget (" + formatNumber(limits_.maxTuneWallSeconds) + " s, " +
                      std::to_string(limits_.maxTuneSwings) + " swings) before any swing ran");

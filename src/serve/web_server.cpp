@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <condition_variable>
+#include <functional>
 #include <mutex>
 #include <optional>
 
 #include "core/input_error.h"
 #include "serve/page_assets.h"
+#include "serve/peer_watch.h"
 #include "serve/request_guard.h"
 #include "serve/serve_api.h"
 
@@ -105,9 +107,11 @@ void WebServer::Impl::addRoutes() {
     const ApiReply r = api.listFiles();
     sendJson(res, r.status, r.body);
   });
-  // Each call's own body limit (an .osim upload's is larger than the others').
-  const auto post = [this](const char* path, ApiReply (ServeApi::*call)(const std::string&) const, std::size_t maxBytes) {
-    server.Post(path, [this, call, maxBytes](const httplib::Request& req, httplib::Response& res) {
+  // Each call's own body limit (an .osim upload's is larger than the others'), and a compute
+  // slot while it answers.
+  const auto answer = [this](const char* path, std::size_t maxBytes,
+                             std::function<ApiReply(const httplib::Request&)> call) {
+    server.Post(path, [this, maxBytes, call](const httplib::Request& req, httplib::Response& res) {
       if (req.body.size() > maxBytes)
         return sendJson(res, 413, Json{{"error", "request body: expected at most " + std::to_string(maxBytes) + " bytes (got " +
                                                      std::to_string(req.body.size()) + ")"}}.dump());
@@ -116,9 +120,13 @@ void WebServer::Impl::addRoutes() {
         ComputeSlots& s;
         ~Release() { s.release(); }
       } release{slots};
-      const ApiReply r = (api.*call)(req.body);
+      const ApiReply r = call(req);
       sendJson(res, r.status, r.body);
     });
+  };
+  const auto post = [this, &answer](const char* path, ApiReply (ServeApi::*call)(const std::string&) const,
+                                    std::size_t maxBytes) {
+    answer(path, maxBytes, [this, call](const httplib::Request& req) { return (api.*call)(req.body); });
   };
   const ServeLimits& limits = api.getLimits();
   post("/api/participant", &ServeApi::describeParticipant, limits.maxBodyBytes);
@@ -126,8 +134,14 @@ void WebServer::Impl::addRoutes() {
   post("/api/sweep", &ServeApi::sweep, limits.maxBodyBytes);
   post("/api/report", &ServeApi::report, limits.maxBodyBytes);
   post("/api/export_osim", &ServeApi::exportOsim, limits.maxBodyBytes);
-  post("/api/tune", &ServeApi::tune, limits.maxBodyBytes);
   post("/api/import_osim", &ServeApi::importOsim, limits.maxOsimBytes);
+  // A tuning runs for up to its budget (30 s): it stops when its client has gone (a closed
+  // page, a cancelled fetch), found by its socket's peer (cpp-httplib 0.11 gives a handler
+  // no connection state; serve/peer_watch.h).
+  answer("/api/tune", limits.maxBodyBytes, [this](const httplib::Request& req) {
+    const std::optional<PeerWatch> peer = PeerWatch::find(req.remote_addr, req.remote_port);
+    return api.tune(req.body, [&peer] { return peer && peer->isGone(); });
+  });
   server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
     if (res.body.empty()) sendJson(res, res.status, Json{{"error", "HTTP " + std::to_string(res.status)}}.dump());
   });

@@ -221,6 +221,22 @@ TEST(ServeTune, AStoppingServerEndsATuningAtItsNextSwing) {
   EXPECT_THAT(r.body, HasSubstr("swingsim serve is stopping; no swing ran"));
 }
 
+// Issue 57: a tuning whose client had gone (a closed page) ran to its budget, holding a
+// compute slot. It ends at its next swing once the client is gone.
+TEST(ServeTune, AGoneClientEndsATuningAtItsNextSwing) {
+  const ServeApi api(ShippedFiles(SWINGSIM_SOURCE_DIR), ServeLimits{});
+  const ApiReply none = api.tune(kTuneRequest.dump(), [] { return true; });
+  EXPECT_EQ(none.status, 422) << none.body;
+  EXPECT_THAT(none.body, HasSubstr("the client has gone; no swing ran"));
+  int asked = 0;  // gone after 30 swings: the best of those comes back, marked interrupted
+  const ApiReply some = api.tune(kTuneRequest.dump(), [&asked] { return ++asked > 30; });
+  ASSERT_EQ(some.status, 200) << some.body;
+  const Json j = Json::parse(some.body);
+  EXPECT_TRUE(j["interrupted"].get<bool>());
+  EXPECT_LE(j["evaluations"].get<int>(), 31);
+  EXPECT_EQ(asked, 31);  // asked once a swing, and not again once it said gone
+}
+
 TEST(ServeTune, RefusesBeyondItsConcurrentTunings) {
   ServeLimits limits;
   limits.maxConcurrentTunes = 0;
