@@ -40,6 +40,8 @@ for name, b in med.items():
     print(f"| {name} | {ms(name):.3f} | {counters} |")
 swing = float("nan")
 # Each block prints when the benchmarks it needs ran (BENCH_ARGS may filter some out).
+def name_of(prefix):
+    return next(k for k in med if k.startswith(prefix))
 def section(block):
     try:
         block()
@@ -47,45 +49,41 @@ def section(block):
         pass
 def block_0():
     global swing
-    swing = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:0")))
-    plain = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:1")))
-    rkm = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:2")))
-    rk3 = ms(next(k for k in med if k.startswith("BM_SwingSimbody/variant:3")))
+    swing = ms(name_of("BM_SwingSimbody/variant:0"))
+    plain = ms(name_of("BM_SwingSimbody/variant:1"))
+    rkm = ms(name_of("BM_SwingSimbody/variant:2"))
+    rk3 = ms(name_of("BM_SwingSimbody/variant:3"))
     print(f"\nSimbody swing: plain path (RKM 1e-4, Simbody event handlers) / default (Dormand-Prince 1e-5): {plain / swing:.2f}x; "
           f"fast path on Simbody's RKM 1e-4 / default: {rkm / swing:.2f}x; on Simbody's RK3 1e-3 / default: {rk3 / swing:.2f}x")
     realize = ms("BM_RealizeLeg")
-    n = med[next(k for k in med if k.startswith("BM_SwingSimbody/variant:0"))]["realizations"]
+    n = med[name_of("BM_SwingSimbody/variant:0")]["realizations"]
     print(f"one realization of the leg: {realize * 1e3:.2f} us; default swing: {n:.0f} realizations = {n * realize:.2f} ms "
           f"= {100 * n * realize / swing:.0f} % of the swing's {swing:.2f} ms")
-    ref = ms(next(k for k in med if k.startswith("BM_SwingReference/tol_exp:0")))
-    ref6 = ms(next(k for k in med if k.startswith("BM_SwingReference/tol_exp:6")))
+    ref = ms(name_of("BM_SwingReference/tol_exp:0"))
+    ref6 = ms(name_of("BM_SwingReference/tol_exp:6"))
     print(f"Simbody swing / reference swing (same accuracy number): {swing / ref:.0f}x; / reference at 1e-6 (converged): {swing / ref6:.0f}x")
 section(block_0)
 def block_1():
-    global swing
-    allc = next(k for k in med if k.startswith("BM_SweepBurkett/jobs:0"))
-    one = next(k for k in med if k.startswith("BM_SweepBurkett/jobs:1"))
+    allc = name_of("BM_SweepBurkett/jobs:0")
+    one = name_of("BM_SweepBurkett/jobs:1")
     print(f"sweep (84 swings) on 1 core / all cores: {ms(one) / ms(allc):.2f}x")
 section(block_1)
 def block_2():
-    global swing
-    fit0 = ms(next(k for k in med if k.startswith("BM_FitMauch/fit_switches:0")))
-    fit1 = ms(next(k for k in med if k.startswith("BM_FitMauch/fit_switches:1")))
+    fit0 = ms(name_of("BM_FitMauch/fit_switches:0"))
+    fit1 = ms(name_of("BM_FitMauch/fit_switches:1"))
     print(f"fitting both Mauch models on three files: {fit0:.1f} ms at fixed switches, {fit1:.1f} ms with the switch "
           f"constants fitted ({fit1 / fit0:.0f}x)")
 section(block_2)
 def block_3():
-    global swing
-    dgc = ms(next(k for k in med if k.startswith("BM_DiagnoseCylinder")))
-    dgs = ms(next(k for k in med if k.startswith("BM_DiagnoseSwing")))
+    dgc = ms(name_of("BM_DiagnoseCylinder"))
+    dgs = ms(name_of("BM_DiagnoseSwing"))
     print(f"one cylinder diagnosis: {dgc / 1e3:.2f} s; one swing diagnosis (three trials): {dgs / 1e3:.2f} s; "
           f"swing diagnosis / Simbody swing: {dgs / swing:.0f}x")
 section(block_3)
 def block_4():
-    global swing
     # The Monte Carlo (sweep --uncertainty 1000 on the four Burkett participants is
     # 84,000 swings), measured on fewer samples and extrapolated by swings.
-    mc = {j: next(k for k in med if k.startswith(f"BM_UncertaintyBurkett/jobs:{j}")) for j in (1, 2)}
+    mc = {j: name_of(f"BM_UncertaintyBurkett/jobs:{j}") for j in (1, 2)}
     mc_swings = med[mc[1]]["swings"]
     print(f"Monte Carlo, 84,000 swings (sweep --uncertainty 1000, Burkett study), EXTRAPOLATED from "
           f"{mc_swings:.0f} swings (20 samples) measured in this run: "
@@ -94,9 +92,8 @@ def block_4():
           f"{mc_swings / (ms(mc[2]) / 1e3):.0f} swings/s on 2 threads; 1 / 2 threads {ms(mc[1]) / ms(mc[2]):.2f}x")
 section(block_4)
 def block_5():
-    global swing
-    lib = ms(next(k for k in med if k.startswith("BM_SwingAddedDamper/expression:0")))
-    expr = ms(next(k for k in med if k.startswith("BM_SwingAddedDamper/expression:1")))
+    lib = ms(name_of("BM_SwingAddedDamper/expression:0"))
+    expr = ms(name_of("BM_SwingAddedDamper/expression:1"))
     print(f"P1 swing with an added 0.3 N m s/rad damper: as a user's expression / as the library's record: {expr / lib:.3f}x")
 section(block_5)
 print(f"json: {sys.argv[1]}")
