@@ -76,7 +76,7 @@ printf '\002{"participant": "p1", "knobs": [{"key": "lowering_m", "min": 0, "max
 dictionary() {  # dictionary TARGET -> path
   local dict="build-fuzz/seeds/$1.dict"
   if [ "$1" = serve_request_fuzz ]; then
-    cat build-fuzz/seeds/"$1"/* | grep -oE '"[A-Za-z_.]+"' | sort -u | sed 's/"/\\"/g; s/.*/"&"/' >"$dict"
+    cat build-fuzz/seeds/"$1"/* | grep -aoE '"[A-Za-z_.]+"' | sort -u | sed 's/"/\\"/g; s/.*/"&"/' >"$dict"
   elif [ "$1" = osim_model_fuzz ]; then
     cat build-fuzz/seeds/"$1"/* | grep -oE '</?[A-Za-z_]+|[A-Za-z_]+="' | sort -u | sed 's/"/\\"/g; s/.*/"&"/' >"$dict"
   else
