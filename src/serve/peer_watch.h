@@ -7,8 +7,22 @@
 // client has gone, so an abandoned tuning does not hold a compute slot to its budget.
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace swingsim {
+
+/// A connected TCP socket of this process: its descriptor, its local port and its peer.
+struct SocketPeer {
+  int socket = -1;
+  int localPort = 0;
+  std::string address;  ///< the peer's, numeric
+  int port = 0;         ///< the peer's
+};
+
+/// Every connected TCP socket of this process (/proc/self/fd, getsockname, getpeername).
+std::vector<SocketPeer> listSocketPeers();
+/// The descriptor `socket` as a connected TCP socket; nullopt if it is not one (any more).
+std::optional<SocketPeer> describeSocket(int socket);
 
 class PeerWatch {
  public:

@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "serve/page_assets.h"
 #include "serve/peer_watch.h"
+#include "serve/request_deadline.h"
 #include "serve/request_guard.h"
 #include "serve/serve_api.h"
 
@@ -80,6 +81,7 @@ struct WebServer::Impl {
   int port = -1;
   std::optional<RequestGuard> guard;
   ComputeSlots slots;
+  std::optional<RequestDeadline> deadline;  // last: its watchdog stops first
 
   explicit Impl(const ServeOptions& o) : api(ShippedFiles(o.dataDir), o.limits), slots(o.threads) {}
   void addRoutes();
@@ -115,6 +117,13 @@ void WebServer::Impl::addRoutes() {
       if (req.body.size() > maxBytes)
         return sendJson(res, 413, Json{{"error", "request body: expected at most " + std::to_string(maxBytes) + " bytes (got " +
                                                      std::to_string(req.body.size()) + ")"}}.dump());
+      // Exempt from the request deadline while it is answered (a tuning takes up to 30 s).
+      struct Answering {
+        RequestDeadline& d;
+        std::string peer;
+        ~Answering() { d.finish(peer); }
+      } answering{*deadline, req.remote_addr + ":" + std::to_string(req.remote_port)};
+      deadline->start(answering.peer);
       slots.acquire();
       struct Release {
         ComputeSlots& s;
@@ -170,6 +179,9 @@ WebServer::WebServer(const ServeOptions& options) : impl_(std::make_unique<Impl>
                    (options.firstFree ? " or the next " + std::to_string(kFirstFreeTries - 1) : std::string()) +
                    " (in use, or not an address of this machine)");
   s.guard.emplace(options.host, s.port);
+  // Checked four times a deadline, at most every 250 ms.
+  s.deadline.emplace(s.port, options.requestDeadline,
+                     std::min(std::chrono::milliseconds(250), std::max(std::chrono::milliseconds(1), options.requestDeadline / 4)));
   s.addGuard();
   s.addRoutes();
 }

@@ -3,6 +3,7 @@
 // size limit and a hook before routing for the Host/Origin checks): the page
 // (serve/page_assets.h) and the JSON API (serve/serve_api.h). Every request passes the
 // RequestGuard first; bodies above ServeLimits::maxBodyBytes are refused (413).
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -20,6 +21,9 @@ struct ServeOptions {
   /// API calls computed at once (others wait for a slot); the server holds 4 connections
   /// per slot, at least 16, so idle or slow connections do not hold the compute.
   int threads = 4;
+  /// A connection outside a request handler for longer than this (a request sent a byte at a
+  /// time) is shut down (serve/request_deadline.h); keep-alive idling ends after 2 s anyway.
+  std::chrono::milliseconds requestDeadline{10000};
   ServeLimits limits;
 };
 

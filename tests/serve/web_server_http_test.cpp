@@ -322,5 +322,57 @@ TEST_F(WebServerTest, SlowSendersDoNotStarveTheNextRequest) {
   EXPECT_EQ(r->status, 200);
 }
 
+// Issue 57: no request had a deadline as a whole (each read times out after 5 s of silence),
+// so enough slow senders held every connection thread for as long as they liked. With a 1 s
+// deadline, 24 senders of a byte every 100 ms (more than the 16 connection threads; each
+// request would take 200 s) are all shut down, and the server answers again. The wait for
+// the cuts is bounded (30 s) but ends at the last cut, so load only makes it longer.
+TEST(WebServerDeadline, SlowSendersAreCutAtTheRequestDeadline) {
+  ServeOptions options;
+  options.port = 0;
+  options.dataDir = SWINGSIM_SOURCE_DIR;
+  options.requestDeadline = std::chrono::milliseconds(1000);
+  WebServer server(options);
+  std::thread runner([&server] { server.run(); });
+  while (!server.isRunning()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  constexpr int kSlow = 24;
+  std::vector<int> sockets;
+  for (int i = 0; i < kSlow; ++i) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(server.getPort()));
+    ::inet_pton(AF_INET, "127.0.0.1", &address.sin_addr);
+    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    sockets.push_back(fd);
+  }
+  std::atomic<bool> done{false};
+  std::atomic<int> cut{0};
+  std::vector<std::thread> senders;
+  for (int fd : sockets)
+    senders.emplace_back([fd, &done, &cut] {
+      const std::string request = "POST /api/simulate HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Slow: " + std::string(2000, 'a');
+      for (std::size_t k = 0; k < request.size() && !done; ++k) {
+        if (::send(fd, &request[k], 1, MSG_NOSIGNAL) != 1) {
+          ++cut;
+          return;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    });
+  for (int i = 0; i < 300 && cut < kSlow; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const int cutInTime = cut;
+  done = true;
+  for (auto& s : senders) s.join();
+  for (int fd : sockets) ::close(fd);
+  httplib::Client c("127.0.0.1", server.getPort());
+  const auto r = c.Get("/api/files");
+  server.stop();
+  runner.join();
+  EXPECT_EQ(cutInTime, kSlow) << "slow senders still connected after 30 s";
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+}
+
 }  // namespace
 }  // namespace swingsim
