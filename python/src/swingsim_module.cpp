@@ -35,11 +35,10 @@
 #include "study/diagnosis_study.h"
 #include "io/swing_record_csv.h"
 #include "study/run_arguments.h"
+#include "study/simulate_run.h"
 #include "study/sweep_run.h"
 #include "study/sweep_study.h"
 #include "study/tuning_run.h"
-#include "swing/knee_setup.h"
-#include "swing/swing_simulation.h"
 
 namespace py = pybind11;
 
@@ -68,17 +67,13 @@ py::dict trajectoryArrays(const SwingTrajectory& trajectory) {
   return arrays;
 }
 
-/// The integrator and its accuracy as simulate's --integrator and --accuracy: the method at
-/// its converged setting unless accuracy says otherwise.
+/// The integrator and its accuracy as simulate's --integrator and --accuracy (makeSimulateOptions).
 SwingOptions readSwingOptionArguments(const py::object& integrator, const py::object& accuracy) {
-  SwingOptions options;
-  options.trackImpactEnergy = true;  // as the CLI's simulate: one swing, the bookkeeping is cheap
-  if (!integrator.is_none()) {
-    options.integrator = *findIntegrator(readChoiceArgument(integrator, "simulate(): integrator", integratorKeys()));
-    options.accuracy = calcConvergedAccuracy(options.integrator);
-  }
-  if (!accuracy.is_none()) options.accuracy = readNumberArgument(accuracy, "simulate(): accuracy", checkAccuracy);
-  return options;
+  std::optional<std::string> key;
+  std::optional<double> value;
+  if (!integrator.is_none()) key = readChoiceArgument(integrator, "simulate(): integrator", integratorKeys());
+  if (!accuracy.is_none()) value = readNumberArgument(accuracy, "simulate(): accuracy", checkAccuracy);
+  return makeSimulateOptions(key, value);
 }
 
 /// One swing as `swingsim simulate --json` describes it, plus "knee_model" and the
@@ -90,16 +85,14 @@ py::dict simulate(const py::object& participant, const py::object& loweringValue
   const SwingOptions options = readSwingOptionArguments(integrator, accuracy);
   Participant loaded = readParticipant(participant, "simulate");
   const KneeModel model = readKnee(knee, loaded, "simulate");
-  std::optional<SwingSetup> setup;
-  SwingResult result;
+  std::optional<SimulateRun> run;
   {
     py::gil_scoped_release release;
-    setup = makeSwingSetup(std::move(loaded), model, lowering, added);
-    result = simulateSwing(*setup, options);
+    run = runSimulate(std::move(loaded), model, lowering, added, options);
   }
-  py::dict out = toPython(makeSimulateJson(*setup, result));
+  py::dict out = toPython(makeSimulateJson(run->setup, run->result));
   out["knee_model"] = model.name;
-  out["trajectory"] = trajectoryArrays(result.trajectory);
+  out["trajectory"] = trajectoryArrays(run->result.trajectory);
   return out;
 }
 

@@ -16,13 +16,10 @@
 #include "core/text_format.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
-#include "io/swing_record_csv.h"
 #include "io/trajectory_writer.h"
-#include "leg/toe_off_state.h"
 #include "report/swing_json.h"
 #include "report/swing_plot.h"
-#include "swing/knee_setup.h"
-#include "swing/swing_simulation.h"
+#include "study/simulate_run.h"
 
 namespace swingsim::cli {
 namespace {
@@ -41,129 +38,15 @@ struct SimulateArguments {
   std::optional<std::string> json, out;
 };
 
-// The measured knee at time t (s), rad, if the drive file is a swing kinematics CSV that
-// has one (time_s, hip_flexion_deg, knee_flexion_deg); linear between samples.
-std::optional<double> findMeasuredKnee(const ThighKinematics& drive, double t) {
-  const std::string& path = drive.path;
-  if (path.size() < 4 || path.compare(path.size() - 4, 4, ".csv") != 0) return std::nullopt;
-  SwingRecord record;
-  try {
-    record = readSwingRecord(path);
-  } catch (const InputError&) {
-    return std::nullopt;  // the drive loaded; a file without a usable knee has nothing to compare
-  }
-  const std::vector<double>& time = record.time;
-  if (time.empty() || t < time.front() || t > time.back()) return std::nullopt;
-  const auto upper = std::lower_bound(time.begin(), time.end(), t);
-  const std::size_t k = static_cast<std::size_t>(upper - time.begin());
-  if (k == 0) return record.kneeFlexion.front();
-  const double s = (t - time[k - 1]) / (time[k] - time[k - 1]);
-  return record.kneeFlexion[k - 1] + s * (record.kneeFlexion[k] - record.kneeFlexion[k - 1]);
-}
-
-// A measured trial that ended before the swing did: the unmet condition and the numbers,
-// the measured knee beside the model's where the drive file has one.
-void printTrialEnd(const TrialEnd& e, const Participant& p) {
-  std::printf("  swing time          not reached (%s)\n", e.unmet.c_str());
-  std::printf("  trial end           %s\n", e.describe().c_str());
-  std::printf("  at the trial's end  model knee %.1f deg", e.kneeFlexion * kRadToDeg);
-  if (const auto measured = findMeasuredKnee(p.thighKinematics, e.time))
-    std::printf(", measured knee %.1f deg", *measured * kRadToDeg);
-  std::printf("; thigh %.1f deg (peak %.1f deg, target %.1f deg)\n", e.thighFlexion * kRadToDeg,
-              e.thighPeak * kRadToDeg, e.thighTarget * kRadToDeg);
-}
-
-// The integrator and its accuracy: --integrator at its converged setting unless --accuracy
-// says otherwise.
-SwingOptions makeSwingOptions(const SimulateArguments& a) {
-  SwingOptions options;
-  if (a.integrator) {
-    options.integrator = *findIntegrator(*a.integrator);  // checked while parsing
-    options.accuracy = calcConvergedAccuracy(options.integrator);  // its converged setting unless --accuracy says otherwise
-  }
-  if (a.accuracy) options.accuracy = *a.accuracy;
-  return options;
-}
-
 // The participant's file with the toe-off rates and knee start the command line overrides.
 Participant loadSimulatedParticipant(const SimulateArguments& a) {
   Participant loaded = loadParticipant(a.participant);
-  if (a.hipRateDegS) loaded.initial.hipFlexionRate = *a.hipRateDegS * kDegToRad;
-  if (a.kneeStart) loaded.initial.kneeStart = *a.kneeStart == "initial" ? KneeStart::kInitial : KneeStart::kMeasured;
-  if (a.kneeRateDegS && startsKneeFromRecord(loaded))
-    throw InputError("--knee-rate-deg-s: under the measured thigh drive the knee starts at the record's angle and rate at "
-                     "toe-off (" + loaded.thighKinematics.path + "); add --knee-start initial to start it from the participant's "
-                     "initial knee_flexion_deg and this rate");
-  if (a.kneeRateDegS) loaded.initial.kneeFlexionRate = *a.kneeRateDegS * kDegToRad;
+  ToeOffOverrides overrides;
+  if (a.hipRateDegS) overrides.hipFlexionRate = *a.hipRateDegS * kDegToRad;
+  if (a.kneeRateDegS) overrides.kneeFlexionRate = *a.kneeRateDegS * kDegToRad;
+  if (a.kneeStart) overrides.kneeStart = *a.kneeStart == "initial" ? KneeStart::kInitial : KneeStart::kMeasured;
+  applyToeOffOverrides(loaded, overrides, "--knee-rate-deg-s");
   return loaded;
-}
-
-// The state the swing started from (calcToeOffState), the trajectory's first sample, and
-// where it came from.
-void printToeOff(const SwingResult& r, const Participant& p) {
-  const SwingTrajectory& tr = r.trajectory;
-  const double knee = tr.kneeFlexion.front() * kRadToDeg, kneeRate = tr.kneeFlexionRate.front() * kRadToDeg;
-  const double hip = tr.hipFlexion.front() * kRadToDeg, hipRate = tr.hipFlexionRate.front() * kRadToDeg;
-  if (p.drive == SwingDrive::kThighKinematics)
-    std::printf("  toe-off             knee %.1f deg, %.1f deg/s (%s); thigh %.1f deg, %.1f deg/s (the record's)\n", knee, kneeRate,
-                startsKneeFromRecord(p)                 ? "the record's, smoothing-spline value and slope"
-                : p.thighKinematics.kneeFlexion.empty() ? "initial: the record has no knee"
-                                                        : "initial: knee_start: initial",
-                hip, hipRate);
-  else
-    std::printf("  toe-off             knee %.1f deg, %.1f deg/s; hip %.1f deg, %.1f deg/s (initial)\n", knee, kneeRate, hip, hipRate);
-}
-
-// The swing time (or why the trial ended first), the peak knee flexion and the bounce.
-void printSwingOutcome(const SwingResult& r, const Participant& p) {
-  if (r.trialEnd)
-    printTrialEnd(*r.trialEnd, p);
-  else
-    std::printf("  swing time          %.4f s\n", r.swingTime);
-  if (const std::optional<double> entry = calcFirstZoneEntry(r))
-    std::printf("  knee first in zone  %.4f s (continuous in the settings; the swing end waits until the knee stays in "
-                "the zone)\n", *entry);
-  if (r.peakKneeFlexion)
-    std::printf("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion->flexion * kRadToDeg,
-                r.peakKneeFlexion->time);
-  else
-    std::printf("  peak knee flexion   none (no knee peak above the zone of stability)\n");
-  if (r.bounce && r.bounceHeight)
-    std::printf("  bounce              yes: the knee left the zone of stability %d time%s, up to %.1f deg\n", r.bounces,
-                r.bounces == 1 ? "" : "s", *r.bounceHeight * kRadToDeg);
-  else if (r.bounce)  // left the zone; the run ended before the rebound peaked, or the peak fell in one step
-    std::printf("  bounce              yes: the knee left the zone of stability %d time%s (its peak was not "
-                "recorded)\n", r.bounces, r.bounces == 1 ? "" : "s");
-  else
-    std::printf("  bounce              no\n");
-}
-
-// Each impact on the knee's extension stop, with the energy bookkeeping where it was tracked.
-void printStopImpacts(const std::vector<StopImpact>& impacts) {
-  for (std::size_t i = 0; i < impacts.size(); ++i) {
-    const StopImpact& im = impacts[i];
-    std::printf("  stop impact %-2zu     at %.4f s: %.2f rad/s in, %.2f rad/s out (restitution %.2f), %.2f deg past the stop, "
-                "rebound to %.1f deg\n",
-                i + 1, im.time, im.impactRate, im.reboundRate, im.restitution, im.maxPenetration * kRadToDeg,
-                im.reboundHeight * kRadToDeg);
-    if (im.work.empty()) continue;
-    std::printf("                      kinetic energy at contact %.3f J; work to the top of the rebound:", im.kineticEnergy);
-    for (const auto& w : im.work) std::printf(" %s %+.3f J;", w.cause.c_str(), w.work);
-    std::printf("\n");
-  }
-}
-
-// The smallest toe clearance, with the strike alarm where it holds (walking).
-void printToeClearance(const SwingResult& r, const Participant& p) {
-  const std::string clearance = fmtOrNone("%.3f m", r.minToeClearance);
-  if (!r.minToeClearance)
-    std::printf("  min toe clearance   none (no knee peak to measure it from)\n");
-  else if (p.toeClearance.alarmHolds())
-    std::printf("  min toe clearance   %s%s\n", clearance.c_str(), *r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
-  else
-    std::printf("  min toe clearance   %s relative to standing hip height (running: no strike alarm without "
-                "toe_clearance.hip_rise_m)\n",
-                clearance.c_str());
 }
 
 // The trajectory's CSV and .sto, the moments' plot, and the JSON if --json asked for it.
@@ -182,31 +65,19 @@ void writeSimulateFiles(const SimulateArguments& a, const SwingSetup& setup, con
               tag.c_str());
 }
 
-int runSimulate(const SimulateArguments& a) {
-  SwingOptions options = makeSwingOptions(a);
+int runSimulateCommand(const SimulateArguments& a) {
+  const SwingOptions options = makeSimulateOptions(a.integrator, a.accuracy);
   Participant loaded = loadSimulatedParticipant(a);
   const KneeModel model = loadKneeModel(a.knee.value_or(loaded.kneeModelPath));
-  const SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
-  const Participant& p = setup.participant;
-  const std::string tag = makeTrajectoryFileStem(p.name, setup.lowering);
+  SwingSetup setup = makeSwingSetup(std::move(loaded), model, a.lowering, a.added.value_or(AddedMass{}));
+  const std::string tag = makeTrajectoryFileStem(setup.participant.name, setup.lowering);
   checkOutputsAreNotInputs(
       {{"PARTICIPANT.yaml", a.participant}, {a.knee ? "--knee" : "PARTICIPANT.yaml: knee_model", model.path}},
-      listRunOutputs(a.out.value_or(makeTrajectoryFolder(p.name)), {tag + ".csv", tag + ".sto", tag + "-moments.svg"}, a.json));
-  options.trackImpactEnergy = true;  // one swing: the bookkeeping is cheap here
-  const SwingResult r = simulateSwing(setup, options);
-
-  std::printf("%s, knee lowered %.3f m, knee model %s\n", p.name.c_str(), setup.lowering, model.name.c_str());
-  std::printf("  drive               %s\n", describeDrive(p).c_str());
-  printToeOff(r, p);
-  printSwingOutcome(r, p);
-  printStopImpacts(r.impacts);
-  printToeClearance(r, p);
-  std::printf("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
-              options.accuracy, r.realizations);
-  std::printf("  events:");
-  for (const auto& e : r.events) std::printf(" %s@%.4f", e.name.c_str(), e.time);
-  std::printf("\n");
-  writeSimulateFiles(a, setup, r);
+      listRunOutputs(a.out.value_or(makeTrajectoryFolder(setup.participant.name)),
+                     {tag + ".csv", tag + ".sto", tag + "-moments.svg"}, a.json));
+  const SimulateRun run = runSimulate(std::move(setup), options);
+  std::fputs(formatSimulateSummary(run, model, options).c_str(), stdout);
+  writeSimulateFiles(a, run.setup, run.result);
   return 0;
 }
 
@@ -256,7 +127,7 @@ Command addSimulateCommand(CLI::App& app) {
       ->check(finiteNumber(checkAccuracy));
   addJsonOption(sub, a->json);
   addTextOption(sub, "--out", a->out, "output folder for the trajectory (default out/simulate-<participant>/)", "DIR");
-  return {sub, [a] { return runSimulate(*a); }};
+  return {sub, [a] { return runSimulateCommand(*a); }};
 }
 
 }  // namespace swingsim::cli

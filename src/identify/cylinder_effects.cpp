@@ -199,18 +199,6 @@ const CylinderEffectRecord& findCylinderEffectRecord(EffectId effect) {
   throw std::invalid_argument("not a cylinder effect: " + describeEffect(effect).name);
 }
 
-std::vector<const CylinderEffectRecord*> presentCylinderEffectRecords(const MauchCylinderParams& p) {
-  std::vector<const CylinderEffectRecord*> out;
-  for (const auto& r : cylinderEffectRecords())
-    if (r.has(p)) out.push_back(&r);
-  for (const auto& x : p.effects.expressions) {
-    const EffectDescriptor* d = findEffect(PlantKind::kCylinder, x.name);
-    const CylinderEffectRecord* user = d ? findUserCylinderEffectRecord(d->id) : nullptr;
-    if (user) out.push_back(user);
-  }
-  return out;
-}
-
 std::vector<int> cylinderEffectColumns(const MauchCylinderParams& p, EffectId effect) {
   std::vector<const CylinderEffectRecord*> byColumn;
   for (const auto& r : cylinderEffectRecords())

@@ -64,9 +64,6 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords();
 /// The record of `effect` (the library's or a registered user's,
 /// identify/user_cylinder_effect.h); throws std::invalid_argument if it is not a cylinder effect.
 const CylinderEffectRecord& findCylinderEffectRecord(EffectId effect);
-/// The records of the effects `p` has: the library's in table order, then the users' in the
-/// order of `p.effects.expressions`.
-std::vector<const CylinderEffectRecord*> presentCylinderEffectRecords(const MauchCylinderParams& p);
 /// Regression columns of `effect` in `p` (after the 3 coefficients of each phase); empty if
 /// the model does not have it.
 std::vector<int> cylinderEffectColumns(const MauchCylinderParams& p, EffectId effect);

@@ -13,6 +13,7 @@
 #include "io/participant_loader.h"
 #include "io/yaml_tree.h"
 #include "study/run_arguments.h"
+#include "study/simulate_run.h"
 
 namespace swingsim {
 namespace {
@@ -193,9 +194,9 @@ KneeModel loadRequestKnee(const LegRequest& request, const KneeModelKnobs& knobs
 }  // namespace
 
 SwingOptions makeServeSwingOptions(const ServeLimits& limits, ServeSwing kind) {
-  SwingOptions options;
+  // As simulate (its integrator and stop-impact bookkeeping), or as the sweep.
+  SwingOptions options = kind == ServeSwing::kAsSimulate ? makeSimulateOptions(std::nullopt, std::nullopt) : SwingOptions{};
   options.maxWallSeconds = limits.maxSwingWallSeconds;
-  options.trackImpactEnergy = kind == ServeSwing::kAsSimulate;
   return options;
 }
 

@@ -9,7 +9,7 @@
 #include "serve/serve_api.h"
 #include "study/osim_export.h"
 #include "study/osim_import.h"
-#include "swing/knee_setup.h"
+#include "study/simulate_run.h"
 
 namespace swingsim {
 namespace {
@@ -73,7 +73,7 @@ ApiReply ServeApi::exportOsim(const std::string& body) const {
     const std::optional<AddedMass> added = request.added.mass > 0 ? std::optional<AddedMass>(request.added) : std::nullopt;
     const std::string osim = formatParticipantOsim(leg.participant, leg.knee, OsimExportOptions{side, request.lowering, added}, stem + ".sto");
     const SwingOptions options = makeServeSwingOptions(limits_, ServeSwing::kAsSimulate);  // so the .sto is simulate's
-    const SwingResult r = simulateSwing(makeSwingSetup(std::move(leg.participant), leg.knee, request.lowering, request.added), options);
+    const SwingResult r = runSimulate(std::move(leg.participant), leg.knee, request.lowering, request.added, options).result;
     return Json{{"osim_file_name", stem + ".osim"},
                 {"osim_text", osim},
                 {"sto_file_name", stem + ".sto"},

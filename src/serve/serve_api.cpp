@@ -16,7 +16,7 @@
 #include "report/sweep_report.h"
 #include "report/swing_json.h"
 #include "report/sweep_report_parts.h"
-#include "swing/knee_setup.h"
+#include "study/simulate_run.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -231,10 +231,10 @@ ApiReply ServeApi::simulate(const std::string& body) const {
     const LegRequest request = readLegRequest(asked);
     Leg leg = loadLeg(request, files_, limits_);
     const double hipHeight = calcHipHeight(leg.participant);
-    const SwingSetup setup = makeSwingSetup(std::move(leg.participant), leg.knee, request.lowering, request.added);
-    const SwingOptions options = makeServeSwingOptions(limits_, ServeSwing::kAsSimulate);
-    const SwingResult r = simulateSwing(setup, options);
-    Json json = makeSimulateJson(setup, r);
+    const SimulateRun run = runSimulate(std::move(leg.participant), leg.knee, request.lowering, request.added,
+                                        makeServeSwingOptions(limits_, ServeSwing::kAsSimulate));
+    const SwingResult& r = run.result;
+    Json json = makeSimulateJson(run.setup, r);
     json["knee_model"] = stemOf(leg.knee.path);
     json["added_mass_kg"] = request.added.mass;
     json["added_mass_position_m"] = request.added.distanceBelowKnee;
