@@ -2,7 +2,7 @@
 // one byte past the limit (even on an endless device), a FIFO with a writer is read whole,
 // which paths are written through and which replaced, links resolved, and writing through
 // appends. (The waits of kFifoWaitSeconds for a missing partner:
-// tests/io/bad_input_catalogue_files_test.cpp.)
+// tests/scenarios/bad_input_catalogue_files_test.cpp.)
 #include "core/special_files.h"
 
 #include <gmock/gmock.h>

@@ -5,7 +5,7 @@
 // how often the hidden effect is named first, how often something else is, whether the 95 %
 // interval of its parameter holds the truth, and the estimate's bias and spread. Used by the
 // program diagnosis_calibration (scripts/diagnosis-calibration.sh) and by
-// tests/identify/diagnosis_calibration_test.cpp on a small fixed seed set.
+// tests/scenarios/diagnosis_calibration_test.cpp on a small fixed seed set.
 #include <unistd.h>
 
 #include <algorithm>

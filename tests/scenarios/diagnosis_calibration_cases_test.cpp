@@ -8,7 +8,7 @@
 #include <set>
 #include <string>
 
-#include "diagnosis_calibration.h"
+#include "../identify/diagnosis_calibration.h"
 #include "identify/sweep_effects.h"
 #include "identify/effect_table.h"
 

@@ -12,7 +12,7 @@
 #include "../independent/mauch_bench_generator.h"
 #include "identify/cylinder_plant.h"
 #include "identify/diagnosis_engine.h"
-#include "diagnosis_outcome.h"
+#include "../identify/diagnosis_outcome.h"
 #include "../cli/release_only.h"
 #include "io/bench_csv.h"
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "../cli/release_only.h"
-#include "diagnosis_calibration.h"
+#include "../identify/diagnosis_calibration.h"
 
 namespace swingsim {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <random>
 
-#include "diagnosis_calibration.h"
-#include "diagnosis_outcome.h"
+#include "../identify/diagnosis_calibration.h"
+#include "../identify/diagnosis_outcome.h"
 
 namespace swingsim {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "run_swingsim.h"
+#include "../cli/run_swingsim.h"
 
 namespace {
 
