@@ -9,9 +9,9 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "knee/knee_law.h"
-#include "swing/knee_setup.h"
 #include "study/sweep_study.h"
 #include "sweep/sweep.h"
+#include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim::bench {
@@ -37,8 +37,8 @@ struct LoadedParticipant {
 };
 
 inline const std::vector<std::string>& participantFiles() {
-  static const std::vector<std::string> files = {"participants/p1.yaml", "participants/p2.yaml",
-                                                 "participants/p3.yaml", "participants/p4.yaml"};
+  static const std::vector<std::string> files = {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml",
+                                                 "participants/p4.yaml"};
   return files;
 }
 

@@ -109,7 +109,8 @@ int runConvergenceStudy(int argc, char** argv) {
   for (auto& c : configs) {
     // A lowering where no swing ends (P2 at 0.200 m: the thigh never reaches its target)
     // steps back by 10 mm, as the sweep's fastest point does.
-    for (Run r = runOnce(c.participant->setup(c.lowering), referenceOptions());; r = runOnce(c.participant->setup(c.lowering), referenceOptions())) {
+    for (Run r = runOnce(c.participant->setup(c.lowering), referenceOptions());;
+         r = runOnce(c.participant->setup(c.lowering), referenceOptions())) {
       if (r.ok) {
         c.referenceTime = r.swingTime;
         break;
@@ -120,14 +121,17 @@ int runConvergenceStudy(int argc, char** argv) {
   }
 
   std::ostringstream md;
-  md << "Reference: plain path (Simbody event handlers, window " << kReferenceWindow << " s), Runge-Kutta-Merson at accuracy "
-     << kReferenceAccuracy << ". Error = largest |swing time - reference| over the standard location, 0.100 m and the "
-     << "largest lowering where a swing ends, for each participant; cost = mean over the same 12 swings (fast path).\n\n";
+  md << "Reference: plain path (Simbody event handlers, window " << kReferenceWindow
+     << " s), Runge-Kutta-Merson at accuracy " << kReferenceAccuracy
+     << ". Error = largest |swing time - reference| over the standard location, 0.100 m and the "
+     << "largest lowering where a swing ends, for each participant; cost = mean over the same 12 swings (fast "
+        "path).\n\n";
 
   // 1. Integrator x accuracy.
   const std::vector<double> accuracies = {1e-2, 1e-3, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 1e-7, 1e-8};
-  const SwingIntegrator integrators[] = {SwingIntegrator::kDormandPrince, SwingIntegrator::kRungeKuttaMerson, SwingIntegrator::kRungeKuttaFeldberg,
-                                         SwingIntegrator::kRungeKutta3, SwingIntegrator::kVerlet};
+  const SwingIntegrator integrators[] = {SwingIntegrator::kDormandPrince, SwingIntegrator::kRungeKuttaMerson,
+                                         SwingIntegrator::kRungeKuttaFeldberg, SwingIntegrator::kRungeKutta3,
+                                         SwingIntegrator::kVerlet};
   md << "| integrator | accuracy | max error (ms) | P1 | P2 | P3 | P4 | steps | realizations | ms per swing |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (SwingIntegrator integrator : integrators) {
@@ -153,10 +157,12 @@ int runConvergenceStudy(int argc, char** argv) {
       }
       const double n = static_cast<double>(configs.size());
       md << "| " << integratorName(integrator) << " | " << fmt("%.0e", accuracy) << " | "
-         << (allOk ? fmt("%.4f", 1e3 * maxError) : std::string("failed")) << (maxError <= kConvergedTol ? " |" : " (not converged) |");
-      for (double e : perParticipant) md << " " << (std::isfinite(e) ? fmt("%.4f", 1e3 * e) : std::string("failed")) << " |";
-      md << " " << fmt("%.0f", steps / n) << " | " << fmt("%.0f", realizations / n) << " | " << fmt("%.2f", 1e3 * seconds / n)
-         << " |\n";
+         << (allOk ? fmt("%.4f", 1e3 * maxError) : std::string("failed"))
+         << (maxError <= kConvergedTol ? " |" : " (not converged) |");
+      for (double e : perParticipant)
+        md << " " << (std::isfinite(e) ? fmt("%.4f", 1e3 * e) : std::string("failed")) << " |";
+      md << " " << fmt("%.0f", steps / n) << " | " << fmt("%.0f", realizations / n) << " | "
+         << fmt("%.2f", 1e3 * seconds / n) << " |\n";
     }
   }
 
@@ -205,7 +211,8 @@ int runConvergenceStudy(int argc, char** argv) {
   // changes, so each row has its own reference.
   auto lawTable = [&](const char* title, const char* unit, const std::vector<double>& values, bool isFriction) {
     md << "\n| " << title << " (" << unit << ") | swing time change vs default law (ms): P1 | P2 | P3 | P4 | "
-       << "integration error at default settings (ms) | bounce (any) | realizations |\n|---|---|---|---|---|---|---|---|\n";
+       << "integration error at default settings (ms) | bounce (any) | realizations "
+          "|\n|---|---|---|---|---|---|---|---|\n";
     const SwingOptions defaults;
     std::vector<double> baseline(participants.size());
     for (std::size_t i = 0; i < participants.size(); ++i) {
@@ -218,9 +225,9 @@ int runConvergenceStudy(int argc, char** argv) {
       double maxIntegrationError = 0, realizations = 0;
       bool bounce = false;
       for (std::size_t i = 0; i < participants.size(); ++i) {
-        const SwingSetup setup = makeSwingSetup(
-            participants[i]->participant,
-            std::make_shared<const KneeLawSum>(makeVariantKnee(*participants[i], isFriction ? 0 : v, isFriction ? v : 0)));
+        const SwingSetup setup = makeSwingSetup(participants[i]->participant,
+                                                std::make_shared<const KneeLawSum>(makeVariantKnee(
+                                                    *participants[i], isFriction ? 0 : v, isFriction ? v : 0)));
         const Run reference = runOnce(setup, referenceOptions());
         SwingOptions o = defaults;
         o.recordTrajectory = false;
@@ -231,7 +238,8 @@ int runConvergenceStudy(int argc, char** argv) {
           bounce = bounce || full.bounce;
         } catch (const std::exception&) {
         }
-        md << " " << (reference.ok ? fmt("%+.1e", 1e3 * (reference.swingTime - baseline[i])) : std::string("failed")) << " |";
+        md << " " << (reference.ok ? fmt("%+.1e", 1e3 * (reference.swingTime - baseline[i])) : std::string("failed"))
+           << " |";
         maxIntegrationError = std::max(maxIntegrationError, std::fabs(fast.swingTime - reference.swingTime));
         realizations += fast.realizations;
       }

@@ -8,21 +8,21 @@
 #include <filesystem>
 #include <thread>
 
-#include "io/bench_csv.h"
 #include "bench_inputs.h"
 #include "identify/bench_data.h"
-#include "identify/cylinder_plant.h"
 #include "identify/cylinder_fit.h"
-#include "study/cylinder_study.h"
-#include "study/diagnosis_study.h"
+#include "identify/cylinder_plant.h"
+#include "io/bench_csv.h"
 #include "io/yaml_reader.h"
-#include "report/cylinder_fit_report.h"
 #include "knee/knee_added_effects.h"
 #include "knee/knee_expression.h"
 #include "leg/leg_model.h"
+#include "report/cylinder_fit_report.h"
+#include "study/cylinder_study.h"
+#include "study/diagnosis_study.h"
+#include "sweep/sweep_uncertainty.h"
 #include "swing/reference_swing.h"
 #include "swing/simbody_ode.h"
-#include "sweep/sweep_uncertainty.h"
 
 namespace swingsim::bench {
 namespace {
@@ -51,7 +51,9 @@ void BM_SwingSimbody(benchmark::State& state) {
   const SwingSetup setup = p1().setup();
   SwingOptions options;
   switch (state.range(0)) {
-    case 1: options = makePlainPathOptions(1e-4, SwingOptions{}.eventWindow); break;
+    case 1:
+      options = makePlainPathOptions(1e-4, SwingOptions{}.eventWindow);
+      break;
     case 2:
       options.integrator = SwingIntegrator::kRungeKuttaMerson;
       options.accuracy = 1e-4;
@@ -60,7 +62,8 @@ void BM_SwingSimbody(benchmark::State& state) {
       options.integrator = SwingIntegrator::kRungeKutta3;
       options.accuracy = 1e-3;
       break;
-    default: break;
+    default:
+      break;
   }
   SwingResult r;
   for (auto _ : state) {
@@ -128,7 +131,8 @@ BENCHMARK(BM_RealizeLeg)->Unit(benchmark::kMicrosecond);
 // inside the loop, as building the Simbody system is above.
 void BM_SwingReference(benchmark::State& state) {
   const LoadedParticipant& p = p1();
-  const double tolerance = state.range(0) == 0 ? SwingOptions{}.accuracy : std::pow(10.0, -static_cast<double>(state.range(0)));
+  const double tolerance =
+      state.range(0) == 0 ? SwingOptions{}.accuracy : std::pow(10.0, -static_cast<double>(state.range(0)));
   const LegGeometry geometry = calcLegGeometry(p.participant, 0.0);
   ReferenceSwingEnd end;
   for (auto _ : state) {
@@ -221,8 +225,8 @@ BENCHMARK(BM_DiagnoseSwing)->Unit(benchmark::kMillisecond)->Iterations(1);
 // The Monte Carlo of `sweep studies/burkett2004.yaml --uncertainty N` on 1 and 2
 // threads, as that command runs it (planSweepUncertainty + runUncertaintySwings), with 20
 // samples (1,764 swings: the nominal run and 20 samples of the 84-point grid; the
-// one-at-a-time runs left out) instead of 1000 (84,000 swings, minutes): bench.sh extrapolates the time to 84,000 swings and says so. One iteration per
-// repetition, three repetitions whatever bench.sh's REPS (each is 5-10 s).
+// one-at-a-time runs left out) instead of 1000 (84,000 swings, minutes): bench.sh extrapolates the time to 84,000
+// swings and says so. One iteration per repetition, three repetitions whatever bench.sh's REPS (each is 5-10 s).
 void BM_UncertaintyBurkett(benchmark::State& state) {
   static const SweepStudy study = plainBurkettSweep();
   UncertaintyOptions options;

@@ -30,7 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       spec.optional = {"hip_moment_Nm", "knee_moment_Nm"};
       spec.strictlyIncreasing = "time_s";
       spec.minStep = kMinSampleStep;  // as readSwingRecord
-      spec.ranges = {{"knee_flexion_deg", kJointAngleRange, "a knee angle"}, {"hip_moment_Nm", kJointMomentRange, "a hip moment"}};
+      spec.ranges = {{"knee_flexion_deg", kJointAngleRange, "a knee angle"},
+                     {"hip_moment_Nm", kJointMomentRange, "a hip moment"}};
       break;
   }
   if (data[0] & 0x80) spec.maxRows = 8;

@@ -25,8 +25,6 @@ void expectOnlyInputErrors(Load&& load) {
 
 /// A path inside the source tree, so relative paths in fuzzed files (../participants/...)
 /// resolve to the real files, as they would for a study in studies/.
-inline std::string sourcePath(const std::string& relative) {
-  return std::string(SWINGSIM_SOURCE_DIR) + "/" + relative;
-}
+inline std::string sourcePath(const std::string& relative) { return std::string(SWINGSIM_SOURCE_DIR) + "/" + relative; }
 
 }  // namespace swingsim::fuzz

@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         options.side = side;
         options.kneeModelPath = fuzz::sourcePath("models/damping-table-default.yaml");
         const OsimParticipant imported = calcOsimParticipant(model, options);
-        const std::string text = formatParticipantYaml(imported.participant, fuzz::sourcePath("participants"), imported.provenance);
+        const std::string text =
+            formatParticipantYaml(imported.participant, fuzz::sourcePath("participants"), imported.provenance);
         parseParticipant(text, fuzz::sourcePath("participants/fuzz.yaml"));
       });
     }

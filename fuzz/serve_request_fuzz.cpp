@@ -34,9 +34,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string body = fuzz::asText(data + 1, size - 1);
   ApiReply reply;
   switch (data[0] % 3) {
-    case 0: reply = api().describeParticipant(body); break;
-    case 1: reply = api().simulate(body); break;
-    default: reply = api().tune(body); break;
+    case 0:
+      reply = api().describeParticipant(body);
+      break;
+    case 1:
+      reply = api().simulate(body);
+      break;
+    default:
+      reply = api().tune(body);
+      break;
   }
   if (reply.status == 500 || !nlohmann::json::accept(reply.body)) __builtin_trap();
   return 0;

@@ -17,6 +17,7 @@ allowed=(
   "src/identify/effect_table.cpp effectTable the one table of candidate effects, one descriptor a row"
   "src/identify/swing_effects.cpp swingEffectRecords the swing plant's table of effect records, one record a row"
   "src/identify/cylinder_effects.cpp cylinderEffectRecords the cylinder plant's table of effect records, one record a row"
+  "src/identify/sweep_effects.cpp sweepEffectLaws the sweep plant's table of effect laws, one law a row"
 )
 
 if ! command -v ctags >/dev/null || ! ctags --version 2>/dev/null | grep -q "Universal Ctags"; then

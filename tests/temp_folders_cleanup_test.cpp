@@ -24,7 +24,8 @@ class TempFoldersCleanup final : public ::testing::Environment {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(fs::temp_directory_path(), ec)) {
       const std::string name = entry.path().filename().string();
-      if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+      if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        continue;
       std::error_code entryError;
       if (!entry.is_directory(entryError) || entry.is_symlink(entryError)) continue;
       if (fs::last_write_time(entry.path(), entryError) < started_ || entryError) continue;

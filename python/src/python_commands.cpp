@@ -46,12 +46,14 @@ std::string formatRecord(const py::object& record, const std::string& folder) {
     const auto [text, source] = objectAsYaml(record, "study");
     return formatDiagnosisStudyYaml(parseDiagnosisStudy(text, source), folder);
   }
-  throw py::type_error(formatArgumentProblem("record", "expected a Participant, KneeModel or DiagnosisStudy", describePython(record)));
+  throw py::type_error(
+      formatArgumentProblem("record", "expected a Participant, KneeModel or DiagnosisStudy", describePython(record)));
 }
 
 /// What `swingsim swings FILE.mot ... --json` writes, as Python objects.
-py::object swings(const py::object& motion, const py::object& side, const py::object& grf, const py::object& verticalForce,
-                  const py::object& thresholdN, const py::object& fallback, const py::object& gait, const py::object& kneeSign) {
+py::object swings(const py::object& motion, const py::object& side, const py::object& grf,
+                  const py::object& verticalForce, const py::object& thresholdN, const py::object& fallback,
+                  const py::object& gait, const py::object& kneeSign) {
   SwingListRequest r;
   r.kinematics = readPathArgument(motion, "swings(): motion_path");
   r.side = readChoiceArgument(side, "swings(): side", {"r", "l"});
@@ -123,8 +125,8 @@ void addRecordFunctions(py::module_& m) {
   m.def("load_study_dict", &loadStudyDict, py::arg("path"));
   m.def("format_record", &formatRecord, py::arg("record"), py::arg("folder"));
   m.def("swings", &swings, py::arg("motion_path"), py::arg("side") = "r", py::arg("grf") = py::none(),
-        py::arg("vertical_force") = py::none(), py::arg("threshold_N") = 20.0, py::arg("fallback_to_kinematics") = false,
-        py::arg("gait") = py::none(), py::arg("knee_sign") = -1.0);
+        py::arg("vertical_force") = py::none(), py::arg("threshold_N") = 20.0,
+        py::arg("fallback_to_kinematics") = false, py::arg("gait") = py::none(), py::arg("knee_sign") = -1.0);
   m.def("import_osim", &importOsim, py::arg("osim_path"), py::arg("side") = "r", py::arg("name") = py::none(),
         py::arg("knee") = py::none(), py::arg("knee_friction_Nm") = 0.0, py::arg("shank_mass_kg") = py::none(),
         py::arg("foot_mass_kg") = py::none(), py::arg("foot_length_m") = py::none(), py::arg("height_m") = py::none());

@@ -31,8 +31,8 @@ bool isPackageObject(const py::handle& value, const char* name) {
   for (const py::handle cls : py::type::of(value).attr("__mro__")) {
     const py::object module = py::getattr(cls, "__module__", py::none());
     const py::object qualname = py::getattr(cls, "__qualname__", py::none());
-    if (py::isinstance<py::str>(module) && py::isinstance<py::str>(qualname) && module.cast<std::string>() == "swingsim" &&
-        qualname.cast<std::string>() == name)
+    if (py::isinstance<py::str>(module) && py::isinstance<py::str>(qualname) &&
+        module.cast<std::string>() == "swingsim" && qualname.cast<std::string>() == name)
       return true;
   }
   return false;
@@ -48,8 +48,8 @@ Participant readParticipant(const py::handle& participant, const char* function)
   const std::string where = std::string(function) + "(): participant";
   if (isPathArgument(participant)) return loadWithoutGil(loadParticipant, readPathArgument(participant, where));
   if (!isPackageObject(participant, "Participant"))
-    throw py::type_error(formatArgumentProblem(where, "expected a path or a swingsim.Participant",
-                                               describePython(participant)));
+    throw py::type_error(
+        formatArgumentProblem(where, "expected a path or a swingsim.Participant", describePython(participant)));
   const auto [text, source] = objectAsYaml(participant, "participant");
   return parseParticipant(text, source);
 }
@@ -59,8 +59,8 @@ KneeModel readKnee(const py::handle& knee, const Participant& participant, const
   if (knee.is_none()) return loadWithoutGil(loadKneeModel, participant.kneeModelPath);
   if (isPathArgument(knee)) return loadWithoutGil(loadKneeModel, readPathArgument(knee, where));
   if (!isPackageObject(knee, "KneeModel"))
-    throw py::type_error(formatArgumentProblem(where, "expected None (the participant's), a path or a swingsim.KneeModel",
-                                               describePython(knee)));
+    throw py::type_error(formatArgumentProblem(
+        where, "expected None (the participant's), a path or a swingsim.KneeModel", describePython(knee)));
   const auto [text, source] = objectAsYaml(knee, "knee model");
   return parseKneeModel(text, source);
 }

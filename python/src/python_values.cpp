@@ -22,15 +22,20 @@ py::object toPython(const Json& json) {
       for (const auto& value : json) l.append(toPython(value));
       return std::move(l);
     }
-    case Json::value_t::boolean: return py::bool_(json.get<bool>());
-    case Json::value_t::number_integer: return py::int_(json.get<long long>());
-    case Json::value_t::number_unsigned: return py::int_(json.get<unsigned long long>());
+    case Json::value_t::boolean:
+      return py::bool_(json.get<bool>());
+    case Json::value_t::number_integer:
+      return py::int_(json.get<long long>());
+    case Json::value_t::number_unsigned:
+      return py::int_(json.get<unsigned long long>());
     case Json::value_t::number_float: {
       const double v = json.get<double>();
       return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());  // as the JSON file's null
     }
-    case Json::value_t::string: return py::str(json.get<std::string>());
-    default: return py::none();
+    case Json::value_t::string:
+      return py::str(json.get<std::string>());
+    default:
+      return py::none();
   }
 }
 
@@ -133,7 +138,9 @@ py::object toPython(const YamlTree& node) {
   return py::none();
 }
 
-py::object yamlTextToPython(const std::string& text) { return toPython(YamlTree::parse(text, "yaml", "swingsim's own YAML")); }
+py::object yamlTextToPython(const std::string& text) {
+  return toPython(YamlTree::parse(text, "yaml", "swingsim's own YAML"));
+}
 
 std::string toYamlText(const py::handle& value, const std::string& where) {
   YamlWriter out;
@@ -174,7 +181,8 @@ double readNumberArgument(const py::handle& value, const std::string& where, std
   return v;
 }
 
-std::optional<AddedMass> readAddedMassArguments(const py::object& mass, const py::object& below, const std::string& function) {
+std::optional<AddedMass> readAddedMassArguments(const py::object& mass, const py::object& below,
+                                                const std::string& function) {
   if (mass.is_none() != below.is_none())
     throw py::type_error(function + ": added_mass_kg and added_mass_below_knee_m: give both or neither");
   if (mass.is_none()) return std::nullopt;
@@ -189,7 +197,8 @@ std::string readTextArgument(const py::handle& value, const std::string& where) 
   return value.cast<std::string>();
 }
 
-std::string readChoiceArgument(const py::handle& value, const std::string& where, const std::vector<std::string>& choices) {
+std::string readChoiceArgument(const py::handle& value, const std::string& where,
+                               const std::vector<std::string>& choices) {
   std::string expected = "expected one of";
   for (const std::string& c : choices) expected += (&c == &choices.front() ? " '" : ", '") + c + "'";
   if (!py::isinstance<py::str>(value)) throwTypeError(where, expected, value);

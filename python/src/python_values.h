@@ -50,14 +50,16 @@ double readNumberArgument(const pybind11::handle& value, const std::string& wher
 std::string readTextArgument(const pybind11::handle& value, const std::string& where);
 /// An argument as one of `choices` (the command line's oneOf): a str (TypeError), one of
 /// them (InputError listing them, naming `where`).
-std::string readChoiceArgument(const pybind11::handle& value, const std::string& where, const std::vector<std::string>& choices);
+std::string readChoiceArgument(const pybind11::handle& value, const std::string& where,
+                               const std::vector<std::string>& choices);
 /// An argument as a flag: a bool or numpy bool (TypeError naming `where`; 1 and 0 too).
 bool readFlagArgument(const pybind11::handle& value, const std::string& where);
 
 /// An added shank mass from its two arguments, added_mass_kg and added_mass_below_knee_m,
 /// both >= 0 as the command line's --add-mass (InputError) or both None (TypeError for one
 /// alone), `function` naming the call ("export_osim()").
-std::optional<AddedMass> readAddedMassArguments(const pybind11::object& mass, const pybind11::object& below, const std::string& function);
+std::optional<AddedMass> readAddedMassArguments(const pybind11::object& mass, const pybind11::object& below,
+                                                const std::string& function);
 
 /// An argument as a path: a str or an os.PathLike giving one (TypeError naming `where`).
 bool isPathArgument(const pybind11::handle& value);

@@ -2,10 +2,10 @@
 // participants and knee models into editable dicts, one swing, the sweep, tuning, fit and
 // diagnosis studies (a diagnosis from a path or a study object with records in memory),
 // each calling the same library functions as the command line, with the GIL released while
-// they run; file objects, swings and the .osim import/export are in python_commands.cpp. Bad input raises swingsim.InputError (a ValueError) with the CLI's
-// `file:line: key: ...` message; a failed run raises swingsim.RunError (a RuntimeError).
-// Arguments are checked first, against the command line's ranges (study/run_arguments.h): a
-// wrong type raises TypeError, a value out of range InputError, each naming the argument.
+// they run; file objects, swings and the .osim import/export are in python_commands.cpp. Bad input raises
+// swingsim.InputError (a ValueError) with the CLI's `file:line: key: ...` message; a failed run raises
+// swingsim.RunError (a RuntimeError). Arguments are checked first, against the command line's ranges
+// (study/run_arguments.h): a wrong type raises TypeError, a value out of range InputError, each naming the argument.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>  // std::optional arguments
@@ -21,19 +21,19 @@
 #include "core/output_files.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "io/swing_record_csv.h"
 #include "io/trajectory_writer.h"
 #include "python_commands.h"
 #include "python_objects.h"
 #include "python_values.h"
 #include "report/cylinder_fit_report.h"
-#include "study/cylinder_fit_run.h"
 #include "report/diagnosis_report.h"
-#include "report/swing_json.h"
 #include "report/sweep_report.h"
+#include "report/swing_json.h"
+#include "study/cylinder_fit_run.h"
 #include "study/cylinder_study.h"
 #include "study/diagnosis_objects.h"
 #include "study/diagnosis_study.h"
-#include "io/swing_record_csv.h"
 #include "study/run_arguments.h"
 #include "study/simulate_run.h"
 #include "study/sweep_run.h"
@@ -78,8 +78,9 @@ SwingOptions readSwingOptionArguments(const py::object& integrator, const py::ob
 
 /// One swing as `swingsim simulate --json` describes it, plus "knee_model" and the
 /// trajectory's columns as numpy arrays under "trajectory".
-py::dict simulate(const py::object& participant, const py::object& loweringValue, const py::object& knee, const py::object& addedMass,
-                  const py::object& addedBelow, const py::object& integrator, const py::object& accuracy) {
+py::dict simulate(const py::object& participant, const py::object& loweringValue, const py::object& knee,
+                  const py::object& addedMass, const py::object& addedBelow, const py::object& integrator,
+                  const py::object& accuracy) {
   const double lowering = readNumberArgument(loweringValue, "simulate(): lowering_m", checkLowering);
   const AddedMass added = readAddedMassArguments(addedMass, addedBelow, "simulate()").value_or(AddedMass{});
   const SwingOptions options = readSwingOptionArguments(integrator, accuracy);
@@ -158,7 +159,8 @@ py::object tune(const py::object& studyPath, const py::object& jobsValue, const 
   if (!outValue.is_none()) out = readPathArgument(outValue, "tune(): out");
   const TuningStudy study = loadTuningStudy(path);
   if (out)
-    checkOutputsAreNotInputs({{"study_path", path}, {"study_path: participant", study.participantPath},
+    checkOutputsAreNotInputs({{"study_path", path},
+                              {"study_path: participant", study.participantPath},
                               {"study_path: knee_model", study.kneeModelPath}},
                              listFolderFiles("tune(): out", *out, kTuningOutputFiles));
   volatile bool stop = false;
@@ -246,12 +248,16 @@ std::map<std::string, SwingRecord> readGivenRecords(const py::dict& records, con
 
 /// The study's plant maker: from a path as the command line reads it, or from a
 /// DiagnosisStudy object with the participant, knee model and records given in memory.
-std::function<std::unique_ptr<DiagnosisPlant>(const DiagnosisRowLimit*)> readStudy(
-    const py::object& studyValue, const py::object& participant, const py::object& knee, const py::dict& records,
-    DiagnosisStudy& study) {
+std::function<std::unique_ptr<DiagnosisPlant>(const DiagnosisRowLimit*)> readStudy(const py::object& studyValue,
+                                                                                   const py::object& participant,
+                                                                                   const py::object& knee,
+                                                                                   const py::dict& records,
+                                                                                   DiagnosisStudy& study) {
   if (isPathArgument(studyValue)) {
     study = loadDiagnosisStudy(readPathArgument(studyValue, "diagnose(): study"));
-    return [&study](const DiagnosisRowLimit* limit) { return loadDiagnosisPlant(study, 8, limit); };  // as the CLI's diagnose
+    return [&study](const DiagnosisRowLimit* limit) {
+      return loadDiagnosisPlant(study, 8, limit);
+    };  // as the CLI's diagnose
   }
   if (!isPackageObject(studyValue, "DiagnosisStudy"))
     throw py::type_error(formatArgumentProblem("diagnose(): study", "expected a path or a swingsim.DiagnosisStudy",
@@ -264,7 +270,9 @@ std::function<std::unique_ptr<DiagnosisPlant>(const DiagnosisRowLimit*)> readStu
   if (!participant.is_none()) objects->participant = readParticipant(participant, "diagnose");
   if (!knee.is_none()) objects->baseModel = readKnee(knee, Participant{}, "diagnose");
   objects->records = readGivenRecords(records, source);
-  return [&study, objects](const DiagnosisRowLimit* limit) { return makeSwingDiagnosisPlant(study, std::move(*objects), limit); };
+  return [&study, objects](const DiagnosisRowLimit* limit) {
+    return makeSwingDiagnosisPlant(study, std::move(*objects), limit);
+  };
 }
 
 /// The content of `swingsim diagnose STUDY --json`: candidate effects ranked, the accepted
@@ -291,7 +299,8 @@ py::object diagnose(const py::object& studyValue, const py::object& maxRowsValue
     const Diagnosis dg = runDiagnosis(*plant, study.settings, checkSignals);
     before = plant->compare(*dg.baseline.model);
     after = plant->compare(*dg.final.model);
-    json = makeDiagnoseJson(dg, *before, *after, plant->compareHeldBack(*dg.baseline.model), plant->compareHeldBack(*dg.final.model));
+    json = makeDiagnoseJson(dg, *before, *after, plant->compareHeldBack(*dg.baseline.model),
+                            plant->compareHeldBack(*dg.final.model));
   } catch (const Interrupted&) {
     throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
   }
@@ -317,21 +326,26 @@ PYBIND11_MODULE(_swingsim, m) {
       PyErr_SetString(runError.ptr(), e.what());
     }
   });
-  m.def("load_participant_dict",
-        [](const py::object& path) { return python::loadParticipantDict(python::readPathArgument(path, "load_participant(): path")); },
-        py::arg("path"));
-  m.def("load_knee_dict",
-        [](const py::object& path) { return python::loadKneeDict(python::readPathArgument(path, "load_knee(): path")); },
-        py::arg("path"));
-  m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0, py::arg("knee") = py::none(),
-        py::arg("added_mass_kg") = py::none(), py::arg("added_mass_below_knee_m") = py::none(), py::arg("integrator") = py::none(),
+  m.def(
+      "load_participant_dict",
+      [](const py::object& path) {
+        return python::loadParticipantDict(python::readPathArgument(path, "load_participant(): path"));
+      },
+      py::arg("path"));
+  m.def(
+      "load_knee_dict",
+      [](const py::object& path) { return python::loadKneeDict(python::readPathArgument(path, "load_knee(): path")); },
+      py::arg("path"));
+  m.def("simulate", &python::simulate, py::arg("participant"), py::arg("lowering_m") = 0.0,
+        py::arg("knee") = py::none(), py::arg("added_mass_kg") = py::none(),
+        py::arg("added_mass_below_knee_m") = py::none(), py::arg("integrator") = py::none(),
         py::arg("accuracy") = py::none());
   m.def("sweep", &python::sweep, py::arg("study_path"), py::arg("uncertainty") = 0, py::arg("seed") = py::none(),
         py::arg("jobs") = 0, py::arg("out") = py::none());
   m.def("fit", &python::fit, py::arg("study_path"));
   m.def("tune", &python::tune, py::arg("study_path"), py::arg("jobs") = 0, py::arg("out") = py::none());
   m.def("compare", &python::compare, py::arg("study_path"));
-  m.def("diagnose", &python::diagnose, py::arg("study"), py::arg("max_rows") = py::none(), py::arg("participant") = py::none(),
-        py::arg("knee") = py::none(), py::arg("records") = py::dict());
+  m.def("diagnose", &python::diagnose, py::arg("study"), py::arg("max_rows") = py::none(),
+        py::arg("participant") = py::none(), py::arg("knee") = py::none(), py::arg("records") = py::dict());
   python::addRecordFunctions(m);
 }

@@ -29,8 +29,8 @@ int runCalibrate(const CalibrationRequest& a) {
 }  // namespace
 
 Command addCalibrateCommand(CLI::App& app) {
-  CLI::App* sub =
-      app.add_subcommand("calibrate", "fit each participant's hip-moment time scale to Burkett Table 3 and store it in the YAML");
+  CLI::App* sub = app.add_subcommand(
+      "calibrate", "fit each participant's hip-moment time scale to Burkett Table 3 and store it in the YAML");
   auto a = std::make_shared<CalibrationRequest>();
   sub->add_option("PARTICIPANT.yaml", a->participants, "participant files (one or more)")->required()->type_name("");
   sub->add_option_function<std::string>(

@@ -9,8 +9,9 @@ namespace swingsim::cli {
 
 CLI::Option* addTextOption(CLI::App* sub, const std::string& flag, std::optional<std::string>& value,
                            const std::string& help, const std::string& typeName) {
-  CLI::Option* option =
-      sub->add_option_function<std::string>(flag, [&value](const std::string& v) { value = v; }, help)->type_name(typeName);
+  CLI::Option* option = sub->add_option_function<std::string>(
+                               flag, [&value](const std::string& v) { value = v; }, help)
+                            ->type_name(typeName);
   // Where output goes is checked while parsing: a directory given for a file, or a place we
   // cannot write, fails before any computation.
   if (typeName == "FILE") option->check(writableFilePath());
@@ -26,7 +27,8 @@ CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json) {
       "also write the machine-readable result to this JSON file (-: to standard output, the text then to standard "
       "error)");
   option->type_name("FILE");
-  option->check(CLI::Validator([](std::string& text) { return text == "-" ? std::string() : writableFilePath()(text); }, ""));
+  option->check(
+      CLI::Validator([](std::string& text) { return text == "-" ? std::string() : writableFilePath()(text); }, ""));
   return option;
 }
 
@@ -53,7 +55,8 @@ std::string formatCommandLine(const CLI::App& command) {
 
 std::vector<CommandFile> listRunOutputs(const std::string& folder, const std::vector<std::string>& names,
                                         const std::optional<std::string>& json) {
-  std::vector<CommandFile> outputs = folder.empty() ? std::vector<CommandFile>{} : listFolderFiles("--out", folder, names);
+  std::vector<CommandFile> outputs =
+      folder.empty() ? std::vector<CommandFile>{} : listFolderFiles("--out", folder, names);
   outputs.push_back({"--json", json.value_or("")});
   return outputs;
 }

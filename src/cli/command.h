@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/output_paths.h"  // chooseStudyOutputFolder
-#include "study/sweep_run.h"     // kSweepReportFiles
+#include "study/sweep_run.h"    // kSweepReportFiles
 
 namespace swingsim::cli {
 
@@ -47,7 +47,6 @@ CLI::Option* addTextOption(CLI::App* sub, const std::string& flag, std::optional
 CLI::Option* addJsonOption(CLI::App* sub, std::optional<std::string>& json);
 /// `--out DIR` of the study commands: default out/<study name>/.
 CLI::Option* addStudyOutOption(CLI::App* sub, std::optional<std::string>& out);
-
 
 /// The data and report files a sweep or a cohort run writes into --out: study/sweep_run.h.
 using swingsim::kSweepReportFiles;

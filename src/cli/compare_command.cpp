@@ -37,11 +37,12 @@ int runCompare(const CompareArguments& args) {
   std::printf("%s", formatComparisonTable(b.comparison).c_str());
   const WhitenessTest& wt = b.whiteness;
   if (wt.computed)
-    std::printf("training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g; white when p >= %.3g, the acceptance "
-                "rule's alpha), %d lags outside the 99 %% band: %s\n",
-                wt.q, wt.lags, wt.pValue, study.settings.alpha, wt.lagsOutsideBand,
-                judgeWhiteness(wt, study.settings.alpha) == Whiteness::kWhite ? "consistent with white noise"
-                                                                               : "structure left (not white)");
+    std::printf(
+        "training residual: Ljung-Box Q = %.1f over %d lags (p = %.3g; white when p >= %.3g, the acceptance "
+        "rule's alpha), %d lags outside the 99 %% band: %s\n",
+        wt.q, wt.lags, wt.pValue, study.settings.alpha, wt.lagsOutsideBand,
+        judgeWhiteness(wt, study.settings.alpha) == Whiteness::kWhite ? "consistent with white noise"
+                                                                      : "structure left (not white)");
   else
     std::printf("training residual: Ljung-Box test cannot tell (%s)\n", wt.note.c_str());
   if (wt.computed && !wt.note.empty()) std::printf("  (%s)\n", wt.note.c_str());
@@ -63,7 +64,9 @@ int runCompare(const CompareArguments& args) {
 Command addCompareCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("compare", "model vs measurement: metrics overall and per phase, residual plots");
   auto a = std::make_shared<CompareArguments>();
-  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis or swing-diagnosis")->required()->type_name("");
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis or swing-diagnosis")
+      ->required()
+      ->type_name("");
   addStudyOutOption(sub, a->out);
   addJsonOption(sub, a->json);
   return {sub, [a] { return runCompare(*a); }};

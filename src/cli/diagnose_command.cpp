@@ -1,6 +1,7 @@
 // swingsim diagnose STUDY.yaml [--out DIR] [--json FILE] [--save-model FILE]: compare, rank
 // candidate missing physical effects, add the accepted ones, refit, and report the error
-// before and after, for any plant (docs/diagnosis.md), with a progress bar per step on stderr. All inputs are read before any output.
+// before and after, for any plant (docs/diagnosis.md), with a progress bar per step on stderr. All inputs are read
+// before any output.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -82,14 +83,15 @@ int runDiagnose(const DiagnoseArguments& args, const std::string& command) {
   // The report, its plots and --json as one set: the folder holds this run or the one before.
   StagedOutput staged(outDir, OutputSetKind::kWholeRun);
   stageFolderWriter(staged, [&](const std::string& folder) {
-    writeDiagnosisReport(folder, {study.name, command, drive, &dg, &before, &after, check, heldBefore, heldAfter,
-                                  heldWarnings});
+    writeDiagnosisReport(
+        folder, {study.name, command, drive, &dg, &before, &after, check, heldBefore, heldAfter, heldWarnings});
   });
   if (args.json) staged.addBeside(*args.json, formatJson(makeDiagnoseJson(dg, before, after, heldBefore, heldAfter)));
   staged.commit();
   std::printf("report: %s/report.md (residual plots before-*.svg, after-*.svg)\n", outDir.c_str());
   if (args.saveModel && !dg.explained)
-    throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict + ")");
+    throw RunError("diagnose: --save-model: not saved: the diagnosed model does not explain the data (" + dg.verdict +
+                   ")");
   if (args.saveModel) {
     const auto written = saveDiagnosedModel(study, *plant, dg, *args.saveModel, command);
     for (const auto& p : written) std::printf("model: %s\n", p.c_str());
@@ -104,7 +106,9 @@ Command addDiagnoseCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "diagnose", "rank candidate missing physical effects, add the accepted ones, report the error before and after");
   auto a = std::make_shared<DiagnoseArguments>();
-  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis, swing-diagnosis or sweep-diagnosis")->required()->type_name("");
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-diagnosis, swing-diagnosis or sweep-diagnosis")
+      ->required()
+      ->type_name("");
   addStudyOutOption(sub, a->out);
   addJsonOption(sub, a->json);
   addTextOption(sub, "--save-model", a->saveModel,

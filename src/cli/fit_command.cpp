@@ -6,11 +6,11 @@
 #include <string>
 
 #include "cli/command.h"
-#include "study/cylinder_study.h"
 #include "core/output_files.h"
 #include "core/staged_writer.h"
 #include "report/cylinder_fit_report.h"
 #include "study/cylinder_fit_run.h"
+#include "study/cylinder_study.h"
 
 namespace swingsim::cli {
 
@@ -32,7 +32,8 @@ int runFit(const FitArguments& args, const std::string& command) {
 
   std::printf("%s", formatFitTable(results).c_str());
   for (const auto& r : results)
-    for (const auto& w : r.fit.warnings) std::fprintf(stderr, "swingsim fit: warning: %s: %s\n", r.name.c_str(), w.c_str());
+    for (const auto& w : r.fit.warnings)
+      std::fprintf(stderr, "swingsim fit: warning: %s: %s\n", r.name.c_str(), w.c_str());
 
   // The report, its figures and --json as one set: the folder holds this run or the one before.
   StagedOutput staged(outDir, OutputSetKind::kWholeRun);
@@ -48,7 +49,8 @@ int runFit(const FitArguments& args, const std::string& command) {
 }  // namespace
 
 Command addFitCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("fit", "fit Mauch cylinder models to bench data and validate them on held-out files");
+  CLI::App* sub =
+      app.add_subcommand("fit", "fit Mauch cylinder models to bench data and validate them on held-out files");
   auto a = std::make_shared<FitArguments>();
   sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-fit")->required()->type_name("");
   addStudyOutOption(sub, a->out);

@@ -27,7 +27,9 @@ Command addGenerateCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "generate", "synthetic measurement data (cylinder bench records, swing kinematics) from a model, noise and seed");
   auto a = std::make_shared<GenerateArguments>();
-  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-bench or swing-kinematics")->required()->type_name("");
+  sub->add_option("STUDY.yaml", a->study, "study of kind cylinder-bench or swing-kinematics")
+      ->required()
+      ->type_name("");
   addTextOption(sub, "--out", a->out, "output folder for the CSV files (default: the study's output_dir)", "DIR");
   return {sub, [a] { return runGenerateCommand(*a); }};
 }

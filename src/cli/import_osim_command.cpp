@@ -35,8 +35,10 @@ int runImportOsim(ImportOsimArguments& a) {
   o.name = a.name.value_or("");
   o.kneeModelPath = std::filesystem::absolute(a.knee.value_or(defaultImportKneePath())).lexically_normal().string();
   checkOutputsAreNotInputs({{"MODEL.osim", a.model}, {"--knee", o.kneeModelPath}}, {{"--out", a.out.value_or("")}});
-  const std::string dir =
-      a.out ? (std::filesystem::path(*a.out).parent_path().empty() ? "." : std::filesystem::path(*a.out).parent_path().string()) : ".";
+  const std::string dir = a.out ? (std::filesystem::path(*a.out).parent_path().empty()
+                                       ? "."
+                                       : std::filesystem::path(*a.out).parent_path().string())
+                                : ".";
   const ImportedParticipantYaml imported = importOsimParticipant(a.model, o, dir);
   const std::string& text = imported.text;
   if (a.out) {
@@ -52,7 +54,8 @@ int runImportOsim(ImportOsimArguments& a) {
 
 Command addImportOsimCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
-      "import-osim", "a participant YAML from one leg of a scaled OpenSim 4 model (.osim): thigh, shank, foot, hip offset");
+      "import-osim",
+      "a participant YAML from one leg of a scaled OpenSim 4 model (.osim): thigh, shank, foot, hip offset");
   auto a = std::make_shared<ImportOsimArguments>();
   sub->add_option("MODEL.osim", a->model, "scaled OpenSim 4 model")->required()->type_name("");
   sub->add_option("--side", a->side, "which leg: r (femur_r, tibia_r, talus_r, calcn_r, toes_r) or l (default r)")
@@ -60,27 +63,31 @@ Command addImportOsimCommand(CLI::App& app) {
       ->check(oneOf({"r", "l"}));
   addTextOption(sub, "--out", a->out, "participant YAML to write (default: print it)", "FILE");
   addTextOption(sub, "--name", a->name, "participant name (default <model name>_<side>)", "NAME");
-  addTextOption(sub, "--knee", a->knee, "knee model YAML written as knee_model (default models/damping-table-default.yaml)",
-                "MODEL.yaml");
+  addTextOption(sub, "--knee", a->knee,
+                "knee model YAML written as knee_model (default models/damping-table-default.yaml)", "MODEL.yaml");
   OsimImportOptions& o = a->options;
   sub->add_option("--knee-friction-Nm", o.kneeFriction, "knee friction moment of the prosthesis, N m (default 0)")
       ->type_name("NM")
       ->check(finiteNumber(checkKneeFriction));
   const auto positive = finiteNumber(checkPositive);
-  sub->add_option_function<double>("--shank-mass-kg", [&o](double v) { o.shankMass = v; },
-                                   "the prosthetic shank's mass, kg (default: the model's tibia; inertia scales with it)")
+  sub->add_option_function<double>(
+         "--shank-mass-kg", [&o](double v) { o.shankMass = v; },
+         "the prosthetic shank's mass, kg (default: the model's tibia; inertia scales with it)")
       ->type_name("KG")
       ->check(positive);
-  sub->add_option_function<double>("--foot-mass-kg", [&o](double v) { o.footMass = v; },
-                                   "the prosthetic foot's mass, kg (default: the model's talus + calcn + toes; inertia scales with it)")
+  sub->add_option_function<double>(
+         "--foot-mass-kg", [&o](double v) { o.footMass = v; },
+         "the prosthetic foot's mass, kg (default: the model's talus + calcn + toes; inertia scales with it)")
       ->type_name("KG")
       ->check(positive);
-  sub->add_option_function<double>("--foot-length-m", [&o](double v) { o.footLength = v; },
-                                   "ankle to toe, m (default: from the model's MTP joint and toes)")
+  sub->add_option_function<double>(
+         "--foot-length-m", [&o](double v) { o.footLength = v; },
+         "ankle to toe, m (default: from the model's MTP joint and toes)")
       ->type_name("M")
       ->check(positive);
-  sub->add_option_function<double>("--height-m", [&o](double v) { o.height = v; },
-                                   "standing height, m (default: hip-to-ankle length / 0.491, Winter 2009)")
+  sub->add_option_function<double>(
+         "--height-m", [&o](double v) { o.height = v; },
+         "standing height, m (default: hip-to-ankle length / 0.491, Winter 2009)")
       ->type_name("M")
       ->check(positive);
   return {sub, [a] { return runImportOsim(*a); }};

@@ -5,8 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <new>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -20,12 +20,13 @@ int main(int argc, char** argv) {
   app.failure_message([](const CLI::App* top, const CLI::Error& e) {
     const auto given = top->get_subcommands();
     return std::string("swingsim: ") + e.what() + "\nRun '" +
-           (given.empty() ? std::string("swingsim --help' for the commands") :
-                            "swingsim " + given.front()->get_name() + " --help' for its options") + ".\n";
+           (given.empty() ? std::string("swingsim --help' for the commands")
+                          : "swingsim " + given.front()->get_name() + " --help' for its options") +
+           ".\n";
   });
-  const std::vector<Command> commands = {addSimulateCommand(app), addSweepCommand(app),   addCalibrateCommand(app),
-                                         addFitCommand(app),      addCompareCommand(app), addDiagnoseCommand(app),
-                                         addGenerateCommand(app), addMergeCommand(app),   addSwingsCommand(app),
+  const std::vector<Command> commands = {addSimulateCommand(app),   addSweepCommand(app),      addCalibrateCommand(app),
+                                         addFitCommand(app),        addCompareCommand(app),    addDiagnoseCommand(app),
+                                         addGenerateCommand(app),   addMergeCommand(app),      addSwingsCommand(app),
                                          addImportOsimCommand(app), addExportOsimCommand(app), addTuneCommand(app),
                                          addServeCommand(app)};
   // Set after adding the subcommands, which would inherit it.
@@ -53,8 +54,9 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
       return usageExit(e);
     } catch (const std::bad_alloc&) {
-      std::fprintf(stderr, "swingsim: out of memory (a memory limit such as ulimit -v, or a container's): run with "
-                           "fewer --jobs or a higher limit; nothing was written\n");
+      std::fprintf(stderr,
+                   "swingsim: out of memory (a memory limit such as ulimit -v, or a container's): run with "
+                   "fewer --jobs or a higher limit; nothing was written\n");
       return 1;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "swingsim: %s\n", e.what());

@@ -74,7 +74,8 @@ int runMergeCommand(const MergeArguments& a) {
   run.calibrate();
   run.planUncertainty("");
   const SweepStudy& ran = run.study();
-  for (const auto& s : shards) checkSameUncertaintyRun(run.uncertaintyRun(), s, "the study " + ran.path + " as it is now");
+  for (const auto& s : shards)
+    checkSameUncertaintyRun(run.uncertaintyRun(), s, "the study " + ran.path + " as it is now");
   std::fprintf(stderr, "merge %s: %zu shards, %zu swings of %d samples, seed %llu\n", ran.name.c_str(), shards.size(),
                run.uncertaintyRun().swingCount, ran.uncertaintySamples, static_cast<unsigned long long>(head.run.seed));
   run.takeUncertaintySwings(times);
@@ -85,8 +86,9 @@ int runMergeCommand(const MergeArguments& a) {
 }  // namespace
 
 Command addMergeCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand(
-      "merge", "combine the shard files of `sweep --uncertainty N --shard K/N` (or of a cohort study's `sweep --shard K/N`) into the report and JSON of one sweep run");
+  CLI::App* sub = app.add_subcommand("merge",
+                                     "combine the shard files of `sweep --uncertainty N --shard K/N` (or of a cohort "
+                                     "study's `sweep --shard K/N`) into the report and JSON of one sweep run");
   auto a = std::make_shared<MergeArguments>();
   sub->add_option("SHARD_FILES", a->shards,
                   "every shard file (OUT/uncertainty-shard-K-of-N.json, K = 0 .. N-1) of one analysis")

@@ -56,17 +56,21 @@ int runServe(const ServeArguments& a) {
 }  // namespace
 
 Command addServeCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("serve", "a local web page and JSON API: one swing as the knobs move, the sweep (docs/serve.md)");
+  CLI::App* sub = app.add_subcommand(
+      "serve", "a local web page and JSON API: one swing as the knobs move, the sweep (docs/serve.md)");
   auto a = std::make_shared<ServeArguments>();
-  sub->add_option_function<int>("--port", [a](int v) { a->port = v; },
-                                "TCP port, 0 for any free one (default 8080, or the first free one above it)")
+  sub->add_option_function<int>(
+         "--port", [a](int v) { a->port = v; },
+         "TCP port, 0 for any free one (default 8080, or the first free one above it)")
       ->type_name("N")
       ->check(CLI::Range(0, 65535));
-  sub->add_option_function<std::string>("--host", [a](const std::string& v) { a->host = v; },
-                                        "address to listen on (default 127.0.0.1, this machine only; any other is "
-                                        "reachable by others and is warned about)")
+  sub->add_option_function<std::string>(
+         "--host", [a](const std::string& v) { a->host = v; },
+         "address to listen on (default 127.0.0.1, this machine only; any other is "
+         "reachable by others and is warned about)")
       ->type_name("H");
-  sub->add_option("--data", a->data, "folder holding the shipped participants/ and models/ (default: the current folder)")
+  sub->add_option("--data", a->data,
+                  "folder holding the shipped participants/ and models/ (default: the current folder)")
       ->type_name("DIR");
   return {sub, [a] { return runServe(*a); }};
 }

@@ -28,11 +28,11 @@ namespace {
 struct SimulateArguments {
   std::string participant;
   std::string side = "r";  ///< the leg the .sto's columns name (hip_flexion_<side>, knee_angle_<side>)
-  double lowering = 0;  ///< m
+  double lowering = 0;     ///< m
   std::optional<std::string> knee;
   std::optional<AddedMass> added;
   std::optional<double> hipRateDegS, kneeRateDegS;  ///< deg/s
-  std::optional<std::string> kneeStart;              ///< "measured" or "initial"
+  std::optional<std::string> kneeStart;             ///< "measured" or "initial"
   std::optional<std::string> integrator;
   std::optional<double> accuracy;
   std::optional<std::string> json, out;
@@ -61,8 +61,8 @@ void writeSimulateFiles(const SimulateArguments& a, const SwingSetup& setup, con
   staged.add(tag + "-moments.svg", formatSwingMomentsSvg(r.trajectory, p.name + ", drive: " + driveKey(p.drive)));
   if (a.json) staged.addBeside(*a.json, formatJson(makeSimulateJson(setup, r)));
   staged.commit();
-  std::printf("  trajectory          %s/%s.csv and .sto; hip and knee moments %s-moments.svg\n", out.c_str(), tag.c_str(),
-              tag.c_str());
+  std::printf("  trajectory          %s/%s.csv and .sto; hip and knee moments %s-moments.svg\n", out.c_str(),
+              tag.c_str(), tag.c_str());
 }
 
 int runSimulateCommand(const SimulateArguments& a) {
@@ -84,45 +84,54 @@ int runSimulateCommand(const SimulateArguments& a) {
 }  // namespace
 
 Command addSimulateCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("simulate", "simulate one swing: swing time, peak knee flexion, events, trajectory CSV/.sto");
+  CLI::App* sub =
+      app.add_subcommand("simulate", "simulate one swing: swing time, peak knee flexion, events, trajectory CSV/.sto");
   auto a = std::make_shared<SimulateArguments>();
   std::string integrators;
   for (const auto& k : integratorKeys()) integrators += (integrators.empty() ? "" : ", ") + k;
   sub->add_option("PARTICIPANT.yaml", a->participant, "participant file")->required()->type_name("");
-  sub->add_option("--side", a->side, "the leg the trajectory .sto names: hip_flexion_<side>, knee_angle_<side>, as export-osim --side "
+  sub->add_option("--side", a->side,
+                  "the leg the trajectory .sto names: hip_flexion_<side>, knee_angle_<side>, as export-osim --side "
                   "and a lab's IK file (default r)")
       ->type_name("r|l")
       ->check(oneOf({"r", "l"}));
   sub->add_option("--lowering", a->lowering, "knee-axis lowering below the standard location, m (default 0)")
       ->type_name("M")
       ->check(finiteNumber(checkLowering));
-  sub->add_option_function<std::string>("--knee", [a](const std::string& v) { a->knee = v; },
-                                        "knee model YAML (default: the participant's knee_model)")
+  sub->add_option_function<std::string>(
+         "--knee", [a](const std::string& v) { a->knee = v; },
+         "knee model YAML (default: the participant's knee_model)")
       ->type_name("MODEL.yaml");
-  sub->add_option_function<std::string>("--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
-                                        "added shank mass as KG@METRES below the knee, e.g. 0.5@0.2 (default none)")
+  sub->add_option_function<std::string>(
+         "--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
+         "added shank mass as KG@METRES below the knee, e.g. 0.5@0.2 (default none)")
       ->type_name("KG@M")
       ->check(addedMassSpec());
-  sub->add_option_function<double>("--hip-rate-deg-s", [a](double v) { a->hipRateDegS = v; },
-                                   "hip flexion rate at toe-off, deg/s (default: the participant's, 0)")
+  sub->add_option_function<double>(
+         "--hip-rate-deg-s", [a](double v) { a->hipRateDegS = v; },
+         "hip flexion rate at toe-off, deg/s (default: the participant's, 0)")
       ->type_name("DEG/S")
       ->check(finiteNumber([](double v) { return checkPlausible(v, kJointRateRange, "a hip rate"); }));
   addTextOption(sub, "--knee-start", a->kneeStart,
-                "under the measured thigh drive, where the knee starts: measured (the record's angle and rate at toe-off) or initial "
+                "under the measured thigh drive, where the knee starts: measured (the record's angle and rate at "
+                "toe-off) or initial "
                 "(the participant's initial values); default: the participant's initial.knee_start, measured if absent",
                 "measured|initial")
       ->check(oneOf({"measured", "initial"}));
-  sub->add_option_function<double>("--knee-rate-deg-s", [a](double v) { a->kneeRateDegS = v; },
-                                   "knee flexion rate at toe-off, deg/s (default: the participant's, 0)")
+  sub->add_option_function<double>(
+         "--knee-rate-deg-s", [a](double v) { a->kneeRateDegS = v; },
+         "knee flexion rate at toe-off, deg/s (default: the participant's, 0)")
       ->type_name("DEG/S")
       ->check(finiteNumber([](double v) { return checkPlausible(v, kJointRateRange, "a knee rate"); }));
-  sub->add_option_function<std::string>("--integrator", [a](const std::string& v) { a->integrator = v; },
-                                        "integration method, one of " + integrators + " (default " +
-                                            integratorKeys().front() + "), at its converged accuracy")
+  sub->add_option_function<std::string>(
+         "--integrator", [a](const std::string& v) { a->integrator = v; },
+         "integration method, one of " + integrators + " (default " + integratorKeys().front() +
+             "), at its converged accuracy")
       ->type_name("METHOD")
       ->check(oneOf(integratorKeys()));
-  sub->add_option_function<double>("--accuracy", [a](double v) { a->accuracy = v; },
-                                   "integrator relative accuracy, [1e-14, 0.01] (default: the integrator's converged one)")
+  sub->add_option_function<double>(
+         "--accuracy", [a](double v) { a->accuracy = v; },
+         "integrator relative accuracy, [1e-14, 0.01] (default: the integrator's converged one)")
       ->type_name("A")
       ->check(finiteNumber(checkAccuracy));
   addJsonOption(sub, a->json);

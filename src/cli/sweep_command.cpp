@@ -54,7 +54,8 @@ struct SweepArguments {
 
 // The files a loaded sweep study reads (its participants and knee models) against what the
 // run writes into `out` (also the default folder) and --json: refused before any swing.
-void checkOutputsAreNotStudyFiles(const SweepStudy& study, const std::string& out, const std::optional<std::string>& json) {
+void checkOutputsAreNotStudyFiles(const SweepStudy& study, const std::string& out,
+                                  const std::optional<std::string>& json) {
   std::vector<CommandFile> inputs = {{"STUDY.yaml", study.path}};
   for (const Participant& p : study.participants)
     if (!p.path.empty()) inputs.push_back({"STUDY.yaml: participant " + p.name, p.path});
@@ -67,8 +68,12 @@ int runSweepCommand(const SweepArguments& a) {
     // A cohort study: drawn participants, each calibrated and swept (docs/cohort.md).
     checkOutputsAreNotInputs({{"STUDY.yaml", a.study}}, listRunOutputs(a.out.value_or(""), kSweepReportFiles, a.json));
     if (a.added || a.uncertaintySamples || a.seed)
-      throw InputError(a.study + ": kind: cohort-sweep: expected no --add-mass, --uncertainty or --seed (the study's "
-                       "seed draws its participants), found " + (a.added ? "--add-mass" : a.seed ? "--seed" : "--uncertainty"));
+      throw InputError(a.study +
+                       ": kind: cohort-sweep: expected no --add-mass, --uncertainty or --seed (the study's "
+                       "seed draws its participants), found " +
+                       (a.added  ? "--add-mass"
+                        : a.seed ? "--seed"
+                                 : "--uncertainty"));
     InterruptScope interrupts;
     return runCohortSweep({a.study, a.out, a.json, a.jobs, a.shard.has_value(), a.shard ? a.shard->index : 0,
                            a.shard ? a.shard->count : 1, static_cast<std::uint64_t>(a.maxSwings)},
@@ -82,9 +87,10 @@ int runSweepCommand(const SweepArguments& a) {
   applyUncertaintyArguments(study, a.uncertaintySamples, a.seed,
                             {"--seed", "--uncertainty N", "--seed " + std::to_string(a.seed.value_or(0))});
   if (a.shard && study.uncertaintySamples == 0)
-    throw InputError("--shard: shards the uncertainty analysis, which needs --uncertainty N or an `uncertainty:` map in " +
-                     study.path + " (got --shard " + std::to_string(a.shard->index) + "/" +
-                     std::to_string(a.shard->count) + " alone)");
+    throw InputError(
+        "--shard: shards the uncertainty analysis, which needs --uncertainty N or an `uncertainty:` map in " +
+        study.path + " (got --shard " + std::to_string(a.shard->index) + "/" + std::to_string(a.shard->count) +
+        " alone)");
   const std::string out = chooseSweepOutputFolder(study, a.out);
   checkOutputsAreNotStudyFiles(study, out, a.json);
   if (!a.shard) announceSweepGrid(study, static_cast<std::uint64_t>(a.maxSwings), a.jobs);  // before any work
@@ -102,16 +108,20 @@ int runSweepCommand(const SweepArguments& a) {
 }  // namespace
 
 Command addSweepCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("sweep", "knee-axis lowering sweep per participant: tables, report with figures, JSON");
+  CLI::App* sub =
+      app.add_subcommand("sweep", "knee-axis lowering sweep per participant: tables, report with figures, JSON");
   auto a = std::make_shared<SweepArguments>();
-  sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep or cohort-sweep (docs/cohort.md)")->required()->type_name("");
+  sub->add_option("STUDY.yaml", a->study, "study of kind knee-axis-sweep or cohort-sweep (docs/cohort.md)")
+      ->required()
+      ->type_name("");
   addTextOption(sub, "--out", a->out, "output folder (default: the study's output_dir, else out/<study name>/)", "DIR");
   addJsonOption(sub, a->json);
   sub->add_option("--jobs", a->jobs, "worker threads, 0 = all cores (default 0)")
       ->type_name("N")
       ->check(wholeNumberIn(jobsRange()));
-  sub->add_option_function<std::string>("--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
-                                        "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)")
+  sub->add_option_function<std::string>(
+         "--add-mass", [a](const std::string& v) { a->added = readAddedMass(v); },
+         "also sweep with this added shank mass, KG@METRES below the knee (default: the study's)")
       ->type_name("KG@M")
       ->check(addedMassSpec());
   addMaxSwingsOption(sub, a->maxSwings);
@@ -121,19 +131,22 @@ Command addSweepCommand(CLI::App& app) {
                   "uncertainty: map, else none)")
       ->type_name("N")
       ->check(wholeNumberIn(uncertaintySamplesRange()));
-  sub->add_option("--seed", a->seed, "seed of the uncertainty analysis's draws (std::mt19937_64; default: the study's, else 1)")
+  sub->add_option("--seed", a->seed,
+                  "seed of the uncertainty analysis's draws (std::mt19937_64; default: the study's, else 1)")
       ->type_name("S")
       ->check(wholeNumberIn(seedRange()));
   CLI::Option* shard =
-      sub->add_option_function<std::string>("--shard", [a](const std::string& v) {
-           ShardSpec spec;
-           checkShardSpec(v, &spec);
-           a->shard = spec;
-         },
-         "compute only shard K of N (K from 0 to N - 1) of the uncertainty analysis's swings and write them to "
-         "OUT/uncertainty-shard-K-of-N.json (a cohort study: its participants, to OUT/cohort-shard-K-of-N.json), "
-         "without the plain sweep or a report; `swingsim merge` combines the N "
-         "shard files into the report and JSON of one run (docs/clusters.md)")
+      sub->add_option_function<std::string>(
+             "--shard",
+             [a](const std::string& v) {
+               ShardSpec spec;
+               checkShardSpec(v, &spec);
+               a->shard = spec;
+             },
+             "compute only shard K of N (K from 0 to N - 1) of the uncertainty analysis's swings and write them to "
+             "OUT/uncertainty-shard-K-of-N.json (a cohort study: its participants, to OUT/cohort-shard-K-of-N.json), "
+             "without the plain sweep or a report; `swingsim merge` combines the N "
+             "shard files into the report and JSON of one run (docs/clusters.md)")
           ->type_name("K/N")
           ->check(CLI::Validator([](std::string& v) { return checkShardSpec(v); }, "K/N", "shard"));
   // The shard file is the result: the JSON and the added-mass sweep come from the merge.

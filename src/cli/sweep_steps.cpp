@@ -33,7 +33,8 @@ long stopAfterSwingsForTests() {
   char* end = nullptr;
   const long n = std::strtol(v, &end, 10);
   if (*end != '\0' || n < 0)
-    throw InputError(std::string("SWINGSIM_TEST_STOP_AFTER_SWINGS: expected a whole number of swings, found \"") + v + "\"");
+    throw InputError(std::string("SWINGSIM_TEST_STOP_AFTER_SWINGS: expected a whole number of swings, found \"") + v +
+                     "\"");
   return n;
 }
 
@@ -47,7 +48,8 @@ SweepRunControl makeTerminalControl() {
 
 void addMaxSwingsOption(CLI::App* sub, long long& maxSwings) {
   sub->add_option("--max-swings", maxSwings,
-                  "refuse a plain sweep, or a cohort run or shard, of more swings than this (default " + std::to_string(kDefaultMaxSweepSwings) +
+                  "refuse a plain sweep, or a cohort run or shard, of more swings than this (default " +
+                      std::to_string(kDefaultMaxSweepSwings) +
                       "; the count and a time estimate are printed before it starts)")
       ->type_name("N")
       ->check(wholeNumberIn(maxSwingsRange()));

@@ -26,7 +26,8 @@ struct TuneArguments {
 int runTune(const TuneArguments& a, const std::string& command) {
   const TuningStudy study = loadTuningStudy(a.study);
   const std::string out = chooseStudyOutputFolder(a.out, study.name, study.path);
-  checkOutputsAreNotInputs({{"STUDY.yaml", a.study}, {"STUDY.yaml: participant", study.participantPath},
+  checkOutputsAreNotInputs({{"STUDY.yaml", a.study},
+                            {"STUDY.yaml: participant", study.participantPath},
                             {"STUDY.yaml: knee_model", study.kneeModelPath}},
                            listRunOutputs(out, kTuningOutputFiles, a.json));
   InterruptScope interrupts;
@@ -48,7 +49,8 @@ int runTune(const TuneArguments& a, const std::string& command) {
 }  // namespace
 
 Command addTuneCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("tune", "tune knee settings (knobs) to a person's swing targets: a knee-tuning study");
+  CLI::App* sub =
+      app.add_subcommand("tune", "tune knee settings (knobs) to a person's swing targets: a knee-tuning study");
   auto a = std::make_shared<TuneArguments>();
   sub->add_option("STUDY.yaml", a->study, "study of kind knee-tuning")->required()->type_name("");
   addStudyOutOption(sub, a->out);

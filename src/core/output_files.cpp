@@ -70,24 +70,23 @@ std::string readFile(const std::string& path, std::size_t maxBytes) {
   if (text.size() > maxBytes) {
     std::error_code ec;
     const bool regular = std::filesystem::is_regular_file(path, ec);
-    const std::string size = regular ? formatByteCount(std::filesystem::file_size(path, ec))
-                                     : "more than " + formatByteCount(maxBytes) + " read and not at its end (a device or a pipe?)";
-    throw InputError(path + ": file too large for an input file (" + size + "; the limit is " + formatByteCount(maxBytes) +
-                     "): is this the right file?");
+    const std::string size =
+        regular ? formatByteCount(std::filesystem::file_size(path, ec))
+                : "more than " + formatByteCount(maxBytes) + " read and not at its end (a device or a pipe?)";
+    throw InputError(path + ": file too large for an input file (" + size + "; the limit is " +
+                     formatByteCount(maxBytes) + "): is this the right file?");
   }
   return text;
 }
 
-std::string fileStem(const std::string& path) {
-  return std::filesystem::path(path).stem().string();
-}
+std::string fileStem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 std::string makeSafeFileStem(const std::string& name) {
   constexpr std::size_t kMaxStem = 64;
   std::string stem;
   for (char c : name) {
-    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-' ||
-                      c == '_';
+    const bool keep =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_';
     stem += keep ? c : '_';
   }
   while (!stem.empty() && stem.front() == '.') stem.front() = '_';

@@ -67,7 +67,7 @@ class StagedOutput {
   std::string folder_, staging_;
   OutputSetKind kind_;
   std::vector<std::string> names_;
-  std::vector<std::pair<std::string, std::string>> beside_;  ///< (temporary, target)
+  std::vector<std::pair<std::string, std::string>> beside_;   ///< (temporary, target)
   std::vector<std::pair<std::string, std::string>> streams_;  ///< (FIFO or device, contents)
 
   void checkNothingInTheWay() const;

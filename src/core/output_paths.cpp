@@ -67,7 +67,8 @@ std::string describeLengthProblem(const std::string& verb, const std::string& pa
 
 std::string findOutputFileProblem(const std::string& path) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) return "expected a file to write, got the directory '" + path + "' (give a file name inside it)";
+  if (fs::is_directory(path, ec))
+    return "expected a file to write, got the directory '" + path + "' (give a file name inside it)";
   if (isWriteThroughTarget(path))
     return ::access(path.c_str(), W_OK) == 0 ? "" : "cannot write '" + path + "' (permissions)";
   if (const std::string length = checkLengths(path, kTemporarySuffix, kTemporarySuffix); !length.empty())
@@ -78,7 +79,8 @@ std::string findOutputFileProblem(const std::string& path) {
 
 std::string findOutputFolderProblem(const std::string& path) {
   std::error_code ec;
-  if (fs::exists(path, ec) && !fs::is_directory(path, ec)) return "expected an output folder, got the existing file '" + path + "'";
+  if (fs::exists(path, ec) && !fs::is_directory(path, ec))
+    return "expected an output folder, got the existing file '" + path + "'";
   if (const std::string length = checkLengths(path, 0, kOutputNameReserve); !length.empty())
     return describeLengthProblem("cannot write into", path, kOutputNameReserve, length);
   const std::string folder = checkFolderWritable(path);
@@ -114,8 +116,10 @@ namespace {
 // True if `a` and `b` name one file: the same device and inode, or (for a path that does not
 // exist yet) the same weakly canonical path.
 bool isSameFile(const std::string& a, const std::string& b) {
-  struct stat sa {}, sb {};
-  if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0) return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  struct stat sa {
+  }, sb{};
+  if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0)
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
   std::error_code ea, eb;
   const fs::path ca = fs::weakly_canonical(a, ea), cb = fs::weakly_canonical(b, eb);
   return !ea && !eb && ca == cb;

@@ -11,8 +11,8 @@ std::string checkPlausible(double value, const PlausibleRange& range, const std:
   // Lab software writes 9.9e37 (or similar) where a sample is missing.
   constexpr double kMissingMarker = 1e37;
   const std::string unit = *range.unit ? std::string(" ") + range.unit : std::string();
-  return "expected " + what + " in [" + formatNumber(range.lower) + ", " + formatNumber(range.upper) + "]" + unit + " (" +
-         range.reason + ")" +
+  return "expected " + what + " in [" + formatNumber(range.lower) + ", " + formatNumber(range.upper) + "]" + unit +
+         " (" + range.reason + ")" +
          (std::fabs(value) >= kMissingMarker ? "; a value this large is usually a missing-data marker: remove the row "
                                                "or fill the gap"
                                              : "");

@@ -27,7 +27,8 @@ constexpr PlausibleRange kForceRange{-1e5, 1e5, "N",
 /// (1e-320 is finite, but its products underflow to 0); no quantity of ours comes near it.
 constexpr double kSmallestMagnitude = 1e-300;
 /// The message for a nonzero number below kSmallestMagnitude.
-constexpr const char* kTooSmallMessage = "too small: expected 0 or a magnitude of at least 1e-300 (this is below 1e-300)";
+constexpr const char* kTooSmallMessage =
+    "too small: expected 0 or a magnitude of at least 1e-300 (this is below 1e-300)";
 /// Sample time (s) in a record: a lab clock of months at most.
 constexpr PlausibleRange kRecordTimeRange{-1e7, 1e7, "s", "a record's clock runs for months at most"};
 /// Least step between samples (s): 1 MHz, past any motion capture (<= 2 kHz) or bench DAQ.
@@ -44,7 +45,8 @@ constexpr PlausibleRange kJointRateRange{-3000, 3000, "deg/s", "a swinging knee 
 constexpr PlausibleRange kJointMomentRange{-2000, 2000, "N m",
                                            "a hip moment peaks near 1-2 N m/kg, some 300 N m for a 150 kg person"};
 /// Time scale of a hip moment profile: calibration searches 0.85-1.8.
-constexpr PlausibleRange kTimeScaleRange{0.2, 5, "", "calibrated scales lie in 0.85-1.8; 0.2-5 spans a 5x shorter or longer swing"};
+constexpr PlausibleRange kTimeScaleRange{0.2, 5, "",
+                                         "calibrated scales lie in 0.85-1.8; 0.2-5 spans a 5x shorter or longer swing"};
 /// Scale of a generated condition's hip moment or of a hidden effect's mass or moment:
 /// 0.2-5 x the participant's.
 constexpr PlausibleRange kAmplitudeScaleRange{
@@ -53,8 +55,8 @@ constexpr PlausibleRange kAmplitudeScaleRange{
 constexpr PlausibleRange kPhaseDurationRange{0.01, 10, "s", "a swing lasts 0.3-0.6 s"};
 /// Damping of a Mauch cylinder phase (N s/m): a hydraulic cylinder dissipates (>= 0); Mauch
 /// 2014's fitted phases (models/) have 500-17,700 N s/m.
-constexpr PlausibleRange kCylinderDampingRange{0, 1e6, "N s/m",
-                                               "a hydraulic cylinder dissipates, and fitted phases have 500-17,700 N s/m"};
+constexpr PlausibleRange kCylinderDampingRange{
+    0, 1e6, "N s/m", "a hydraulic cylinder dissipates, and fitted phases have 500-17,700 N s/m"};
 /// Piston position of a Mauch cylinder (m), e.g. where hyperextension starts: the stroke is a
 /// few centimetres (Chien et al. measured xhy = 0.005 cm).
 constexpr PlausibleRange kCylinderPositionRange{-0.1, 0.1, "m", "a knee cylinder's piston travels a few centimetres"};

@@ -7,14 +7,16 @@ namespace swingsim {
 namespace {
 
 constexpr int kBarWidth = 40;
-constexpr int kEveryStepUpTo = 20;     // with this few steps, line mode reports every one
-constexpr int kLineBuckets = 20;       // otherwise one line per 1/20 (5 %) of the work
+constexpr int kEveryStepUpTo = 20;      // with this few steps, line mode reports every one
+constexpr int kLineBuckets = 20;        // otherwise one line per 1/20 (5 %) of the work
 constexpr double kRedrawSeconds = 0.2;  // a bar is redrawn at most this often unless its percentage moved
 
 }  // namespace
 
 ProgressReporter::ProgressReporter(std::string step, std::string unit, std::FILE* stream, Style style)
-    : step_(std::move(step)), unit_(std::move(unit)), stream_(stream),
+    : step_(std::move(step)),
+      unit_(std::move(unit)),
+      stream_(stream),
       bar_(style == Style::kBar || (style == Style::kAuto && isatty(fileno(stream)) != 0)),
       start_(std::chrono::steady_clock::now()) {}
 
@@ -59,8 +61,8 @@ void ProgressReporter::update(int done, int total) {
   } else {
     const int bucket = total > 0 ? static_cast<int>(static_cast<long long>(kLineBuckets) * done / total) : kLineBuckets;
     if (total > kEveryStepUpTo && bucket == lastBucket_ && !last) return;
-    std::fprintf(stream_, "%s: %d/%d %s (%d %%), %.1f s%s\n", step_.c_str(), done, total, unit_.c_str(), percent, elapsed,
-                 rate.c_str());
+    std::fprintf(stream_, "%s: %d/%d %s (%d %%), %.1f s%s\n", step_.c_str(), done, total, unit_.c_str(), percent,
+                 elapsed, rate.c_str());
     lastBucket_ = bucket;
   }
   std::fflush(stream_);

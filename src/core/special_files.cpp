@@ -73,13 +73,14 @@ std::string readWithoutBlocking(const std::string& path, std::size_t maxBytes) {
     }
     if (n == 0 && writerSeen) break;
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) throw InputError(path + ": read error (" + std::strerror(errno) + ")");
+    if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)
+      throw InputError(path + ": read error (" + std::strerror(errno) + ")");
     if (!waitReadable(fd))
-      throw InputError(path + (fifo ? (writerSeen ? ": a FIFO (named pipe) whose writer sent nothing for "
-                                                  : ": a FIFO (named pipe) that nobody writes: waited ")
-                                    : ": no data for ") +
-                       fifoWaitText() +
-                       " (the limit; start the program that writes it first, or give a plain file)");
+      throw InputError(path +
+                       (fifo ? (writerSeen ? ": a FIFO (named pipe) whose writer sent nothing for "
+                                           : ": a FIFO (named pipe) that nobody writes: waited ")
+                             : ": no data for ") +
+                       fifoWaitText() + " (the limit; start the program that writes it first, or give a plain file)");
     pollfd p{fd, POLLIN, 0};
     if (::poll(&p, 1, 0) > 0 && (p.revents & POLLHUP)) writerSeen = true;
   }
@@ -139,7 +140,8 @@ void writeThrough(const std::string& path, const std::string& contents) {
   // Blocking writes from here: a reader that reads slowly is waited for.
   ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   // A reader that goes away must give an error, not kill the process with SIGPIPE.
-  struct sigaction ignore {}, before {};
+  struct sigaction ignore {
+  }, before{};
   ignore.sa_handler = SIG_IGN;
   ::sigaction(SIGPIPE, &ignore, &before);
   std::size_t done = 0;

@@ -61,8 +61,9 @@ class FolderLock {
 };
 
 std::string formatManifest(const std::vector<std::string>& names) {
-  std::string text = "# swingsim: the files of the run in this folder; the next run into it removes those it does "
-                     "not write again (docs/formats.md)\n";
+  std::string text =
+      "# swingsim: the files of the run in this folder; the next run into it removes those it does "
+      "not write again (docs/formats.md)\n";
   for (const auto& name : names) text += name + "\n";
   return text;
 }
@@ -113,7 +114,8 @@ void moveSetIntoPlace(const std::string& folder, const std::string& staging, boo
     removeEarlierRunFiles(folder, names);
     const std::string manifest = staging + "/" + kOutputManifestName;
     if (std::rename(manifest.c_str(), (folder + "/" + kOutputManifestName).c_str()) != 0)
-      throw RunError(outMessage(folder, std::string("cannot move the manifest ") + kOutputManifestName + " into place"));
+      throw RunError(
+          outMessage(folder, std::string("cannot move the manifest ") + kOutputManifestName + " into place"));
   }
   std::error_code ec;
   fs::remove_all(staging, ec);
@@ -223,7 +225,8 @@ void StagedOutput::checkNothingInTheWay() const {
   }
   for (const auto& [tmp, target] : beside_)
     if (fs::is_directory(fs::symlink_status(target, ec)))
-      throw RunError(target + ": a folder is in the way of this output file; nothing in --out " + folder_ + " was changed");
+      throw RunError(target + ": a folder is in the way of this output file; nothing in --out " + folder_ +
+                     " was changed");
 }
 
 void StagedOutput::commit(const std::vector<std::string>& stale) {

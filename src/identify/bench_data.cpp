@@ -7,16 +7,15 @@
 
 namespace swingsim {
 
-
-
 CylinderTrace calcCylinderTrace(const MauchCylinder& cylinder, const std::vector<double>& time,
                                 const std::vector<double>& x, const std::vector<double>& xd, double s2Start) {
   CylinderTrace tr;
   tr.latch = calcLatchHistory(time, x, xd, cylinder.params().switches, s2Start);
   tr.force.resize(time.size());
   // Piston acceleration only for an added inertia effect (the same difference estimate again).
-  const std::vector<double> xdd =
-      cylinder.params().effects.inertia && time.size() >= 2 ? estimatePistonVelocity(time, xd) : std::vector<double>(time.size(), 0.0);
+  const std::vector<double> xdd = cylinder.params().effects.inertia && time.size() >= 2
+                                      ? estimatePistonVelocity(time, xd)
+                                      : std::vector<double>(time.size(), 0.0);
   for (std::size_t i = 0; i < time.size(); ++i) {
     tr.force[i] = cylinder.calcForce(x[i], xd[i], xdd[i], tr.latch[i]);
     tr.switches.push_back(calcMauchSwitches(x[i], xd[i], tr.latch[i], cylinder.params().switches));

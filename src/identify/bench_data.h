@@ -13,21 +13,17 @@
 
 namespace swingsim {
 
-
-
-
 /// Force, latch and phase gates of a cylinder along a record (velocity already estimated).
 struct CylinderTrace {
-  std::vector<double> force;                ///< N
-  std::vector<double> latch;                ///< S2
-  std::vector<MauchSwitches> switches;      ///< all switch values per sample
-  std::vector<std::vector<double>> gates;   ///< per sample, per phase
+  std::vector<double> force;               ///< N
+  std::vector<double> latch;               ///< S2
+  std::vector<MauchSwitches> switches;     ///< all switch values per sample
+  std::vector<std::vector<double>> gates;  ///< per sample, per phase
 };
 
 /// Runs the cylinder along (time, x, xd) from latch `s2Start` (0 at heel strike).
 CylinderTrace calcCylinderTrace(const MauchCylinder& cylinder, const std::vector<double>& time,
-                                const std::vector<double>& x, const std::vector<double>& xd,
-                                double s2Start = 0.0);
+                                const std::vector<double>& x, const std::vector<double>& xd, double s2Start = 0.0);
 
 /// Standard normal deviates from std::mt19937_64 with our own Box-Muller transform, so a
 /// seed gives the same numbers on every platform (std::normal_distribution does not).

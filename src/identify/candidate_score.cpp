@@ -39,14 +39,19 @@ constexpr double kEnormousRanges = 100;
 std::string describeGridEdge(bool openBelow, bool openAbove, double first, double last) {
   char buf[200];
   if (openBelow && openAbove)
-    std::snprintf(buf, sizeof buf, "profile over the grid; its 95 %% region spans the whole grid %.4g .. %.4g: open both ways",
-                  first, last);
+    std::snprintf(buf, sizeof buf,
+                  "profile over the grid; its 95 %% region spans the whole grid %.4g .. %.4g: open both ways", first,
+                  last);
   else if (openBelow)
-    std::snprintf(buf, sizeof buf, "profile over the grid; one-sided: its 95 %% region reaches the grid's smallest value %.4g and is open below it",
+    std::snprintf(buf, sizeof buf,
+                  "profile over the grid; one-sided: its 95 %% region reaches the grid's smallest value %.4g and is "
+                  "open below it",
                   first);
   else
-    std::snprintf(buf, sizeof buf, "profile over the grid; one-sided: its 95 %% region reaches the grid's largest value %.4g and is open above it",
-                  last);
+    std::snprintf(
+        buf, sizeof buf,
+        "profile over the grid; one-sided: its 95 %% region reaches the grid's largest value %.4g and is open above it",
+        last);
   return buf;
 }
 
@@ -64,8 +69,9 @@ double interpolateCrossing(double gridIn, double in, double gridOut, double out)
 // below, unbounded above) and says so. The fitted parameters' intervals are conditional on the
 // grid value: their union over every grid value in the region, so the grid choice cannot
 // narrow them.
-void widenOverGridRegion(const DiagnosisPlant& plant, const std::vector<PlantFit>& fits, const std::vector<double>& grid,
-                         std::size_t best, double nEff, EffectId id, double inflate, std::vector<EffectParameter>& parameters) {
+void widenOverGridRegion(const DiagnosisPlant& plant, const std::vector<PlantFit>& fits,
+                         const std::vector<double>& grid, std::size_t best, double nEff, EffectId id, double inflate,
+                         std::vector<EffectParameter>& parameters) {
   const EffectDescriptor& d = describeEffect(id);
   std::vector<std::size_t> order(grid.size());
   std::vector<double> stat(grid.size());
@@ -91,26 +97,29 @@ void widenOverGridRegion(const DiagnosisPlant& plant, const std::vector<PlantFit
   p.upper = std::numeric_limits<double>::infinity();
   for (std::size_t i = at; i-- > 0;)
     if (!(stat[order[i]] <= kChi2One95)) {
-      p.lower = interpolateCrossing(grid[order[i + 1]], stat[order[i + 1]], grid[order[i]], stat[order[i]]) * d.gridReportScale;
+      p.lower = interpolateCrossing(grid[order[i + 1]], stat[order[i + 1]], grid[order[i]], stat[order[i]]) *
+                d.gridReportScale;
       openBelow = false;
       break;
     }
   for (std::size_t i = at + 1; i < order.size(); ++i)
     if (!(stat[order[i]] <= kChi2One95)) {
-      p.upper = interpolateCrossing(grid[order[i - 1]], stat[order[i - 1]], grid[order[i]], stat[order[i]]) * d.gridReportScale;
+      p.upper = interpolateCrossing(grid[order[i - 1]], stat[order[i - 1]], grid[order[i]], stat[order[i]]) *
+                d.gridReportScale;
       openAbove = false;
       break;
     }
   if (openBelow || openAbove)
-    p.intervalNote = describeGridEdge(openBelow, openAbove, d.grid.front() * d.gridReportScale, d.grid.back() * d.gridReportScale);
+    p.intervalNote =
+        describeGridEdge(openBelow, openAbove, d.grid.front() * d.gridReportScale, d.grid.back() * d.gridReportScale);
 }
 
 // The profile's best between grid values: the vertex of the parabola through the log grid
 // value and the RSS of the best and its two neighbours, fitted once and kept when it fits the
 // training records better. A best at an end of the grid is not refined (its interval is
 // one-sided instead). Appends to `grid` and `fits`; returns the index of the best.
-std::size_t refineGridBest(const DiagnosisPlant& plant, const PlantModel& current, EffectId id, std::vector<double>& grid,
-                           std::vector<PlantFit>& fits, std::size_t best) {
+std::size_t refineGridBest(const DiagnosisPlant& plant, const PlantModel& current, EffectId id,
+                           std::vector<double>& grid, std::vector<PlantFit>& fits, std::size_t best) {
   if (best == 0 || best + 1 >= grid.size() || !(grid[best - 1] > 0)) return best;
   const double u0 = std::log(grid[best - 1]), u1 = std::log(grid[best]), u2 = std::log(grid[best + 1]);
   const double r0 = fits[best - 1].rss, r1 = fits[best].rss, r2 = fits[best + 1].rss;
@@ -135,12 +144,14 @@ std::string describeErrorFall(const std::vector<std::string>& names, const Plant
   double totalFall = 0;
   for (std::size_t f = 0; f < current.trainResidual.size() && f < s.trainResidual.size(); ++f)
     for (std::size_t i = 0; i < current.trainResidual[f].size() && i < s.trainResidual[f].size(); ++i) {
-      const double drop = current.trainResidual[f][i] * current.trainResidual[f][i] - s.trainResidual[f][i] * s.trainResidual[f][i];
+      const double drop =
+          current.trainResidual[f][i] * current.trainResidual[f][i] - s.trainResidual[f][i] * s.trainResidual[f][i];
       fall[static_cast<std::size_t>(current.trainPhase[f][i])] += drop;
       totalFall += drop;
     }
   const auto where = static_cast<std::size_t>(std::max_element(fall.begin(), fall.end()) - fall.begin());
-  return names[where] + (totalFall > 0 ? " (" + fmtPercent(100.0 * fall[where] / totalFall) + " % of the error fall)" : "");
+  return names[where] +
+         (totalFall > 0 ? " (" + fmtPercent(100.0 * fall[where] / totalFall) + " % of the error fall)" : "");
 }
 
 }  // namespace
@@ -183,7 +194,8 @@ bool carriesInformation(const DiagnosisPlant& plant, const PlantFit& current, co
     const bool hasRange = bounds && k < bounds->size() && std::isfinite((*bounds)[k].second - (*bounds)[k].first);
     const bool coversRange = hasRange && wald[k].lower <= (*bounds)[k].first && wald[k].upper >= (*bounds)[k].second;
     if (!degenerate && !coversRange) saysNothing = false;
-    if (!degenerate && !(hasRange && wald[k].upper - wald[k].lower > kEnormousRanges * ((*bounds)[k].second - (*bounds)[k].first)))
+    if (!degenerate &&
+        !(hasRange && wald[k].upper - wald[k].lower > kEnormousRanges * ((*bounds)[k].second - (*bounds)[k].first)))
       enormous = false;
   }
   const bool movesNothing = atNeutral || !(std::abs(lr) > kNoLikelihoodGain) || enormous;

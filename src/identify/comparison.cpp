@@ -92,7 +92,8 @@ std::string describeResidualStructure(const Comparison& cmp, double effectiveSam
           where = "only below " + var.label + " = " + hi;
         else
           where = "only for " + var.label + " from " + lo + " to " + hi;
-        binNote += "; the mean residual is " + std::string(b.mean[b.maxBin] > 0 ? "positive" : "negative") + " (99 %) " + where;
+        binNote += "; the mean residual is " + std::string(b.mean[b.maxBin] > 0 ? "positive" : "negative") +
+                   " (99 %) " + where;
       }
     }
   }
@@ -119,8 +120,9 @@ std::vector<std::string> checkHeldBackComparison(const HeldBackComparison& c) {
   std::vector<std::string> out;
   for (const auto& r : c.records)
     if (r.correlation < 0)
-      out.push_back(r.stem + ": the measured " + c.quantity + " correlates negatively with the model's (r = " +
-                    formatNumber(r.correlation) + "): is its sign flipped? An OpenSim generalized force acts along its "
+      out.push_back(r.stem + ": the measured " + c.quantity +
+                    " correlates negatively with the model's (r = " + formatNumber(r.correlation) +
+                    "): is its sign flipped? An OpenSim generalized force acts along its "
                     "coordinate, so motion_columns: knee_sign applies to it too (OpenSim's knee: knee_sign: -1)");
   return out;
 }

@@ -12,20 +12,20 @@ namespace swingsim {
 
 /// A state variable the residual is binned against (piston velocity, knee flexion, ...).
 struct StateVariable {
-  std::string label;          ///< with unit: "piston velocity (mm/s)"
-  std::string title;          ///< plot panel title; empty: a generic one
+  std::string label;           ///< with unit: "piston velocity (mm/s)"
+  std::string title;           ///< plot panel title; empty: a generic one
   std::vector<double> values;  ///< one per sample, in the label's unit
 };
 
 /// One record run through the model.
 struct RecordComparison {
-  std::string stem;               ///< record name (file stem)
+  std::string stem;  ///< record name (file stem)
   bool training = false;
-  std::vector<double> time;       ///< s
-  std::vector<double> measured;   ///< the compared quantity, in Comparison::unit
+  std::vector<double> time;      ///< s
+  std::vector<double> measured;  ///< the compared quantity, in Comparison::unit
   std::vector<double> predicted;
-  std::vector<double> residual;   ///< measured - predicted
-  std::vector<int> phase;         ///< index into Comparison::phaseNames per sample
+  std::vector<double> residual;  ///< measured - predicted
+  std::vector<int> phase;        ///< index into Comparison::phaseNames per sample
   std::vector<StateVariable> variables;
   ErrorMetrics overall;
   std::vector<ErrorMetrics> perPhase;
@@ -38,13 +38,13 @@ struct RecordComparison {
 };
 
 struct Comparison {
-  std::string quantity;                 ///< "force", "knee flexion"
-  std::string unit;                     ///< "N", "deg"
-  std::string secondaryQuantity;        ///< "hip flexion", or empty
+  std::string quantity;           ///< "force", "knee flexion"
+  std::string unit;               ///< "N", "deg"
+  std::string secondaryQuantity;  ///< "hip flexion", or empty
   std::vector<std::string> phaseNames;
   std::vector<RecordComparison> records;  ///< training records first
-  double plotSeconds = 1e300;           ///< span of each record shown against time, s
-  int decimals = 1;                     ///< decimals to print errors with (1 for N, 2 for deg)
+  double plotSeconds = 1e300;             ///< span of each record shown against time, s
+  int decimals = 1;                       ///< decimals to print errors with (1 for N, 2 for deg)
 };
 
 /// A quantity the model applies but is never fitted to, against an independent

@@ -68,13 +68,18 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
   using P = MauchCylinderParams;
   using Train = std::vector<BenchData>;
   static const std::vector<CylinderEffectRecord> table = {
-      {{E::kCoulombFriction, K::kCylinder, "coulomb_friction",
-       "a seal friction force of constant size that always opposes the piston's motion",
-       "Chien 2014 tried a Coulomb term opposing motion (it made their fit worse)",
-       "records at several speeds (its size does not grow with speed)",
-       {"force_N", "width_m_per_s"}, 1,
-       // tanh width Fc tanh(xd / w), m/s
-       {0.002, 0.005, 0.01, 0.02, 0.05}, 1.0, false},
+      {{E::kCoulombFriction,
+        K::kCylinder,
+        "coulomb_friction",
+        "a seal friction force of constant size that always opposes the piston's motion",
+        "Chien 2014 tried a Coulomb term opposing motion (it made their fit worse)",
+        "records at several speeds (its size does not grow with speed)",
+        {"force_N", "width_m_per_s"},
+        1,
+        // tanh width Fc tanh(xd / w), m/s
+        {0.002, 0.005, 0.01, 0.02, 0.05},
+        1.0,
+        false},
        [](const P& p) { return p.effects.coulombFriction; },
        [](P& p, double grid) {
          p.effects.coulombFriction = true;
@@ -82,22 +87,32 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
          p.effects.coulombWidth = grid;
        },
        [](P& p) { p.effects.coulombFriction = false; },
-       [](const P& p) { return std::vector<double>{p.effects.coulombForce, p.effects.coulombWidth}; },
+       [](const P& p) {
+         return std::vector<double>{p.effects.coulombForce, p.effects.coulombWidth};
+       },
        [](const P& p, const Train&, std::string& note) {
          note = "friction force must oppose motion (force_N > 0): " + fmt(p.effects.coulombForce) + " N";
          return p.effects.coulombForce > 0;
        },
-       1, 1, nullptr,
+       1,
+       1,
+       nullptr,
        [](P& model, const P& fromB) {
          model.effects.coulombFriction = true;
          model.effects.coulombForce = 0;
          model.effects.coulombWidth = fromB.effects.coulombWidth;
        }},
-      {{E::kOrificeQuadratic, K::kCylinder, "orifice_quadratic",
-       "extra resistance growing with the square of piston speed: turbulent flow through the orifices",
-       "Chien 2014: slow gait fits worst, likely non-linear flow through cylinder, orifices and valve",
-       "records at clearly different speeds (slow and fast walking)",
-       {"coefficient_Ns2_per_m2"}, 1, {}, 1.0, false},
+      {{E::kOrificeQuadratic,
+        K::kCylinder,
+        "orifice_quadratic",
+        "extra resistance growing with the square of piston speed: turbulent flow through the orifices",
+        "Chien 2014: slow gait fits worst, likely non-linear flow through cylinder, orifices and valve",
+        "records at clearly different speeds (slow and fast walking)",
+        {"coefficient_Ns2_per_m2"},
+        1,
+        {},
+        1.0,
+        false},
        [](const P& p) { return p.effects.orificeQuadratic; },
        [](P& p, double) {
          p.effects.orificeQuadratic = true;
@@ -106,15 +121,23 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
        [](P& p) { p.effects.orificeQuadratic = false; },
        [](const P& p) { return std::vector<double>{p.effects.orificeCoefficient}; },
        [](const P& p, const Train&, std::string& note) {
-         note = "orifice flow must resist motion (coefficient > 0): " + fmt(p.effects.orificeCoefficient) + " N s^2/m^2";
+         note =
+             "orifice flow must resist motion (coefficient > 0): " + fmt(p.effects.orificeCoefficient) + " N s^2/m^2";
          return p.effects.orificeCoefficient > 0;
        },
-       1, 2},
-      {{E::kInertia, K::kCylinder, "inertia",
-       "a force proportional to piston acceleration: the moving mass of piston, rod and oil",
-       "Chien 2014 tried an acceleration term (it did not help on their data)",
-       "records with different frequency content (another cadence or a sine sweep)",
-       {"mass_kg"}, 1, {}, 1.0, false},
+       1,
+       2},
+      {{E::kInertia,
+        K::kCylinder,
+        "inertia",
+        "a force proportional to piston acceleration: the moving mass of piston, rod and oil",
+        "Chien 2014 tried an acceleration term (it did not help on their data)",
+        "records with different frequency content (another cadence or a sine sweep)",
+        {"mass_kg"},
+        1,
+        {},
+        1.0,
+        false},
        [](const P& p) { return p.effects.inertia; },
        [](P& p, double) {
          p.effects.inertia = true;
@@ -126,12 +149,19 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
          note = "moving mass must be positive: " + fmt(p.effects.pistonMass) + " kg";
          return p.effects.pistonMass > 0;
        },
-       1, 3},
-      {{E::kPositionDependentDamping, K::kCylinder, "position_dependent_damping",
-       "damping that changes along the stroke (metering grooves, valve opening with position)",
-       "Chien 2014's phases have constant damping; the valve geometry varies along the stroke",
-       "records with different knee-angle amplitudes",
-       {"coefficient_Ns_per_m2"}, 1, {}, 1.0, false},
+       1,
+       3},
+      {{E::kPositionDependentDamping,
+        K::kCylinder,
+        "position_dependent_damping",
+        "damping that changes along the stroke (metering grooves, valve opening with position)",
+        "Chien 2014's phases have constant damping; the valve geometry varies along the stroke",
+        "records with different knee-angle amplitudes",
+        {"coefficient_Ns_per_m2"},
+        1,
+        {},
+        1.0,
+        false},
        [](const P& p) { return p.effects.positionDependentDamping; },
        [](P& p, double) {
          p.effects.positionDependentDamping = true;
@@ -139,12 +169,20 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
        },
        [](P& p) { p.effects.positionDependentDamping = false; },
        [](const P& p) { return std::vector<double>{p.effects.positionDamping}; },
-       positionDampingIsPhysical, 1, 4},
-      {{E::kHyperextensionPhase, K::kCylinder, "hyperextension_phase",
-       "a separate force law while the piston is hyperextended (Chien's 4th phase)",
-       "Chien 2014 Eq. 11: the 4-phase model adds hyperextension to the 2-phase model",
-       "records with longer or deeper hyperextension",
-       {"f_N", "k_N_per_m", "c_Ns_per_m"}, 3, {}, 1.0, false},
+       positionDampingIsPhysical,
+       1,
+       4},
+      {{E::kHyperextensionPhase,
+        K::kCylinder,
+        "hyperextension_phase",
+        "a separate force law while the piston is hyperextended (Chien's 4th phase)",
+        "Chien 2014 Eq. 11: the 4-phase model adds hyperextension to the 2-phase model",
+        "records with longer or deeper hyperextension",
+        {"f_N", "k_N_per_m", "c_Ns_per_m"},
+        3,
+        {},
+        1.0,
+        false},
        [](const P& p) { return p.effects.hyperextensionPhase; },
        [](P& p, double) {
          p.effects.hyperextensionPhase = true;
@@ -160,17 +198,27 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
                 fmt(p.effects.hyperextension.k) + " N/m";
          return p.effects.hyperextension.k > 0;
        },
-       3, 0,
-       [](const P& p) -> std::string { return p.phases != 2 ? "the 4-phase model already has a hyperextension phase" : ""; },
-       nullptr, CylinderRefit::kSwitches, splitIntoFourPhases},
+       3,
+       0,
+       [](const P& p) -> std::string {
+         return p.phases != 2 ? "the 4-phase model already has a hyperextension phase" : "";
+       },
+       nullptr,
+       CylinderRefit::kSwitches,
+       splitIntoFourPhases},
       // No column: a slower latch is the S2 latch rate k of Chien 2014 Eq. 6.
-      {{E::kSwitchDelay, K::kCylinder, "switch_delay",
-       "the valve latch (balance wheel) needs time to turn: swing flexion starts partly with stance resistance",
-       "Chien 2014 discussion: the balance-wheel release timing (about 0.1 s) is not reproduced by fast switches",
-       "records with longer hyperextension holds (a slow latch completes given time)",
-       {"time_constant_s"}, 0,
-       // latch time constant 1/k, s (Chien 2014: the balance-wheel delay is "about 0.1 s")
-       {0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1}, 1.0, false},
+      {{E::kSwitchDelay,
+        K::kCylinder,
+        "switch_delay",
+        "the valve latch (balance wheel) needs time to turn: swing flexion starts partly with stance resistance",
+        "Chien 2014 discussion: the balance-wheel release timing (about 0.1 s) is not reproduced by fast switches",
+        "records with longer hyperextension holds (a slow latch completes given time)",
+        {"time_constant_s"},
+        0,
+        // latch time constant 1/k, s (Chien 2014: the balance-wheel delay is "about 0.1 s")
+        {0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1},
+        1.0,
+        false},
        hasSlowLatch,
        [](P& p, double grid) { p.switches.latchRate = 1.0 / grid; },
        [](P& p) { p.switches.latchRate = kPublishedLatchRate; },
@@ -179,10 +227,12 @@ const std::vector<CylinderEffectRecord>& cylinderEffectRecords() {
          note = "latch time constant 1/k > 0: " + fmt(1.0 / p.switches.latchRate) + " s";
          return true;
        },
-       0, -1,
+       0,
+       -1,
        [](const P& p) -> std::string {
-         return hasSlowLatch(p) ? "the model's latch is already slow (k = " + formatNumber(p.switches.latchRate) + " /s)"
-                                : "";
+         return hasSlowLatch(p)
+                    ? "the model's latch is already slow (k = " + formatNumber(p.switches.latchRate) + " /s)"
+                    : "";
        },
        [](P& model, const P& fromB) {
          model.switches.latchRate = std::min(model.switches.latchRate, fromB.switches.latchRate);

@@ -14,17 +14,17 @@
 #include <vector>
 
 #include "identify/bench_data.h"
-#include "knee/mauch_cylinder.h"
 #include "identify/effect_table.h"
+#include "knee/mauch_cylinder.h"
 #include "numerics/bounded_least_squares.h"
 
 namespace swingsim {
 
 /// What accepting an effect does to the switch constants (CylinderPlant::refitAccepted).
 enum class CylinderRefit {
-  kNone,            ///< a linear effect: its candidate fit is already joint
-  kSwitches,        ///< one joint fit of the coefficients, switch widths and xhy
-  kSwitchesLatch,   ///< as kSwitches, and the latch rate too
+  kNone,           ///< a linear effect: its candidate fit is already joint
+  kSwitches,       ///< one joint fit of the coefficients, switch widths and xhy
+  kSwitchesLatch,  ///< as kSwitches, and the latch rate too
 };
 
 /// One candidate effect of the cylinder plant. Hooks left null take the default named.
@@ -42,7 +42,8 @@ struct CylinderEffectRecord {
   std::function<std::vector<double>(const MauchCylinderParams&)> values = nullptr;
   /// The sign rule on a fitted model; `train` gives the recorded stroke. `note` says the
   /// rule and the value.
-  std::function<bool(const MauchCylinderParams&, const std::vector<BenchData>& train, std::string& note)> isPhysical = nullptr;
+  std::function<bool(const MauchCylinderParams&, const std::vector<BenchData>& train, std::string& note)> isPhysical =
+      nullptr;
   /// Regression columns it adds (MauchCylinder::calcRegressorRow) and their place among the
   /// added effects' columns (0 first); -1: no column.
   int columns = 0;

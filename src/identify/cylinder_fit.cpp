@@ -74,8 +74,8 @@ struct ConstantEstimates {
 
 // The covariance of every constant (coefficients and switches) at the variable-projection
 // optimum, from Ceres' Jacobian; updates `est`, `current` and `best` with the joint solution.
-void calcJointCovariance(const std::vector<BenchData>& train, bool latch, std::size_t rows, MauchCylinderParams& current,
-                         LinearFit& best, ConstantEstimates& est) {
+void calcJointCovariance(const std::vector<BenchData>& train, bool latch, std::size_t rows,
+                         MauchCylinderParams& current, LinearFit& best, ConstantEstimates& est) {
   const std::size_t nLinear = est.nLinear;
   const TrainingSet set(current, train);
   Eigen::MatrixXd X;
@@ -180,8 +180,8 @@ void addFittedConstants(const ConstantEstimates& est, CylinderFit& out) {
   out.correlation = est.correlation;
   if (est.correlation.size() > 0 && out.switchesFitted) {
     for (const auto& [i, j] : findCollinearPairs(est.correlation, kCollinearLimit))
-      out.collinear.push_back(
-          {est.all[static_cast<std::size_t>(i)].name, est.all[static_cast<std::size_t>(j)].name, est.correlation(i, j)});
+      out.collinear.push_back({est.all[static_cast<std::size_t>(i)].name, est.all[static_cast<std::size_t>(j)].name,
+                               est.correlation(i, j)});
   }
 }
 
@@ -213,8 +213,9 @@ CylinderFit fitCylinder(const MauchCylinderParams& model, const std::vector<Benc
   out.regression = best;
   addFittedConstants(est, out);
   if (best.rank < static_cast<int>(p))
-    out.warnings.push_back("rank-deficient regression (rank " + std::to_string(best.rank) + " of " + std::to_string(p) +
-                           "): some phase is (almost) never active in the training data; its coefficients are not identified");
+    out.warnings.push_back(
+        "rank-deficient regression (rank " + std::to_string(best.rank) + " of " + std::to_string(p) +
+        "): some phase is (almost) never active in the training data; its coefficients are not identified");
   else if (best.conditionNumber > kIllConditionedLimit)
     out.warnings.push_back("ill-conditioned regression (condition number " + formatNumber(best.conditionNumber) +
                            " > " + formatNumber(kIllConditionedLimit) + "): coefficients are poorly determined");

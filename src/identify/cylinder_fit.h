@@ -41,10 +41,10 @@ constexpr double kIllConditionedLimit = 1e8;
 /// Physical ranges of the switch constants searched by the fit (docs/mauch.md, "Fitting", says
 /// where each comes from).
 struct SwitchConstantRanges {
-  double velocityWidth[2] = {1e-5, 2e-2};     ///< m/s: sensor resolution .. 10 % of peak piston speed
-  double positionWidth[2] = {1e-6, 2e-3};     ///< m: sensor resolution .. 5 % of the stroke
-  double hyperextension[2] = {-2e-3, 2e-3};   ///< xhy, m: within 2 mm of full extension
-  double latchRate[2] = {5.0, 1e5};           ///< 1/s: time constant 0.2 s .. far below a sample
+  double velocityWidth[2] = {1e-5, 2e-2};    ///< m/s: sensor resolution .. 10 % of peak piston speed
+  double positionWidth[2] = {1e-6, 2e-3};    ///< m: sensor resolution .. 5 % of the stroke
+  double hyperextension[2] = {-2e-3, 2e-3};  ///< xhy, m: within 2 mm of full extension
+  double latchRate[2] = {5.0, 1e5};          ///< 1/s: time constant 0.2 s .. far below a sample
 };
 
 struct CylinderFitOptions {
@@ -66,12 +66,12 @@ struct CylinderFitOptions {
 
 /// One fitted constant with its uncertainty and what is wrong with it, if anything.
 struct FittedConstant {
-  std::string name;          ///< "phase 2 c_Ns_per_m", "velocity_width_m_per_s"
+  std::string name;  ///< "phase 2 c_Ns_per_m", "velocity_width_m_per_s"
   double value = 0;
-  double standardError = 0;  ///< NaN if not identified
+  double standardError = 0;              ///< NaN if not identified
   double lower = -1e300, upper = 1e300;  ///< physical bounds
-  bool atBound = false;      ///< the data pushed it onto a physical bound
-  bool includesZero = false;  ///< its 95 % confidence interval includes 0
+  bool atBound = false;                  ///< the data pushed it onto a physical bound
+  bool includesZero = false;             ///< its 95 % confidence interval includes 0
 };
 
 /// A correlated pair of fitted constants (|r| above the collinearity limit).
@@ -88,7 +88,7 @@ struct CylinderFit {
   LinearFit regression;         ///< at the final switches (coefficients, standard errors final)
   double trainRmseAtStart = 0;  ///< N, coefficients fitted at the YAML switches
   bool switchesFitted = false;
-  int switchStarts = 0;         ///< multi-start points tried
+  int switchStarts = 0;  ///< multi-start points tried
   /// Every fitted constant (linear coefficients in regressor order, then fitted switch
   /// constants), with standard errors from the Jacobian at the solution.
   std::vector<FittedConstant> constants;

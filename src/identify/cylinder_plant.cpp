@@ -86,10 +86,9 @@ MauchCylinderParams addCylinderEffect(const MauchCylinderParams& params, EffectI
 }
 
 std::vector<std::string> cylinderPhaseNames(const MauchCylinderParams& p) {
-  std::vector<std::string> names = p.phases == 4
-                                       ? std::vector<std::string>{"stance flexion", "swing flexion", "extension",
-                                                                  "hyperextension"}
-                                       : std::vector<std::string>{"stance flexion (high force)", "low force"};
+  std::vector<std::string> names =
+      p.phases == 4 ? std::vector<std::string>{"stance flexion", "swing flexion", "extension", "hyperextension"}
+                    : std::vector<std::string>{"stance flexion (high force)", "low force"};
   if (p.effects.hyperextensionPhase) names.push_back("hyperextension");
   return names;
 }
@@ -106,7 +105,10 @@ double calcCylinderEffectRms(const MauchCylinderParams& truth, EffectId effect, 
 
 CylinderPlant::CylinderPlant(const MauchCylinderParams& base, std::vector<BenchData> train,
                              std::vector<BenchData> validate, bool fitSwitches, double plotSeconds)
-    : start_(base), train_(std::move(train)), validate_(std::move(validate)), plotSeconds_(plotSeconds),
+    : start_(base),
+      train_(std::move(train)),
+      validate_(std::move(validate)),
+      plotSeconds_(plotSeconds),
       fitSwitches_(fitSwitches) {
   if (fitSwitches) {
     CylinderFitOptions o;
@@ -203,7 +205,8 @@ PlantFit CylinderPlant::fit(const PlantModel& model) const {
   s.model = std::make_shared<CylinderModel>(fitted.params, m.switchesFree, m.latchFree);
   if (m.switchesFree) s.baseParameters = freedSwitchConstants(fitted);
   for (std::size_t k = 0; k < slots.size(); ++k) {
-    if (s.effectErrors.empty() || s.effectErrors.back().first != slots[k].effect) s.effectErrors.emplace_back(slots[k].effect, std::vector<double>{});
+    if (s.effectErrors.empty() || s.effectErrors.back().first != slots[k].effect)
+      s.effectErrors.emplace_back(slots[k].effect, std::vector<double>{});
     const auto i = static_cast<Eigen::Index>(k);
     s.effectErrors.back().second.push_back(i < expressions.standardErrors.size() ? expressions.standardErrors(i) : NAN);
   }
@@ -238,7 +241,8 @@ PlantFit CylinderPlant::summarize(const CylinderFit& fitted) const {
     std::vector<double> se;
     for (int col : cylinderEffectColumns(fitted.params, descriptor.id)) {
       se.push_back(fitted.regression.standardErrors[static_cast<std::size_t>(col)]);
-      s.parameterNames[static_cast<std::size_t>(col)] = descriptor.name + "." + s.parameterNames[static_cast<std::size_t>(col)];
+      s.parameterNames[static_cast<std::size_t>(col)] =
+          descriptor.name + "." + s.parameterNames[static_cast<std::size_t>(col)];
     }
     s.effectErrors.emplace_back(descriptor.id, se);
   }
@@ -329,11 +333,16 @@ std::optional<double> CylinderPlant::calcHeldParameterRss(const PlantModel& fitt
     range[1] = value + eps;
   };
   SwitchConstantRanges& r = options.ranges;
-  if (parameter == "velocity_width_m_per_s") hold(p.switches.velocityWidth, r.velocityWidth);
-  else if (parameter == "position_width_m") hold(p.switches.positionWidth, r.positionWidth);
-  else if (parameter == "hyperextension_position_m") hold(p.switches.hyperextensionPosition, r.hyperextension);
-  else if (parameter == "latch_rate_per_s" && m.latchFree) hold(p.switches.latchRate, r.latchRate);
-  else return std::nullopt;
+  if (parameter == "velocity_width_m_per_s")
+    hold(p.switches.velocityWidth, r.velocityWidth);
+  else if (parameter == "position_width_m")
+    hold(p.switches.positionWidth, r.positionWidth);
+  else if (parameter == "hyperextension_position_m")
+    hold(p.switches.hyperextensionPosition, r.hyperextension);
+  else if (parameter == "latch_rate_per_s" && m.latchFree)
+    hold(p.switches.latchRate, r.latchRate);
+  else
+    return std::nullopt;
   return summarize(fitCylinder(p, train_, options)).rss;
 }
 
@@ -418,7 +427,8 @@ std::vector<std::string> CylinderPlant::recordStems() const {
 std::unique_ptr<DiagnosisPlant> CylinderPlant::withOnlyRecord(std::size_t index) const {
   if (index >= train_.size() + validate_.size()) return nullptr;
   const BenchData& d = index < train_.size() ? train_[index] : validate_[index - train_.size()];
-  return std::make_unique<CylinderPlant>(start_, std::vector<BenchData>{d}, std::vector<BenchData>{}, false, plotSeconds_);
+  return std::make_unique<CylinderPlant>(start_, std::vector<BenchData>{d}, std::vector<BenchData>{}, false,
+                                         plotSeconds_);
 }
 
 std::vector<NoiseEstimate> CylinderPlant::estimateRecordNoise() const {

@@ -181,7 +181,8 @@ LinearFit regressWithinBounds(const MauchCylinderParams& params, const std::vect
         out.correlation = Eigen::MatrixXd::Zero(p, p);
         for (std::size_t a = 0; a < freeCols.size(); ++a)
           for (std::size_t b = 0; b < freeCols.size(); ++b)
-            out.correlation(freeCols[a], freeCols[b]) = fit.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+            out.correlation(freeCols[a], freeCols[b]) =
+                fit.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
       }
       return out;
     }

@@ -29,7 +29,8 @@ std::string fmtPercent(double v) {
 // Which physical bound ends a profile interval, with its value: ", one-sided: cut by its
 // upper bound 20"; both: the records exclude no value of the physical range.
 std::string describeBoundCut(const ProfileInterval& pi, const PlantFit::FreeParameter& free) {
-  const std::string lower = "its lower bound " + fmtRatio(free.lower), upper = "its upper bound " + fmtRatio(free.upper);
+  const std::string lower = "its lower bound " + fmtRatio(free.lower),
+                    upper = "its upper bound " + fmtRatio(free.upper);
   if (pi.lowerAtBound && pi.upperAtBound)
     return ", cut by " + lower + " and " + upper + ": the whole physical range, these records exclude no value of it";
   if (pi.lowerAtBound) return ", one-sided: cut by " + lower;
@@ -126,7 +127,9 @@ std::optional<PowerAdvice> adviseRecordsForPower(const Diagnosis& out, const Eff
                        fmtRatio(closest->validationRmse[v]) + " on " +
                        (v < heldOutStems.size() ? heldOutStems[v] : "held-out record " + std::to_string(v + 1));
     }
-  a.records = out.plant == PlantKind::kSweep ? "participants" : out.plant == PlantKind::kCylinder ? "bench records" : "swings";
+  a.records = out.plant == PlantKind::kSweep      ? "participants"
+              : out.plant == PlantKind::kCylinder ? "bench records"
+                                                  : "swings";
   // The fitted effect's LR is the estimate of its noncentrality on these records.
   a.recordsNeeded = calcRecordsForPower(a.likelihoodRatio / std::max(1, a.recordsNow), a.dof, a.level, kPowerTarget);
   return a;
@@ -168,8 +171,9 @@ std::string describeTried(const DiagnosisStep& step, const std::string& unit) {
     list += (list.empty() ? "" : ", ") + c.effect;
   }
   if (tried.empty() && silent.empty()) return "";
-  std::string out = " Tried on top of the final model: " + (tried.empty() ? std::string("none with information") : tried) +
-                    (silent.empty() ? "" : "; " + std::string(kNoInformation) + ": " + silent) + ".";
+  std::string out =
+      " Tried on top of the final model: " + (tried.empty() ? std::string("none with information") : tried) +
+      (silent.empty() ? "" : "; " + std::string(kNoInformation) + ": " + silent) + ".";
   const CandidateScore* closest = findClosestCandidate(step);
   if (!closest) return out;
   double worst = 0;
@@ -177,8 +181,9 @@ std::string describeTried(const DiagnosisStep& step, const std::string& unit) {
   return out + " The closest (largest likelihood ratio on the training records) is " + closest->effect + " (LR " +
          fmtRatio(closest->likelihoodRatio) + "; " + describeCandidateParameters(*closest) +
          "); it leaves a held-out error of " + fmtRatio(worst) + " " + unit + " (largest over the held-out records)." +
-         (closest->recordsAgree ? "" : " Refitted on each record alone, its " + closest->agreement +
-                                           ": it stands for a law of another shape.");
+         (closest->recordsAgree ? ""
+                                : " Refitted on each record alone, its " + closest->agreement +
+                                      ": it stands for a law of another shape.");
 }
 
 // The verdict: is what remains measurement noise? Noise per record from the study or the
@@ -187,7 +192,8 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
   const std::vector<NoiseEstimate> estimates = plant.estimateRecordNoise();
   out.pooledNoise = poolNoise(estimates);
   out.noiseSource = settings.measurementNoise > 0 ? "set in the study" : "estimated from the data";
-  for (const auto& e : estimates) out.recordNoise.push_back(settings.measurementNoise > 0 ? settings.measurementNoise : e.sigma);
+  for (const auto& e : estimates)
+    out.recordNoise.push_back(settings.measurementNoise > 0 ? settings.measurementNoise : e.sigma);
   const std::vector<std::string> stems = plant.validationStems();
   const std::size_t firstValidation = out.recordNoise.size() - stems.size();
   std::string worstStem;
@@ -200,7 +206,8 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
     // samples alone exceeds 1.2 x their SD often; the limit is then the 99 % point of that
     // RMS, sqrt(chi^2_0.99(k) / k). Records of 60 samples or more keep the study's ratio.
     const double k = static_cast<double>(estimates[firstValidation + v].samples);
-    const double limit = std::max(settings.explainedNoiseRatio, k > 0 ? std::sqrt(calcChiSquaredQuantile(0.99, k) / k) : 0.0);
+    const double limit =
+        std::max(settings.explainedNoiseRatio, k > 0 ? std::sqrt(calcChiSquaredQuantile(0.99, k) / k) : 0.0);
     if (ratio / limit > worstExcess || worstStem.empty()) {
       worstExcess = ratio / limit;
       worstRatio = ratio;
@@ -213,14 +220,17 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
   if (out.explained) {
     out.verdict = "explained: every held-out error is within " + fmtRatio(settings.explainedNoiseRatio) +
                   " x the measurement noise" +
-                  (worstLimit > settings.explainedNoiseRatio ? ", or the 99 % point of the RMS of a record's few samples of noise," : "") +
+                  (worstLimit > settings.explainedNoiseRatio
+                       ? ", or the 99 % point of the RMS of a record's few samples of noise,"
+                       : "") +
                   " (worst " + worstStem + ", " + fmtRatio(worstRatio) + " x" +
                   (worstLimit > settings.explainedNoiseRatio ? " of a limit " + fmtRatio(worstLimit) + " x" : "") +
                   ") and the final residual is white";
     return;
   }
   // Where the remaining error sits, in phases and in the state space.
-  const double nEffRatio = calcEffectiveSampleSize(out.final.likelihoodResidual) / static_cast<double>(out.final.samples);
+  const double nEffRatio =
+      calcEffectiveSampleSize(out.final.likelihoodResidual) / static_cast<double>(out.final.samples);
   Comparison training = plant.compare(*out.final.model);
   training.records.erase(std::remove_if(training.records.begin(), training.records.end(),
                                         [](const RecordComparison& r) { return !r.training; }),
@@ -238,14 +248,15 @@ void judgeExplained(const DiagnosisPlant& plant, const EffectSelectionSettings& 
                    "; limit " + fmtRatio(worstLimit) + " x)";
   if (!atNoise && !out.finalResidualWhite) out.verdict += ", and ";
   if (!out.finalResidualWhite)
-    out.verdict += out.finalWhiteness.computed ? "the final residual is not white"
-                                               : "whether the final residual is white cannot be told (" +
-                                                     out.finalWhiteness.note + ")";
+    out.verdict += out.finalWhiteness.computed
+                       ? "the final residual is not white"
+                       : "whether the final residual is white cannot be told (" + out.finalWhiteness.note + ")";
   out.verdict += ". What remains: " + (out.missingNote.empty() ? "" : out.missingNote + "; ") + out.structureNote + ".";
   if (!out.steps.empty()) out.verdict += describeTried(out.steps.back(), training.unit);
   out.power = adviseRecordsForPower(out, settings, plant.validationStems());
   if (out.power) out.verdict += describePowerAdvice(*out.power);
-  out.verdict += " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";
+  out.verdict +=
+      " The library has no effect that explains it; nothing is claimed for it and no model is saved as solved.";
 }
 
 }  // namespace
@@ -302,8 +313,8 @@ int scoreCandidates(const DiagnosisPlant& plant, const PlantFit& current, const 
 // (a refit per record): one that fails it is rejected and the rule chooses again among the
 // rest. Its level is the likelihood-ratio test's, Bonferroni over the `applicable`
 // candidates scored: one family-wise decision per step. Returns the index chosen, or -1.
-int chooseAgreeingCandidate(const DiagnosisPlant& plant, const std::vector<PlantFit>& best, double alpha, int applicable,
-                            const std::vector<EffectScore*>& scores, DiagnosisStep& step) {
+int chooseAgreeingCandidate(const DiagnosisPlant& plant, const std::vector<PlantFit>& best, double alpha,
+                            int applicable, const std::vector<EffectScore*>& scores, DiagnosisStep& step) {
   int chosen = applyAcceptanceRule(scores, alpha);
   while (chosen >= 0) {
     CandidateScore& c = step.candidates[static_cast<std::size_t>(chosen)];
@@ -341,7 +352,8 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
   PlantFit current = plant.fit(*plant.baseModel());
   out.baseline = current;
   out.baselineParameters = baseIntervals(plant, current);
-  out.baselineWhiteness = calcWhitenessTest(plant.whitenessResidual(current.likelihoodResidual), settings.whitenessLags);
+  out.baselineWhiteness =
+      calcWhitenessTest(plant.whitenessResidual(current.likelihoodResidual), settings.whitenessLags);
 
   for (int stepNo = 0; stepNo < settings.maxEffects; ++stepNo) {
     DiagnosisStep step;
@@ -366,7 +378,8 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
         return std::nullopt;
       }
       return calcLrTest(best[j].rss, joint.rss, joint.likelihoodResidual,
-                        std::max(1, describeEffect(ids[chosen]).degreesOfFreedom())).p;
+                        std::max(1, describeEffect(ids[chosen]).degreesOfFreedom()))
+          .p;
     });
     // A confound: the chosen effect's parameter moves in lockstep (|r| > kConfoundLimit) with
     // one already in the model. The data cannot tell them apart, so it is not stacked on top;
@@ -383,8 +396,9 @@ Diagnosis runDiagnosis(const DiagnosisPlant& plant, const EffectSelectionSetting
     current = plant.refitAccepted(best[chosen], ids[chosen]);
     out.accepted.push_back(names[chosen]);
     out.acceptedScores.push_back(step.candidates[chosen]);
-    recordAmbiguity(step.group, [&](const std::string& e) { return findEffect(plant.kind(), e)->separatedBy; }, out.ambiguous,
-                    out.ambiguityAdvice);
+    recordAmbiguity(
+        step.group, [&](const std::string& e) { return findEffect(plant.kind(), e)->separatedBy; }, out.ambiguous,
+        out.ambiguityAdvice);
     out.steps.push_back(step);
   }
   out.final = current;
@@ -412,4 +426,3 @@ BaselineComparison compareBaseline(const DiagnosisPlant& plant, int whitenessLag
 }
 
 }  // namespace swingsim
-

@@ -17,9 +17,9 @@
 
 #include "identify/comparison.h"
 #include "identify/effect_selection.h"
+#include "identify/effect_table.h"
 #include "identify/missing_force.h"
 #include "identify/missing_moment.h"
-#include "identify/effect_table.h"
 #include "numerics/noise_estimate.h"
 #include "numerics/residual_analysis.h"
 
@@ -56,8 +56,8 @@ struct PlantFit {
   /// phase of each sample under this model.
   std::vector<std::vector<double>> trainResidual;
   std::vector<std::vector<int>> trainPhase;
-  double trainRmse = 0;                 ///< of trainResidual
-  std::vector<double> validationRmse;   ///< per held-out record
+  double trainRmse = 0;                ///< of trainResidual
+  std::vector<double> validationRmse;  ///< per held-out record
   /// Cross-validated plants (the sweep: leave one participant out): per fold, the RSS and
   /// the residual of that fold's training rows at that fold's own fit. Empty for a plant with
   /// one fixed training/held-out split. When set, a candidate must be significant on the
@@ -174,8 +174,8 @@ struct DiagnosisStep {
   double currentTrainRmse = 0;
   std::vector<double> currentValidationRmse;
   std::vector<CandidateScore> candidates;
-  int chosen = -1;                  ///< index into candidates, -1 if none accepted
-  std::vector<std::string> group;   ///< the chosen effect and those the data cannot tell from it
+  int chosen = -1;                 ///< index into candidates, -1 if none accepted
+  std::vector<std::string> group;  ///< the chosen effect and those the data cannot tell from it
 };
 
 /// Correlation of two fitted parameters above which they count as one confounded group.
@@ -195,9 +195,9 @@ struct PowerAdvice {
   std::string effect;
   double likelihoodRatio = 0;  ///< on the training records
   int dof = 1;
-  double level = 0;            ///< the rule's alpha, Bonferroni-corrected over the candidates
-  int recordsNow = 0;          ///< training records
-  int recordsNeeded = 0;       ///< in all; 0: no number of records would do (no effect at all)
+  double level = 0;                ///< the rule's alpha, Bonferroni-corrected over the candidates
+  int recordsNow = 0;              ///< training records
+  int recordsNeeded = 0;           ///< in all; 0: no number of records would do (no effect at all)
   std::string records = "swings";  ///< what a record is, for the advice ("participants" for the sweep)
   /// Whether the closest lowers the held-out error on every held-out record (true without
   /// any): more records are advised only for a candidate that does.
@@ -209,8 +209,8 @@ constexpr double kPowerTarget = 0.8;
 /// Result of a diagnosis.
 struct Diagnosis {
   PlantKind plant{};
-  PlantFit baseline;   ///< base model fitted
-  PlantFit final;      ///< with the accepted effects, refitted
+  PlantFit baseline;                                                 ///< base model fitted
+  PlantFit final;                                                    ///< with the accepted effects, refitted
   std::vector<EffectParameter> baselineParameters, finalParameters;  ///< base model's own, 95 % intervals
   std::vector<DiagnosisStep> steps;
   std::vector<std::string> accepted;  ///< names, in order of acceptance

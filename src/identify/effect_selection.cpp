@@ -30,7 +30,8 @@ void applyTestAndValidation(EffectScore& c, const LrTest& t, int dof, const std:
   c.deltaBic = t.deltaBic;
   c.bicImproves = c.deltaBic < 0;
   if (std::isfinite(currentPooledValidationRmse) || std::isfinite(c.pooledValidationRmse)) {
-    c.validationImproves = c.pooledValidationRmse <= currentPooledValidationRmse * (1.0 - settings.minValidationImprovement);
+    c.validationImproves =
+        c.pooledValidationRmse <= currentPooledValidationRmse * (1.0 - settings.minValidationImprovement);
     return;
   }
   c.validationImproves = !currentValidationRmse.empty() && c.validationRmse.size() == currentValidationRmse.size();

@@ -59,11 +59,11 @@ struct EffectScore {
   double pooledValidationRmse = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> foldPValues;
   double allRowsPValue = std::numeric_limits<double>::quiet_NaN();
-  double effectiveSamples = 0;         ///< n_eff of its training residual
-  double likelihoodRatio = 0;          ///< n_eff ln(RSS_current / RSS_candidate)
-  int dof = 0;                         ///< added parameters (a profiled grid parameter counts one)
-  double pValue = 1, pAdjusted = 1;    ///< chi^2 tail; times the number of candidates
-  double deltaBic = 0;                 ///< -LR + dof ln(n_eff) (< 0: better)
+  double effectiveSamples = 0;       ///< n_eff of its training residual
+  double likelihoodRatio = 0;        ///< n_eff ln(RSS_current / RSS_candidate)
+  int dof = 0;                       ///< added parameters (a profiled grid parameter counts one)
+  double pValue = 1, pAdjusted = 1;  ///< chi^2 tail; times the number of candidates
+  double deltaBic = 0;               ///< -LR + dof ln(n_eff) (< 0: better)
   std::vector<EffectParameter> parameters;
   bool significant = false, bicImproves = false, validationImproves = false, physical = false;
   /// The pooled fit made no training record significantly worse (applyRecordRule); true
@@ -77,10 +77,10 @@ struct EffectScore {
   /// within their physical range); reported as kNoInformation, without intervals, and never
   /// accepted or named as the closest candidate.
   bool informative = true;
-  std::string physicalNote;            ///< the sign rule and whether it held
+  std::string physicalNote;  ///< the sign rule and whether it held
   bool accepted = false;
-  std::string where;                   ///< phase where the squared error fell most, with its share
-  std::vector<double> trainResidual;   ///< concatenated training files
+  std::string where;                  ///< phase where the squared error fell most, with its share
+  std::vector<double> trainResidual;  ///< concatenated training files
 };
 
 /// What the report says of a candidate whose fit moves no residual (EffectScore::informative).
@@ -106,8 +106,8 @@ void applyRecordRule(EffectScore& score, const ResidualSegments& currentTrain, c
 /// held-out error fell by at least the settings' margin: every record's RMSE from
 /// `currentValidationRmse`; or, for a cross-validated plant (leave one participant out: a
 /// finite `currentPooledValidationRmse` or `score.pooledValidationRmse`), the pooled RMSE.
-void applyTestAndValidation(EffectScore& score, const LrTest& test, int dof, const std::vector<double>& currentValidationRmse,
-                            const EffectSelectionSettings& settings,
+void applyTestAndValidation(EffectScore& score, const LrTest& test, int dof,
+                            const std::vector<double>& currentValidationRmse, const EffectSelectionSettings& settings,
                             double currentPooledValidationRmse = std::numeric_limits<double>::quiet_NaN());
 
 /// Standard error inflation for autocorrelated residuals: sqrt(n / n_eff).

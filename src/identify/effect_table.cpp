@@ -41,8 +41,7 @@ EffectId registerUserEffect(EffectDescriptor descriptor) {
   std::lock_guard<std::mutex> lock(r.mutex);
   for (const auto& d : r.descriptors)
     if (d.plant == descriptor.plant && d.name == descriptor.name && d.sentence == descriptor.sentence &&
-        d.mechanism == descriptor.mechanism &&
-        d.parameters == descriptor.parameters)
+        d.mechanism == descriptor.mechanism && d.parameters == descriptor.parameters)
       return d.id;
   descriptor.id = static_cast<EffectId>(kFirstUserEffectId + static_cast<int>(r.descriptors.size()));
   r.descriptors.push_back(std::move(descriptor));

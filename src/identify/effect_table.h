@@ -65,7 +65,7 @@ struct EffectDescriptor {
   /// Values of the non-linear parameter, fixed before any data are seen and profiled (best
   /// training fit); SI units. Empty: no grid parameter.
   std::vector<double> grid;
-  double gridReportScale = 1.0;  ///< a grid value times this is its reported value
+  double gridReportScale = 1.0;   ///< a grid value times this is its reported value
   bool participantLevel = false;  ///< saved into the participant, not the knee model
   /// Parameters the likelihood-ratio test counts: the fitted ones, plus one for a grid.
   int degreesOfFreedom() const { return fittedParameters + (grid.empty() ? 0 : 1); }

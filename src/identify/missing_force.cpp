@@ -93,7 +93,8 @@ std::string describeMissingForce(const std::vector<MissingForceRegion>& regions)
   if (regions.empty()) return "missing force: none departs from zero beyond its noise";
   constexpr std::size_t kShown = 3;  // the largest; a line a user reads
   std::string out;
-  for (std::size_t i = 0; i < regions.size() && i < kShown; ++i) out += (out.empty() ? "" : "; ") + regions[i].describe();
+  for (std::size_t i = 0; i < regions.size() && i < kShown; ++i)
+    out += (out.empty() ? "" : "; ") + regions[i].describe();
   if (regions.size() > kShown) out += " (and " + std::to_string(regions.size() - kShown) + " smaller regions)";
   return out;
 }

@@ -24,9 +24,9 @@ constexpr double kMissingForceBinMm = 2.0;
 
 /// One region of the measured state where the missing force departs from zero.
 struct MissingForceRegion {
-  bool extending = false;             ///< the piston extends (speed < 0), else it compresses
-  double force = 0;                   ///< mean missing force, N (+ resists compression)
-  double low = 0, high = 0;           ///< the smallest and largest of its bins' means, N
+  bool extending = false;                        ///< the piston extends (speed < 0), else it compresses
+  double force = 0;                              ///< mean missing force, N (+ resists compression)
+  double low = 0, high = 0;                      ///< the smallest and largest of its bins' means, N
   double positionLowMm = 0, positionHighMm = 0;  ///< measured piston position range of its samples
   double speedLowMmS = 0, speedHighMmS = 0;      ///< measured piston speed range of its samples
   int samples = 0;
@@ -38,7 +38,7 @@ struct MissingForceRegion {
 /// The missing force at every sample (the map a figure draws) and its regions.
 struct MissingForce {
   std::vector<double> positionMm, speedMmS, forceN, noiseN;  ///< per sample; noise: its record's sd, N
-  std::vector<MissingForceRegion> regions;  ///< the largest (force x samples) first
+  std::vector<MissingForceRegion> regions;                   ///< the largest (force x samples) first
 };
 
 /// The missing force of `records` under `params` (each record starting unlatched, S2 = 0, as

@@ -43,7 +43,8 @@ struct Bin {
 // Regions: runs of neighbouring bins (same direction of motion) whose means depart from zero
 // with one sign; the largest (moment x samples) first.
 std::vector<MissingMomentRegion> findRegions(const std::map<std::pair<bool, int>, Bin>& bins,
-                                             const std::vector<double>& kneeNoises, const std::vector<double>& hipNoises) {
+                                             const std::vector<double>& kneeNoises,
+                                             const std::vector<double>& hipNoises) {
   std::vector<MissingMomentRegion> regions;
   MissingMomentRegion* open = nullptr;
   int lastIndex = 0, lastSign = 0;
@@ -108,12 +109,13 @@ std::string MissingMomentRegion::describe() const {
   const std::string motion = extending ? "extension" : "flexion";
   return "missing moment: " + fmt("%+.2g", moment) + " N m (" + fmt("%.2g", low) + " to " + fmt("%.2g", high) + ") " +
          (resists ? "resisting " : "assisting ") + motion + " at knee " + fmt("%.0f", kneeLowDeg) + "-" +
-         fmt("%.0f", kneeHighDeg) + " deg while " + (extending ? "extending" : "flexing") + " (" + fmt("%.0f", rateLowDegS) +
-         " to " + fmt("%.0f", rateHighDegS) + " deg/s)";
+         fmt("%.0f", kneeHighDeg) + " deg while " + (extending ? "extending" : "flexing") + " (" +
+         fmt("%.0f", rateLowDegS) + " to " + fmt("%.0f", rateHighDegS) + " deg/s)";
 }
 
 MissingMoment calcMissingMoment(const SwingBase& base, const SwingModelParams& params,
-                                const std::vector<SwingRecord>& records, const std::vector<SwingPrediction>& references) {
+                                const std::vector<SwingRecord>& records,
+                                const std::vector<SwingPrediction>& references) {
   MissingMoment out;
   const KneeLawSum law = makeSwingKneeLaw(base, params);
   if (law.numStates() > 0) {
@@ -131,9 +133,12 @@ MissingMoment calcMissingMoment(const SwingBase& base, const SwingModelParams& p
     if (r.time.size() < 10) continue;
     pelvis = pelvis || !r.pelvisTilt.empty();
     const SwingPrediction* ref = rec < references.size() ? &references[rec] : nullptr;
-    const LocalPolynomialFit hip = smoothAround(r.time, r.hipFlexion, ref ? &ref->hipFlexion : nullptr, kHalfWindowS, 3);
-    const LocalPolynomialFit knee = smoothAround(r.time, r.kneeFlexion, ref ? &ref->kneeFlexion : nullptr, kHalfWindowS, 3);
-    const double hipNoise = estimateNoise(r.time, r.hipFlexion).sigma, kneeNoise = estimateNoise(r.time, r.kneeFlexion).sigma;
+    const LocalPolynomialFit hip =
+        smoothAround(r.time, r.hipFlexion, ref ? &ref->hipFlexion : nullptr, kHalfWindowS, 3);
+    const LocalPolynomialFit knee =
+        smoothAround(r.time, r.kneeFlexion, ref ? &ref->kneeFlexion : nullptr, kHalfWindowS, 3);
+    const double hipNoise = estimateNoise(r.time, r.hipFlexion).sigma,
+                 kneeNoise = estimateNoise(r.time, r.kneeFlexion).sigma;
     hipNoises.back() = hipNoise;
     kneeNoises.back() = kneeNoise;
     for (std::size_t i = 0; i < r.time.size(); ++i) {

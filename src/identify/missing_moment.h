@@ -17,10 +17,10 @@ namespace swingsim {
 
 /// One region of the measured state where the missing moment departs from zero.
 struct MissingMomentRegion {
-  bool extending = false;        ///< the knee extends (rate < 0) in the region, else it flexes
-  double moment = 0;             ///< mean missing moment, N m (+ = flexion)
-  double low = 0, high = 0;      ///< the smallest and largest of its 5-deg bins' means, N m
-  double kneeLowDeg = 0, kneeHighDeg = 0;   ///< measured knee flexion range of its samples
+  bool extending = false;                    ///< the knee extends (rate < 0) in the region, else it flexes
+  double moment = 0;                         ///< mean missing moment, N m (+ = flexion)
+  double low = 0, high = 0;                  ///< the smallest and largest of its 5-deg bins' means, N m
+  double kneeLowDeg = 0, kneeHighDeg = 0;    ///< measured knee flexion range of its samples
   double rateLowDegS = 0, rateHighDegS = 0;  ///< measured knee rate range of its samples
   int samples = 0;
   /// "missing moment: +6.1 N m (4.0 to 8.2) resisting extension at knee 8-20 deg while

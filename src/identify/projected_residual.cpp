@@ -151,7 +151,8 @@ std::vector<BoundedParameter> switchParameters(const MauchSwitchParams& start, c
   std::vector<BoundedParameter> ps = {
       {"velocity_width_m_per_s", start.velocityWidth, r.velocityWidth[0], r.velocityWidth[1], true, 1.0},
       {"position_width_m", start.positionWidth, r.positionWidth[0], r.positionWidth[1], true, 1.0},
-      {"hyperextension_position_m", start.hyperextensionPosition, r.hyperextension[0], r.hyperextension[1], false, 1e-4},
+      {"hyperextension_position_m", start.hyperextensionPosition, r.hyperextension[0], r.hyperextension[1], false,
+       1e-4},
   };
   if (latch) ps.push_back({"latch_rate_per_s", start.latchRate, r.latchRate[0], r.latchRate[1], true, 1.0});
   return ps;

@@ -26,7 +26,8 @@ double calcHeterogeneityP(const std::vector<double>& values, const std::vector<d
   }
   const double mean = swx / sw;
   double q = 0;
-  for (std::size_t i = 0; i < values.size(); ++i) q += (values[i] - mean) * (values[i] - mean) / (errors[i] * errors[i]);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    q += (values[i] - mean) * (values[i] - mean) / (errors[i] * errors[i]);
   return calcChiSquaredSurvival(q, static_cast<double>(values.size() - 1));
 }
 
@@ -34,8 +35,8 @@ double calcHeterogeneityP(const std::vector<double>& values, const std::vector<d
 
 std::string RecordAgreement::describe() const {
   if (!tested) return "";
-  std::string out = parameter + (agrees ? " agrees between records" : " differs between records") + " (heterogeneity p " +
-                    fmt("%.2g", pAdjusted) + ", level " + fmt("%.2g", level) + "):";
+  std::string out = parameter + (agrees ? " agrees between records" : " differs between records") +
+                    " (heterogeneity p " + fmt("%.2g", pAdjusted) + ", level " + fmt("%.2g", level) + "):";
   for (std::size_t i = 0; i < estimates.size(); ++i)
     out += fmt(" %s %.4g (%.4g .. %.4g)", estimates[i].stem.c_str(), estimates[i].value, estimates[i].lower,
                estimates[i].upper) +

@@ -36,7 +36,7 @@ struct SweepEffectLaw {
   EffectId id() const { return descriptor.id; }
   /// The assumption of sweepAssumptions() it sets ("" = the plant's own law: the hip tempo).
   std::string assumption;
-  bool relative = false;  ///< the value multiplies each participant's own (Tc)
+  bool relative = false;        ///< the value multiplies each participant's own (Tc)
   double lower = 0, upper = 0;  ///< physical range of the shared value (reported unit)
   bool logScale = false;
   std::string rangeSource;  ///< why this range

@@ -50,7 +50,8 @@ SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingT
       p.inModel = false;
       p.outside = "not measured (no row in " + measuredPath + ")";
     } else if (!hasStandard[i]) {
-      throw InputError(measuredPath + ": participant " + name + ": expected a row at lowering_m 0 (the standard "
+      throw InputError(measuredPath + ": participant " + name +
+                       ": expected a row at lowering_m 0 (the standard "
                        "location its hip time scale is calibrated to) (got rows only at lowered axes)");
     } else if (p.lowered.empty()) {
       p.inModel = false;
@@ -59,7 +60,8 @@ SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingT
       // Inside the model when some time scale in the calibration range reaches its
       // standard-location time and the calibrated base model ends a swing at every row.
       try {
-        const SwingSetup setup = makeSwingSetup(p.nominal.participant, std::make_shared<const KneeLawSum>(makeSweepVariantKnee(p.nominal)), 0);
+        const SwingSetup setup = makeSwingSetup(p.nominal.participant,
+                                                std::make_shared<const KneeLawSum>(makeSweepVariantKnee(p.nominal)), 0);
         const CalibrationResult cal = calibrateHipTimeScale(setup, p.standard.swingTime, p.nominal.swing);
         (void)predict(i, SweepModelParams{}, cal.timeScale);
       } catch (const RunError& e) {
@@ -76,9 +78,10 @@ SweepPlant::SweepPlant(const SweepStudy& study, const std::vector<MeasuredSwingT
   if (inModel_.size() < 2) {
     std::string why;
     for (const auto& note : notes_) why += (why.empty() ? ": " : "; ") + note;
-    throw RunError("diagnose: the sweep plant needs at least two participants inside the model (leave one participant "
-                   "out trains on the others); " + std::to_string(inModel_.size()) + " of " +
-                   std::to_string(participants_.size()) + " are" + why);
+    throw RunError(
+        "diagnose: the sweep plant needs at least two participants inside the model (leave one participant "
+        "out trains on the others); " +
+        std::to_string(inModel_.size()) + " of " + std::to_string(participants_.size()) + " are" + why);
   }
 }
 
@@ -95,7 +98,8 @@ SweepPlant::Prediction SweepPlant::predict(std::size_t i, const SweepModelParams
   CalibrationOptions options;
   options.timeTolerance = kCalibrationTolerance;
   const SwingSetup standard = makeSwingSetup(calcSweepSwingParticipant(v, params, 0), knee, 0);
-  const CalibrationResult cal = calibrateHipTimeScaleNear(standard, rows.standard.swingTime, startScale, v.swing, options);
+  const CalibrationResult cal =
+      calibrateHipTimeScaleNear(standard, rows.standard.swingTime, startScale, v.swing, options);
   Prediction out;
   out.timeScale = cal.timeScale;
   out.swingTimePerScale = cal.swingTimePerScale;
@@ -135,7 +139,8 @@ std::vector<SweepPlant::Prediction> SweepPlant::predictAll(const std::vector<std
     // Start each calibration from the model's last scale for this participant.
     double start = participants_[i].nominal.participant.hipMoment.timeScale;
     const auto pos = std::find(inModel_.begin(), inModel_.end(), i) - inModel_.begin();
-    if (static_cast<std::size_t>(pos) < params.timeScales.size()) start = params.timeScales[static_cast<std::size_t>(pos)];
+    if (static_cast<std::size_t>(pos) < params.timeScales.size())
+      start = params.timeScales[static_cast<std::size_t>(pos)];
     try {
       out[static_cast<std::size_t>(k)] = predict(i, params, start);
     } catch (const std::exception& e) {
@@ -150,12 +155,14 @@ std::vector<SweepPlant::Prediction> SweepPlant::predictAll(const std::vector<std
 std::vector<double> SweepPlant::standardized(std::size_t i, const Prediction& p) const {
   const SweepParticipantRows& rows = participants_[i];
   Eigen::VectorXd r(static_cast<Eigen::Index>(rows.lowered.size()));
-  for (std::size_t k = 0; k < rows.lowered.size(); ++k) r[static_cast<Eigen::Index>(k)] = rows.lowered[k].swingTime - p.times[k];
+  for (std::size_t k = 0; k < rows.lowered.size(); ++k)
+    r[static_cast<Eigen::Index>(k)] = rows.lowered[k].swingTime - p.times[k];
   const Eigen::VectorXd z = rows.whitening * r;
   return std::vector<double>(z.data(), z.data() + z.size());
 }
 
-SweepPlant::SubsetFit SweepPlant::fitSubset(const SweepModelParams& model, const std::vector<std::size_t>& subset) const {
+SweepPlant::SubsetFit SweepPlant::fitSubset(const SweepModelParams& model,
+                                            const std::vector<std::size_t>& subset) const {
   SubsetFit out;
   out.params = model;
   const std::vector<std::size_t> free = fittedEffects(model);
@@ -206,7 +213,8 @@ SweepPlant::SubsetFit SweepPlant::fitSubset(const SweepModelParams& model, const
   if (!fit.converged) out.notes.push_back("the shared values' fit stopped before converging (" + fit.stopReason + ")");
   for (std::size_t j = 0; j < free.size(); ++j)
     if (j < fit.atBound.size() && fit.atBound[j])
-      out.notes.push_back(parameters[j].name + " on its physical bound (" + formatNumber(fit.x[static_cast<Eigen::Index>(j)]) + ")");
+      out.notes.push_back(parameters[j].name + " on its physical bound (" +
+                          formatNumber(fit.x[static_cast<Eigen::Index>(j)]) + ")");
   return out;
 }
 
@@ -258,17 +266,20 @@ PlantFit SweepPlant::fit(const PlantModel& model) const {
     out.effectBounds.push_back({id, {{findSweepEffectLaw(id).lower, findSweepEffectLaw(id).upper}}});
     out.parameterNames.push_back(describeEffect(id).name + "." + describeEffect(id).parameters[0]);
   }
-  out.correlation = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(free.size()), static_cast<Eigen::Index>(free.size()));
+  out.correlation =
+      Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(free.size()), static_cast<Eigen::Index>(free.size()));
   if (full.covariance.rows() == static_cast<Eigen::Index>(free.size()))
     for (Eigen::Index a = 0; a < full.covariance.rows(); ++a)
       for (Eigen::Index b = 0; b < full.covariance.cols(); ++b)
-        if (a != b) out.correlation(a, b) = full.covariance(a, b) / std::sqrt(full.covariance(a, a) * full.covariance(b, b));
+        if (a != b)
+          out.correlation(a, b) = full.covariance(a, b) / std::sqrt(full.covariance(a, a) * full.covariance(b, b));
   addHeldOutFolds(full, free, fitted, sweepParams(model), out);
   out.model = std::make_shared<SweepModel>(fitted);
   return out;
 }
 
-double SweepPlant::calcSubsetRss(const std::vector<std::size_t>& subset, const std::vector<Prediction>& predictions) const {
+double SweepPlant::calcSubsetRss(const std::vector<std::size_t>& subset,
+                                 const std::vector<Prediction>& predictions) const {
   double rss = 0;
   for (std::size_t o = 0; o < subset.size() && o < predictions.size(); ++o)
     for (double z : standardized(subset[o], predictions[o])) rss += z * z;
@@ -336,7 +347,8 @@ void SweepPlant::addHeldOutFolds(const SubsetFit& full, const std::vector<std::s
       // The others' values leave this participant unpredictable: an infinite held-out error,
       // which no acceptance can pass.
       errors.assign(participants_[inModel_[s]].lowered.size(), std::numeric_limits<double>::infinity());
-      out.notes.push_back(name + " held out: the values fitted without " + name + " cannot predict it (" + e.what() + ")");
+      out.notes.push_back(name + " held out: the values fitted without " + name + " cannot predict it (" + e.what() +
+                          ")");
     }
     for (double e : errors) heldSquares += e * e;
     heldCount += errors.size();
@@ -458,7 +470,8 @@ std::vector<NoiseEstimate> SweepPlant::estimateRecordNoise() const {
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t i : inModel_) {
       const auto& e = participants_[i].standardErrors;
-      out.push_back({calcRms(e) * kMs, static_cast<std::size_t>(std::max(1.0, std::floor(participants_[i].effectiveRows)))});
+      out.push_back(
+          {calcRms(e) * kMs, static_cast<std::size_t>(std::max(1.0, std::floor(participants_[i].effectiveRows)))});
     }
   return out;
 }

@@ -34,12 +34,15 @@ std::vector<SweepParticipantRows> assignSweepRows(const SweepStudy& study, const
     if (it == index.end()) {
       std::string known;
       for (const auto& p : study.participants) known += (known.empty() ? "" : ", ") + p.name;
-      throw InputError(measuredPath + ":" + std::to_string(row.line) + ": participant: expected the name of a participant "
-                       "of the sweep study " + study.path + " (" + known + ") (got '" + row.participant + "')");
+      throw InputError(measuredPath + ":" + std::to_string(row.line) +
+                       ": participant: expected the name of a participant "
+                       "of the sweep study " +
+                       study.path + " (" + known + ") (got '" + row.participant + "')");
     }
     double se = std::isnan(row.sd) ? defaultStandardError : row.calcStandardError();
     if (!(se > 0))
-      throw InputError(measuredPath + ":" + std::to_string(row.line) + ": sd_s: expected the trial-to-trial SD and n of "
+      throw InputError(measuredPath + ":" + std::to_string(row.line) +
+                       ": sd_s: expected the trial-to-trial SD and n of "
                        "every row (columns sd_s,n), or acceptance: measurement_noise (ms, the standard error of a row) "
                        "in the study (got neither)");
     SweepParticipantRows& p = participants[it->second];
@@ -52,8 +55,9 @@ std::vector<SweepParticipantRows> assignSweepRows(const SweepStudy& study, const
     const double cap = calcMaxLowering(p.nominal.participant);
     if (row.lowering > cap) {
       notes.push_back(measuredPath + ":" + std::to_string(row.line) + ": " + row.participant + " at " +
-                      formatNumber(row.lowering * kMillimetresPerMetre) + " mm is beyond the shank's physical limit of " +
-                      formatNumber(cap * kMillimetresPerMetre) + " mm (model/leg_parameters.h calcMaxLowering); row left out");
+                      formatNumber(row.lowering * kMillimetresPerMetre) +
+                      " mm is beyond the shank's physical limit of " + formatNumber(cap * kMillimetresPerMetre) +
+                      " mm (model/leg_parameters.h calcMaxLowering); row left out");
       continue;
     }
     p.lowered.push_back(row);
@@ -66,7 +70,8 @@ void whitenSweepRows(SweepParticipantRows& p, bool hasStandard) {
   // Lowered rows in order of lowering (their standard errors with them).
   std::vector<std::size_t> order(p.lowered.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.lowered[a].lowering < p.lowered[b].lowering; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return p.lowered[a].lowering < p.lowered[b].lowering; });
   std::vector<MeasuredSwingTime> lowered;
   std::vector<double> errors;
   for (std::size_t k : order) {

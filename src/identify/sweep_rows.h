@@ -17,8 +17,8 @@ namespace swingsim {
 /// One participant of the plant with its measured rows.
 struct SweepParticipantRows {
   SweepVariant nominal;
-  MeasuredSwingTime standard;               ///< the row at lowering 0 (calibration target)
-  std::vector<MeasuredSwingTime> lowered;   ///< compared rows, by lowering
+  MeasuredSwingTime standard;              ///< the row at lowering 0 (calibration target)
+  std::vector<MeasuredSwingTime> lowered;  ///< compared rows, by lowering
   /// s, of each lowered row's prediction error: its own standard error and the standard
   /// row's, carried by the calibrated time scale (sqrt(se^2 + (T_d / T_0)^2 se_0^2))
   std::vector<double> standardErrors;
@@ -27,9 +27,9 @@ struct SweepParticipantRows {
   Eigen::MatrixXd whitening;
   /// The independent samples the rows' RMS error is worth, (tr C)^2 / tr C^2 (Satterthwaite).
   double effectiveRows = 0;
-  double standardRowError = 0;              ///< s, of the standard row
+  double standardRowError = 0;  ///< s, of the standard row
   bool inModel = true;
-  std::string outside;                      ///< why not in the model
+  std::string outside;  ///< why not in the model
 };
 
 /// The participants of `study` (nominal variant each) with the rows that name them: the row

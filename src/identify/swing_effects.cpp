@@ -30,18 +30,24 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
   using E = EffectId;
   using P = PlantKind;
   static const std::vector<SwingEffectRecord> table = {
-      {{E::kKneeCoulombFriction, P::kSwing, "knee_coulomb_friction",
-       "a friction moment of constant size that opposes knee motion over the whole range (not only below 4 deg like Tc)",
-       "Burkett 2004 applies friction Tc only near extension; bearings and seals rub everywhere",
-       "swings at several speeds (friction does not grow with knee speed)",
-       {"moment_Nm", "smoothing_deg_s"}, 1,
-       // tanh smoothing rate of the friction, rad/s (reported in deg/s). Bearing and seal
-       // friction reverses within a few deg/s (an assumption: no knee's was measured; a
-       // Stribeck speed of 1e-3..1e-2 m/s on a 1-2 cm bearing radius is 0.05-1 rad/s), so the
-       // grid reaches 0.1 rad/s, where the swing's integration still follows it (the
-       // calibration study in docs/diagnosis.md measured the cost); between grid values the
-       // profile's best is refined (identify/candidate_score.cpp).
-       {0.1, 0.2, 0.5, 1.0, 2.0, 5.0}, kRadToDeg, false},
+      {{E::kKneeCoulombFriction,
+        P::kSwing,
+        "knee_coulomb_friction",
+        "a friction moment of constant size that opposes knee motion over the whole range (not only below 4 deg like "
+        "Tc)",
+        "Burkett 2004 applies friction Tc only near extension; bearings and seals rub everywhere",
+        "swings at several speeds (friction does not grow with knee speed)",
+        {"moment_Nm", "smoothing_deg_s"},
+        1,
+        // tanh smoothing rate of the friction, rad/s (reported in deg/s). Bearing and seal
+        // friction reverses within a few deg/s (an assumption: no knee's was measured; a
+        // Stribeck speed of 1e-3..1e-2 m/s on a 1-2 cm bearing radius is 0.05-1 rad/s), so the
+        // grid reaches 0.1 rad/s, where the swing's integration still follows it (the
+        // calibration study in docs/diagnosis.md measured the cost); between grid values the
+        // profile's best is refined (identify/candidate_score.cpp).
+        {0.1, 0.2, 0.5, 1.0, 2.0, 5.0},
+        kRadToDeg,
+        false},
        {{linear(0.0, 50.0, 1.0), 1.0, [](SwingEffects& e) -> double& { return e.knee.coulombMoment; }}},
        [](SwingEffects& e) -> double& { return e.knee.coulombSmoothingRate; },
        "",
@@ -49,11 +55,17 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
          note = "friction must oppose knee motion (moment_Nm > 0): " + fmt(e.knee.coulombMoment) + " N m";
          return e.knee.coulombMoment > 0;
        }},
-      {{E::kKneeViscousDamping, P::kSwing, "knee_viscous_damping",
-       "extra knee damping proportional to knee speed (a stiffer hydraulic setting than the model's)",
-       "swing-phase control knees resist in proportion to speed; the damping table is an assumption",
-       "swings at several speeds (damping grows with knee speed)",
-       {"damping_Nm_s_per_rad"}, 1, {}, 1.0, false},
+      {{E::kKneeViscousDamping,
+        P::kSwing,
+        "knee_viscous_damping",
+        "extra knee damping proportional to knee speed (a stiffer hydraulic setting than the model's)",
+        "swing-phase control knees resist in proportion to speed; the damping table is an assumption",
+        "swings at several speeds (damping grows with knee speed)",
+        {"damping_Nm_s_per_rad"},
+        1,
+        {},
+        1.0,
+        false},
        {{linear(0.0, 50.0, 0.5), 1.0, [](SwingEffects& e) -> double& { return e.knee.viscousDamping; }}},
        nullptr,
        "",
@@ -61,11 +73,17 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
          note = "a passive damper must resist knee motion (> 0): " + fmt(e.knee.viscousDamping) + " N m s/rad";
          return e.knee.viscousDamping > 0;
        }},
-      {{E::kExtensionAssistSpring, P::kSwing, "extension_assist_spring",
-       "a spring that pulls the knee towards extension, as many prosthetic knees have",
-       "extension assist springs are a common prosthetic knee feature, absent from the model",
-       "swings with different peak knee flexion (the spring grows with the angle)",
-       {"stiffness_Nm_per_rad"}, 1, {}, 1.0, false},
+      {{E::kExtensionAssistSpring,
+        P::kSwing,
+        "extension_assist_spring",
+        "a spring that pulls the knee towards extension, as many prosthetic knees have",
+        "extension assist springs are a common prosthetic knee feature, absent from the model",
+        "swings with different peak knee flexion (the spring grows with the angle)",
+        {"stiffness_Nm_per_rad"},
+        1,
+        {},
+        1.0,
+        false},
        {{linear(0.0, 500.0, 5.0), 1.0, [](SwingEffects& e) -> double& { return e.knee.assistStiffness; }}},
        nullptr,
        "",
@@ -73,11 +91,17 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
          note = "the spring must pull towards extension (stiffness > 0): " + fmt(e.knee.assistStiffness) + " N m/rad";
          return e.knee.assistStiffness > 0;
        }},
-      {{E::kToeOffVelocity, P::kSwing, "toe_off_velocity",
-       "the hip and knee already move at toe-off: energy released by the prosthetic foot",
-       "Burkett 2004 assumed zero velocities at toe-off and names the foot's energy as future work",
-       "swings with different initial conditions, or a measured toe-off velocity",
-       {"hip_rate_deg_s", "knee_rate_deg_s"}, 2, {}, 1.0, true},
+      {{E::kToeOffVelocity,
+        P::kSwing,
+        "toe_off_velocity",
+        "the hip and knee already move at toe-off: energy released by the prosthetic foot",
+        "Burkett 2004 assumed zero velocities at toe-off and names the foot's energy as future work",
+        "swings with different initial conditions, or a measured toe-off velocity",
+        {"hip_rate_deg_s", "knee_rate_deg_s"},
+        2,
+        {},
+        1.0,
+        true},
        {{linear(-20.0, 20.0, 1.0), kRadToDeg, [](SwingEffects& e) -> double& { return e.toeOffHipRate; }},
         {linear(-20.0, 20.0, 1.0), kRadToDeg, [](SwingEffects& e) -> double& { return e.toeOffKneeRate; }}},
        nullptr,
@@ -96,11 +120,17 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
          hipRate = e.toeOffHipRate;
          kneeRate = e.toeOffKneeRate;
        }},
-      {{E::kHipMomentScale, P::kSwing, "hip_moment_scale",
-       "the hip moment that really drives the swing is larger or smaller than the measured one (calibration)",
-       "the hip moment comes from a dynamometer or inverse dynamics, both with gain errors",
-       "a measured hip moment with independent calibration, or swings with different hip effort",
-       {"scale"}, 1, {}, 1.0, true},
+      {{E::kHipMomentScale,
+        P::kSwing,
+        "hip_moment_scale",
+        "the hip moment that really drives the swing is larger or smaller than the measured one (calibration)",
+        "the hip moment comes from a dynamometer or inverse dynamics, both with gain errors",
+        "a measured hip moment with independent calibration, or swings with different hip effort",
+        {"scale"},
+        1,
+        {},
+        1.0,
+        true},
        {{logScaled(0.1, 10.0), 1.0, [](SwingEffects& e) -> double& { return e.hipMomentScale; }}},
        nullptr,
        "the measured thigh drives the swing: no hip moment to scale",
@@ -116,11 +146,17 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
        [](const SwingEffects& e, std::vector<double>& moments) {
          for (double& m : moments) m *= e.hipMomentScale;
        }},
-      {{E::kShankMassScale, P::kSwing, "shank_mass_scale",
-       "the shank is heavier or lighter than the model's (mass and inertia scaled together)",
-       "segment masses come from a table (Burkett 2004 Table 2) and change with the prosthesis build",
-       "weighing the shank, or swings with an added mass (Bach 1994)",
-       {"scale"}, 1, {}, 1.0, true},
+      {{E::kShankMassScale,
+        P::kSwing,
+        "shank_mass_scale",
+        "the shank is heavier or lighter than the model's (mass and inertia scaled together)",
+        "segment masses come from a table (Burkett 2004 Table 2) and change with the prosthesis build",
+        "weighing the shank, or swings with an added mass (Bach 1994)",
+        {"scale"},
+        1,
+        {},
+        1.0,
+        true},
        {{logScaled(0.1, 10.0), 1.0, [](SwingEffects& e) -> double& { return e.shankMassScale; }}},
        nullptr,
        "",
@@ -132,11 +168,18 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
          p.shank.mass *= e.shankMassScale;
          p.shank.inertia *= e.shankMassScale;
        }},
-      {{E::kBelowKneeMassScale, P::kSwing, "below_knee_mass_scale",
-       "everything below the knee (shank, foot, shoe) is heavier or lighter than the model's (masses and inertias scaled together)",
-       "a prosthesis is weighed whole below the knee more often than by segment; the shoe is rarely in the table",
-       "weighing the prosthesis below the knee with its shoe, or swings with an added mass (Bach 1994)",
-       {"scale"}, 1, {}, 1.0, true},
+      {{E::kBelowKneeMassScale,
+        P::kSwing,
+        "below_knee_mass_scale",
+        "everything below the knee (shank, foot, shoe) is heavier or lighter than the model's (masses and inertias "
+        "scaled together)",
+        "a prosthesis is weighed whole below the knee more often than by segment; the shoe is rarely in the table",
+        "weighing the prosthesis below the knee with its shoe, or swings with an added mass (Bach 1994)",
+        {"scale"},
+        1,
+        {},
+        1.0,
+        true},
        {{logScaled(0.1, 10.0), 1.0, [](SwingEffects& e) -> double& { return e.belowKneeMassScale; }}},
        nullptr,
        "",
@@ -170,7 +213,9 @@ std::vector<const SwingEffectRecord*> presentSwingEffectRecords(const SwingEffec
   return out;
 }
 
-bool SwingEffects::has(EffectId effect) const { return std::find(present.begin(), present.end(), effect) != present.end(); }
+bool SwingEffects::has(EffectId effect) const {
+  return std::find(present.begin(), present.end(), effect) != present.end();
+}
 
 void SwingEffects::setPresent(EffectId effect, bool on) {
   if (on && !has(effect)) present.push_back(effect);

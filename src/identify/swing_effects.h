@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "knee/knee_added_effects.h"
 #include "identify/effect_table.h"
+#include "knee/knee_added_effects.h"
 #include "model/leg_parameters.h"
 #include "numerics/bounded_least_squares.h"
 
@@ -38,7 +38,7 @@ struct SwingEffects {
 /// (0 for a moment or a rate, 1 for a scale).
 struct SwingEffectSlot {
   BoundedParameter bounds;
-  double reportScale;                ///< value times this = reported value (rad/s -> deg/s)
+  double reportScale;                           ///< value times this = reported value (rad/s -> deg/s)
   std::function<double&(SwingEffects&)> value;  ///< where the value lives
 };
 

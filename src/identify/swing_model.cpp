@@ -105,7 +105,8 @@ double calcSwingEffectRms(const SwingBase& base, const SwingModelParams& truth, 
   const auto a = predictSwing(base, truth, record, first, init.kneeFlexion);
   const auto b = predictSwing(base, without, record, first, init.kneeFlexion);
   double s = 0;
-  for (std::size_t i = 0; i < a.kneeFlexion.size(); ++i) s += std::pow((a.kneeFlexion[i] - b.kneeFlexion[i]) * kRadToDeg, 2);
+  for (std::size_t i = 0; i < a.kneeFlexion.size(); ++i)
+    s += std::pow((a.kneeFlexion[i] - b.kneeFlexion[i]) * kRadToDeg, 2);
   return std::sqrt(s / static_cast<double>(a.kneeFlexion.size()));
 }
 

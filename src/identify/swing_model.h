@@ -59,11 +59,12 @@ KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& param
 /// integrator's relative and absolute tolerance. Throws RunError if the integration fails.
 struct SwingPrediction {
   std::vector<double> hipFlexion, kneeFlexion, kneeFlexionRate;
-  std::vector<double> hipMoment, kneeMoment;  ///< N m, + = flexion: the drive's (or the one the thigh needs) and the knee law's
+  std::vector<double> hipMoment,
+      kneeMoment;  ///< N m, + = flexion: the drive's (or the one the thigh needs) and the knee law's
 };
 SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& params, const SwingRecord& record,
-                             double hipPose, double kneePose, double tolerance = 1e-8, const ThighMotion* thigh = nullptr,
-                             const HipPath* hip = nullptr);
+                             double hipPose, double kneePose, double tolerance = 1e-8,
+                             const ThighMotion* thigh = nullptr, const HipPath* hip = nullptr);
 
 /// Phases from the swing events of the model's knee: early flexion (toe-off to peak knee
 /// flexion), late extension (peak to entering the zone of stability), terminal/stop contact.

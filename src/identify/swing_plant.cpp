@@ -13,11 +13,11 @@
 
 #include "core/input_error.h"
 #include "core/units.h"
+#include "identify/missing_moment.h"
 #include "leg/toe_off_state.h"
 #include "numerics/bounded_least_squares.h"
 #include "swing/knee_setup.h"
 #include "swing/reference_swing.h"
-#include "identify/missing_moment.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -48,8 +48,9 @@ struct Slot {
 std::vector<Slot> slotsOf(const SwingEffects& e) {
   std::vector<Slot> s;
   // The knee model's scale: positive, within 20x down and up (log-scaled).
-  s.push_back({std::nullopt, {"", 1.0, 0.05, 20.0, true, 1.0}, 1.0,
-               [](SwingModelParams& p) -> double& { return p.kneeModelScale; }});
+  s.push_back({std::nullopt, {"", 1.0, 0.05, 20.0, true, 1.0}, 1.0, [](SwingModelParams& p) -> double& {
+                 return p.kneeModelScale;
+               }});
   for (const SwingEffectRecord* record : presentSwingEffectRecords(e))
     for (const auto& slot : record->slots)
       s.push_back({record->id(), slot.bounds, slot.reportScale,
@@ -91,7 +92,9 @@ BoundedFitSettings modelFitSettings() {
 // The knee's toe-off rate under the thigh drive: within 20 rad/s of the measured knee's
 // first difference (Winter's toe-off knee moves at 6.7 rad/s).
 /// The record's knee at toe-off as a measured-thigh swing starts from it (leg/toe_off_state.h).
-MeasuredKneeStart measuredKneeStart(const SwingRecord& r) { return calcMeasuredKneeStart(r.path, r.time, r.kneeFlexion); }
+MeasuredKneeStart measuredKneeStart(const SwingRecord& r) {
+  return calcMeasuredKneeStart(r.path, r.time, r.kneeFlexion);
+}
 
 BoundedParameter kneeRateParameter(const SwingRecord& r) {
   const double measured = measuredKneeStart(r).kneeFlexionRate;
@@ -139,8 +142,8 @@ void addSlotParameters(const std::vector<Slot>& slots, const BoundedFitResult& l
   for (std::size_t k = 0; k < slots.size(); ++k) {
     const double se = lm.standardErrors[static_cast<Eigen::Index>(k)] * slots[k].reportScale;
     if (!slots[k].effect) {
-      s.baseParameters.push_back({"knee_model_scale", kneeModelScale, se, slots[k].bounds.lower,
-                                  slots[k].bounds.upper});
+      s.baseParameters.push_back(
+          {"knee_model_scale", kneeModelScale, se, slots[k].bounds.lower, slots[k].bounds.upper});
       s.parameterNames.push_back("knee_model_scale");
       continue;
     }
@@ -157,8 +160,8 @@ void addSlotParameters(const std::vector<Slot>& slots, const BoundedFitResult& l
         {slots[k].bounds.lower * slots[k].reportScale, slots[k].bounds.upper * slots[k].reportScale});
     s.parameterNames.push_back(name);
     if (lm.atBound[k])
-      s.notes.push_back(name + " sits on its physical bound (" + fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) +
-                        ")");
+      s.notes.push_back(name + " sits on its physical bound (" +
+                        fmt(lm.x[static_cast<Eigen::Index>(k)] * slots[k].reportScale) + ")");
   }
 }
 
@@ -180,7 +183,8 @@ SwingPlant::SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vect
 std::vector<BoundedParameter> SwingPlant::poseParameters(std::size_t i) const {
   const SwingRecord& r = record(i);
   // The fit starts where a measured-thigh simulation does: the record's knee at toe-off.
-  if (base_.drive == SwingDrive::kThighKinematics) return {kneeRateParameter(r), poseParameter(measuredKneeStart(r).kneeFlexion)};
+  if (base_.drive == SwingDrive::kThighKinematics)
+    return {kneeRateParameter(r), poseParameter(measuredKneeStart(r).kneeFlexion)};
   return {poseParameter(r.hipFlexion.front()), poseParameter(r.kneeFlexion.front())};
 }
 
@@ -229,7 +233,8 @@ std::vector<SwingModelParams> moreUserStarts(const SwingModelParams& params) {
     if (!fresh) continue;
     for (double share : {0.1, 0.5}) {
       SwingModelParams p = params;
-      for (const auto& slot : r->slots) slot.value(p.effects) = slot.bounds.lower + share * (slot.bounds.upper - slot.bounds.lower);
+      for (const auto& slot : r->slots)
+        slot.value(p.effects) = slot.bounds.lower + share * (slot.bounds.upper - slot.bounds.lower);
       out.push_back(p);
     }
   }
@@ -287,8 +292,9 @@ PlantFit SwingPlant::fitWith(const PlantModel& model, std::optional<double> held
     Eigen::Index row = 0;
     for (std::size_t f = 0; f < train_.size(); ++f) {
       const auto& r = train_[f];
-      const SwingPrediction pr = predictSwing(base_, p, r, x[g + 2 * static_cast<Eigen::Index>(f)],
-                                              x[g + 2 * static_cast<Eigen::Index>(f) + 1], tolerance_, thighOf(f), hipOf(f));
+      const SwingPrediction pr =
+          predictSwing(base_, p, r, x[g + 2 * static_cast<Eigen::Index>(f)],
+                       x[g + 2 * static_cast<Eigen::Index>(f) + 1], tolerance_, thighOf(f), hipOf(f));
       appendResiduals(r, pr, res, row);
     }
     return res;
@@ -373,10 +379,10 @@ Comparison SwingPlant::compare(const PlantModel& model) const {
       accel[i] = (rate[hi] - rate[lo]) / (r.time[hi] - r.time[lo]);
     }
     const std::string band = ", 99 % band (effective sample size)";
-    rc.variables = {{"knee flexion, model (deg)", "mean knee residual vs model knee flexion" + band, rc.predicted},
-                    {"knee flexion rate, model (deg/s)", "mean knee residual vs model knee flexion rate" + band, rate},
-                    {"knee angular acceleration, model (deg/s^2)", "mean knee residual vs model knee acceleration" + band,
-                     accel}};
+    rc.variables = {
+        {"knee flexion, model (deg)", "mean knee residual vs model knee flexion" + band, rc.predicted},
+        {"knee flexion rate, model (deg/s)", "mean knee residual vs model knee flexion rate" + band, rate},
+        {"knee angular acceleration, model (deg/s^2)", "mean knee residual vs model knee acceleration" + band, accel}};
     finishRecordComparison(rc, out.phaseNames.size());
     out.records.push_back(std::move(rc));
   };
@@ -444,7 +450,8 @@ std::string SwingPlant::verify(const PlantModel& model) const {
     }
   }
   return "Simbody check of the final model (simulateSwing vs the reference integrator used for the refits): "
-         "max knee difference " + fmt(worst, "%.2g") + " deg";
+         "max knee difference " +
+         fmt(worst, "%.2g") + " deg";
 }
 
 std::optional<HeldBackComparison> SwingPlant::compareHeldBack(const PlantModel& model) const {

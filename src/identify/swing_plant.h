@@ -77,7 +77,9 @@ class SwingPlant final : public DiagnosisPlant {
     SwingPrediction prediction;
   };
   PoseFit fitPose(const SwingModelParams& params, std::size_t record) const;
-  const SwingRecord& record(std::size_t i) const { return i < train_.size() ? train_[i] : validate_[i - train_.size()]; }
+  const SwingRecord& record(std::size_t i) const {
+    return i < train_.size() ? train_[i] : validate_[i - train_.size()];
+  }
   const ThighMotion* thighOf(std::size_t i) const { return thighs_.empty() ? nullptr : &thighs_[i]; }
   const HipPath* hipOf(std::size_t i) const { return hips_.empty() || !hips_[i] ? nullptr : &*hips_[i]; }
   /// Free toe-off parameters of record i and their residual rows.
@@ -87,7 +89,7 @@ class SwingPlant final : public DiagnosisPlant {
 
   SwingBase base_;
   std::vector<SwingRecord> train_, validate_;
-  std::vector<ThighMotion> thighs_;  ///< thigh drive: each record's hip spline, train then validate
+  std::vector<ThighMotion> thighs_;           ///< thigh drive: each record's hip spline, train then validate
   std::vector<std::optional<HipPath>> hips_;  ///< thigh drive: each record's hip path (nullopt: fixed hip)
   double tolerance_;
 };

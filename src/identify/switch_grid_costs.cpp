@@ -104,7 +104,7 @@ void buildGridRegressors(const MauchCylinder& cylinder, const TrainingSet& set, 
                          std::size_t g, Eigen::MatrixXd& Xg) {
   const int p = cylinder.numCoefficients(), numGates = cylinder.numPhaseGates();
   const std::vector<double>&E = shared.decay[shared.velocityOf[g]], &B = shared.target[shared.positionOf[g]],
-                        &S1 = shared.s1[shared.widthOf[g]], &S8 = shared.s8[shared.positionOf[g]];
+        &S1 = shared.s1[shared.widthOf[g]], &S8 = shared.s8[shared.positionOf[g]];
   double gates[MauchCylinder::kMaxGates];
   std::size_t k = 0, r = 0;
   for (std::size_t f = 0; f < set.files.size(); ++f) {
@@ -130,8 +130,9 @@ void buildGridRegressors(const MauchCylinder& cylinder, const TrainingSet& set, 
 }
 
 // The costs of grid points first, first + step, ... into `costs`.
-void evaluateGridCosts(const MauchCylinderParams& model, const TrainingSet& set, const std::vector<MauchSwitchParams>& grid,
-                       const SharedSwitchValues& shared, std::size_t first, std::size_t step, std::vector<double>& costs) {
+void evaluateGridCosts(const MauchCylinderParams& model, const TrainingSet& set,
+                       const std::vector<MauchSwitchParams>& grid, const SharedSwitchValues& shared, std::size_t first,
+                       std::size_t step, std::vector<double>& costs) {
   ProjectedResidual projected(model, set);
   MauchCylinderParams params = model;
   for (std::size_t g = first; g < grid.size(); g += step) {

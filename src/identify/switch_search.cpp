@@ -28,8 +28,8 @@ std::vector<double> spreadLog(const double range[2], int n) {
 // each on its own thread; returns the best switch constants found. `done`: starts already
 // evaluated, for the progress callback.
 MauchSwitchParams polishSwitchStarts(const MauchCylinderParams& model, const TrainingSet& set,
-                                     const std::vector<MauchSwitchParams>& sortedStarts, const CylinderFitOptions& options,
-                                     int done, CylinderFit& out) {
+                                     const std::vector<MauchSwitchParams>& sortedStarts,
+                                     const CylinderFitOptions& options, int done, CylinderFit& out) {
   const bool latch = options.fitLatchRate;
   BoundedFitSettings settings;
   // A polish near a known fit (no multi-start) needs a few steps; its budget says so.
@@ -50,7 +50,8 @@ MauchSwitchParams polishSwitchStarts(const MauchCylinderParams& model, const Tra
   };
   const std::size_t polished = std::min<std::size_t>(kPolishedStarts + options.extraStarts.size(), sortedStarts.size());
   std::vector<std::future<BoundedFitResult>> runs;
-  for (std::size_t s = 1; s < polished; ++s) runs.push_back(std::async(kAsyncOrHere, polish, sortedStarts[s]));  // see kAsyncOrHere
+  for (std::size_t s = 1; s < polished; ++s)
+    runs.push_back(std::async(kAsyncOrHere, polish, sortedStarts[s]));  // see kAsyncOrHere
   std::vector<BoundedFitResult> results;
   results.push_back(polish(sortedStarts[0]));
   for (auto& r : runs) results.push_back(r.get());
@@ -59,8 +60,8 @@ MauchSwitchParams polishSwitchStarts(const MauchCylinderParams& model, const Tra
   for (std::size_t s = 0; s < results.size(); ++s) {
     const BoundedFitResult& r = results[s];
     if (options.multiStart && !r.converged && r.iterations >= settings.maxIterations)
-      out.warnings.push_back("the switch-constant fit stopped at its budget of " + std::to_string(settings.maxIterations) +
-                             " iterations without converging");
+      out.warnings.push_back("the switch-constant fit stopped at its budget of " +
+                             std::to_string(settings.maxIterations) + " iterations without converging");
     if (r.cost < bestCost) {
       bestCost = r.cost;
       bestSwitches = switchesFrom(model.switches, r.x.data(), latch);
@@ -84,7 +85,8 @@ std::vector<MauchSwitchParams> makeSwitchStarts(const MauchCylinderParams& model
     xhyStarts.push_back(std::clamp(v, R.hyperextension[0], R.hyperextension[1]));
   }
   std::vector<double> vws = spreadLog(R.velocityWidth, 3), pws = spreadLog(R.positionWidth, 4);
-  std::vector<double> ks = options.fitLatchRate ? spreadLog(R.latchRate, 2) : std::vector<double>{model.switches.latchRate};
+  std::vector<double> ks =
+      options.fitLatchRate ? spreadLog(R.latchRate, 2) : std::vector<double>{model.switches.latchRate};
   if (!options.multiStart) {
     vws.assign(1, model.switches.velocityWidth);
     pws.assign(1, model.switches.positionWidth);

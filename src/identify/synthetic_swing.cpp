@@ -17,7 +17,7 @@ SwingRecord makeSyntheticSwing(const SwingBase& base, const SwingModelParams& tr
   SwingBase conditionBase = base;
   conditionBase.participant = measured;
   const SwingSetup setup = makeSwingSetup(applyParticipantEffects(measured, truth.effects),
-                                         std::make_shared<const KneeLawSum>(makeSwingKneeLaw(conditionBase, truth)));
+                                          std::make_shared<const KneeLawSum>(makeSwingKneeLaw(conditionBase, truth)));
   // Simbody's own integrator: the diagnosis refits on the reference swing's Dormand-Prince,
   // so the truth shares neither equations nor integration code with it.
   SwingOptions options = makeSimbodyIntegratorOptions();

@@ -26,7 +26,8 @@ void checkUserEffect(const UserEffect& effect, PlantKind plant) {
     if (q.start < q.min || q.start > q.max) throw std::invalid_argument(where + "expected start within [min, max]");
   }
   if (effect.parameters.empty())
-    throw std::invalid_argument(effect.name + ": expected at least one parameter to fit (parameters: {NAME: {unit, min, max, start}})");
+    throw std::invalid_argument(
+        effect.name + ": expected at least one parameter to fit (parameters: {NAME: {unit, min, max, start}})");
 }
 
 EffectDescriptor describeUserEffect(const UserEffect& effect, PlantKind plant, const std::string& quantity) {
@@ -36,7 +37,8 @@ EffectDescriptor describeUserEffect(const UserEffect& effect, PlantKind plant, c
   d.sentence = "a user's " + quantity + ": " + effect.expression;
   d.mechanism = "written by the user in the study (no library effect); its bounds are its physical rule:";
   for (const auto& q : effect.parameters)
-    d.mechanism += " " + q.name + " in [" + formatNumber(q.min) + ", " + formatNumber(q.max) + "] from " + formatNumber(q.start) + ";";
+    d.mechanism += " " + q.name + " in [" + formatNumber(q.min) + ", " + formatNumber(q.max) + "] from " +
+                   formatNumber(q.start) + ";";
   d.separatedBy = "records that reach the states where the expression acts";
   for (const auto& q : effect.parameters) d.parameters.push_back(q.name + (q.unit.empty() ? "" : " (" + q.unit + ")"));
   d.fittedParameters = static_cast<int>(effect.parameters.size());

@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "knee/expression_parser.h"
 #include "identify/effect_table.h"
+#include "knee/expression_parser.h"
 #include "numerics/bounded_least_squares.h"
 
 namespace swingsim {

@@ -37,8 +37,9 @@ SwingEffectRecord makeRecord(EffectId id, const UserSwingEffect& effect) {
   r.isPhysical = boundsAreTheRule;
   r.setPresence = [law = effect.startLaw()](SwingEffects& e, bool present) {
     auto& list = e.knee.expressions;
-    list.erase(std::remove_if(list.begin(), list.end(), [&](const KneeExpressionParams& x) { return x.name == law.name; }),
-               list.end());
+    list.erase(
+        std::remove_if(list.begin(), list.end(), [&](const KneeExpressionParams& x) { return x.name == law.name; }),
+        list.end());
     if (present) list.push_back(law);
   };
   return r;
@@ -49,7 +50,8 @@ SwingEffectRecord makeRecord(EffectId id, const UserSwingEffect& effect) {
 EffectId registerUserSwingEffect(const UserSwingEffect& effect) {
   checkUserEffect(effect, PlantKind::kSwing);
   checkKneeExpression(effect.startLaw());
-  const EffectId id = registerUserEffect(describeUserEffect(effect, PlantKind::kSwing, "knee moment (N m, + = flexion)"));
+  const EffectId id =
+      registerUserEffect(describeUserEffect(effect, PlantKind::kSwing, "knee moment (N m, + = flexion)"));
   registry().add(id, [&] { return makeRecord(id, effect); });
   return id;
 }

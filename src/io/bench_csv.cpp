@@ -35,9 +35,10 @@ BenchData readBenchCsv(const std::string& path, std::size_t minRows) {
   constexpr double kMaxPistonPosition = 1.0;  // m
   if (std::max(std::fabs(*lo), std::fabs(*hi)) > kMaxPistonPosition)
     throw InputError(path + ": position_m: the piston reaches " +
-                     formatNumber(std::fabs(*lo) > std::fabs(*hi) ? *lo : *hi) + " m (a knee cylinder's stroke is a few "
-                     "centimetres; more than " + formatNumber(kMaxPistonPosition) +
-                     " m): the column looks like millimetres, expected metres");
+                     formatNumber(std::fabs(*lo) > std::fabs(*hi) ? *lo : *hi) +
+                     " m (a knee cylinder's stroke is a few "
+                     "centimetres; more than " +
+                     formatNumber(kMaxPistonPosition) + " m): the column looks like millimetres, expected metres");
   d.velocity = estimatePistonVelocity(d.time, d.position);
   return d;
 }

@@ -19,13 +19,12 @@ namespace swingsim {
 
 std::size_t CsvTable::index(const std::string& name) const {
   auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw InputError(path + ":" + std::to_string(headerLine) + ": " + name + ": column is missing");
+  if (it == names.end())
+    throw InputError(path + ":" + std::to_string(headerLine) + ": " + name + ": column is missing");
   return static_cast<std::size_t>(it - names.begin());
 }
 
-const std::vector<double>& CsvTable::column(const std::string& name) const {
-  return columns[index(name)];
-}
+const std::vector<double>& CsvTable::column(const std::string& name) const { return columns[index(name)]; }
 
 const std::vector<std::string>& CsvTable::text(const std::string& name) const {
   auto it = std::find(textNames.begin(), textNames.end(), name);
@@ -78,22 +77,26 @@ class LineReader {
       if (c == '\n') break;
       out.push_back(static_cast<char>(c));
       if (out.size() > spec_.maxLineBytes)
-        throw InputError(path_ + ":" + std::to_string(lineNo_ + 1) + ": line longer than " + formatByteCount(spec_.maxLineBytes) +
-                         (out.find('\r') != std::string::npos ? " (the limit; the file has CR-only line ends: save it with LF or CRLF line ends)"
-                                                               : " (the limit; is this a CSV file with line breaks?)"));
+        throw InputError(path_ + ":" + std::to_string(lineNo_ + 1) + ": line longer than " +
+                         formatByteCount(spec_.maxLineBytes) +
+                         (out.find('\r') != std::string::npos
+                              ? " (the limit; the file has CR-only line ends: save it with LF or CRLF line ends)"
+                              : " (the limit; is this a CSV file with line breaks?)"));
     }
     if (!any) return false;
     ++lineNo_;
     bytesRead_ += out.size() + 1;
     if (bytesRead_ > spec_.maxBytes)
-      throw InputError(path_ + ": larger than " + formatByteCount(spec_.maxBytes) + " (the limit; split the file or resample it)");
+      throw InputError(path_ + ": larger than " + formatByteCount(spec_.maxBytes) +
+                       " (the limit; split the file or resample it)");
     if (lineNo_ == 1 && out.size() >= 3 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);
     if (out.find('\0') != std::string::npos) throw notText(path_);
     if (!out.empty() && out.back() == '\r') out.pop_back();
     // A classic Mac OS export ends lines with CR alone: the whole file reads as one line.
     if (out.find('\r') != std::string::npos)
-      throw InputError(path_ + ":" + std::to_string(lineNo_) +
-                       ": CR-only line ends (a carriage return inside a line): save the file with LF or CRLF line ends");
+      throw InputError(
+          path_ + ":" + std::to_string(lineNo_) +
+          ": CR-only line ends (a carriage return inside a line): save the file with LF or CRLF line ends");
     return true;
   }
 
@@ -140,8 +143,8 @@ struct ColumnTarget {
 };
 
 // Checks the header row and sets up the table's columns; returns each file column's target.
-std::vector<ColumnTarget> readHeader(const std::string& line, const std::vector<std::string>& header, const CsvSpec& spec,
-                                     CsvTable& table) {
+std::vector<ColumnTarget> readHeader(const std::string& line, const std::vector<std::string>& header,
+                                     const CsvSpec& spec, CsvTable& table) {
   const std::string& path = table.path;
   const std::string at = path + ":" + std::to_string(table.headerLine) + ": ";
   if (!spec.allowedHeaders.empty() &&
@@ -181,22 +184,24 @@ std::vector<ColumnTarget> readHeader(const std::string& line, const std::vector<
 }
 
 // One number of a row, checked (finite, in range, increasing if asked).
-double readNumber(const std::string& s, const std::string& column, const ColumnTarget& target, const std::vector<double>& col,
-                  const CsvSpec& spec, const std::string& at) {
+double readNumber(const std::string& s, const std::string& column, const ColumnTarget& target,
+                  const std::vector<double>& col, const CsvSpec& spec, const std::string& at) {
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   if (s.empty() || end != s.c_str() + s.size()) throw InputError(at + column + ": expected a number (got '" + s + "')");
   if (!std::isfinite(v)) throw InputError(at + column + ": expected a finite number (got '" + s + "')");
-  if ((v != 0 || errno == ERANGE) && std::fabs(v) < kSmallestMagnitude) throw InputError(at + column + ": " + kTooSmallMessage + " (got '" + s + "')");
+  if ((v != 0 || errno == ERANGE) && std::fabs(v) < kSmallestMagnitude)
+    throw InputError(at + column + ": " + kTooSmallMessage + " (got '" + s + "')");
   if (target.range)
     if (const std::string bad = checkPlausible(v, target.range->range, target.range->what); !bad.empty())
       throw InputError(at + column + ": " + bad + " (got " + s + ")");
   if (column == spec.strictlyIncreasing && !col.empty() && !(v > col.back()))
-    throw InputError(at + column + ": must be strictly increasing (got " + s + " after " + formatNumber(col.back()) + ")");
+    throw InputError(at + column + ": must be strictly increasing (got " + s + " after " + formatNumber(col.back()) +
+                     ")");
   if (column == spec.strictlyIncreasing && !col.empty() && v - col.back() < spec.minStep)
-    throw InputError(at + column + ": expected steps of at least " + formatNumber(spec.minStep) + " (got " + s + " after " +
-                     formatNumber(col.back()) + ", a step of " + formatNumber(v - col.back()) + ")");
+    throw InputError(at + column + ": expected steps of at least " + formatNumber(spec.minStep) + " (got " + s +
+                     " after " + formatNumber(col.back()) + ", a step of " + formatNumber(v - col.back()) + ")");
   return v;
 }
 
@@ -257,8 +262,8 @@ CsvTable readCsvStream(std::istream& in, const std::string& path, const CsvSpec&
   }
   if (in.bad()) throw InputError(path + ": read error");
   if (table.rows() < spec.minRows) {
-    throw InputError(path + ": too few data rows (got " + std::to_string(table.rows()) +
-                     ", need at least " + std::to_string(spec.minRows) + ")");
+    throw InputError(path + ": too few data rows (got " + std::to_string(table.rows()) + ", need at least " +
+                     std::to_string(spec.minRows) + ")");
   }
   return table;
 }
@@ -284,8 +289,7 @@ CsvTable readCsv(const std::string& path, const CsvSpec& spec) {
   return readCsvStream(in, path, spec, ec ? 0 : static_cast<std::size_t>(size));
 }
 
-std::string formatCsv(const std::vector<std::string>& names,
-                      const std::vector<std::vector<double>>& columns) {
+std::string formatCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& columns) {
   std::string out;
   for (std::size_t i = 0; i < names.size(); ++i) out += (i ? "," : "") + names[i];
   out += "\n";

@@ -46,7 +46,7 @@ struct CsvSpec {
   /// Lines whose first non-blank character is '#' are comments, skipped (also before the
   /// header); without this, such a line is read as a header or a row.
   bool comments = false;
-  std::string strictlyIncreasing;     ///< column that must strictly increase ("" = none)
+  std::string strictlyIncreasing;  ///< column that must strictly increase ("" = none)
   /// Least step of the strictlyIncreasing column, in its unit (0: any step > 0).
   double minStep = 0;
   /// A column's plausible range (core/plausible_ranges.h), checked on every value read:
@@ -75,7 +75,6 @@ CsvTable readCsv(const std::string& path, const CsvSpec& spec);
 CsvTable parseCsv(const std::string& text, const std::string& path, const CsvSpec& spec);
 
 /// Formats a table as CSV text with `%.10g` numbers.
-std::string formatCsv(const std::vector<std::string>& names,
-                      const std::vector<std::vector<double>>& columns);
+std::string formatCsv(const std::vector<std::string>& names, const std::vector<std::vector<double>>& columns);
 
 }  // namespace swingsim

@@ -135,7 +135,9 @@ std::string itemSeparator(std::size_t k, int depth) {
 
 }  // namespace
 
-void JsonWriteArchive::number(const char* key, double v, const JsonCheck<double>&) { object_[key] = std::isfinite(v) ? Json(v) : Json(nullptr); }
+void JsonWriteArchive::number(const char* key, double v, const JsonCheck<double>&) {
+  object_[key] = std::isfinite(v) ? Json(v) : Json(nullptr);
+}
 
 void JsonWriteArchive::numbers(const char* key, const std::vector<double>& v, const JsonCheck<double>&) {
   Json list = Json::array();

@@ -69,8 +69,7 @@ class JsonReadArchive {
   /// Reads the keys of `object` (a value that is not an object has none) of the file at
   /// `path`, naming each key with `prefix` before it ("shard."). Keeps references: `path`,
   /// `object` and `notComplete` must outlive this.
-  JsonReadArchive(const std::string& path, const Json& object, const std::string& notComplete,
-                  std::string prefix = "");
+  JsonReadArchive(const std::string& path, const Json& object, const std::string& notComplete, std::string prefix = "");
 
   /// Throws InputError `PATH: PREFIXKEY: expected EXPECTED, found FOUND`.
   [[noreturn]] void fail(const std::string& key, const std::string& expected, const std::string& found) const;

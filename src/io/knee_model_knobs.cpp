@@ -98,7 +98,8 @@ std::string KneeModelKnobs::checkKey(const std::string& key) const {
     return e.what();
   }
   if (!node.IsDefined() || node.IsNull()) return "";
-  if (node.IsSequence()) return "holds a list of " + std::to_string(node.size()) + " values: name one item, e.g. " + key + "[0]";
+  if (node.IsSequence())
+    return "holds a list of " + std::to_string(node.size()) + " values: name one item, e.g. " + key + "[0]";
   if (node.IsMap()) return "holds a map, not a number: name a key inside it";
   try {
     node.as<double>();

@@ -1,9 +1,9 @@
 #include "io/knee_model_loader.h"
 
 #include <set>
+#include <stdexcept>
 #include <utility>
 #include <variant>
-#include <stdexcept>
 
 #include "core/input_error.h"
 #include "core/output_files.h"
@@ -16,7 +16,9 @@ namespace swingsim {
 
 namespace {
 
-std::string mustBeDialSetting(double v) { return (v == 0 || v == 90 || v == 180) ? "" : "must be a dial setting: 0, 90 or 180"; }
+std::string mustBeDialSetting(double v) {
+  return (v == 0 || v == 90 || v == 180) ? "" : "must be a dial setting: 0, 90 or 180";
+}
 
 // Contexts that pick which fields of a struct a map holds.
 struct SwitchesOf {};
@@ -39,13 +41,12 @@ struct SettingContext {
 };
 
 // Ranges of an impedance state machine's numbers (wide: they catch unit slips, not designs).
-constexpr PlausibleRange kKneeStiffnessRange{0, 1e4, "N m/rad",
-                                             "the Open Source Leg's stiffest state has 99 N m/rad"};
+constexpr PlausibleRange kKneeStiffnessRange{0, 1e4, "N m/rad", "the Open Source Leg's stiffest state has 99 N m/rad"};
 constexpr PlausibleRange kKneeDampingRange{0, 1e3, "N m s/rad", "the Open Source Leg's states have 0.06-3.8 N m s/rad"};
 constexpr PlausibleRange kKneeAngleRangeDeg{-30, 180, "deg", "the shank cannot fold through the thigh"};
 constexpr PlausibleRange kKneeRateRangeDegS = kJointRateRange;
 constexpr PlausibleRange kTorqueLimitRange{0, 2000, "N m", "a knee actuator's peak is some 100 N m"};
-constexpr double kMaxLatchTime = 0.01;      // s: a tenth of a swing's 0.1 s time scales
+constexpr double kMaxLatchTime = 0.01;     // s: a tenth of a swing's 0.1 s time scales
 constexpr double kMaxMinTimeInState = 10;  // s: the longest swing a participant file allows
 
 // Reading the states of an impedance state machine: the names seen, and where the previous
@@ -62,13 +63,14 @@ struct StateListContext {
 template <class A>
 void serialize(A& a, DampingTableParams& p) {
   a.optionalAngle("reference_speed_deg_s", p.referenceRate, mustBePositive);
-  a.choice("speed_rule", p.speedRule, {{"linear", DampingSpeedRule::kLinear}, {"constant", DampingSpeedRule::kConstant}},
-           true);
+  a.choice("speed_rule", p.speedRule,
+           {{"linear", DampingSpeedRule::kLinear}, {"constant", DampingSpeedRule::kConstant}}, true);
   a.optionalNumber("extension_factor", p.extensionFactor, mustBeNonNegative);
   a.optionalAngle("smoothing_speed_deg_s", p.smoothingRate, mustBePositive);
   a.angles("flexion_deg", p.flexion);
   a.numbers("moment_Nm", p.moment);
-  a.require(p.flexion.size() >= 2, "flexion_deg", "expected at least 2 angles", [&] { return std::to_string(p.flexion.size()); });
+  a.require(p.flexion.size() >= 2, "flexion_deg", "expected at least 2 angles",
+            [&] { return std::to_string(p.flexion.size()); });
   a.require(p.moment.size() == p.flexion.size(), "moment_Nm",
             "expected one moment per angle in flexion_deg (" + std::to_string(p.flexion.size()) + ")",
             [&] { return std::to_string(p.moment.size()) + " values"; });
@@ -76,7 +78,8 @@ void serialize(A& a, DampingTableParams& p) {
     if (i > 0)
       a.require(p.flexion[i] > p.flexion[i - 1], "flexion_deg", "angles must strictly increase",
                 [&] { return formatDegrees(p.flexion[i]) + " after " + formatDegrees(p.flexion[i - 1]); });
-    a.require(p.moment[i] >= 0, "moment_Nm", "resisting moments must not be negative", [&] { return formatNumber(p.moment[i]); });
+    a.require(p.moment[i] >= 0, "moment_Nm", "resisting moments must not be negative",
+              [&] { return formatNumber(p.moment[i]); });
   }
 }
 
@@ -102,14 +105,16 @@ void serialize(A& a, MauchCylinderParams& p, SwitchesOf) {
   a.number("hyperextension_position_m", p.switches.hyperextensionPosition,
            mustBePlausible(kCylinderPositionRange, "a piston position"));
   a.number("latch_rate_per_s", p.switches.latchRate, mustBePositive);
-  a.optionalNumber("initial_latch", p.initialLatch, [](double v) { return v >= 0 && v <= 1 ? "" : "must be in [0, 1]"; });
+  a.optionalNumber("initial_latch", p.initialLatch,
+                   [](double v) { return v >= 0 && v <= 1 ? "" : "must be in [0, 1]"; });
 }
 
 template <class A>
 void serialize(A& a, MauchCoefficientRow& r, RowContext context) {
   a.integer("phase", r.phase);
   a.require(r.phase >= 1 && r.phase <= context.phases, "phase",
-            "must be a phase number from 1 to " + std::to_string(context.phases), [&] { return std::to_string(r.phase); });
+            "must be a phase number from 1 to " + std::to_string(context.phases),
+            [&] { return std::to_string(r.phase); });
   if (A::kReading) {
     std::vector<bool>& seen = *context.seen;
     const auto index = static_cast<std::size_t>(r.phase - 1);
@@ -126,7 +131,8 @@ void serialize(A& a, MauchDialSetting& s, SettingContext context) {
   a.number("flexion_dial_deg", s.flexionDial, mustBeDialSetting);
   a.number("extension_dial_deg", s.extensionDial, mustBeDialSetting);
   if (A::kReading) {
-    a.require(context.seen->emplace(s.flexionDial, s.extensionDial).second, "flexion_dial_deg", "dial setting appears twice",
+    a.require(context.seen->emplace(s.flexionDial, s.extensionDial).second, "flexion_dial_deg",
+              "dial setting appears twice",
               [&] { return "F" + formatNumber(s.flexionDial) + "E" + formatNumber(s.extensionDial); });
   }
   std::vector<bool> seen(static_cast<std::size_t>(context.phases), false);
@@ -141,15 +147,23 @@ void serialize(A& a, MauchDialSetting& s, SettingContext context) {
 
 template <class A>
 void serialize(A& a, MauchAddedEffects& e, CoulombOf) {
-  a.number("force_N", e.coulombForce, [](double v) { return v >= 0 ? checkPlausible(v, kForceRange, "a force") : "must not be negative (seal friction opposes motion)"; });
+  a.number("force_N", e.coulombForce, [](double v) {
+    return v >= 0 ? checkPlausible(v, kForceRange, "a force") : "must not be negative (seal friction opposes motion)";
+  });
   a.optionalNumber("width_m_per_s", e.coulombWidth, mustBePositive);
 }
 template <class A>
-void serialize(A& a, MauchAddedEffects& e, OrificeOf) { a.number("coefficient_Ns2_per_m2", e.orificeCoefficient); }
+void serialize(A& a, MauchAddedEffects& e, OrificeOf) {
+  a.number("coefficient_Ns2_per_m2", e.orificeCoefficient);
+}
 template <class A>
-void serialize(A& a, MauchAddedEffects& e, InertiaOf) { a.number("mass_kg", e.pistonMass); }
+void serialize(A& a, MauchAddedEffects& e, InertiaOf) {
+  a.number("mass_kg", e.pistonMass);
+}
 template <class A>
-void serialize(A& a, MauchAddedEffects& e, PositionDampingOf) { a.number("coefficient_Ns_per_m2", e.positionDamping); }
+void serialize(A& a, MauchAddedEffects& e, PositionDampingOf) {
+  a.number("coefficient_Ns_per_m2", e.positionDamping);
+}
 // A user's cylinder force (knee/cylinder_expression.h), as a diagnosis saves an accepted one.
 struct CylinderForceOf {};
 template <class A>
@@ -189,9 +203,13 @@ void serialize(A& a, KneeAddedEffectsParams& p, KneeCoulombOf) {
   a.optionalAngle("smoothing_deg_s", p.coulombSmoothingRate, mustBePositive);
 }
 template <class A>
-void serialize(A& a, KneeAddedEffectsParams& p, ViscousOf) { a.number("damping_Nm_s_per_rad", p.viscousDamping, mustBeNonNegative); }
+void serialize(A& a, KneeAddedEffectsParams& p, ViscousOf) {
+  a.number("damping_Nm_s_per_rad", p.viscousDamping, mustBeNonNegative);
+}
 template <class A>
-void serialize(A& a, KneeAddedEffectsParams& p, AssistOf) { a.number("stiffness_Nm_per_rad", p.assistStiffness, mustBeNonNegative); }
+void serialize(A& a, KneeAddedEffectsParams& p, AssistOf) {
+  a.number("stiffness_Nm_per_rad", p.assistStiffness, mustBeNonNegative);
+}
 
 template <class A>
 void serialize(A& a, KneeExpressionParameter& q) {
@@ -243,13 +261,14 @@ void serialize(A& a, KneeAddedEffectsParams& p) {
 
 template <class A>
 void serialize(A& a, JointStopParams& s) {
-  a.optionalAngle("engage_flexion_deg", s.lower,
-                  [](double v) { return v >= -30 && v <= 30 ? "" : "expected an angle near full extension, -30 to 30 deg"; });
+  a.optionalAngle("engage_flexion_deg", s.lower, [](double v) {
+    return v >= -30 && v <= 30 ? "" : "expected an angle near full extension, -30 to 30 deg";
+  });
   a.optionalNumber("stiffness_Nm_per_rad1p5", s.stiffness, mustBePositive);
-  a.optionalNumber("restitution", s.restitution,
-                   [](double v) { return v >= 0 && v <= 1 ? "" : "expected a coefficient of restitution from 0 to 1"; });
+  a.optionalNumber("restitution", s.restitution, [](double v) {
+    return v >= 0 && v <= 1 ? "" : "expected a coefficient of restitution from 0 to 1";
+  });
 }
-
 
 template <class A>
 void serialize(A& a, ImpedanceTransition& t, StateListContext* context) {
@@ -265,8 +284,9 @@ void serialize(A& a, ImpedanceTransition& t, StateListContext* context) {
   if (A::kReading || t.rateSide != ThresholdSide::kAny)
     a.optionalAngle("rate_deg_s", t.rate, mustBePlausible(kKneeRateRangeDegS, "a knee speed"));
   a.optionalNumber("min_time_s", t.minTime, [](double v) {
-    return v >= 0 && v <= kMaxMinTimeInState ? std::string()
-                                              : "expected a time in state from 0 to " + formatNumber(kMaxMinTimeInState) + " s";
+    return v >= 0 && v <= kMaxMinTimeInState
+               ? std::string()
+               : "expected a time in state from 0 to " + formatNumber(kMaxMinTimeInState) + " s";
   });
   if constexpr (A::kReading) {
     a.require(t.flexionSide == ThresholdSide::kAny || a.has("flexion_deg"), "when_flexion",
@@ -288,10 +308,12 @@ void serialize(A& a, ImpedanceState& s, StateListContext* context) {
   a.text("name", s.name);
   if constexpr (A::kReading) {
     a.require(!s.name.empty(), "name", "expected a state name", [] { return std::string("an empty name"); });
-    a.require(context->names.insert(s.name).second, "name", "expected a name no other state has", [&] { return s.name; });
+    a.require(context->names.insert(s.name).second, "name", "expected a name no other state has",
+              [&] { return s.name; });
     if (context->havePrevious && !context->previousHasTransition)
-      throw InputError(context->previousWhere + "expected a transition: every state but the last needs one, to the next state (" +
-                       s.name + ") (got none)");
+      throw InputError(context->previousWhere +
+                       "expected a transition: every state but the last needs one, to the next state (" + s.name +
+                       ") (got none)");
     if (context->havePrevious && context->previousTo != s.name)
       throw InputError(context->previousWhere + "expected the next state in the list, " + s.name + " (got " +
                        context->previousTo + ")");
@@ -316,8 +338,8 @@ void serialize(A& a, ImpedanceStateMachineParams& p) {
   });
   a.optionalNumber("latch_time_s", p.latchTime, [](double v) {
     return v > 0 && v <= kMaxLatchTime ? std::string()
-                                       : "expected a latch time constant from 0 (exclusive) to " + formatNumber(kMaxLatchTime) +
-                                             " s, far below a swing's 0.1 s time scales";
+                                       : "expected a latch time constant from 0 (exclusive) to " +
+                                             formatNumber(kMaxLatchTime) + " s, far below a swing's 0.1 s time scales";
   });
   a.optionalAngle("projection_speed_deg_s", p.projectionRate, mustBePositive);
   StateListContext context;
@@ -325,7 +347,8 @@ void serialize(A& a, ImpedanceStateMachineParams& p) {
   if constexpr (A::kReading) {
     a.require(!p.states.empty(), "states", "expected at least one state", [] { return std::string("none"); });
     if (p.states.back().hasTransition)
-      throw InputError(context.previousWhere + "expected no transition in the last state, which has no state after it (got one to " +
+      throw InputError(context.previousWhere +
+                       "expected no transition in the last state, which has no state after it (got one to " +
                        p.states.back().transition.to + ")");
   }
 }

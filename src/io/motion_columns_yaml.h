@@ -25,7 +25,8 @@ void optionalSeconds(A& a, const char* key, std::optional<double>& v, const Valu
 /// `swing: K`: the K-th complete swing found in a .mot/.sto (a study's record, a participant's
 /// thigh_kinematics).
 inline std::string mustBeSwingNumber(double v) {
-  return v >= 1 && v <= 1000 && v == std::floor(v) ? "" : "expected a whole number from 1 (the first swing in the file)";
+  return v >= 1 && v <= 1000 && v == std::floor(v) ? ""
+                                                   : "expected a whole number from 1 (the first swing in the file)";
 }
 
 inline std::string mustBeSign(double v) { return v == 1 || v == -1 ? "" : "must be 1 or -1"; }
@@ -49,7 +50,8 @@ void serialize(A& a, MotionColumns& c) {
   optionalSeconds(a, "heel_contact_s", c.heelContactTime, {});
   if (c.toeOffTime && c.heelContactTime)
     a.require(*c.heelContactTime > *c.toeOffTime, "heel_contact_s",
-              "must be after toe_off_s (" + formatNumber(*c.toeOffTime) + " s)", [&] { return formatNumber(*c.heelContactTime); });
+              "must be after toe_off_s (" + formatNumber(*c.toeOffTime) + " s)",
+              [&] { return formatNumber(*c.heelContactTime); });
   // 10 us to 100 ms: a bench's 100 kHz at most, and a swing of 0.4 s still gets 5 samples.
   optionalSeconds(a, "resample_s", c.resampleInterval,
                   [](double v) { return v >= 1e-5 && v <= 0.1 ? "" : "must be in [1e-5, 0.1] s"; });

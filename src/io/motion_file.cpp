@@ -10,8 +10,8 @@
 #include <unordered_set>
 
 #include "core/input_error.h"
-#include "core/plausible_ranges.h"
 #include "core/output_files.h"
+#include "core/plausible_ranges.h"
 #include "core/units.h"
 #include "io/swing_record_csv.h"
 #include "numerics/metrics.h"
@@ -26,7 +26,8 @@ std::size_t MotionTable::index(const std::string& label) const {
   std::string available;
   for (std::size_t i = 0; i < labels.size() && i < kMaxListed; ++i) available += (i ? ", " : "") + labels[i];
   if (labels.size() > kMaxListed) available += ", ... (" + std::to_string(labels.size() - kMaxListed) + " more)";
-  throw InputError(path + ":" + std::to_string(labelLine) + ": " + label + ": column is missing (available: " + available + ")");
+  throw InputError(path + ":" + std::to_string(labelLine) + ": " + label +
+                   ": column is missing (available: " + available + ")");
 }
 
 namespace {
@@ -117,10 +118,15 @@ MotionHeader readMotionHeader(LineCursor& lines, const std::string& path) {
     const auto eq = line.find('=');
     if (eq == std::string::npos) continue;
     const std::string key = trim(line.substr(0, eq));
-    HeaderValue* slot = key == "version" ? &header.version : key == "nRows" ? &header.nRows : key == "nColumns" ? &header.nColumns
-                        : key == "inDegrees" ? &header.inDegrees : nullptr;
+    HeaderValue* slot = key == "version"     ? &header.version
+                        : key == "nRows"     ? &header.nRows
+                        : key == "nColumns"  ? &header.nColumns
+                        : key == "inDegrees" ? &header.inDegrees
+                                             : nullptr;
     if (slot == nullptr) continue;
-    if (slot->line) throw InputError(lineAt(path, lines.number) + key + ": appears twice in the header (first on line " + std::to_string(slot->line) + ")");
+    if (slot->line)
+      throw InputError(lineAt(path, lines.number) + key + ": appears twice in the header (first on line " +
+                       std::to_string(slot->line) + ")");
     *slot = {trim(line.substr(eq + 1)), lines.number};
   }
   if (!ended)
@@ -138,10 +144,12 @@ void checkMotionHeader(MotionHeader& header, MotionTable& table) {
   const HeaderValue& version = header.version;
   const HeaderValue& inDegrees = header.inDegrees;
   if (version.line && version.value != "1")
-    throw InputError(path + ":" + std::to_string(version.line) + ": version: expected 1 (Storage version 1) (got '" + version.value + "')");
+    throw InputError(path + ":" + std::to_string(version.line) + ": version: expected 1 (Storage version 1) (got '" +
+                     version.value + "')");
   if (inDegrees.line) {
     if (inDegrees.value != "yes" && inDegrees.value != "no")
-      throw InputError(path + ":" + std::to_string(inDegrees.line) + ": inDegrees: expected yes or no (got '" + inDegrees.value + "')");
+      throw InputError(path + ":" + std::to_string(inDegrees.line) + ": inDegrees: expected yes or no (got '" +
+                       inDegrees.value + "')");
     table.inDegrees = inDegrees.value == "yes";
     table.inDegreesLine = inDegrees.line;
   }
@@ -150,7 +158,8 @@ void checkMotionHeader(MotionHeader& header, MotionTable& table) {
     if (!value->line) continue;
     *expected = parseCount(value->value);
     if (!*expected)
-      throw InputError(path + ":" + std::to_string(value->line) + ": " + key + ": expected a whole number (got '" + value->value + "')");
+      throw InputError(path + ":" + std::to_string(value->line) + ": " + key + ": expected a whole number (got '" +
+                       value->value + "')");
   }
 }
 
@@ -162,20 +171,23 @@ void readColumnLabels(LineCursor& lines, const MotionHeader& header, MotionTable
   bool labelled = false;
   while (!labelled && lines.next(line)) labelled = !isBlank(line);
   if (!labelled)
-    throw InputError(lineAt(path, header.endheader) +
-                     "expected a line of column labels after endheader, starting with 'time' (got the end of the file)");
+    throw InputError(
+        lineAt(path, header.endheader) +
+        "expected a line of column labels after endheader, starting with 'time' (got the end of the file)");
   table.labelLine = lines.number;
   table.labels = splitWhitespace(line);
   if (table.labels.front() != "time")
-    throw InputError(lineAt(path, lines.number) + "time: expected the first column label to be 'time' (got '" + table.labels.front() + "')");
+    throw InputError(lineAt(path, lines.number) + "time: expected the first column label to be 'time' (got '" +
+                     table.labels.front() + "')");
   // One pass with a hash set: a header of millions of labels is checked in linear time.
   std::unordered_set<std::string> seenLabels;
   for (const auto& label : table.labels)
-    if (!seenLabels.insert(label).second) throw InputError(lineAt(path, lines.number) + label + ": column label appears twice");
+    if (!seenLabels.insert(label).second)
+      throw InputError(lineAt(path, lines.number) + label + ": column label appears twice");
   if (header.expectedColumns && *header.expectedColumns != table.labels.size())
-    throw InputError(path + ":" + std::to_string(header.nColumns.line) + ": nColumns: the header says " + header.nColumns.value +
-                     " columns, time included (got " + std::to_string(table.labels.size()) + " labels on line " +
-                     std::to_string(table.labelLine) + ")");
+    throw InputError(path + ":" + std::to_string(header.nColumns.line) + ": nColumns: the header says " +
+                     header.nColumns.value + " columns, time included (got " + std::to_string(table.labels.size()) +
+                     " labels on line " + std::to_string(table.labelLine) + ")");
 }
 
 /// One cell of a row as a finite number; a time (column 0) must also increase by at least
@@ -185,8 +197,7 @@ double parseCell(const MotionTable& table, std::size_t c, const std::string& s, 
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size())
-    throw InputError(where + table.labels[c] + ": expected a number (got '" + s + "')");
+  if (end != s.c_str() + s.size()) throw InputError(where + table.labels[c] + ": expected a number (got '" + s + "')");
   if (!std::isfinite(v)) throw InputError(where + table.labels[c] + ": expected a finite number (got '" + s + "')");
   if ((v != 0 || errno == ERANGE) && std::fabs(v) < kSmallestMagnitude)
     throw InputError(where + table.labels[c] + ": " + kTooSmallMessage + " (got '" + s + "')");
@@ -211,7 +222,9 @@ void readRow(const std::string& line, int lineNumber, MotionTable& table) {
   if (cells.size() != table.labels.size())
     throw InputError(where + "expected " + std::to_string(table.labels.size()) + " values, one per label on line " +
                      std::to_string(table.labelLine) + " (got " + std::to_string(cells.size()) + ")" +
-                     (line.find(',') != std::string::npos ? "; is the file comma-separated, or the decimal separator a comma?" : ""));
+                     (line.find(',') != std::string::npos
+                          ? "; is the file comma-separated, or the decimal separator a comma?"
+                          : ""));
   for (std::size_t c = 0; c < cells.size(); ++c) table.columns[c].push_back(parseCell(table, c, cells[c], where));
   table.rowLines.push_back(lineNumber);
 }
@@ -223,10 +236,11 @@ void readRows(LineCursor& lines, const MotionHeader& header, MotionTable& table)
   while (lines.next(line))
     if (!isBlank(line)) readRow(line, lines.number, table);
   if (table.rows() == 0)
-    throw InputError(table.path + ":" + std::to_string(table.labelLine) + ": expected rows of numbers after the column labels (got none)");
+    throw InputError(table.path + ":" + std::to_string(table.labelLine) +
+                     ": expected rows of numbers after the column labels (got none)");
   if (header.expectedRows && *header.expectedRows != table.rows())
-    throw InputError(table.path + ":" + std::to_string(header.nRows.line) + ": nRows: the header says " + header.nRows.value +
-                     " rows (got " + std::to_string(table.rows()) + " rows of numbers)");
+    throw InputError(table.path + ":" + std::to_string(header.nRows.line) + ": nRows: the header says " +
+                     header.nRows.value + " rows (got " + std::to_string(table.rows()) + " rows of numbers)");
 }
 
 /// Frames dropped by the capture system show as one long step among even ones.
@@ -238,9 +252,10 @@ void checkDroppedFrames(const MotionTable& table) {
   const double typical = calcMedian(steps);
   for (std::size_t r = 1; r < time.size(); ++r)
     if (steps[r - 1] > kMaxStepOverMedian * typical)
-      throw InputError(table.path + ":" + std::to_string(table.rowLines[r]) + ": time: a gap of " + formatNumber(steps[r - 1]) +
-                       " s after " + formatNumber(time[r - 1]) + " s (more than " + formatNumber(kMaxStepOverMedian) +
-                       " times the median step of " + formatNumber(typical) + " s; missing frames?)");
+      throw InputError(table.path + ":" + std::to_string(table.rowLines[r]) + ": time: a gap of " +
+                       formatNumber(steps[r - 1]) + " s after " + formatNumber(time[r - 1]) + " s (more than " +
+                       formatNumber(kMaxStepOverMedian) + " times the median step of " + formatNumber(typical) +
+                       " s; missing frames?)");
 }
 
 }  // namespace
@@ -262,7 +277,8 @@ MotionTable readMotionTable(const std::string& path) { return parseMotionTable(r
 namespace {
 
 /// Linear interpolation of (times, values) at increasing `at`, each within the times' range.
-std::vector<double> interpolate(const std::vector<double>& times, const std::vector<double>& values, const std::vector<double>& at) {
+std::vector<double> interpolate(const std::vector<double>& times, const std::vector<double>& values,
+                                const std::vector<double>& at) {
   std::vector<double> out;
   out.reserve(at.size());
   std::size_t k = 0;
@@ -291,16 +307,21 @@ void checkKneeUnit(const MotionTable& table, const std::string& label, const std
   if (knee.empty()) return;
   const auto [lo, hi] = std::minmax_element(knee.begin(), knee.end());
   const double range = *hi - *lo;
-  const std::string where = table.path + (table.inDegreesLine ? ":" + std::to_string(table.inDegreesLine) : "") + ": " + label + ": ";
-  const std::string span = " (from " + formatNumber(*lo) + " to " + formatNumber(*hi) + "; a swing flexes it by tens of degrees)";
+  const std::string where =
+      table.path + (table.inDegreesLine ? ":" + std::to_string(table.inDegreesLine) : "") + ": " + label + ": ";
+  const std::string span =
+      " (from " + formatNumber(*lo) + " to " + formatNumber(*hi) + "; a swing flexes it by tens of degrees)";
   if (table.inDegrees && range < kMinKneeRangeDeg)
     throw InputError(where + "the knee moves through only " + formatNumber(range) + " deg over " + over + span +
                      ": the column looks like radians, but the header says inDegrees=yes");
   if (!table.inDegrees && range > kMaxKneeRangeRad)
-    throw InputError(where + "the knee moves through " + formatNumber(range) + " rad over " + over + span +
-                     ": the column looks like degrees, but " +
-                     (table.inDegreesLine ? std::string("the header says inDegrees=no")
-                                          : std::string("the header has no inDegrees line, read as no (radians) as OpenSim does; add inDegrees=yes")));
+    throw InputError(
+        where + "the knee moves through " + formatNumber(range) + " rad over " + over + span +
+        ": the column looks like degrees, but " +
+        (table.inDegreesLine
+             ? std::string("the header says inDegrees=no")
+             : std::string(
+                   "the header has no inDegrees line, read as no (radians) as OpenSim does; add inDegrees=yes")));
 }
 
 }  // namespace
@@ -311,7 +332,9 @@ MotionColumns openSimLegColumns(const MotionTable& table, const std::string& sid
   c.knee = "knee_angle_" + side;
   c.kneeSign = -1;  // OpenSim's knee_angle is 0 straight and negative in flexion
   c.kneeMoment = c.knee + "_moment";
-  const auto has = [&](const std::string& label) { return std::find(table.labels.begin(), table.labels.end(), label) != table.labels.end(); };
+  const auto has = [&](const std::string& label) {
+    return std::find(table.labels.begin(), table.labels.end(), label) != table.labels.end();
+  };
   // A trajectory .sto from an older `swingsim simulate` (hip_flexion, knee_flexion: flexion
   // positive, docs/formats.md) reads as it did.
   if (!has(c.hip) && !has(c.knee) && has("hip_flexion") && has("knee_flexion")) {
@@ -336,17 +359,19 @@ std::vector<double> calcKneeMoment(const MotionTable& id, const MotionColumns& c
   try {
     column = id.index(label);
   } catch (const InputError& e) {
-    throw InputError(std::string(e.what()) + "; inverse_dynamics: expected the knee moment column that motion_columns: knee_moment names" +
-                     (columns.kneeMoment.empty() ? " (default " + std::string(kOpenSimKneeMoment) + ")" : std::string()));
+    throw InputError(
+        std::string(e.what()) +
+        "; inverse_dynamics: expected the knee moment column that motion_columns: knee_moment names" +
+        (columns.kneeMoment.empty() ? " (default " + std::string(kOpenSimKneeMoment) + ")" : std::string()));
   }
   const std::vector<double>& values = id.columns[column];
   std::vector<double> inside;
   for (double t : at)
     if (t >= idTime.front() && t <= idTime.back()) inside.push_back(t);
   if (inside.empty() || idTime.size() < 2)
-    throw InputError(id.path + ": inverse_dynamics: expected times that overlap the swing, " + formatNumber(at.front()) +
-                     " to " + formatNumber(at.back()) + " s (got " + formatNumber(idTime.front()) + " to " +
-                     formatNumber(idTime.back()) + " s)");
+    throw InputError(id.path + ": inverse_dynamics: expected times that overlap the swing, " +
+                     formatNumber(at.front()) + " to " + formatNumber(at.back()) + " s (got " +
+                     formatNumber(idTime.front()) + " to " + formatNumber(idTime.back()) + " s)");
   const std::vector<double> moment = interpolate(idTime, values, inside);
   std::vector<double> out;
   std::size_t k = 0;
@@ -367,34 +392,41 @@ void checkColumnPlausible(const MotionTable& table, const std::string& label, co
   const std::vector<double>& values = table.column(label);
   for (std::size_t r = 0; r < values.size(); ++r)
     if (const std::string bad = checkPlausible(values[r] * toRangeUnit, range, what); !bad.empty())
-      throw InputError(table.path + ":" + std::to_string(r < table.rowLines.size() ? table.rowLines[r] : 0) + ": " + label +
-                       ": " + bad + " (got " + formatNumber(values[r]) + (toRangeUnit == 1.0 ? "" : " rad") + ")");
+      throw InputError(table.path + ":" + std::to_string(r < table.rowLines.size() ? table.rowLines[r] : 0) + ": " +
+                       label + ": " + bad + " (got " + formatNumber(values[r]) + (toRangeUnit == 1.0 ? "" : " rad") +
+                       ")");
 }
 
 /// Refuses knee flexion that is hyperextended on (nearly) every sample: a flipped sign.
-void checkKneeSign(const std::string& path, const std::string& label, const std::vector<double>& flexion, double kneeSign,
-                   const char* over) {
+void checkKneeSign(const std::string& path, const std::string& label, const std::vector<double>& flexion,
+                   double kneeSign, const char* over) {
   const auto low = std::count_if(flexion.begin(), flexion.end(), [](double v) { return v < kHyperextendedKnee; });
   if (flexion.empty() || static_cast<double>(low) < kHyperextendedShare * static_cast<double>(flexion.size())) return;
   const std::string fix = formatNumber(-kneeSign);
-  throw InputError(path + ": " + label + ": expected knee flexion, positive when bent (got " + std::to_string(low) + " of " +
-                   std::to_string(flexion.size()) + " samples over " + over + " below " +
-                   formatNumber(kHyperextendedKnee * kRadToDeg) + " deg, hyperextended, read with knee_sign " +
-                   formatNumber(kneeSign) + "): the sign is flipped; set knee_sign: " + fix + " (motion_columns, thigh_kinematics) or --knee-sign " +
-                   fix + " (swingsim swings). OpenSim's gait models' knee_angle is negative in flexion, Rajagopal's positive");
+  throw InputError(
+      path + ": " + label + ": expected knee flexion, positive when bent (got " + std::to_string(low) + " of " +
+      std::to_string(flexion.size()) + " samples over " + over + " below " +
+      formatNumber(kHyperextendedKnee * kRadToDeg) + " deg, hyperextended, read with knee_sign " +
+      formatNumber(kneeSign) + "): the sign is flipped; set knee_sign: " + fix +
+      " (motion_columns, thigh_kinematics) or --knee-sign " + fix +
+      " (swingsim swings). OpenSim's gait models' knee_angle is negative in flexion, Rajagopal's positive");
 }
 
 }  // namespace
 
 void requireNamedColumns(const MotionTable& table, const MotionColumns& columns, const std::string& askedBy) {
-  const std::pair<const char*, const std::string*> named[] = {
-      {"hip", &columns.hip},           {"knee", &columns.knee},           {"hip_moment", &columns.hipMoment},
-      {"pelvis_tilt", &columns.pelvisTilt}, {"pelvis_tx", &columns.pelvisTx}, {"pelvis_ty", &columns.pelvisTy}};
+  const std::pair<const char*, const std::string*> named[] = {{"hip", &columns.hip},
+                                                              {"knee", &columns.knee},
+                                                              {"hip_moment", &columns.hipMoment},
+                                                              {"pelvis_tilt", &columns.pelvisTilt},
+                                                              {"pelvis_tx", &columns.pelvisTx},
+                                                              {"pelvis_ty", &columns.pelvisTy}};
   for (const auto& [key, label] : named) {
     if (label->empty() || std::find(table.labels.begin(), table.labels.end(), *label) != table.labels.end()) continue;
     std::string available;
     for (const std::string& l : table.labels) available += (available.empty() ? "" : ", ") + l;
-    throw InputError(askedBy + "." + key + ": expected a column of " + table.path + ":" + std::to_string(table.labelLine) + " (got '" + *label +
+    throw InputError(askedBy + "." + key + ": expected a column of " + table.path + ":" +
+                     std::to_string(table.labelLine) + " (got '" + *label +
                      "', which it does not have; available: " + available + ")");
   }
 }
@@ -413,18 +445,20 @@ void checkLegKinematics(const MotionTable& table, const MotionColumns& columns) 
   checkKneeSign(table.path, columns.knee, flexion, columns.kneeSign, "the file");
 }
 
-SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns, const MotionTable* inverseDynamics) {
+SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& columns,
+                            const MotionTable* inverseDynamics) {
   const std::vector<double>& time = table.columns.front();
 
   if (time.size() < kMinSwingSamples)
-    throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) + " rows for a swing (got " +
-                     std::to_string(time.size()) + ")");
+    throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) +
+                     " rows for a swing (got " + std::to_string(time.size()) + ")");
   const std::vector<double>& hipValues = table.column(columns.hip);
   const std::vector<double>& kneeValues = table.column(columns.knee);
   const std::vector<double>* momentValues = columns.hipMoment.empty() ? nullptr : &table.column(columns.hipMoment);
   for (const std::string* label : {&columns.pelvisTilt, &columns.pelvisTx, &columns.pelvisTy})
     if (!label->empty()) table.index(*label);  // a missing label fails here, naming those there are
-  const std::string range = "the file's time runs from " + formatSeconds(time.front()) + " to " + formatSeconds(time.back()) + " s";
+  const std::string range =
+      "the file's time runs from " + formatSeconds(time.front()) + " to " + formatSeconds(time.back()) + " s";
   const double toeOff = columns.toeOffTime.value_or(time.front());
   const double heelContact = columns.heelContactTime.value_or(time.back());
   if (toeOff < time.front() || toeOff >= time.back())
@@ -438,12 +472,14 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
   std::vector<double> at;
   if (columns.resampleInterval) {
     const double dt = *columns.resampleInterval;
-    if (!(dt > 0)) throw InputError(table.path + ": resample_s: expected a positive interval (got " + formatNumber(dt) + ")");
+    if (!(dt > 0))
+      throw InputError(table.path + ": resample_s: expected a positive interval (got " + formatNumber(dt) + ")");
     const double count = std::floor((heelContact - toeOff) / dt + kSameTime) + 1;
     if (count > static_cast<double>(kMaxMotionRows))
-      throw InputError(table.path + ": resample_s: " + formatNumber(dt) + " s gives more than " + std::to_string(kMaxMotionRows) +
-                       " samples over the swing (the limit)");
-    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) at.push_back(std::min(toeOff + static_cast<double>(k) * dt, heelContact));
+      throw InputError(table.path + ": resample_s: " + formatNumber(dt) + " s gives more than " +
+                       std::to_string(kMaxMotionRows) + " samples over the swing (the limit)");
+    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k)
+      at.push_back(std::min(toeOff + static_cast<double>(k) * dt, heelContact));
   } else {
     at.push_back(toeOff);
     for (double t : time)
@@ -451,9 +487,9 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
     at.push_back(heelContact);
   }
   if (at.size() < kMinSwingSamples)
-    throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) + " samples between toe-off (" +
-                     formatSeconds(toeOff) + " s) and heel contact (" + formatSeconds(heelContact) + " s) (got " +
-                     std::to_string(at.size()) + ")");
+    throw InputError(table.path + ": expected at least " + std::to_string(kMinSwingSamples) +
+                     " samples between toe-off (" + formatSeconds(toeOff) + " s) and heel contact (" +
+                     formatSeconds(heelContact) + " s) (got " + std::to_string(at.size()) + ")");
 
   const std::vector<double> knee = interpolate(time, kneeValues, at);
   checkKneeUnit(table, columns.knee, knee);
@@ -461,7 +497,8 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
   const double toDeg = table.inDegrees ? 1.0 : kRadToDeg;
   checkColumnPlausible(table, columns.hip, kJointAngleRange, "a hip angle", toDeg);
   checkColumnPlausible(table, columns.knee, kJointAngleRange, "a knee angle", toDeg);
-  if (!columns.hipMoment.empty()) checkColumnPlausible(table, columns.hipMoment, kJointMomentRange, "a hip moment", 1.0);
+  if (!columns.hipMoment.empty())
+    checkColumnPlausible(table, columns.hipMoment, kJointMomentRange, "a hip moment", 1.0);
   const std::vector<double> hip = interpolate(time, hipValues, at);
   const double toRad = table.inDegrees ? kDegToRad : 1.0;
   SwingRecord r;
@@ -487,30 +524,37 @@ SwingRecord makeSwingRecord(const MotionTable& table, const MotionColumns& colum
   return r;
 }
 
-std::vector<std::string> checkMotionRecord(const SwingRecord& record, const MotionTable& table, const MotionColumns& columns) {
+std::vector<std::string> checkMotionRecord(const SwingRecord& record, const MotionTable& table,
+                                           const MotionColumns& columns) {
   std::vector<std::string> out;
-  const auto low = std::count_if(record.kneeFlexion.begin(), record.kneeFlexion.end(), [](double v) { return v < kHyperextendedKnee; });
+  const auto low = std::count_if(record.kneeFlexion.begin(), record.kneeFlexion.end(),
+                                 [](double v) { return v < kHyperextendedKnee; });
   if (2 * static_cast<std::size_t>(low) > record.kneeFlexion.size())
-    out.push_back(std::to_string(low) + " of " + std::to_string(record.kneeFlexion.size()) + " knee samples of " + table.path +
-                  " are below " + formatNumber(kHyperextendedKnee * kRadToDeg) + " deg (hyperextended): is the knee's sign "
+    out.push_back(std::to_string(low) + " of " + std::to_string(record.kneeFlexion.size()) + " knee samples of " +
+                  table.path + " are below " + formatNumber(kHyperextendedKnee * kRadToDeg) +
+                  " deg (hyperextended): is the knee's sign "
                   "flipped? OpenSim's knee_angle is negative in flexion: set motion_columns: knee_sign: -1");
   const bool hasTilt = std::find(table.labels.begin(), table.labels.end(), "pelvis_tilt") != table.labels.end();
   if (hasTilt && columns.pelvisTilt.empty())
-    out.push_back("the hip angle " + columns.hip + " of " + table.path + " is read without the pelvis tilt although the file has "
-                  "a pelvis_tilt column, so the thigh's angle in space misses the tilt: set motion_columns: pelvis_tilt: pelvis_tilt");
+    out.push_back("the hip angle " + columns.hip + " of " + table.path +
+                  " is read without the pelvis tilt although the file has "
+                  "a pelvis_tilt column, so the thigh's angle in space misses the tilt: set motion_columns: "
+                  "pelvis_tilt: pelvis_tilt");
   return out;
 }
 
 bool isMotionFile(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".mot" || ext == ".sto";
 }
 
 SwingRecord readSwingRecordFile(const std::string& path, const std::optional<MotionColumns>& columns) {
   if (!isMotionFile(path)) return readSwingRecord(path);
   if (!columns)
-    throw InputError(path + ": a motion file (.mot/.sto) needs motion_columns naming its hip and knee columns (got none)");
+    throw InputError(path +
+                     ": a motion file (.mot/.sto) needs motion_columns naming its hip and knee columns (got none)");
   return makeSwingRecord(readMotionTable(path), *columns);
 }
 

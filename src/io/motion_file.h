@@ -22,12 +22,12 @@ namespace swingsim {
 /// The numbers of one motion file, as written (angle units as the header says).
 struct MotionTable {
   std::string path;
-  std::vector<std::string> labels;            ///< column labels, "time" first
-  std::vector<std::vector<double>> columns;   ///< one per label, time in s
-  std::vector<int> rowLines;                  ///< file line (1-based) of each row
-  int labelLine = 0;                          ///< file line of the column labels
-  bool inDegrees = false;                     ///< angles in degrees (else radians)
-  int inDegreesLine = 0;                      ///< file line of `inDegrees=`; 0 if absent (read as no)
+  std::vector<std::string> labels;           ///< column labels, "time" first
+  std::vector<std::vector<double>> columns;  ///< one per label, time in s
+  std::vector<int> rowLines;                 ///< file line (1-based) of each row
+  int labelLine = 0;                         ///< file line of the column labels
+  bool inDegrees = false;                    ///< angles in degrees (else radians)
+  int inDegreesLine = 0;                     ///< file line of `inDegrees=`; 0 if absent (read as no)
 
   std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
   /// Index of a column. Throws InputError `path:line: label: column is missing (available: ...)`.
@@ -107,7 +107,8 @@ void checkLegKinematics(const MotionTable& table, const MotionColumns& columns);
 /// the motion_columns key that fixes it: more than half of the knee samples below
 /// kHyperextendedKnee (`knee_sign: -1`); a hip angle read without the pelvis tilt the file
 /// has (`pelvis_tilt`).
-std::vector<std::string> checkMotionRecord(const SwingRecord& record, const MotionTable& table, const MotionColumns& columns);
+std::vector<std::string> checkMotionRecord(const SwingRecord& record, const MotionTable& table,
+                                           const MotionColumns& columns);
 
 /// True for a path ending in .mot or .sto (any case).
 bool isMotionFile(const std::string& path);

@@ -37,7 +37,8 @@ const XMLElement* requireChild(const std::string& path, const XMLElement* parent
 std::string textOf(const XMLElement* e) { return e->GetText() ? e->GetText() : ""; }
 
 // The `count` whitespace-separated numbers of element `child` of `parent`.
-std::vector<double> readNumbers(const std::string& path, const XMLElement* parent, const char* child, std::size_t count) {
+std::vector<double> readNumbers(const std::string& path, const XMLElement* parent, const char* child,
+                                std::size_t count) {
   const XMLElement* c = requireChild(path, parent, child);
   std::istringstream in(textOf(c));
   std::vector<double> v;
@@ -45,14 +46,17 @@ std::vector<double> readNumbers(const std::string& path, const XMLElement* paren
   while (in >> word) {
     char* end = nullptr;
     const double x = std::strtod(word.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(x)) v.push_back(NAN);
-    else v.push_back(x);
+    if (*end != '\0' || !std::isfinite(x))
+      v.push_back(NAN);
+    else
+      v.push_back(x);
   }
   bool ok = count == 0 ? !v.empty() : v.size() == count;
   for (double x : v) ok = ok && std::isfinite(x);
   if (!ok)
-    failAt(path, c, describe(parent) + ": <" + child + ">: expected " + (count ? std::to_string(count) : "some") +
-                        " finite numbers (got \"" + textOf(c) + "\")");
+    failAt(path, c,
+           describe(parent) + ": <" + child + ">: expected " + (count ? std::to_string(count) : "some") +
+               " finite numbers (got \"" + textOf(c) + "\")");
   return v;
 }
 
@@ -84,7 +88,9 @@ OsimBody readBody(const std::string& path, const XMLElement* e) {
   b.name = e->Attribute("name") ? e->Attribute("name") : "";
   b.line = e->GetLineNum();
   b.mass = readNumbers(path, e, "mass", 1)[0];
-  if (b.mass < 0) failAt(path, e->FirstChildElement("mass"), describe(e) + ": <mass>: expected a mass >= 0 kg (got " + formatNumber(b.mass) + ")");
+  if (b.mass < 0)
+    failAt(path, e->FirstChildElement("mass"),
+           describe(e) + ": <mass>: expected a mass >= 0 kg (got " + formatNumber(b.mass) + ")");
   b.massCenter = vec3(readNumbers(path, e, "mass_center", 3));
   const auto i = readNumbers(path, e, "inertia", 6);  // [Ixx Iyy Izz Ixy Ixz Iyz] about the COM
   b.inertia << i[0], i[3], i[4], i[3], i[1], i[5], i[4], i[5], i[2];
@@ -101,20 +107,27 @@ double calcFunctionAtZero(const std::string& path, const XMLElement* f) {
     return calcFunctionAtZero(path, inner);
   }
   if (type == "Constant") return readNumbers(path, f, "value", 1)[0];
-  if (type == "LinearFunction") return readNumbers(path, f, "coefficients", 2)[1];  // slope, intercept
+  if (type == "LinearFunction") return readNumbers(path, f, "coefficients", 2)[1];          // slope, intercept
   if (type == "PolynomialFunction") return readNumbers(path, f, "coefficients", 0).back();  // highest order first
   if (type == "MultiplierFunction")
     return readNumbers(path, f, "scale", 1)[0] * calcFunctionAtZero(path, requireChild(path, f, "function"));
   if (type == "SimmSpline" || type == "NaturalCubicSpline") {
     const auto xs = readNumbers(path, f, "x", 0), ys = readNumbers(path, f, "y", 0);
     if (xs.size() != ys.size() || xs.size() < 2)
-      failAt(path, f, describe(f) + ": expected as many <y> as <x> values, at least 2 (got " + std::to_string(xs.size()) +
-                          " and " + std::to_string(ys.size()) + ")");
+      failAt(path, f,
+             describe(f) + ": expected as many <y> as <x> values, at least 2 (got " + std::to_string(xs.size()) +
+                 " and " + std::to_string(ys.size()) + ")");
     for (std::size_t i = 1; i < xs.size(); ++i)
-      if (!(xs[i] > xs[i - 1])) failAt(path, f, describe(f) + ": <x>: expected increasing values (got " + formatNumber(xs[i]) + " after " + formatNumber(xs[i - 1]) + ")");
+      if (!(xs[i] > xs[i - 1]))
+        failAt(path, f,
+               describe(f) + ": <x>: expected increasing values (got " + formatNumber(xs[i]) + " after " +
+                   formatNumber(xs[i - 1]) + ")");
     return calcOsimSplineValue(xs, ys, 0.0, type == "NaturalCubicSpline");
   }
-  failAt(path, f, "TransformAxis function: expected Constant, LinearFunction, PolynomialFunction, MultiplierFunction, SimmSpline or NaturalCubicSpline (got " + describe(f) + ")");
+  failAt(path, f,
+         "TransformAxis function: expected Constant, LinearFunction, PolynomialFunction, MultiplierFunction, "
+         "SimmSpline or NaturalCubicSpline (got " +
+             describe(f) + ")");
 }
 
 // A CustomJoint's SpatialTransform at every coordinate 0: rotations about rotation1..3 in
@@ -122,7 +135,8 @@ double calcFunctionAtZero(const std::string& path, const XMLElement* f) {
 void readSpatialTransform(const std::string& path, const XMLElement* st, OsimJoint& j) {
   Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
   Eigen::Vector3d t = Eigen::Vector3d::Zero();
-  for (const XMLElement* ax = st->FirstChildElement("TransformAxis"); ax; ax = ax->NextSiblingElement("TransformAxis")) {
+  for (const XMLElement* ax = st->FirstChildElement("TransformAxis"); ax;
+       ax = ax->NextSiblingElement("TransformAxis")) {
     const std::string axisName = ax->Attribute("name") ? ax->Attribute("name") : "";
     Eigen::Vector3d axis = vec3(readNumbers(path, ax, "axis", 3));
     if (!(axis.norm() > 0)) failAt(path, ax, describe(ax) + ": <axis>: expected a non-zero axis (got 0 0 0)");
@@ -131,7 +145,8 @@ void readSpatialTransform(const std::string& path, const XMLElement* st, OsimJoi
     for (const XMLElement* c = ax->FirstChildElement(); c; c = c->NextSiblingElement())
       if (std::string(c->Name()) != "coordinates" && std::string(c->Name()) != "axis") f = c;
     const double value = f ? calcFunctionAtZero(path, f) : 0.0;
-    const bool dependent = ax->FirstChildElement("coordinates") && !textOf(ax->FirstChildElement("coordinates")).empty() &&
+    const bool dependent = ax->FirstChildElement("coordinates") &&
+                           !textOf(ax->FirstChildElement("coordinates")).empty() &&
                            textOf(ax->FirstChildElement("coordinates")).find_first_not_of(" \t\n") != std::string::npos;
     if (axisName.rfind("rotation", 0) == 0) {
       r = r * Eigen::AngleAxisd(value, axis).toRotationMatrix();
@@ -153,7 +168,8 @@ OsimCoordinate readCoordinate(const std::string& path, const XMLElement* e) {
     c.rangeMin = range[0];
     c.rangeMax = range[1];
   }
-  if (const XMLElement* clamped = e->FirstChildElement("clamped")) c.clamped = textOf(clamped).find("true") != std::string::npos;
+  if (const XMLElement* clamped = e->FirstChildElement("clamped"))
+    c.clamped = textOf(clamped).find("true") != std::string::npos;
   return c;
 }
 
@@ -220,7 +236,8 @@ double calcOsimSplineValue(const std::vector<double>& x, const std::vector<doubl
     const double c2 = dd(1) - dd(0), c3 = dd(2) - dd(1);
     const double cm2 = dd(n - 2) - dd(n - 3), cm3 = dd(n - 3) - dd(n - 4);
     rhs[0] = (c3 / (x[3] - x[1]) - c2 / (x[2] - x[0])) * h[0] * h[0] / (x[3] - x[0]);
-    rhs[n - 1] = -(cm2 / (x[n - 1] - x[n - 3]) - cm3 / (x[n - 2] - x[n - 4])) * h[n - 2] * h[n - 2] / (x[n - 1] - x[n - 4]);
+    rhs[n - 1] =
+        -(cm2 / (x[n - 1] - x[n - 3]) - cm3 / (x[n - 2] - x[n - 4])) * h[n - 2] * h[n - 2] / (x[n - 1] - x[n - 4]);
   }
   // Forward elimination and back substitution; the lower coupling of row i is h[i-1], except
   // the natural last row (sigma_{n-1} = 0), which has none.
@@ -245,24 +262,28 @@ double calcOsimSplineValue(const std::vector<double>& x, const std::vector<doubl
 OsimModel parseOsimModel(const std::string& text, const std::string& path) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
-    throw InputError(path + ":" + std::to_string(doc.ErrorLineNum()) + ": expected an OpenSim model (.osim XML) (got text that is not XML: " +
-                     doc.ErrorName() + ")");
+    throw InputError(path + ":" + std::to_string(doc.ErrorLineNum()) +
+                     ": expected an OpenSim model (.osim XML) (got text that is not XML: " + doc.ErrorName() + ")");
   const XMLElement* root = doc.RootElement();
   if (!root || std::string(root->Name()) != "OpenSimDocument")
-    failAt(path, root, std::string("expected an <OpenSimDocument> root element (got <") + (root ? root->Name() : "") + ">)");
+    failAt(path, root,
+           std::string("expected an <OpenSimDocument> root element (got <") + (root ? root->Name() : "") + ">)");
   const int version = root->IntAttribute("Version", 0);
   if (version < 40000)
-    failAt(path, root, "<OpenSimDocument Version>: expected an OpenSim 4 model, Version 40000 or later (got " + std::to_string(version) +
-                           "; open and save it in OpenSim 4 to convert it)");
+    failAt(path, root,
+           "<OpenSimDocument Version>: expected an OpenSim 4 model, Version 40000 or later (got " +
+               std::to_string(version) + "; open and save it in OpenSim 4 to convert it)");
   const XMLElement* model = requireChild(path, root, "Model");
   OsimModel m;
   m.path = path;
   m.name = model->Attribute("name") ? model->Attribute("name") : fileStem(path);
   m.bodySetLine = requireChild(path, model, "BodySet")->GetLineNum();
   m.jointSetLine = requireChild(path, model, "JointSet")->GetLineNum();
-  for (const XMLElement* b = requireObjects(path, model, "BodySet")->FirstChildElement("Body"); b; b = b->NextSiblingElement("Body"))
+  for (const XMLElement* b = requireObjects(path, model, "BodySet")->FirstChildElement("Body"); b;
+       b = b->NextSiblingElement("Body"))
     m.bodies.push_back(readBody(path, b));
-  for (const XMLElement* j = requireObjects(path, model, "JointSet")->FirstChildElement(); j; j = j->NextSiblingElement())
+  for (const XMLElement* j = requireObjects(path, model, "JointSet")->FirstChildElement(); j;
+       j = j->NextSiblingElement())
     m.joints.push_back(readJoint(path, j));
   checkOsimModelNames(m);
   return m;
@@ -278,13 +299,15 @@ const OsimBody& OsimModel::getBody(const std::string& bodyName) const {
     if (b.name == bodyName) return b;
   std::string names;
   for (const auto& b : bodies) names += (names.empty() ? "" : ", ") + b.name;
-  throw InputError(path + ":" + std::to_string(bodySetLine) + ": <Body name=\"" + bodyName + "\">: expected a body of that name in the BodySet (got " + names + ")");
+  throw InputError(path + ":" + std::to_string(bodySetLine) + ": <Body name=\"" + bodyName +
+                   "\">: expected a body of that name in the BodySet (got " + names + ")");
 }
 
 const OsimJoint& OsimModel::getJointTo(const std::string& child) const {
   for (const auto& j : joints)
     if (j.childBody == child) return j;
-  throw InputError(path + ":" + std::to_string(jointSetLine) + ": <JointSet>: expected a joint whose child frame is on body " + child +
+  throw InputError(path + ":" + std::to_string(jointSetLine) +
+                   ": <JointSet>: expected a joint whose child frame is on body " + child +
                    " (got none); a link of the leg's chain is missing");
 }
 
@@ -308,16 +331,19 @@ const OsimBody& requireLegBody(const OsimModel& m, const std::string& name) {
   const OsimBody& b = m.getBody(name);
   if (!(b.mass > 0))
     throw InputError(m.path + ":" + std::to_string(b.line) + ": <Body name=\"" + name +
-                     "\">: <mass>: expected a positive mass in kg for a leg segment (got " + formatNumber(b.mass) + ")");
+                     "\">: <mass>: expected a positive mass in kg for a leg segment (got " + formatNumber(b.mass) +
+                     ")");
   return b;
 }
 
 const OsimJoint& requireJoint(const OsimModel& m, const std::string& parent, const std::string& child) {
   const OsimJoint& j = m.getJointTo(child);
   if (j.parentBody != parent)
-    throw InputError(m.path + ":" + std::to_string(j.line) + ": <" + j.type + " name=\"" + j.name + "\">: expected a joint from " + parent +
-                     " to " + child + " (got one from " + j.parentBody + ": the chain pelvis, femur, tibia, talus, calcn, toes " +
-                     (j.parentBody == "ground" ? "has a link missing" : "has a link missing or an extra body in it") + ")");
+    throw InputError(m.path + ":" + std::to_string(j.line) + ": <" + j.type + " name=\"" + j.name +
+                     "\">: expected a joint from " + parent + " to " + child + " (got one from " + j.parentBody +
+                     ": the chain pelvis, femur, tibia, talus, calcn, toes " +
+                     (j.parentBody == "ground" ? "has a link missing" : "has a link missing or an extra body in it") +
+                     ")");
   return j;
 }
 
@@ -393,8 +419,8 @@ LegParts findLegParts(const OsimModel& m, char sideLetter) {
   leg.toes = &m.getBody(leg.toesName);
   if (!(leg.talus->mass + leg.calcn->mass + leg.toes->mass > 0))
     throw InputError(m.path + ":" + std::to_string(leg.talus->line) + ": <Body name=\"" + leg.talusName +
-                     "\">: <mass>: expected a positive mass in kg for the foot, " + leg.talusName + " + " + leg.calcnName +
-                     " + " + leg.toesName + " (got 0)");
+                     "\">: <mass>: expected a positive mass in kg for the foot, " + leg.talusName + " + " +
+                     leg.calcnName + " + " + leg.toesName + " (got 0)");
   leg.hip = &requireJoint(m, "pelvis", leg.femurName);
   leg.knee = &requireJoint(m, leg.femurName, leg.tibiaName);
   leg.ankle = &requireJoint(m, leg.tibiaName, leg.talusName);
@@ -408,19 +434,22 @@ void importThigh(const LegParts& leg, Participant& p, std::ostream& why) {
   const OsimJoint &hip = *leg.hip, &knee = *leg.knee;
   const Eigen::Vector2d hipInFemur = xy(hip.childFrame.translation()), kneeInFemur = xy(knee.calcCentreInParent());
   p.thigh = makeSegment(hipInFemur, kneeInFemur, xy(leg.femur->massCenter), leg.femur->mass, leg.femur->inertia(2, 2));
-  why << "thigh: " << leg.femurName << " <mass>, <mass_center>, <inertia> Izz; length hip centre " << fmt(hipInFemur) << " (" << hip.name
-      << " child frame) to knee centre " << fmt(kneeInFemur) << " (" << knee.name << " parent frame";
+  why << "thigh: " << leg.femurName << " <mass>, <mass_center>, <inertia> Izz; length hip centre " << fmt(hipInFemur)
+      << " (" << hip.name << " child frame) to knee centre " << fmt(kneeInFemur) << " (" << knee.name
+      << " parent frame";
   if (knee.centreMoves) why << " and its SpatialTransform translation";
   why << "), m in " << leg.femurName << "\n";
   if (knee.centreMoves)
-    why << "  " << knee.name << " is a " << knee.type << " whose centre moves with the knee angle (spline): taken at full extension, knee angle 0\n";
+    why << "  " << knee.name << " is a " << knee.type
+        << " whose centre moves with the knee angle (spline): taken at full extension, knee angle 0\n";
 }
 
 /// Shank, in the tibia frame: knee centre (knee's child frame) to ankle centre. Bodies welded
 /// to the tibia other than the foot (an added mass, as export-osim writes one) move with it:
 /// they are part of the shank's mass, COM and Izz.
 void importShank(const OsimModel& m, const LegParts& leg, Participant& p, std::ostream& why) {
-  const Eigen::Vector2d kneeInTibia = xy(leg.knee->childFrame.translation()), ankleInTibia = xy(leg.ankle->calcCentreInParent());
+  const Eigen::Vector2d kneeInTibia = xy(leg.knee->childFrame.translation()),
+                        ankleInTibia = xy(leg.ankle->calcCentreInParent());
   std::vector<RigidPart> parts = {{leg.tibia, Eigen::Isometry3d::Identity()}};
   std::string welded;
   for (const auto& j : m.joints)
@@ -430,18 +459,21 @@ void importShank(const OsimModel& m, const LegParts& leg, Participant& p, std::o
     }
   const PlanarMass shank = calcCombinedPlanarMass(parts);
   p.shank = makeSegment(kneeInTibia, ankleInTibia, shank.com, shank.mass, shank.izz);
-  why << "shank: " << leg.tibiaName << welded << " <mass>, <mass_center>, <inertia> Izz" << (welded.empty() ? "" : " combined (welded to it)")
-      << "; length knee centre " << fmt(kneeInTibia) << " (" << leg.knee->name << " child frame) to ankle centre " << fmt(ankleInTibia)
-      << " (" << leg.ankle->name << " parent frame), m in " << leg.tibiaName << "\n";
+  why << "shank: " << leg.tibiaName << welded << " <mass>, <mass_center>, <inertia> Izz"
+      << (welded.empty() ? "" : " combined (welded to it)") << "; length knee centre " << fmt(kneeInTibia) << " ("
+      << leg.knee->name << " child frame) to ankle centre " << fmt(ankleInTibia) << " (" << leg.ankle->name
+      << " parent frame), m in " << leg.tibiaName << "\n";
 }
 
 /// Foot: talus, calcn and toes as one rigid body, in the tibia frame at the reference pose.
 void importFoot(const LegParts& leg, const OsimImportOptions& o, Participant& p, std::ostream& why) {
-  const Eigen::Vector2d kneeInTibia = xy(leg.knee->childFrame.translation()), ankleInTibia = xy(leg.ankle->calcCentreInParent());
+  const Eigen::Vector2d kneeInTibia = xy(leg.knee->childFrame.translation()),
+                        ankleInTibia = xy(leg.ankle->calcCentreInParent());
   const Eigen::Isometry3d talusPose = leg.ankle->calcChildInParent();
   const Eigen::Isometry3d calcnPose = talusPose * leg.subtalar->calcChildInParent();
   const Eigen::Isometry3d toesPose = calcnPose * leg.mtp->calcChildInParent();
-  const PlanarMass foot = calcCombinedPlanarMass({{leg.talus, talusPose}, {leg.calcn, calcnPose}, {leg.toes, toesPose}});
+  const PlanarMass foot =
+      calcCombinedPlanarMass({{leg.talus, talusPose}, {leg.calcn, calcnPose}, {leg.toes, toesPose}});
   const double footMass = foot.mass;
   const Eigen::Vector2d footCom = foot.com;
   const double footIzz = foot.izz;
@@ -456,11 +488,14 @@ void importFoot(const LegParts& leg, const OsimImportOptions& o, Participant& p,
   p.foot.comFromDistal = (footCom - ankleInTibia).dot(forward);
   p.foot.inertia = footIzz;
   p.footComFrom = FootComFrom::kAnkle;
-  why << "foot: " << leg.talusName << " + " << leg.calcnName << " + " << leg.toesName << " (" << leg.subtalar->name << ", "
-      << leg.mtp->name << " at 0): masses summed, combined COM " << fmt(footCom) << " m in " << leg.tibiaName
-      << ", Izz about it by parallel axes; " << "com_from_distal_m measured forward from the ankle\n";
-  why << "  foot length: " << (o.footLength ? "--foot-length-m" : "ankle to the toe tip, taken as the MTP centre " + fmt(mtpCentre) +
-                                                                    " plus twice the toes' COM offset from it (toes as a uniform link)")
+  why << "foot: " << leg.talusName << " + " << leg.calcnName << " + " << leg.toesName << " (" << leg.subtalar->name
+      << ", " << leg.mtp->name << " at 0): masses summed, combined COM " << fmt(footCom) << " m in " << leg.tibiaName
+      << ", Izz about it by parallel axes; "
+      << "com_from_distal_m measured forward from the ankle\n";
+  why << "  foot length: "
+      << (o.footLength ? "--foot-length-m"
+                       : "ankle to the toe tip, taken as the MTP centre " + fmt(mtpCentre) +
+                             " plus twice the toes' COM offset from it (toes as a uniform link)")
       << "\n";
 }
 
@@ -477,14 +512,18 @@ void replaceProsthesisMasses(const OsimImportOptions& o, Participant& p, std::os
 }
 
 /// The hip's place in the pelvis, the body mass and the height.
-void importWholeBody(const OsimModel& m, const LegParts& leg, const OsimImportOptions& o, Participant& p, std::ostream& why) {
+void importWholeBody(const OsimModel& m, const LegParts& leg, const OsimImportOptions& o, Participant& p,
+                     std::ostream& why) {
   const Eigen::Vector3d hipInPelvis = leg.hip->calcCentreInParent();
   p.hipOffsetInPelvis = std::array<double, 2>{hipInPelvis.x(), hipInPelvis.y()};
-  why << "hip_offset_in_pelvis_m: " << leg.hip->name << " centre in " << leg.hip->parentBody << " (its parent frame's <translation>)\n";
+  why << "hip_offset_in_pelvis_m: " << leg.hip->name << " centre in " << leg.hip->parentBody
+      << " (its parent frame's <translation>)\n";
   p.bodyMass = m.calcTotalMass();
   why << "body_mass_kg: the sum of every body's <mass> (" << m.bodies.size() << " bodies)\n";
   p.height = o.height.value_or((p.thigh.length + p.shank.length) / kHipToAnkleOfHeight);
-  why << "height_m: " << (o.height ? "--height-m" : "(thigh + shank) / 0.491 (hip 0.530 H, ankle 0.039 H: Winter 2009 Fig. 4.1)") << "\n";
+  why << "height_m: "
+      << (o.height ? "--height-m" : "(thigh + shank) / 0.491 (hip 0.530 H, ankle 0.039 H: Winter 2009 Fig. 4.1)")
+      << "\n";
 }
 
 }  // namespace
@@ -495,7 +534,8 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
   std::ostringstream why;
   const std::string file = std::filesystem::path(m.path).filename().string();
   why << "Imported by `swingsim import-osim` from " << file << " (model " << m.name << "), side " << side
-      << ", at the model's reference pose (every coordinate 0), in the sagittal x-y plane (x forward, y up), inertias about z.\n";
+      << ", at the model's reference pose (every coordinate 0), in the sagittal x-y plane (x forward, y up), inertias "
+         "about z.\n";
   OsimParticipant out;
   Participant& p = out.participant;
   importThigh(leg, p, why);
@@ -503,13 +543,18 @@ OsimParticipant calcOsimParticipant(const OsimModel& m, const OsimImportOptions&
   importFoot(leg, o, p, why);
   replaceProsthesisMasses(o, p, why);
   importWholeBody(m, leg, o, p, why);
-  checkOsimLeg(m, {leg.femur, leg.tibia, leg.talus, leg.hip, leg.knee, leg.ankle, leg.mtp, o.footLength.has_value(), o.height.has_value()}, p);
+  checkOsimLeg(m,
+               {leg.femur, leg.tibia, leg.talus, leg.hip, leg.knee, leg.ankle, leg.mtp, o.footLength.has_value(),
+                o.height.has_value()},
+               p);
   p.name = o.name.empty() ? m.name + "_" + side : o.name;
   p.source = "OpenSim model " + file + ", " + side + " leg (swingsim import-osim)";
   p.kneeModelPath = o.kneeModelPath;
   p.kneeFriction = o.kneeFriction;
-  why << "DEFAULTS (not from the model): knee_model and knee_friction_Nm as given to import-osim (--knee, --knee-friction-Nm);\n"
-      << "  the hip drive (biphasic hip moment), initial state, hip range and swing-end rule are the project's defaults;\n"
+  why << "DEFAULTS (not from the model): knee_model and knee_friction_Nm as given to import-osim (--knee, "
+         "--knee-friction-Nm);\n"
+      << "  the hip drive (biphasic hip moment), initial state, hip range and swing-end rule are the project's "
+         "defaults;\n"
       << "  toe clearance for walking.";
   out.provenance = why.str();
   return out;

@@ -43,22 +43,22 @@ std::string makeOsimKneeCoordinate(char side);
 /// One of a joint's coordinates (OpenSim's <Coordinate>).
 struct OsimCoordinate {
   std::string name;
-  double defaultValue = 0;           ///< rad (a rotation) or m, <default_value>
-  double rangeMin = 0, rangeMax = 0; ///< rad or m, <range>
-  bool clamped = false;              ///< <clamped>: OpenSim holds the coordinate inside its range
-  std::string note;                  ///< written as an XML comment before it ("" = none); not read
+  double defaultValue = 0;            ///< rad (a rotation) or m, <default_value>
+  double rangeMin = 0, rangeMax = 0;  ///< rad or m, <range>
+  bool clamped = false;               ///< <clamped>: OpenSim holds the coordinate inside its range
+  std::string note;                   ///< written as an XML comment before it ("" = none); not read
 };
 
 struct OsimJoint {
   std::string name, type;  ///< type: the element (CustomJoint, PinJoint, WeldJoint, ...)
   int line = 0;
   std::string parentBody, childBody;  ///< body names ("ground" for the ground)
-  Eigen::Isometry3d parentFrame;  ///< joint frame F in the parent body (its offset frame)
-  Eigen::Isometry3d childFrame;   ///< joint frame M in the child body
+  Eigen::Isometry3d parentFrame;      ///< joint frame F in the parent body (its offset frame)
+  Eigen::Isometry3d childFrame;       ///< joint frame M in the child body
   /// M in F with every coordinate at 0 (a CustomJoint's SpatialTransform evaluated there,
   /// so a knee whose centre moves along a spline is taken at full extension).
   Eigen::Isometry3d motionAtZero;
-  bool centreMoves = false;  ///< a translation of the SpatialTransform depends on a coordinate
+  bool centreMoves = false;                 ///< a translation of the SpatialTransform depends on a coordinate
   std::vector<OsimCoordinate> coordinates;  ///< the joint's <coordinates>, in file order
 
   /// The joint centre (origin of M) in the parent body frame at the reference pose.
@@ -97,10 +97,10 @@ double calcOsimSplineValue(const std::vector<double>& xs, const std::vector<doub
 
 /// What `import-osim` takes besides the model.
 struct OsimImportOptions {
-  char side = 'r';                 ///< 'r' or 'l': the bodies femur_r, tibia_r, talus_r, ...
-  std::string name;                ///< participant name ("" = the model's name and side)
-  std::string kneeModelPath;       ///< knee model YAML written as knee_model
-  double kneeFriction = 0;         ///< N m
+  char side = 'r';                            ///< 'r' or 'l': the bodies femur_r, tibia_r, talus_r, ...
+  std::string name;                           ///< participant name ("" = the model's name and side)
+  std::string kneeModelPath;                  ///< knee model YAML written as knee_model
+  double kneeFriction = 0;                    ///< N m
   std::optional<double> shankMass, footMass;  ///< kg: the prosthesis's parts (inertia scales with mass)
   std::optional<double> footLength;           ///< m, ankle to toe
   std::optional<double> height;               ///< m, standing height

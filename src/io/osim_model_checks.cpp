@@ -13,8 +13,12 @@ namespace {
 // Height from the leg's lengths: the participant file's range.
 constexpr double kMinHeight = 0.5, kMaxHeight = 2.6;  // m
 
-std::string where(const std::string& path, const OsimBody& b) { return formatOsimElement(path, "Body", b.name, b.line); }
-std::string where(const std::string& path, const OsimJoint& j) { return formatOsimElement(path, j.type, j.name, j.line); }
+std::string where(const std::string& path, const OsimBody& b) {
+  return formatOsimElement(path, "Body", b.name, b.line);
+}
+std::string where(const std::string& path, const OsimJoint& j) {
+  return formatOsimElement(path, j.type, j.name, j.line);
+}
 
 // "(is the model in millimetres? ...)" when `length` is about 1000x a real segment.
 std::string millimetreHint(double length) {
@@ -22,16 +26,17 @@ std::string millimetreHint(double length) {
 }
 
 // A segment between two joint centres: its length, then its COM along it.
-void checkSegment(const std::string& path, const std::string& segment, const SegmentParams& s, const OsimJoint& proximal,
-                  const OsimJoint& distal, const OsimBody& body) {
+void checkSegment(const std::string& path, const std::string& segment, const SegmentParams& s,
+                  const OsimJoint& proximal, const OsimJoint& distal, const OsimBody& body) {
   if (!(s.length > 0) || s.length > kMaxSegmentLength)
-    throw InputError(where(path, distal) + "the " + segment + ", from the " + proximal.name + " centre to the " + distal.name +
-                     " centre: expected a length above 0 and at most " + formatNumber(kMaxSegmentLength) + " m" +
-                     millimetreHint(s.length) + " (got " + formatNumber(s.length) + " m)");
+    throw InputError(where(path, distal) + "the " + segment + ", from the " + proximal.name + " centre to the " +
+                     distal.name + " centre: expected a length above 0 and at most " + formatNumber(kMaxSegmentLength) +
+                     " m" + millimetreHint(s.length) + " (got " + formatNumber(s.length) + " m)");
   // The body's own mass: a --shank-mass-kg is the command line's, checked with the participant.
   if (body.mass > kMaxSegmentMass)
-    throw InputError(where(path, body) + "<mass>: expected at most " + formatNumber(kMaxSegmentMass) + " kg for the " + segment +
-                     " (is the model in grams? OpenSim masses are in kg) (got " + formatNumber(body.mass) + ")");
+    throw InputError(where(path, body) + "<mass>: expected at most " + formatNumber(kMaxSegmentMass) + " kg for the " +
+                     segment + " (is the model in grams? OpenSim masses are in kg) (got " + formatNumber(body.mass) +
+                     ")");
   if (!(s.comFromDistal >= 0 && s.comFromDistal <= s.length))
     throw InputError(where(path, body) + "<mass_center>: expected the COM on the " + segment + ", 0 to " +
                      formatNumber(s.length) + " m from the " + distal.name + " centre along it (got " +
@@ -51,8 +56,8 @@ void checkFoot(const std::string& path, const OsimLegSources& s, const SegmentPa
                      formatNumber(foot.length) + " m)");
   if (!(foot.comFromDistal >= 0 && foot.comFromDistal <= foot.length))
     throw InputError(where(path, *s.talus) + "<mass_center>: expected the foot's combined COM on the foot, 0 to " +
-                     formatNumber(foot.length) + " m forward of the " + s.ankle->name + " centre (length: " + lengthFrom +
-                     ") (got " + formatNumber(foot.comFromDistal) + " m)");
+                     formatNumber(foot.length) + " m forward of the " + s.ankle->name +
+                     " centre (length: " + lengthFrom + ") (got " + formatNumber(foot.comFromDistal) + " m)");
   if (!(foot.inertia > 0))
     throw InputError(where(path, *s.talus) + "<inertia>: expected a positive Izz for the foot (got " +
                      formatNumber(foot.inertia) + " kg m^2)");
@@ -105,12 +110,12 @@ void checkOsimLeg(const OsimModel& m, const OsimLegSources& s, const Participant
   if (!s.heightGiven && !(p.height > kMinHeight && p.height < kMaxHeight))
     throw InputError(where(m.path, *s.ankle) + "the standing height from the thigh and shank, (" +
                      formatNumber(p.thigh.length) + " + " + formatNumber(p.shank.length) + ") / 0.491 m: expected " +
-                     formatNumber(kMinHeight) + " to " + formatNumber(kMaxHeight) + " m (got " + formatNumber(p.height) +
-                     "; give --height-m if the model is not of an adult)");
+                     formatNumber(kMinHeight) + " to " + formatNumber(kMaxHeight) + " m (got " +
+                     formatNumber(p.height) + "; give --height-m if the model is not of an adult)");
   if (p.bodyMass > kMaxBodyMass)
-    throw InputError(m.path + ":" + std::to_string(m.bodySetLine) + ": <BodySet>: the sum of every body's <mass>: expected at most " +
-                     formatNumber(kMaxBodyMass) + " kg (is the model in grams? OpenSim masses are in kg) (got " +
-                     formatNumber(p.bodyMass) + ")");
+    throw InputError(m.path + ":" + std::to_string(m.bodySetLine) +
+                     ": <BodySet>: the sum of every body's <mass>: expected at most " + formatNumber(kMaxBodyMass) +
+                     " kg (is the model in grams? OpenSim masses are in kg) (got " + formatNumber(p.bodyMass) + ")");
 }
 
 }  // namespace swingsim

@@ -41,8 +41,8 @@ OsimBody makeBody(const std::string& name, double mass, const Eigen::Vector3d& c
   return b;
 }
 
-OsimJoint makeJoint(const std::string& name, const std::string& type, const std::string& parent, const Eigen::Isometry3d& inParent,
-                    const std::string& child, const Eigen::Isometry3d& inChild) {
+OsimJoint makeJoint(const std::string& name, const std::string& type, const std::string& parent,
+                    const Eigen::Isometry3d& inParent, const std::string& child, const Eigen::Isometry3d& inChild) {
   OsimJoint j;
   j.name = name;
   j.type = type;
@@ -54,9 +54,11 @@ OsimJoint makeJoint(const std::string& name, const std::string& type, const std:
   return j;
 }
 
-OsimCoordinate makeCoordinate(const std::string& name, double defaultValue, double rangeMin, double rangeMax, const std::string& note) {
+OsimCoordinate makeCoordinate(const std::string& name, double defaultValue, double rangeMin, double rangeMax,
+                              const std::string& note) {
   if (!(rangeMin < rangeMax))
-    throw std::invalid_argument("makeOsimLegModel: " + name + ": empty range [" + formatNumber(rangeMin) + ", " + formatNumber(rangeMax) + "] rad");
+    throw std::invalid_argument("makeOsimLegModel: " + name + ": empty range [" + formatNumber(rangeMin) + ", " +
+                                formatNumber(rangeMax) + "] rad");
   OsimCoordinate c;
   c.name = name;
   c.defaultValue = defaultValue + 0.0;  // (+ 0.0 writes -0 as 0)
@@ -123,8 +125,9 @@ void addBody(XMLElement* objects, const OsimBody& b) {
   addText(e, "mass", formatNumber(b.mass));
   addText(e, "mass_center", formatVector(b.massCenter));
   const Eigen::Matrix3d& i = b.inertia;  // OpenSim's order: Ixx Iyy Izz Ixy Ixz Iyz, about the COM
-  addText(e, "inertia", formatNumber(i(0, 0)) + " " + formatNumber(i(1, 1)) + " " + formatNumber(i(2, 2)) + " " + formatNumber(i(0, 1)) +
-                            " " + formatNumber(i(0, 2)) + " " + formatNumber(i(1, 2)));
+  addText(e, "inertia",
+          formatNumber(i(0, 0)) + " " + formatNumber(i(1, 1)) + " " + formatNumber(i(2, 2)) + " " +
+              formatNumber(i(0, 1)) + " " + formatNumber(i(0, 2)) + " " + formatNumber(i(1, 2)));
   if (b.shapes.empty()) return;
   XMLElement* components = e->InsertNewChildElement("components");
   for (const auto& shape : b.shapes) addShape(components, shape);
@@ -137,7 +140,8 @@ Eigen::Vector3d calcBodyFixedXyz(const Eigen::Matrix3d& r) {
   return {std::atan2(-r(1, 2), r(2, 2)), b, std::atan2(-r(0, 1), r(0, 0))};
 }
 
-void addOffsetFrame(XMLElement* frames, const std::string& name, const std::string& body, const Eigen::Isometry3d& pose) {
+void addOffsetFrame(XMLElement* frames, const std::string& name, const std::string& body,
+                    const Eigen::Isometry3d& pose) {
   XMLElement* f = addNamed(frames, "PhysicalOffsetFrame", name);
   addText(f, "socket_parent", framePath(body));
   addText(f, "translation", formatVector(pose.translation()));
@@ -186,16 +190,21 @@ std::vector<OsimBody> makeLegBodies(const LegGeometry& g, const OsimLegPlacement
 // range -120..10 deg, axis 0 0 1; the same axis for hip_flexion_l and knee_angle_l).
 void addLegCoordinates(OsimJoint& hip, OsimJoint& knee, const OsimLegPlacement& place) {
   const std::string hipName = makeOsimHipCoordinate(place.side), kneeName = makeOsimKneeCoordinate(place.side);
-  hip.coordinates.push_back(makeCoordinate(
-      hipName, place.initial.hipFlexion, place.hipRange.minFlexion, place.hipRange.maxFlexion,
-      hipName + ", rad: + = flexion (the thigh swings forward), counter-clockwise about +z with the subject facing +x, as OpenSim's gait models. Range [" +
-          formatDegrees(place.hipRange.minFlexion) + ", " + formatDegrees(place.hipRange.maxFlexion) +
-          "] deg: swingsim's hip range of motion, where a smooth stop acts (not clamped)."));
+  hip.coordinates.push_back(
+      makeCoordinate(hipName, place.initial.hipFlexion, place.hipRange.minFlexion, place.hipRange.maxFlexion,
+                     hipName +
+                         ", rad: + = flexion (the thigh swings forward), counter-clockwise about +z with the subject "
+                         "facing +x, as OpenSim's gait models. Range [" +
+                         formatDegrees(place.hipRange.minFlexion) + ", " + formatDegrees(place.hipRange.maxFlexion) +
+                         "] deg: swingsim's hip range of motion, where a smooth stop acts (not clamped)."));
   knee.coordinates.push_back(makeCoordinate(
       kneeName, -place.initial.kneeFlexion, -place.kneeMaxFlexion, -place.kneeMinFlexion,
-      kneeName + ", rad: - = FLEXION (the shank swings backwards), as OpenSim's gait models (Gait2354, Gait10dof18musc); "
-      "swingsim's knee flexion is minus this. Range [" + formatDegrees(-place.kneeMaxFlexion) + ", " + formatDegrees(-place.kneeMinFlexion) +
-          "] deg: the knee model's hyperextension stop at the high end (a simulated swing presses a few degrees past it, so not clamped)."));
+      kneeName +
+          ", rad: - = FLEXION (the shank swings backwards), as OpenSim's gait models (Gait2354, Gait10dof18musc); "
+          "swingsim's knee flexion is minus this. Range [" +
+          formatDegrees(-place.kneeMaxFlexion) + ", " + formatDegrees(-place.kneeMinFlexion) +
+          "] deg: the knee model's hyperextension stop at the high end (a simulated swing presses a few degrees past "
+          "it, so not clamped)."));
 }
 
 // The pelvis on the ground: welded with the hip at (0, hipHeight), or, for a measured pelvis,
@@ -204,14 +213,17 @@ void addLegCoordinates(OsimJoint& hip, OsimJoint& knee, const OsimLegPlacement& 
 OsimJoint makeGroundPelvis(const OsimLegPlacement& place, const std::array<double, 2>& hipInPelvis) {
   const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
   if (!place.measuredPelvis)
-    return makeJoint("ground_pelvis", "WeldJoint", "ground", makeTranslation(-hipInPelvis[0], place.hipHeight - hipInPelvis[1]), "pelvis",
-                     origin);
+    return makeJoint("ground_pelvis", "WeldJoint", "ground",
+                     makeTranslation(-hipInPelvis[0], place.hipHeight - hipInPelvis[1]), "pelvis", origin);
   const OsimPelvisPose& at = *place.measuredPelvis;
   OsimJoint j = makeJoint("ground_pelvis", "PlanarJoint", "ground", origin, "pelvis", origin);
   j.coordinates.push_back(makeCoordinate("pelvis_tilt", at.tilt, -kPi / 2, kPi / 2,
-                                         "pelvis_tilt, rad: + = the pelvis tilted forward (about +z), as the gait models; the measured drive's at toe-off"));
-  j.coordinates.push_back(makeCoordinate("pelvis_tx", at.x, -5, 5, "pelvis_tx, m: forward; the measured drive's at toe-off"));
-  j.coordinates.push_back(makeCoordinate("pelvis_ty", at.y, -1, 2, "pelvis_ty, m: up; the measured drive's at toe-off"));
+                                         "pelvis_tilt, rad: + = the pelvis tilted forward (about +z), as the gait "
+                                         "models; the measured drive's at toe-off"));
+  j.coordinates.push_back(
+      makeCoordinate("pelvis_tx", at.x, -5, 5, "pelvis_tx, m: forward; the measured drive's at toe-off"));
+  j.coordinates.push_back(
+      makeCoordinate("pelvis_ty", at.y, -1, 2, "pelvis_ty, m: up; the measured drive's at toe-off"));
   return j;
 }
 
@@ -220,8 +232,8 @@ OsimJoint makeGroundPelvis(const OsimLegPlacement& place, const std::array<doubl
 void addAddedMass(OsimModel& m, const LegGeometry& g, const std::string& s) {
   const std::string name = "added_mass_" + s;
   m.bodies.push_back(makeBody(name, g.added.mass, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()));
-  m.joints.push_back(makeJoint(name + "_weld", "WeldJoint", "tibia_" + s, makeTranslation(0, -g.added.distanceBelowKnee), name,
-                               Eigen::Isometry3d::Identity()));
+  m.joints.push_back(makeJoint(name + "_weld", "WeldJoint", "tibia_" + s,
+                               makeTranslation(0, -g.added.distanceBelowKnee), name, Eigen::Isometry3d::Identity()));
 }
 
 }  // namespace
@@ -229,9 +241,11 @@ void addAddedMass(OsimModel& m, const LegGeometry& g, const std::string& s) {
 OsimModel makeOsimLegModel(const LegGeometry& g, const OsimLegPlacement& place) {
   if (place.side != 'r' && place.side != 'l')
     throw std::invalid_argument(std::string("makeOsimLegModel: side: expected r or l (got ") + place.side + ")");
-  if (!(g.added.mass >= 0) || (g.added.mass > 0 && !(g.added.distanceBelowKnee >= 0 && g.added.distanceBelowKnee <= g.shankLength)))
-    throw std::invalid_argument("makeOsimLegModel: added mass: expected a mass >= 0 kg on the shank, 0 to " + formatNumber(g.shankLength) +
-                                " m below the knee (got " + formatNumber(g.added.mass) + " kg at " + formatNumber(g.added.distanceBelowKnee) + " m)");
+  if (!(g.added.mass >= 0) ||
+      (g.added.mass > 0 && !(g.added.distanceBelowKnee >= 0 && g.added.distanceBelowKnee <= g.shankLength)))
+    throw std::invalid_argument("makeOsimLegModel: added mass: expected a mass >= 0 kg on the shank, 0 to " +
+                                formatNumber(g.shankLength) + " m below the knee (got " + formatNumber(g.added.mass) +
+                                " kg at " + formatNumber(g.added.distanceBelowKnee) + " m)");
   const std::string s(1, place.side);
   OsimModel m;
   m.name = place.modelName;
@@ -239,12 +253,16 @@ OsimModel makeOsimLegModel(const LegGeometry& g, const OsimLegPlacement& place) 
   const std::array<double, 2> hipInPelvis = place.hipOffsetInPelvis.value_or(std::array<double, 2>{0, 0});
   const Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
   OsimJoint ground = makeGroundPelvis(place, hipInPelvis);
-  OsimJoint hip = makeJoint("hip_" + s, "PinJoint", "pelvis", makeTranslation(hipInPelvis[0], hipInPelvis[1]), "femur_" + s, origin);
-  OsimJoint knee = makeJoint("knee_" + s, "PinJoint", "femur_" + s, makeTranslation(0, -g.thighLength), "tibia_" + s, origin);
+  OsimJoint hip = makeJoint("hip_" + s, "PinJoint", "pelvis", makeTranslation(hipInPelvis[0], hipInPelvis[1]),
+                            "femur_" + s, origin);
+  OsimJoint knee =
+      makeJoint("knee_" + s, "PinJoint", "femur_" + s, makeTranslation(0, -g.thighLength), "tibia_" + s, origin);
   addLegCoordinates(hip, knee, place);
-  OsimJoint ankle = makeJoint("ankle_" + s, "WeldJoint", "tibia_" + s, makeTranslation(0, -g.shankLength), "talus_" + s, origin);
+  OsimJoint ankle =
+      makeJoint("ankle_" + s, "WeldJoint", "tibia_" + s, makeTranslation(0, -g.shankLength), "talus_" + s, origin);
   OsimJoint subtalar = makeJoint("subtalar_" + s, "WeldJoint", "talus_" + s, origin, "calcn_" + s, origin);
-  OsimJoint mtp = makeJoint("mtp_" + s, "WeldJoint", "calcn_" + s, makeTranslation(g.footLength, 0), "toes_" + s, origin);
+  OsimJoint mtp =
+      makeJoint("mtp_" + s, "WeldJoint", "calcn_" + s, makeTranslation(g.footLength, 0), "toes_" + s, origin);
   m.joints = {ground, hip, knee, ankle, subtalar, mtp};
   if (g.added.mass > 0) addAddedMass(m, g, s);
   addOsimLegShapes(m, g, place.side);

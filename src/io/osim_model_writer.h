@@ -18,14 +18,14 @@ namespace swingsim {
 /// The pelvis of a measured drive at toe-off, in the ground frame (x forward, y up), as a
 /// lab's IK file gives it (pelvis_tilt, pelvis_tx, pelvis_ty).
 struct OsimPelvisPose {
-  double tilt = 0;    ///< rad, about +z (forward tilt positive, as OpenSim's pelvis_tilt)
+  double tilt = 0;      ///< rad, about +z (forward tilt positive, as OpenSim's pelvis_tilt)
   double x = 0, y = 0;  ///< m, the pelvis origin
 };
 
 /// Where the leg stands and how its coordinates start and range (besides its segments).
 struct OsimLegPlacement {
   std::string modelName;
-  char side = 'r';  ///< 'r' or 'l': the bodies, joints and coordinates are named for that leg
+  char side = 'r';       ///< 'r' or 'l': the bodies, joints and coordinates are named for that leg
   double hipHeight = 0;  ///< m, the hip joint centre above the ground
   /// m, the hip joint centre in the pelvis frame (x forward, y up); nullopt = at its origin.
   std::optional<std::array<double, 2>> hipOffsetInPelvis;

@@ -19,14 +19,16 @@ struct SegmentsOf {};  // context: the `segments:` map of a participant
 
 std::string checkSegmentLength(double v) {
   if (!(v > 0)) return "must be positive";
-  return v <= kMaxSegmentLength ? "" : "expected a segment length of at most " + formatNumber(kMaxSegmentLength) +
-                                           " m (is it in millimetres? the key is in metres)";
+  return v <= kMaxSegmentLength ? ""
+                                : "expected a segment length of at most " + formatNumber(kMaxSegmentLength) +
+                                      " m (is it in millimetres? the key is in metres)";
 }
 
 std::string checkSegmentMass(double v) {
   if (!(v > 0)) return "must be positive";
-  return v <= kMaxSegmentMass ? "" : "expected a segment mass of at most " + formatNumber(kMaxSegmentMass) +
-                                         " kg (heavier than a whole body: is it in grams? the key is in kg)";
+  return v <= kMaxSegmentMass ? ""
+                              : "expected a segment mass of at most " + formatNumber(kMaxSegmentMass) +
+                                    " kg (heavier than a whole body: is it in grams? the key is in kg)";
 }
 
 template <class A>
@@ -84,8 +86,9 @@ void serialize(A& a, ToeClearanceRule& t) {
   if constexpr (A::kReading) t.gaitGiven = a.has("gait");
   if constexpr (A::kReading) t.hipRiseGiven = a.has("hip_rise_m");
   if (t.hipRiseGiven)
-    a.number("hip_rise_m", t.hipRise,
-             [](double v) { return v >= -0.2 && v <= 0.5 ? "" : "expected the hip's rise above standing height, -0.2 to 0.5 m"; });
+    a.number("hip_rise_m", t.hipRise, [](double v) {
+      return v >= -0.2 && v <= 0.5 ? "" : "expected the hip's rise above standing height, -0.2 to 0.5 m";
+    });
 }
 
 template <class A>
@@ -110,7 +113,9 @@ void serialize(A& a, HipMomentProfile& h) {
       a.require(h.times[i] > h.times[i - 1], "time_s", "times must strictly increase",
                 [&] { return formatNumber(h.times[i]) + " after " + formatNumber(h.times[i - 1]); });
   } else {
-    const auto amplitude = [](double v) { return v >= 0 ? checkPlausible(v, kJointMomentRange, "a hip moment") : "must not be negative"; };
+    const auto amplitude = [](double v) {
+      return v >= 0 ? checkPlausible(v, kJointMomentRange, "a hip moment") : "must not be negative";
+    };
     a.number("flexion_amplitude_Nm", h.flexionAmplitude, amplitude);
     a.number("flexion_duration_s", h.flexionDuration, mustBePlausible(kPhaseDurationRange, "a phase duration"));
     a.number("extension_amplitude_Nm", h.extensionAmplitude, amplitude);
@@ -123,7 +128,8 @@ void serialize(A& a, HipMomentProfile& h) {
 template <class A>
 void serialize(A& a, ThighKinematics& t) {
   a.path("file", t.path);
-  a.require(isMotionFile(t.path), "file", "an OpenSim .mot/.sto (the map says how to read its columns; a CSV is given by name alone)",
+  a.require(isMotionFile(t.path), "file",
+            "an OpenSim .mot/.sto (the map says how to read its columns; a CSV is given by name alone)",
             [&] { return t.path; });
   MotionColumns columns = t.columns.value_or(MotionColumns{});
   serialize(a, columns);
@@ -146,18 +152,21 @@ void serialize(A& a, Participant& p) {
            [](double v) { return v > 0.5 && v < 2.6 ? "" : "expected a standing height between 0.5 and 2.6 m"; });
   a.number("body_mass_kg", p.bodyMass, [](double v) {
     if (!(v > 0)) return std::string("must be positive");
-    return v <= kMaxBodyMass ? std::string() : "expected a body mass of at most " + formatNumber(kMaxBodyMass) + " kg (is it in grams?)";
+    return v <= kMaxBodyMass
+               ? std::string()
+               : "expected a body mass of at most " + formatNumber(kMaxBodyMass) + " kg (is it in grams?)";
   });
   a.map("segments", p, SegmentsOf{});
   a.number("knee_friction_Nm", p.kneeFriction, mustBeNonNegative);
   a.path("knee_model", p.kneeModelPath);
-  a.choice("com_rule", p.comRule, {{"fixed_from_proximal", ComRule::kFixedFromProximal}, {"proportional", ComRule::kProportional}},
-           true);
+  a.choice("com_rule", p.comRule,
+           {{"fixed_from_proximal", ComRule::kFixedFromProximal}, {"proportional", ComRule::kProportional}}, true);
   a.choice("foot_com_from", p.footComFrom, {{"toe", FootComFrom::kToe}, {"ankle", FootComFrom::kAnkle}}, true);
   a.optionalNumber("min_shank_length_m", p.minShankLength, mustBePositive);
   optionalSeconds(a, "sound_limb_swing_time_s", p.soundLimbSwingTime, [](double v) {
-    return v > 0 && v <= kSwingTimeRange.upper ? std::string()
-                                             : "expected a swing time in seconds, above 0 and at most " + formatNumber(kSwingTimeRange.upper);
+    return v > 0 && v <= kSwingTimeRange.upper
+               ? std::string()
+               : "expected a swing time in seconds, above 0 and at most " + formatNumber(kSwingTimeRange.upper);
   });
   a.require(p.minShankLength < p.shank.length, "min_shank_length_m",
             "must be shorter than the shank (" + formatNumber(p.shank.length) + " m)",
@@ -169,7 +178,8 @@ void serialize(A& a, Participant& p) {
     std::vector<double> xy = {(*p.hipOffsetInPelvis)[0], (*p.hipOffsetInPelvis)[1]};
     a.numbers("hip_offset_in_pelvis_m", xy);
     a.require(xy.size() == 2 && std::abs(xy[0]) <= kMaxSegmentLength && std::abs(xy[1]) <= kMaxSegmentLength,
-              "hip_offset_in_pelvis_m", "expected [x, y] in metres, each within " + formatNumber(kMaxSegmentLength) + " m",
+              "hip_offset_in_pelvis_m",
+              "expected [x, y] in metres, each within " + formatNumber(kMaxSegmentLength) + " m",
               [&] { return std::to_string(xy.size()) + " values"; });
     p.hipOffsetInPelvis = std::array<double, 2>{xy[0], xy[1]};
   }
@@ -186,11 +196,13 @@ void serialize(A& a, Participant& p) {
             [&] { return formatNumber(p.swingEnd.thighTargetFlexion * kRadToDeg) + " deg"; });
   // The drive: a hip moment profile, or the measured thigh angle.
   if (A::kReading || p.drive != SwingDrive::kHipMoment)
-    a.choice("drive", p.drive, {{"hip_moment", SwingDrive::kHipMoment}, {"thigh_kinematics", SwingDrive::kThighKinematics}},
-             true);
+    a.choice("drive", p.drive,
+             {{"hip_moment", SwingDrive::kHipMoment}, {"thigh_kinematics", SwingDrive::kThighKinematics}}, true);
   if (p.drive == SwingDrive::kThighKinematics) {
     if constexpr (A::kReading)
-      a.require(!a.has("hip_moment"), "hip_moment", "no hip moment with drive: thigh_kinematics (the measured thigh drives the swing; the hip moment is an output)",
+      a.require(!a.has("hip_moment"), "hip_moment",
+                "no hip moment with drive: thigh_kinematics (the measured thigh drives the swing; the hip moment is an "
+                "output)",
                 [] { return std::string("a hip_moment map"); });
     // A file name, or a map {file, motion_columns keys} saying how to read a .mot/.sto.
     bool isMap = p.thighKinematics.columns.has_value();
@@ -219,7 +231,8 @@ SwingRecord readThighMotion(const ThighKinematics& t, const ToeClearanceRule& to
       // The gait toe_clearance states picks the event rules; unstated, it is detected.
       std::optional<Gait> gait;
       if (toeClearance.gaitGiven) gait = toeClearance.gait;
-      const FoundSwing swing = selectSwing(listSwings(table, columns, std::nullopt, gait), table, columns.knee, *t.swing);
+      const FoundSwing swing =
+          selectSwing(listSwings(table, columns, std::nullopt, gait), table, columns.knee, *t.swing);
       columns.toeOffTime = swing.toeOff;
       columns.heelContactTime = swing.heelContact;
     }
@@ -228,10 +241,11 @@ SwingRecord readThighMotion(const ThighKinematics& t, const ToeClearanceRule& to
   try {
     return makeSwingRecord(table, openSimRightLegColumns(table));
   } catch (const InputError& e) {
-    throw InputError(std::string(e.what()) + "\n" + yaml.where("thigh_kinematics") +
-                     "a plain .mot/.sto name is read with OpenSim's right-leg labels (hip_flexion_r, knee_angle_r, knee_sign -1, "
-                     "pelvis_tilt/tx/ty when present); for other labels or a cut give the map form {file: F, hip: LABEL, "
-                     "knee: LABEL, knee_sign: -1, pelvis_tilt: LABEL, toe_off_s: T0, heel_contact_s: T1}");
+    throw InputError(
+        std::string(e.what()) + "\n" + yaml.where("thigh_kinematics") +
+        "a plain .mot/.sto name is read with OpenSim's right-leg labels (hip_flexion_r, knee_angle_r, knee_sign -1, "
+        "pelvis_tilt/tx/ty when present); for other labels or a cut give the map form {file: F, hip: LABEL, "
+        "knee: LABEL, knee_sign: -1, pelvis_tilt: LABEL, toe_off_s: T0, heel_contact_s: T1}");
   }
 }
 
@@ -244,7 +258,8 @@ Participant readParticipant(YamlMap& yaml) {
   if (p.drive == SwingDrive::kThighKinematics) {
     // The hip (and the pelvis) drive; the knee gives the state at toe-off (leg/toe_off_state.h).
     ThighKinematics& t = p.thighKinematics;
-    const SwingRecord record = isMotionFile(t.path) ? readThighMotion(t, p.toeClearance, yaml) : readSwingRecord(t.path);
+    const SwingRecord record =
+        isMotionFile(t.path) ? readThighMotion(t, p.toeClearance, yaml) : readSwingRecord(t.path);
     t.time = record.time;
     t.hipFlexion = record.hipFlexion;
     t.pelvisX = record.pelvisX;
@@ -281,7 +296,8 @@ Participant parseParticipant(const std::string& text, const std::string& path) {
   return readParticipant(yaml);
 }
 
-std::string formatParticipantYaml(const Participant& participant, const std::string& baseDir, const std::string& header) {
+std::string formatParticipantYaml(const Participant& participant, const std::string& baseDir,
+                                  const std::string& header) {
   return writeYamlDocument(participant, baseDir, header);
 }
 
@@ -302,8 +318,7 @@ void storeParticipants(const std::vector<ParticipantEdit>& edits) {
       const fs::path target = fs::is_symlink(e.path, ec) ? fs::canonical(e.path, ec) : fs::path(e.path);
       if (ec) throw RunError(e.path + ": cannot resolve the symlink: " + ec.message());
       const std::string dir = target.parent_path().empty() ? "." : target.parent_path().string();
-      const std::string text = leadingComments(readFile(target.string())) +
-                               formatParticipantYaml(e.participant, dir);
+      const std::string text = leadingComments(readFile(target.string())) + formatParticipantYaml(e.participant, dir);
       // Loads back to what was meant, or nothing is written.
       const Participant back = parseParticipant(text, target.string());
       if (formatParticipantYaml(back, dir) != formatParticipantYaml(e.participant, dir))

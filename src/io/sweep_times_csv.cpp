@@ -16,9 +16,9 @@ namespace {
 // Plausibility ranges (docs/formats.md): a knee axis cannot move half a metre; a swing of a
 // prosthetic leg lasts 0.3-0.6 s (Burkett 2004 Tables 3-4), so 0.05-3 s only refuses
 // nonsense (a time in ms, a missing-data marker); a trial SD is a fraction of the swing.
-constexpr double kMaxLowering = 0.5;                     // m
+constexpr double kMaxLowering = 0.5;                       // m
 constexpr double kMinSwingTime = 0.05, kMaxSwingTime = 3;  // s
-constexpr double kMaxSd = 1;                             // s
+constexpr double kMaxSd = 1;                               // s
 constexpr int kMaxTrials = 1000;
 
 CsvSpec sweepTimesSpec() {
@@ -47,7 +47,8 @@ MeasuredSwingTime readRow(const CsvTable& table, std::size_t row) {
   MeasuredSwingTime r;
   r.line = table.lines[row];
   r.participant = table.text("participant")[row];
-  if (r.participant.empty()) throw InputError(at(table, row, "participant") + "expected a participant name (got an empty field)");
+  if (r.participant.empty())
+    throw InputError(at(table, row, "participant") + "expected a participant name (got an empty field)");
   r.lowering = table.column("lowering_m")[row];
   checkRange(at(table, row, "lowering_m"), r.lowering, 0, kMaxLowering, "m below the standard knee-axis location");
   r.swingTime = table.column("swing_time_s")[row];
@@ -61,7 +62,8 @@ MeasuredSwingTime readRow(const CsvTable& table, std::size_t row) {
                        formatNumber(r.sd) + ")");
     const double n = table.column("n")[row];
     if (!(n >= 1 && n <= kMaxTrials && n == std::floor(n)))
-      throw InputError(at(table, row, "n") + "expected a whole number of trials from 1 to 1000 (got " + formatNumber(n) + ")");
+      throw InputError(at(table, row, "n") + "expected a whole number of trials from 1 to 1000 (got " +
+                       formatNumber(n) + ")");
     r.trials = static_cast<int>(n);
   }
   return r;
@@ -72,7 +74,8 @@ MeasuredSwingTime readRow(const CsvTable& table, std::size_t row) {
 std::vector<MeasuredSwingTime> parseSweepTimesCsv(const std::string& text, const std::string& path) {
   const CsvTable table = parseCsv(text, path, sweepTimesSpec());
   if (table.rows() == 0)
-    throw InputError(path + ":" + std::to_string(table.headerLine) + ": expected at least one row after the header (got none)");
+    throw InputError(path + ":" + std::to_string(table.headerLine) +
+                     ": expected at least one row after the header (got none)");
   std::vector<MeasuredSwingTime> rows;
   // One mean per (participant, lowering to the micrometre): a map keeps the check n log n.
   std::map<std::pair<std::string, long long>, int> seen;

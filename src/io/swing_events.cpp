@@ -20,7 +20,6 @@ struct Event {
   const char* source;
 };
 
-
 /// The time of a crossing of `level` between rows k-1 and k, by linear interpolation.
 double crossingTime(const std::vector<double>& t, const std::vector<double>& f, std::size_t k, double level) {
   return t[k - 1] + (t[k] - t[k - 1]) * (level - f[k - 1]) / (f[k] - f[k - 1]);
@@ -42,7 +41,8 @@ std::vector<Event> calcGrfEvents(const MotionTable& grf, const GrfSettings& sett
   // Removing a short phase's two crossings keeps the events alternating.
   for (std::size_t i = 0; i + 1 < events.size();) {
     if (events[i + 1].time - events[i].time < kMinGaitPhaseS)
-      events.erase(events.begin() + static_cast<std::ptrdiff_t>(i), events.begin() + static_cast<std::ptrdiff_t>(i + 2));
+      events.erase(events.begin() + static_cast<std::ptrdiff_t>(i),
+                   events.begin() + static_cast<std::ptrdiff_t>(i + 2));
     else
       ++i;
   }
@@ -125,13 +125,14 @@ struct GaitChoice {
   std::string contradiction = "";
 };
 
-GaitChoice detectGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks);
+GaitChoice detectGait(const std::vector<double>& t, const std::vector<double>& knee,
+                      const std::vector<std::size_t>& peaks);
 
 /// The stated gait, else running for a stride under kRunningStrideS (or, with one swing, a
 /// knee peak above kRunningKneePeak), else walking. A stated gait that detection
 /// contradicts is kept, and the contradiction said.
-GaitChoice chooseGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks,
-                      std::optional<Gait> stated) {
+GaitChoice chooseGait(const std::vector<double>& t, const std::vector<double>& knee,
+                      const std::vector<std::size_t>& peaks, std::optional<Gait> stated) {
   if (!stated) return detectGait(t, knee, peaks);
   GaitChoice out{*stated, "stated", ""};
   if (!peaks.empty()) {
@@ -145,12 +146,13 @@ GaitChoice chooseGait(const std::vector<double>& t, const std::vector<double>& k
   return out;
 }
 
-GaitChoice detectGait(const std::vector<double>& t, const std::vector<double>& knee, const std::vector<std::size_t>& peaks) {
+GaitChoice detectGait(const std::vector<double>& t, const std::vector<double>& knee,
+                      const std::vector<std::size_t>& peaks) {
   if (const auto stride = medianStride(t, peaks)) {
     const bool running = *stride < kRunningStrideS;
     return {running ? Gait::kRunning : Gait::kWalking,
-            "detected: median stride " + formatNumber(std::round(*stride * 1000) / 1000) + " s, " + (running ? "under " : "over ") +
-                formatNumber(kRunningStrideS) + " s"};
+            "detected: median stride " + formatNumber(std::round(*stride * 1000) / 1000) + " s, " +
+                (running ? "under " : "over ") + formatNumber(kRunningStrideS) + " s"};
   }
   if (peaks.empty()) return {Gait::kWalking, "no swing to detect it from"};
   const double peak = knee[peaks.front()];
@@ -173,7 +175,8 @@ std::size_t riseStart(const std::vector<double>& knee, std::size_t peak) {
 /// to it from the stance's last extension minimum. A rise cut by the file's start counts when
 /// its fastest flexion lies past the file's first rate (the knee still speeding up there).
 /// nullopt if it does not, or if the rise is still speeding up where the file ends.
-std::optional<double> findWalkingToeOff(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak) {
+std::optional<double> findWalkingToeOff(const std::vector<double>& t, const std::vector<double>& knee,
+                                        std::size_t peak) {
   const std::size_t start = riseStart(knee, peak);
   // Central differences need a row either side; a peak on the last row still has its rise.
   const std::size_t first = std::max<std::size_t>(start, 1);
@@ -184,7 +187,7 @@ std::optional<double> findWalkingToeOff(const std::vector<double>& t, const std:
   std::size_t fastest = first + 1;
   for (std::size_t k = first + 1; k < last; ++k)
     if (rate[k] > rate[fastest]) fastest = k;
-  if (rate[last] > rate[fastest]) return std::nullopt;  // still speeding up where the file ends
+  if (rate[last] > rate[fastest]) return std::nullopt;                  // still speeding up where the file ends
   if (start == 0 && rate[first] >= rate[fastest]) return std::nullopt;  // the fastest may lie before the file
   return vertexTime(t, rate, fastest);
 }
@@ -192,7 +195,8 @@ std::optional<double> findWalkingToeOff(const std::vector<double>& t, const std:
 /// Running toe-off before the swing peak at row `peak`: the knee's extension minimum at the
 /// end of the stance, where its rise into the swing starts (after Fellin et al. 2010, J Sci
 /// Med Sport 13:646, toe-off at peak knee extension). nullopt if that is the first row.
-std::optional<double> findRunningToeOff(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak) {
+std::optional<double> findRunningToeOff(const std::vector<double>& t, const std::vector<double>& knee,
+                                        std::size_t peak) {
   const std::size_t start = riseStart(knee, peak);
   if (start == 0 || start + 1 >= knee.size()) return std::nullopt;
   return vertexTime(t, knee, start);
@@ -214,8 +218,8 @@ std::optional<double> findWalkingHeelContact(const std::vector<double>& t, const
 /// Running heel contact after the swing peak at row `peak`, before row `end`: the knee's
 /// first extension minimum (the end of its extension in the late swing; it flexes again as
 /// the foot lands). nullopt if the file ends first.
-std::optional<double> findRunningHeelContact(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak,
-                                             std::size_t end) {
+std::optional<double> findRunningHeelContact(const std::vector<double>& t, const std::vector<double>& knee,
+                                             std::size_t peak, std::size_t end) {
   for (std::size_t k = peak + 1; k + 1 < end && k + 1 < t.size(); ++k)
     if (knee[k] <= knee[k - 1] && knee[k] < knee[k + 1]) return vertexTime(t, knee, k);
   return std::nullopt;
@@ -227,7 +231,8 @@ std::optional<double> findRunningHeelContact(const std::vector<double>& t, const
 /// cut by the file's start that reaches its peak sooner than any later swing of the file
 /// reaches its own from toe-off (`shortestRise`, s, less the rules' accuracy).
 std::string describeLeadingAmbiguity(const std::vector<double>& t, const std::vector<double>& knee, std::size_t peak,
-                                     const std::optional<double>& toeOff, std::optional<double> shortestRise, bool running) {
+                                     const std::optional<double>& toeOff, std::optional<double> shortestRise,
+                                     bool running) {
   const double accuracy = running ? kRunningAccuracyS : kWalkingAccuracyS;
   if (peak == 0) return "";
   if (!toeOff) {
@@ -237,8 +242,8 @@ std::string describeLeadingAmbiguity(const std::vector<double>& t, const std::ve
            "): whether that swing's toe-off lies inside the file the kinematics cannot tell";
   }
   if (*toeOff >= t.front() + accuracy) return "";
-  return "the first swing's toe-off (" + seconds(*toeOff) + ") lies within the kinematic rules' accuracy (" + ms(accuracy) +
-         ") of the file's start: the force plates could place it before the file";
+  return "the first swing's toe-off (" + seconds(*toeOff) + ") lies within the kinematic rules' accuracy (" +
+         ms(accuracy) + ") of the file's start: the force plates could place it before the file";
 }
 
 /// Kinematic events with the rule's bias removed, the swing peaks and the gait.
@@ -262,7 +267,8 @@ struct KinematicEvents {
 /// Biomechanics and Motor Control of Human Movement, Table 4.1: 0.245 H and 0.246 H).
 /// Running: toe-off at the knee's extension minimum before its rise, heel contact at its
 /// extension minimum after the swing peak. Each with its measured bias removed.
-KinematicEvents calcKinematicEvents(const MotionTable& table, const MotionColumns& columns, std::optional<Gait> stated) {
+KinematicEvents calcKinematicEvents(const MotionTable& table, const MotionColumns& columns,
+                                    std::optional<Gait> stated) {
   const LegAngles a = calcLegAngles(table, columns);
   const std::vector<double>& t = table.columns.front();
   KinematicEvents out;
@@ -272,7 +278,8 @@ KinematicEvents calcKinematicEvents(const MotionTable& table, const MotionColumn
   const bool running = out.gait.gait == Gait::kRunning;
   const double toeOffBias = running ? kRunningToeOffBiasS : kWalkingToeOffBiasS;
   const double heelBias = running ? kRunningHeelContactBiasS : kWalkingHeelContactBiasS;
-  std::optional<double> firstToeOff, shortestRise;  // the first swing's toe-off; the later swings' least toe-off to peak
+  std::optional<double> firstToeOff,
+      shortestRise;  // the first swing's toe-off; the later swings' least toe-off to peak
   for (std::size_t p = 0; p < peaks.size(); ++p) {
     out.peakTimes.push_back(t[peaks[p]]);
     auto toeOff = running ? findRunningToeOff(t, a.knee, peaks[p]) : findWalkingToeOff(t, a.knee, peaks[p]);
@@ -284,10 +291,12 @@ KinematicEvents calcKinematicEvents(const MotionTable& table, const MotionColumn
     }
     if (p == 0) firstToeOff = toeOff;
     const std::size_t end = p + 1 < peaks.size() ? peaks[p + 1] : t.size();
-    const auto heel = running ? findRunningHeelContact(t, a.knee, peaks[p], end) : findWalkingHeelContact(t, a, peaks[p], end);
+    const auto heel =
+        running ? findRunningHeelContact(t, a.knee, peaks[p], end) : findWalkingHeelContact(t, a, peaks[p], end);
     if (heel) out.events.push_back({*heel - heelBias, Kind::HeelContact, "kinematics"});
   }
-  if (!peaks.empty()) out.numberingAmbiguity = describeLeadingAmbiguity(t, a.knee, peaks[0], firstToeOff, shortestRise, running);
+  if (!peaks.empty())
+    out.numberingAmbiguity = describeLeadingAmbiguity(t, a.knee, peaks[0], firstToeOff, shortestRise, running);
   return out;
 }
 
@@ -370,26 +379,30 @@ std::string checkForceFile(const MotionTable& grf, const std::vector<double>& fo
     }
   if (!any) return "";  // the clock check after this says what is wrong
   if (peak < kMinStancePeakN && lowest < -kMinStancePeakN)
-    return "expected a vertical force, positive upwards, N: a stance peaks at 1-3 body weights (got " + formatNumber(lowest) +
-           " to " + formatNumber(peak) + " N: negated? OpenSim's vertical force pushes up, +y)";
+    return "expected a vertical force, positive upwards, N: a stance peaks at 1-3 body weights (got " +
+           formatNumber(lowest) + " to " + formatNumber(peak) + " N: negated? OpenSim's vertical force pushes up, +y)";
   // A vertical force pulls below zero by no more than its offset; a horizontal one by as much as it pushes.
   if (lowest < -std::max(kMaxForceOffsetN, 0.1 * peak))
     return "expected a vertical force, which never pulls the foot down (got " + formatNumber(lowest) + " to " +
            formatNumber(peak) + " N: a horizontal component, e.g. the fore-aft force, or a lab frame with z up?)";
   if (peak < kMinStancePeakN)
-    return "expected a vertical force in newtons: a stance peaks at 1-3 body weights, at least " + formatNumber(kMinStancePeakN) +
-           " N (got a peak of " + formatNumber(peak) + " N over the kinematics' time" +
-           (peak > 0 && peak * 1000 >= kMinStancePeakN ? ": in kN?" : peak <= 0 ? ": no load at all" : "") + ")";
+    return "expected a vertical force in newtons: a stance peaks at 1-3 body weights, at least " +
+           formatNumber(kMinStancePeakN) + " N (got a peak of " + formatNumber(peak) + " N over the kinematics' time" +
+           (peak > 0 && peak * 1000 >= kMinStancePeakN ? ": in kN?"
+            : peak <= 0                                ? ": no load at all"
+                                                       : "") +
+           ")";
   if (peak > kMaxStancePeakN)
-    return "expected a vertical force in newtons: a stance peaks at 1-3 body weights, at most " + formatNumber(kMaxStancePeakN) +
-           " N (got a peak of " + formatNumber(peak) + " N: another unit?)";
+    return "expected a vertical force in newtons: a stance peaks at 1-3 body weights, at most " +
+           formatNumber(kMaxStancePeakN) + " N (got a peak of " + formatNumber(peak) + " N: another unit?)";
   return "";
 }
 
 /// Each force event inside the kinematics' time [t0, t1] with the kinematic event of its kind
 /// nearest to it, where that lies within 0.6 strides (elsewhere the kinematics see no such event).
 std::vector<std::pair<const Event*, const Event*>> pairWithKinematicEvents(const std::vector<Event>& force,
-                                                                          const KinematicEvents& kin, double t0, double t1) {
+                                                                           const KinematicEvents& kin, double t0,
+                                                                           double t1) {
   const double stride = kin.stride.value_or(kin.gait.gait == Gait::kRunning ? 0.7 : 1.1);
   std::vector<std::pair<const Event*, const Event*>> pairs;
   for (const Event& f : force) {
@@ -403,8 +416,8 @@ std::vector<std::pair<const Event*, const Event*>> pairWithKinematicEvents(const
 /// The first way the force's events contradict the kinematics', "" if none: an event more
 /// than kEventToleranceS from the kinematic one of its kind (within 0.6 strides), a knee swing
 /// peak inside the force's stance, a force swing without a knee swing peak.
-std::string findContradiction(const std::vector<Event>& force, bool loadedAtStart, const KinematicEvents& kin, double t0,
-                              double t1, double forceStart, double forceEnd) {
+std::string findContradiction(const std::vector<Event>& force, bool loadedAtStart, const KinematicEvents& kin,
+                              double t0, double t1, double forceStart, double forceEnd) {
   for (const auto& [f, nearest] : pairWithKinematicEvents(force, kin, t0, t1))
     if (std::abs(nearest->time - f->time) > kEventToleranceS)
       return std::string(f->kind == Kind::ToeOff ? "toe-off" : "heel contact") + " at " + seconds(f->time) + " is " +
@@ -423,7 +436,8 @@ std::string findContradiction(const std::vector<Event>& force, bool loadedAtStar
   for (double peak : kin.peakTimes)
     if (peak > forceStart && peak < forceEnd && inStance(peak))
       return "the knee's swing peak at " + seconds(peak) + " falls in a stance of the force" +
-             (force.empty() ? " (the force never falls below the threshold: both feet on one plate, or a total force?)" : "");
+             (force.empty() ? " (the force never falls below the threshold: both feet on one plate, or a total force?)"
+                            : "");
   for (std::size_t i = 0; i + 1 < force.size(); ++i) {
     if (force[i].kind != Kind::ToeOff || force[i].time < t0 || force[i + 1].time > t1) continue;
     const bool hasPeak = std::any_of(kin.peakTimes.begin(), kin.peakTimes.end(),
@@ -439,7 +453,8 @@ std::string findContradiction(const std::vector<Event>& force, bool loadedAtStar
 /// the kinematics' time, each with a kinematic event of its kind within 0.6 stride) lies one
 /// offset from its kinematic event, to within kEventToleranceS, and that offset is beyond
 /// kEventToleranceS. The offset (force minus kinematics, s), or nullopt.
-std::optional<double> findClockOffset(const std::vector<Event>& force, const KinematicEvents& kin, double t0, double t1) {
+std::optional<double> findClockOffset(const std::vector<Event>& force, const KinematicEvents& kin, double t0,
+                                      double t1) {
   std::vector<double> d;
   for (const auto& [f, nearest] : pairWithKinematicEvents(force, kin, t0, t1)) d.push_back(f->time - nearest->time);
   constexpr std::size_t kMinEvents = 3;
@@ -507,9 +522,10 @@ SwingList makeList(std::vector<FoundSwing> swings, const KinematicEvents& kin, c
   SwingList out;
   if (leadByKinematics && !kin.numberingAmbiguity.empty()) {
     out.numberingAmbiguity = kin.numberingAmbiguity;
-    out.notes.push_back("swing numbers: " + kin.numberingAmbiguity + ", so a force file could number the swings one apart " +
-                        "from these; a study's `swing: K` on this file needs its force file (grf:) or the swing's times " +
-                        "(toe_off_s, heel_contact_s)");
+    out.notes.push_back(
+        "swing numbers: " + kin.numberingAmbiguity + ", so a force file could number the swings one apart " +
+        "from these; a study's `swing: K` on this file needs its force file (grf:) or the swing's times " +
+        "(toe_off_s, heel_contact_s)");
   }
   if (!kin.gait.contradiction.empty()) out.notes.push_back(kin.gait.contradiction);
   out.swings = std::move(swings);
@@ -526,12 +542,14 @@ const char* gaitName(Gait gait) { return gait == Gait::kRunning ? "running" : "w
 
 SwingEventTimes findGrfEvents(const MotionTable& grf, const GrfSettings& settings) {
   checkThreshold(grf, settings);
-  if (const std::string bad = checkThresholdBelowPeak(grf.column(settings.verticalForce), settings.thresholdN); !bad.empty())
+  if (const std::string bad = checkThresholdBelowPeak(grf.column(settings.verticalForce), settings.thresholdN);
+      !bad.empty())
     throw InputError(grf.path + ": " + settings.verticalForce + ": " + bad);
   return splitByKind(calcGrfEvents(grf, settings));
 }
 
-SwingEventTimes findKinematicEvents(const MotionTable& kinematics, const MotionColumns& columns, std::optional<Gait> gait) {
+SwingEventTimes findKinematicEvents(const MotionTable& kinematics, const MotionColumns& columns,
+                                    std::optional<Gait> gait) {
   return splitByKind(calcKinematicEvents(kinematics, columns, gait).events);
 }
 
@@ -566,8 +584,8 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
   }
   if (g.back() <= t.front() || g.front() >= t.back()) {
     const std::string bad = "time: expected times overlapping the kinematics' (" + kinematics.path + ": " +
-                            formatNumber(t.front()) + " to " + formatNumber(t.back()) + " s) (got " + formatNumber(g.front()) +
-                            " to " + formatNumber(g.back()) + " s)";
+                            formatNumber(t.front()) + " to " + formatNumber(t.back()) + " s) (got " +
+                            formatNumber(g.front()) + " to " + formatNumber(g.back()) + " s)";
     if (settings.fallbackToKinematics) return kinematicsOnly(bad);
     throw InputError(grf.path + ":" + std::to_string(grf.rowLines.front()) + ": " + bad);
   }
@@ -589,15 +607,17 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
     if (const auto otherLeg = otherLegColumns(kinematics, columns); other.empty() && otherLeg) {
       const KinematicEvents otherKin = calcKinematicEvents(kinematics, *otherLeg, kin.gait.gait);
       if (findContradiction(forceEvents, loadedAtStart, otherKin, t.front(), t.back(), g.front(), g.back()).empty())
-        other = "; they match the other leg's (" + otherLeg->hip + ", " + otherLeg->knee + "): is " + settings.verticalForce +
+        other = "; they match the other leg's (" + otherLeg->hip + ", " + otherLeg->knee + "): is " +
+                settings.verticalForce +
                 " the other foot's force? (OpenSim's example files: ground_force_vy right, 1_ground_force_vy left)";
     }
-    const std::string bad = "expected the force's stance and swing to match the leg's kinematics (" + kinematics.path + ": " +
-                            columns.hip + ", " + columns.knee + ", " + gaitName(kin.gait.gait) + " rules, " + kin.gait.basis +
-                            ") (got: " + contradiction + ")" +
-                            (other.empty() ? ": another trial's force file, a clock offset, the other foot's column, or the "
-                                             "wrong gait's rules (state it: --gait, a study's gait:)?"
-                                           : other);
+    const std::string bad =
+        "expected the force's stance and swing to match the leg's kinematics (" + kinematics.path + ": " + columns.hip +
+        ", " + columns.knee + ", " + gaitName(kin.gait.gait) + " rules, " + kin.gait.basis +
+        ") (got: " + contradiction + ")" +
+        (other.empty() ? ": another trial's force file, a clock offset, the other foot's column, or the "
+                         "wrong gait's rules (state it: --gait, a study's gait:)?"
+                       : other);
     if (settings.fallbackToKinematics) return kinematicsOnly(bad);
     throw InputError(where + bad);
   }
@@ -608,10 +628,11 @@ SwingList listSwings(const MotionTable& kinematics, const MotionColumns& columns
 FoundSwing selectSwing(const SwingList& list, const MotionTable& table, const std::string& knee, int k) {
   const std::vector<FoundSwing>& swings = list.swings;
   if (!list.numberingAmbiguity.empty())
-    throw InputError(table.path + ": swing: " + std::to_string(k) + ": " + list.numberingAmbiguity + " (" + knee + ", " +
-                     gaitName(list.gait) + " rules), so the force plates could number this file's swings one apart from " +
-                     "the kinematics: give its force file (a diagnosis study's grf:), or the swing's times instead of its number " +
-                     "(toe_off_s, heel_contact_s; `swingsim swings FILE` lists them)");
+    throw InputError(
+        table.path + ": swing: " + std::to_string(k) + ": " + list.numberingAmbiguity + " (" + knee + ", " +
+        gaitName(list.gait) + " rules), so the force plates could number this file's swings one apart from " +
+        "the kinematics: give its force file (a diagnosis study's grf:), or the swing's times instead of its number " +
+        "(toe_off_s, heel_contact_s; `swingsim swings FILE` lists them)");
   if (swings.empty())
     throw InputError(table.path + ": swing: " + std::to_string(k) + ": the file holds no complete swing of " + knee +
                      " (toe-off and heel contact both inside it; " + gaitName(list.gait) + " rules, " + list.gaitBasis +
@@ -621,7 +642,8 @@ FoundSwing selectSwing(const SwingList& list, const MotionTable& table, const st
     for (std::size_t i = 0; i < swings.size(); ++i)
       found += (i ? ", " : "") + fmt("%zu: %.4f-%.4f s", i + 1, swings[i].toeOff, swings[i].heelContact);
     throw InputError(table.path + ": swing: expected a swing number from 1 to " + std::to_string(swings.size()) +
-                     " (the complete swings found: " + found + "; `swingsim swings FILE` lists them) (got " + std::to_string(k) + ")");
+                     " (the complete swings found: " + found + "; `swingsim swings FILE` lists them) (got " +
+                     std::to_string(k) + ")");
   }
   return swings[static_cast<std::size_t>(k - 1)];
 }

@@ -20,9 +20,9 @@ const char* gaitName(Gait gait);
 
 /// How to read one foot's vertical force in an OpenSim GRF .mot (the study's `grf:` map).
 struct GrfSettings {
-  std::string path;                                 ///< resolved GRF .mot
-  std::string verticalForce = "ground_force_vy";   ///< column label of this foot's vertical force, N
-  double thresholdN = 20;                           ///< N: below it the foot is in the air
+  std::string path;                               ///< resolved GRF .mot
+  std::string verticalForce = "ground_force_vy";  ///< column label of this foot's vertical force, N
+  double thresholdN = 20;                         ///< N: below it the foot is in the air
   /// A force file that fails its checks gives way to the kinematics' events (said in the
   /// listing and the study's notes) instead of being refused (`fallback_to_kinematics`).
   bool fallbackToKinematics = false;
@@ -132,7 +132,7 @@ FoundSwing selectSwing(const SwingList& list, const MotionTable& table, const st
 /// listSwings(...).swings.
 std::vector<FoundSwing> findSwings(const MotionTable& kinematics, const MotionColumns& columns,
                                    const std::optional<GrfSettings>& grf);
-std::vector<FoundSwing> findSwings(const MotionTable& kinematics, const MotionColumns& columns,
-                                   const MotionTable& grf, const GrfSettings& settings);
+std::vector<FoundSwing> findSwings(const MotionTable& kinematics, const MotionColumns& columns, const MotionTable& grf,
+                                   const GrfSettings& settings);
 
 }  // namespace swingsim

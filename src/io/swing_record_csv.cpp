@@ -34,7 +34,8 @@ SwingRecord recordFromTable(const CsvTable& t, const std::string& path) {
   // written in radians (1.1 rad = 63 deg), which read as degrees would be a knee that
   // hardly moves.
   constexpr double kMinKneeRangeDeg = 3;
-  const auto [kneeMin, kneeMax] = std::minmax_element(t.column("knee_flexion_deg").begin(), t.column("knee_flexion_deg").end());
+  const auto [kneeMin, kneeMax] =
+      std::minmax_element(t.column("knee_flexion_deg").begin(), t.column("knee_flexion_deg").end());
   if (*kneeMax - *kneeMin < kMinKneeRangeDeg)
     throw InputError(path + ": knee_flexion_deg: the knee moves through only " + formatNumber(*kneeMax - *kneeMin) +
                      " deg over the whole record (from " + formatNumber(*kneeMin) + " to " + formatNumber(*kneeMax) +
@@ -45,9 +46,9 @@ SwingRecord recordFromTable(const CsvTable& t, const std::string& path) {
   // a diagnosis integrating for minutes.
   constexpr double kMaxSwingRecordSpanS = 10;
   if (time.back() - t0 > kMaxSwingRecordSpanS)
-    throw InputError(path + ": time_s: expected one swing in seconds, spanning at most " + formatNumber(kMaxSwingRecordSpanS) +
-                     " s (got " + formatNumber(time.back() - t0) + " s from the first sample to the last" +
-                     (time.back() - t0 < 1e4 ? ": in ms?" : "") + ")");
+    throw InputError(path + ": time_s: expected one swing in seconds, spanning at most " +
+                     formatNumber(kMaxSwingRecordSpanS) + " s (got " + formatNumber(time.back() - t0) +
+                     " s from the first sample to the last" + (time.back() - t0 < 1e4 ? ": in ms?" : "") + ")");
   for (double v : time) r.time.push_back(v - t0);
   for (double v : t.column("hip_flexion_deg")) r.hipFlexion.push_back(v * kDegToRad);
   for (double v : t.column("knee_flexion_deg")) r.kneeFlexion.push_back(v * kDegToRad);

@@ -20,20 +20,23 @@ std::vector<double> toDegrees(const std::vector<double>& v) {
   return out;
 }
 
-const std::vector<std::string> kColumns = {"time_s", "hip_flexion_deg", "knee_flexion_deg",
-                                           "hip_flexion_rate_deg_s", "knee_flexion_rate_deg_s",
-                                           "hip_moment_Nm", "knee_moment_Nm"};
+const std::vector<std::string> kColumns = {
+    "time_s",        "hip_flexion_deg", "knee_flexion_deg", "hip_flexion_rate_deg_s", "knee_flexion_rate_deg_s",
+    "hip_moment_Nm", "knee_moment_Nm"};
 
 std::vector<std::vector<double>> columnsOf(const SwingTrajectory& t) {
-  return {t.time, toDegrees(t.hipFlexion), toDegrees(t.kneeFlexion), toDegrees(t.hipFlexionRate),
-          toDegrees(t.kneeFlexionRate), t.hipMoment, t.kneeMoment};
+  return {t.time,
+          toDegrees(t.hipFlexion),
+          toDegrees(t.kneeFlexion),
+          toDegrees(t.hipFlexionRate),
+          toDegrees(t.kneeFlexionRate),
+          t.hipMoment,
+          t.kneeMoment};
 }
 
 }  // namespace
 
-TrajectoryColumns calcTrajectoryColumns(const SwingTrajectory& trajectory) {
-  return {kColumns, columnsOf(trajectory)};
-}
+TrajectoryColumns calcTrajectoryColumns(const SwingTrajectory& trajectory) { return {kColumns, columnsOf(trajectory)}; }
 
 std::string formatTrajectoryCsv(const SwingTrajectory& trajectory) {
   return formatCsv(kColumns, columnsOf(trajectory));
@@ -45,7 +48,8 @@ std::vector<std::string> calcTrajectoryStoLabels(char side) {
 }
 
 std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::string& name, char side) {
-  if (side != 'r' && side != 'l') throw std::invalid_argument(std::string("formatTrajectorySto: side: expected r or l (got ") + side + ")");
+  if (side != 'r' && side != 'l')
+    throw std::invalid_argument(std::string("formatTrajectorySto: side: expected r or l (got ") + side + ")");
   std::string out = name + "\nversion=1\nnRows=" + std::to_string(trajectory.size()) +
                     "\nnColumns=" + std::to_string(kColumns.size()) + "\ninDegrees=yes\nendheader\n";
   // OpenSim names: 'time' first, tab-separated; the knee's angle, rate and moment in the
@@ -54,7 +58,8 @@ std::string formatTrajectorySto(const SwingTrajectory& trajectory, const std::st
   for (std::size_t k : {std::size_t{2}, std::size_t{4}, std::size_t{6}})
     for (double& x : columns[k]) x = -x + 0.0;  // (+ 0.0: no -0)
   std::string csv = formatCsv(calcTrajectoryStoLabels(side), columns);
-  for (char& c : csv) if (c == ',') c = '\t';
+  for (char& c : csv)
+    if (c == ',') c = '\t';
   return out + csv;
 }
 

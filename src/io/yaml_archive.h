@@ -48,7 +48,9 @@ class YamlReadArchive {
   /// Optional number: `v` holds its default on entry.
   void optionalNumber(const char* key, double& v, const ValueCheck& check = {}) { v = map_.getDouble(key, v, check); }
   /// Required angle: radians in `v`, degrees in the file (`key` ends in _deg).
-  void angle(const char* key, double& v, const ValueCheck& checkDeg = {}) { v = map_.getDouble(key, checkDeg) * kDegToRad; }
+  void angle(const char* key, double& v, const ValueCheck& checkDeg = {}) {
+    v = map_.getDouble(key, checkDeg) * kDegToRad;
+  }
   /// Optional angle: `v` (rad) holds its default on entry.
   void optionalAngle(const char* key, double& v, const ValueCheck& checkDeg = {}) {
     v = map_.getDouble(key, v * kRadToDeg, checkDeg) * kDegToRad;

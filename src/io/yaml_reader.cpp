@@ -71,7 +71,8 @@ class NodeCounter final : public YAML::EventHandler {
  private:
   void count(const YAML::Mark& mark) {
     if (++count_ > kMaxYamlSourceNodes) {
-      throw InputError(path_ + ":" + std::to_string(mark.line + 1) + ": more than " + std::to_string(kMaxYamlSourceNodes) +
+      throw InputError(path_ + ":" + std::to_string(mark.line + 1) + ": more than " +
+                       std::to_string(kMaxYamlSourceNodes) +
                        " YAML values in one file (the limit; no participant, model or study file needs as many: "
                        "is a long list, perhaps under a misspelt key, pasted in by mistake?)");
     }
@@ -100,8 +101,7 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, long& 
   }
   if (--budget < 0) {
     throw InputError(path + ":" + std::to_string(node.Mark().line + 1) + ": more than " +
-                     std::to_string(kMaxYamlNodes) +
-                     " YAML values (do aliases (*name) refer to lists of aliases?)");
+                     std::to_string(kMaxYamlNodes) + " YAML values (do aliases (*name) refer to lists of aliases?)");
   }
   if (node.IsMap()) {
     std::set<std::string> seen;
@@ -112,8 +112,8 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, long& 
         throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) +
                          ": <<: YAML merge keys are not supported (write the merged keys out in this mapping)");
       if (!seen.insert(key).second) {
-        throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) + ": " +
-                         key + ": key appears twice in the same mapping");
+        throw InputError(path + ":" + std::to_string(kv.first.Mark().line + 1) + ": " + key +
+                         ": key appears twice in the same mapping");
       }
       rejectDuplicateKeys(kv.second, path, budget, depth + 1);
     }
@@ -137,12 +137,10 @@ YamlMap fromText(const std::string& text, const std::string& path) {
     }
     root = YAML::Load(body);
   } catch (const YAML::Exception& e) {
-    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " +
-                     e.msg);
+    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
   if (!root.IsMap()) {
-    throw InputError(path + ":1: expected a YAML mapping of keys (got " + describe(root) +
-                     ")");
+    throw InputError(path + ":1: expected a YAML mapping of keys (got " + describe(root) + ")");
   }
   long budget = kMaxYamlNodes;
   rejectDuplicateKeys(root, path, budget);
@@ -153,9 +151,7 @@ YamlMap fromText(const std::string& text, const std::string& path) {
 
 YamlMap YamlMap::loadFile(const std::string& path) { return fromText(readFile(path), path); }
 
-YamlMap YamlMap::loadString(const std::string& text, const std::string& path) {
-  return fromText(text, path);
-}
+YamlMap YamlMap::loadString(const std::string& text, const std::string& path) { return fromText(text, path); }
 
 YamlMap::YamlMap(YAML::Node node, std::string path, std::string keyPrefix)
     : node_(std::move(node)), path_(std::move(path)), prefix_(std::move(keyPrefix)) {}
@@ -176,13 +172,14 @@ int YamlMap::lineOf(const std::string& key) const {
 
 std::string YamlMap::where(const std::string& key) const {
   std::string s = path_ + ":" + std::to_string(std::max(1, lineOf(key))) + ": ";
-  if (!key.empty()) s += prefix_ + key + ": ";
-  else if (!prefix_.empty()) s += prefix_.substr(0, prefix_.size() - 1) + ": ";
+  if (!key.empty())
+    s += prefix_ + key + ": ";
+  else if (!prefix_.empty())
+    s += prefix_.substr(0, prefix_.size() - 1) + ": ";
   return s;
 }
 
-void YamlMap::fail(const std::string& key, const std::string& what,
-                   const std::string& got) const {
+void YamlMap::fail(const std::string& key, const std::string& what, const std::string& got) const {
   throw InputError(where(key) + what + " (got " + got + ")");
 }
 
@@ -216,8 +213,7 @@ double YamlMap::toDouble(const YAML::Node& n, const std::string& key) const {
   return v;
 }
 
-double YamlMap::getDouble(const std::string& key,
-                          const std::function<std::string(double)>& check) {
+double YamlMap::getDouble(const std::string& key, const std::function<std::string(double)>& check) {
   YAML::Node n = require(key);
   double v = toDouble(n, key);
   if (check) {
@@ -359,8 +355,8 @@ void YamlMap::finish() const {
   for (const auto& kv : node_) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
     if (std::find(used_.begin(), used_.end(), key) == used_.end()) {
-      throw InputError(path_ + ":" + std::to_string(kv.first.Mark().line + 1) + ": " + prefix_ +
-                       key + ": unknown key (check the spelling; see docs/formats.md)");
+      throw InputError(path_ + ":" + std::to_string(kv.first.Mark().line + 1) + ": " + prefix_ + key +
+                       ": unknown key (check the spelling; see docs/formats.md)");
     }
   }
 }

@@ -31,10 +31,8 @@ class YamlMap {
 
   /// Required finite number; `check` (optional) returns an empty string if the value is
   /// fine or a description of what is wrong ("must be positive").
-  double getDouble(const std::string& key,
-                   const std::function<std::string(double)>& check = {});
-  double getDouble(const std::string& key, double defaultValue,
-                   const std::function<std::string(double)>& check = {});
+  double getDouble(const std::string& key, const std::function<std::string(double)>& check = {});
+  double getDouble(const std::string& key, double defaultValue, const std::function<std::string(double)>& check = {});
   int getInt(const std::string& key, int defaultValue);
   /// Required whole number from 0 to `max`, read exactly (digits, no rounding through a
   /// double): a seed. Fails with `expected an integer in [0, RANGE] (got VALUE)`, `range`
@@ -66,8 +64,7 @@ class YamlMap {
 
   /// `file:line: key: ` prefix for messages about `key` (or the map itself if empty).
   std::string where(const std::string& key = "") const;
-  [[noreturn]] void fail(const std::string& key, const std::string& what,
-                         const std::string& got) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& what, const std::string& got) const;
 
   const std::string& path() const { return path_; }
   /// Directory of the file, for resolving relative paths in it.
@@ -90,8 +87,8 @@ class YamlMap {
 };
 
 struct YamlMap::TextOrMap {
-  std::string text;             ///< the item, if it is a text value
-  std::optional<YamlMap> map;   ///< the item, if it is a mapping
+  std::string text;            ///< the item, if it is a text value
+  std::optional<YamlMap> map;  ///< the item, if it is a mapping
 };
 
 /// Common value checks for getDouble.

@@ -11,7 +11,6 @@ namespace swingsim {
 
 namespace {
 
-
 // Periodic Catmull-Rom through the stride's frames, s in [0, 1).
 double interpolate(const std::vector<double>& v, double s) {
   const int n = static_cast<int>(v.size());
@@ -60,11 +59,10 @@ double calcOffset(const std::vector<double>& v, double scale, double target) {
 
 }  // namespace
 
-
 namespace {
 
-double modifiedFlexion(const std::vector<double>& v, const BenchProfileParams& p, double offset,
-                       const Landmarks& m, double s) {
+double modifiedFlexion(const std::vector<double>& v, const BenchProfileParams& p, double offset, const Landmarks& m,
+                       double s) {
   s -= std::floor(s);
   double th = p.amplitudeScale * interpolate(v, s) + offset;
   // Stretch stance extension and pre-swing flexion so the stance minimum reaches the
@@ -87,7 +85,8 @@ double calcModifiedFlexion(const KneeAngleStride& stride, const BenchProfilePara
 BenchProfile makeBenchProfile(const KneeAngleStride& stride, const BenchProfileParams& p,
                               const KneeGeometry& geometry) {
   if (!(p.strideTime > 0) || !(p.amplitudeScale > 0) || !(p.sampleRate > 0) || p.cycles < 1 || p.holdSamples < 0)
-    throw std::invalid_argument("makeBenchProfile: stride time, amplitude scale, sample rate and cycles must be positive");
+    throw std::invalid_argument(
+        "makeBenchProfile: stride time, amplitude scale, sample rate and cycles must be positive");
   if (stride.flexion.size() < 8) throw std::invalid_argument("makeBenchProfile: stride has too few frames");
   const double offset = calcOffset(stride.flexion, p.amplitudeScale, p.terminalSwingMinimum);
   const Landmarks m = findLandmarks(stride.flexion, p.amplitudeScale, offset);

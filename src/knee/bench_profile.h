@@ -18,18 +18,17 @@ struct KneeAngleStride {
   std::string source;           ///< file the stride came from, for messages
 };
 
-
 struct BenchProfileParams {
-  double strideTime = 0.987;      ///< s, > 0 (Winter natural cadence: 0.987 s)
-  double amplitudeScale = 1.0;    ///< knee angles multiplied by this (speed effect), > 0
+  double strideTime = 0.987;    ///< s, > 0 (Winter natural cadence: 0.987 s)
+  double amplitudeScale = 1.0;  ///< knee angles multiplied by this (speed effect), > 0
   /// The curve is shifted so its lowest point (Winter's terminal swing, -3 deg) sits here, rad:
   /// the bench must not latch in terminal swing (the paper: end-swing hyperextension is too
   /// brief to act on the knee).
   double terminalSwingMinimum = 3.0 * kDegToRad;
   /// Stance-extension minimum moved to this angle, rad (< 0: hyperextension).
   double hyperextension = -4.0 * kDegToRad;
-  int holdSamples = 4;            ///< samples either side of the minimum held at it
-  double sampleRate = 361.4;      ///< Hz
+  int holdSamples = 4;        ///< samples either side of the minimum held at it
+  double sampleRate = 361.4;  ///< Hz
   int cycles = 5;
 };
 
@@ -46,7 +45,6 @@ struct BenchProfile {
 double calcModifiedFlexion(const KneeAngleStride& stride, const BenchProfileParams& p, double s);
 
 /// Builds the sampled profile. Throws std::invalid_argument on bad parameters.
-BenchProfile makeBenchProfile(const KneeAngleStride& stride, const BenchProfileParams& p,
-                              const KneeGeometry& geometry);
+BenchProfile makeBenchProfile(const KneeAngleStride& stride, const BenchProfileParams& p, const KneeGeometry& geometry);
 
 }  // namespace swingsim

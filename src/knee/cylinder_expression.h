@@ -1,9 +1,9 @@
 #pragma once
 // A cylinder force a user writes as an expression (knee/expression_parser.h) in the piston's
 // position and speed: the effect a cylinder diagnosis finds missing and no library effect
-// stands for (docs/diagnosis.md, "Your own effect: a cylinder force you write"). The result is a force in N added to the
-// Mauch cylinder's (knee/mauch_cylinder.h), in its convention: positive resists compression
-// (x > 0 in flexion, so a force resisting flexion is positive while the piston compresses).
+// stands for (docs/diagnosis.md, "Your own effect: a cylinder force you write"). The result is a force in N added to
+// the Mauch cylinder's (knee/mauch_cylinder.h), in its convention: positive resists compression (x > 0 in flexion, so a
+// force resisting flexion is positive while the piston compresses).
 #include <memory>
 #include <mutex>
 #include <string>

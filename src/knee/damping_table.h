@@ -1,8 +1,8 @@
 #pragma once
 // Dynamometer damping table (Burkett 2004, Methods: the knee's resisting moment recorded
 // in passive mode while it moved from 0 to 70 deg of flexion at one dynamometer speed).
-#include "core/units.h"
 #include <vector>
+#include "core/units.h"
 
 #include "knee/knee_law.h"
 
@@ -19,8 +19,8 @@ enum class DampingSpeedRule {
 };
 
 struct DampingTableParams {
-  std::vector<double> flexion;  ///< knee flexion grid, rad, strictly increasing
-  std::vector<double> moment;   ///< resisting moment magnitude at referenceRate, N m, >= 0
+  std::vector<double> flexion;               ///< knee flexion grid, rad, strictly increasing
+  std::vector<double> moment;                ///< resisting moment magnitude at referenceRate, N m, >= 0
   double referenceRate = 150.0 * kDegToRad;  ///< rad/s
   DampingSpeedRule speedRule = DampingSpeedRule::kLinear;
   /// Extension resistance as a fraction of flexion resistance (1 = same table).

@@ -27,16 +27,19 @@ void checkParameterNames(const KneeExpressionParams& p, const std::vector<KneeEx
   std::set<std::string> seen;
   for (const auto& q : p.parameters) {
     if (!isIdentifier(q.name))
-      throw KneeExpressionError("parameter '" + q.name + "': expected a name of letters, digits and _, not starting with a digit", -1);
+      throw KneeExpressionError(
+          "parameter '" + q.name + "': expected a name of letters, digits and _, not starting with a digit", -1);
     for (const auto& v : variables)
       if (q.name == v.name)
-        throw KneeExpressionError("parameter '" + q.name + "': the name of a state variable (" + variableList(variables) + ")", -1);
+        throw KneeExpressionError(
+            "parameter '" + q.name + "': the name of a state variable (" + variableList(variables) + ")", -1);
     if (!seen.insert(q.name).second) throw KneeExpressionError("parameter '" + q.name + "' is named twice", -1);
     if (!std::isfinite(q.value)) throw KneeExpressionError("parameter '" + q.name + "': expected a finite value", -1);
   }
 }
 
-KneeExpressionError fromParser(const mu::Parser::exception_type& e, const std::vector<KneeExpressionVariable>& variables) {
+KneeExpressionError fromParser(const mu::Parser::exception_type& e,
+                               const std::vector<KneeExpressionVariable>& variables) {
   std::string message = e.GetMsg();
   if (message.find("Unexpected token") != std::string::npos && !e.GetToken().empty())
     message += " (a name must be a state variable: " + variableList(variables) + "; or one of the parameters)";
@@ -49,7 +52,8 @@ std::string describeKneeExpressionError(const std::string& expression, const Kne
   std::string out = error.what();
   const int at = error.position();
   if (at >= 0 && static_cast<std::size_t>(at) <= expression.size())
-    out += " (character " + std::to_string(at + 1) + " of the expression: \"" + expression.substr(static_cast<std::size_t>(at)) + "\")";
+    out += " (character " + std::to_string(at + 1) + " of the expression: \"" +
+           expression.substr(static_cast<std::size_t>(at)) + "\")";
   return out;
 }
 

@@ -37,8 +37,7 @@ struct KneeExpressionVariable {
 /// expression (-1: not tied to a position).
 class KneeExpressionError : public std::invalid_argument {
  public:
-  KneeExpressionError(const std::string& message, int position)
-      : std::invalid_argument(message), position_(position) {}
+  KneeExpressionError(const std::string& message, int position) : std::invalid_argument(message), position_(position) {}
   int position() const { return position_; }
 
  private:

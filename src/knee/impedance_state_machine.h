@@ -30,12 +30,12 @@ enum class ThresholdSide { kAny, kAbove, kBelow };
 
 /// The rule that ends a state: every condition given must hold at once.
 struct ImpedanceTransition {
-  std::string to;                            ///< name of the next state (the following one in the list)
+  std::string to;  ///< name of the next state (the following one in the list)
   ThresholdSide flexionSide = ThresholdSide::kAny;
-  double flexion = 0;                        ///< knee flexion threshold, rad
+  double flexion = 0;  ///< knee flexion threshold, rad
   ThresholdSide rateSide = ThresholdSide::kAny;
-  double rate = 0;                           ///< knee flexion rate threshold, rad/s
-  double minTime = 0;                        ///< minimum time in the state before it may end, s, >= 0
+  double rate = 0;     ///< knee flexion rate threshold, rad/s
+  double minTime = 0;  ///< minimum time in the state before it may end, s, >= 0
 };
 
 /// One controller state: M = -k (theta - theta_eq) - b theta_dot.

@@ -7,7 +7,8 @@
 namespace swingsim {
 
 JointStop::JointStop(JointStopParams params) : p_(params) {
-  if (p_.upper && !(*p_.upper > p_.lower)) throw std::invalid_argument("joint stop: upper limit must exceed lower limit");
+  if (p_.upper && !(*p_.upper > p_.lower))
+    throw std::invalid_argument("joint stop: upper limit must exceed lower limit");
   if (!(p_.stiffness > 0)) throw std::invalid_argument("joint stop: stiffness must be positive");
   if (!(p_.restitution >= 0 && p_.restitution <= 1))
     throw std::invalid_argument("joint stop: restitution must be in [0, 1]");

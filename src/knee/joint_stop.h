@@ -18,7 +18,7 @@
 namespace swingsim {
 
 struct JointStopParams {
-  double lower = 0;  ///< angle where the lower stop engages, rad
+  double lower = 0;             ///< angle where the lower stop engages, rad
   std::optional<double> upper;  ///< angle where the upper stop engages, rad; absent: no upper stop
   /// k in M = k p^1.5, N m / rad^1.5. 2e4 keeps the overshoot of a 0.2 kg m^2 shank hitting
   /// at 8 rad/s at 3.3 deg, within Burkett 2004's "within 4 deg of full extension"

@@ -40,9 +40,7 @@ class KneeAddedEffects final : public KneeLaw {
   std::string name() const override { return "added knee effects"; }
   double calcMoment(const KneeKinematics& knee, const double* z) const override;
   /// Passive if the friction, the damping and the spring are not negative.
-  bool isPassive() const override {
-    return p_.coulombMoment >= 0 && p_.viscousDamping >= 0 && p_.assistStiffness >= 0;
-  }
+  bool isPassive() const override { return p_.coulombMoment >= 0 && p_.viscousDamping >= 0 && p_.assistStiffness >= 0; }
   /// The assist spring's k flexion^2 / 2.
   double calcStoredEnergy(const KneeKinematics& knee, const double*) const override {
     return 0.5 * p_.assistStiffness * knee.flexion * knee.flexion;

@@ -17,8 +17,7 @@ double KneeFriction::calcGate(double flexion) const {
 }
 
 double KneeFriction::calcMoment(const KneeKinematics& knee, const double*) const {
-  return -p_.frictionMoment * calcGate(knee.flexion) *
-         std::tanh(knee.flexionRate / p_.smoothingRate);
+  return -p_.frictionMoment * calcGate(knee.flexion) * std::tanh(knee.flexionRate / p_.smoothingRate);
 }
 
 }  // namespace swingsim

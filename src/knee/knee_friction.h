@@ -7,7 +7,7 @@
 namespace swingsim {
 
 struct KneeFrictionParams {
-  double frictionMoment = 0;  ///< Tc, N m, >= 0 (Burkett Table 2)
+  double frictionMoment = 0;             ///< Tc, N m, >= 0 (Burkett Table 2)
   double activeBelow = 4.0 * kDegToRad;  ///< flexion, rad
   /// Width of the smooth switch-off around activeBelow, rad.
   double angleWidth = 0.5 * kDegToRad;

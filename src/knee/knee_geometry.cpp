@@ -27,9 +27,7 @@ double KneeGeometry::calcPistonPosition(double theta) const { return length0_ - 
 
 double KneeGeometry::calcMomentArm(double theta) const { return -calcLengthDerivative(theta); }
 
-double KneeGeometry::calcPistonVelocity(double theta, double thetaDot) const {
-  return calcMomentArm(theta) * thetaDot;
-}
+double KneeGeometry::calcPistonVelocity(double theta, double thetaDot) const { return calcMomentArm(theta) * thetaDot; }
 
 double KneeGeometry::calcFlexion(double x) const {
   const double bc = length0_ - x;

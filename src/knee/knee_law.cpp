@@ -17,8 +17,7 @@ void KneeLawSum::add(std::unique_ptr<KneeLaw> law) {
   laws_.push_back(std::move(law));
 }
 
-double KneeLawSum::calcPartMoment(std::size_t i, const KneeKinematics& knee,
-                                  const double* z) const {
+double KneeLawSum::calcPartMoment(std::size_t i, const KneeKinematics& knee, const double* z) const {
   return laws_[i]->calcMoment(knee, z + offsets_[i]);
 }
 
@@ -44,8 +43,7 @@ double KneeLawSum::calcMoment(const KneeKinematics& knee, const double* z) const
   return m;
 }
 
-void KneeLawSum::calcStateDerivatives(const KneeKinematics& knee, const double* z,
-                                      double* zdot) const {
+void KneeLawSum::calcStateDerivatives(const KneeKinematics& knee, const double* z, double* zdot) const {
   for (std::size_t i = 0; i < laws_.size(); ++i) {
     laws_[i]->calcStateDerivatives(knee, z + offsets_[i], zdot + offsets_[i]);
   }

@@ -36,8 +36,7 @@ class KneeLaw {
   /// Knee moment in N m (positive = flexion direction). `z` holds numStates() values.
   virtual double calcMoment(const KneeKinematics& knee, const double* z) const = 0;
   /// Time derivatives of the law's states, written to zdot[0..numStates()).
-  virtual void calcStateDerivatives(const KneeKinematics& /*knee*/, const double* /*z*/,
-                                    double* /*zdot*/) const {}
+  virtual void calcStateDerivatives(const KneeKinematics& /*knee*/, const double* /*z*/, double* /*zdot*/) const {}
   /// Whether the law is passive: the leg's mechanical energy plus calcStoredEnergy never
   /// rises under it (a resisting moment, never of the rate's sign, stores nothing; a spring
   /// or the stop stores what it may give back). The swing stops early on this: a leg whose
@@ -71,8 +70,7 @@ class KneeLawSum final : public KneeLaw {
   int numStates() const override;
   void initialStates(double* z) const override;
   double calcMoment(const KneeKinematics& knee, const double* z) const override;
-  void calcStateDerivatives(const KneeKinematics& knee, const double* z,
-                            double* zdot) const override;
+  void calcStateDerivatives(const KneeKinematics& knee, const double* z, double* zdot) const override;
   /// Passive if it has parts and every part is.
   bool isPassive() const override;
   double calcStoredEnergy(const KneeKinematics& knee, const double* z) const override;

@@ -7,7 +7,7 @@ namespace swingsim {
 
 MauchSwitches calcMauchSwitches(double x, double xd, double s2, const MauchSwitchParams& sw) {
   return combineMauchSwitches(0.5 + 0.5 * std::tanh(xd / sw.velocityWidth),                                // Eq. 4
-                              s2,                                                                           // Eq. 5
+                              s2,                                                                          // Eq. 5
                               0.5 + 0.5 * std::tanh((x - sw.hyperextensionPosition) / sw.positionWidth));  // Eq. 16
 }
 
@@ -17,10 +17,10 @@ MauchSwitches combineMauchSwitches(double s1, double s2, double s8) {
   s.s2 = s2;
   s.s3 = 1.0 - s.s1 * (1.0 - s2);  // Eq. 3
   s.s8 = s8;
-  s.s4 = s.s1 * (1.0 - s2) * s.s8;                                                     // Eq. 12
-  s.s5 = (1.0 - s.s1) * s.s8;                                                          // Eq. 13
-  s.s6 = s.s1 * s2 * s.s8;                                                             // Eq. 14
-  s.s7 = 1.0 - s.s8;                                                                   // Eq. 15
+  s.s4 = s.s1 * (1.0 - s2) * s.s8;  // Eq. 12
+  s.s5 = (1.0 - s.s1) * s.s8;       // Eq. 13
+  s.s6 = s.s1 * s2 * s.s8;          // Eq. 14
+  s.s7 = 1.0 - s.s8;                // Eq. 15
   return s;
 }
 
@@ -38,8 +38,8 @@ std::vector<double> calcPhaseGates(int phases, const MauchSwitches& s) {
 }
 
 std::vector<double> calcLatchHistory(const std::vector<double>& time, const std::vector<double>& x,
-                                     const std::vector<double>& xd, const MauchSwitchParams& sw,
-                                     double s2Start, int substeps) {
+                                     const std::vector<double>& xd, const MauchSwitchParams& sw, double s2Start,
+                                     int substeps) {
   if (x.size() != time.size() || xd.size() != time.size())
     throw std::invalid_argument("calcLatchHistory: time, x and xd differ in length");
   if (substeps < 1) throw std::invalid_argument("calcLatchHistory: substeps must be >= 1");
@@ -73,9 +73,9 @@ void require(bool ok, const std::string& what) {
 
 MauchCylinder::MauchCylinder(MauchCylinderParams params) : p_(std::move(params)), geometry_(p_.geometry) {
   require(p_.phases == 2 || p_.phases == 4, "phases must be 2 or 4 (got " + std::to_string(p_.phases) + ")");
-  require(static_cast<int>(p_.coefficients.size()) == p_.phases,
-          "expected " + std::to_string(p_.phases) + " phase coefficient sets (got " +
-              std::to_string(p_.coefficients.size()) + ")");
+  require(static_cast<int>(p_.coefficients.size()) == p_.phases, "expected " + std::to_string(p_.phases) +
+                                                                     " phase coefficient sets (got " +
+                                                                     std::to_string(p_.coefficients.size()) + ")");
   for (const auto& c : p_.coefficients)
     require(std::isfinite(c.f) && std::isfinite(c.k) && std::isfinite(c.c), "coefficients must be finite");
   const auto& sw = p_.switches;
@@ -129,7 +129,8 @@ double MauchCylinder::calcForce(double x, double xd, double xdd, double s2) cons
     force += gates[static_cast<std::size_t>(i)] * (c.f + c.k * x + c.c * xd);
   }
   const auto& e = p_.effects;
-  if (e.hyperextensionPhase) force += gates[p_.phases] * (e.hyperextension.f + e.hyperextension.k * x + e.hyperextension.c * xd);
+  if (e.hyperextensionPhase)
+    force += gates[p_.phases] * (e.hyperextension.f + e.hyperextension.k * x + e.hyperextension.c * xd);
   if (e.coulombFriction) force += e.coulombForce * std::tanh(xd / e.coulombWidth);
   if (e.orificeQuadratic) force += e.orificeCoefficient * xd * std::fabs(xd);
   if (e.inertia) force += e.pistonMass * xdd;
@@ -180,11 +181,11 @@ std::vector<double> MauchCylinder::getCoefficientVector() const {
 }
 
 void setMauchCoefficientVector(MauchCylinderParams& params, const std::vector<double>& b) {
-  const std::size_t expected = 3 * static_cast<std::size_t>(params.phases) +
-                               static_cast<std::size_t>(params.effects.numCoefficients());
+  const std::size_t expected =
+      3 * static_cast<std::size_t>(params.phases) + static_cast<std::size_t>(params.effects.numCoefficients());
   if (b.size() != expected || params.coefficients.size() != static_cast<std::size_t>(params.phases))
-    throw std::invalid_argument("setMauchCoefficientVector: expected " + std::to_string(expected) + " coefficients (got " +
-                                std::to_string(b.size()) + ")");
+    throw std::invalid_argument("setMauchCoefficientVector: expected " + std::to_string(expected) +
+                                " coefficients (got " + std::to_string(b.size()) + ")");
   std::size_t i = 0;
   for (auto& c : params.coefficients) {
     c.f = b[i++];

@@ -73,7 +73,7 @@ struct MauchAddedEffects {
 };
 
 struct MauchCylinderParams {
-  int phases = 4;  ///< 2 or 4
+  int phases = 4;                                    ///< 2 or 4
   std::vector<MauchPhaseCoefficients> coefficients;  ///< one per phase, phase 1 first
   MauchSwitchParams switches;
   KneeGeometryParams geometry;
@@ -106,8 +106,8 @@ std::vector<double> calcPhaseGates(int phases, const MauchSwitches& s);
 /// stiff latch (k = 1e4/s against 361.4 Hz samples) stays stable and in [0, 1].
 /// `time` (s) strictly increasing; all vectors the same length. Returns S2 at each sample.
 std::vector<double> calcLatchHistory(const std::vector<double>& time, const std::vector<double>& x,
-                                     const std::vector<double>& xd, const MauchSwitchParams& sw,
-                                     double s2Start, int substeps = 10);
+                                     const std::vector<double>& xd, const MauchSwitchParams& sw, double s2Start,
+                                     int substeps = 10);
 
 /// Writes a coefficient vector in MauchCylinder::calcRegressorRow's order back into `params`.
 /// Throws std::invalid_argument if its size differs from the model's coefficient count.
@@ -142,7 +142,9 @@ class MauchCylinder final : public KneeLaw {
   /// The regression row for one sample: for each phase p, {g_p, g_p x, g_p xd}, then the
   /// added effects' columns (hyperextension phase {g, g x, g xd}, tanh(xd/width), xd|xd|,
   /// xdd, x xd), so that calcForce = row . getCoefficientVector(). Size numCoefficients().
-  std::vector<double> calcRegressorRow(double x, double xd, double s2) const { return calcRegressorRow(x, xd, 0.0, s2); }
+  std::vector<double> calcRegressorRow(double x, double xd, double s2) const {
+    return calcRegressorRow(x, xd, 0.0, s2);
+  }
   std::vector<double> calcRegressorRow(double x, double xd, double xdd, double s2) const;
   /// The same row written to row[0 .. numCoefficients()), without allocating.
   void calcRegressorRow(double x, double xd, double xdd, double s2, double* row) const;
@@ -150,7 +152,9 @@ class MauchCylinder final : public KneeLaw {
   std::vector<double> getCoefficientVector() const;
   /// The users' expression forces (N) at x (m), xd (m/s): 0 without any. Part of calcForce,
   /// not of the regressor row.
-  double calcExpressionForce(double x, double xd) const { return expressions_.empty() ? 0.0 : expressions_.calcForce(x, xd); }
+  double calcExpressionForce(double x, double xd) const {
+    return expressions_.empty() ? 0.0 : expressions_.calcForce(x, xd);
+  }
 
   std::string name() const override;
   int numStates() const override { return 1; }

@@ -24,8 +24,8 @@ void checkColumn(const std::string& where, const char* name, const std::vector<d
                      std::to_string(column.size()) + ")");
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(column[i]))
-      throw InputError(where + ": " + name + ": expected a finite value at sample " + std::to_string(i + 1) +
-                       " (got " + formatNumber(column[i]) + ")");
+      throw InputError(where + ": " + name + ": expected a finite value at sample " + std::to_string(i + 1) + " (got " +
+                       formatNumber(column[i]) + ")");
 }
 
 SimTK::Spline fit(const std::string& where, const std::vector<double>& time, const std::vector<double>& value) {
@@ -38,7 +38,8 @@ SimTK::Spline fit(const std::string& where, const std::vector<double>& time, con
   try {
     return SimTK::SplineFitter<SimTK::Real>::fitFromGCV(5, t, v).getSpline();
   } catch (const std::exception& e) {  // SimTK's GCVSPL refuses what it cannot fit
-    throw InputError(where + ": the hip joint centre's path could not be fitted by a smoothing spline (" + e.what() + ")");
+    throw InputError(where + ": the hip joint centre's path could not be fitted by a smoothing spline (" + e.what() +
+                     ")");
   }
 }
 

@@ -56,8 +56,7 @@ double KneeForceElement::getWork(const State& s) const {
   return work;
 }
 
-void KneeForceElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&,
-                                 Vector& mobilityForces) const {
+void KneeForceElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&, Vector& mobilityForces) const {
   matter_.getMobilizedBody(shank_).applyOneMobilityForce(s, 0, calcKneeMoment(s), mobilityForces);
 }
 
@@ -102,8 +101,7 @@ double HipDriveElement::getWork(const State& s) const {
   return s.getZ(subsystem_)[workZ_];
 }
 
-void HipDriveElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&,
-                                Vector& mobilityForces) const {
+void HipDriveElement::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&, Vector& mobilityForces) const {
   matter_.getMobilizedBody(thigh_).applyOneMobilityForce(s, 0, calcHipMoment(s), mobilityForces);
 }
 

@@ -102,10 +102,7 @@ class PrescribedHipImpl final : public Motion::Custom::Implementation {
 LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment,
                    const HipRange& hipRange, double hipHeight, bool trackWork, const ThighMotion* prescribedThigh,
                    const HipPath* hipPath)
-    : matter_(system_),
-      forces_(system_),
-      footLength_(g.footLength),
-      shankLength_(g.shankLength) {
+    : matter_(system_), forces_(system_), footLength_(g.footLength), shankLength_(g.shankLength) {
   Force::UniformGravity(forces_, matter_, Vec3(0, -kGravity, 0));
 
   // Burkett's orientation link (a massless weld placing the hip in space) is the hip pin's
@@ -129,8 +126,8 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
                       : MobilizedBody::Pin(matter_.Ground(), hipInGround, thighBody, Transform());
 
   const Rotation flip(Pi, XAxis);  // makes the knee pin's +q a flexion (see header)
-  shank_ = MobilizedBody::Pin(thigh_, Transform(flip, Vec3(0, -g.thighLength, 0)), Body::Rigid(calcShankFootMassProperties(g)),
-                              Transform(flip, Vec3(0)));
+  shank_ = MobilizedBody::Pin(thigh_, Transform(flip, Vec3(0, -g.thighLength, 0)),
+                              Body::Rigid(calcShankFootMassProperties(g)), Transform(flip, Vec3(0)));
 
   JointStopParams range;
   range.lower = hipRange.minFlexion;
@@ -175,7 +172,8 @@ double LegModel::calcHipMoment(const State& s) const {
 }
 
 double LegModel::getHipWork(const State& s) const {
-  if (hipDrive_ == nullptr) throw std::logic_error("LegModel::getHipWork: the thigh is prescribed; its work is not integrated");
+  if (hipDrive_ == nullptr)
+    throw std::logic_error("LegModel::getHipWork: the thigh is prescribed; its work is not integrated");
   return hipDrive_->getWork(s);
 }
 

@@ -103,10 +103,10 @@ class LegModel {
   SimTK::MobilizedBody::Translation carrier_;  // only with a moving hip
   SimTK::MobilizedBody::Pin thigh_;
   SimTK::MobilizedBody::Pin shank_;
-  const KneeForceElement* knee_ = nullptr;    // owned by forces_
+  const KneeForceElement* knee_ = nullptr;     // owned by forces_
   const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_; null with a prescribed thigh
-  double footLength_;   // m, ankle to toe (for calcPose)
-  double shankLength_;  // m, knee to ankle (for calcPose)
+  double footLength_;                          // m, ankle to toe (for calcPose)
+  double shankLength_;                         // m, knee to ankle (for calcPose)
   int kneeCoordinate_ = 1;
   bool movingHip_ = false;
 };

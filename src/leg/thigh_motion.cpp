@@ -27,7 +27,8 @@ void check(const ThighKinematics& k) {
     throw InputError(where + ": expected at least " + std::to_string(ThighMotion::kMinSamples) +
                      " thigh angle samples to prescribe the thigh, found " + std::to_string(n));
   if (k.time[0] != 0)
-    throw InputError(where + ": the first sample must be toe-off at time 0 s (found " + formatNumber(k.time[0]) + " s)");
+    throw InputError(where + ": the first sample must be toe-off at time 0 s (found " + formatNumber(k.time[0]) +
+                     " s)");
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(k.hipFlexion[i]) || !std::isfinite(k.time[i]))
       throw InputError(where + ": sample " + std::to_string(i + 1) + " is not finite");

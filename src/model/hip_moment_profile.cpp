@@ -10,9 +10,7 @@
 
 namespace swingsim {
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 double HipMomentProfile::calcMoment(double time) const {
   const double t = time / timeScale;
@@ -69,7 +67,8 @@ void HipMomentProfile::validate() const {
     return;
   }
   if (!(flexionDuration > 0) || !(extensionDuration > 0)) throw std::invalid_argument("durations must be positive");
-  if (!(flexionAmplitude >= 0) || !(extensionAmplitude >= 0)) throw std::invalid_argument("amplitudes must not be negative");
+  if (!(flexionAmplitude >= 0) || !(extensionAmplitude >= 0))
+    throw std::invalid_argument("amplitudes must not be negative");
 }
 
 std::string HipMomentProfile::describe() const {

@@ -14,10 +14,10 @@ struct HipMomentProfile {
 
   // kBiphasicSine: a hip-flexion half-sine then a hip-extension half-sine (the
   // concentric/concentric flexion-extension cycle of the dynamometer), then zero.
-  double flexionAmplitude = 30;    ///< N m, peak hip flexion moment
-  double flexionDuration = 0.20;   ///< s
-  double extensionAmplitude = 15;  ///< N m, peak hip extension moment (magnitude)
-  double extensionDuration = 0.20; ///< s
+  double flexionAmplitude = 30;     ///< N m, peak hip flexion moment
+  double flexionDuration = 0.20;    ///< s
+  double extensionAmplitude = 15;   ///< N m, peak hip extension moment (magnitude)
+  double extensionDuration = 0.20;  ///< s
 
   // kTable: moment (N m, + = flexion) at strictly increasing times (s); monotone cubic
   // (PCHIP slopes, knee/monotone_cubic.h) between samples, held at the end values outside.

@@ -61,21 +61,25 @@ using KneeKind = std::variant<DampingTableKnee, MauchKnee, ImpedanceStateMachine
 
 /// Everything a knee model file says.
 struct KneeModelSpec {
-  KneeKind kind;            ///< the kind and its parameters (a damping table unless set)
-  std::string name;         ///< empty: the file stem is used
+  KneeKind kind;     ///< the kind and its parameters (a damping table unless set)
+  std::string name;  ///< empty: the file stem is used
   std::string description, source;
-  bool hasKneeEffects = false;                  ///< a `knee_effects:` map
+  bool hasKneeEffects = false;  ///< a `knee_effects:` map
   KneeAddedEffectsParams kneeEffects;
-  bool hasStop = false;                         ///< a `hyperextension_stop:` map (else defaults)
+  bool hasStop = false;  ///< a `hyperextension_stop:` map (else defaults)
   JointStopParams stop;
 
   /// The `kind:` key: damping_table, mauch, impedance_state_machine.
   const char* kindKey() const;
   /// The parameters of kind K, or nullptr if the spec is another kind.
   template <class K>
-  K* as() { return std::get_if<K>(&kind); }
+  K* as() {
+    return std::get_if<K>(&kind);
+  }
   template <class K>
-  const K* as() const { return std::get_if<K>(&kind); }
+  const K* as() const {
+    return std::get_if<K>(&kind);
+  }
 };
 
 /// The law a spec makes: the resisting law (scaled by kneeEffects.modelScale), the added
@@ -85,8 +89,8 @@ KneeLawSum makeKneeModelLaw(const KneeModelSpec& spec);
 /// A loaded knee model.
 struct KneeModel {
   std::string path;
-  std::string name;   ///< `name:` key, or the file stem
-  KneeLawSum law;     ///< the model's resisting law(s) followed by the hyperextension stop
+  std::string name;    ///< `name:` key, or the file stem
+  KneeLawSum law;      ///< the model's resisting law(s) followed by the hyperextension stop
   KneeModelSpec spec;  ///< what the file said
 };
 

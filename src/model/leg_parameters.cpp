@@ -22,11 +22,11 @@ LegGeometry calcLegGeometry(const Participant& p, double lowering, const AddedMa
   }
   const double maxLowering = calcMaxLowering(p);
   if (lowering > maxLowering + 1e-12) {
-    throw InputError(p.path + ": lowering: " + formatNumber(lowering) + " m leaves no room for the shank of " +
-                     p.name + " (shank " + formatNumber(p.shank.length) + " m, at most " +
-                     formatNumber(std::floor(maxLowering * 1000) / 1000) +
-                     " m can be lowered with at least " + formatNumber(p.minShankLength) +
-                     " m of shank and its COM on it) (got " + formatNumber(lowering) + ")");
+    throw InputError(p.path + ": lowering: " + formatNumber(lowering) + " m leaves no room for the shank of " + p.name +
+                     " (shank " + formatNumber(p.shank.length) + " m, at most " +
+                     formatNumber(std::floor(maxLowering * 1000) / 1000) + " m can be lowered with at least " +
+                     formatNumber(p.minShankLength) + " m of shank and its COM on it) (got " + formatNumber(lowering) +
+                     ")");
   }
   LegGeometry g{};
   g.thighLength = p.thigh.length + lowering;
@@ -47,8 +47,7 @@ LegGeometry calcLegGeometry(const Participant& p, double lowering, const AddedMa
   g.footLength = p.foot.length;
   g.footMass = p.foot.mass;
   g.footInertia = p.foot.inertia;
-  g.footComForward = p.footComFrom == FootComFrom::kToe ? p.foot.length - p.foot.comFromDistal
-                                                         : p.foot.comFromDistal;
+  g.footComForward = p.footComFrom == FootComFrom::kToe ? p.foot.length - p.foot.comFromDistal : p.foot.comFromDistal;
   if (added.mass < 0 || added.distanceBelowKnee < 0 || added.distanceBelowKnee > g.shankLength) {
     throw InputError(p.path + ": added mass: must be >= 0 kg at 0.." + formatNumber(g.shankLength) +
                      " m below the knee (got " + formatNumber(added.mass) + " kg at " +

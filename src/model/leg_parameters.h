@@ -13,12 +13,12 @@
 
 namespace swingsim {
 
-
 /// One link as Burkett Table 2 gives it.
 struct SegmentParams {
   double length = 0;         ///< m, proximal joint to distal end
   double mass = 0;           ///< kg
-  double comFromDistal = 0;  ///< m, from the distal end back towards the proximal joint (Table 2's negative "distance to COM", as a magnitude)
+  double comFromDistal = 0;  ///< m, from the distal end back towards the proximal joint (Table 2's negative "distance
+                             ///< to COM", as a magnitude)
   double inertia = 0;        ///< kg m^2, about the COM (Izz)
 };
 
@@ -96,7 +96,7 @@ struct HipRange {
 
 /// A point mass added to the shank (Bach 1994), at a distance below the knee axis.
 struct AddedMass {
-  double mass = 0;          ///< kg
+  double mass = 0;               ///< kg
   double distanceBelowKnee = 0;  ///< m, along the shank
 };
 
@@ -113,7 +113,7 @@ enum class SwingDrive {
 /// A measured thigh (hip flexion) angle over a swing: the `thigh_kinematics:` file of a
 /// participant (a swing kinematics CSV or a motion file), or a measured swing record.
 struct ThighKinematics {
-  std::string path;                      ///< file it was read from ("" = given in code)
+  std::string path;  ///< file it was read from ("" = given in code)
   /// s from toe-off (first sample at 0); the thigh's angle in space, rad (hip flexion plus
   /// pelvis tilt when the recording has the pelvis).
   std::vector<double> time, hipFlexion;
@@ -134,12 +134,12 @@ struct ThighKinematics {
 struct Participant {
   std::string path;  ///< file it was loaded from
   std::string name;
-  std::string source;  ///< where the numbers come from (free text)
+  std::string source;   ///< where the numbers come from (free text)
   double height = 0;    ///< m, standing height
   double bodyMass = 0;  ///< kg
   SegmentParams thigh, shank, foot;
-  double kneeFriction = 0;     ///< Tc, N m (Burkett Table 2)
-  std::string kneeModelPath;   ///< resolved path of the knee model YAML
+  double kneeFriction = 0;    ///< Tc, N m (Burkett Table 2)
+  std::string kneeModelPath;  ///< resolved path of the knee model YAML
   ComRule comRule = ComRule::kFixedFromProximal;
   FootComFrom footComFrom = FootComFrom::kToe;
   InitialConditions initial;
@@ -147,9 +147,9 @@ struct Participant {
   ToeClearanceRule toeClearance;
   HipRange hipRange;
   SwingDrive drive = SwingDrive::kHipMoment;
-  HipMomentProfile hipMoment;        ///< the drive if drive == kHipMoment
-  ThighKinematics thighKinematics;   ///< the drive if drive == kThighKinematics
-  double minShankLength = 0.10;  ///< m: the knee unit and pylon clamp need at least this
+  HipMomentProfile hipMoment;       ///< the drive if drive == kHipMoment
+  ThighKinematics thighKinematics;  ///< the drive if drive == kThighKinematics
+  double minShankLength = 0.10;     ///< m: the knee unit and pylon clamp need at least this
   /// The hip joint centre in the pelvis frame, m (x forward, y up): where the hip sits when
   /// a measured pelvis moves it (`hip_offset_in_pelvis_m`; written by import-osim).
   std::optional<std::array<double, 2>> hipOffsetInPelvis;
@@ -162,15 +162,15 @@ struct Participant {
 struct LegGeometry {
   double thighLength, thighMass, thighCom, thighInertia;  ///< thighCom: m below the hip along the thigh
   double shankLength, shankMass, shankCom, shankInertia;  ///< shankCom: m below the knee
-  double footLength, footMass, footComForward, footInertia;  ///< footComForward: m ahead of the ankle, foot perpendicular to the shank
+  double footLength, footMass, footComForward,
+      footInertia;  ///< footComForward: m ahead of the ankle, foot perpendicular to the shank
   AddedMass added;
 };
 
 /// Applies a knee-axis lowering `lowering` (m, >= 0): thigh + d, shank - d, inertias about
 /// the COMs unchanged, COMs per `comRule`. Throws InputError if the shank would be shorter
 /// than `minShankLength` or a COM would leave its segment.
-LegGeometry calcLegGeometry(const Participant& participant, double lowering,
-                            const AddedMass& added = {});
+LegGeometry calcLegGeometry(const Participant& participant, double lowering, const AddedMass& added = {});
 
 /// Ground-frame landmark positions (m) from the joint angles, by planar kinematics: hip at
 /// (0, hipHeight), x forward, y up; the foot points along +x of the shank.

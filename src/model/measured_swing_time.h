@@ -14,8 +14,8 @@ struct MeasuredSwingTime {
   double swingTime = 0;     ///< s, the mean of `trials` swings
   /// s, trial-to-trial standard deviation of one swing; NaN when the file has none.
   double sd = std::numeric_limits<double>::quiet_NaN();
-  int trials = 1;           ///< swings averaged into swingTime
-  int line = 0;             ///< line in its file, for messages
+  int trials = 1;  ///< swings averaged into swingTime
+  int line = 0;    ///< line in its file, for messages
   /// s, the standard error of the mean: sd / sqrt(trials) (NaN without sd).
   double calcStandardError() const { return sd / std::sqrt(static_cast<double>(trials)); }
 };

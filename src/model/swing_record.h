@@ -11,7 +11,7 @@ namespace swingsim {
 struct SwingRecord {
   std::string path, stem;
   std::vector<double> time, hipFlexion, kneeFlexion;
-  std::vector<double> hipMoment;   ///< the measured drive; empty if not measured
+  std::vector<double> hipMoment;  ///< the measured drive; empty if not measured
   /// A knee moment measured independently (inverse dynamics), never fitted: compared with
   /// the model's after a diagnosis (HeldBackComparison). Empty if not given.
   std::vector<double> kneeMoment;

@@ -12,8 +12,9 @@ struct SwingTrajectory {
   std::size_t size() const { return time.size(); }
   /// Every column, in declaration order (to reserve or cut them all alike).
   std::array<std::vector<double>*, 13> columns() {
-    return {&time, &hipFlexion, &kneeFlexion, &hipFlexionRate, &kneeFlexionRate, &hipMoment, &kneeMoment,
-            &kneeX, &kneeY, &ankleX, &ankleY, &toeX, &toeY};
+    return {&time,      &hipFlexion, &kneeFlexion, &hipFlexionRate, &kneeFlexionRate,
+            &hipMoment, &kneeMoment, &kneeX,       &kneeY,          &ankleX,
+            &ankleY,    &toeX,       &toeY};
   }
 };
 

@@ -13,9 +13,7 @@ namespace swingsim {
 namespace {
 
 // The scaled coordinate u of a parameter: log(value) or value / typical.
-double toScaled(const BoundedParameter& p, double value) {
-  return p.logScale ? std::log(value) : value / p.typical;
-}
+double toScaled(const BoundedParameter& p, double value) { return p.logScale ? std::log(value) : value / p.typical; }
 double fromScaled(const BoundedParameter& p, double u) { return p.logScale ? std::exp(u) : u * p.typical; }
 // d value / d u at u.
 double scaledDerivative(const BoundedParameter& p, double u) { return p.logScale ? std::exp(u) : p.typical; }
@@ -108,8 +106,8 @@ class AnalyticScaledCost final : public ceres::CostFunction {
 // The solve shared by both fronts: `makeCost(m)` gives the Ceres cost for m residuals, `f0`
 // the residual at a point (for the start, and the reason a point cannot run).
 template <class MakeCost, class Residual>
-BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f0, const std::vector<BoundedParameter>& parameters,
-                             const BoundedFitSettings& settings);
+BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f0,
+                             const std::vector<BoundedParameter>& parameters, const BoundedFitSettings& settings);
 
 }  // namespace
 
@@ -134,7 +132,9 @@ BoundedFitResult solveBoundedLeastSquares(const ResidualFunction& f, const std::
 BoundedFitResult solveBoundedLeastSquares(const ResidualJacobianFunction& f,
                                           const std::vector<BoundedParameter>& parameters,
                                           const BoundedFitSettings& settings) {
-  const auto makeCost = [&](Eigen::Index m) -> ceres::CostFunction* { return new AnalyticScaledCost(f, parameters, m); };
+  const auto makeCost = [&](Eigen::Index m) -> ceres::CostFunction* {
+    return new AnalyticScaledCost(f, parameters, m);
+  };
   const auto f0 = [&](const Eigen::VectorXd& x) { return f(x, nullptr); };
   return solveScaled(makeCost, f0, parameters, settings);
 }
@@ -153,7 +153,8 @@ ScaledStart calcScaledStart(const std::vector<BoundedParameter>& parameters) {
   for (std::size_t k = 0; k < n; ++k) {
     const BoundedParameter& p = parameters[k];
     if (p.logScale && !(p.lower > 0))
-      throw std::invalid_argument("solveBoundedLeastSquares: log-scaled parameter " + p.name + " needs a positive lower bound");
+      throw std::invalid_argument("solveBoundedLeastSquares: log-scaled parameter " + p.name +
+                                  " needs a positive lower bound");
     if (!(p.lower <= p.upper)) throw std::invalid_argument("solveBoundedLeastSquares: empty range for " + p.name);
     s.lo[k] = toScaled(p, p.lower);
     s.hi[k] = p.upper >= 1e300 ? std::numeric_limits<double>::infinity() : toScaled(p, p.upper);
@@ -194,7 +195,8 @@ std::vector<bool> calcAtBound(const ScaledStart& s) {
   std::vector<bool> atBound(s.u.size(), false);
   for (std::size_t k = 0; k < s.u.size(); ++k) {
     const double tol = 1e-6 * std::max(1.0, std::abs(s.u[k]));
-    atBound[k] = (std::isfinite(s.lo[k]) && s.u[k] - s.lo[k] < tol) || (std::isfinite(s.hi[k]) && s.hi[k] - s.u[k] < tol);
+    atBound[k] =
+        (std::isfinite(s.lo[k]) && s.u[k] - s.lo[k] < tol) || (std::isfinite(s.hi[k]) && s.hi[k] - s.u[k] < tol);
   }
   return atBound;
 }
@@ -211,8 +213,8 @@ Eigen::MatrixXd toDense(const ceres::CRSMatrix& crs, Eigen::Index rows, Eigen::I
 /// Sets out.covariance to s^2 (J'J)^+ from the Jacobian J in scaled coordinates u, converted
 /// to the parameters' own units, and out.standardErrors to the square roots of its diagonal.
 /// The pseudo-inverse by SVD drops a direction the data do not fix.
-void setCovariance(const Eigen::MatrixXd& J, const std::vector<BoundedParameter>& parameters, const std::vector<double>& u,
-                   BoundedFitResult& out) {
+void setCovariance(const Eigen::MatrixXd& J, const std::vector<BoundedParameter>& parameters,
+                   const std::vector<double>& u, BoundedFitResult& out) {
   const Eigen::Index m = J.rows();
   const Eigen::Index ni = J.cols();
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
@@ -233,8 +235,8 @@ void setCovariance(const Eigen::MatrixXd& J, const std::vector<BoundedParameter>
 }
 
 template <class MakeCost, class Residual>
-BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f, const std::vector<BoundedParameter>& parameters,
-                             const BoundedFitSettings& settings) {
+BoundedFitResult solveScaled(const MakeCost& makeCost, const Residual& f,
+                             const std::vector<BoundedParameter>& parameters, const BoundedFitSettings& settings) {
   const std::size_t n = parameters.size();
   ScaledStart scaled = calcScaledStart(parameters);
   std::vector<double>& u = scaled.u;

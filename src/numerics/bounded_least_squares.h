@@ -36,7 +36,7 @@ struct BoundedFitSettings {
   double differenceStep = 1e-5;
   bool centralDifferences = false;  ///< forward differences cost half as many evaluations
   int maxIterations = 60;
-  double maxSeconds = 60.0;        ///< wall-clock budget of one solve
+  double maxSeconds = 60.0;         ///< wall-clock budget of one solve
   double functionTolerance = 1e-9;  ///< relative cost fall that ends the iterations
   double parameterTolerance = 1e-9;
   bool computeCovariance = true;
@@ -56,8 +56,8 @@ struct BoundedFitResult {
   Eigen::VectorXd residual;  ///< at x
   double cost = 0;           ///< squared norm of the residual (not Ceres' half of it)
   int iterations = 0;
-  bool converged = false;    ///< Ceres reported convergence (not a budget or failure)
-  std::string stopReason;    ///< Ceres' message when it did not converge
+  bool converged = false;     ///< Ceres reported convergence (not a budget or failure)
+  std::string stopReason;     ///< Ceres' message when it did not converge
   std::vector<bool> atBound;  ///< a parameter within 1e-6 (scaled) of a bound
   /// s^2 (J'J)^+ in the parameters' units, s^2 = cost / (residuals - parameters); NaN if
   /// not computed.

@@ -18,18 +18,15 @@ constexpr double a21 = 1.0 / 5;
 constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
 constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
 constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
-constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
-                 a65 = -5103.0 / 18656;
+constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176, a65 = -5103.0 / 18656;
 // 5th-order weights (also the 7th stage: FSAL).
-constexpr double a71 = 35.0 / 384, a73 = 500.0 / 1113, a74 = 125.0 / 192, a75 = -2187.0 / 6784,
-                 a76 = 11.0 / 84;
+constexpr double a71 = 35.0 / 384, a73 = 500.0 / 1113, a74 = 125.0 / 192, a75 = -2187.0 / 6784, a76 = 11.0 / 84;
 // y5 - y4 (Hairer's DOPRI5, E1..E7).
-constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
-                 e6 = 22.0 / 525, e7 = -1.0 / 40;
+constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525,
+                 e7 = -1.0 / 40;
 // Dense output (Hairer's DOPRI5, D1..D7; Hairer I, Sec. II.6).
-constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 32700410799,
-                 d4 = -10690763975.0 / 1880347072, d5 = 701980252875.0 / 199316789632,
-                 d6 = -1453857185.0 / 822651844, d7 = 69997945.0 / 29380423;
+constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 32700410799, d4 = -10690763975.0 / 1880347072,
+                 d5 = 701980252875.0 / 199316789632, d6 = -1453857185.0 / 822651844, d7 = 69997945.0 / 29380423;
 
 // Step-size controller (Hairer I, Eq. II.4.13): safety factor and limits on the change;
 // with Lund's PI stabilization (Hairer II, Sec. IV.2, Eq. 2.43c; DOPRI5's BETA = 0.04): the
@@ -59,8 +56,8 @@ DormandPrince::DormandPrince(const OdeSystem& system, double relTol, double absT
       maxStep_(std::numeric_limits<double>::infinity()) {
   if (n_ <= 0) throw std::invalid_argument("Dormand-Prince: the system has no states");
   checkStepTolerances("Dormand-Prince", relTol, absTol);
-  for (auto* v : {&y_, &yPrev_, &yStage_, &yErr_, &k1_, &k2_, &k3_, &k4_, &k5_, &k6_, &k7_, &cont1_,
-                  &cont2_, &cont3_, &cont4_, &cont5_})
+  for (auto* v : {&y_, &yPrev_, &yStage_, &yErr_, &k1_, &k2_, &k3_, &k4_, &k5_, &k6_, &k7_, &cont1_, &cont2_, &cont3_,
+                  &cont4_, &cont5_})
     v->assign(static_cast<std::size_t>(n_), 0.0);
 }
 
@@ -146,8 +143,7 @@ void DormandPrince::step(double tStop) {
     system_.calcDerivatives(t + c3 * h, ys, k3_.data());
     for (int i = 0; i < n_; ++i) ys[i] = y[i] + h * (a41 * k1_[i] + a42 * k2_[i] + a43 * k3_[i]);
     system_.calcDerivatives(t + c4 * h, ys, k4_.data());
-    for (int i = 0; i < n_; ++i)
-      ys[i] = y[i] + h * (a51 * k1_[i] + a52 * k2_[i] + a53 * k3_[i] + a54 * k4_[i]);
+    for (int i = 0; i < n_; ++i) ys[i] = y[i] + h * (a51 * k1_[i] + a52 * k2_[i] + a53 * k3_[i] + a54 * k4_[i]);
     system_.calcDerivatives(t + c5 * h, ys, k5_.data());
     for (int i = 0; i < n_; ++i)
       ys[i] = y[i] + h * (a61 * k1_[i] + a62 * k2_[i] + a63 * k3_[i] + a64 * k4_[i] + a65 * k5_[i]);

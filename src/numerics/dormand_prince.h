@@ -75,7 +75,7 @@ class DormandPrince {
   double relTol_, absTol_;
   double maxStep_;
   double t_ = 0, tPrev_ = 0;
-  double h_ = 0;  // proposed size of the next step
+  double h_ = 0;           // proposed size of the next step
   double errPrev_ = 1e-4;  // error norm of the last accepted step (PI control)
   std::vector<double> y_, yPrev_, yStage_, yErr_;
   std::vector<double> k1_, k2_, k3_, k4_, k5_, k6_, k7_;

@@ -12,7 +12,7 @@ struct ErrorMetrics {
   /// 1 - SS_res / SS_tot (a fraction; Table 2 prints it in %). NaN if the measured series
   /// is constant (SS_tot = 0). Negative when the prediction is worse than the mean.
   double r2 = 0;
-  double bias = 0;      ///< mean(measured - predicted)
+  double bias = 0;  ///< mean(measured - predicted)
   std::size_t count = 0;
   std::size_t maxErrorIndex = 0;  ///< sample where ME occurs
 };

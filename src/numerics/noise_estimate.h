@@ -13,8 +13,8 @@
 namespace swingsim {
 
 struct NoiseEstimate {
-  double sigma = 0;          ///< estimated noise standard deviation, unit of the signal
-  std::size_t samples = 0;   ///< pseudo-residuals used
+  double sigma = 0;         ///< estimated noise standard deviation, unit of the signal
+  std::size_t samples = 0;  ///< pseudo-residuals used
 };
 
 /// Noise of `values` sampled at strictly increasing `time` (uneven spacing allowed). Throws

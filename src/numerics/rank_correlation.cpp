@@ -49,8 +49,8 @@ std::vector<double> calcAverageRanks(const std::vector<double>& values) {
 
 RankCorrelation calcSpearman(const std::vector<double>& x, const std::vector<double>& y, double confidence) {
   if (x.size() != y.size())
-    throw std::invalid_argument("calcSpearman: " + std::to_string(x.size()) + " x values but " + std::to_string(y.size()) +
-                                " y values");
+    throw std::invalid_argument("calcSpearman: " + std::to_string(x.size()) + " x values but " +
+                                std::to_string(y.size()) + " y values");
   if (!(confidence > 0 && confidence < 1))
     throw std::invalid_argument("calcSpearman: confidence must be inside (0, 1), got " + std::to_string(confidence));
   std::vector<double> xs, ys;

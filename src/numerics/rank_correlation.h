@@ -12,9 +12,9 @@ namespace swingsim {
 std::vector<double> calcAverageRanks(const std::vector<double>& values);
 
 struct RankCorrelation {
-  double rho = 0;         ///< Spearman's rho in [-1, 1]; NaN if undefined (a constant variable, n < 3)
+  double rho = 0;            ///< Spearman's rho in [-1, 1]; NaN if undefined (a constant variable, n < 3)
   double low = 0, high = 0;  ///< the interval at the confidence asked; NaN where rho is NaN or n < 4
-  int count = 0;          ///< pairs with both values finite
+  int count = 0;             ///< pairs with both values finite
 };
 
 /// Spearman's rho of the pairs (x[i], y[i]) where both are finite, with a Fisher-z interval

@@ -54,9 +54,7 @@ double calcEffectiveSampleSize(const ResidualSegments& residuals) {
 
 double calcNormalQuantile(double p) { return boost::math::quantile(boost::math::normal(), p); }
 
-double calcChiSquaredQuantile(double p, double dof) {
-  return boost::math::quantile(boost::math::chi_squared(dof), p);
-}
+double calcChiSquaredQuantile(double p, double dof) { return boost::math::quantile(boost::math::chi_squared(dof), p); }
 
 double calcChiSquaredSurvival(double x, double dof) {
   if (std::isnan(x) || !(dof > 0)) return std::numeric_limits<double>::quiet_NaN();
@@ -135,7 +133,8 @@ WhitenessTest calcWhitenessTest(const ResidualSegments& residuals, int lags) {
     t.computed = true;
     if (t.lags < lags)
       t.note = std::to_string(t.lags) + " of the " + std::to_string(lags) + " lags asked for: at most 1 lag per " +
-               std::to_string(kWhitenessLagDivisor) + " samples of the shortest record (" + std::to_string(shortest) + ")";
+               std::to_string(kWhitenessLagDivisor) + " samples of the shortest record (" + std::to_string(shortest) +
+               ")";
   }
   return t;
 }

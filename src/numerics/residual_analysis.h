@@ -85,10 +85,10 @@ int calcRecordsForPower(double lambdaPerRecord, double dof, double alpha, double
 /// spread is zero has no band (halfWidth 0) and takes no part in the search for maxBin.
 /// Ties in significance go to the lowest bin.
 struct BinnedResidual {
-  std::vector<double> center;     ///< mean of the variable in the bin
+  std::vector<double> center;        ///< mean of the variable in the bin
   std::vector<double> lower, upper;  ///< smallest and largest value of the variable in the bin
-  std::vector<double> mean;       ///< mean residual
-  std::vector<double> halfWidth;  ///< 99 % confidence half-width
+  std::vector<double> mean;          ///< mean residual
+  std::vector<double> halfWidth;     ///< 99 % confidence half-width
   /// Largest |mean| / halfWidth over the bins (> 1: that bin's mean is not zero at 99 %).
   double maxSignificance = 0;
   std::size_t maxBin = 0;
@@ -97,7 +97,7 @@ struct BinnedResidual {
   /// variable's range the residual sits.
   std::size_t runFirst = 0, runLast = 0;
 };
-BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std::vector<double>& residual,
-                                  int bins, double nEffOverN);
+BinnedResidual calcBinnedResidual(const std::vector<double>& variable, const std::vector<double>& residual, int bins,
+                                  double nEffOverN);
 
 }  // namespace swingsim

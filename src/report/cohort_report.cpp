@@ -91,8 +91,8 @@ SvgPlot makeScatter(const CohortPredictor& p, const CohortSummary& s) {
 
 std::string formatDistribution(const CohortDistribution& d) {
   if (d.kind == CohortDistribution::Kind::kUniform) return "uniform " + fmt("%g", d.min) + " .. " + fmt("%g", d.max);
-  return "normal mean " + fmt("%g", d.mean) + ", sd " + fmt("%g", d.sd) + ", truncated to " + fmt("%g", d.min) + " .. " +
-         fmt("%g", d.max);
+  return "normal mean " + fmt("%g", d.mean) + ", sd " + fmt("%g", d.sd) + ", truncated to " + fmt("%g", d.min) +
+         " .. " + fmt("%g", d.max);
 }
 
 // The participants whose lowering sweep stops before the grid's end: their leg runs out (the
@@ -114,7 +114,8 @@ std::string formatShortSweeps(const Cohort& cohort, const std::vector<CohortPart
                      : fmt("%d participants' sweeps stop before ", count)) +
          fmt("%g", cohort.study.loweringMax * kMs) +
          " mm, where their leg runs out (the knee unit's centre of mass would pass the ankle, or the shank its least "
-         "length): " + listed + (count > kListed ? ", ..." : "") + ".\n\n";
+         "length): " +
+         listed + (count > kListed ? ", ..." : "") + ".\n\n";
 }
 
 std::string formatMarkdown(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
@@ -125,8 +126,9 @@ std::string formatMarkdown(const Cohort& cohort, const std::vector<CohortPartici
             static_cast<unsigned long long>(cohort.seed)) +
         "`" + cohort.templatePath.substr(cohort.templatePath.find_last_of('/') + 1) +
         "` (knee model, initial pose, swing-end rule, hip-moment shape), its hip time scale calibrated to its drawn "
-        "swing time, then its knee axis lowered in " + fmt("%g", cohort.study.loweringStep * kMs) + " mm steps up to " +
-        fmt("%g", cohort.study.loweringMax * kMs) + " mm (or where its shank runs out). Sources and the leg model: "
+        "swing time, then its knee axis lowered in " +
+        fmt("%g", cohort.study.loweringStep * kMs) + " mm steps up to " + fmt("%g", cohort.study.loweringMax * kMs) +
+        " mm (or where its shank runs out). Sources and the leg model: "
         "docs/cohort.md.\n\n";
   md += "## Distributions\n\n| property | distribution | source |\n|---|---|---|\n";
   for (std::size_t k = 0; k < cohortProperties().size(); ++k)
@@ -136,44 +138,53 @@ std::string formatMarkdown(const Cohort& cohort, const std::vector<CohortPartici
   std::string failed;
   for (std::size_t i = 0; i < results.size(); ++i)
     if (!results[i].calibrated) failed += (failed.empty() ? "" : ", ") + cohort.study.participants[i].name;
-  md += failed.empty() ? ".\n\n" : " (not calibrated, left out: " + failed + "; their target swing time is outside what the "
-                                   "hip time scale reaches).\n\n";
+  md += failed.empty() ? ".\n\n"
+                       : " (not calibrated, left out: " + failed +
+                             "; their target swing time is outside what the "
+                             "hip time scale reaches).\n\n";
   const Interval& l = s.fastestLoweringInterval;
   const Interval& g = s.timeGainedInterval;
   md += "| | median | 5 % | 95 % | participants |\n|---|---|---|---|---|\n";
-  md += "| fastest lowering (mm) | " + numberOrDash(l.median * kMs, "%.0f") + " | " + numberOrDash(l.p05 * kMs, "%.0f") +
-        " | " + numberOrDash(l.p95 * kMs, "%.0f") + " | " + std::to_string(l.count) + " |\n";
-  md += "| time gained (ms) | " + numberOrDash(g.median * kMs, "%.1f") + " | " + numberOrDash(g.p05 * kMs, "%.1f") + " | " +
-        numberOrDash(g.p95 * kMs, "%.1f") + " | " + std::to_string(g.count) + " |\n\n";
+  md += "| fastest lowering (mm) | " + numberOrDash(l.median * kMs, "%.0f") + " | " +
+        numberOrDash(l.p05 * kMs, "%.0f") + " | " + numberOrDash(l.p95 * kMs, "%.0f") + " | " +
+        std::to_string(l.count) + " |\n";
+  md += "| time gained (ms) | " + numberOrDash(g.median * kMs, "%.1f") + " | " + numberOrDash(g.p05 * kMs, "%.1f") +
+        " | " + numberOrDash(g.p95 * kMs, "%.1f") + " | " + std::to_string(g.count) + " |\n\n";
   int atMax = 0;
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].sweep.best >= 0 && results[i].sweep.best + 1 == static_cast<int>(results[i].sweep.lowerings.size()))
       ++atMax;
-  md += fmt("%d participants are fastest at their largest lowering (the grid's end or where the shank runs out).\n\n", atMax);
+  md += fmt("%d participants are fastest at their largest lowering (the grid's end or where the shank runs out).\n\n",
+            atMax);
   md += formatShortSweeps(cohort, results);
   md += "![fastest lowering](cohort-fastest-lowering.svg)\n\n![time gained](cohort-time-gained.svg)\n\n";
-  md += "## What predicts the gain\n\nSpearman's rank correlation of each property with the time gained, 95 % "
-        "interval by Fisher's z with the standard error 1.06 / sqrt(n - 3) (Fieller, Hartley & Pearson 1957). "
-        "Strongest first.\n\n| property | rho | 95 % interval | participants |\n|---|---|---|---|\n";
+  md +=
+      "## What predicts the gain\n\nSpearman's rank correlation of each property with the time gained, 95 % "
+      "interval by Fisher's z with the standard error 1.06 / sqrt(n - 3) (Fieller, Hartley & Pearson 1957). "
+      "Strongest first.\n\n| property | rho | 95 % interval | participants |\n|---|---|---|---|\n";
   for (const auto& p : s.predictors)
-    md += "| " + p.what + " | " + numberOrDash(p.withGain.rho, "%+.2f") + " | " + numberOrDash(p.withGain.low, "%+.2f") +
-          " .. " + numberOrDash(p.withGain.high, "%+.2f") + " | " + std::to_string(p.withGain.count) + " |\n";
+    md += "| " + p.what + " | " + numberOrDash(p.withGain.rho, "%+.2f") + " | " +
+          numberOrDash(p.withGain.low, "%+.2f") + " .. " + numberOrDash(p.withGain.high, "%+.2f") + " | " +
+          std::to_string(p.withGain.count) + " |\n";
   md += "\n![predictors](cohort-predictors.svg)\n\n![strongest predictor](" + scatterFile + ")\n\n";
   md += "Every participant's values and results: cohort.csv.\n";
   return md;
 }
 
-std::string formatCsv(const Cohort& cohort, const std::vector<CohortParticipantResult>& results, const CohortSummary& s) {
+std::string formatCsv(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
+                      const CohortSummary& s) {
   std::string csv = "participant";
   for (const auto& p : cohortProperties()) csv += "," + p.key;
-  csv += ",body_mass_kg,calibrated,hip_time_scale,standard_swing_time_s,fastest_lowering_m,fastest_swing_time_s,"
-         "time_gained_s\n";
+  csv +=
+      ",body_mass_kg,calibrated,hip_time_scale,standard_swing_time_s,fastest_lowering_m,fastest_swing_time_s,"
+      "time_gained_s\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
     csv += cohort.study.participants[i].name;
     for (double v : cohort.values[i]) csv += fmt(",%.17g", v);
     csv += fmt(",%.17g,%d", cohort.study.participants[i].bodyMass, r.calibrated ? 1 : 0);
-    for (double v : {r.timeScale, r.calcStandardTime(), s.fastestLowering[i], r.sweep.calcFastestTime(), s.timeGained[i]})
+    for (double v :
+         {r.timeScale, r.calcStandardTime(), s.fastestLowering[i], r.sweep.calcFastestTime(), s.timeGained[i]})
       csv += std::isfinite(v) ? fmt(",%.17g", v) : std::string(",");
     csv += "\n";
   }
@@ -183,7 +194,10 @@ std::string formatCsv(const Cohort& cohort, const std::vector<CohortParticipantR
 Json numberOrNull(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 Json formatInterval(const Interval& i) {
-  return {{"median", numberOrNull(i.median)}, {"p05", numberOrNull(i.p05)}, {"p95", numberOrNull(i.p95)}, {"count", i.count}};
+  return {{"median", numberOrNull(i.median)},
+          {"p05", numberOrNull(i.p05)},
+          {"p95", numberOrNull(i.p95)},
+          {"count", i.count}};
 }
 
 }  // namespace
@@ -195,15 +209,15 @@ std::vector<std::pair<std::string, std::string>> makeCohortReport(const Cohort& 
   const std::string scatter = s.predictors.empty() ? "" : "cohort-gain-vs-" + s.predictors.front().key + ".svg";
   files.emplace_back("report.md", formatMarkdown(cohort, results, s, scatter));
   files.emplace_back("cohort.csv", formatCsv(cohort, results, s));
-  files.emplace_back("cohort-fastest-lowering.svg",
-                     makeHistogram("Fastest lowering over the cohort", "fastest lowering below the standard knee axis (mm)",
-                                   s.fastestLowering, kMs, cohort.study.loweringStep * kMs)
-                         .render());
-  files.emplace_back("cohort-time-gained.svg",
-                     makeHistogram("Time gained by the fastest lowering over the cohort",
-                                   "standard-location minus fastest swing time (ms)", s.timeGained, kMs,
-                                   chooseBinWidth(s.timeGained, kMs, 0.5))
-                         .render());
+  files.emplace_back(
+      "cohort-fastest-lowering.svg",
+      makeHistogram("Fastest lowering over the cohort", "fastest lowering below the standard knee axis (mm)",
+                    s.fastestLowering, kMs, cohort.study.loweringStep * kMs)
+          .render());
+  files.emplace_back("cohort-time-gained.svg", makeHistogram("Time gained by the fastest lowering over the cohort",
+                                                             "standard-location minus fastest swing time (ms)",
+                                                             s.timeGained, kMs, chooseBinWidth(s.timeGained, kMs, 0.5))
+                                                   .render());
   files.emplace_back("cohort-predictors.svg", makePredictorFigure(s).render());
   if (!s.predictors.empty()) files.emplace_back(scatter, makeScatter(s.predictors.front(), s).render());
   return files;
@@ -214,10 +228,10 @@ std::string formatCohortSummary(const Cohort& cohort, const CohortSummary& s) {
   const Interval& g = s.timeGainedInterval;
   std::string out = fmt("cohort %s: %d participants (seed %llu), %d calibrated\n", cohort.study.name.c_str(),
                         cohort.count, static_cast<unsigned long long>(cohort.seed), s.calibrated);
-  out += "  fastest lowering  median " + numberOrDash(l.median * kMs, "%.0f") + " mm (5-95 %: " +
-         numberOrDash(l.p05 * kMs, "%.0f") + " .. " + numberOrDash(l.p95 * kMs, "%.0f") + " mm)\n";
-  out += "  time gained       median " + numberOrDash(g.median * kMs, "%.1f") + " ms (5-95 %: " +
-         numberOrDash(g.p05 * kMs, "%.1f") + " .. " + numberOrDash(g.p95 * kMs, "%.1f") + " ms)\n";
+  out += "  fastest lowering  median " + numberOrDash(l.median * kMs, "%.0f") +
+         " mm (5-95 %: " + numberOrDash(l.p05 * kMs, "%.0f") + " .. " + numberOrDash(l.p95 * kMs, "%.0f") + " mm)\n";
+  out += "  time gained       median " + numberOrDash(g.median * kMs, "%.1f") +
+         " ms (5-95 %: " + numberOrDash(g.p05 * kMs, "%.1f") + " .. " + numberOrDash(g.p95 * kMs, "%.1f") + " ms)\n";
   for (std::size_t i = 0; i < std::min<std::size_t>(3, s.predictors.size()); ++i) {
     const auto& p = s.predictors[i];
     out += fmt("  predictor %zu       %s: rho %s (95 %%: %s .. %s)\n", i + 1, p.what.c_str(),
@@ -238,8 +252,11 @@ std::string formatCohortJson(const Cohort& cohort, const std::vector<CohortParti
   j["time_gained_interval_s"] = formatInterval(s.timeGainedInterval);
   Json predictors = Json::array();
   for (const auto& p : s.predictors)
-    predictors.push_back({{"key", p.key}, {"rho", numberOrNull(p.withGain.rho)}, {"low", numberOrNull(p.withGain.low)},
-                          {"high", numberOrNull(p.withGain.high)}, {"count", p.withGain.count}});
+    predictors.push_back({{"key", p.key},
+                          {"rho", numberOrNull(p.withGain.rho)},
+                          {"low", numberOrNull(p.withGain.low)},
+                          {"high", numberOrNull(p.withGain.high)},
+                          {"count", p.withGain.count}});
   j["predictors"] = predictors;
   Json rows = Json::array();
   for (std::size_t i = 0; i < results.size(); ++i) {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/output_files.h"
 #include "core/text_format.h"
 #include "io/json_file.h"
-#include "core/output_files.h"
 #include "report/svg_plot.h"
 
 namespace swingsim {
@@ -49,9 +49,9 @@ std::string formatFitTable(const std::vector<ModelEvaluation>& models) {
     if (m.fit.switchesFitted) {
       const auto& b = m.fit.params.switches;
       s += "\n  switch constants fitted (Ceres, " + std::to_string(m.fit.switchStarts) +
-           " starts over the physical ranges): velocity width " + fmt("%.3g", b.velocityWidth) + " m/s, position width " +
-           fmt("%.3g", b.positionWidth) + " m, xhy " + fmt("%.3g", b.hyperextensionPosition) + " m, latch rate " +
-           fmt("%.3g", b.latchRate) + " /s; training RMSE " + fmt("%.1f", m.fit.trainRmseAtStart) +
+           " starts over the physical ranges): velocity width " + fmt("%.3g", b.velocityWidth) +
+           " m/s, position width " + fmt("%.3g", b.positionWidth) + " m, xhy " + fmt("%.3g", b.hyperextensionPosition) +
+           " m, latch rate " + fmt("%.3g", b.latchRate) + " /s; training RMSE " + fmt("%.1f", m.fit.trainRmseAtStart) +
            " N at the model file's switches -> " + fmt("%.1f", r.residualRms) + " N";
     }
     s += "\n  phase          f (N)            k (N/m)              c (N s/m)\n";
@@ -65,7 +65,8 @@ std::string formatFitTable(const std::vector<ModelEvaluation>& models) {
     for (const auto& k : m.fit.constants) {
       if (k.includesZero) flagged += (flagged.empty() ? "" : ", ") + k.name;
     }
-    if (!flagged.empty()) s += "  95 % confidence interval includes 0 (not distinguishable from no term): " + flagged + "\n";
+    if (!flagged.empty())
+      s += "  95 % confidence interval includes 0 (not distinguishable from no term): " + flagged + "\n";
     for (const auto& c : m.fit.collinear)
       s += "  collinear: " + c.a + " and " + c.b + " (correlation " + fmt("%.3f", c.correlation) +
            "): the data fix a combination of them, not each\n";
@@ -88,7 +89,8 @@ std::string formatFitTable(const std::vector<ModelEvaluation>& models) {
       s += buf;
       for (const auto& f : m.files) {
         char cell[64];
-        std::snprintf(cell, sizeof cell, "| %6.1f %7.1f %6.1f   ", f.metrics.maxError, f.metrics.rmse, 100 * f.metrics.r2);
+        std::snprintf(cell, sizeof cell, "| %6.1f %7.1f %6.1f   ", f.metrics.maxError, f.metrics.rmse,
+                      100 * f.metrics.r2);
         s += cell;
       }
       s += "\n";
@@ -145,7 +147,9 @@ std::string forcePlot(const ModelEvaluation& m, const FileEvaluation& f, double 
   const int phases = m.fit.params.phases;
   std::size_t n = 0;
   while (n < d.time.size() && d.time[n] - d.time.front() <= plotSeconds) ++n;
-  auto head = [&](const std::vector<double>& v) { return std::vector<double>(v.begin(), v.begin() + static_cast<long>(n)); };
+  auto head = [&](const std::vector<double>& v) {
+    return std::vector<double>(v.begin(), v.begin() + static_cast<long>(n));
+  };
   const auto t = head(d.time);
 
   SvgPlot force(800, 380);
@@ -159,7 +163,8 @@ std::string forcePlot(const ModelEvaluation& m, const FileEvaluation& f, double 
   auto dominant = [&](std::size_t i) {
     const auto& g = f.trace.gates[i];
     int best = 0;
-    for (int p = 1; p < phases; ++p) if (g[static_cast<std::size_t>(p)] > g[static_cast<std::size_t>(best)]) best = p;
+    for (int p = 1; p < phases; ++p)
+      if (g[static_cast<std::size_t>(p)] > g[static_cast<std::size_t>(best)]) best = p;
     return best;
   };
   for (std::size_t i = 1; i <= n; ++i) {
@@ -222,10 +227,12 @@ void writeFitReport(const std::string& outDir, const std::string& studyName, con
       const auto& c = m.fit.params.coefficients[static_cast<std::size_t>(i)];
       const auto k = static_cast<std::size_t>(3 * i);
       csv += m.name + "," + std::to_string(i + 1) + "," + fmt("%.10g", c.f) + "," + fmt("%.4g", se[k]) + "," +
-             fmt("%.10g", c.k) + "," + fmt("%.4g", se[k + 1]) + "," + fmt("%.10g", c.c) + "," + fmt("%.4g", se[k + 2]) + "\n";
+             fmt("%.10g", c.k) + "," + fmt("%.4g", se[k + 1]) + "," + fmt("%.10g", c.c) + "," + fmt("%.4g", se[k + 2]) +
+             "\n";
     }
   }
-  md += "\n## Coefficients\n\n```\n" + formatFitTable(models) + "```\n\n(coefficients.csv holds them with standard errors)\n";
+  md += "\n## Coefficients\n\n```\n" + formatFitTable(models) +
+        "```\n\n(coefficients.csv holds them with standard errors)\n";
   for (const auto& m : models) {
     md += "\n## " + m.name + "\n";
     for (const auto& f : m.files) {

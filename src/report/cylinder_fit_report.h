@@ -21,7 +21,7 @@ struct FileEvaluation {
 
 /// One model of a fit study, fitted and evaluated.
 struct ModelEvaluation {
-  std::string name;        ///< model name (YAML `name:` or file stem)
+  std::string name;  ///< model name (YAML `name:` or file stem)
   CylinderFit fit;
   std::vector<FileEvaluation> files;
 };

@@ -73,7 +73,8 @@ constexpr MeasuredCoverage kMeasured[] = {
     {"hip_flexion_duration", "", 0, 0, 0, 0, kNaN, kNaN, kTakenByTimeScale},
     {"hip_extension_duration", "", 0, 0, 0, 0, kNaN, kNaN, kTakenByTimeScale},
     {"thigh_target_flexion", "", 0, 0, 0, 0, kNaN, kNaN,
-     "the sweep cannot measure it on legs like Burkett's: the knee's return, not the thigh, ends almost every swing, so "
+     "the sweep cannot measure it on legs like Burkett's: the knee's return, not the thigh, ends almost every swing, "
+     "so "
      "the target decides whether a swing ends rather than when (over 5-35 deg it moved 2 of 19 rows of the study's "
      "tables, only above 23 deg), and the fit, starting at the files' value, sees no slope there"},
     // A switch with one size, run with 20 seeds (--only sweep/com_rule, 1592 s CPU): named first

@@ -8,7 +8,8 @@ namespace swingsim {
 
 std::string formatWarningsSection(const std::vector<std::string>& warnings) {
   if (warnings.empty()) return "";
-  std::string md = "## Warnings\n\nAbout the data, each naming what fixes it (also on stderr, in the JSON and in Python):\n\n";
+  std::string md =
+      "## Warnings\n\nAbout the data, each naming what fixes it (also on stderr, in the JSON and in Python):\n\n";
   for (const auto& w : warnings) md += "- " + w + "\n";
   return md + "\n";
 }
@@ -16,8 +17,8 @@ std::string formatWarningsSection(const std::vector<std::string>& warnings) {
 void writeDiagnosisReport(const std::string& outDir, const DiagnosisReportInput& in) {
   const std::string result = formatDiagnosisText(*in.diagnosis, *in.before, *in.after);
   std::string md = "# swingsim diagnose: " + in.studyName + "\n\nCommand: `" + in.command + "`\n\n" +
-                   (in.drive.empty() ? "" : "The model's " + in.drive + ".\n\n") + formatWarningsSection(in.diagnosis->warnings) +
-                   "## Before\n\n```\n" +
+                   (in.drive.empty() ? "" : "The model's " + in.drive + ".\n\n") +
+                   formatWarningsSection(in.diagnosis->warnings) + "## Before\n\n```\n" +
                    formatComparisonTable(*in.before) + "```\n\n## Ranking and result\n\n```\n" + result +
                    (in.check.empty() ? "" : in.check + "\n") + "```\n\n## After\n\n```\n" +
                    formatComparisonTable(*in.after) + "```\n\n## Residual plots\n\n";

@@ -14,14 +14,14 @@ namespace swingsim {
 /// What report.md of a diagnosis shows; everything is computed before it is written.
 struct DiagnosisReportInput {
   std::string studyName;
-  std::string command;          ///< the command line, quoted in the report
-  std::string drive;            ///< describeStudyDrive of the study; empty: not said
+  std::string command;  ///< the command line, quoted in the report
+  std::string drive;    ///< describeStudyDrive of the study; empty: not said
   const Diagnosis* diagnosis = nullptr;
   const Comparison* before = nullptr;  ///< the base model against the data
   const Comparison* after = nullptr;   ///< the diagnosed model against the data
-  std::string check;            ///< the plant's verification of the final model; empty: none
+  std::string check;                   ///< the plant's verification of the final model; empty: none
   std::optional<HeldBackComparison> heldBefore, heldAfter;  ///< both or neither
-  std::vector<std::string> heldWarnings;  ///< checkHeldBackComparison's warnings, written under it
+  std::vector<std::string> heldWarnings;                    ///< checkHeldBackComparison's warnings, written under it
 };
 
 /// The "## Warnings" section of a report (a bullet per warning), "" when there are none.

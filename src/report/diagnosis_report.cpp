@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/text_format.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/text_format.h"
 #include "report/diagnosis_coverage.h"
 #include "report/overlay_plot.h"
 #include "report/svg_plot.h"
@@ -16,8 +16,8 @@ namespace swingsim {
 namespace {
 
 const double kZ99 = calcNormalQuantile(0.995);  // two-sided 99 % normal quantile
-constexpr int kResidualBins = 12;            // equal-count bins for the binned residual
-constexpr double kAcfSeconds = 0.5;          // autocorrelation shown up to this lag, s
+constexpr int kResidualBins = 12;               // equal-count bins for the binned residual
+constexpr double kAcfSeconds = 0.5;             // autocorrelation shown up to this lag, s
 
 // What the metric tables' columns mean, printed under each table.
 const char* const kMetricLegend =
@@ -65,8 +65,13 @@ Json coverageJson(const std::vector<std::string>& accepted) {
     if (const auto m = findMeasuredCoverage(a)) {
       // A row without seeds (the sweep cannot measure the effect) has no bias or SD: null.
       const auto orNull = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
-      out[a] = {{"parameter", m->parameter}, {"seeds", m->seeds}, {"named_first", m->named}, {"scored", m->scored},
-                {"covered", m->covered}, {"bias_percent", orNull(m->biasPercent)}, {"sd_percent", orNull(m->sdPercent)},
+      out[a] = {{"parameter", m->parameter},
+                {"seeds", m->seeds},
+                {"named_first", m->named},
+                {"scored", m->scored},
+                {"covered", m->covered},
+                {"bias_percent", orNull(m->biasPercent)},
+                {"sd_percent", orNull(m->sdPercent)},
                 {"caveat", m->caveat}};
     }
   return out;
@@ -81,7 +86,8 @@ Json candidateJson(const CandidateScore& c, int step, const std::vector<std::str
     return j;
   }
   Json validation = Json::object();
-  for (std::size_t v = 0; v < stems.size() && v < c.validationRmse.size(); ++v) validation[stems[v]] = c.validationRmse[v];
+  for (std::size_t v = 0; v < stems.size() && v < c.validationRmse.size(); ++v)
+    validation[stems[v]] = c.validationRmse[v];
   const Json params = parametersJson(c.parameters);
   j["validation_rmse"] = validation;
   // Cross-validated plants (the sweep): the pooled held-out RMSE the rule uses and each
@@ -187,7 +193,8 @@ std::string renderResidualPanels(const ResidualPlotData& in, const std::string& 
   for (const auto& var : in.variables) {
     const BinnedResidual b = calcBinnedResidual(var.values, in.residual, kResidualBins, ratio);
     SvgPlot p(800, 240);
-    p.setTitle(var.title.empty() ? "binned mean residual vs " + var.label + ", 99 % band (effective sample size)" : var.title);
+    p.setTitle(var.title.empty() ? "binned mean residual vs " + var.label + ", 99 % band (effective sample size)"
+                                 : var.title);
     p.setXLabel(var.label);
     p.setYLabel(in.meanLabel);
     std::vector<double> lo, hi;
@@ -230,8 +237,8 @@ std::string renderResidualSvg(const RecordComparison& r, const Comparison& c, co
   in.phaseNames = c.phaseNames;
   in.plotSeconds = c.plotSeconds;
   const bool whole = r.time.empty() || r.time.back() - r.time.front() <= c.plotSeconds;
-  in.timeTitle = c.quantity + " residual vs time" + (whole ? " (whole record)" : " (first " + formatNumber(c.plotSeconds) + " s)") +
-                 ", phases shaded";
+  in.timeTitle = c.quantity + " residual vs time" +
+                 (whole ? " (whole record)" : " (first " + formatNumber(c.plotSeconds) + " s)") + ", phases shaded";
   in.residualLabel = "measured - model " + c.quantity + " (" + c.unit + ")";
   in.meanLabel = "mean residual (" + c.unit + ")";
   in.variables = r.variables;
@@ -243,9 +250,10 @@ std::vector<std::string> writeResidualPlots(const std::string& outDir, const std
   std::vector<std::string> paths;
   for (const auto& r : c.records) {
     const std::string path = outDir + "/" + prefix + "-" + makeSafeFileStem(r.stem) + "-residual.svg";
-    writeFileAtomic(path, renderResidualSvg(r, c,
-                                            prefix + ": " + r.stem + (r.training ? " (train)" : " (validate)") + ", " +
-                                                c.quantity + " RMSE " + num(r.overall.rmse, c.decimals) + " " + c.unit));
+    writeFileAtomic(
+        path, renderResidualSvg(r, c,
+                                prefix + ": " + r.stem + (r.training ? " (train)" : " (validate)") + ", " + c.quantity +
+                                    " RMSE " + num(r.overall.rmse, c.decimals) + " " + c.unit));
     paths.push_back(path);
   }
   for (const auto& p : writeOverlayPlots(outDir, prefix, c, heldBack)) paths.push_back(p);
@@ -260,16 +268,19 @@ Json makeComparisonJson(const std::string& model, const Comparison& c) {
       phases[c.phaseNames[ph]] = {{"rmse", r.perPhase[ph].rmse},
                                   {"share_of_squared_error", r.phaseShare[ph]},
                                   {"share_of_samples", r.sampleShare[ph]}};
-    files[r.stem] = {{"training", r.training}, {"me", r.overall.maxError}, {"rmse", r.overall.rmse},
-                     {"r2", r.overall.r2}, {"phases", phases}};
+    files[r.stem] = {{"training", r.training},
+                     {"me", r.overall.maxError},
+                     {"rmse", r.overall.rmse},
+                     {"r2", r.overall.r2},
+                     {"phases", phases}};
   }
   return {{"model", model}, {"quantity", c.quantity}, {"unit", c.unit}, {"files", files}};
 }
 
 std::string formatCandidateRanking(const std::vector<const EffectScore*>& candidates, const std::string& unit,
                                    int decimals) {
-  std::string out = fmt("  %-27s %8s %7s %9s %9s %9s  %-24s %s\n", "candidate", ("train " + unit).c_str(), "n_eff", "LR",
-                        "p (Bonf.)", "dBIC", ("validation RMSE " + unit).c_str(), "verdict");
+  std::string out = fmt("  %-27s %8s %7s %9s %9s %9s  %-24s %s\n", "candidate", ("train " + unit).c_str(), "n_eff",
+                        "LR", "p (Bonf.)", "dBIC", ("validation RMSE " + unit).c_str(), "verdict");
   for (const EffectScore* cp : candidates) {
     const EffectScore& c = *cp;
     if (!c.notApplicable.empty()) {
@@ -296,8 +307,9 @@ std::string formatCandidateRanking(const std::vector<const EffectScore*>& candid
       if (!c.physical) verdict += " wrong sign;";
     }
     // A refit no better than the current model has LR 0; round-off may make it -1e-12 ("-0.0").
-    out += fmt("  %-27s %8s %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(), num(c.trainRmse, decimals + 1).c_str(),
-               c.effectiveSamples, std::max(0.0, c.likelihoodRatio), c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
+    out += fmt("  %-27s %8s %7.0f %9.1f %9.2g %9.1f  %-24s %s\n", c.effect.c_str(),
+               num(c.trainRmse, decimals + 1).c_str(), c.effectiveSamples, std::max(0.0, c.likelihoodRatio),
+               c.pAdjusted, c.deltaBic, val.c_str(), verdict.c_str());
   }
   return out;
 }
@@ -359,9 +371,10 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   for (const auto& c : dg.acceptedScores)
     out += formatAcceptedEffect(c, describeEffect(c.id).sentence) +
            (dg.explained ? formatMeasuredCoverage(c.effect)
-                         : (findMeasuredCoverage(c.effect) ? "    interval check not quoted: the final model does not explain these "
-                                                             "data, the calibration study's condition\n"
-                                                           : ""));
+                         : (findMeasuredCoverage(c.effect)
+                                ? "    interval check not quoted: the final model does not explain these "
+                                  "data, the calibration study's condition\n"
+                                : ""));
   for (const auto& a : dg.ambiguityAdvice) out += "ambiguous: " + a + "\n";
   for (const auto& c : dg.confounds) out += "confound: " + c + "\n";
   for (const auto& p : dg.finalParameters) out += formatBaseParameter("", " after:", p);
@@ -370,9 +383,9 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
     const auto& b = before.records[i];
     const auto& a = after.records[i];
-    out += fmt("%-10s %-5s |   %10.*f %9.*f %6.1f  |   %9.*f %9.*f %6.1f\n", b.stem.c_str(), b.training ? "train" : "valid",
-               d, b.overall.maxError, d + 1, b.overall.rmse, 100 * b.overall.r2, d, a.overall.maxError, d + 1,
-               a.overall.rmse, 100 * a.overall.r2);
+    out += fmt("%-10s %-5s |   %10.*f %9.*f %6.1f  |   %9.*f %9.*f %6.1f\n", b.stem.c_str(),
+               b.training ? "train" : "valid", d, b.overall.maxError, d + 1, b.overall.rmse, 100 * b.overall.r2, d,
+               a.overall.maxError, d + 1, a.overall.rmse, 100 * a.overall.r2);
   }
   if (trainStems.size() > 1) {
     const ErrorMetrics b = pooled(before, true), a = pooled(after, true);
@@ -382,10 +395,11 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
   out += kMetricLegend;
   const WhitenessTest& wt = dg.finalWhiteness;
   if (wt.computed)
-    out += fmt("\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g (white when p >= %.3g, the acceptance "
-               "rule's alpha), %d lags outside the 99 %% band: %s\n",
-               wt.q, wt.lags, wt.pValue, dg.whitenessLevel, wt.lagsOutsideBand,
-               dg.finalResidualWhite ? "consistent with white noise" : "NOT white");
+    out += fmt(
+        "\nfinal training residual: Ljung-Box Q = %.1f over %d lags, p = %.3g (white when p >= %.3g, the acceptance "
+        "rule's alpha), %d lags outside the 99 %% band: %s\n",
+        wt.q, wt.lags, wt.pValue, dg.whitenessLevel, wt.lagsOutsideBand,
+        dg.finalResidualWhite ? "consistent with white noise" : "NOT white");
   else
     out += "\nfinal training residual: Ljung-Box test cannot tell (" + wt.note + "): not counted as white\n";
   if (wt.computed && !wt.note.empty()) out += "  (" + wt.note + ")\n";
@@ -399,8 +413,12 @@ std::string formatDiagnosisText(const Diagnosis& dg, const Comparison& before, c
 // null unless no candidate was significant (Diagnosis::power).
 Json powerJson(const std::optional<PowerAdvice>& a) {
   if (!a) return nullptr;
-  return {{"effect", a->effect},           {"likelihood_ratio", a->likelihoodRatio}, {"dof", a->dof},
-          {"level", a->level},             {"power", kPowerTarget},                  {"training_swings", a->recordsNow},
+  return {{"effect", a->effect},
+          {"likelihood_ratio", a->likelihoodRatio},
+          {"dof", a->dof},
+          {"level", a->level},
+          {"power", kPowerTarget},
+          {"training_swings", a->recordsNow},
           {"swings_needed", a->lowersHeldOut ? a->recordsNeeded : 0},
           {"lowers_held_out_error", a->lowersHeldOut}};
 }
@@ -413,30 +431,30 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
   for (std::size_t s = 0; s < dg.steps.size(); ++s)
     for (const auto& c : dg.steps[s].candidates) candidates.push_back(candidateJson(c, static_cast<int>(s + 1), stems));
   Json out = {{"plant", plantName(dg.plant)},
-          {"quantity", before.quantity},
-          {"unit", before.unit},
-          {"baseline", summaryJson(before)},
-          {"baseline_parameters", parametersJson(dg.baselineParameters)},
-          {"candidates", candidates},
-          {"accepted", dg.accepted},
-          {"ambiguous", dg.ambiguous},
-          {"ambiguity_advice", dg.ambiguityAdvice},
-          {"confounds", dg.confounds},
-          {"final", summaryJson(after)},
-          {"final_parameters", parametersJson(dg.finalParameters)},
-          {"residual_white", dg.finalResidualWhite},
-          {"residual_whiteness", dg.finalResidualWhite         ? "white"
-                                 : dg.finalWhiteness.computed ? "not white"
-                                                              : "cannot tell"},
-          {"residual_whiteness_note", dg.finalWhiteness.note},
-          {"residual_whiteness_level", dg.whitenessLevel},
-          {"noise", noiseJson(dg, before)},
-          {"explained", dg.explained},
-          {"verdict", dg.verdict},
-          {"more_swings_for_power", powerJson(dg.power)},
-          {"structure", dg.structureNote},
-          {"missing", dg.missingNote},
-          {"warnings", dg.warnings}};
+              {"quantity", before.quantity},
+              {"unit", before.unit},
+              {"baseline", summaryJson(before)},
+              {"baseline_parameters", parametersJson(dg.baselineParameters)},
+              {"candidates", candidates},
+              {"accepted", dg.accepted},
+              {"ambiguous", dg.ambiguous},
+              {"ambiguity_advice", dg.ambiguityAdvice},
+              {"confounds", dg.confounds},
+              {"final", summaryJson(after)},
+              {"final_parameters", parametersJson(dg.finalParameters)},
+              {"residual_white", dg.finalResidualWhite},
+              {"residual_whiteness", dg.finalResidualWhite        ? "white"
+                                     : dg.finalWhiteness.computed ? "not white"
+                                                                  : "cannot tell"},
+              {"residual_whiteness_note", dg.finalWhiteness.note},
+              {"residual_whiteness_level", dg.whitenessLevel},
+              {"noise", noiseJson(dg, before)},
+              {"explained", dg.explained},
+              {"verdict", dg.verdict},
+              {"more_swings_for_power", powerJson(dg.power)},
+              {"structure", dg.structureNote},
+              {"missing", dg.missingNote},
+              {"warnings", dg.warnings}};
   if (!dg.accepted.empty() && dg.explained) out["interval_coverage"] = coverageJson(dg.accepted);
   // The regions of the missing moment as numbers (the sentence is `missing`).
   if (dg.missing && !dg.explained) {
@@ -456,10 +474,9 @@ Json makeDiagnosisJson(const Diagnosis& dg, const Comparison& before, const Comp
   return out;
 }
 
-
 std::string formatHeldBackText(const HeldBackComparison& before, const HeldBackComparison& after) {
-  std::string out = before.quantity + " against the measured one (never fitted): RMSE " + before.unit +
-                    ", Pearson correlation r\n";
+  std::string out =
+      before.quantity + " against the measured one (never fitted): RMSE " + before.unit + ", Pearson correlation r\n";
   for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
     const auto &b = before.records[i], &a = after.records[i];
     out += fmt("  %-10s %-5s  before: RMSE %6.2f  r %+.2f  | after: RMSE %6.2f  r %+.2f\n", b.stem.c_str(),
@@ -484,12 +501,14 @@ Json heldBackSideJson(const HeldBackComparison& c) {
 Json makeHeldBackJson(const HeldBackComparison& before, const HeldBackComparison& after) {
   return {{"quantity", before.quantity},
           {"unit", before.unit},
-          {"note", "the measured column is never fitted: the model's " + before.quantity + " along each record at its fitted toe-off state"},
+          {"note", "the measured column is never fitted: the model's " + before.quantity +
+                       " along each record at its fitted toe-off state"},
           {"before", heldBackSideJson(before)},
           {"after", heldBackSideJson(after)}};
 }
 
-std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackComparison& after, const std::string& title) {
+std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackComparison& after,
+                              const std::string& title) {
   std::vector<SvgPlot> panels;
   for (std::size_t i = 0; i < before.records.size() && i < after.records.size(); ++i) {
     const auto &b = before.records[i], &a = after.records[i];

@@ -21,13 +21,13 @@ std::string formatComparisonTable(const Comparison& comparison);
 
 /// The inputs of the residual panels.
 struct ResidualPlotData {
-  std::vector<double> time;              ///< s
-  std::vector<double> residual;          ///< measured - model, in the unit of the labels
-  std::vector<int> phase;                ///< index into phaseNames per sample
+  std::vector<double> time;      ///< s
+  std::vector<double> residual;  ///< measured - model, in the unit of the labels
+  std::vector<int> phase;        ///< index into phaseNames per sample
   std::vector<std::string> phaseNames;
   double plotSeconds = std::numeric_limits<double>::infinity();  ///< span shown against time
-  std::string timeTitle;                 ///< title of the residual-vs-time panel
-  std::string residualLabel;             ///< its y label with unit, e.g. "measured - model (N)"
+  std::string timeTitle;                                         ///< title of the residual-vs-time panel
+  std::string residualLabel;                                     ///< its y label with unit, e.g. "measured - model (N)"
   std::string meanLabel;                 ///< y label of the binned panels, e.g. "mean residual (N)"
   std::vector<StateVariable> variables;  ///< binned against (position, velocity, acceleration, ...)
 };
@@ -82,6 +82,7 @@ Json makeDiagnoseJson(const Diagnosis& diagnosis, const Comparison& before, cons
                       const std::optional<HeldBackComparison>& heldBefore,
                       const std::optional<HeldBackComparison>& heldAfter);
 /// Measured and model (before, after) against time, one panel per record, SVG.
-std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackComparison& after, const std::string& title);
+std::string renderHeldBackSvg(const HeldBackComparison& before, const HeldBackComparison& after,
+                              const std::string& title);
 
 }  // namespace swingsim

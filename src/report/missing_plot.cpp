@@ -12,7 +12,7 @@ namespace swingsim {
 
 namespace {
 
-constexpr double kMomentBinDeg = 5.0;  // as the moment's regions' bins (identify/missing_moment.cpp)
+constexpr double kMomentBinDeg = 5.0;             // as the moment's regions' bins (identify/missing_moment.cpp)
 constexpr std::size_t kMaxPointsPerPanel = 2000;  // a bench record has thousands of samples: thinned evenly
 
 double median(std::vector<double> v) {
@@ -63,13 +63,20 @@ SvgPlot draw(const Panel& in) {
     x.push_back(in.x[i]);
     y.push_back(in.y[i]);
   }
-  p.addPoints(x, y, stride > 1 ? fmt("one sample in %zu", stride) : std::string("each sample"), svgPaletteColor(1), 1.6);
+  p.addPoints(x, y, stride > 1 ? fmt("one sample in %zu", stride) : std::string("each sample"), svgPaletteColor(1),
+              1.6);
   return p;
 }
 
 Panel momentPanel(const MissingMoment& m, bool extending) {
-  Panel p{extending ? "while the knee extends" : "while the knee flexes", "measured knee flexion (deg)",
-          "missing knee moment (N m, + flexes)", kMomentBinDeg, {}, {}, {}, {}};
+  Panel p{extending ? "while the knee extends" : "while the knee flexes",
+          "measured knee flexion (deg)",
+          "missing knee moment (N m, + flexes)",
+          kMomentBinDeg,
+          {},
+          {},
+          {},
+          {}};
   for (std::size_t i = 0; i < m.kneeDeg.size(); ++i) {
     if ((m.kneeRateDegS[i] < 0) != extending) continue;
     p.x.push_back(m.kneeDeg[i]);
@@ -84,8 +91,14 @@ Panel momentPanel(const MissingMoment& m, bool extending) {
 }
 
 Panel forcePanel(const MissingForce& m, bool extending) {
-  Panel p{extending ? "while the piston extends" : "while the piston compresses", "measured piston position (mm)",
-          "missing force (N, + resists compression)", kMissingForceBinMm, {}, {}, {}, {}};
+  Panel p{extending ? "while the piston extends" : "while the piston compresses",
+          "measured piston position (mm)",
+          "missing force (N, + resists compression)",
+          kMissingForceBinMm,
+          {},
+          {},
+          {},
+          {}};
   for (std::size_t i = 0; i < m.positionMm.size(); ++i) {
     if ((m.speedMmS[i] < 0) != extending) continue;
     p.x.push_back(m.positionMm[i]);

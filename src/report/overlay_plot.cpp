@@ -25,19 +25,20 @@ SvgPlot overlayPanel(const std::vector<double>& time, const std::vector<double>&
 std::string renderOverlaySvg(const RecordComparison& r, const Comparison& c, const HeldBackComparison::Record* moment,
                              const std::string& momentUnit, const std::string& title) {
   std::vector<SvgPlot> panels;
-  panels.push_back(overlayPanel(r.time, r.measured, r.predicted, c.quantity, c.unit, "measured",
-                                c.quantity + ": measured and model, RMSE " + fmt("%.*f", c.decimals + 1, r.overall.rmse) +
-                                    " " + c.unit));
+  panels.push_back(overlayPanel(
+      r.time, r.measured, r.predicted, c.quantity, c.unit, "measured",
+      c.quantity + ": measured and model, RMSE " + fmt("%.*f", c.decimals + 1, r.overall.rmse) + " " + c.unit));
   if (!r.secondaryMeasured.empty() && r.secondaryMeasured.size() == r.secondaryPredicted.size())
     panels.push_back(overlayPanel(r.time, r.secondaryMeasured, r.secondaryPredicted, c.secondaryQuantity, c.unit,
                                   "measured",
                                   c.secondaryQuantity + ": measured and model, RMSE " +
                                       fmt("%.*f", c.decimals + 1, r.secondary.rmse) + " " + c.unit));
   if (moment) {
-    SvgPlot plot = overlayPanel(moment->time, moment->measured, moment->model, "knee moment", momentUnit + ", + = flexion",
-                                "measured (inverse dynamics)",
-                                fmt("knee moment: model against inverse dynamics (never fitted), RMSE %.1f ", moment->rmse) +
-                                    momentUnit + fmt(", r %+.2f", moment->correlation));
+    SvgPlot plot =
+        overlayPanel(moment->time, moment->measured, moment->model, "knee moment", momentUnit + ", + = flexion",
+                     "measured (inverse dynamics)",
+                     fmt("knee moment: model against inverse dynamics (never fitted), RMSE %.1f ", moment->rmse) +
+                         momentUnit + fmt(", r %+.2f", moment->correlation));
     plot.addHLine(0, "", "#999999");
     panels.push_back(plot);
   }

@@ -51,8 +51,10 @@ std::string px(double v) { return fmt("%.2f", v); }
 std::string renderStickFigureAnimation(const SwingResult& r, double hipHeight) {
   const SwingTrajectory& tr = r.trajectory;
   if (tr.size() == 0 || !(r.swingTime > 0))
-    throw std::invalid_argument("renderStickFigureAnimation: expected a swing with a trajectory and a positive swing "
-                                "time, found " + std::to_string(tr.size()) + " samples and " + fmt("%g", r.swingTime) + " s");
+    throw std::invalid_argument(
+        "renderStickFigureAnimation: expected a swing with a trajectory and a positive swing "
+        "time, found " +
+        std::to_string(tr.size()) + " samples and " + fmt("%g", r.swingTime) + " s");
   const std::vector<std::size_t> frames = chooseFrames(tr, r.swingTime);
   const Box box = calcBox(tr, frames, hipHeight);
   auto sx = [&](double x) { return (x - box.xLo) * kStickFigurePxPerMetre; };
@@ -63,14 +65,16 @@ std::string renderStickFigureAnimation(const SwingResult& r, double hipHeight) {
   std::string keyTimes;
   for (std::size_t k : frames) keyTimes += fmt("%.4f", tr.time[k] / duration) + ";";
   keyTimes += "1";
-  // One <animate> per endpoint coordinate (the hip's too, which stays put): the frames' values, then the last held to the end.
+  // One <animate> per endpoint coordinate (the hip's too, which stays put): the frames' values, then the last held to
+  // the end.
   auto animate = [&](const char* attribute, const std::vector<double>& column, bool isX) {
     std::string values;
     for (std::size_t k : frames) values += px(isX ? sx(column[k]) : sy(column[k])) + ";";
     const double last = column[frames.back()];
     values += px(isX ? sx(last) : sy(last));
     return std::string("<animate attributeName=\"") + attribute + "\" dur=\"" + fmt("%.4f", duration) +
-           "s\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + keyTimes + "\" values=\"" + values + "\"/>";
+           "s\" repeatCount=\"indefinite\" calcMode=\"linear\" keyTimes=\"" + keyTimes + "\" values=\"" + values +
+           "\"/>";
   };
   const std::vector<double> hipX(tr.size(), 0.0), hipY(tr.size(), hipHeight);
   struct Segment {

@@ -65,11 +65,20 @@ std::string svgEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -113,34 +122,30 @@ void SvgPlot::setYRange(double lo, double hi) {
   yHi_ = hi;
 }
 
-void SvgPlot::addLine(const std::vector<double>& xs, const std::vector<double>& ys,
-                      const std::string& label, const std::string& color, double strokeWidth,
-                      bool dashed) {
+void SvgPlot::addLine(const std::vector<double>& xs, const std::vector<double>& ys, const std::string& label,
+                      const std::string& color, double strokeWidth, bool dashed) {
   if (xs.size() != ys.size()) throw std::invalid_argument("SvgPlot::addLine: xs and ys differ in length");
   series_.push_back({xs, ys, label, color, strokeWidth, dashed, false});
 }
 
-void SvgPlot::addPoints(const std::vector<double>& xs, const std::vector<double>& ys,
-                        const std::string& label, const std::string& color, double radius) {
+void SvgPlot::addPoints(const std::vector<double>& xs, const std::vector<double>& ys, const std::string& label,
+                        const std::string& color, double radius) {
   if (xs.size() != ys.size()) throw std::invalid_argument("SvgPlot::addPoints: xs and ys differ in length");
   series_.push_back({xs, ys, label, color, radius, false, true});
 }
 
-void SvgPlot::addBand(double x0, double x1, const std::string& label, const std::string& color,
-                      double opacity) {
+void SvgPlot::addBand(double x0, double x1, const std::string& label, const std::string& color, double opacity) {
   if (!std::isfinite(x0) || !std::isfinite(x1)) return;
   bands_.push_back({std::min(x0, x1), std::max(x0, x1), label, color, opacity});
 }
 
-void SvgPlot::addHBand(double y0, double y1, const std::string& label, const std::string& color,
-                       double opacity) {
+void SvgPlot::addHBand(double y0, double y1, const std::string& label, const std::string& color, double opacity) {
   if (!std::isfinite(y0) || !std::isfinite(y1)) return;
   bands_.push_back({std::min(y0, y1), std::max(y0, y1), label, color, opacity, true});
 }
 
-void SvgPlot::addFill(const std::vector<double>& xs, const std::vector<double>& lows,
-                      const std::vector<double>& highs, const std::string& label, const std::string& color,
-                      double opacity) {
+void SvgPlot::addFill(const std::vector<double>& xs, const std::vector<double>& lows, const std::vector<double>& highs,
+                      const std::string& label, const std::string& color, double opacity) {
   if (xs.size() != lows.size() || xs.size() != highs.size())
     throw std::invalid_argument("SvgPlot::addFill: xs, lows and highs differ in length");
   fills_.push_back({xs, lows, highs, label, color, opacity});
@@ -154,8 +159,7 @@ void SvgPlot::setYTickLabels(const std::vector<std::pair<double, std::string>>& 
   marginLeft_ = leftMargin;
 }
 
-void SvgPlot::addHLine(double y, const std::string& label, const std::string& color, bool dashed,
-                       bool includeInRange) {
+void SvgPlot::addHLine(double y, const std::string& label, const std::string& color, bool dashed, bool includeInRange) {
   if (!std::isfinite(y)) return;
   refs_.push_back({y, label, color, dashed, true, includeInRange});
 }
@@ -243,14 +247,14 @@ std::string SvgPlot::renderBands(const Frame& f, const std::string& clipId) cons
     if (b.horizontal) {
       const double a = std::max(mapY(b.x1), top - 1), c = std::min(mapY(b.x0), top + plotH + 1);
       if (c <= a) continue;
-      s += "<rect x=\"" + px(left) + "\" y=\"" + px(a) + "\" width=\"" + px(plotW) + "\" height=\"" +
-           px(c - a) + "\" fill=\"" + svgEscape(b.color) + "\" fill-opacity=\"" + opacity(b.opacity) + "\"/>\n";
+      s += "<rect x=\"" + px(left) + "\" y=\"" + px(a) + "\" width=\"" + px(plotW) + "\" height=\"" + px(c - a) +
+           "\" fill=\"" + svgEscape(b.color) + "\" fill-opacity=\"" + opacity(b.opacity) + "\"/>\n";
       continue;
     }
     const double a = std::max(mapX(b.x0), left - 1), c = std::min(mapX(b.x1), left + plotW + 1);
     if (c <= a) continue;
-    s += "<rect x=\"" + px(a) + "\" y=\"" + px(top) + "\" width=\"" + px(c - a) + "\" height=\"" +
-         px(plotH) + "\" fill=\"" + svgEscape(b.color) + "\" fill-opacity=\"" + opacity(b.opacity) + "\"/>\n";
+    s += "<rect x=\"" + px(a) + "\" y=\"" + px(top) + "\" width=\"" + px(c - a) + "\" height=\"" + px(plotH) +
+         "\" fill=\"" + svgEscape(b.color) + "\" fill-opacity=\"" + opacity(b.opacity) + "\"/>\n";
   }
   // Filled bands between two curves, one polygon per finite run of points.
   for (const auto& fl : fills_) {
@@ -289,26 +293,24 @@ std::string SvgPlot::renderGrid(const Frame& f) const {
   const double ystep = yt.size() > 1 ? yt[1] - yt[0] : (f.y1 - f.y0);
   for (double v : xt) {
     const double X = mapX(v);
-    s += "<line x1=\"" + px(X) + "\" y1=\"" + px(top) + "\" x2=\"" + px(X) + "\" y2=\"" +
-         px(top + plotH) + "\" stroke=\"#e3e3e3\" stroke-width=\"1\"/>\n";
+    s += "<line x1=\"" + px(X) + "\" y1=\"" + px(top) + "\" x2=\"" + px(X) + "\" y2=\"" + px(top + plotH) +
+         "\" stroke=\"#e3e3e3\" stroke-width=\"1\"/>\n";
     s += "<line x1=\"" + px(X) + "\" y1=\"" + px(top + plotH) + "\" x2=\"" + px(X) + "\" y2=\"" +
          px(top + plotH + kTickLength) + "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
-    s += "<text x=\"" + px(X) + "\" y=\"" + px(top + plotH + kTickLength + kFontTick + 2) +
-         "\" font-size=\"" + px(kFontTick) + "\" text-anchor=\"middle\" fill=\"#333\">" +
-         tickLabel(v, xstep) + "</text>\n";
+    s += "<text x=\"" + px(X) + "\" y=\"" + px(top + plotH + kTickLength + kFontTick + 2) + "\" font-size=\"" +
+         px(kFontTick) + "\" text-anchor=\"middle\" fill=\"#333\">" + tickLabel(v, xstep) + "</text>\n";
   }
   std::vector<std::pair<double, std::string>> yLabels = yTickLabels_;
   if (yLabels.empty())
     for (double v : yt) yLabels.emplace_back(v, tickLabel(v, ystep));
   for (const auto& [v, text] : yLabels) {
     const double Y = mapY(v);
-    s += "<line x1=\"" + px(left) + "\" y1=\"" + px(Y) + "\" x2=\"" + px(left + plotW) + "\" y2=\"" +
-         px(Y) + "\" stroke=\"#e3e3e3\" stroke-width=\"1\"/>\n";
-    s += "<line x1=\"" + px(left - kTickLength) + "\" y1=\"" + px(Y) + "\" x2=\"" + px(left) +
-         "\" y2=\"" + px(Y) + "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
-    s += "<text x=\"" + px(left - kTickLength - 3) + "\" y=\"" + px(Y + kFontTick * 0.35) +
-         "\" font-size=\"" + px(kFontTick) + "\" text-anchor=\"end\" fill=\"#333\">" +
-         svgEscape(text) + "</text>\n";
+    s += "<line x1=\"" + px(left) + "\" y1=\"" + px(Y) + "\" x2=\"" + px(left + plotW) + "\" y2=\"" + px(Y) +
+         "\" stroke=\"#e3e3e3\" stroke-width=\"1\"/>\n";
+    s += "<line x1=\"" + px(left - kTickLength) + "\" y1=\"" + px(Y) + "\" x2=\"" + px(left) + "\" y2=\"" + px(Y) +
+         "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
+    s += "<text x=\"" + px(left - kTickLength - 3) + "\" y=\"" + px(Y + kFontTick * 0.35) + "\" font-size=\"" +
+         px(kFontTick) + "\" text-anchor=\"end\" fill=\"#333\">" + svgEscape(text) + "</text>\n";
   }
   return s;
 }
@@ -323,14 +325,12 @@ std::string SvgPlot::renderData(const Frame& f, const std::string& clipId) const
   for (const auto& r : refs_) {
     if (r.horizontal) {
       const double Y = mapY(r.value);
-      s += "<line x1=\"" + px(left) + "\" y1=\"" + px(Y) + "\" x2=\"" + px(left + plotW) +
-           "\" y2=\"" + px(Y) + "\" stroke=\"" + svgEscape(r.color) + "\" stroke-width=\"1.2\"" +
-           dashAttr(r.dashed) + "/>\n";
+      s += "<line x1=\"" + px(left) + "\" y1=\"" + px(Y) + "\" x2=\"" + px(left + plotW) + "\" y2=\"" + px(Y) +
+           "\" stroke=\"" + svgEscape(r.color) + "\" stroke-width=\"1.2\"" + dashAttr(r.dashed) + "/>\n";
     } else {
       const double X = mapX(r.value);
-      s += "<line x1=\"" + px(X) + "\" y1=\"" + px(top) + "\" x2=\"" + px(X) + "\" y2=\"" +
-           px(top + plotH) + "\" stroke=\"" + svgEscape(r.color) + "\" stroke-width=\"1.2\"" +
-           dashAttr(r.dashed) + "/>\n";
+      s += "<line x1=\"" + px(X) + "\" y1=\"" + px(top) + "\" x2=\"" + px(X) + "\" y2=\"" + px(top + plotH) +
+           "\" stroke=\"" + svgEscape(r.color) + "\" stroke-width=\"1.2\"" + dashAttr(r.dashed) + "/>\n";
     }
   }
   for (const auto& ser : series_) {
@@ -338,8 +338,8 @@ std::string SvgPlot::renderData(const Frame& f, const std::string& clipId) const
       s += "<g fill=\"" + svgEscape(ser.color) + "\">";
       for (std::size_t i = 0; i < ser.xs.size(); ++i) {
         if (!std::isfinite(ser.xs[i]) || !std::isfinite(ser.ys[i])) continue;
-        s += "<circle cx=\"" + px(mapX(ser.xs[i])) + "\" cy=\"" + px(mapY(ser.ys[i])) + "\" r=\"" +
-             px(ser.size) + "\"/>";
+        s += "<circle cx=\"" + px(mapX(ser.xs[i])) + "\" cy=\"" + px(mapY(ser.ys[i])) + "\" r=\"" + px(ser.size) +
+             "\"/>";
       }
       s += "</g>\n";
       continue;
@@ -355,9 +355,8 @@ std::string SvgPlot::renderData(const Frame& f, const std::string& clipId) const
       pen = true;
     }
     if (d.empty()) continue;
-    s += "<path d=\"" + d + "\" fill=\"none\" stroke=\"" + svgEscape(ser.color) +
-         "\" stroke-width=\"" + px(ser.size) + "\" stroke-linejoin=\"round\"" + dashAttr(ser.dashed) +
-         "/>\n";
+    s += "<path d=\"" + d + "\" fill=\"none\" stroke=\"" + svgEscape(ser.color) + "\" stroke-width=\"" + px(ser.size) +
+         "\" stroke-linejoin=\"round\"" + dashAttr(ser.dashed) + "/>\n";
   }
   s += "</g>\n";
   return s;
@@ -367,22 +366,21 @@ std::string SvgPlot::renderLabels(const Frame& f) const {
   const double left = f.left, top = f.top, plotW = f.plotW, plotH = f.plotH;
   std::string s;
   // Frame, labels, title.
-  s += "<rect x=\"" + px(left) + "\" y=\"" + px(top) + "\" width=\"" + px(plotW) + "\" height=\"" +
-       px(plotH) + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"1\"/>\n";
+  s += "<rect x=\"" + px(left) + "\" y=\"" + px(top) + "\" width=\"" + px(plotW) + "\" height=\"" + px(plotH) +
+       "\" fill=\"none\" stroke=\"#333\" stroke-width=\"1\"/>\n";
   if (!xLabel_.empty()) {
-    s += "<text x=\"" + px(left + plotW / 2) + "\" y=\"" + px(height_ - 10) + "\" font-size=\"" +
-         px(kFontLabel) + "\" text-anchor=\"middle\" fill=\"#111\">" + svgEscape(xLabel_) + "</text>\n";
+    s += "<text x=\"" + px(left + plotW / 2) + "\" y=\"" + px(height_ - 10) + "\" font-size=\"" + px(kFontLabel) +
+         "\" text-anchor=\"middle\" fill=\"#111\">" + svgEscape(xLabel_) + "</text>\n";
   }
   if (!yLabel_.empty()) {
     const double X = 16, Y = top + plotH / 2;
     s += "<text x=\"" + px(X) + "\" y=\"" + px(Y) + "\" font-size=\"" + px(kFontLabel) +
-         "\" text-anchor=\"middle\" fill=\"#111\" transform=\"rotate(-90 " + px(X) + " " + px(Y) +
-         ")\">" + svgEscape(yLabel_) + "</text>\n";
+         "\" text-anchor=\"middle\" fill=\"#111\" transform=\"rotate(-90 " + px(X) + " " + px(Y) + ")\">" +
+         svgEscape(yLabel_) + "</text>\n";
   }
   if (!title_.empty()) {
-    s += "<text x=\"" + px(left + plotW / 2) + "\" y=\"" + px(top - 12) + "\" font-size=\"" +
-         px(kFontTitle) + "\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"#111\">" +
-         svgEscape(title_) + "</text>\n";
+    s += "<text x=\"" + px(left + plotW / 2) + "\" y=\"" + px(top - 12) + "\" font-size=\"" + px(kFontTitle) +
+         "\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"#111\">" + svgEscape(title_) + "</text>\n";
   }
   return s;
 }
@@ -458,23 +456,22 @@ std::string SvgPlot::renderLegend(const Frame& f) const {
     const int best = calcLegendCorner(f, corners, boxW, boxH);
     const double bx = corners[best][0], by = corners[best][1];
     s += "<g font-size=\"" + px(kFontTick) + "\">\n";
-    s += "<rect x=\"" + px(bx) + "\" y=\"" + px(by) + "\" width=\"" + px(boxW) + "\" height=\"" +
-         px(boxH) + "\" fill=\"#ffffff\" fill-opacity=\"0.85\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
+    s += "<rect x=\"" + px(bx) + "\" y=\"" + px(by) + "\" width=\"" + px(boxW) + "\" height=\"" + px(boxH) +
+         "\" fill=\"#ffffff\" fill-opacity=\"0.85\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
     for (std::size_t i = 0; i < entries.size(); ++i) {
       const auto& e = entries[i];
       const double ry = by + 4 + kLegendRow * (static_cast<double>(i) + 0.5);
       const std::string c = svgEscape(e.color);
       if (e.kind == 2) {
-        s += "<rect x=\"" + px(bx + 6) + "\" y=\"" + px(ry - 6) + "\" width=\"20\" height=\"12\" fill=\"" +
-             c + "\" fill-opacity=\"0.35\"/>";
+        s += "<rect x=\"" + px(bx + 6) + "\" y=\"" + px(ry - 6) + "\" width=\"20\" height=\"12\" fill=\"" + c +
+             "\" fill-opacity=\"0.35\"/>";
       } else if (e.kind == 1) {
         s += "<circle cx=\"" + px(bx + 16) + "\" cy=\"" + px(ry) + "\" r=\"3\" fill=\"" + c + "\"/>";
       } else {
-        s += "<line x1=\"" + px(bx + 6) + "\" y1=\"" + px(ry) + "\" x2=\"" + px(bx + 26) + "\" y2=\"" +
-             px(ry) + "\" stroke=\"" + c + "\" stroke-width=\"2\"" + dashAttr(e.kind == 3) + "/>";
+        s += "<line x1=\"" + px(bx + 6) + "\" y1=\"" + px(ry) + "\" x2=\"" + px(bx + 26) + "\" y2=\"" + px(ry) +
+             "\" stroke=\"" + c + "\" stroke-width=\"2\"" + dashAttr(e.kind == 3) + "/>";
       }
-      s += "<text x=\"" + px(bx + 30) + "\" y=\"" + px(ry + 4) + "\" fill=\"#111\">" +
-           svgEscape(e.label) + "</text>\n";
+      s += "<text x=\"" + px(bx + 30) + "\" y=\"" + px(ry + 4) + "\" fill=\"#111\">" + svgEscape(e.label) + "</text>\n";
     }
     s += "</g>\n";
   }
@@ -488,15 +485,15 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
   f.top = kMarginTop;
   f.plotW = width_ - marginLeft_ - kMarginRight;
   f.plotH = height_ - kMarginTop - kMarginBottom;
-  const std::string clipId = "clip" + std::to_string(static_cast<long>(dx)) + "_" +
-                             std::to_string(static_cast<long>(dy));
+  const std::string clipId =
+      "clip" + std::to_string(static_cast<long>(dx)) + "_" + std::to_string(static_cast<long>(dy));
 
   std::string s;
   s += "<g transform=\"translate(" + px(dx) + "," + px(dy) + ")\" font-family=\"sans-serif\">\n";
-  s += "<defs><clipPath id=\"" + clipId + "\"><rect x=\"" + px(f.left) + "\" y=\"" + px(f.top) +
-       "\" width=\"" + px(f.plotW) + "\" height=\"" + px(f.plotH) + "\"/></clipPath></defs>\n";
-  s += "<rect x=\"" + px(f.left) + "\" y=\"" + px(f.top) + "\" width=\"" + px(f.plotW) + "\" height=\"" +
-       px(f.plotH) + "\" fill=\"#ffffff\" stroke=\"none\"/>\n";
+  s += "<defs><clipPath id=\"" + clipId + "\"><rect x=\"" + px(f.left) + "\" y=\"" + px(f.top) + "\" width=\"" +
+       px(f.plotW) + "\" height=\"" + px(f.plotH) + "\"/></clipPath></defs>\n";
+  s += "<rect x=\"" + px(f.left) + "\" y=\"" + px(f.top) + "\" width=\"" + px(f.plotW) + "\" height=\"" + px(f.plotH) +
+       "\" fill=\"#ffffff\" stroke=\"none\"/>\n";
   s += renderBands(f, clipId) + renderGrid(f) + renderData(f, clipId) + renderLabels(f) + renderLegend(f);
   s += "</g>\n";
   return s;
@@ -505,15 +502,13 @@ std::string SvgPlot::renderGroup(double dx, double dy) const {
 namespace {
 
 std::string svgHeader(double w, double h) {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(w) + "\" height=\"" + px(h) +
-         "\" viewBox=\"0 0 " + px(w) + " " + px(h) + "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(w) + "\" height=\"" + px(h) + "\" viewBox=\"0 0 " +
+         px(w) + " " + px(h) + "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
 }
 
 }  // namespace
 
-std::string SvgPlot::render() const {
-  return svgHeader(width_, height_) + renderGroup(0, 0) + "</svg>\n";
-}
+std::string SvgPlot::render() const { return svgHeader(width_, height_) + renderGroup(0, 0) + "</svg>\n"; }
 
 std::string renderStackedSvg(const std::vector<SvgPlot>& panels, const std::string& title) {
   double w = 0, h = title.empty() ? 0 : kFigureTitleHeight;

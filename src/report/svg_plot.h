@@ -37,36 +37,31 @@ class SvgPlot {
   void setLegend(bool show) { legend_ = show; }
 
   /// A polyline; a non-finite x or y breaks the line. Empty label = not in the legend.
-  void addLine(const std::vector<double>& xs, const std::vector<double>& ys,
-               const std::string& label, const std::string& color, double strokeWidth = 1.5,
-               bool dashed = false);
+  void addLine(const std::vector<double>& xs, const std::vector<double>& ys, const std::string& label,
+               const std::string& color, double strokeWidth = 1.5, bool dashed = false);
   /// Markers (circles of `radius` px); non-finite points are skipped.
-  void addPoints(const std::vector<double>& xs, const std::vector<double>& ys,
-                 const std::string& label, const std::string& color, double radius = 2.5);
+  void addPoints(const std::vector<double>& xs, const std::vector<double>& ys, const std::string& label,
+                 const std::string& color, double radius = 2.5);
   /// A shaded vertical band x0..x1 over the full height. Bands with the same label
   /// appear once in the legend. Drawn beneath lines and points.
-  void addBand(double x0, double x1, const std::string& label, const std::string& color,
-               double opacity = 0.18);
+  void addBand(double x0, double x1, const std::string& label, const std::string& color, double opacity = 0.18);
   /// A shaded horizontal band y0..y1 across the full width (e.g. a zone of stability).
   /// Not used for auto-ranging; drawn beneath lines and points.
-  void addHBand(double y0, double y1, const std::string& label, const std::string& color,
-                double opacity = 0.15);
+  void addHBand(double y0, double y1, const std::string& label, const std::string& color, double opacity = 0.15);
   /// A shaded area between two curves over the same xs (an uncertainty band); a
   /// non-finite value breaks it. Used for auto-ranging; drawn beneath lines and points.
-  void addFill(const std::vector<double>& xs, const std::vector<double>& lows,
-               const std::vector<double>& highs, const std::string& label, const std::string& color,
-               double opacity = 0.22);
+  void addFill(const std::vector<double>& xs, const std::vector<double>& lows, const std::vector<double>& highs,
+               const std::string& label, const std::string& color, double opacity = 0.22);
   /// Text labels at given y values instead of numeric y ticks (the rows of a tornado
   /// figure); `leftMargin` px leaves room for them (at least the default 74).
   void setYTickLabels(const std::vector<std::pair<double, std::string>>& labels, double leftMargin);
 
   /// A horizontal reference line across the panel (not used for auto-ranging y unless
   /// `includeInRange`).
-  void addHLine(double y, const std::string& label, const std::string& color,
-                bool dashed = true, bool includeInRange = false);
+  void addHLine(double y, const std::string& label, const std::string& color, bool dashed = true,
+                bool includeInRange = false);
   /// A vertical reference line.
-  void addVLine(double x, const std::string& label, const std::string& color,
-                bool dashed = true);
+  void addVLine(double x, const std::string& label, const std::string& color, bool dashed = true);
 
   double width() const { return width_; }
   double height() const { return height_; }

@@ -35,8 +35,8 @@ void addSymmetryMarks(const ParticipantSweep& ps, SvgPlot& plot) {
     plot.addPoints(px, pa, "measured anatomical (Table 4)", svgPaletteColor(3), 4);
   }
   if (sym.found)
-    plot.addPoints({sym.lowering}, {sym.prostheticTime}, sym.reached ? "our best symmetry" : "our best symmetry (not reached)",
-                   svgPaletteColor(4), 6);
+    plot.addPoints({sym.lowering}, {sym.prostheticTime},
+                   sym.reached ? "our best symmetry" : "our best symmetry (not reached)", svgPaletteColor(4), 6);
 }
 
 }  // namespace
@@ -99,7 +99,7 @@ SvgPlot makeTornadoFigure(const ParticipantUncertainty& pu) {
   plot.setXLabel("fastest lowering minus nominal (m); each assumption at the low / high end of its range");
   const double nominal = pu.nominal.calcFastestLowering();
   std::vector<std::pair<double, std::string>> labels;
-  double reach = 0.01;  // m: at least +-10 mm, one grid step either side
+  double reach = 0.01;              // m: at least +-10 mm, one grid step either side
   constexpr double kOffset = 0.17;  // rows: low bar above, high bar below the row's centre
   constexpr double kBarPx = 10;
   bool labelled = false;

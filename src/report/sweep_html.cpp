@@ -55,7 +55,8 @@ std::string makeSweepReportHtml(const SweepStudy& study, const SweepResults& res
   MarkdownHtmlHooks hooks;
   hooks.image = [&](const std::string& alt, const std::string& path) {
     const auto it = files.find(path);
-    if (it == files.end()) throw std::logic_error("makeSweepReportHtml: report.md links " + path + ", which is not in the report");
+    if (it == files.end())
+      throw std::logic_error("makeSweepReportHtml: report.md links " + path + ", which is not in the report");
     return "<figure>\n" + inlineSvg(it->second, "f" + std::to_string(++figureCount) + "-") + "<figcaption>" +
            escapeHtml(alt) + "</figcaption>\n</figure>\n";
   };

@@ -3,8 +3,8 @@
 #include "report/sweep_markdown.h"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/input_error.h"
@@ -38,21 +38,23 @@ std::string ms(double seconds) {
 
 std::string formatUncertaintySection(const UncertaintyResults& u) {
   std::string md = "## How sure is the optimum\n\n";
-  md += "The sweep above uses one value for each assumption the paper leaves out. Here each is varied over a "
-        "documented range (docs/uncertainty.md: the range and its source for every row): one at a time to its low "
-        "and high end (the tornado figure of each participant), and all together in " +
-        std::to_string(u.samples) + " Monte Carlo samples (uniform draws, the COM rule 50/50; std::mt19937_64 seed " +
-        std::to_string(u.seed) + "). The hip time scale is not recalibrated per sample: it is one ranged "
-        "assumption. The interval is of the model's answer under these assumptions, not of a runner's optimum.\n\n";
+  md +=
+      "The sweep above uses one value for each assumption the paper leaves out. Here each is varied over a "
+      "documented range (docs/uncertainty.md: the range and its source for every row): one at a time to its low "
+      "and high end (the tornado figure of each participant), and all together in " +
+      std::to_string(u.samples) + " Monte Carlo samples (uniform draws, the COM rule 50/50; std::mt19937_64 seed " +
+      std::to_string(u.seed) +
+      "). The hip time scale is not recalibrated per sample: it is one ranged "
+      "assumption. The interval is of the model's answer under these assumptions, not of a runner's optimum.\n\n";
   md += mdRow({"participant", "nominal fastest (m)", "median (m)", "5-95 % (m)", "swing time median (s)",
                "swing time 5-95 % (s)", "samples without a swing end"});
   md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
   for (const auto& pu : u.participants) {
-    md += mdRow({pu.name, formatLoweringOrNone(pu.nominal.calcFastestLowering()), fmt("%.3f", pu.fastestLowering.median),
-                 fmt("%.3f", pu.fastestLowering.p05) + " - " + fmt("%.3f", pu.fastestLowering.p95),
-                 fmt("%.4f", pu.fastestTime.median),
-                 fmt("%.4f", pu.fastestTime.p05) + " - " + fmt("%.4f", pu.fastestTime.p95),
-                 std::to_string(pu.samplesWithoutSwingEnd)});
+    md += mdRow(
+        {pu.name, formatLoweringOrNone(pu.nominal.calcFastestLowering()), fmt("%.3f", pu.fastestLowering.median),
+         fmt("%.3f", pu.fastestLowering.p05) + " - " + fmt("%.3f", pu.fastestLowering.p95),
+         fmt("%.4f", pu.fastestTime.median), fmt("%.4f", pu.fastestTime.p05) + " - " + fmt("%.4f", pu.fastestTime.p95),
+         std::to_string(pu.samplesWithoutSwingEnd)});
   }
   md += "\n";
   for (const auto& pu : u.participants) {
@@ -63,10 +65,11 @@ std::string formatUncertaintySection(const UncertaintyResults& u) {
     md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
     for (const auto& r : pu.sensitivity) {
       auto t = [](double v) { return std::isfinite(v) ? fmt("%.4f", v) : std::string("no end"); };
-      md += mdRow({r.name + (unitSuffix(r.unit).empty() ? "" : " (" + r.unit + ")"), formatAssumptionValue(r.assumption, r.lowValue),
-                   formatAssumptionValue(r.assumption, r.highValue), formatLoweringOrNone(r.low.calcFastestLowering()),
-                   formatLoweringOrNone(r.high.calcFastestLowering()), t(r.low.calcFastestTime()),
-                   t(r.high.calcFastestTime())});
+      md +=
+          mdRow({r.name + (unitSuffix(r.unit).empty() ? "" : " (" + r.unit + ")"),
+                 formatAssumptionValue(r.assumption, r.lowValue), formatAssumptionValue(r.assumption, r.highValue),
+                 formatLoweringOrNone(r.low.calcFastestLowering()), formatLoweringOrNone(r.high.calcFastestLowering()),
+                 t(r.low.calcFastestTime()), t(r.high.calcFastestTime())});
     }
     md += "\n";
   }
@@ -80,7 +83,8 @@ namespace {
 // The fastest-lowering table's strike cell: only where the clearance's assumption holds.
 std::string toeStrikeCell(const Participant* p, const std::optional<double>& clearance) {
   if (!clearance) return "none (no clearance)";
-  if (p != nullptr && !p->toeClearance.alarmHolds()) return "n/a (running; clearance " + fmt("%+.3f", *clearance) + " m vs standing hip)";
+  if (p != nullptr && !p->toeClearance.alarmHolds())
+    return "n/a (running; clearance " + fmt("%+.3f", *clearance) + " m vs standing hip)";
   return *clearance < 0 ? "yes" : "no";
 }
 
@@ -89,13 +93,15 @@ std::string toeStrikeCell(const Participant* p, const std::optional<double>& cle
 std::string formatTerminalImpactSection(const SweepResults& results) {
   if (results.terminalImpact.empty()) return "";
   std::string md = "## Terminal impact: bounce and the interior optimum (Burkett's findings)\n\n";
-  md += "Burkett et al. saw the knee bounce out of extension at large lowerings for every participant, and their "
-        "model's swing time rise again past an interior optimum. The hyperextension stop here is a Hertz contact with a "
-        "coefficient of restitution (docs/assumptions.md, \"Hyperextension stop\"); the swing ends when the knee has "
-        "settled in the zone of stability, so a bounce lengthens it. Each participant's first stop impact is booked "
-        "by cause (work from contact to the top of the rebound), and the sweep is repeated without the knee friction "
-        "near extension.\n\n";
-  md += mdRow({"participant", "Tc (N m)", "bounces at", "interior optimum", "without friction: bounces at", "without friction: fastest (m)"});
+  md +=
+      "Burkett et al. saw the knee bounce out of extension at large lowerings for every participant, and their "
+      "model's swing time rise again past an interior optimum. The hyperextension stop here is a Hertz contact with a "
+      "coefficient of restitution (docs/assumptions.md, \"Hyperextension stop\"); the swing ends when the knee has "
+      "settled in the zone of stability, so a bounce lengthens it. Each participant's first stop impact is booked "
+      "by cause (work from contact to the top of the rebound), and the sweep is repeated without the knee friction "
+      "near extension.\n\n";
+  md += mdRow({"participant", "Tc (N m)", "bounces at", "interior optimum", "without friction: bounces at",
+               "without friction: fastest (m)"});
   md += mdRow({"---", "---", "---", "---", "---", "---"});
   auto list = [](const std::vector<double>& v) {
     if (v.empty()) return std::string("none");
@@ -104,8 +110,8 @@ std::string formatTerminalImpactSection(const SweepResults& results) {
     return s;
   };
   for (const auto& c : results.terminalImpact) {
-    md += mdRow({c.participant, fmt("%.1f", c.frictionMoment), list(c.bounceLowerings), c.interiorOptimum ? "yes" : "no",
-                 list(c.bounceLoweringsWithoutFriction),
+    md += mdRow({c.participant, fmt("%.1f", c.frictionMoment), list(c.bounceLowerings),
+                 c.interiorOptimum ? "yes" : "no", list(c.bounceLoweringsWithoutFriction),
                  std::isnan(c.fastestWithoutFriction) ? "none ended" : fmt("%.3f", c.fastestWithoutFriction)});
   }
   md += "\n";
@@ -144,27 +150,31 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
   if (results.table4.empty()) return "";
   std::string md = "## Table 4 as validation: errors against the measured swing times\n\n";
   if (results.calibratedTo == CalibrationTarget::kStored) {
-    md += "The hip time scales are the participant files' (calibrated to Table 3's model column: `swingsim calibrate`). ";
+    md +=
+        "The hip time scales are the participant files' (calibrated to Table 3's model column: `swingsim calibrate`). ";
   } else {
     md += std::string("This run calibrated each participant's hip time scale to Table 3's **") +
           calibrationTargetKey(results.calibratedTo) + "** column before sweeping (`calibrate_to:` in the study):\n\n";
     for (const auto& c : results.calibrations)
       md += "- " + c.participant + ": " +
-            (c.ok ? "time scale " + fmt("%.4f", c.timeScale) + " gives " + fmt("%.3f", c.targetTime) + " s at the standard location"
+            (c.ok ? "time scale " + fmt("%.4f", c.timeScale) + " gives " + fmt("%.3f", c.targetTime) +
+                        " s at the standard location"
                   : c.failure) +
             "\n";
     md += "\n";
   }
-  md += "Fitted to Burkett's numbers: one hip time scale per participant, to his Table 3; nothing else (the hip moment "
-        "shape, the damping table, the stop and the swing-end rule were chosen before any comparison with Table 4). "
-        "Errors below are over Table 4's lowered rows (the standard-location row is Table 3, the calibration target).";
+  md +=
+      "Fitted to Burkett's numbers: one hip time scale per participant, to his Table 3; nothing else (the hip moment "
+      "shape, the damping table, the stop and the swing-end rule were chosen before any comparison with Table 4). "
+      "Errors below are over Table 4's lowered rows (the standard-location row is Table 3, the calibration target).";
   const bool loo = results.calibratedTo != CalibrationTarget::kStored;
   if (loo)
-    md += " Leave-one-out: each participant's time scale replaced by the mean of the other calibrated participants' "
-          "scales, as a new runner without his own Table 3 time would be predicted.";
+    md +=
+        " Leave-one-out: each participant's time scale replaced by the mean of the other calibrated participants' "
+        "scales, as a new runner without his own Table 3 time would be predicted.";
   md += "\n\n";
-  std::vector<std::string> head = {"participant", "lowering (m)", "measured (s)", "ours (s)", "Burkett model (s)", "ours - measured",
-                                   "model - measured"};
+  std::vector<std::string> head = {"participant",       "lowering (m)",    "measured (s)",    "ours (s)",
+                                   "Burkett model (s)", "ours - measured", "model - measured"};
   if (loo) head.push_back("leave-one-out (s)");
   md += mdRow(head);
   md += mdRow(std::vector<std::string>(head.size(), "---"));
@@ -172,8 +182,9 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
   auto diff = [](double a, double b) { return std::isnan(a) ? std::string("-") : ms(a - b); };
   for (const auto& v : results.table4) {
     for (const auto& r : v.rows) {
-      std::vector<std::string> row = {v.participant, fmt("%.3f", r.lowering), fmt("%.3f", r.measured), num(r.ours),
-                                      fmt("%.3f", r.model), diff(r.ours, r.measured), diff(r.model, r.measured)};
+      std::vector<std::string> row = {
+          v.participant,        fmt("%.3f", r.lowering),  fmt("%.3f", r.measured),  num(r.ours),
+          fmt("%.3f", r.model), diff(r.ours, r.measured), diff(r.model, r.measured)};
       if (loo) row.push_back(num(r.oursLeaveOneOut));
       md += mdRow(row);
     }
@@ -181,13 +192,14 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
   md += "\n";
   std::vector<std::string> sumHead = {"participant", "RMSE ours (ms)", "RMSE Burkett model (ms)"};
   if (loo) sumHead.push_back("RMSE leave-one-out (ms)");
-  for (const char* h : {"shortening measured (ms)", "shortening ours (ms)", "shortening Burkett model (ms)"}) sumHead.push_back(h);
+  for (const char* h : {"shortening measured (ms)", "shortening ours (ms)", "shortening Burkett model (ms)"})
+    sumHead.push_back(h);
   md += mdRow(sumHead);
   md += mdRow(std::vector<std::string>(sumHead.size(), "---"));
   auto msOrDash = [](double v) { return std::isnan(v) ? std::string("-") : fmt("%.0f", v * 1000); };
   for (const auto& v : results.table4) {
-    std::vector<std::string> row = {v.participant + (v.calibrated || !loo ? "" : " (not calibrated)"), msOrDash(v.rmseOurs),
-                                    msOrDash(v.rmseModel)};
+    std::vector<std::string> row = {v.participant + (v.calibrated || !loo ? "" : " (not calibrated)"),
+                                    msOrDash(v.rmseOurs), msOrDash(v.rmseModel)};
     if (loo) row.push_back(msOrDash(v.rmseLeaveOneOut));
     for (double x : {v.shorteningMeasured, v.shorteningOurs, v.shorteningModel}) row.push_back(msOrDash(x));
     md += mdRow(row);
@@ -197,11 +209,12 @@ std::string formatTable4ValidationSection(const SweepResults& results) {
   if (loo) all.push_back(msOrDash(calcRms(pooled.leaveOneOut)));
   for (int k = 0; k < 3; ++k) all.push_back("");
   md += mdRow(all);
-  md += "\nShortening: standard location minus the largest Table 4 lowering simulated here (positive = faster when "
-        "lowered).\n\n"
-        "Which physical effect, shared by every runner, would explain these rows, tested on held-out runners: "
-        "`swingsim diagnose studies/burkett2004-table4.yaml` (docs/diagnosis.md, \"The sweep\"; `scripts/main-job.sh` "
-        "runs it after this sweep and writes out/burkett2004-table4/report.md).\n\n";
+  md +=
+      "\nShortening: standard location minus the largest Table 4 lowering simulated here (positive = faster when "
+      "lowered).\n\n"
+      "Which physical effect, shared by every runner, would explain these rows, tested on held-out runners: "
+      "`swingsim diagnose studies/burkett2004-table4.yaml` (docs/diagnosis.md, \"The sweep\"; `scripts/main-job.sh` "
+      "runs it after this sweep and writes out/burkett2004-table4/report.md).\n\n";
   return md;
 }
 
@@ -211,9 +224,12 @@ namespace {
 
 // The title and how swing time is measured.
 std::string formatIntro(const SweepStudy& study) {
-  const std::string by = study.path.empty() ? "Generated by swingsim from a leg given without a study file (swingsim serve's page or Python)"
-                                            : "Generated by `swingsim sweep " + study.path + "`";
-  return by + ". Swing time is measured from toe-off until the thigh has "
+  const std::string by =
+      study.path.empty()
+          ? "Generated by swingsim from a leg given without a study file (swingsim serve's page or Python)"
+          : "Generated by `swingsim sweep " + study.path + "`";
+  return by +
+         ". Swing time is measured from toe-off until the thigh has "
          "reached its target flexion AND the knee, after its peak flexion, is back inside the zone of stability "
          "(in whichever order). All numbers below were computed by this run.\n\n";
 }
@@ -276,13 +292,15 @@ std::string formatSummaryNext(const SweepResults& results, const UncertaintyResu
                               const PaperAgreement& agreement) {
   std::vector<std::string> next;
   if (agreement.disagree > 0)
-    next.push_back("the " + std::to_string(agreement.disagree) +
-                   " Table 4 rows that differ from Burkett's model by more than 20 ms (\"Where we disagree with the paper\")");
+    next.push_back(
+        "the " + std::to_string(agreement.disagree) +
+        " Table 4 rows that differ from Burkett's model by more than 20 ms (\"Where we disagree with the paper\")");
   std::string falling;
   for (const auto& ps : results.participants)
     if (ps.best >= 0 && ps.best == lastEndedOnGrid(ps)) falling += (falling.empty() ? "" : ", ") + ps.name;
   if (!falling.empty())
-    next.push_back("the swing time of " + falling + ", still falling at the last lowering that ends a swing (the figures)");
+    next.push_back("the swing time of " + falling +
+                   ", still falling at the last lowering that ends a swing (the figures)");
   std::string strongest;
   for (const auto& ps : results.participants) {
     const ParticipantUncertainty* pu = uncertaintyOf(uncertainty, ps.name);
@@ -337,7 +355,8 @@ std::string formatTables34Rows(const SweepResults& results) {
       } else if (ours) {
         o = shortFailure(*ours);
       }
-      md += mdRow({ps.name, fmt("%.3f", row.lowering), fmt("%.3f", row.model), fmt("%.3f", row.measuredProsthetic), o, d1, d2});
+      md += mdRow(
+          {ps.name, fmt("%.3f", row.lowering), fmt("%.3f", row.model), fmt("%.3f", row.measuredProsthetic), o, d1, d2});
     }
   }
   return md;
@@ -364,21 +383,26 @@ std::string formatSweepShape(const SweepResults& results) {
 }
 
 // Tables 3 and 4 side by side, where and why this model disagrees with the paper.
-std::string formatTables34Section(const SweepStudy& study, const SweepResults& results, const PaperAgreement& agreement) {
+std::string formatTables34Section(const SweepStudy& study, const SweepResults& results,
+                                  const PaperAgreement& agreement) {
   std::string md = "## Burkett 2004 Tables 3 and 4 beside this model\n\n";
-  md += "Table 3 (standard location) is the calibration target: one hip-moment time scale per participant was "
-        "fitted to it (`swingsim calibrate`). Table 4 is the validation set: nothing was tuned to it.\n\n";
+  md +=
+      "Table 3 (standard location) is the calibration target: one hip-moment time scale per participant was "
+      "fitted to it (`swingsim calibrate`). Table 4 is the validation set: nothing was tuned to it.\n\n";
   md += formatTables34Rows(results);
   md += "\n**Where we disagree with the paper** (" + std::to_string(agreement.disagree) +
         " rows differ from Burkett's model by more than 20 ms). At the standard location we agree by construction "
-        "(calibration). What our sweep did:\n\n" + formatSweepShape(results) +
+        "(calibration). What our sweep did:\n\n" +
+        formatSweepShape(results) +
         "\nThe assumptions most likely responsible for the differences, in order: "
         "(1) the *hip moment shape*: Burkett applied each participant's measured dynamometer moment, which we do not "
         "have; ours is a smooth biphasic profile whose extension phase pulls the shank into extension at a fixed time; "
         "(2) the *swing-end rule*: where the thigh target becomes the later of the two conditions, swing time is "
         "governed by how fast the heavier, longer leg flexes at the hip rather than by the knee; "
         "(3) the *COM rule* (" +
-        std::string(study.participants.front().comRule == ComRule::kFixedFromProximal ? "COMs fixed from the proximal joint" : "COMs proportional") +
+        std::string(study.participants.front().comRule == ComRule::kFixedFromProximal
+                        ? "COMs fixed from the proximal joint"
+                        : "COMs proportional") +
         "): it sets how much shank-and-foot inertia about the hip grows as the knee is lowered.\n\n";
   return md;
 }
@@ -386,7 +410,8 @@ std::string formatTables34Section(const SweepStudy& study, const SweepResults& r
 // The fastest lowering per participant beside Burkett's model's.
 std::string formatFastestSection(const SweepStudy& study, const SweepResults& results) {
   std::string md = "## Fastest lowering per participant\n\n";
-  md += mdRow({"participant", "ours (m)", "ours swing time (s)", "Burkett model (m)", "difference (m)", "bounce at ours", "toe strikes at ours"});
+  md += mdRow({"participant", "ours (m)", "ours swing time (s)", "Burkett model (m)", "difference (m)",
+               "bounce at ours", "toe strikes at ours"});
   md += mdRow({"---", "---", "---", "---", "---", "---", "---"});
   for (const auto& ps : results.participants) {
     const PublishedParticipant* pub = ps.published;
@@ -407,16 +432,19 @@ std::string formatFastestSection(const SweepStudy& study, const SweepResults& re
 // (the knee's first entry into the zone) on both sides; says so when there is none.
 std::string formatJumpsSection(const SweepResults& results) {
   std::string md = "## Jumps of the swing time\n\n";
-  md += "The swing ends once the knee stays inside the zone of stability, so a knee that rebounds just past the "
-        "zone's edge swings a whole excursion longer than one that stops just short of it: the swing time jumps "
-        "there (docs/swing-time-jumps.md). Each jump between neighbouring grid lowerings is narrowed by bisection to " +
-        fmt("%.1f", kJumpBracket * 1000) + " mm; no symmetry lowering or interpolated time is read across one. The knee's "
-        "first entry into the zone is continuous across a jump: the difference between the two columns is the "
-        "settle rule's share.\n\n";
+  md +=
+      "The swing ends once the knee stays inside the zone of stability, so a knee that rebounds just past the "
+      "zone's edge swings a whole excursion longer than one that stops just short of it: the swing time jumps "
+      "there (docs/swing-time-jumps.md). Each jump between neighbouring grid lowerings is narrowed by bisection to " +
+      fmt("%.1f", kJumpBracket * 1000) +
+      " mm; no symmetry lowering or interpolated time is read across one. The knee's "
+      "first entry into the zone is continuous across a jump: the difference between the two columns is the "
+      "settle rule's share.\n\n";
   std::string rows;
   for (const auto& ps : results.participants)
     for (const SwingTimeJump& j : ps.jumps)
-      rows += mdRow({ps.name, fmt("%.4f", j.calcLowering()), fmt("%.4f", j.below.swingTime) + " -> " + fmt("%.4f", j.above.swingTime),
+      rows += mdRow({ps.name, fmt("%.4f", j.calcLowering()),
+                     fmt("%.4f", j.below.swingTime) + " -> " + fmt("%.4f", j.above.swingTime),
                      fmtOrNone("%.4f", j.below.firstZoneEntry) + " -> " + fmtOrNone("%.4f", j.above.firstZoneEntry),
                      j.describeCause()});
   if (rows.empty()) return md + "No participant's swing time jumps between neighbouring grid lowerings.\n\n";
@@ -431,7 +459,8 @@ std::string formatMassSection(const SweepResults& results) {
   for (const auto& ps : results.participants) anyMass = anyMass || ps.bestWithMass >= 0;
   if (!anyMass) return "";
   std::string md = "## Lowering and added shank mass together (beyond the paper)\n\n";
-  md += mdRow({"participant", "lowering (m)", "added mass (kg)", "below knee (m)", "swing time (s)", "gain vs lowering alone"});
+  md += mdRow(
+      {"participant", "lowering (m)", "added mass (kg)", "below knee (m)", "swing time (s)", "gain vs lowering alone"});
   md += mdRow({"---", "---", "---", "---", "---", "---"});
   for (const auto& ps : results.participants) {
     if (ps.bestWithMass < 0 || ps.best < 0) continue;
@@ -461,11 +490,12 @@ std::string formatParticipantSection(const SweepStudy& study, const SweepResults
   md += "![knee flexion vs time](" + base + "-knee-flexion.svg)\n\n";
   if (p && !ps.points.empty() && ps.points.front().ok) {
     std::vector<SvgPlot> strips;
-    strips.push_back(makeFilmstrip(ps.name + " at the standard knee location", ps.points.front().result, calcHipHeight(*p)));
+    strips.push_back(
+        makeFilmstrip(ps.name + " at the standard knee location", ps.points.front().result, calcHipHeight(*p)));
     if (ps.best > 0) {
       const auto& b = ps.points[static_cast<std::size_t>(ps.best)];
-      strips.push_back(makeFilmstrip(ps.name + " at the fastest lowering, " + fmt("%.3f", b.lowering) + " m",
-                                     b.result, calcHipHeight(*p)));
+      strips.push_back(makeFilmstrip(ps.name + " at the fastest lowering, " + fmt("%.3f", b.lowering) + " m", b.result,
+                                     calcHipHeight(*p)));
     }
     files[base + "-filmstrip.svg"] = renderStackedSvg(strips);
     md += "![stick-figure filmstrip](" + base + "-filmstrip.svg)\n\n";
@@ -506,8 +536,9 @@ std::string formatAssumptionsSection(const SweepStudy& study) {
   md += "- Knee damping table (not published): " + studyKneeModelPath(study, p) +
         ", the same for everyone; viscous speed rule (moment scales with speed / 150 deg/s).\n";
   md += std::string("- COM rule: ") +
-        (p.comRule == ComRule::kFixedFromProximal ? "thigh COM fixed from the hip, shank COM fixed from the knee (moves down with the knee unit)"
-                                                  : "COMs keep their fraction of segment length") +
+        (p.comRule == ComRule::kFixedFromProximal
+             ? "thigh COM fixed from the hip, shank COM fixed from the knee (moves down with the knee unit)"
+             : "COMs keep their fraction of segment length") +
         "; inertias about the COMs unchanged (Burkett). Foot COM measured from the " +
         (p.footComFrom == FootComFrom::kToe ? "toe" : "ankle") + ".\n";
   md += "- Swing-end rule: thigh at " + fmt("%.0f", p.swingEnd.thighTargetFlexion * kRadToDeg) +
@@ -515,16 +546,19 @@ std::string formatAssumptionsSection(const SweepStudy& study) {
         " deg after its peak, in whichever order, and staying there for " + fmt("%.2f", p.swingEnd.settleDwell) +
         " s (the settle rule: a bounce out of the zone lengthens the swing to the next entry).\n";
   md += "- Toe-off: hip " + fmt("%.0f", p.initial.hipFlexion * kRadToDeg) + " deg, knee " +
-        fmt("%.0f", p.initial.kneeFlexion * kRadToDeg) + " deg, zero velocities (Burkett). Knee friction Tc below 4 deg; "
+        fmt("%.0f", p.initial.kneeFlexion * kRadToDeg) +
+        " deg, zero velocities (Burkett). Knee friction Tc below 4 deg; "
         "Hunt-Crossley hyperextension stop at full extension.\n";
-  md += "- Toe clearance: the lowest of ankle and toe from peak knee flexion to the swing end, with the hip at 0.530 x "
-        "standing height (Winter's anthropometry, greater trochanter)" +
-        (p.toeClearance.hipRiseGiven ? " + " + fmt("%.3f", p.toeClearance.hipRise) + " m (the stated hip rise)" : std::string()) +
-        (p.toeClearance.alarmHolds()
-             ? ". A negative value means the toe strikes the ground.\n"
-             : ". Running: the body is in flight during much of the swing and the hip is higher by an amount not given "
-               "(toe_clearance.hip_rise_m), so the clearance is relative to standing hip height and no strike is "
-               "flagged.\n");
+  md +=
+      "- Toe clearance: the lowest of ankle and toe from peak knee flexion to the swing end, with the hip at 0.530 x "
+      "standing height (Winter's anthropometry, greater trochanter)" +
+      (p.toeClearance.hipRiseGiven ? " + " + fmt("%.3f", p.toeClearance.hipRise) + " m (the stated hip rise)"
+                                   : std::string()) +
+      (p.toeClearance.alarmHolds()
+           ? ". A negative value means the toe strikes the ground.\n"
+           : ". Running: the body is in flight during much of the swing and the hip is higher by an amount not given "
+             "(toe_clearance.hip_rise_m), so the clearance is relative to standing hip height and no strike is "
+             "flagged.\n");
   const double converged = calcConvergedAccuracy(study.swing.integrator);
   md += std::string("- Integrator: ") + integratorName(study.swing.integrator) + ", accuracy " +
         fmt("%g", study.swing.accuracy) +

@@ -6,10 +6,10 @@
 #include <limits>
 #include <optional>
 
-#include "io/csv_table.h"
 #include "core/input_error.h"
-#include "core/text_format.h"
 #include "core/output_files.h"
+#include "core/text_format.h"
+#include "io/csv_table.h"
 #include "io/json_file.h"
 #include "numerics/metrics.h"
 #include "report/sweep_report_parts.h"
@@ -36,8 +36,9 @@ std::optional<double> peakFlexion(const SwingResult& r) {
 std::string formatUncertaintyTables(const UncertaintyResults& u) {
   std::string out = "\nHow sure is the optimum: " + std::to_string(u.samples) + " Monte Carlo samples, seed " +
                     std::to_string(u.seed) + " (assumptions and ranges: docs/uncertainty.md)\n";
-  out += "  participant  nominal_m  fastest_median_m  fastest_p05_m  fastest_p95_m  time_median_s  time_p05_s  "
-         "time_p95_s  no_swing_end\n";
+  out +=
+      "  participant  nominal_m  fastest_median_m  fastest_p05_m  fastest_p95_m  time_median_s  time_p05_s  "
+      "time_p95_s  no_swing_end\n";
   for (const auto& pu : u.participants) {
     char line[256];
     std::snprintf(line, sizeof line, "  %-11s  %9s  %16.3f  %13.3f  %13.3f  %13.4f  %10.4f  %10.4f  %12d\n",
@@ -106,9 +107,9 @@ std::string formatSweepTables(const SweepStudy& study, const SweepResults& resul
     if (ps.symmetry.given) out += "  " + formatSymmetryLine(ps.symmetry, ps.jumps) + "\n";
     if (ps.bestWithMass >= 0) {
       const SweepPoint& b = ps.massPoints[static_cast<std::size_t>(ps.bestWithMass)];
-      out += "  fastest with added shank mass: lowering " + fmt("%.3f", b.lowering) + " m + " + fmt("%.2f", b.added.mass) +
-             " kg at " + fmt("%.3f", b.added.distanceBelowKnee) + " m below the knee: " + fmt("%.4f", b.result.swingTime) +
-             " s\n";
+      out += "  fastest with added shank mass: lowering " + fmt("%.3f", b.lowering) + " m + " +
+             fmt("%.2f", b.added.mass) + " kg at " + fmt("%.3f", b.added.distanceBelowKnee) +
+             " m below the knee: " + fmt("%.4f", b.result.swingTime) + " s\n";
     }
   }
   return out;
@@ -121,9 +122,13 @@ Json intervalJson(const Interval& i) { return {{"median", i.median}, {"p05", i.p
 Json sensitivityJson(const ParticipantUncertainty& pu) {
   Json rows = Json::array();
   for (const auto& r : pu.sensitivity) {
-    Json row = {{"assumption", r.assumption}, {"unit", r.unit}, {"low_value", r.lowValue}, {"high_value", r.highValue},
+    Json row = {{"assumption", r.assumption},
+                {"unit", r.unit},
+                {"low_value", r.lowValue},
+                {"high_value", r.highValue},
                 {"fastest_lowering_low_m", r.low.calcFastestLowering()},
-                {"fastest_lowering_high_m", r.high.calcFastestLowering()}, {"time_low_s", r.low.calcFastestTime()},
+                {"fastest_lowering_high_m", r.high.calcFastestLowering()},
+                {"time_low_s", r.low.calcFastestTime()},
                 {"time_high_s", r.high.calcFastestTime()}};
     if (const SweepAssumption* a = assumptionKeyed(r.assumption); a && a->discrete) {
       row["low_choice"] = formatAssumptionValue(r.assumption, r.lowValue);
@@ -150,9 +155,15 @@ Json sweepPointsJson(const ParticipantSweep& ps) {
     bounceHeight.push_back(pt.ok ? pt.result.bounceHeight.value_or(kNaN) * kRadToDeg : kNaN);
     ok.push_back(pt.ok);
   }
-  return {{"name", ps.name}, {"lowering_m", lowering}, {"swing_time_s", swing},
-          {"first_zone_entry_s", zoneEntry}, {"peak_knee_flexion_deg", peak},
-          {"bounce", bounce}, {"bounces", bounces}, {"bounce_height_deg", bounceHeight}, {"swing_ended", ok},
+  return {{"name", ps.name},
+          {"lowering_m", lowering},
+          {"swing_time_s", swing},
+          {"first_zone_entry_s", zoneEntry},
+          {"peak_knee_flexion_deg", peak},
+          {"bounce", bounce},
+          {"bounces", bounces},
+          {"bounce_height_deg", bounceHeight},
+          {"swing_ended", ok},
           {"min_toe_clearance_m", clearance}};
 }
 
@@ -160,8 +171,11 @@ Json sweepPointsJson(const ParticipantSweep& ps) {
 Json table4ValidationJson(const SweepResults& results, const Table4Validation& v) {
   Json rows = Json::array();
   for (const auto& r : v.rows)
-    rows.push_back({{"lowering_m", r.lowering}, {"measured_s", r.measured}, {"burkett_model_s", r.model},
-                    {"ours_s", r.ours}, {"ours_leave_one_out_s", r.oursLeaveOneOut}});
+    rows.push_back({{"lowering_m", r.lowering},
+                    {"measured_s", r.measured},
+                    {"burkett_model_s", r.model},
+                    {"ours_s", r.ours},
+                    {"ours_leave_one_out_s", r.oursLeaveOneOut}});
   Json validation = {{"calibrated_to", calibrationTargetKey(results.calibratedTo)},
                      {"calibrated", v.calibrated},
                      {"rows", rows},
@@ -173,7 +187,8 @@ Json table4ValidationJson(const SweepResults& results, const Table4Validation& v
                      {"shortening_burkett_model_s", v.shorteningModel}};
   for (const auto& c : results.calibrations)
     if (c.participant == v.participant)
-      validation["calibration"] = {{"target_s", c.targetTime}, {"time_scale", c.timeScale}, {"ok", c.ok}, {"failure", c.failure}};
+      validation["calibration"] = {
+          {"target_s", c.targetTime}, {"time_scale", c.timeScale}, {"ok", c.ok}, {"failure", c.failure}};
   return validation;
 }
 
@@ -189,10 +204,11 @@ Json terminalImpactJson(const TerminalImpactCheck& c) {
   return {{"knee_friction_Nm", c.frictionMoment},
           {"bounce_lowerings_m", c.bounceLowerings},
           {"interior_optimum", c.interiorOptimum},
-          {"without_friction", {{"bounce_lowerings_m", c.bounceLoweringsWithoutFriction},
-                                {"fastest_lowering_m", c.fastestWithoutFriction},
-                                {"fastest_swing_time_s", c.fastestTimeWithoutFriction},
-                                {"interior_optimum", c.interiorOptimumWithoutFriction}}},
+          {"without_friction",
+           {{"bounce_lowerings_m", c.bounceLoweringsWithoutFriction},
+            {"fastest_lowering_m", c.fastestWithoutFriction},
+            {"fastest_swing_time_s", c.fastestTimeWithoutFriction},
+            {"interior_optimum", c.interiorOptimumWithoutFriction}}},
           {"impacts", tracked},
           {"findings", c.findings}};
 }
@@ -213,7 +229,8 @@ void addBestJson(const ParticipantSweep& ps, Json& j) {
   if (!ps.capNote.empty()) j["note"] = ps.capNote;
   if (ps.bestWithMass >= 0) {
     const auto& b = ps.massPoints[static_cast<std::size_t>(ps.bestWithMass)];
-    j["best_with_added_mass"] = {{"lowering_m", b.lowering}, {"mass_kg", b.added.mass},
+    j["best_with_added_mass"] = {{"lowering_m", b.lowering},
+                                 {"mass_kg", b.added.mass},
                                  {"distance_below_knee_m", b.added.distanceBelowKnee},
                                  {"swing_time_s", b.result.swingTime}};
   }
@@ -223,10 +240,14 @@ void addBestJson(const ParticipantSweep& ps, Json& j) {
 /// when no swing ended.
 Json symmetryJson(const SymmetryLowering& sym) {
   const auto orNull = [&](double v) { return sym.found ? Json(v) : Json(nullptr); };
-  return {{"sound_limb_swing_time_s", sym.soundTime}, {"lowering_m", orNull(sym.lowering)},
-          {"reached", sym.found && sym.reached}, {"prosthetic_swing_time_s", orNull(sym.prostheticTime)},
-          {"gap_s", orNull(sym.gap)}, {"ratio", orNull(sym.calcRatio())},
-          {"across_jump", sym.acrossJump}, {"jump_from_m", sym.acrossJump ? Json(sym.jumpFrom) : Json(nullptr)},
+  return {{"sound_limb_swing_time_s", sym.soundTime},
+          {"lowering_m", orNull(sym.lowering)},
+          {"reached", sym.found && sym.reached},
+          {"prosthetic_swing_time_s", orNull(sym.prostheticTime)},
+          {"gap_s", orNull(sym.gap)},
+          {"ratio", orNull(sym.calcRatio())},
+          {"across_jump", sym.acrossJump},
+          {"jump_from_m", sym.acrossJump ? Json(sym.jumpFrom) : Json(nullptr)},
           {"jump_to_m", sym.acrossJump ? Json(sym.jumpTo) : Json(nullptr)}};
 }
 
@@ -237,13 +258,16 @@ Json publishedJson(const ParticipantSweep& ps) {
   Json table4 = Json::array();
   for (const auto& row : pub->table4) {
     const SweepPoint* ours = pointAt(ps, row.lowering);
-    table4.push_back({{"lowering_m", row.lowering}, {"model_s", row.model},
+    table4.push_back({{"lowering_m", row.lowering},
+                      {"model_s", row.model},
                       {"measured_prosthetic_s", row.measuredProsthetic},
                       {"measured_anatomical_s", row.measuredAnatomical},
                       {"ours_s", ours && ours->ok ? ours->result.swingTime : kNaN}});
   }
-  return {{"source", "Burkett et al. 2004 Tables 3 and 4"}, {"table3_model_s", pub->table3Model},
-          {"table3_measured_s", pub->table3Measured}, {"best_lowering_m", pub->predictedBestLowering},
+  return {{"source", "Burkett et al. 2004 Tables 3 and 4"},
+          {"table3_model_s", pub->table3Model},
+          {"table3_measured_s", pub->table3Measured},
+          {"best_lowering_m", pub->predictedBestLowering},
           {"table4", table4}};
 }
 
@@ -315,8 +339,9 @@ std::string csvOptional(double v, int decimals) { return std::isnan(v) ? "" : cs
 std::string formatSweepCsv(const SweepResults& results) {
   // status: ended (a swing time), failed (the swing ran and did not end: the report says
   // why) or not_run (an interrupted sweep never reached the point).
-  std::string out = "participant,lowering_m,added_mass_kg,added_mass_below_knee_m,swing_ended,swing_time_s,"
-                    "peak_knee_flexion_deg,peak_knee_flexion_time_s,bounce,min_toe_clearance_m,status\n";
+  std::string out =
+      "participant,lowering_m,added_mass_kg,added_mass_below_knee_m,swing_ended,swing_time_s,"
+      "peak_knee_flexion_deg,peak_knee_flexion_time_s,bounce,min_toe_clearance_m,status\n";
   for (const auto& ps : results.participants) {
     for (const auto* list : {&ps.points, &ps.massPoints}) {
       for (const auto& pt : *list) {
@@ -324,8 +349,9 @@ std::string formatSweepCsv(const SweepResults& results) {
                csvNumber(pt.added.distanceBelowKnee, 3) + ",";
         if (pt.ok) {
           const std::optional<KneePeak>& peak = pt.result.peakKneeFlexion;
-          out += "1," + csvNumber(pt.result.swingTime, 6) + "," + csvOptional(peak ? peak->flexion * kRadToDeg : kNaN, 3) +
-                 "," + csvOptional(peak ? peak->time : kNaN, 6) + "," + (pt.result.bounce ? "1" : "0") + "," +
+          out += "1," + csvNumber(pt.result.swingTime, 6) + "," +
+                 csvOptional(peak ? peak->flexion * kRadToDeg : kNaN, 3) + "," +
+                 csvOptional(peak ? peak->time : kNaN, 6) + "," + (pt.result.bounce ? "1" : "0") + "," +
                  csvOptional(pt.result.minToeClearance.value_or(kNaN), 4) + ",ended\n";
         } else {
           out += std::string("0,,,,,,") + (pt.ran ? "failed" : "not_run") + "\n";

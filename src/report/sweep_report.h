@@ -4,8 +4,8 @@
 #include <map>
 #include <string>
 
-#include "sweep/sweep.h"
 #include "report/sweep_markdown.h"  // makeSweepReport: report.md and its figures
+#include "sweep/sweep.h"
 #include "sweep/sweep_uncertainty.h"
 
 namespace swingsim {

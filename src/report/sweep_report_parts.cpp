@@ -60,7 +60,7 @@ const SwingTimeJump* jumpBesideBest(const ParticipantSweep& ps) {
     bool between = false;
     for (const SweepPoint& pt : ps.points)
       between = between || (pt.onGrid && pt.lowering > std::min(at, ps.points[k].lowering) + 1e-12 &&
-                             pt.lowering < std::max(at, ps.points[k].lowering) - 1e-12);
+                            pt.lowering < std::max(at, ps.points[k].lowering) - 1e-12);
     if (j && !between) return j;
   }
   return nullptr;
@@ -75,16 +75,19 @@ std::string formatSymmetryLine(const SymmetryLowering& sym, const std::vector<Sw
   std::string out = "best symmetry with the sound limb (" + fmt("%.3f", sym.soundTime) + " s): ";
   if (!sym.found) return out + "no swing ended";
   const SwingTimeJump* jump = sym.acrossJump ? findJumpBetween(jumps, sym.jumpFrom, sym.jumpTo) : nullptr;
-  const std::string jumpText = jump ? jump->describe()
-                                    : "the swing jumps between " + fmt("%.4f", sym.jumpFrom) + " and " +
-                                          fmt("%.4f", sym.jumpTo) + " m";
+  const std::string jumpText =
+      jump ? jump->describe()
+           : "the swing jumps between " + fmt("%.4f", sym.jumpFrom) + " and " + fmt("%.4f", sym.jumpTo) + " m";
   if (sym.reached) {
     out += fmt("%.3f", sym.lowering) + " m (the swing times cross there; prosthetic/sound 1.00)";
-    if (sym.acrossJump) out += "; not at " + fmt("%.4f", sym.jumpFrom) + "-" + fmt("%.4f", sym.jumpTo) + " m, where " + jumpText;
+    if (sym.acrossJump)
+      out += "; not at " + fmt("%.4f", sym.jumpFrom) + "-" + fmt("%.4f", sym.jumpTo) + " m, where " + jumpText;
     return out;
   }
-  if (sym.acrossJump) out += "not reached: " + jumpText + ";";
-  else out += "not reached;";
+  if (sym.acrossJump)
+    out += "not reached: " + jumpText + ";";
+  else
+    out += "not reached;";
   return out + " closest " + fmt("%.3f", sym.lowering) + " m, " + fmt("%.4f", sym.prostheticTime) + " s, " +
          fmt("%.0f", std::fabs(sym.gap) * 1000) + " ms " + (sym.gap < 0 ? "faster" : "slower") +
          " than the sound limb (prosthetic/sound " + fmt("%.2f", sym.calcRatio()) + ")";

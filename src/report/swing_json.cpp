@@ -26,17 +26,17 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
   // Absent quantities are null (swing time: NaN when the swing did not end).
   const std::optional<KneePeak>& peak = r.peakKneeFlexion;
   Json json = {{"participant", participant},
-          {"lowering_m", lowering},
-          {"swing_time_s", std::isfinite(r.swingTime) ? Json(r.swingTime) : Json(nullptr)},
-          {"first_zone_entry_s", jsonOrNull(calcFirstZoneEntry(r))},
-          {"peak_knee_flexion_deg", peak ? Json(peak->flexion * kRadToDeg) : Json(nullptr)},
-          {"peak_knee_flexion_time_s", peak ? Json(peak->time) : Json(nullptr)},
-          {"bounce", r.bounce},
-          {"bounces", r.bounces},
-          {"bounce_height_deg", jsonOrNull(r.bounceHeight, kRadToDeg)},
-          {"stop_impacts", impacts},
-          {"min_toe_clearance_m", jsonOrNull(r.minToeClearance)},
-          {"events", events}};
+               {"lowering_m", lowering},
+               {"swing_time_s", std::isfinite(r.swingTime) ? Json(r.swingTime) : Json(nullptr)},
+               {"first_zone_entry_s", jsonOrNull(calcFirstZoneEntry(r))},
+               {"peak_knee_flexion_deg", peak ? Json(peak->flexion * kRadToDeg) : Json(nullptr)},
+               {"peak_knee_flexion_time_s", peak ? Json(peak->time) : Json(nullptr)},
+               {"bounce", r.bounce},
+               {"bounces", r.bounces},
+               {"bounce_height_deg", jsonOrNull(r.bounceHeight, kRadToDeg)},
+               {"stop_impacts", impacts},
+               {"min_toe_clearance_m", jsonOrNull(r.minToeClearance)},
+               {"events", events}};
   if (const auto& e = r.trialEnd) {
     json["trial_end"] = {{"unmet", e->unmet},
                          {"time_s", e->time},

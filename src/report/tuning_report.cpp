@@ -30,13 +30,12 @@ std::string describeWindow(const TuningTarget& t) {
   return "[" + format("%.4g", lo) + ", " + format("%.4g", hi) + "]";
 }
 
-std::string describeKind(const TuningTarget& t) {
-  return t.hard ? "hard" : "soft, weight " + format("%g", t.weight);
-}
+std::string describeKind(const TuningTarget& t) { return t.hard ? "hard" : "soft, weight " + format("%g", t.weight); }
 
 // "band [0.019, 0.025] (down: peak_knee_flexion_deg 90.2, past its limit by 0.2; up: swing time +11 ms)"
 std::string describeBand(const KnobBand& b) {
-  return "band [" + format("%.6g", b.low) + ", " + format("%.6g", b.high) + "] (down: " + b.lowStop + "; up: " + b.highStop + ")";
+  return "band [" + format("%.6g", b.low) + ", " + format("%.6g", b.high) + "] (down: " + b.lowStop +
+         "; up: " + b.highStop + ")";
 }
 
 void printKnobs(std::ostringstream& s, const TuningResult& r) {
@@ -44,8 +43,8 @@ void printKnobs(std::ostringstream& s, const TuningResult& r) {
   const ResolutionCheck& res = r.resolution;
   for (std::size_t k = 0; k < r.knobs.size(); ++k) {
     const TuningKnob& knob = r.knobs[k];
-    s << "    " << padded(knob.key, 36) << format("%-12.6g", r.best.knobs[k])
-      << "range [" << format("%g", knob.lower) << ", " << format("%g", knob.upper) << "]" << (knob.logScale ? " log" : "")
+    s << "    " << padded(knob.key, 36) << format("%-12.6g", r.best.knobs[k]) << "range [" << format("%g", knob.lower)
+      << ", " << format("%g", knob.upper) << "]" << (knob.logScale ? " log" : "")
       << (knob.resolution > 0 ? ", step " + format("%g", knob.resolution) : "")
       << (k < r.knobAtBound.size() && r.knobAtBound[k] ? "  AT A RANGE END" : "") << "\n";
     if (k < res.bands.size()) s << "      " << describeBand(res.bands[k]) << "\n";
@@ -55,7 +54,8 @@ void printKnobs(std::ostringstream& s, const TuningResult& r) {
     s << "  continuous optimum  " << formatTuningPoint(r.knobs, res.continuous) << "\n";
     if (!res.bands.empty())
       s << "  tolerance bands     each knob alone, in steps of its resolution, with every hard limit met and the swing "
-           "time within " << format("%.0f", res.window * 1000) << " ms of the result's\n";
+           "time within "
+        << format("%.0f", res.window * 1000) << " ms of the result's\n";
   }
 }
 
@@ -65,10 +65,9 @@ void printTargets(std::ostringstream& s, const TuningReportInputs& in) {
   for (const TargetOutcome& o : r.targets) {
     const TuningQuantity q = o.target.quantity;
     std::string key = tuningQuantityKey(q);
-    s << "    " << padded(key, 24) << format("%-10.4f", toTargetUnit(q, o.value))
-      << "target " << describeWindow(o.target) << " (" << describeKind(o.target) << ")  "
-      << (o.met ? "met" : "MISSED") << ", margin " << format("%+.4g", toTargetUnit(q, o.margin))
-      << (o.binding ? "  BINDS" : "") << "\n";
+    s << "    " << padded(key, 24) << format("%-10.4f", toTargetUnit(q, o.value)) << "target "
+      << describeWindow(o.target) << " (" << describeKind(o.target) << ")  " << (o.met ? "met" : "MISSED")
+      << ", margin " << format("%+.4g", toTargetUnit(q, o.margin)) << (o.binding ? "  BINDS" : "") << "\n";
   }
   if (!in.swingTimeSource.empty()) s << "    (swing time target from " << in.swingTimeSource << ")\n";
   if (in.chance != nullptr && in.chance->ran)
@@ -85,7 +84,8 @@ void printSensitivity(std::ostringstream& s, const TuningResult& r) {
       const TuningQuantity q = r.targets[i].target.quantity;
       const double d = r.sensitivity(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
       s << "  " << tuningQuantityKey(q) << " "
-        << (std::isfinite(d) ? format("%+.4g", toTargetUnit(q, d)) : std::string("none (a swing beside the result failed)"));
+        << (std::isfinite(d) ? format("%+.4g", toTargetUnit(q, d))
+                             : std::string("none (a swing beside the result failed)"));
     }
     s << "\n";
   }
@@ -95,7 +95,8 @@ void printSensitivity(std::ostringstream& s, const TuningResult& r) {
 std::string describeBinding(const TuningResult& r) {
   std::string b;
   for (const TargetOutcome& o : r.targets)
-    if (o.target.hard && (o.binding || !o.met)) b += std::string(b.empty() ? "" : "; ") + "hard limit " + tuningQuantityKey(o.target.quantity) +
+    if (o.target.hard && (o.binding || !o.met))
+      b += std::string(b.empty() ? "" : "; ") + "hard limit " + tuningQuantityKey(o.target.quantity) +
            (o.met ? " holds the result back (at its edge)" : " missed");
   for (std::size_t k = 0; k < r.knobs.size() && k < r.knobAtBound.size(); ++k)
     if (r.knobAtBound[k]) b += std::string(b.empty() ? "" : "; ") + "knob " + r.knobs[k].key + " at a range end";
@@ -108,7 +109,8 @@ std::string describeSearch(const TuningResult& r) {
   for (const TargetOutcome& o : r.targets)
     if (!o.met)
       return "local: a missed target was not found from " + std::to_string(r.startSet.size()) +
-             " start points and the polish; settings that meet it may exist (rerun with more start_points before reading "
+             " start points and the polish; settings that meet it may exist (rerun with more start_points before "
+             "reading "
              "it as unreachable)";
   return "";
 }
@@ -120,22 +122,24 @@ double toTargetUnit(TuningQuantity q, double si) { return tuningQuantityInKeyUni
 std::string formatTuningPoint(const std::vector<TuningKnob>& knobs, const TuningPoint& p) {
   if (!p.ran) return "none (no swing ran)";
   std::ostringstream s;
-  for (std::size_t k = 0; k < knobs.size() && k < p.knobs.size(); ++k) s << knobs[k].key << " " << format("%.6g", p.knobs[k]) << ", ";
-  s << "swing time " << format("%.4f", p.swingTime) << " s, peak knee flexion " << format("%.1f", p.peakKneeFlexion * kRadToDeg)
-    << " deg, min toe clearance " << format("%.4f", p.minToeClearance) << " m, max stop impact "
-    << format("%.1f", p.maxStopImpactSpeed * kRadToDeg) << " deg/s, " << (p.feasible() ? "meets" : "breaks")
-    << " the hard limits, cost " << format("%.4g", p.cost);
+  for (std::size_t k = 0; k < knobs.size() && k < p.knobs.size(); ++k)
+    s << knobs[k].key << " " << format("%.6g", p.knobs[k]) << ", ";
+  s << "swing time " << format("%.4f", p.swingTime) << " s, peak knee flexion "
+    << format("%.1f", p.peakKneeFlexion * kRadToDeg) << " deg, min toe clearance " << format("%.4f", p.minToeClearance)
+    << " m, max stop impact " << format("%.1f", p.maxStopImpactSpeed * kRadToDeg) << " deg/s, "
+    << (p.feasible() ? "meets" : "breaks") << " the hard limits, cost " << format("%.4g", p.cost);
   return s.str();
 }
 
 std::string formatTuningSummary(const TuningReportInputs& in) {
   const TuningResult& r = *in.result;
   std::ostringstream s;
-  s << "tune " << in.studyName << ": " << in.participantName << ", knee model " << in.kneeModelPath << ", " << r.knobs.size()
-    << " knobs; " << r.startSet.size() << " start points + " << r.polished.size() << " polish swings, "
-    << format("%.1f", in.seconds) << " s\n";
-  s << "  result              " << (r.feasible ? "meets every hard limit" : "NO SETTING MET EVERY HARD LIMIT: the least violation")
-    << "; Ceres " << (r.converged ? "converged" : "stopped: " + r.stopReason) << " after " << r.iterations
+  s << "tune " << in.studyName << ": " << in.participantName << ", knee model " << in.kneeModelPath << ", "
+    << r.knobs.size() << " knobs; " << r.startSet.size() << " start points + " << r.polished.size()
+    << " polish swings, " << format("%.1f", in.seconds) << " s\n";
+  s << "  result              "
+    << (r.feasible ? "meets every hard limit" : "NO SETTING MET EVERY HARD LIMIT: the least violation") << "; Ceres "
+    << (r.converged ? "converged" : "stopped: " + r.stopReason) << " after " << r.iterations
     << " iterations from start point " << r.polishStart + 1 << " of the ranked start set\n";
   if (r.feasible && r.polishEnd.ran && !r.polishEnd.feasible())
     s << "  polish end          Ceres' solution breaks a hard limit (its penalty let it past); the result is the best "
@@ -163,12 +167,15 @@ std::string formatTuningMarkdown(const TuningReportInputs& in) {
   s << "# Knee tuning: " << in.studyName << "\n\n";
   if (!in.commandLine.empty()) s << "`" << in.commandLine << "`\n\n";
   s << "Participant " << in.participantName << " (`" << in.participantPath << "`), knee model `" << in.kneeModelPath
-    << "`. Start set: a Latin hypercube over the knobs' ranges, then a bounded least-squares polish (Ceres) from the best "
-       "point (those that meet every hard limit first), each hard limit a penalty that asks for a small margin inside it; "
+    << "`. Start set: a Latin hypercube over the knobs' ranges, then a bounded least-squares polish (Ceres) from the "
+       "best "
+       "point (those that meet every hard limit first), each hard limit a penalty that asks for a small margin inside "
+       "it; "
        "the result is the best evaluated point that meets every hard limit. "
        "Soft targets cost weight x (miss / scale)^2, scales 0.01 s, 1 deg, 0.005 m, 10 deg/s. See docs/tuning.md.\n\n";
   s << "```\n" << formatTuningSummary(in) << "```\n\n";
-  s << "Tuned knee model: `" << in.kneeFile << "`. Trade-off figure: `tradeoff.svg` (swing time against peak knee flexion "
+  s << "Tuned knee model: `" << in.kneeFile
+    << "`. Trade-off figure: `tradeoff.svg` (swing time against peak knee flexion "
        "over every evaluated setting).\n\n![trade-off](tradeoff.svg)\n";
   return s.str();
 }
@@ -240,21 +247,29 @@ std::string formatTuningJson(const TuningReportInputs& in) {
   Json knobs = Json::array();
   const ResolutionCheck& res = r.resolution;
   for (std::size_t k = 0; k < r.knobs.size(); ++k) {
-    Json knob = {{"key", r.knobs[k].key}, {"min", r.knobs[k].lower}, {"max", r.knobs[k].upper},
-                 {"log_scale", r.knobs[k].logScale}, {"value", r.best.knobs[k]},
+    Json knob = {{"key", r.knobs[k].key},
+                 {"min", r.knobs[k].lower},
+                 {"max", r.knobs[k].upper},
+                 {"log_scale", r.knobs[k].logScale},
+                 {"value", r.best.knobs[k]},
                  {"resolution", r.knobs[k].resolution > 0 ? Json(r.knobs[k].resolution) : Json(nullptr)},
                  {"at_range_end", k < r.knobAtBound.size() && r.knobAtBound[k]}};
     if (k < res.bands.size())
-      knob["tolerance_band"] = {{"low", res.bands[k].low}, {"high", res.bands[k].high},
-                                {"low_stop", res.bands[k].lowStop}, {"high_stop", res.bands[k].highStop}};
+      knob["tolerance_band"] = {{"low", res.bands[k].low},
+                                {"high", res.bands[k].high},
+                                {"low_stop", res.bands[k].lowStop},
+                                {"high_stop", res.bands[k].highStop}};
     knobs.push_back(knob);
   }
   j["knobs"] = knobs;
   if (res.ran) {
     Json corners = Json::array();
     for (const TuningPoint& p : res.corners) corners.push_back(makePointJson(p, "rounding neighbour"));
-    j["resolution"] = {{"holds", res.holds}, {"verdict", res.verdict}, {"cells_tried", res.cellsTried},
-                       {"tolerance_window_s", res.window}, {"continuous", makePointJson(res.continuous, "continuous")},
+    j["resolution"] = {{"holds", res.holds},
+                       {"verdict", res.verdict},
+                       {"cells_tried", res.cellsTried},
+                       {"tolerance_window_s", res.window},
+                       {"continuous", makePointJson(res.continuous, "continuous")},
                        {"neighbours", corners}};
   }
   j["targets"] = makeTargetsJson(r);
@@ -263,9 +278,14 @@ std::string formatTuningJson(const TuningReportInputs& in) {
     Json misses = Json::object();
     for (std::size_t t = 0; t < r.targets.size() && t < c.misses.size(); ++t)
       if (r.targets[t].target.hard) misses[tuningQuantityKey(r.targets[t].target.quantity)] = c.misses[t];
-    j["chance_of_meeting_hard_limits"] = {{"samples", c.options.samples}, {"seed", c.options.seed}, {"met", c.met},
-                                          {"chance", c.chance()}, {"ci95", {c.low, c.high}}, {"failed", c.failed},
-                                          {"misses", misses}, {"nominal_swing_time_s", c.nominalSwingTime},
+    j["chance_of_meeting_hard_limits"] = {{"samples", c.options.samples},
+                                          {"seed", c.options.seed},
+                                          {"met", c.met},
+                                          {"chance", c.chance()},
+                                          {"ci95", {c.low, c.high}},
+                                          {"failed", c.failed},
+                                          {"misses", misses},
+                                          {"nominal_swing_time_s", c.nominalSwingTime},
                                           {"verdict", c.verdict}};
   }
   j["swing"] = makePointJson(r.best, "result");
@@ -298,7 +318,8 @@ std::string formatTuningTradeoffSvg(const TuningReportInputs& in) {
       plot.addBand(t.lower * kRadToDeg, t.upper * kRadToDeg, "peak flexion target", svgPaletteColor(2));
     else if (t.quantity == TuningQuantity::kPeakKneeFlexion)
       plot.addVLine((std::isfinite(t.lower) ? t.lower : t.upper) * kRadToDeg, "peak flexion limit", svgPaletteColor(2));
-    if (t.quantity == TuningQuantity::kSwingTime && t.lower == t.upper) plot.addHLine(t.lower, "swing time target", "#555555");
+    if (t.quantity == TuningQuantity::kSwingTime && t.lower == t.upper)
+      plot.addHLine(t.lower, "swing time target", "#555555");
   }
   plot.addPoints(ix, iy, "breaks a hard limit", svgPaletteColor(5), 2.5);
   plot.addPoints(fx, fy, "meets the hard limits", svgPaletteColor(1), 3);

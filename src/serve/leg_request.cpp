@@ -44,7 +44,8 @@ std::vector<std::pair<std::string, std::string>> readEdits(const Json& body) {
   for (const auto& [key, value] : body["edits"].items()) {
     if (std::find(keys.begin(), keys.end(), key) == keys.end())
       throw InputError("edits: expected a main number of the form, e.g. body_mass_kg (got '" + key + "')");
-    if (!value.is_string() && !value.is_number()) throw InputError(key + ": expected a number (got " + describeJson(value) + ")");
+    if (!value.is_string() && !value.is_number())
+      throw InputError(key + ": expected a number (got " + describeJson(value) + ")");
     edits.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
   }
   return edits;
@@ -60,18 +61,20 @@ bool isKneeSettingKey(const std::string& key) {
   while (i < key.size() && std::isdigit(static_cast<unsigned char>(key[i]))) ++i, ++digits;
   if (digits < 1 || digits > 2 || key.compare(i, 2, "].") != 0) return false;
   const std::string_view name = std::string_view(key).substr(i + 2);
-  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-  });
+  return !name.empty() && std::all_of(name.begin(), name.end(),
+                                      [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 std::vector<std::pair<std::string, double>> readKneeSettings(const Json& body) {
   std::vector<std::pair<std::string, double>> settings;
   if (!body.contains("knee_settings")) return settings;
-  if (!body["knee_settings"].is_object()) throw InputError("knee_settings: expected a map of knee model keys to numbers");
+  if (!body["knee_settings"].is_object())
+    throw InputError("knee_settings: expected a map of knee model keys to numbers");
   for (const auto& [key, value] : body["knee_settings"].items()) {
     if (!isKneeSettingKey(key))
-      throw InputError("knee_settings: expected knee_effects.model_scale or impedance_state_machine.states[I].KEY (got '" + key + "')");
+      throw InputError(
+          "knee_settings: expected knee_effects.model_scale or impedance_state_machine.states[I].KEY (got '" + key +
+          "')");
     if (!value.is_number()) throw InputError(key + ": expected a number (got " + describeJson(value) + ")");
     settings.emplace_back(key, value.get<double>());
   }
@@ -90,7 +93,8 @@ void applyEdits(YamlTree& root, const std::vector<std::pair<std::string, std::st
   std::vector<std::pair<std::string, double>> inertiaScales;  // (inertia key, new mass / old mass)
   for (const auto& [key, value] : edits) {
     const std::string suffix = ".mass_kg";
-    if (key.rfind("segments.", 0) != 0 || key.size() <= suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0)
+    if (key.rfind("segments.", 0) != 0 || key.size() <= suffix.size() ||
+        key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0)
       continue;
     const std::string inertiaKey = key.substr(0, key.size() - suffix.size()) + ".inertia_kgm2";
     if (edited(inertiaKey)) continue;
@@ -110,7 +114,8 @@ void applyEdits(YamlTree& root, const std::vector<std::pair<std::string, std::st
 }
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
-  for (auto at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  for (auto at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
   return text;
 }
 
@@ -127,8 +132,9 @@ const std::string kUploadedKneeName = "upload-knee.yaml";
 // gives. True if knee_model was rewritten.
 bool checkUploadedPaths(YamlTree root, const ShippedFiles& files, bool kneeUploaded) {
   if (!root.get("thigh_kinematics").isNull())
-    throw InputError("thigh_kinematics: expected none in an uploaded participant (swingsim serve reads no file an upload "
-                     "names; use drive: hip_moment) (got a thigh_kinematics entry)");
+    throw InputError(
+        "thigh_kinematics: expected none in an uploaded participant (swingsim serve reads no file an upload "
+        "names; use drive: hip_moment) (got a thigh_kinematics entry)");
   if (kneeUploaded) return false;  // its knee_model is a name only: the knee comes from the knee upload's text
   const YamlTree knee = root.get("knee_model");
   if (!knee.isScalar()) return false;  // the loader says what is missing
@@ -140,8 +146,7 @@ bool checkUploadedPaths(YamlTree root, const ShippedFiles& files, bool kneeUploa
   const auto& names = files.getKneeNames();
   if (std::find(names.begin(), names.end(), name) == names.end())
     throw InputError("knee_model: expected a shipped knee model by name, one of " + formatShippedKneeList(files) +
-                     ", or a knee model uploaded with it (got '" +
-                     knee.scalar() + "')");
+                     ", or a knee model uploaded with it (got '" + knee.scalar() + "')");
   if (knee.scalar() == prefix + name + suffix) return false;
   root.set("knee_model", prefix + name + suffix, "the participant");
   return true;
@@ -151,10 +156,12 @@ bool checkUploadedPaths(YamlTree root, const ShippedFiles& files, bool kneeUploa
 Participant loadRequestParticipant(const LegRequest& request, const ShippedFiles& files) {
   const bool uploaded = request.participantYaml.has_value();
   // An upload resolves ../models/NAME.yaml as a shipped participant does; nothing is read there.
-  const std::string source = uploaded ? files.getParticipantsDir() + "/upload.yaml" : files.findParticipantPath(request.participant);
+  const std::string source =
+      uploaded ? files.getParticipantsDir() + "/upload.yaml" : files.findParticipantPath(request.participant);
   const std::string text = uploaded ? *request.participantYaml : readFile(source);
   YamlTree root = YamlTree::parse(text, "participant_yaml", "a participant file");
-  if (!root.isMap()) throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
+  if (!root.isMap())
+    throw InputError("participant_yaml: expected a map of participant keys (got another YAML document)");
   // The text as given where nothing was changed, so that messages give the upload's own lines.
   const bool rewritten = uploaded && checkUploadedPaths(root, files, request.kneeYaml.has_value());
   applyEdits(root, request.edits);
@@ -195,7 +202,8 @@ KneeModel loadRequestKnee(const LegRequest& request, const KneeModelKnobs& knobs
 
 SwingOptions makeServeSwingOptions(const ServeLimits& limits, ServeSwing kind) {
   // As simulate (its integrator and stop-impact bookkeeping), or as the sweep.
-  SwingOptions options = kind == ServeSwing::kAsSimulate ? makeSimulateOptions(std::nullopt, std::nullopt) : SwingOptions{};
+  SwingOptions options =
+      kind == ServeSwing::kAsSimulate ? makeSimulateOptions(std::nullopt, std::nullopt) : SwingOptions{};
   options.maxWallSeconds = limits.maxSwingWallSeconds;
   return options;
 }
@@ -213,9 +221,9 @@ const std::vector<std::string>& editableParticipantKeys() {
 }
 
 const std::vector<std::string>& legRequestKeys() {
-  static const std::vector<std::string> keys = {"participant", "participant_yaml", "edits",  "knee",
-                                                "knee_yaml",   "knee_settings",    "lowering_m", "added_mass_kg",
-                                                "added_mass_position_m"};
+  static const std::vector<std::string> keys = {"participant", "participant_yaml", "edits",
+                                                "knee",        "knee_yaml",        "knee_settings",
+                                                "lowering_m",  "added_mass_kg",    "added_mass_position_m"};
   return keys;
 }
 
@@ -267,18 +275,20 @@ LegRequest readLegRequest(const Json& body) {
   r.edits = readEdits(body);
   r.knee = readText(body, "knee");
   r.kneeYaml = readText(body, "knee_yaml");
-  if (r.knee && r.kneeYaml) throw InputError("knee_yaml: expected a shipped knee by name or an uploaded knee model, not both (got both)");
+  if (r.knee && r.kneeYaml)
+    throw InputError("knee_yaml: expected a shipped knee by name or an uploaded knee model, not both (got both)");
   r.kneeSettings = readKneeSettings(body);
   r.lowering = readNumber(body, "lowering_m", 0);
   if (const std::string problem = checkLowering(r.lowering); !problem.empty())
     throw InputError("lowering_m: " + problem + " (got " + formatNumber(r.lowering) + ")");
   r.added.mass = readNumber(body, "added_mass_kg", 0);
   if (!(r.added.mass >= 0 && r.added.mass <= kMaxSegmentMass))
-    throw InputError("added_mass_kg: expected 0 to " + formatNumber(kMaxSegmentMass) + " kg (got " + formatNumber(r.added.mass) + ")");
+    throw InputError("added_mass_kg: expected 0 to " + formatNumber(kMaxSegmentMass) + " kg (got " +
+                     formatNumber(r.added.mass) + ")");
   r.added.distanceBelowKnee = readNumber(body, "added_mass_position_m", 0);
   if (!(r.added.distanceBelowKnee >= 0 && r.added.distanceBelowKnee <= kMaxAddedMassPosition))
-    throw InputError("added_mass_position_m: expected 0 to " + formatNumber(kMaxAddedMassPosition) + " m below the knee (got " +
-                     formatNumber(r.added.distanceBelowKnee) + ")");
+    throw InputError("added_mass_position_m: expected 0 to " + formatNumber(kMaxAddedMassPosition) +
+                     " m below the knee (got " + formatNumber(r.added.distanceBelowKnee) + ")");
   return r;
 }
 

@@ -27,7 +27,8 @@ struct ServeLimits {
   int maxSweepPoints = 41;               ///< lowerings of one sweep (0 to 0.2 m in 5 mm steps)
   double maxTuneWallSeconds = 30;        ///< s of one tuning; then it stops with the best setting so far
   long maxTuneSwings = 3000;             ///< swings of one tuning (P1 over 2 knobs takes ~500); then the same
-  int maxConcurrentTunes = 2;            ///< tunings at once (of 4 compute slots, ServeOptions::threads: the page's swings keep 2)
+  int maxConcurrentTunes =
+      2;  ///< tunings at once (of 4 compute slots, ServeOptions::threads: the page's swings keep 2)
 };
 
 /// The options of the server's swings under `limits` (the wall-clock budget of one swing):
@@ -41,14 +42,14 @@ SwingOptions makeServeSwingOptions(const ServeLimits& limits, ServeSwing kind);
 const std::vector<std::string>& editableParticipantKeys();
 
 struct LegRequest {
-  std::string participant;                      ///< a shipped participant's name ("" with participantYaml)
-  std::optional<std::string> participantYaml;   ///< an uploaded participant file's text
+  std::string participant;                                 ///< a shipped participant's name ("" with participantYaml)
+  std::optional<std::string> participantYaml;              ///< an uploaded participant file's text
   std::vector<std::pair<std::string, std::string>> edits;  ///< editableParticipantKeys() -> the text typed
-  std::optional<std::string> knee;              ///< a shipped knee model's name; nullopt: the participant's
-  std::optional<std::string> kneeYaml;          ///< or an uploaded knee model file's text
+  std::optional<std::string> knee;                         ///< a shipped knee model's name; nullopt: the participant's
+  std::optional<std::string> kneeYaml;                     ///< or an uploaded knee model file's text
   std::vector<std::pair<std::string, double>> kneeSettings;  ///< knee model key path -> value (file units)
-  double lowering = 0;                          ///< m
-  AddedMass added;                              ///< kg at m below the knee
+  double lowering = 0;                                       ///< m
+  AddedMass added;                                           ///< kg at m below the knee
 };
 
 /// Reads a request body: {"participant": NAME | "participant_yaml": TEXT, "edits": {KEY:

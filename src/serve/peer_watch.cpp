@@ -31,7 +31,8 @@ bool readSocketPeer(int socket, SocketPeer& out) {
   if (::getsockname(socket, reinterpret_cast<sockaddr*>(&local), &localLength) != 0) return false;
   std::string localAddress;
   out.socket = socket;
-  return readAddress(peer, peerLength, out.address, out.port) && readAddress(local, localLength, localAddress, out.localPort);
+  return readAddress(peer, peerLength, out.address, out.port) &&
+         readAddress(local, localLength, localAddress, out.localPort);
 }
 
 }  // namespace

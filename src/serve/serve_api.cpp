@@ -14,8 +14,8 @@
 #include "report/sweep_figures.h"
 #include "report/sweep_markdown.h"
 #include "report/sweep_report.h"
-#include "report/swing_json.h"
 #include "report/sweep_report_parts.h"
+#include "report/swing_json.h"
 #include "study/simulate_run.h"
 #include "swing/swing_simulation.h"
 
@@ -41,7 +41,8 @@ Json readFields(const std::string& participantYaml) {
 // states: name and the numbers of each), for the page's sliders; empty for another kind.
 Json readKneeStates(const std::string& kneeYaml) {
   Json states = Json::array();
-  for (const YamlTree& state : YamlTree::parse(kneeYaml, "knee", "a knee model file").find("impedance_state_machine.states").items()) {
+  for (const YamlTree& state :
+       YamlTree::parse(kneeYaml, "knee", "a knee model file").find("impedance_state_machine.states").items()) {
     Json s = {{"name", state.get("name").scalar()}};
     for (const char* key : {"stiffness_Nm_per_rad", "damping_Nm_s_per_rad", "equilibrium_deg"}) {
       const auto value = state.get(key).number();
@@ -56,36 +57,45 @@ std::string stemOf(const std::string& path) { return std::filesystem::path(path)
 
 // Trajectory samples about kTrajectoryStep apart (and the last), the page's stick figure.
 Json makeTrajectorySamples(const SwingTrajectory& tr) {
-  Json samples = {{"time_s", Json::array()}, {"hip_flexion_deg", Json::array()}, {"knee_flexion_deg", Json::array()},
-                  {"knee_x_m", Json::array()}, {"knee_y_m", Json::array()}, {"ankle_x_m", Json::array()},
-                  {"ankle_y_m", Json::array()}, {"toe_x_m", Json::array()}, {"toe_y_m", Json::array()}};
+  Json samples = {{"time_s", Json::array()},    {"hip_flexion_deg", Json::array()}, {"knee_flexion_deg", Json::array()},
+                  {"knee_x_m", Json::array()},  {"knee_y_m", Json::array()},        {"ankle_x_m", Json::array()},
+                  {"ankle_y_m", Json::array()}, {"toe_x_m", Json::array()},         {"toe_y_m", Json::array()}};
   double next = 0;
   for (std::size_t k = 0; k < tr.size(); ++k) {
     if (tr.time[k] < next && k + 1 < tr.size()) continue;
     next = tr.time[k] + kTrajectoryStep;
-    const double values[] = {tr.time[k], tr.hipFlexion[k] * kRadToDeg, tr.kneeFlexion[k] * kRadToDeg, tr.kneeX[k], tr.kneeY[k],
-                             tr.ankleX[k], tr.ankleY[k], tr.toeX[k], tr.toeY[k]};
+    const double values[] = {tr.time[k],
+                             tr.hipFlexion[k] * kRadToDeg,
+                             tr.kneeFlexion[k] * kRadToDeg,
+                             tr.kneeX[k],
+                             tr.kneeY[k],
+                             tr.ankleX[k],
+                             tr.ankleY[k],
+                             tr.toeX[k],
+                             tr.toeY[k]};
     int i = 0;
     for (auto& column : samples) column.push_back(values[i++]);
   }
   return samples;
 }
 
-
 // The sweep's lowering grid from the request; refused above the point budget.
 void readSweepGrid(const Json& body, const ServeLimits& limits, SweepStudy& study) {
   for (const char* key : {"lowering_step_m", "lowering_max_m"})
-    if (body.contains(key) && !body[key].is_number()) throw InputError(std::string(key) + ": expected a number (got " + body[key].dump() + ")");
+    if (body.contains(key) && !body[key].is_number())
+      throw InputError(std::string(key) + ": expected a number (got " + body[key].dump() + ")");
   study.loweringStep = body.value("lowering_step_m", 0.010);
   study.loweringMax = body.value("lowering_max_m", 0.200);
-  if (!(study.loweringStep > 0)) throw InputError("lowering_step_m: expected a positive step, m (got " + formatNumber(study.loweringStep) + ")");
+  if (!(study.loweringStep > 0))
+    throw InputError("lowering_step_m: expected a positive step, m (got " + formatNumber(study.loweringStep) + ")");
   if (!(study.loweringMax >= 0 && study.loweringMax <= 0.5))
     throw InputError("lowering_max_m: expected 0 to 0.5 m (got " + formatNumber(study.loweringMax) + ")");
   const double points = std::floor(study.loweringMax / study.loweringStep + 1e-9) + 1;
   if (points > limits.maxSweepPoints)
     throw InputError("lowering_step_m: expected at most " + std::to_string(limits.maxSweepPoints) +
                      " lowerings in one sweep on swingsim serve (its simulation budget) (got " + formatNumber(points) +
-                     " lowerings: step " + formatNumber(study.loweringStep) + " m to " + formatNumber(study.loweringMax) + " m)");
+                     " lowerings: step " + formatNumber(study.loweringStep) + " m to " +
+                     formatNumber(study.loweringMax) + " m)");
 }
 
 // The curve the page shows: the plain sweep, or with an added mass the sweep of that mass
@@ -128,9 +138,12 @@ Json makeSweepJson(const SweepStudy& study, const SweepResults& results, const A
   const SweepPoint* best = ps.best >= 0 ? &ps.points[static_cast<std::size_t>(ps.best)] : nullptr;
   Json symmetry = nullptr;
   if (ps.symmetry.given)
-    symmetry = {{"sound_limb_swing_time_s", ps.symmetry.soundTime}, {"found", ps.symmetry.found},
-                {"reached", ps.symmetry.reached}, {"lowering_m", ps.symmetry.lowering},
-                {"prosthetic_swing_time_s", ps.symmetry.prostheticTime}, {"across_jump", ps.symmetry.acrossJump},
+    symmetry = {{"sound_limb_swing_time_s", ps.symmetry.soundTime},
+                {"found", ps.symmetry.found},
+                {"reached", ps.symmetry.reached},
+                {"lowering_m", ps.symmetry.lowering},
+                {"prosthetic_swing_time_s", ps.symmetry.prostheticTime},
+                {"across_jump", ps.symmetry.acrossJump},
                 {"text", sweep_report_parts::formatSymmetryLine(ps.symmetry, ps.jumps)}};
   Json jumps = Json::array();
   for (const SwingTimeJump& j : ps.jumps) jumps.push_back(makeSwingTimeJumpJson(j));
@@ -185,7 +198,8 @@ ServeApi::ServeApi(ShippedFiles files, ServeLimits limits) : files_(std::move(fi
 ApiReply ServeApi::hideServerPaths(ApiReply reply) const {
   for (const std::string& dir : files_.getDataDirSpellings()) {
     const std::string prefix = dir + "/";
-    for (auto at = reply.body.find(prefix); at != std::string::npos; at = reply.body.find(prefix, at)) reply.body.erase(at, prefix.size());
+    for (auto at = reply.body.find(prefix); at != std::string::npos; at = reply.body.find(prefix, at))
+      reply.body.erase(at, prefix.size());
   }
   return reply;
 }
@@ -208,7 +222,8 @@ ApiReply ServeApi::describeParticipant(const std::string& body) const {
     checkRequestKeys(asked, {});
     Leg leg = loadLeg(readLegRequest(asked), files_, limits_);
     Participant& p = leg.participant;
-    p.kneeModelPath = leg.knee.path;  // the export names the knee in use (chosen or uploaded), as the knee export is named
+    p.kneeModelPath =
+        leg.knee.path;  // the export names the knee in use (chosen or uploaded), as the knee export is named
     const std::string participantYaml = formatParticipantYaml(p, files_.getParticipantsDir());
     KneeModelSpec spec = leg.knee.spec;
     if (spec.name.empty()) spec.name = leg.knee.name;

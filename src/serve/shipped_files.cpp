@@ -51,8 +51,11 @@ std::vector<std::string> ShippedFiles::getDataDirSpellings() const {
   if (!error) spellings.push_back(canonical.string());
   if (given.is_absolute()) spellings.push_back(given.string());
   // Longest first, so a longer spelling goes before a shorter one inside it; never "/" itself.
-  std::sort(spellings.begin(), spellings.end(), [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
-  spellings.erase(std::remove_if(spellings.begin(), spellings.end(), [](const std::string& d) { return d.size() <= 1; }), spellings.end());
+  std::sort(spellings.begin(), spellings.end(),
+            [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  spellings.erase(
+      std::remove_if(spellings.begin(), spellings.end(), [](const std::string& d) { return d.size() <= 1; }),
+      spellings.end());
   return spellings;
 }
 

@@ -17,28 +17,33 @@ namespace swingsim {
 namespace {
 
 constexpr int kMaxTuneKnobs = 4;
-constexpr int kTuneStartPoints = 24;     // as swingsim tune's default
-constexpr double kTuneMaxSeconds = 10;   // s of polish
+constexpr int kTuneStartPoints = 24;    // as swingsim tune's default
+constexpr double kTuneMaxSeconds = 10;  // s of polish
 
 // A knob's key: the lowering, the added mass or its position, or a number of the knee file
 // (KneeModelKnobs::checkKey: its value then gets the knee loader's checks).
 void checkTuneKnobKey(const Json& knob, const KneeModelKnobs& knee) {
-  const std::string key = knob.is_object() && knob.contains("key") && knob["key"].is_string() ? knob["key"].get<std::string>() : "";
+  const std::string key =
+      knob.is_object() && knob.contains("key") && knob["key"].is_string() ? knob["key"].get<std::string>() : "";
   if (isLegTuningKnob(key)) return;
   const std::string problem = key.empty() ? "no key" : knee.checkKey(key);
   if (!problem.empty())
-    throw InputError("knobs: expected {key, min, max} with a key of lowering_m, added_mass_kg, added_mass_below_knee_m or a "
-                     "number of the knee model file, e.g. knee_effects.model_scale (got " + knob.dump() + ": " + problem + ")");
+    throw InputError(
+        "knobs: expected {key, min, max} with a key of lowering_m, added_mass_kg, added_mass_below_knee_m or a "
+        "number of the knee model file, e.g. knee_effects.model_scale (got " +
+        knob.dump() + ": " + problem + ")");
 }
 
 double readFinite(const Json& v, const std::string& key) {
-  if (!v.is_number() || !std::isfinite(v.get<double>())) throw InputError(key + ": expected a number (got " + v.dump() + ")");
+  if (!v.is_number() || !std::isfinite(v.get<double>()))
+    throw InputError(key + ": expected a number (got " + v.dump() + ")");
   return v.get<double>();
 }
 
 // "knobs": [{"key", "min", "max", "log_scale"}], 1 to kMaxTuneKnobs of them.
 std::vector<TuningKnob> readTuneKnobs(const Json& body, const KneeModelKnobs& knee) {
-  if (!body.contains("knobs") || !body["knobs"].is_array() || body["knobs"].empty() || body["knobs"].size() > kMaxTuneKnobs)
+  if (!body.contains("knobs") || !body["knobs"].is_array() || body["knobs"].empty() ||
+      body["knobs"].size() > kMaxTuneKnobs)
     throw InputError("knobs: expected 1 to " + std::to_string(kMaxTuneKnobs) + " knobs, each {key, min, max} (got " +
                      (body.contains("knobs") ? body["knobs"].dump() : std::string("none")) + ")");
   std::vector<TuningKnob> knobs;
@@ -52,12 +57,17 @@ std::vector<TuningKnob> readTuneKnobs(const Json& body, const KneeModelKnobs& kn
       throw InputError(knob.key + ".log_scale: expected true or false (got " + k["log_scale"].dump() + ")");
     knob.logScale = k.value("log_scale", false);
     if (!(knob.lower < knob.upper)) throw InputError(knob.key + ": expected min below max (got " + k.dump() + ")");
-    if (knob.logScale && !(knob.lower > 0)) throw InputError(knob.key + ": expected min > 0 on a log scale (got " + k.dump() + ")");
+    if (knob.logScale && !(knob.lower > 0))
+      throw InputError(knob.key + ": expected min > 0 on a log scale (got " + k.dump() + ")");
     // The finest step a person can set (sweep/tuning_resolution.h): given, or implied by the key's unit.
-    if (k.contains("resolution")) knob.resolution = readFinite(k["resolution"], knob.key + ".resolution");
-    else if (const std::optional<double> byUnit = findDefaultKnobResolution(knob.key)) knob.resolution = *byUnit;
-    else throw InputError(knob.key + ".resolution: the unit cannot be told from the key; expected the finest step a person "
-                          "can set (got none)");
+    if (k.contains("resolution"))
+      knob.resolution = readFinite(k["resolution"], knob.key + ".resolution");
+    else if (const std::optional<double> byUnit = findDefaultKnobResolution(knob.key))
+      knob.resolution = *byUnit;
+    else
+      throw InputError(knob.key +
+                       ".resolution: the unit cannot be told from the key; expected the finest step a person "
+                       "can set (got none)");
     if (!(knob.resolution > 0 && knob.resolution <= knob.upper - knob.lower))
       throw InputError(knob.key + ".resolution: expected above 0 and at most the range (got " + k.dump() + ")");
     for (const TuningKnob& earlier : knobs)  // as swingsim tune's study file refuses it
@@ -75,26 +85,37 @@ std::vector<TuningTarget> readTuneTargets(const Json& body, const Participant& p
   TuningTarget time;
   const Json given = targets.value("swing_time_s", Json());
   if (given.is_null() && !p.soundLimbSwingTime)
-    throw InputError("sound_limb_swing_time_s: expected the sound limb's swing time, s, to tune toward (got none: give it in "
-                     "the form, or a swing_time_s target)");
+    throw InputError(
+        "sound_limb_swing_time_s: expected the sound limb's swing time, s, to tune toward (got none: give it in "
+        "the form, or a swing_time_s target)");
   time.lower = time.upper = given.is_null() ? *p.soundLimbSwingTime : readFinite(given, "swing_time_s");
   if (!(time.lower > 0 && time.lower < p.swingEnd.timeLimit))
-    throw InputError("swing_time_s: expected 0 to the swing's time limit, " + formatNumber(p.swingEnd.timeLimit) + " s (got " +
-                     formatNumber(time.lower) + ")");
+    throw InputError("swing_time_s: expected 0 to the swing's time limit, " + formatNumber(p.swingEnd.timeLimit) +
+                     " s (got " + formatNumber(time.lower) + ")");
   time.scale = tuningTargetScale(TuningQuantity::kSwingTime);
-  TuningTarget flexion{TuningQuantity::kPeakKneeFlexion, 60 * kDegToRad, 90 * kDegToRad, true, 1,
+  TuningTarget flexion{TuningQuantity::kPeakKneeFlexion,
+                       60 * kDegToRad,
+                       90 * kDegToRad,
+                       true,
+                       1,
                        tuningTargetScale(TuningQuantity::kPeakKneeFlexion)};
   if (targets.contains("peak_knee_flexion_deg")) {
     const Json& w = targets["peak_knee_flexion_deg"];
-    if (!w.is_array() || w.size() != 2) throw InputError("peak_knee_flexion_deg: expected [min, max] in deg (got " + w.dump() + ")");
+    if (!w.is_array() || w.size() != 2)
+      throw InputError("peak_knee_flexion_deg: expected [min, max] in deg (got " + w.dump() + ")");
     flexion.lower = readFinite(w[0], "peak_knee_flexion_deg") * kDegToRad;
     flexion.upper = readFinite(w[1], "peak_knee_flexion_deg") * kDegToRad;
     if (!(flexion.lower < flexion.upper))
       throw InputError("peak_knee_flexion_deg: expected [min, max] with min < max (got " + w.dump() + ")");
   }
-  TuningTarget clearance{TuningQuantity::kMinToeClearance, 0.08, std::numeric_limits<double>::infinity(), true, 1,
+  TuningTarget clearance{TuningQuantity::kMinToeClearance,
+                         0.08,
+                         std::numeric_limits<double>::infinity(),
+                         true,
+                         1,
                          tuningTargetScale(TuningQuantity::kMinToeClearance)};
-  if (targets.contains("min_toe_clearance_m")) clearance.lower = readFinite(targets["min_toe_clearance_m"], "min_toe_clearance_m");
+  if (targets.contains("min_toe_clearance_m"))
+    clearance.lower = readFinite(targets["min_toe_clearance_m"], "min_toe_clearance_m");
   return {time, flexion, clearance};
 }
 
@@ -105,16 +126,25 @@ Json makeTuneJson(const TuningResult& r, double seconds) {
                      {"value", k < r.best.knobs.size() ? Json(r.best.knobs[k]) : Json(nullptr)},
                      {"at_range_end", k < r.knobAtBound.size() && r.knobAtBound[k]}});
   for (const TargetOutcome& t : r.targets)
-    targets.push_back({{"quantity", tuningQuantityKey(t.target.quantity)},
-                       {"value", tuningQuantityInKeyUnit(t.target.quantity, t.value)},
-                       {"min", std::isfinite(t.target.lower) ? Json(tuningQuantityInKeyUnit(t.target.quantity, t.target.lower)) : Json(nullptr)},
-                       {"max", std::isfinite(t.target.upper) ? Json(tuningQuantityInKeyUnit(t.target.quantity, t.target.upper)) : Json(nullptr)},
-                       {"hard", t.target.hard},
-                       {"met", t.met}});
-  return {{"knobs", knobs}, {"targets", targets}, {"feasible", r.feasible}, {"interrupted", r.interrupted},
+    targets.push_back(
+        {{"quantity", tuningQuantityKey(t.target.quantity)},
+         {"value", tuningQuantityInKeyUnit(t.target.quantity, t.value)},
+         {"min", std::isfinite(t.target.lower) ? Json(tuningQuantityInKeyUnit(t.target.quantity, t.target.lower))
+                                               : Json(nullptr)},
+         {"max", std::isfinite(t.target.upper) ? Json(tuningQuantityInKeyUnit(t.target.quantity, t.target.upper))
+                                               : Json(nullptr)},
+         {"hard", t.target.hard},
+         {"met", t.met}});
+  return {{"knobs", knobs},
+          {"targets", targets},
+          {"feasible", r.feasible},
+          {"interrupted", r.interrupted},
           {"identifiable", r.identifiable},
-          {"identifiability", r.identifiability}, {"evaluations", r.evaluations}, {"seconds", seconds},
-          {"resolution", r.resolution.ran ? Json("At the knobs' resolution: " + r.resolution.verdict + ".") : Json(nullptr)},
+          {"identifiability", r.identifiability},
+          {"evaluations", r.evaluations},
+          {"seconds", seconds},
+          {"resolution",
+           r.resolution.ran ? Json("At the knobs' resolution: " + r.resolution.verdict + ".") : Json(nullptr)},
           {"swing_time_s", std::isfinite(r.best.swingTime) ? Json(r.best.swingTime) : Json(nullptr)}};
 }
 
@@ -128,7 +158,8 @@ ApiReply ServeApi::tune(const std::string& body, const std::function<bool()>& cl
   } slot{tunesRunning_};
   if (++tunesRunning_ > limits_.maxConcurrentTunes)
     return {503, Json{{"error", "tune: " + std::to_string(limits_.maxConcurrentTunes) +
-                                    " tunings are under way on this server (its budget); try again when one ends"}}.dump()};
+                                    " tunings are under way on this server (its budget); try again when one ends"}}
+                     .dump()};
   return hideServerPaths(answerOrError([&] {
     const auto start = std::chrono::steady_clock::now();
     const Json json = readRequestBody(body);
@@ -137,14 +168,18 @@ ApiReply ServeApi::tune(const std::string& body, const std::function<bool()>& cl
     Leg leg = loadLeg(request, files_, limits_);
     const std::vector<TuningKnob> knobs = readTuneKnobs(json, leg.kneeFile);
     const std::vector<TuningTarget> targets = readTuneTargets(json, leg.participant);
-    const TuningModel model(std::move(leg.participant), leg.kneeFile, knobs, request.lowering, request.added, request.kneeSettings);
+    const TuningModel model(std::move(leg.participant), leg.kneeFile, knobs, request.lowering, request.added,
+                            request.kneeSettings);
     model.checkKnobRanges();  // a range the leg or the knee file refuses is a 400 naming the knob, before any swing
-    const SwingOptions options = makeServeSwingOptions(limits_, ServeSwing::kAsSimulate);  // as swingsim tune's: simulate's
+    const SwingOptions options =
+        makeServeSwingOptions(limits_, ServeSwing::kAsSimulate);  // as swingsim tune's: simulate's
     TuningSettings settings;
     settings.startPoints = kTuneStartPoints;
     settings.jobs = 1;  // one request, one thread: the server's pool serves the others
     settings.maxSeconds = kTuneMaxSeconds;
-    const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const auto seconds = [&] {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     volatile bool stop = false;
     bool gone = false;  // the client has closed its connection
     std::atomic<long> swings{0};

@@ -52,7 +52,8 @@ class ComputeSlots {
 
 // The page may load its own files and talk to its own origin only; no other site may frame it.
 constexpr const char* kContentSecurityPolicy =
-    "default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; connect-src 'self'; "
+    "default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; connect-src "
+    "'self'; "
     "frame-ancestors 'none'; base-uri 'none'; form-action 'none'";
 
 const char* contentTypeOf(const std::string& name) {
@@ -115,8 +116,10 @@ void WebServer::Impl::addRoutes() {
                              std::function<ApiReply(const httplib::Request&)> call) {
     server.Post(path, [this, maxBytes, call](const httplib::Request& req, httplib::Response& res) {
       if (req.body.size() > maxBytes)
-        return sendJson(res, 413, Json{{"error", "request body: expected at most " + std::to_string(maxBytes) + " bytes (got " +
-                                                     std::to_string(req.body.size()) + ")"}}.dump());
+        return sendJson(res, 413,
+                        Json{{"error", "request body: expected at most " + std::to_string(maxBytes) + " bytes (got " +
+                                           std::to_string(req.body.size()) + ")"}}
+                            .dump());
       // Exempt from the request deadline while it is answered (a tuning takes up to 30 s).
       struct Answering {
         RequestDeadline& d;
@@ -180,8 +183,9 @@ WebServer::WebServer(const ServeOptions& options) : impl_(std::make_unique<Impl>
                    " (in use, or not an address of this machine)");
   s.guard.emplace(options.host, s.port);
   // Checked four times a deadline, at most every 250 ms.
-  s.deadline.emplace(s.port, options.requestDeadline,
-                     std::min(std::chrono::milliseconds(250), std::max(std::chrono::milliseconds(1), options.requestDeadline / 4)));
+  s.deadline.emplace(
+      s.port, options.requestDeadline,
+      std::min(std::chrono::milliseconds(250), std::max(std::chrono::milliseconds(1), options.requestDeadline / 4)));
   s.addGuard();
   s.addRoutes();
 }

@@ -37,7 +37,8 @@ void runCalibration(const CalibrationRequest& request) {
     std::printf("%s: hip moment time scale %.6f gives swing time %.5f s (target %.4f s)\n", p.name.c_str(), r.timeScale,
                 r.swingTime, target);
     std::printf("  monotonicity scan (scale: swing time s):");
-    for (std::size_t i = 0; i < r.scanScales.size(); ++i) std::printf(" %.3f:%.4f", r.scanScales[i], r.scanSwingTimes[i]);
+    for (std::size_t i = 0; i < r.scanScales.size(); ++i)
+      std::printf(" %.3f:%.4f", r.scanScales[i], r.scanSwingTimes[i]);
     std::printf("\n");
     ParticipantEdit edit{path, p};
     // Six decimals: the calibration's own tolerance is far below 1e-6 in time scale.

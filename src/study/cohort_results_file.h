@@ -30,7 +30,7 @@ struct CohortResultsFile {
   CohortRunIdentity run;
   bool sharded = false;  ///< written by `--shard`; false: a whole run's partial result
   int shardIndex = 0, shardCount = 1;
-  std::size_t first = 0, last = 0;  ///< the participants it covers, [first, last)
+  std::size_t first = 0, last = 0;               ///< the participants it covers, [first, last)
   std::vector<CohortParticipantResult> results;  ///< indexed from `first`
   std::size_t countFinished() const;
   bool isPartial() const { return countFinished() < last - first; }

@@ -81,7 +81,8 @@ void drawCheckedParticipants(Cohort& c, const Participant& templ, const YamlMap&
   }
 }
 
-Cohort readCohortStudy(YamlMap& yaml, const std::string& path, const std::function<void(const Cohort&)>& beforeDrawing) {
+Cohort readCohortStudy(YamlMap& yaml, const std::string& path,
+                       const std::function<void(const Cohort&)>& beforeDrawing) {
   Cohort c;
   c.study.path = path;
   c.study.includePublishedLowerings = false;  // Table 4's lowerings belong to Burkett's four
@@ -89,8 +90,10 @@ Cohort readCohortStudy(YamlMap& yaml, const std::string& path, const std::functi
   serialize(a, c);
   const Participant templ = loadParticipant(c.templatePath);
   if (templ.drive != SwingDrive::kHipMoment)
-    yaml.fail("template", "expected a participant driven by a hip moment (its time scale is calibrated to each drawn "
-              "swing time)", templ.path + " (drive: thigh_kinematics)");
+    yaml.fail("template",
+              "expected a participant driven by a hip moment (its time scale is calibrated to each drawn "
+              "swing time)",
+              templ.path + " (drive: thigh_kinematics)");
   yaml.finish();
   if (beforeDrawing) beforeDrawing(c);
   drawCheckedParticipants(c, templ, yaml);

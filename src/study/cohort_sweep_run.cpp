@@ -47,14 +47,17 @@ bool runSlice(const Cohort& cohort, CohortResultsFile& file, const std::string& 
     CohortRunControl control;
     control.stopFlag = run.stop;
     control.stopAfterParticipants = run.stopAfterSwings;
-    control.progress = [&](int done, int) { progress.update(static_cast<int>(resumed) + done, static_cast<int>(slice)); };
+    control.progress = [&](int done, int) {
+      progress.update(static_cast<int>(resumed) + done, static_cast<int>(slice));
+    };
     complete = runCohortParticipants(cohort, file.first, file.last, results, jobs, control);
   }
   std::copy(results.begin() + static_cast<std::ptrdiff_t>(file.first),
             results.begin() + static_cast<std::ptrdiff_t>(file.last), file.results.begin());
   if (complete && !run.stopped()) return true;
   writeFileAtomic(path, formatCohortResultsJson(file));
-  std::fprintf(stderr, "swingsim: interrupted; %zu of %zu participants are kept in %s; run the same command again to resume\n",
+  std::fprintf(stderr,
+               "swingsim: interrupted; %zu of %zu participants are kept in %s; run the same command again to resume\n",
                file.countFinished(), slice, path.c_str());
   return false;
 }
@@ -72,21 +75,23 @@ void announceCohortRun(const Cohort& cohort, const CohortSweepArguments& a) {
   // refinements: about 20 swings; then one swing per lowering of the grid (fewer where a
   // drawn shank caps it).
   constexpr std::uint64_t kCalibrationSwings = 20;
-  const auto lowerings = static_cast<std::uint64_t>(std::floor(cohort.study.loweringMax / cohort.study.loweringStep + 1e-9)) + 1;
+  const auto lowerings =
+      static_cast<std::uint64_t>(std::floor(cohort.study.loweringMax / cohort.study.loweringStep + 1e-9)) + 1;
   const auto [first, last] = calcSlice(cohort, a);
   const std::uint64_t people = last - first;
   announceRunSize({"cohort " + cohort.study.name, "the cohort run", people * (kCalibrationSwings + lowerings), "swings",
-                   std::to_string(people) + (people == 1 ? " participant" : " participants") +
-                       " x (about " + std::to_string(kCalibrationSwings) + " calibration swings + up to " + std::to_string(lowerings) + " lowerings)",
+                   std::to_string(people) + (people == 1 ? " participant" : " participants") + " x (about " +
+                       std::to_string(kCalibrationSwings) + " calibration swings + up to " + std::to_string(lowerings) +
+                       " lowerings)",
                    kSecondsPerSwingEstimate, a.jobs},
                   a.maxSwings, cohort.study.path + ": participants",
-                  "draw fewer participants, run it in shards (--shard K/N) or coarsen the lowering grid", "--max-swings");
+                  "draw fewer participants, run it in shards (--shard K/N) or coarsen the lowering grid",
+                  "--max-swings");
 }
 
 /// The report, cohort.csv, figures and --json, staged and moved into `out` together.
 int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipantResult>& results,
-                       const std::string& out, const std::optional<std::string>& json,
-                       const SweepRunControl& control) {
+                       const std::string& out, const std::optional<std::string>& json, const SweepRunControl& control) {
   const CohortSummary summary = summarizeCohort(cohort, results);
   std::printf("%s", formatCohortSummary(cohort, summary).c_str());
   StagedOutput staged(out, OutputSetKind::kWholeRun);
@@ -105,7 +110,8 @@ int writeCohortOutputs(const Cohort& cohort, const std::vector<CohortParticipant
 }  // namespace
 
 int runCohortSweep(const CohortSweepArguments& a, const SweepRunControl& control) {
-  const Cohort cohort = loadCohortStudy(a.study, [&a](const Cohort& c) { announceCohortRun(c, a); });  // before any work
+  const Cohort cohort =
+      loadCohortStudy(a.study, [&a](const Cohort& c) { announceCohortRun(c, a); });  // before any work
   const std::string out = chooseSweepOutputFolder(cohort.study, a.out);
   CohortResultsFile file;
   file.run = makeCohortRunIdentity(cohort, SWINGSIM_VERSION);
@@ -114,19 +120,23 @@ int runCohortSweep(const CohortSweepArguments& a, const SweepRunControl& control
   file.shardCount = a.shardCount;
   std::tie(file.first, file.last) = calcSlice(cohort, a);
   file.results.resize(file.last - file.first);
-  const std::string path = out + "/" + (a.sharded ? cohortShardFileName(a.shardIndex, a.shardCount) : cohortPartialFileName());
+  const std::string path =
+      out + "/" + (a.sharded ? cohortShardFileName(a.shardIndex, a.shardCount) : cohortPartialFileName());
   std::string label = "cohort " + cohort.study.name;
   if (a.sharded) label += " shard " + std::to_string(a.shardIndex) + "/" + std::to_string(a.shardCount);
-  std::fprintf(stderr, "%s: participants %zu to %zu of %d (seed %llu): calibration to each drawn swing time, then the "
-               "lowering sweep\n", label.c_str(), file.first + 1, file.last, cohort.count,
-               static_cast<unsigned long long>(cohort.seed));
+  std::fprintf(stderr,
+               "%s: participants %zu to %zu of %d (seed %llu): calibration to each drawn swing time, then the "
+               "lowering sweep\n",
+               label.c_str(), file.first + 1, file.last, cohort.count, static_cast<unsigned long long>(cohort.seed));
   makeDirectories(out);
   if (!runSlice(cohort, file, path, label, a.jobs, control)) return 1;
   if (a.sharded) {
     writeFileAtomic(path, formatCohortResultsJson(file));
-    std::printf("shard %d/%d of %s: %zu participants -> %s\n(when all %d have run: swingsim merge %s/cohort-shard-*-of-%d.json)\n",
-                a.shardIndex, a.shardCount, cohort.study.name.c_str(), file.last - file.first, path.c_str(), a.shardCount,
-                out.c_str(), a.shardCount);
+    std::printf(
+        "shard %d/%d of %s: %zu participants -> %s\n(when all %d have run: swingsim merge "
+        "%s/cohort-shard-*-of-%d.json)\n",
+        a.shardIndex, a.shardCount, cohort.study.name.c_str(), file.last - file.first, path.c_str(), a.shardCount,
+        out.c_str(), a.shardCount);
     return 0;
   }
   return writeCohortOutputs(cohort, file.results, out, a.json, control);

@@ -19,7 +19,7 @@ struct CohortSweepArguments {
   std::optional<std::string> out, json;
   int jobs = 0;  ///< worker threads, 0 = all cores
   bool sharded = false;
-  int shardIndex = 0, shardCount = 1;  ///< `--shard K/N`
+  int shardIndex = 0, shardCount = 1;                ///< `--shard K/N`
   std::uint64_t maxSwings = kDefaultMaxSweepSwings;  ///< `--max-swings`: the most swings this run (or shard) may have
 };
 

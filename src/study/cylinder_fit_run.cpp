@@ -29,9 +29,8 @@ void checkFitFinite(const ModelEvaluation& r) {
 
 }  // namespace
 
-CylinderFitRun runCylinderFits(const std::vector<std::string>& modelPaths,
-                              const std::vector<std::string>& trainPaths,
-                              const std::vector<std::string>& validatePaths, bool fitSwitches) {
+CylinderFitRun runCylinderFits(const std::vector<std::string>& modelPaths, const std::vector<std::string>& trainPaths,
+                               const std::vector<std::string>& validatePaths, bool fitSwitches) {
   std::vector<std::string> names;
   std::vector<MauchCylinderParams> models;
   std::size_t maxCoefficients = 0;

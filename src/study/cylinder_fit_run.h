@@ -26,8 +26,7 @@ struct CylinderFitRun {
 /// `fitSwitches` as the study says, and evaluates it on every file. Each training file
 /// must hold more samples than the largest model has coefficients. A progress bar per model
 /// on stderr while its switch constants are fitted. Throws InputError for a bad file.
-CylinderFitRun runCylinderFits(const std::vector<std::string>& modelPaths,
-                              const std::vector<std::string>& trainPaths,
-                              const std::vector<std::string>& validatePaths, bool fitSwitches);
+CylinderFitRun runCylinderFits(const std::vector<std::string>& modelPaths, const std::vector<std::string>& trainPaths,
+                               const std::vector<std::string>& validatePaths, bool fitSwitches);
 
 }  // namespace swingsim

@@ -90,7 +90,8 @@ void serialize(A& a, CylinderBenchStudy& s) {
     return v > 0 && v <= 100000 ? "" : "expected a sample rate above 0 and at most 100000 Hz";
   });
   a.optionalInteger("cycles", p.cycles);
-  a.require(p.cycles >= 1 && p.cycles <= 1000, "cycles", "must be from 1 to 1000", [&] { return std::to_string(p.cycles); });
+  a.require(p.cycles >= 1 && p.cycles <= 1000, "cycles", "must be from 1 to 1000",
+            [&] { return std::to_string(p.cycles); });
   optionalExactAngle(a, "terminal_swing_min_deg", p.terminalSwingMinimum);
   optionalExactAngle(a, "hyperextension_deg", p.hyperextension,
                      [](double v) { return v < 0 ? "" : "must be negative (hyperextension)"; });

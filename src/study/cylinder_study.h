@@ -23,17 +23,17 @@ struct BenchCondition {
 /// `kind: cylinder-bench`: synthetic bench records from a cylinder model.
 struct CylinderBenchStudy {
   std::string path;
-  std::string name;             ///< `name:`, the file stem if not given
-  std::string description;      ///< free text, not used
-  std::string modelPath;        ///< knee model YAML (kind: mauch): the truth
-  std::string kneeAnglesPath;   ///< Winter-style CSV (frame, knee_deg)
-  int strideFirstFrame = 28;    ///< heel strike
-  int strideLastFrame = 97;     ///< next heel strike
-  BenchProfileParams profile;   ///< shared settings (stride time and scale per condition)
+  std::string name;            ///< `name:`, the file stem if not given
+  std::string description;     ///< free text, not used
+  std::string modelPath;       ///< knee model YAML (kind: mauch): the truth
+  std::string kneeAnglesPath;  ///< Winter-style CSV (frame, knee_deg)
+  int strideFirstFrame = 28;   ///< heel strike
+  int strideLastFrame = 97;    ///< next heel strike
+  BenchProfileParams profile;  ///< shared settings (stride time and scale per condition)
   std::vector<BenchCondition> conditions;
-  double noise = 0;             ///< force noise standard deviation, N
-  std::uint64_t seed = 1;       ///< condition i uses seed + i
-  std::string outputDir;        ///< where the CSVs go (absolute, resolved)
+  double noise = 0;        ///< force noise standard deviation, N
+  std::uint64_t seed = 1;  ///< condition i uses seed + i
+  std::string outputDir;   ///< where the CSVs go (absolute, resolved)
   /// Optional `hidden_effects:`: effects added to the truth model, in the model
   /// YAML's `effects:` format, plus `switch_delay: {time_constant_s}` (the S2 latch 1/k).
   MauchAddedEffects hiddenEffects;
@@ -52,7 +52,7 @@ struct CylinderFitStudy {
   std::vector<std::string> train;     ///< bench CSV paths (resolved)
   std::vector<std::string> validate;  ///< bench CSV paths (resolved)
   bool fitSwitches = false;
-  double plotSeconds = 2.0;           ///< time span shown in the force plots, s
+  double plotSeconds = 2.0;  ///< time span shown in the force plots, s
 };
 
 /// Reads the keys of a cylinder-fit study (`kind` already read). Throws InputError.

@@ -22,7 +22,8 @@ std::string acceptedList(const Diagnosis& dg) {
 
 // The base cylinder model with the diagnosed parameters: its one dial setting carries the
 // refitted coefficients, its effects the accepted ones.
-KneeModelSpec diagnosedCylinder(const DiagnosisStudy& study, const MauchCylinderParams& final, const std::string& accepted) {
+KneeModelSpec diagnosedCylinder(const DiagnosisStudy& study, const MauchCylinderParams& final,
+                                const std::string& accepted) {
   KneeModelSpec spec = loadKneeModel(study.baseModelPath).spec;
   spec.name = (spec.name.empty() ? fileStem(study.baseModelPath) : spec.name) + "-diagnosed";
   spec.description = "Augmented by swingsim diagnose (" + study.name + "): " + accepted;
@@ -34,7 +35,8 @@ KneeModelSpec diagnosedCylinder(const DiagnosisStudy& study, const MauchCylinder
   MauchDialSetting setting;
   setting.flexionDial = mauch->flexionDial;
   setting.extensionDial = mauch->extensionDial;
-  for (int i = 0; i < final.phases; ++i) setting.rows.push_back({i + 1, final.coefficients[static_cast<std::size_t>(i)]});
+  for (int i = 0; i < final.phases; ++i)
+    setting.rows.push_back({i + 1, final.coefficients[static_cast<std::size_t>(i)]});
   mauch->settings = {setting};
   return spec;
 }
@@ -44,7 +46,8 @@ KneeModelSpec diagnosedKnee(const DiagnosisStudy& study, const KneeModelSpec& ba
                             const std::string& accepted) {
   KneeModelSpec spec = base;
   if (spec.hasKneeEffects)
-    throw InputError(study.baseModelPath + ": knee_effects: the base model already has added knee effects; --save-model "
+    throw InputError(study.baseModelPath +
+                     ": knee_effects: the base model already has added knee effects; --save-model "
                      "would stack the diagnosed ones on them (diagnose a model without knee_effects)");
   spec.name = (spec.name.empty() ? fileStem(study.baseModelPath) : spec.name) + "-diagnosed";
   spec.description = "Augmented by swingsim diagnose (" + study.name + "): " + accepted;
@@ -60,12 +63,15 @@ std::vector<std::string> saveDiagnosedModel(const DiagnosisStudy& study, const D
                                             const Diagnosis& dg, const std::string& path, const std::string& command) {
   const std::string accepted = acceptedList(dg);
   const std::string header = "Written by " + command + "\nbase model: " + study.baseModelPath +
-                             "\naccepted effects: " + accepted + "\nfree parameters refitted on the study's training files";
+                             "\naccepted effects: " + accepted +
+                             "\nfree parameters refitted on the study's training files";
   if (study.plant == PlantKind::kSweep)
-    throw InputError("diagnose: --save-model: a sweep diagnosis changes no single model file (its shared values act "
-                     "on every participant of the sweep study); the fitted values are in the report and --json");
+    throw InputError(
+        "diagnose: --save-model: a sweep diagnosis changes no single model file (its shared values act "
+        "on every participant of the sweep study); the fitted values are in the report and --json");
   if (study.plant == PlantKind::kCylinder) {
-    writeFileAtomic(path, formatKneeModelYaml(diagnosedCylinder(study, cylinderParams(*dg.final.model), accepted), header));
+    writeFileAtomic(path,
+                    formatKneeModelYaml(diagnosedCylinder(study, cylinderParams(*dg.final.model), accepted), header));
     return {path};
   }
   const SwingModelParams& final = swingParams(*dg.final.model);

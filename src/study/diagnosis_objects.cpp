@@ -14,7 +14,8 @@ void checkSwingRecord(const DiagnosisStudy& study, const SwingRecord& r, double 
                       const std::string& momentSource) {
   checkMomentUnits(r, bodyMass, momentSource, where);
   if (study.drive == SwingDrive::kHipMoment && r.hipMoment.empty())
-    throw InputError(where + ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
+    throw InputError(where +
+                     ": no hip moment column (hip_moment_Nm, or motion_columns: hip_moment), which the swing "
                      "diagnosis with drive: hip_moment needs (with only angles measured, set drive: thigh_kinematics)");
 }
 
@@ -31,7 +32,8 @@ SwingRecord takeRecord(const DiagnosisStudy& study, const StudyRecord& entry, Sw
     return r;
   }
   SwingRecord r = readStudyRecord(study, entry, notes);
-  checkSwingRecord(study, r, bodyMass, entry.path, entry.inverseDynamicsPath.empty() ? entry.path : entry.inverseDynamicsPath);
+  checkSwingRecord(study, r, bodyMass, entry.path,
+                   entry.inverseDynamicsPath.empty() ? entry.path : entry.inverseDynamicsPath);
   return r;
 }
 
@@ -46,23 +48,27 @@ DiagnosisStudy parseDiagnosisStudy(const std::string& text, const std::string& s
 
 std::unique_ptr<DiagnosisPlant> makeSwingDiagnosisPlant(const DiagnosisStudy& study, SwingStudyObjects objects,
                                                         const DiagnosisRowLimit* limit) {
-  if (study.plant != PlantKind::kSwing) throw InputError(study.path + ": kind: records in memory need a swing-diagnosis study");
+  if (study.plant != PlantKind::kSwing)
+    throw InputError(study.path + ": kind: records in memory need a swing-diagnosis study");
   SwingBase base;
   base.participant = objects.participant ? std::move(*objects.participant) : loadParticipant(study.participantPath);
   base.knee = objects.baseModel ? std::move(*objects.baseModel) : loadKneeModel(study.baseModelPath);
   base.drive = study.drive;
   base.movingHip = study.movingHip;
   std::vector<SwingRecord> train, validate;
-  for (const StudyRecord& entry : study.train) train.push_back(takeRecord(study, entry, objects, base.notes, base.participant.bodyMass));
+  for (const StudyRecord& entry : study.train)
+    train.push_back(takeRecord(study, entry, objects, base.notes, base.participant.bodyMass));
   for (const StudyRecord& entry : study.validate)
     validate.push_back(takeRecord(study, entry, objects, base.notes, base.participant.bodyMass));
   if (!objects.records.empty())
-    throw InputError(study.path + ": train: no entry named '" + objects.records.begin()->first + "' for the record given");
+    throw InputError(study.path + ": train: no entry named '" + objects.records.begin()->first +
+                     "' for the record given");
   std::uint64_t rows = 0;
   for (const auto* records : {&train, &validate})
     for (const auto& r : *records) rows += r.time.size();
   if (limit) announceDiagnosisSize(study.name, study.path, study.plant, rows, train.size() + validate.size(), *limit);
-  return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate), study.integratorTolerance);
+  return std::make_unique<SwingPlant>(std::move(base), std::move(train), std::move(validate),
+                                      study.integratorTolerance);
 }
 
 }  // namespace swingsim

@@ -6,9 +6,12 @@ namespace swingsim {
 
 std::uint64_t getDefaultMaxDiagnosisRows(PlantKind plant) {
   switch (plant) {
-    case PlantKind::kSweep: return kDefaultMaxSweepDiagnosisRows;
-    case PlantKind::kCylinder: return kDefaultMaxCylinderDiagnosisRows;
-    default: return kDefaultMaxSwingDiagnosisRows;
+    case PlantKind::kSweep:
+      return kDefaultMaxSweepDiagnosisRows;
+    case PlantKind::kCylinder:
+      return kDefaultMaxCylinderDiagnosisRows;
+    default:
+      return kDefaultMaxSwingDiagnosisRows;
   }
 }
 
@@ -26,7 +29,10 @@ void announceDiagnosisSize(const std::string& name, const std::string& studyPath
   const std::string shrink = sweep ? "give fewer rows (one per participant and lowering, averaged over trials)"
                                    : "resample the records more coarsely (resample_s) or give fewer or shorter ones";
   announceRunSize({"diagnose " + name, "the diagnosis", rows, "rows", what,
-                   sweep ? kSecondsPerSweepRow : cylinder ? kSecondsPerBenchRow : kSecondsPerSwingRow, 1},
+                   sweep      ? kSecondsPerSweepRow
+                   : cylinder ? kSecondsPerBenchRow
+                              : kSecondsPerSwingRow,
+                   1},
                   limit.maxRows ? limit.maxRows : getDefaultMaxDiagnosisRows(plant), studyPath, shrink, "--max-rows");
 }
 

@@ -4,17 +4,17 @@
 
 #include "core/output_files.h"
 #include "identify/cylinder_plant.h"
-#include "identify/user_cylinder_effect.h"
-#include "identify/swing_plant.h"
 #include "identify/sweep_plant.h"
+#include "identify/swing_plant.h"
+#include "identify/user_cylinder_effect.h"
 #include "io/bench_csv.h"
 #include "io/knee_model_loader.h"
-#include "io/motion_columns_yaml.h"
 #include "io/moment_units_check.h"
+#include "io/motion_columns_yaml.h"
 #include "io/motion_file.h"
 #include "io/participant_loader.h"
-#include "io/swing_record_csv.h"
 #include "io/sweep_times_csv.h"
+#include "io/swing_record_csv.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
 #include "study/diagnosis_objects.h"
@@ -39,8 +39,11 @@ void serialize(A& a, EffectSelectionSettings& st) {
   a.optionalNumber("min_validation_improvement", st.minValidationImprovement,
                    [](double v) { return v >= 0 && v < 1 ? "" : "must be in [0, 1)"; });
   double maxEffects = st.maxEffects, lags = st.whitenessLags;
-  a.optionalNumber("max_effects", maxEffects, [](double v) { return v == std::floor(v) ? inRange(v, 1, 6, "must be 1 to 6") : "must be 1 to 6"; });
-  a.optionalNumber("whiteness_lags", lags, [](double v) { return v == std::floor(v) ? inRange(v, 1, 1000, "must be 1 to 1000") : "must be 1 to 1000"; });
+  a.optionalNumber("max_effects", maxEffects,
+                   [](double v) { return v == std::floor(v) ? inRange(v, 1, 6, "must be 1 to 6") : "must be 1 to 6"; });
+  a.optionalNumber("whiteness_lags", lags, [](double v) {
+    return v == std::floor(v) ? inRange(v, 1, 1000, "must be 1 to 1000") : "must be 1 to 1000";
+  });
   st.maxEffects = static_cast<int>(maxEffects);
   st.whitenessLags = static_cast<int>(lags);
   // 0 is the internal "not set" (estimate it), not written; in a file it would mean no
@@ -51,14 +54,15 @@ void serialize(A& a, EffectSelectionSettings& st) {
                    : "expected a positive noise: 0 noise makes the likelihood singular; leave measurement_noise out to "
                      "estimate it from the data";
     });
-  a.optionalNumber("explained_noise_ratio", st.explainedNoiseRatio, [](double v) { return inRange(v, 1, 10, "must be in [1, 10]"); });
+  a.optionalNumber("explained_noise_ratio", st.explainedNoiseRatio,
+                   [](double v) { return inRange(v, 1, 10, "must be in [1, 10]"); });
 }
 
 std::string StudyRecord::displayName() const { return name.empty() ? fileStem(path) : name; }
 
 bool operator==(const StudyRecord& a, const StudyRecord& b) {
-  return a.name == b.name && a.path == b.path && a.toeOffTime == b.toeOffTime && a.heelContactTime == b.heelContactTime &&
-         a.swing == b.swing && a.inverseDynamicsPath == b.inverseDynamicsPath;
+  return a.name == b.name && a.path == b.path && a.toeOffTime == b.toeOffTime &&
+         a.heelContactTime == b.heelContactTime && a.swing == b.swing && a.inverseDynamicsPath == b.inverseDynamicsPath;
 }
 
 namespace {
@@ -76,14 +80,17 @@ void serialize(A& a, StudyRecord& r) {
   a.optionalText("name", r.name);
   a.path("file", r.path);
   if constexpr (A::kReading)
-    a.require(isMotionFile(r.path) || (!a.has("toe_off_s") && !a.has("heel_contact_s") && !a.has("swing") && !a.has("inverse_dynamics")),
-              "file", "toe_off_s, heel_contact_s, swing and inverse_dynamics cut an OpenSim .mot/.sto, not a CSV record",
+    a.require(isMotionFile(r.path) ||
+                  (!a.has("toe_off_s") && !a.has("heel_contact_s") && !a.has("swing") && !a.has("inverse_dynamics")),
+              "file",
+              "toe_off_s, heel_contact_s, swing and inverse_dynamics cut an OpenSim .mot/.sto, not a CSV record",
               [&] { return r.path; });
   optionalSeconds(a, "toe_off_s", r.toeOffTime, {});
   optionalSeconds(a, "heel_contact_s", r.heelContactTime, {});
   if (r.toeOffTime && r.heelContactTime)
     a.require(*r.heelContactTime > *r.toeOffTime, "heel_contact_s",
-              "must be after toe_off_s (" + formatNumber(*r.toeOffTime) + " s)", [&] { return formatNumber(*r.heelContactTime); });
+              "must be after toe_off_s (" + formatNumber(*r.toeOffTime) + " s)",
+              [&] { return formatNumber(*r.heelContactTime); });
   std::optional<double> swing;
   if (r.swing) swing = *r.swing;
   optionalSeconds(a, "swing", swing, mustBeSwingNumber);
@@ -100,7 +107,8 @@ template <class A>
 void serialize(A& a, GrfSettings& g) {
   a.path("file", g.path);
   a.optionalText("vertical_force", g.verticalForce);
-  a.optionalNumber("threshold_N", g.thresholdN, [](double v) { return v > 0 && v < 1e4 ? "" : "must be in (0, 10000) N"; });
+  a.optionalNumber("threshold_N", g.thresholdN,
+                   [](double v) { return v > 0 && v < 1e4 ? "" : "must be in (0, 10000) N"; });
   if (A::kReading || g.fallbackToKinematics) a.optionalFlag("fallback_to_kinematics", g.fallbackToKinematics);
 }
 
@@ -112,7 +120,8 @@ void serializeCandidates(A& a, DiagnosisStudy& s);
 template <class A>
 void serialize(A& a, DiagnosisStudy& s) {
   a.choice("kind", s.plant,
-           {{"cylinder-diagnosis", PlantKind::kCylinder}, {"swing-diagnosis", PlantKind::kSwing},
+           {{"cylinder-diagnosis", PlantKind::kCylinder},
+            {"swing-diagnosis", PlantKind::kSwing},
             {"sweep-diagnosis", PlantKind::kSweep}});
   if (s.plant == PlantKind::kSweep) {
     // The model is a sweep study's sweep; the measurement a table of swing times.
@@ -139,8 +148,8 @@ void serializeRecordStudy(A& a, DiagnosisStudy& s) {
             [] { return std::string("an empty list"); });
   if (s.plant == PlantKind::kSwing) {
     if (A::kReading || s.drive != SwingDrive::kHipMoment)
-      a.choice("drive", s.drive, {{"hip_moment", SwingDrive::kHipMoment}, {"thigh_kinematics", SwingDrive::kThighKinematics}},
-               true);
+      a.choice("drive", s.drive,
+               {{"hip_moment", SwingDrive::kHipMoment}, {"thigh_kinematics", SwingDrive::kThighKinematics}}, true);
     bool hasMotionColumns = s.motionColumns.has_value();
     MotionColumns motion = s.motionColumns.value_or(MotionColumns{});
     a.optionalMap("motion_columns", motion, hasMotionColumns);
@@ -161,9 +170,11 @@ void serializeRecordStudy(A& a, DiagnosisStudy& s) {
       for (const auto& r : *list) {
         const std::string& p = r.path;
         if (!isMotionFile(p)) continue;
-        a.require(hasMotionColumns, key,
-                  "an OpenSim motion file needs the study's motion_columns map ({hip: NAME, knee: NAME, hip_moment: NAME}; "
-                  "docs/measured-data.md, \"Motion files and their columns\")", [&] { return p; });
+        a.require(
+            hasMotionColumns, key,
+            "an OpenSim motion file needs the study's motion_columns map ({hip: NAME, knee: NAME, hip_moment: NAME}; "
+            "docs/measured-data.md, \"Motion files and their columns\")",
+            [&] { return p; });
         a.require(s.drive == SwingDrive::kThighKinematics || !motion.hipMoment.empty(), "motion_columns",
                   "hip_moment: expected the label of the hip moment column (N m), the drive the swing diagnosis needs",
                   [] { return std::string("no hip_moment key"); });
@@ -175,9 +186,10 @@ void serializeRecordStudy(A& a, DiagnosisStudy& s) {
       a.require(s.plant == PlantKind::kSwing || isPlainRecord(r), key, "a cylinder study's records are file names",
                 [&] { return "a map for " + r.path; });
       for (const auto& other : names)
-        a.require(other != r.displayName(), key,
-                  "two records share the name '" + other + "' (results are keyed by name; give each entry a unique name:)",
-                  [&] { return r.path; });
+        a.require(
+            other != r.displayName(), key,
+            "two records share the name '" + other + "' (results are keyed by name; give each entry a unique name:)",
+            [&] { return r.path; });
       names.push_back(r.displayName());
     }
 }
@@ -226,22 +238,27 @@ void serializeCandidateList(A& a, DiagnosisStudy& s) {
   std::vector<UserEffect> entries;
   if constexpr (!A::kReading)
     for (const auto& n : s.settings.candidates) {
-      auto user = std::find_if(s.userEffects.begin(), s.userEffects.end(), [&](const UserEffect& u) { return u.name == n; });
+      auto user =
+          std::find_if(s.userEffects.begin(), s.userEffects.end(), [&](const UserEffect& u) { return u.name == n; });
       entries.push_back(user != s.userEffects.end() ? *user : UserEffect{n, "", {}});
     }
-  a.textOrMapList("candidates", entries, &UserEffect::name,
-                  +[](const UserEffect& u) { return u.expression.empty(); }, "an effect's name");
+  a.textOrMapList(
+      "candidates", entries, &UserEffect::name, +[](const UserEffect& u) { return u.expression.empty(); },
+      "an effect's name");
   if constexpr (A::kReading) {
     s.settings.candidates.clear();
     s.userEffects.clear();
     for (const auto& e : entries) {
-      a.require(std::find(s.settings.candidates.begin(), s.settings.candidates.end(), e.name) == s.settings.candidates.end(),
-                "candidates", "an effect named twice", [&] { return e.name; });
+      a.require(
+          std::find(s.settings.candidates.begin(), s.settings.candidates.end(), e.name) == s.settings.candidates.end(),
+          "candidates", "an effect named twice", [&] { return e.name; });
       a.require(e.expression.empty() || e.plant == s.plant, "candidates",
                 s.plant == PlantKind::kSweep
-                    ? "a sweep study names library effects (a user's expression is a swing's knee_moment_Nm or a cylinder's cylinder_force_N)"
+                    ? "a sweep study names library effects (a user's expression is a swing's knee_moment_Nm or a "
+                      "cylinder's cylinder_force_N)"
                     : "a " + plantName(s.plant) + " study's own effect is " +
-                          (s.plant == PlantKind::kSwing ? "a knee moment (knee_moment_Nm)" : "a cylinder force (cylinder_force_N)"),
+                          (s.plant == PlantKind::kSwing ? "a knee moment (knee_moment_Nm)"
+                                                        : "a cylinder force (cylinder_force_N)"),
                 [&] { return e.name; });
       s.settings.candidates.push_back(e.name);
       if (!e.expression.empty()) s.userEffects.push_back(e);
@@ -256,15 +273,17 @@ void serializeCandidates(A& a, DiagnosisStudy& s) {
   if constexpr (A::kReading) namesCandidates = a.has("candidates");
   if (namesCandidates) {
     serializeCandidateList(a, s);
-    a.require(!s.settings.candidates.empty(), "candidates", "expected at least one effect", [] { return std::string("an empty list"); });
+    a.require(!s.settings.candidates.empty(), "candidates", "expected at least one effect",
+              [] { return std::string("an empty list"); });
     std::string all;
     for (const auto& k : effectNames(s.plant)) all += (all.empty() ? "" : ", ") + k;
     for (const auto& c : s.settings.candidates)
       a.require(findEffect(s.plant, c) != nullptr, "candidates",
                 "unknown " + plantName(s.plant) + " effect (known: " + all + ")" +
-                    (s.plant == PlantKind::kSwing ? "; or write your own as {name: NAME, knee_moment_Nm: EXPRESSION, "
-                                                    "parameters: {P: {unit: U, min: A, max: B, start: C}}} (docs/diagnosis.md)"
-                                                  : ""),
+                    (s.plant == PlantKind::kSwing
+                         ? "; or write your own as {name: NAME, knee_moment_Nm: EXPRESSION, "
+                           "parameters: {P: {unit: U, min: A, max: B, start: C}}} (docs/diagnosis.md)"
+                         : ""),
                 [&] { return c; });
   }
   bool acceptance = true;
@@ -277,8 +296,9 @@ void serializeCandidates(A& a, DiagnosisStudy& s) {
 
 std::string describeStudyDrive(const DiagnosisStudy& study) {
   if (study.plant != PlantKind::kSwing) return "";
-  return study.drive == SwingDrive::kThighKinematics ? "drive: each record's measured thigh angle, prescribed (thigh_kinematics)"
-                                                     : "drive: each record's measured hip moment (hip_moment)";
+  return study.drive == SwingDrive::kThighKinematics
+             ? "drive: each record's measured thigh angle, prescribed (thigh_kinematics)"
+             : "drive: each record's measured hip moment (hip_moment)";
 }
 
 DiagnosisStudy readDiagnosisStudy(YamlMap& yaml) {

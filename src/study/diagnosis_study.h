@@ -53,12 +53,12 @@ bool operator==(const StudyRecord& a, const StudyRecord& b);
 struct DiagnosisStudy {
   PlantKind plant = PlantKind::kCylinder;
   std::string path, name, description;
-  std::string baseModelPath;          ///< resolved knee model YAML
-  std::string participantPath;        ///< resolved participant YAML (swing)
-  std::string sweepStudyPath;         ///< resolved sweep study YAML (sweep: the model)
-  std::string measuredPath;           ///< resolved measured swing times CSV (sweep)
-  std::vector<StudyRecord> train;     ///< training records
-  std::vector<StudyRecord> validate;  ///< held-out records
+  std::string baseModelPath;                   ///< resolved knee model YAML
+  std::string participantPath;                 ///< resolved participant YAML (swing)
+  std::string sweepStudyPath;                  ///< resolved sweep study YAML (sweep: the model)
+  std::string measuredPath;                    ///< resolved measured swing times CSV (sweep)
+  std::vector<StudyRecord> train;              ///< training records
+  std::vector<StudyRecord> validate;           ///< held-out records
   std::optional<MotionColumns> motionColumns;  ///< swing: how .mot/.sto records are read
   /// swing: the GRF .mot whose vertical force gives `swing: K` records their events (`grf:`
   /// {file, vertical_force, threshold_N}); without it, or past its end, the kinematics do.

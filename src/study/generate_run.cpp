@@ -31,8 +31,10 @@ namespace {
 void generateCylinderBench(YamlMap& yaml, const std::optional<std::string>& outDir) {
   CylinderBenchStudy study = readCylinderBenchStudy(yaml);
   yaml.finish();
-  if (outDir) study.outputDir = *outDir;
-  else checkOutputFolder(study.outputDir, study.path + ": output_dir");  // before any work
+  if (outDir)
+    study.outputDir = *outDir;
+  else
+    checkOutputFolder(study.outputDir, study.path + ": output_dir");  // before any work
   MauchCylinderParams truthParams = loadMauchCylinder(study.modelPath);
   // Hidden effects: the truth gets them, the fitted models do not know.
   truthParams.effects = study.hiddenEffects;
@@ -44,7 +46,8 @@ void generateCylinderBench(YamlMap& yaml, const std::optional<std::string>& outD
       throw InputError(study.path + ": hidden_effects: " + e.what());
     }
   }();
-  const KneeAngleStride stride = readKneeAngleStride(study.kneeAnglesPath, study.strideFirstFrame, study.strideLastFrame);
+  const KneeAngleStride stride =
+      readKneeAngleStride(study.kneeAnglesPath, study.strideFirstFrame, study.strideLastFrame);
 
   std::vector<std::pair<std::string, std::string>> files;
   const bool hidden = study.hiddenEffects.any() || study.hiddenLatchTimeConstant > 0;
@@ -67,7 +70,8 @@ void generateCylinderBench(YamlMap& yaml, const std::optional<std::string>& outD
     double hiddenSq = 0;  // force of the hidden effects: truth minus the model without them
     if (hidden) {
       const auto plainForce = calcCylinderTrace(plain, profile.time, profile.position, velocity, 0.0).force;
-      for (std::size_t k = 0; k < force.size(); ++k) hiddenSq += (force[k] - plainForce[k]) * (force[k] - plainForce[k]);
+      for (std::size_t k = 0; k < force.size(); ++k)
+        hiddenSq += (force[k] - plainForce[k]) * (force[k] - plainForce[k]);
     }
     NormalNoise noise(study.seed + i);
     double sumSq = 0;
@@ -134,16 +138,16 @@ void generateSwingKinematics(YamlMap& yaml, const std::optional<std::string>& ou
   for (const auto& file : files) outputs.push_back({"STUDY.yaml: output_dir (or --out)", file.first});
   checkOutputsAreNotInputs({{"STUDY.yaml", study.path}}, outputs);
   for (const auto& [path, text] : files) writeFileAtomic(path, text);
-  std::printf("wrote %zu swing kinematics files to %s (participant %s, knee %s, noise %s deg, seed %llu)\n", files.size(),
-              outDir.c_str(), base.participant.name.c_str(), base.knee.name.c_str(), formatNumber(noise).c_str(),
-              static_cast<unsigned long long>(seed));
+  std::printf("wrote %zu swing kinematics files to %s (participant %s, knee %s, noise %s deg, seed %llu)\n",
+              files.size(), outDir.c_str(), base.participant.name.c_str(), base.knee.name.c_str(),
+              formatNumber(noise).c_str(), static_cast<unsigned long long>(seed));
 }
 
 using Generator = std::function<void(YamlMap&, const std::optional<std::string>& outDir)>;
 
 const std::map<std::string, Generator>& generators() {
   static const std::map<std::string, Generator> g = {{"cylinder-bench", generateCylinderBench},
-                                                              {"swing-kinematics", generateSwingKinematics}};
+                                                     {"swing-kinematics", generateSwingKinematics}};
   return g;
 }
 

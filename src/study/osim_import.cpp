@@ -24,7 +24,8 @@ std::string dropImportedPrefix(const std::string& message) {
 }
 
 // The participant of `model` (read from `label`) as YAML text, checked by the loader.
-ImportedParticipantYaml formatImported(const OsimModel& model, const std::string& label, OsimImportOptions o, const std::string& folder) {
+ImportedParticipantYaml formatImported(const OsimModel& model, const std::string& label, OsimImportOptions o,
+                                       const std::string& folder) {
   o.kneeModelPath = std::filesystem::absolute(o.kneeModelPath).lexically_normal().string();
   loadKneeModel(o.kneeModelPath);  // a knee model that does not load is refused before anything is written
   const OsimParticipant imported = calcOsimParticipant(model, o);
@@ -45,12 +46,13 @@ ImportedParticipantYaml formatImported(const OsimModel& model, const std::string
 
 std::string defaultImportKneePath() { return std::string(SWINGSIM_SOURCE_DIR) + "/models/damping-table-default.yaml"; }
 
-ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions o, const std::string& folder) {
+ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions o,
+                                              const std::string& folder) {
   return formatImported(loadOsimModel(modelPath), modelPath, std::move(o), folder);
 }
 
-ImportedParticipantYaml importOsimParticipantText(const std::string& modelText, const std::string& label, OsimImportOptions o,
-                                                  const std::string& folder) {
+ImportedParticipantYaml importOsimParticipantText(const std::string& modelText, const std::string& label,
+                                                  OsimImportOptions o, const std::string& folder) {
   return formatImported(parseOsimModel(modelText, label), label, std::move(o), folder);
 }
 

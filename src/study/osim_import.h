@@ -21,9 +21,10 @@ struct ImportedParticipantYaml {
 /// The participant of `modelPath`'s leg (options.side) as YAML for a file in `folder`, its
 /// numbers' sources in its leading comments. The knee model (options.kneeModelPath, made
 /// absolute) must load. Throws InputError naming the model when the loader would refuse it.
-ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions options, const std::string& folder);
+ImportedParticipantYaml importOsimParticipant(const std::string& modelPath, OsimImportOptions options,
+                                              const std::string& folder);
 /// Same, from the model's XML text (swingsim serve's upload); `label` names it in messages.
-ImportedParticipantYaml importOsimParticipantText(const std::string& modelText, const std::string& label, OsimImportOptions options,
-                                                  const std::string& folder);
+ImportedParticipantYaml importOsimParticipantText(const std::string& modelText, const std::string& label,
+                                                  OsimImportOptions options, const std::string& folder);
 
 }  // namespace swingsim

@@ -7,9 +7,7 @@
 
 namespace swingsim {
 
-std::string WholeNumberRange::check(long long value) const {
-  return value >= min && value <= max ? "" : expected;
-}
+std::string WholeNumberRange::check(long long value) const { return value >= min && value <= max ? "" : expected; }
 
 std::string WholeNumberRange::check(double value) const {
   // Compared as doubles first: 1e300 is not cast to long long.
@@ -21,14 +19,15 @@ std::string WholeNumberRange::check(double value) const {
 
 const WholeNumberRange& uncertaintySamplesRange() {
   static const WholeNumberRange range{
-      1, kMaxUncertaintySamples, "expected a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples)};
+      1, kMaxUncertaintySamples,
+      "expected a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples)};
   return range;
 }
 
 const WholeNumberRange& uncertaintyOrNoneRange() {
-  static const WholeNumberRange range{0, kMaxUncertaintySamples,
-                                      "expected 0 (none) or a whole number of samples from 1 to " +
-                                          std::to_string(kMaxUncertaintySamples)};
+  static const WholeNumberRange range{
+      0, kMaxUncertaintySamples,
+      "expected 0 (none) or a whole number of samples from 1 to " + std::to_string(kMaxUncertaintySamples)};
   return range;
 }
 
@@ -52,9 +51,7 @@ const WholeNumberRange& maxRowsRange() {
   return range;
 }
 
-std::string checkLowering(double lowering) {
-  return std::isfinite(lowering) ? "" : "expected a number";
-}
+std::string checkLowering(double lowering) { return std::isfinite(lowering) ? "" : "expected a number"; }
 
 std::string checkPositive(double value) { return std::isfinite(value) && value > 0 ? "" : "expected a positive value"; }
 

@@ -25,8 +25,8 @@ void announceRunSize(const RunSize& size, std::uint64_t limit, const std::string
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const std::uint64_t asked = size.jobs > 0 ? static_cast<std::uint64_t>(size.jobs) : cores;
   const double threads = static_cast<double>(std::max<std::uint64_t>(1, std::min(asked, size.count)));
-  const std::string estimate =
-      formatEstimate(static_cast<double>(size.count) * size.secondsPerUnit / std::min(threads, static_cast<double>(cores)));
+  const std::string estimate = formatEstimate(static_cast<double>(size.count) * size.secondsPerUnit /
+                                              std::min(threads, static_cast<double>(cores)));
   std::fprintf(stderr, "%s: %llu %s (%s), about %s on %d thread%s\n", size.label.c_str(),
                static_cast<unsigned long long>(size.count), size.unit.c_str(), size.detail.c_str(), estimate.c_str(),
                static_cast<int>(threads), threads == 1 ? "" : "s");

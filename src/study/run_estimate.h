@@ -9,13 +9,13 @@ namespace swingsim {
 
 /// What a run is about to do.
 struct RunSize {
-  std::string label;            ///< "sweep NAME", "cohort NAME": what the printed line starts with
-  std::string noun;             ///< "the sweep", "the cohort": the subject of the refusal
-  std::uint64_t count = 0;      ///< units of work
-  std::string unit;             ///< "swings", "rows"
-  std::string detail;           ///< "3 participants, no added mass"
-  double secondsPerUnit = 0;    ///< s on one core, measured (a rough estimate)
-  int jobs = 1;                 ///< worker threads, 0 = all cores
+  std::string label;          ///< "sweep NAME", "cohort NAME": what the printed line starts with
+  std::string noun;           ///< "the sweep", "the cohort": the subject of the refusal
+  std::uint64_t count = 0;    ///< units of work
+  std::string unit;           ///< "swings", "rows"
+  std::string detail;         ///< "3 participants, no added mass"
+  double secondsPerUnit = 0;  ///< s on one core, measured (a rough estimate)
+  int jobs = 1;               ///< worker threads, 0 = all cores
 };
 
 /// Seconds a swing takes on one core, for estimates (docs/robustness.md, "Large runs"):

@@ -70,7 +70,8 @@ JsonCheck<std::uint64_t> mustBeFormatVersion(std::uint64_t expected) {
   return [expected](const std::uint64_t& v) {
     if (v == expected) return std::string();
     if (v < expected)
-      return std::to_string(expected) + " (this file was written by an older swingsim, before its payload was "
+      return std::to_string(expected) +
+             " (this file was written by an older swingsim, before its payload was "
              "checksummed and range-checked: rerun the shard, or the sweep, that wrote it)";
     return std::to_string(expected) + " (this file was written by a newer swingsim: read it with that version)";
   };
@@ -114,7 +115,8 @@ void SameRunCheck::version(const ShardFileRun& expected, const ShardFileRun& fou
 
 void requireShardFile(const ShardSlice& s) {
   if (!s.sharded)
-    throw InputError(*s.path + ": shard: expected {\"index\": K, \"count\": N} (a file written by sweep --shard K/N), "
+    throw InputError(*s.path +
+                     ": shard: expected {\"index\": K, \"count\": N} (a file written by sweep --shard K/N), "
                      "found null (the partial result of a whole run: rerun its sweep command to resume it)");
 }
 

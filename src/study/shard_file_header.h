@@ -70,7 +70,8 @@ void serializeShardFileHead(Archive& a, const char* format, int formatVersion, b
   std::string name = format;
   a.text("format", name, mustBeText(format));
   int version = formatVersion;
-  a.whole("format_version", version, kMaxResultsFormatVersion, mustBeFormatVersion(static_cast<std::uint64_t>(formatVersion)));
+  a.whole("format_version", version, kMaxResultsFormatVersion,
+          mustBeFormatVersion(static_cast<std::uint64_t>(formatVersion)));
   a.flag("partial", partial);
   a.text("study", run.study);
   a.text("study_path", run.studyPath);
@@ -106,7 +107,8 @@ void requirePayloadChecksum(Archive& a, const char* key, const std::string& stor
   if constexpr (Archive::kReading) {
     const std::string computed = calc();
     a.require(stored == computed, key, computed + " (computed from " + from + ")", [&] {
-      return "\"" + stored + "\": " + what + " were changed after swingsim wrote them; rerun the shard (or the sweep) "
+      return "\"" + stored + "\": " + what +
+             " were changed after swingsim wrote them; rerun the shard (or the sweep) "
              "that wrote this file";
     });
   }

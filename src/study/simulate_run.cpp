@@ -26,8 +26,11 @@ void applyToeOffOverrides(Participant& p, const ToeOffOverrides& overrides, cons
   if (overrides.hipFlexionRate) p.initial.hipFlexionRate = *overrides.hipFlexionRate;
   if (overrides.kneeStart) p.initial.kneeStart = *overrides.kneeStart;
   if (overrides.kneeFlexionRate && startsKneeFromRecord(p))
-    throw InputError(kneeRateName + ": under the measured thigh drive the knee starts at the record's angle and rate at "
-                     "toe-off (" + p.thighKinematics.path + "); add --knee-start initial to start it from the participant's "
+    throw InputError(kneeRateName +
+                     ": under the measured thigh drive the knee starts at the record's angle and rate at "
+                     "toe-off (" +
+                     p.thighKinematics.path +
+                     "); add --knee-start initial to start it from the participant's "
                      "initial knee_flexion_deg and this rate");
   if (overrides.kneeFlexionRate) p.initial.kneeFlexionRate = *overrides.kneeFlexionRate;
 }
@@ -85,32 +88,37 @@ std::string formatToeOff(const SwingResult& r, const Participant& p) {
   const double knee = tr.kneeFlexion.front() * kRadToDeg, kneeRate = tr.kneeFlexionRate.front() * kRadToDeg;
   const double hip = tr.hipFlexion.front() * kRadToDeg, hipRate = tr.hipFlexionRate.front() * kRadToDeg;
   if (p.drive == SwingDrive::kThighKinematics)
-    return fmt("  toe-off             knee %.1f deg, %.1f deg/s (%s); thigh %.1f deg, %.1f deg/s (the record's)\n", knee,
-               kneeRate,
+    return fmt("  toe-off             knee %.1f deg, %.1f deg/s (%s); thigh %.1f deg, %.1f deg/s (the record's)\n",
+               knee, kneeRate,
                startsKneeFromRecord(p)                 ? "the record's, smoothing-spline value and slope"
                : p.thighKinematics.kneeFlexion.empty() ? "initial: the record has no knee"
                                                        : "initial: knee_start: initial",
                hip, hipRate);
-  return fmt("  toe-off             knee %.1f deg, %.1f deg/s; hip %.1f deg, %.1f deg/s (initial)\n", knee, kneeRate, hip,
-             hipRate);
+  return fmt("  toe-off             knee %.1f deg, %.1f deg/s; hip %.1f deg, %.1f deg/s (initial)\n", knee, kneeRate,
+             hip, hipRate);
 }
 
 // The swing time (or why the trial ended first), the peak knee flexion and the bounce.
 std::string formatSwingOutcome(const SwingResult& r, const Participant& p) {
   std::string s = r.trialEnd ? formatTrialEnd(*r.trialEnd, p) : fmt("  swing time          %.4f s\n", r.swingTime);
   if (const std::optional<double> entry = calcFirstZoneEntry(r))
-    s += fmt("  knee first in zone  %.4f s (continuous in the settings; the swing end waits until the knee stays in "
-             "the zone)\n", *entry);
+    s +=
+        fmt("  knee first in zone  %.4f s (continuous in the settings; the swing end waits until the knee stays in "
+            "the zone)\n",
+            *entry);
   if (r.peakKneeFlexion)
-    s += fmt("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion->flexion * kRadToDeg, r.peakKneeFlexion->time);
+    s += fmt("  peak knee flexion   %.1f deg at %.4f s\n", r.peakKneeFlexion->flexion * kRadToDeg,
+             r.peakKneeFlexion->time);
   else
     s += "  peak knee flexion   none (no knee peak above the zone of stability)\n";
   if (r.bounce && r.bounceHeight)
     s += fmt("  bounce              yes: the knee left the zone of stability %d time%s, up to %.1f deg\n", r.bounces,
              r.bounces == 1 ? "" : "s", *r.bounceHeight * kRadToDeg);
   else if (r.bounce)  // left the zone; the run ended before the rebound peaked, or the peak fell in one step
-    s += fmt("  bounce              yes: the knee left the zone of stability %d time%s (its peak was not "
-             "recorded)\n", r.bounces, r.bounces == 1 ? "" : "s");
+    s +=
+        fmt("  bounce              yes: the knee left the zone of stability %d time%s (its peak was not "
+            "recorded)\n",
+            r.bounces, r.bounces == 1 ? "" : "s");
   else
     s += "  bounce              no\n";
   return s;
@@ -121,12 +129,14 @@ std::string formatStopImpacts(const std::vector<StopImpact>& impacts) {
   std::string s;
   for (std::size_t i = 0; i < impacts.size(); ++i) {
     const StopImpact& im = impacts[i];
-    s += fmt("  stop impact %-2zu     at %.4f s: %.2f rad/s in, %.2f rad/s out (restitution %.2f), %.2f deg past the stop, "
-             "rebound to %.1f deg\n",
-             i + 1, im.time, im.impactRate, im.reboundRate, im.restitution, im.maxPenetration * kRadToDeg,
-             im.reboundHeight * kRadToDeg);
+    s += fmt(
+        "  stop impact %-2zu     at %.4f s: %.2f rad/s in, %.2f rad/s out (restitution %.2f), %.2f deg past the stop, "
+        "rebound to %.1f deg\n",
+        i + 1, im.time, im.impactRate, im.reboundRate, im.restitution, im.maxPenetration * kRadToDeg,
+        im.reboundHeight * kRadToDeg);
     if (im.work.empty()) continue;
-    s += fmt("                      kinetic energy at contact %.3f J; work to the top of the rebound:", im.kineticEnergy);
+    s += fmt("                      kinetic energy at contact %.3f J; work to the top of the rebound:",
+             im.kineticEnergy);
     for (const auto& w : im.work) s += fmt(" %s %+.3f J;", w.cause.c_str(), w.work);
     s += "\n";
   }
@@ -138,10 +148,12 @@ std::string formatToeClearance(const SwingResult& r, const Participant& p) {
   const std::string clearance = fmtOrNone("%.3f m", r.minToeClearance);
   if (!r.minToeClearance) return "  min toe clearance   none (no knee peak to measure it from)\n";
   if (p.toeClearance.alarmHolds())
-    return fmt("  min toe clearance   %s%s\n", clearance.c_str(), *r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
-  return fmt("  min toe clearance   %s relative to standing hip height (running: no strike alarm without "
-             "toe_clearance.hip_rise_m)\n",
-             clearance.c_str());
+    return fmt("  min toe clearance   %s%s\n", clearance.c_str(),
+               *r.minToeClearance < 0 ? "  (TOE STRIKES THE GROUND)" : "");
+  return fmt(
+      "  min toe clearance   %s relative to standing hip height (running: no strike alarm without "
+      "toe_clearance.hip_rise_m)\n",
+      clearance.c_str());
 }
 
 }  // namespace
@@ -155,8 +167,8 @@ std::string formatSimulateSummary(const SimulateRun& run, const KneeModel& knee,
   s += formatSwingOutcome(r, p);
   s += formatStopImpacts(r.impacts);
   s += formatToeClearance(r, p);
-  s += fmt("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator), options.accuracy,
-           r.realizations);
+  s += fmt("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
+           options.accuracy, r.realizations);
   s += "  events:";
   for (const auto& e : r.events) s += fmt(" %s@%.4f", e.name.c_str(), e.time);
   s += "\n";

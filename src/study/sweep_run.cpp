@@ -81,8 +81,9 @@ void SweepRun::calibrate() {
   if (!control_.terminal) return;
   for (const auto& c : calibrations_)
     std::fprintf(stderr, "sweep %s: %s: %s\n", study_.name.c_str(), c.participant.c_str(),
-                 c.ok ? ("time scale " + formatNumber(c.timeScale) + " for " + formatNumber(c.targetTime) + " s").c_str()
-                      : c.failure.c_str());
+                 c.ok
+                     ? ("time scale " + formatNumber(c.timeScale) + " for " + formatNumber(c.targetTime) + " s").c_str()
+                     : c.failure.c_str());
 }
 
 bool SweepRun::sweep() {
@@ -104,7 +105,8 @@ bool SweepRun::sweep() {
   if (control_.stopped()) return false;
   // Burkett's bounce and interior optimum, checked (report section "Terminal impact").
   if (control_.terminal)
-    std::fprintf(stderr, "sweep %s: terminal impact check: impact bookkeeping and a friction-free sweep per participant\n",
+    std::fprintf(stderr,
+                 "sweep %s: terminal impact check: impact bookkeeping and a friction-free sweep per participant\n",
                  study_.name.c_str());
   completeSweepResults(study_, results_, calibrations_, jobs_);
   return !control_.stopped();
@@ -124,8 +126,10 @@ void SweepRun::planUncertainty(const std::string& partialPath) {
 bool SweepRun::runUncertainty() {
   if (!plan_) return true;
   if (control_.terminal)
-    std::fprintf(stderr, "uncertainty %s: %d samples, seed %d, and each assumption at both ends of its range "
-                 "(docs/uncertainty.md)\n", study_.name.c_str(), study_.uncertaintySamples, study_.uncertaintySeed);
+    std::fprintf(stderr,
+                 "uncertainty %s: %d samples, seed %d, and each assumption at both ends of its range "
+                 "(docs/uncertainty.md)\n",
+                 study_.name.c_str(), study_.uncertaintySamples, study_.uncertaintySeed);
   if (!runSlice(file_, partialPath_, "uncertainty " + study_.name, earlier_)) return false;
   UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan_->swingCount);
   copyFinishedSwings(file_, times);
@@ -143,9 +147,11 @@ int SweepRun::runShard(int index, int count, const std::string& out) {
   file.shardCount = count;
   std::tie(file.first, file.last) = calcShardSwings(plan.swingCount, index, count);
   const std::string path = out + "/" + uncertaintyShardFileName(index, count);
-  const std::string label = "uncertainty " + study_.name + " shard " + std::to_string(index) + "/" + std::to_string(count);
+  const std::string label =
+      "uncertainty " + study_.name + " shard " + std::to_string(index) + "/" + std::to_string(count);
   if (control_.terminal)
-    std::fprintf(stderr, "%s: %zu swings, %zu to %zu of the %zu (%d samples, seed %d, and each assumption at both ends)\n",
+    std::fprintf(stderr,
+                 "%s: %zu swings, %zu to %zu of the %zu (%d samples, seed %d, and each assumption at both ends)\n",
                  label.c_str(), file.last - file.first, file.first, file.last - 1, plan.swingCount,
                  study_.uncertaintySamples, study_.uncertaintySeed);
   // Another analysis's file there: refused before any swing.
@@ -153,8 +159,10 @@ int SweepRun::runShard(int index, int count, const std::string& out) {
   if (!runSlice(file, path, label, earlier)) return 1;
   writeFileAtomic(path, formatUncertaintySwingsJson(file));
   if (control_.terminal)
-    std::printf("shard %d/%d of %s: %zu swings -> %s\n(when all %d have run: swingsim merge %s/uncertainty-shard-*-of-%d.json)\n",
-                index, count, study_.name.c_str(), file.last - file.first, path.c_str(), count, out.c_str(), count);
+    std::printf(
+        "shard %d/%d of %s: %zu swings -> %s\n(when all %d have run: swingsim merge "
+        "%s/uncertainty-shard-*-of-%d.json)\n",
+        index, count, study_.name.c_str(), file.last - file.first, path.c_str(), count, out.c_str(), count);
   return 0;
 }
 
@@ -205,8 +213,10 @@ bool SweepRun::runSlice(UncertaintySwingsFile& file, const std::string& path, co
                  "swingsim: interrupted; %zu of %zu swings%s (seed %llu) are kept in %s (\"partial\": %s); run the "
                  "same command again to resume\n",
                  file.times.countFinished(), sliceSwings,
-                 file.sharded ? "" : (" and " + std::to_string(file.samplesFinished) + " of " +
-                                      std::to_string(plan.options.samples) + " Monte Carlo samples").c_str(),
+                 file.sharded ? ""
+                              : (" and " + std::to_string(file.samplesFinished) + " of " +
+                                 std::to_string(plan.options.samples) + " Monte Carlo samples")
+                                    .c_str(),
                  static_cast<unsigned long long>(plan.options.seed), path.c_str(), file.isPartial() ? "true" : "false");
   }
   return complete && !control_.stopped();

@@ -22,7 +22,6 @@ namespace {
 struct AddedMassOf {};
 struct UncertaintyOf {};
 
-
 }  // namespace
 
 template <class A>

@@ -25,7 +25,8 @@ void serialize(A& a, SweepStudy& s, LoweringOf) {
   // The grid is rounded to 1 um (sweepLowerings): a smaller step would never advance. With
   // lowerings capped by the shank (calcMaxLowering), this also bounds a sweep to a few
   // thousand swings per participant.
-  a.optionalNumber("step_m", s.loweringStep, [](double v) { return v >= 1e-4 ? "" : "expected a step of at least 0.0001 m"; });
+  a.optionalNumber("step_m", s.loweringStep,
+                   [](double v) { return v >= 1e-4 ? "" : "expected a step of at least 0.0001 m"; });
   a.optionalNumber("max_m", s.loweringMax, mustBeNonNegative);
   a.optionalFlag("include_published", s.includePublishedLowerings);
 }
@@ -34,8 +35,9 @@ template <class A>
 void serialize(A& a, SwingOptions& o) {
   a.choice("method", o.integrator, integratorChoices(), true);
   a.optionalNumber("accuracy", o.accuracy, [](double v) { return checkAccuracy(v); });
-  a.optionalNumber("sample_interval_s", o.sampleInterval,
-                   [](double v) { return v >= 1e-5 && v <= 0.1 ? "" : "expected a sample interval from 0.00001 to 0.1 s"; });
+  a.optionalNumber("sample_interval_s", o.sampleInterval, [](double v) {
+    return v >= 1e-5 && v <= 0.1 ? "" : "expected a sample interval from 0.00001 to 0.1 s";
+  });
 }
 
 }  // namespace swingsim

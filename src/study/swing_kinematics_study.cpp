@@ -7,11 +7,11 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "identify/swing_effects.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
-#include "identify/swing_effects.h"
 
 namespace swingsim {
 
@@ -24,7 +24,8 @@ ValueCheck withinBounds(double lower, double upper) {
   return [lower, upper](double v) {
     char bounds[96];
     std::snprintf(bounds, sizeof bounds, "[%.4g, %.4g]", lower, upper);
-    return v >= lower && v <= upper ? std::string() : std::string("expected a value within the effect's physical bounds ") + bounds;
+    return v >= lower && v <= upper ? std::string()
+                                    : std::string("expected a value within the effect's physical bounds ") + bounds;
   };
 }
 

@@ -35,13 +35,13 @@ struct SwingHiddenEffects {
 
 struct SwingKinematicsStudy {
   std::string path;
-  std::string name, description;   ///< free text, not used
+  std::string name, description;           ///< free text, not used
   std::string participantPath, modelPath;  ///< resolved
-  SwingBase base;                  ///< the participant and knee model, loaded
-  double noiseDeg = 0;             ///< angle noise standard deviation, deg (makeSyntheticSwing's unit)
-  std::uint64_t seed = 1;          ///< condition i uses seed + i
-  double sampleInterval = 0.002;   ///< s
-  std::string outputDir;           ///< resolved
+  SwingBase base;                          ///< the participant and knee model, loaded
+  double noiseDeg = 0;                     ///< angle noise standard deviation, deg (makeSyntheticSwing's unit)
+  std::uint64_t seed = 1;                  ///< condition i uses seed + i
+  double sampleInterval = 0.002;           ///< s
+  std::string outputDir;                   ///< resolved
   std::vector<SwingCondition> conditions;
   bool hasHiddenEffects = false;
   SwingHiddenEffects hidden;

@@ -18,7 +18,9 @@ Json swingJson(const FoundSwing& s, std::size_t number) {
 
 }  // namespace
 
-std::string defaultVerticalForce(const std::string& side) { return side == "l" ? "1_ground_force_vy" : "ground_force_vy"; }
+std::string defaultVerticalForce(const std::string& side) {
+  return side == "l" ? "1_ground_force_vy" : "ground_force_vy";
+}
 
 SwingListing listLegSwings(const SwingListRequest& r) {
   const MotionTable table = readMotionTable(r.kinematics);
@@ -27,7 +29,9 @@ SwingListing listLegSwings(const SwingListRequest& r) {
   // has the tilt.
   out.columns = openSimLegColumns(table, r.side);
   out.columns.kneeSign = r.kneeSign;
-  if (r.grf) out.grf = GrfSettings{*r.grf, r.verticalForce.value_or(defaultVerticalForce(r.side)), r.thresholdN, r.fallbackToKinematics};
+  if (r.grf)
+    out.grf = GrfSettings{*r.grf, r.verticalForce.value_or(defaultVerticalForce(r.side)), r.thresholdN,
+                          r.fallbackToKinematics};
   std::optional<Gait> gait;
   if (r.gait) gait = *r.gait == "running" ? Gait::kRunning : Gait::kWalking;
   out.list = listSwings(table, out.columns, out.grf, gait);
@@ -51,7 +55,7 @@ Json makeSwingListJson(const SwingListRequest& r, const SwingListing& listing) {
                         {"vertical_force", grf->verticalForce},
                         {"threshold_N", grf->thresholdN},
                         {"fallback_to_kinematics", grf->fallbackToKinematics}}
-                  : Json();
+                 : Json();
   j["gait"] = gaitName(list.gait);
   j["gait_basis"] = list.gaitBasis;
   j["kinematic_accuracy_ms"] = list.kinematicAccuracy * 1000;

@@ -8,8 +8,8 @@ namespace swingsim {
 namespace {
 
 // The fixed settings' keys and values, then the knee knobs' (a fixed key that is also a knob is left out).
-std::pair<std::vector<std::string>, std::vector<double>> listFixedSettings(const std::vector<std::pair<std::string, double>>& fixed,
-                                                                           const std::vector<TuningKnob>& knobs) {
+std::pair<std::vector<std::string>, std::vector<double>> listFixedSettings(
+    const std::vector<std::pair<std::string, double>>& fixed, const std::vector<TuningKnob>& knobs) {
   std::vector<std::string> keys;
   std::vector<double> values;
   for (const auto& [key, value] : fixed) {
@@ -31,19 +31,27 @@ void applyLegKnob(const std::string& key, double value, double& lowering, AddedM
 
 }  // namespace
 
-bool isLegTuningKnob(const std::string& key) { return key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob; }
+bool isLegTuningKnob(const std::string& key) {
+  return key == kLoweringKnob || key == kAddedMassKnob || key == kAddedMassDistanceKnob;
+}
 
 void checkLegAtKnob(const Participant& p, double lowering, AddedMass added, const std::string& key, double value) {
   applyLegKnob(key, value, lowering, added);
   if (added.mass < 0) throw InputError("an added mass must not be negative");
-  if (added.distanceBelowKnee < 0) throw InputError("an added mass's position must not be negative (it is below the knee)");
-  if (lowering < 0) throw InputError("a lowering must not be negative (the knee axis moves down from the standard location)");
+  if (added.distanceBelowKnee < 0)
+    throw InputError("an added mass's position must not be negative (it is below the knee)");
+  if (lowering < 0)
+    throw InputError("a lowering must not be negative (the knee axis moves down from the standard location)");
   calcLegGeometry(p, lowering, added);
 }
 
 TuningModel::TuningModel(Participant participant, KneeModelKnobs knee, std::vector<TuningKnob> knobs, double lowering,
                          AddedMass added, std::vector<std::pair<std::string, double>> fixedKneeSettings)
-    : participant_(std::move(participant)), kneeFile_(std::move(knee)), knobs_(std::move(knobs)), lowering_(lowering), added_(added),
+    : participant_(std::move(participant)),
+      kneeFile_(std::move(knee)),
+      knobs_(std::move(knobs)),
+      lowering_(lowering),
+      added_(added),
       fixed_(listFixedSettings(fixedKneeSettings, knobs_)) {
   base_ = fixed_.first.empty() ? kneeFile_.load() : kneeFile_.make(fixed_.first, fixed_.second);
 }
@@ -75,11 +83,13 @@ void TuningModel::checkKnobRanges() const {
       std::vector<double> at = values;
       at[i] = end;
       try {
-        if (isLegTuningKnob(k.key)) checkLegAtKnob(participant_, lowering_, added_, k.key, end);
-        else this->at(at);
+        if (isLegTuningKnob(k.key))
+          checkLegAtKnob(participant_, lowering_, added_, k.key, end);
+        else
+          this->at(at);
       } catch (const InputError& e) {
-        throw InputError(k.key + ": expected a range the " + (isLegTuningKnob(k.key) ? "leg" : "knee model") + " accepts (got " +
-                         formatNumber(end) + ": " + e.what() + ")");
+        throw InputError(k.key + ": expected a range the " + (isLegTuningKnob(k.key) ? "leg" : "knee model") +
+                         " accepts (got " + formatNumber(end) + ": " + e.what() + ")");
       }
     }
   }

@@ -36,7 +36,8 @@ TuningReportInputs makeTuningReportInputs(const TuningRun& run, const std::strin
 
 TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& control) {
   const auto start = std::chrono::steady_clock::now();
-  const TuningModel model(loadParticipant(study.participantPath), KneeModelKnobs(study.kneeModelPath), study.knobs, study.lowering, study.added);
+  const TuningModel model(loadParticipant(study.participantPath), KneeModelKnobs(study.kneeModelPath), study.knobs,
+                          study.lowering, study.added);
   volatile bool localStop = false;
   volatile bool* stop = control.stop != nullptr ? control.stop : &localStop;
   std::atomic<long> swings{0};
@@ -56,10 +57,13 @@ TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& co
   run.study = study;
   run.jobs = jobs;
   run.participantName = model.participant().name;
-  run.result = runKneeTuning(study.knobs, study.targets, evaluate, settings, [&](int done, int total) {
-    if (control.poll) control.poll();
-    if (control.terminal) progress.update(done, total);
-  }, stop);
+  run.result = runKneeTuning(
+      study.knobs, study.targets, evaluate, settings,
+      [&](int done, int total) {
+        if (control.poll) control.poll();
+        if (control.terminal) progress.update(done, total);
+      },
+      stop);
   run.result.interrupted = run.result.interrupted || *stop;
   if (run.result.best.ran && !run.result.interrupted) {
     const TunedSetting t = model.at(run.result.best.knobs);
@@ -69,8 +73,9 @@ TuningRun runTuningStudy(const TuningStudy& study, int jobs, SweepRunControl& co
     run.lowering = t.lowering;
     run.added = t.added;
     if (study.chance.samples > 0) {
-      if (control.terminal) std::fprintf(stderr, "tune %s: chance of meeting the hard limits, %d samples\n",
-                                         study.name.c_str(), study.chance.samples);
+      if (control.terminal)
+        std::fprintf(stderr, "tune %s: chance of meeting the hard limits, %d samples\n", study.name.c_str(),
+                     study.chance.samples);
       run.chance = calcTuningChance({model.participant(), t.knee, t.lowering, t.added, makeTuningSwingOptions()},
                                     study.targets, study.chance, jobs, stop);
     }
@@ -84,8 +89,9 @@ std::string describeTunedKneeMisses(const TuningResult& r) {
   for (const TargetOutcome& o : r.targets) {
     if (!o.target.hard || o.met) continue;
     const TuningQuantity q = o.target.quantity;
-    out += "\nMISSES the hard limit " + std::string(tuningQuantityKey(q)) + ": " + fmt("%.4g", toTargetUnit(q, o.value)) +
-           ", outside its window by " + fmt("%.3g", std::fabs(toTargetUnit(q, o.margin))) + " (no setting tried met it)";
+    out += "\nMISSES the hard limit " + std::string(tuningQuantityKey(q)) + ": " +
+           fmt("%.4g", toTargetUnit(q, o.value)) + ", outside its window by " +
+           fmt("%.3g", std::fabs(toTargetUnit(q, o.margin))) + " (no setting tried met it)";
   }
   if (r.resolution.ran && !r.resolution.holds) out += "\nNOT HELD at the knobs' resolution: " + r.resolution.verdict;
   return out;

@@ -13,17 +13,18 @@
 namespace swingsim {
 
 /// The files a tuning writes into its folder.
-inline const std::vector<std::string> kTuningOutputFiles = {"tuned-knee.yaml", "tuning.md", "tuning.json", "tradeoff.svg"};
+inline const std::vector<std::string> kTuningOutputFiles = {"tuned-knee.yaml", "tuning.md", "tuning.json",
+                                                            "tradeoff.svg"};
 
 struct TuningRun {
   TuningStudy study;
   std::string participantName;
-  TuningResult result;   ///< result.best re-run with simulate's options (energy bookkeeping on)
-  KneeModel tunedKnee;   ///< the knee model at the result
-  double lowering = 0;   ///< m, at the result
-  AddedMass added;       ///< at the result
-  TuningChance chance;   ///< of meeting every hard limit at the result (the study's `uncertainty:`)
-  double seconds = 0;    ///< wall time of the tuning
+  TuningResult result;  ///< result.best re-run with simulate's options (energy bookkeeping on)
+  KneeModel tunedKnee;  ///< the knee model at the result
+  double lowering = 0;  ///< m, at the result
+  AddedMass added;      ///< at the result
+  TuningChance chance;  ///< of meeting every hard limit at the result (the study's `uncertainty:`)
+  double seconds = 0;   ///< wall time of the tuning
   int jobs = 0;
 };
 

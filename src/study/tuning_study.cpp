@@ -23,15 +23,17 @@ TuningKnob readKnob(YamlMap& m, const Participant& p, const KneeModelKnobs& knee
   if (!isLegTuningKnob(k.key)) {
     const std::string problem = knee.checkKey(k.key);
     if (!problem.empty())
-      m.fail("key", "expected " + std::string(kLoweringKnob) + ", " + kAddedMassKnob + ", " + kAddedMassDistanceKnob +
-                        " or a numeric key of the knee model " + knee.path() + ": " + problem,
+      m.fail("key",
+             "expected " + std::string(kLoweringKnob) + ", " + kAddedMassKnob + ", " + kAddedMassDistanceKnob +
+                 " or a numeric key of the knee model " + knee.path() + ": " + problem,
              k.key);
   }
   const std::vector<double> range = m.getDoubleList("range");
   if (range.size() != 2) m.fail("range", "expected [min, max]", std::to_string(range.size()) + " values");
   k.lower = range[0];
   k.upper = range[1];
-  if (!(k.lower < k.upper)) m.fail("range", "expected min < max", formatNumber(k.lower) + " >= " + formatNumber(k.upper));
+  if (!(k.lower < k.upper))
+    m.fail("range", "expected min < max", formatNumber(k.lower) + " >= " + formatNumber(k.upper));
   k.logScale = m.getBool("log_scale", false);
   if (k.logScale && k.lower <= 0) m.fail("log_scale", "a log-scaled knob needs a range above 0", formatNumber(k.lower));
   for (double end : range) {
@@ -41,16 +43,22 @@ TuningKnob readKnob(YamlMap& m, const Participant& p, const KneeModelKnobs& knee
       else
         knee.make({k.key}, {end});
     } catch (const InputError& e) {
-      m.fail("range", "every value of the range must be usable; at " + formatNumber(end) + ": " + e.what(), formatNumber(end));
+      m.fail("range", "every value of the range must be usable; at " + formatNumber(end) + ": " + e.what(),
+             formatNumber(end));
     }
   }
   // The finest step a person can set: stated, or implied by the key's unit suffix.
   const std::optional<double> byUnit = findDefaultKnobResolution(k.key);
-  if (m.has("resolution")) k.resolution = m.getDouble("resolution", mustBePositive);
-  else if (byUnit) k.resolution = *byUnit;
+  if (m.has("resolution"))
+    k.resolution = m.getDouble("resolution", mustBePositive);
+  else if (byUnit)
+    k.resolution = *byUnit;
   else
-    m.fail("resolution", "the unit of " + k.key + " cannot be told from its key: state the finest step a person can set "
-                         "(docs/tuning.md, \"Settings at the knob's resolution\")", "none");
+    m.fail("resolution",
+           "the unit of " + k.key +
+               " cannot be told from its key: state the finest step a person can set "
+               "(docs/tuning.md, \"Settings at the knob's resolution\")",
+           "none");
   if (!(k.resolution <= k.upper - k.lower))
     m.fail("resolution", "expected a step no larger than the range (" + formatNumber(k.upper - k.lower) + ")",
            formatNumber(k.resolution));
@@ -65,7 +73,8 @@ void readWindow(YamlMap& m, TuningTarget& t, double toSi, const Participant& p, 
     const bool swingTime = t.quantity == TuningQuantity::kSwingTime;
     if (swingTime && m.getString("value") == "sound_limb") {
       if (!p.soundLimbSwingTime)
-        m.fail("value", "sound_limb needs the participant's sound_limb_swing_time_s, which " + p.path + " does not give",
+        m.fail("value",
+               "sound_limb needs the participant's sound_limb_swing_time_s, which " + p.path + " does not give",
                "sound_limb");
       t.lower = t.upper = *p.soundLimbSwingTime;
       s.swingTimeSource = p.path + ": sound_limb_swing_time_s";
@@ -77,7 +86,8 @@ void readWindow(YamlMap& m, TuningTarget& t, double toSi, const Participant& p, 
   if (!m.has("min") && !m.has("max")) m.fail("", "expected value, or min and/or max", "neither");
   if (m.has("min")) t.lower = m.getDouble("min") * toSi;
   if (m.has("max")) t.upper = m.getDouble("max") * toSi;
-  if (!(t.lower < t.upper)) m.fail("max", "expected min < max", formatNumber(t.lower / toSi) + " >= " + formatNumber(t.upper / toSi));
+  if (!(t.lower < t.upper))
+    m.fail("max", "expected min < max", formatNumber(t.lower / toSi) + " >= " + formatNumber(t.upper / toSi));
 }
 
 void readTargets(YamlMap& yaml, const Participant& p, TuningStudy& s) {
@@ -95,15 +105,17 @@ void readTargets(YamlMap& yaml, const Participant& p, TuningStudy& s) {
     t.scale = tuningTargetScale(quantity);
     readWindow(m, t, toSi, p, s);
     t.hard = m.getBool("hard", false);
-    if (t.hard && m.has("weight")) m.fail("weight", "a hard limit has no weight (it must be met)", "weight with hard: true");
+    if (t.hard && m.has("weight"))
+      m.fail("weight", "a hard limit has no weight (it must be met)", "weight with hard: true");
     t.weight = m.getDouble("weight", 1.0, mustBePositive);
     m.finish();
     s.targets.push_back(t);
   }
   targets.finish();
   if (s.targets.empty())
-    targets.fail("", "expected at least one of swing_time_s, peak_knee_flexion_deg, min_toe_clearance_m, max_stop_impact_deg_s",
-                 "none");
+    targets.fail(
+        "", "expected at least one of swing_time_s, peak_knee_flexion_deg, min_toe_clearance_m, max_stop_impact_deg_s",
+        "none");
 }
 
 void readSettings(YamlMap& yaml, TuningStudy& s) {
@@ -143,13 +155,15 @@ TuningStudy loadTuningStudy(const std::string& path) {
   s.description = yaml.getString("description", "");
   s.participantPath = yaml.resolvePath(yaml.getString("participant"), "participant");
   const Participant p = loadParticipant(s.participantPath);
-  s.kneeModelPath = yaml.has("knee_model") ? yaml.resolvePath(yaml.getString("knee_model"), "knee_model") : p.kneeModelPath;
+  s.kneeModelPath =
+      yaml.has("knee_model") ? yaml.resolvePath(yaml.getString("knee_model"), "knee_model") : p.kneeModelPath;
   const KneeModelKnobs knee(s.kneeModelPath);
   readSettings(yaml, s);
   try {
     calcLegGeometry(p, s.lowering, s.added);
   } catch (const InputError& e) {
-    yaml.fail("lowering_m", std::string("the leg cannot take this lowering and added mass: ") + e.what(), formatNumber(s.lowering));
+    yaml.fail("lowering_m", std::string("the leg cannot take this lowering and added mass: ") + e.what(),
+              formatNumber(s.lowering));
   }
   for (YamlMap& m : yaml.getMapList("knobs")) {
     s.knobs.push_back(readKnob(m, p, knee, s));
@@ -157,8 +171,9 @@ TuningStudy loadTuningStudy(const std::string& path) {
       if (s.knobs[i].key == s.knobs.back().key) m.fail("key", "this knob appears twice", s.knobs.back().key);
     // A fixed lowering beside a lowering knob would be dropped without a word.
     if (s.knobs.back().key == "lowering_m" && yaml.has("lowering_m"))
-      m.fail("key", "a lowering knob or a fixed lowering_m, not both (the knob moves the lowering; remove lowering_m: " +
-                        formatNumber(s.lowering) + ")",
+      m.fail("key",
+             "a lowering knob or a fixed lowering_m, not both (the knob moves the lowering; remove lowering_m: " +
+                 formatNumber(s.lowering) + ")",
              "lowering_m");
   }
   if (s.knobs.empty()) yaml.fail("knobs", "expected at least one knob", "an empty list");

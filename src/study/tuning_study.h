@@ -18,15 +18,15 @@ constexpr const char* kAddedMassDistanceKnob = "added_mass_below_knee_m";
 
 struct TuningStudy {
   std::string path;
-  std::string name;              ///< `name:`, the file stem if not given
-  std::string description;       ///< free text, not used
-  std::string participantPath;   ///< resolved
-  std::string kneeModelPath;     ///< resolved; the participant's knee_model if not given
-  double lowering = 0;           ///< m, `lowering_m:` where it is not a knob
-  AddedMass added;               ///< `added_mass: {mass_kg, below_knee_m}` where not knobs
+  std::string name;             ///< `name:`, the file stem if not given
+  std::string description;      ///< free text, not used
+  std::string participantPath;  ///< resolved
+  std::string kneeModelPath;    ///< resolved; the participant's knee_model if not given
+  double lowering = 0;          ///< m, `lowering_m:` where it is not a knob
+  AddedMass added;              ///< `added_mass: {mass_kg, below_knee_m}` where not knobs
   std::vector<TuningKnob> knobs;
   std::vector<TuningTarget> targets;
-  TuningSettings settings;       ///< start_points, seed (jobs from the caller)
+  TuningSettings settings;  ///< start_points, seed (jobs from the caller)
   /// Where the swing-time target came from: "" (a number), or the participant's file and key.
   std::string swingTimeSource;
   /// `uncertainty: {samples, seed}`: the chance of the result meeting every hard limit over the

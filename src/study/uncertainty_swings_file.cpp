@@ -159,8 +159,9 @@ void checkSameUncertaintyRun(const UncertaintyRunIdentity& expected, const Uncer
     check.differ("sensitivity", expected.sensitivity ? "true" : "false", got.sensitivity ? "true" : "false");
   check.inputs(expected, got, ": the study, a participant or a knee model differs (edited, or calibrated otherwise)");
   if (got.assumptionsFingerprint != expected.assumptionsFingerprint)
-    check.differ("assumptions_fingerprint", expected.assumptionsFingerprint,
-                 got.assumptionsFingerprint + ": the assumption table or its ranges differ (another swingsim version?)");
+    check.differ(
+        "assumptions_fingerprint", expected.assumptionsFingerprint,
+        got.assumptionsFingerprint + ": the assumption table or its ranges differ (another swingsim version?)");
   check.count("swings_total", expected.swingCount, got.swingCount);
   check.version(expected, got);
 }
@@ -194,8 +195,8 @@ UncertaintySwingTimes mergeUncertaintyShards(const std::vector<UncertaintySwings
   const std::string missing = byIndex.listMissing(head.shardCount, 20, missingCount);
   if (missingCount > 0)
     throw InputError("merge: expected all " + std::to_string(head.shardCount) + " shards of " + head.run.study +
-                     " (K = 0 to " + std::to_string(head.shardCount - 1) + "), found " + std::to_string(byIndex.size()) +
-                     "; missing K = " + missing + " (files " +
+                     " (K = 0 to " + std::to_string(head.shardCount - 1) + "), found " +
+                     std::to_string(byIndex.size()) + "; missing K = " + missing + " (files " +
                      uncertaintyShardFileName(0, head.shardCount) + " and the like)");
   UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(head.run.swingCount);
   for (const auto& s : shards) copyFinishedSwings(s, times);

@@ -24,19 +24,19 @@ namespace swingsim {
 /// version: ShardFileRun).
 struct UncertaintyRunIdentity : ShardFileRun {
   std::string assumptionsFingerprint;  ///< calcAssumptionsFingerprint
-  int samples = 0;               ///< Monte Carlo samples asked
+  int samples = 0;                     ///< Monte Carlo samples asked
   std::uint64_t seed = 0;
-  bool sensitivity = true;       ///< the one-at-a-time runs are part of the swings
-  std::size_t swingCount = 0;    ///< swings of the whole analysis (UncertaintyPlan::swingCount)
+  bool sensitivity = true;     ///< the one-at-a-time runs are part of the swings
+  std::size_t swingCount = 0;  ///< swings of the whole analysis (UncertaintyPlan::swingCount)
 };
 
 /// One file: the identity, which slice of the swings it covers, and their times.
 struct UncertaintySwingsFile {
   std::string path;  ///< where it was read from ("" if not read)
   UncertaintyRunIdentity run;
-  bool sharded = false;  ///< written by `--shard`; false: a whole run's partial result
-  int shardIndex = 0;    ///< K of `--shard K/N`, 0 <= K < N
-  int shardCount = 1;    ///< N
+  bool sharded = false;             ///< written by `--shard`; false: a whole run's partial result
+  int shardIndex = 0;               ///< K of `--shard K/N`, 0 <= K < N
+  int shardCount = 1;               ///< N
   std::size_t first = 0, last = 0;  ///< the swings it covers, [first, last) in swing order
   /// Swing times for [first, last) (s; NaN where no swing ended or not run) and which ran.
   UncertaintySwingTimes times;  ///< indexed from `first`

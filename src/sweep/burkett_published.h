@@ -18,11 +18,11 @@ struct PublishedSwingRow {
 };
 
 struct PublishedParticipant {
-  std::string name;             ///< "P1".."P4"
-  double table3Model;           ///< s, Table 3 model prediction (calibration target)
-  double table3Measured;        ///< s, Table 3 measured mean
-  double table3MeasuredSd;      ///< s
-  double predictedBestLowering; ///< m, the paper's model optimum
+  std::string name;              ///< "P1".."P4"
+  double table3Model;            ///< s, Table 3 model prediction (calibration target)
+  double table3Measured;         ///< s, Table 3 measured mean
+  double table3MeasuredSd;       ///< s
+  double predictedBestLowering;  ///< m, the paper's model optimum
   std::vector<PublishedSwingRow> table4;
 };
 

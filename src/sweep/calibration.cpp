@@ -23,7 +23,9 @@ double swingTimeAt(SwingSetup setup, double scale, const SwingOptions& options) 
 
 const std::vector<std::pair<std::string, CalibrationTarget>>& calibrationTargetChoices() {
   static const std::vector<std::pair<std::string, CalibrationTarget>> choices = {
-      {"stored", CalibrationTarget::kStored}, {"model", CalibrationTarget::kModel}, {"measured", CalibrationTarget::kMeasured}};
+      {"stored", CalibrationTarget::kStored},
+      {"model", CalibrationTarget::kModel},
+      {"measured", CalibrationTarget::kMeasured}};
   return choices;
 }
 
@@ -49,7 +51,7 @@ void checkCalibratable(const Participant& p) {
 }
 
 CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, const SwingOptions& swingOptions,
-                                    const CalibrationOptions& options) {
+                                        const CalibrationOptions& options) {
   checkCalibratable(base.participant);
   SwingOptions fast = swingOptions;
   fast.recordTrajectory = false;
@@ -65,7 +67,8 @@ CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, c
   }
   int bracket = -1;
   for (int i = 0; i + 1 < options.scanPoints; ++i) {
-    const double a = r.scanSwingTimes[static_cast<std::size_t>(i)], b = r.scanSwingTimes[static_cast<std::size_t>(i) + 1];
+    const double a = r.scanSwingTimes[static_cast<std::size_t>(i)],
+                 b = r.scanSwingTimes[static_cast<std::size_t>(i) + 1];
     if (std::isnan(a) || std::isnan(b)) continue;
     if (!(b > a)) {
       throw RunError(setup.participant.name + ": swing time is not monotonic in the hip-moment time scale between " +
@@ -89,18 +92,24 @@ CalibrationResult calibrateHipTimeScale(const SwingSetup& base, double target, c
     t = swingTimeAt(setup, mid, fast);
     ++r.swings;
     if (std::fabs(t - target) < options.timeTolerance) break;
-    if (t < target) lo = mid; else hi = mid;
+    if (t < target)
+      lo = mid;
+    else
+      hi = mid;
   }
   r.timeScale = mid;
   r.swingTime = t;
-  const double a = r.scanSwingTimes[static_cast<std::size_t>(bracket)], b = r.scanSwingTimes[static_cast<std::size_t>(bracket) + 1];
-  r.swingTimePerScale = (b - a) / (r.scanScales[static_cast<std::size_t>(bracket) + 1] - r.scanScales[static_cast<std::size_t>(bracket)]);
+  const double a = r.scanSwingTimes[static_cast<std::size_t>(bracket)],
+               b = r.scanSwingTimes[static_cast<std::size_t>(bracket) + 1];
+  r.swingTimePerScale =
+      (b - a) / (r.scanScales[static_cast<std::size_t>(bracket) + 1] - r.scanScales[static_cast<std::size_t>(bracket)]);
   return r;
 }
 
 CalibrationResult calibrateHipTimeScaleNear(const SwingSetup& base, double target, double start,
                                             const SwingOptions& swingOptions, const CalibrationOptions& options) {
-  if (base.participant.drive == SwingDrive::kThighKinematics || !(start >= options.minScale && start <= options.maxScale))
+  if (base.participant.drive == SwingDrive::kThighKinematics ||
+      !(start >= options.minScale && start <= options.maxScale))
     return calibrateHipTimeScale(base, target, swingOptions, options);
   SwingOptions fast = swingOptions;
   fast.recordTrajectory = false;

@@ -30,8 +30,8 @@ std::optional<CalibrationTarget> findCalibrationTarget(const std::string& key);
 double table3Target(const PublishedParticipant& published, CalibrationTarget column);
 
 struct CalibrationResult {
-  double timeScale = 0;   ///< calibrated hip-moment time scale
-  double swingTime = 0;   ///< s, swing time at that scale (lowering 0)
+  double timeScale = 0;  ///< calibrated hip-moment time scale
+  double swingTime = 0;  ///< s, swing time at that scale (lowering 0)
   /// The scan that checked monotonicity: scale and swing time (NaN where no swing end).
   std::vector<double> scanScales, scanSwingTimes;
   /// d(swing time)/d(scale) at the solution, s per unit scale, from the last two swings
@@ -53,8 +53,7 @@ void checkCalibratable(const Participant& p);
 /// Finds the scale. Throws RunError if swing time does not rise monotonically with the time scale over the
 /// scan, or the target is outside the reachable range.
 CalibrationResult calibrateHipTimeScale(const SwingSetup& setup, double targetSwingTime,
-                                    const SwingOptions& swingOptions = {},
-                                    const CalibrationOptions& options = {});
+                                        const SwingOptions& swingOptions = {}, const CalibrationOptions& options = {});
 
 /// The same, starting from a scale known to be close (`start`, e.g. the solution for a
 /// slightly different model): secant steps on the scale, about 3-5 swings instead of the

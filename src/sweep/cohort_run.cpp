@@ -69,7 +69,8 @@ CohortParticipantResult runCohortParticipant(const Cohort& cohort, std::size_t i
   r.ran = true;
   r.timeScale = kNaN;
   try {
-    const CalibrationResult c = calibrateHipTimeScale(makeSwingSetup(p, model), cohort.targetSwingTime(index), study.swing);
+    const CalibrationResult c =
+        calibrateHipTimeScale(makeSwingSetup(p, model), cohort.targetSwingTime(index), study.swing);
     r.timeScale = c.timeScale;
     r.calibrationSwings = c.swings;
     r.calibrated = true;
@@ -141,7 +142,8 @@ CohortSummary summarizeCohort(const Cohort& cohort, const std::vector<CohortPart
   s.predictors.push_back(makePredictor("thigh_link_mass_kg", "thigh link mass (kg)", thigh, s.timeGained));
   s.predictors.push_back(makePredictor("shank_link_mass_kg", "shank link mass (kg)", shank, s.timeGained));
   s.predictors.push_back(makePredictor("foot_link_mass_kg", "foot link mass (kg)", foot, s.timeGained));
-  s.predictors.push_back(makePredictor("below_knee_inertia_kgm2", "shank + foot inertia about the knee (kg m^2)", inertia, s.timeGained));
+  s.predictors.push_back(
+      makePredictor("below_knee_inertia_kgm2", "shank + foot inertia about the knee (kg m^2)", inertia, s.timeGained));
   s.predictors.push_back(makePredictor("hip_time_scale", "calibrated hip time scale", timeScales, s.timeGained));
   std::stable_sort(s.predictors.begin(), s.predictors.end(), [](const CohortPredictor& a, const CohortPredictor& b) {
     const double x = std::isnan(a.withGain.rho) ? -1 : std::fabs(a.withGain.rho);

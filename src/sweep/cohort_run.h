@@ -26,9 +26,9 @@ struct Cohort {
   /// Name, path, lowering grid, integrator, knee models, output folder; `participants` are
   /// the drawn ones (their hip time scales still the template's until calibrated).
   SweepStudy study;
-  std::string templatePath;  ///< the participant file every drawn participant starts from
-  int count = 0;             ///< participants
-  std::uint64_t seed = 1;    ///< std::mt19937_64 seed of the draws
+  std::string templatePath;                       ///< the participant file every drawn participant starts from
+  int count = 0;                                  ///< participants
+  std::uint64_t seed = 1;                         ///< std::mt19937_64 seed of the draws
   std::vector<CohortDistribution> distributions;  ///< one per cohortProperties() row
   std::vector<std::vector<double>> values;        ///< [participant][property]
   /// s, participant i's drawn swing time (its `swing_time_s` value).
@@ -42,10 +42,10 @@ void drawCohortParticipants(Cohort& cohort, const Participant& templ);
 
 /// One participant's calibration and lowering sweep.
 struct CohortParticipantResult {
-  bool ran = false;         ///< computed (false: not yet, in a partial or shard file)
-  bool calibrated = false;  ///< a time scale reaches the target swing time
-  std::string failure;      ///< why not calibrated ("" if calibrated)
-  double timeScale = 0;     ///< the calibrated hip time scale (NaN if not calibrated)
+  bool ran = false;            ///< computed (false: not yet, in a partial or shard file)
+  bool calibrated = false;     ///< a time scale reaches the target swing time
+  std::string failure;         ///< why not calibrated ("" if calibrated)
+  double timeScale = 0;        ///< the calibrated hip time scale (NaN if not calibrated)
   LoweringSweepSummary sweep;  ///< the grid and its swing times (empty if not calibrated)
   int calibrationSwings = 0;   ///< swings the calibration simulated (its scan, if it failed)
   /// s, swing time at the standard location (lowering 0); NaN if none.
@@ -67,7 +67,8 @@ struct CohortRunControl {
 /// Runs participants [first, last) of `cohort` that have not run in `results` (sized
 /// cohort.count) on `jobs` threads (0 = all cores). Returns true if all of them ran.
 bool runCohortParticipants(const Cohort& cohort, std::size_t first, std::size_t last,
-                           std::vector<CohortParticipantResult>& results, int jobs, const CohortRunControl& control = {});
+                           std::vector<CohortParticipantResult>& results, int jobs,
+                           const CohortRunControl& control = {});
 
 /// A property (drawn or derived) of every participant, as a predictor of the gain.
 struct CohortPredictor {
@@ -77,8 +78,8 @@ struct CohortPredictor {
 };
 
 struct CohortSummary {
-  int participants = 0, calibrated = 0;  ///< how many were drawn, and calibrated
-  std::vector<double> fastestLowering, timeGained;  ///< per participant, m and s (NaN if none)
+  int participants = 0, calibrated = 0;                  ///< how many were drawn, and calibrated
+  std::vector<double> fastestLowering, timeGained;       ///< per participant, m and s (NaN if none)
   Interval fastestLoweringInterval, timeGainedInterval;  ///< median and 5-95 % over those with one
   /// Every drawn property, then body mass, thigh, shank and foot mass, the shank + foot
   /// inertia about the knee and the calibrated time scale; sorted by |rho| with the gain,

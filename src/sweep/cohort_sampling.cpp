@@ -24,8 +24,20 @@ constexpr double kThighMassPerBodyMass = 0.100;
 constexpr double kThighGyrationPerLength = 0.323;
 
 enum Property : std::size_t {
-  kStature, kBmi, kResidualFraction, kSocketMass, kKneeMass, kKneeComBelowAxis, kKneeGyration,
-  kPylonMass, kFootMass, kFootComFromToe, kFootGyration, kKneeFriction, kSwingTime, kPropertyCount
+  kStature,
+  kBmi,
+  kResidualFraction,
+  kSocketMass,
+  kKneeMass,
+  kKneeComBelowAxis,
+  kKneeGyration,
+  kPylonMass,
+  kFootMass,
+  kFootComFromToe,
+  kFootGyration,
+  kKneeFriction,
+  kSwingTime,
+  kPropertyCount
 };
 
 double calcNormalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
@@ -88,15 +100,15 @@ CohortDistributionProblem checkCohortDistribution(const CohortProperty& property
     const double width = d.max - d.min;
     if (d.sd > kMaxSdPerWidth * width)
       return {"sd",
-              "a standard deviation of at most " + formatNumber(kMaxSdPerWidth) + " x (max - min) = " +
-                  formatSdLimit(kMaxSdPerWidth * width) + " (a wider normal is flat across " + range +
-                  ": its truncation draws a uniform, so write distribution: uniform)",
+              "a standard deviation of at most " + formatNumber(kMaxSdPerWidth) +
+                  " x (max - min) = " + formatSdLimit(kMaxSdPerWidth * width) + " (a wider normal is flat across " +
+                  range + ": its truncation draws a uniform, so write distribution: uniform)",
               formatNumber(d.sd)};
     if (d.sd < kMinSdPerWidth * width)
       return {"sd",
-              "a standard deviation of at least " + formatNumber(kMinSdPerWidth) + " x (max - min) = " +
-                  formatSdLimit(kMinSdPerWidth * width) + " (a narrower normal draws every participant at the mean " +
-                  formatNumber(d.mean) + ")",
+              "a standard deviation of at least " + formatNumber(kMinSdPerWidth) +
+                  " x (max - min) = " + formatSdLimit(kMinSdPerWidth * width) +
+                  " (a narrower normal draws every participant at the mean " + formatNumber(d.mean) + ")",
               formatNumber(d.sd)};
   }
   if (d.source.find_first_not_of(" \t") == std::string::npos)

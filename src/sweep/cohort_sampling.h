@@ -24,8 +24,8 @@ namespace swingsim {
 
 /// One drawn property of a cohort participant.
 struct CohortProperty {
-  std::string key;    ///< YAML key under `distributions:`, unit in the name (stature_m)
-  std::string what;   ///< for tables and figures
+  std::string key;                  ///< YAML key under `distributions:`, unit in the name (stature_m)
+  std::string what;                 ///< for tables and figures
   double physicalMin, physicalMax;  ///< a distribution's range must lie inside [min, max]
 };
 

@@ -16,10 +16,14 @@ namespace swingsim {
 
 const char* tuningQuantityKey(TuningQuantity q) {
   switch (q) {
-    case TuningQuantity::kSwingTime: return "swing_time_s";
-    case TuningQuantity::kPeakKneeFlexion: return "peak_knee_flexion_deg";
-    case TuningQuantity::kMinToeClearance: return "min_toe_clearance_m";
-    case TuningQuantity::kMaxStopImpactSpeed: return "max_stop_impact_deg_s";
+    case TuningQuantity::kSwingTime:
+      return "swing_time_s";
+    case TuningQuantity::kPeakKneeFlexion:
+      return "peak_knee_flexion_deg";
+    case TuningQuantity::kMinToeClearance:
+      return "min_toe_clearance_m";
+    case TuningQuantity::kMaxStopImpactSpeed:
+      return "max_stop_impact_deg_s";
   }
   return "";
 }
@@ -30,20 +34,28 @@ double tuningQuantityInKeyUnit(TuningQuantity q, double si) {
 
 double tuningTargetScale(TuningQuantity q) {
   switch (q) {
-    case TuningQuantity::kSwingTime: return 0.01;
-    case TuningQuantity::kPeakKneeFlexion: return 1 * kDegToRad;
-    case TuningQuantity::kMinToeClearance: return 0.005;
-    case TuningQuantity::kMaxStopImpactSpeed: return 10 * kDegToRad;
+    case TuningQuantity::kSwingTime:
+      return 0.01;
+    case TuningQuantity::kPeakKneeFlexion:
+      return 1 * kDegToRad;
+    case TuningQuantity::kMinToeClearance:
+      return 0.005;
+    case TuningQuantity::kMaxStopImpactSpeed:
+      return 10 * kDegToRad;
   }
   return 1;
 }
 
 double TuningPoint::value(TuningQuantity q) const {
   switch (q) {
-    case TuningQuantity::kSwingTime: return swingTime;
-    case TuningQuantity::kPeakKneeFlexion: return peakKneeFlexion;
-    case TuningQuantity::kMinToeClearance: return minToeClearance;
-    case TuningQuantity::kMaxStopImpactSpeed: return maxStopImpactSpeed;
+    case TuningQuantity::kSwingTime:
+      return swingTime;
+    case TuningQuantity::kPeakKneeFlexion:
+      return peakKneeFlexion;
+    case TuningQuantity::kMinToeClearance:
+      return minToeClearance;
+    case TuningQuantity::kMaxStopImpactSpeed:
+      return maxStopImpactSpeed;
   }
   return 0;
 }
@@ -63,7 +75,8 @@ void scoreTuningPoint(TuningPoint& point, const SwingResult& swing, const std::v
   if (swing.peakKneeFlexion) point.peakKneeFlexion = swing.peakKneeFlexion->flexion;
   if (swing.minToeClearance) point.minToeClearance = *swing.minToeClearance;
   point.maxStopImpactSpeed = 0;
-  for (const StopImpact& im : swing.impacts) point.maxStopImpactSpeed = std::max(point.maxStopImpactSpeed, im.impactRate);
+  for (const StopImpact& im : swing.impacts)
+    point.maxStopImpactSpeed = std::max(point.maxStopImpactSpeed, im.impactRate);
   point.ran = true;
   point.cost = 0;
   point.hardViolation = 0;
@@ -145,11 +158,20 @@ constexpr double kDifferenceStep = 1e-4;
 class PolishResiduals {
  public:
   /// `free`: the knobs the polish moves (indices into `knobs`); the others stay at `fixed`'s values.
-  PolishResiduals(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate,
-                  const HardLimitPenalty& penalty, std::vector<LimitHold> holds, int jobs, const volatile bool* stopFlag,
-                  std::vector<TuningPoint>& evaluated, std::vector<std::size_t> free, std::vector<double> fixed)
-      : knobs_(knobs), targets_(targets), evaluate_(evaluate), penalty_(penalty), holds_(std::move(holds)), jobs_(jobs),
-        stop_(stopFlag), evaluated_(evaluated), free_(std::move(free)), fixed_(std::move(fixed)) {}
+  PolishResiduals(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
+                  const TuningEvaluator& evaluate, const HardLimitPenalty& penalty, std::vector<LimitHold> holds,
+                  int jobs, const volatile bool* stopFlag, std::vector<TuningPoint>& evaluated,
+                  std::vector<std::size_t> free, std::vector<double> fixed)
+      : knobs_(knobs),
+        targets_(targets),
+        evaluate_(evaluate),
+        penalty_(penalty),
+        holds_(std::move(holds)),
+        jobs_(jobs),
+        stop_(stopFlag),
+        evaluated_(evaluated),
+        free_(std::move(free)),
+        fixed_(std::move(fixed)) {}
 
   Eigen::VectorXd operator()(const Eigen::VectorXd& x, Eigen::MatrixXd* jacobian) const {
     const std::vector<double> all = knobsAt(x);
@@ -163,8 +185,8 @@ class PolishResiduals {
     for (std::size_t i = 0; i < free_.size(); ++i)
       for (std::size_t t = 0; t < targets_.size(); ++t)
         (*jacobian)(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(i)) =
-            slopes[static_cast<Eigen::Index>(t)] * (moved[i].value(targets_[t].quantity) - p.value(targets_[t].quantity)) /
-            steps[i];
+            slopes[static_cast<Eigen::Index>(t)] *
+            (moved[i].value(targets_[t].quantity) - p.value(targets_[t].quantity)) / steps[i];
     return r;
   }
 
@@ -196,12 +218,15 @@ class PolishResiduals {
       steps[i] = kDifferenceStep * (knob.logScale ? value : knob.upper - knob.lower);
       if (value + steps[i] > knob.upper) steps[i] = -steps[i];
     }
-    runParallelJobs(static_cast<int>(free_.size()), jobs_, [&](int j) {
-      const auto i = static_cast<std::size_t>(j);
-      std::vector<double> x = all;
-      x[free_[i]] += steps[i];
-      moved[i] = evaluateTuningPoint(x, targets_, evaluate_);
-    }, {}, stop_);
+    runParallelJobs(
+        static_cast<int>(free_.size()), jobs_,
+        [&](int j) {
+          const auto i = static_cast<std::size_t>(j);
+          std::vector<double> x = all;
+          x[free_[i]] += steps[i];
+          moved[i] = evaluateTuningPoint(x, targets_, evaluate_);
+        },
+        {}, stop_);
     if (stop_ != nullptr && *stop_) throw RunError("stopped");
     for (const TuningPoint& q : moved) evaluated_.push_back(q);
     for (const TuningPoint& q : moved)
@@ -245,9 +270,9 @@ struct ActiveSet {
 // or, where `active` holds it, an equality at its edge; from a start that breaks a hard limit
 // the penalty leads it back first. Every evaluation is kept in `result.polished`; Ceres'
 // solution is `result.polishEnd`.
-void polish(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate,
-            const TuningSettings& settings, const TuningPoint& start, const ActiveSet& active,
-            const volatile bool* stopFlag, TuningResult& result) {
+void polish(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
+            const TuningEvaluator& evaluate, const TuningSettings& settings, const TuningPoint& start,
+            const ActiveSet& active, const volatile bool* stopFlag, TuningResult& result) {
   std::vector<BoundedParameter> parameters;
   std::vector<std::size_t> free;
   for (std::size_t k = 0; k < knobs.size(); ++k) {
@@ -270,7 +295,8 @@ void polish(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget
   // shrink each step crossing one to a crawl (measured: 40 iterations of ~1e-4 of a range).
   fit.boundsLineSearch = false;
   try {
-    const BoundedFitResult r = solveBoundedLeastSquares(ResidualJacobianFunction(std::cref(residuals)), parameters, fit);
+    const BoundedFitResult r =
+        solveBoundedLeastSquares(ResidualJacobianFunction(std::cref(residuals)), parameters, fit);
     result.converged = r.converged;
     result.stopReason = r.stopReason;
     result.iterations = r.iterations;
@@ -310,8 +336,10 @@ ActiveSet findActiveSet(const std::vector<TuningKnob>& knobs, const std::vector<
     const TuningTarget& t = targets[i];
     const double value = point.value(t.quantity);
     if (!t.hard || released[i]) continue;
-    if (value - t.lower < kActiveBand * t.scale && value - t.lower <= t.upper - value) a.limits[i] = LimitHold::kAtLower;
-    else if (t.upper - value < kActiveBand * t.scale) a.limits[i] = LimitHold::kAtUpper;
+    if (value - t.lower < kActiveBand * t.scale && value - t.lower <= t.upper - value)
+      a.limits[i] = LimitHold::kAtLower;
+    else if (t.upper - value < kActiveBand * t.scale)
+      a.limits[i] = LimitHold::kAtUpper;
   }
   return a;
 }
@@ -369,8 +397,8 @@ std::vector<TuningPoint> rankStarts(std::vector<TuningPoint> points) {
 // cost above kMetCost), from the next-best start too, up to settings.polishStarts: a local
 // polish finds the optimum of its own basin, and another start may lie in a better one.
 void polishFromBestStarts(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
-                          const TuningEvaluator& evaluate, const TuningSettings& settings, const volatile bool* stopFlag,
-                          TuningResult& result) {
+                          const TuningEvaluator& evaluate, const TuningSettings& settings,
+                          const volatile bool* stopFlag, TuningResult& result) {
   const std::vector<TuningPoint> starts = rankStarts(result.startSet);
   double bestCost = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < starts.size() && static_cast<int>(i) < settings.polishStarts; ++i) {
@@ -421,8 +449,8 @@ TuningResult runKneeTuning(const std::vector<TuningKnob>& knobs, const std::vect
   result.interrupted = stopFlag != nullptr && *stopFlag;
   result.best = findBestTuningPoint(result.startSet, result.polished);
   if (!result.interrupted) {
-    result.resolution = checkTuningResolution(knobs, targets, evaluate, result.best, settings.toleranceWindow,
-                                              settings.jobs, stopFlag);
+    result.resolution =
+        checkTuningResolution(knobs, targets, evaluate, result.best, settings.toleranceWindow, settings.jobs, stopFlag);
     if (result.resolution.ran) result.best = result.resolution.result;
     result.interrupted = stopFlag != nullptr && *stopFlag;
   }

@@ -60,16 +60,16 @@ double tuningTargetScale(TuningQuantity q);
 struct TuningPoint {
   std::vector<double> knobs;
   bool ran = false;
-  std::string failure;  ///< why it did not run (a RunError's text)
-  double swingTime = std::numeric_limits<double>::quiet_NaN();       ///< s
-  double peakKneeFlexion = std::numeric_limits<double>::quiet_NaN(); ///< rad
-  double minToeClearance = std::numeric_limits<double>::quiet_NaN(); ///< m
-  double maxStopImpactSpeed = 0;  ///< rad/s; 0 without an impact
-  int bounces = 0;                ///< SwingResult::bounces: the continuous piece of the swing time
+  std::string failure;                                                ///< why it did not run (a RunError's text)
+  double swingTime = std::numeric_limits<double>::quiet_NaN();        ///< s
+  double peakKneeFlexion = std::numeric_limits<double>::quiet_NaN();  ///< rad
+  double minToeClearance = std::numeric_limits<double>::quiet_NaN();  ///< m
+  double maxStopImpactSpeed = 0;                                      ///< rad/s; 0 without an impact
+  int bounces = 0;  ///< SwingResult::bounces: the continuous piece of the swing time
   /// A measured record ended inside the settle dwell (the knee in the zone, the thigh at its
   /// target): swingTime is the knee's entry into the zone, the dwell unconfirmed.
   bool dwellCutByRecord = false;
-  double cost = std::numeric_limits<double>::infinity();  ///< soft cost (sum of squared residuals)
+  double cost = std::numeric_limits<double>::infinity();           ///< soft cost (sum of squared residuals)
   double hardViolation = std::numeric_limits<double>::infinity();  ///< sum of hard misses / scale; 0: feasible
   bool feasible() const { return ran && hardViolation == 0; }
   double value(TuningQuantity q) const;
@@ -85,17 +85,17 @@ using TuningEvaluator = std::function<SwingResult(const std::vector<double>& kno
 /// polish ends about |soft gradient| / (2 weight^2) scale units short of `inside` (1e-6 to 1e-4
 /// for soft targets missed by 1 to 100 scale units): still inside the limit.
 struct HardLimitPenalty {
-  double weight = 1e3;    ///< residual per scale unit short of the inside margin
-  double inside = 1e-2;   ///< the margin asked for, in scale units (50 um of toe clearance, 0.01 deg)
+  double weight = 1e3;   ///< residual per scale unit short of the inside margin
+  double inside = 1e-2;  ///< the margin asked for, in scale units (50 um of toe clearance, 0.01 deg)
 };
 /// The default inside margin (scale units): a result held back by a hard limit sits this close to it.
 constexpr double kHardLimitInside = HardLimitPenalty{}.inside;
 
 struct TuningSettings {
-  int startPoints = 24;     ///< Latin hypercube points
-  std::uint64_t seed = 1;   ///< of the start set
-  int jobs = 0;             ///< threads for the start set (0: all cores)
-  int maxIterations = 40;   ///< of each Ceres polish
+  int startPoints = 24;    ///< Latin hypercube points
+  std::uint64_t seed = 1;  ///< of the start set
+  int jobs = 0;            ///< threads for the start set (0: all cores)
+  int maxIterations = 40;  ///< of each Ceres polish
   /// Polishes from the best start points (ranked: those meeting every hard limit first), the
   /// next one only while the soft targets are still missed.
   int polishStarts = 3;
@@ -124,17 +124,17 @@ struct KnobBand {
 
 /// The result at resolution and its check.
 struct ResolutionCheck {
-  bool ran = false;      ///< some knob has a resolution and the check ran (else nothing below is set)
-  bool holds = false;    ///< every corner of the chosen cell meets every hard limit on one piece
-  TuningPoint continuous;           ///< the polish's optimum, before rounding
-  TuningPoint result;               ///< the best corner of the chosen cell (or, if none holds, of the first)
-  std::vector<TuningPoint> corners; ///< of the chosen cell
+  bool ran = false;                  ///< some knob has a resolution and the check ran (else nothing below is set)
+  bool holds = false;                ///< every corner of the chosen cell meets every hard limit on one piece
+  TuningPoint continuous;            ///< the polish's optimum, before rounding
+  TuningPoint result;                ///< the best corner of the chosen cell (or, if none holds, of the first)
+  std::vector<TuningPoint> corners;  ///< of the chosen cell
   int cellsTried = 0;
   /// One sentence: holds ("all 16 rounding neighbours meet every hard limit"), moved inside, or
   /// cannot (which limit breaks at which neighbour, by how much).
   std::string verdict;
-  double window = 0;                ///< s, the swing-time window of the bands
-  std::vector<KnobBand> bands;      ///< one per knob (empty if it does not hold)
+  double window = 0;            ///< s, the swing-time window of the bands
+  std::vector<KnobBand> bands;  ///< one per knob (empty if it does not hold)
 };
 
 struct TuningResult {

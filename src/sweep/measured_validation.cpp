@@ -14,7 +14,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-
 // Swing time (s) of participant p at `lowering` with its hip time scale set to `scale`; NaN
 // if no swing ends there.
 double swingTimeWith(const SweepStudy& study, Participant p, double scale, double lowering) {

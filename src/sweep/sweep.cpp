@@ -20,7 +20,6 @@
 
 namespace swingsim {
 
-
 std::string studyKneeModelPath(const SweepStudy& study, const Participant& p) {
   return study.kneeModelOverride.empty() ? p.kneeModelPath : study.kneeModelOverride;
 }
@@ -29,7 +28,8 @@ const KneeModel& findStudyKneeModel(const SweepStudy& study, const Participant& 
   const std::string path = studyKneeModelPath(study, p);
   const auto model = study.kneeModels.find(path);
   if (model == study.kneeModels.end())
-    throw RunError("sweep " + study.name + ": participant " + p.name + ": knee model " + path + " was not loaded with the study");
+    throw RunError("sweep " + study.name + ": participant " + p.name + ": knee model " + path +
+                   " was not loaded with the study");
   return model->second;
 }
 
@@ -42,7 +42,8 @@ std::vector<std::thread> startWorkerThreads(int threads, const std::function<voi
       // std::system_error (EAGAIN) under a memory, address-space or process limit (ulimit -v,
       // ulimit -u, a container's pids.max): fewer threads do the same work, only slower.
       std::fprintf(stderr, "swingsim: could start only %d of %d worker threads (%s); continuing with %s\n", t, threads,
-                   e.what(), t > 0 ? (std::to_string(t) + (t == 1 ? " thread" : " threads")).c_str() : "the main thread alone");
+                   e.what(),
+                   t > 0 ? (std::to_string(t) + (t == 1 ? " thread" : " threads")).c_str() : "the main thread alone");
       break;
     }
   }
@@ -75,12 +76,15 @@ int capThreadsToAddressSpace(int wanted) {
   const std::uint64_t mapped = pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
   const std::uint64_t cap = static_cast<std::uint64_t>(limit.rlim_cur);
   const std::uint64_t room = cap > mapped + kCallerAddressSpace ? cap - mapped - kCallerAddressSpace : 0;
-  const int fits = static_cast<int>(std::min<std::uint64_t>(room / kWorkerAddressSpace, static_cast<std::uint64_t>(wanted)));
+  const int fits =
+      static_cast<int>(std::min<std::uint64_t>(room / kWorkerAddressSpace, static_cast<std::uint64_t>(wanted)));
   if (fits < wanted)
-    std::fprintf(stderr, "swingsim: the address-space limit (ulimit -v %llu kB) leaves room for %d of %d worker threads; "
-                 "continuing with %s\n",
-                 static_cast<unsigned long long>(cap >> 10), fits, wanted,
-                 fits > 0 ? (std::to_string(fits) + (fits == 1 ? " thread" : " threads")).c_str() : "the main thread alone");
+    std::fprintf(
+        stderr,
+        "swingsim: the address-space limit (ulimit -v %llu kB) leaves room for %d of %d worker threads; "
+        "continuing with %s\n",
+        static_cast<unsigned long long>(cap >> 10), fits, wanted,
+        fits > 0 ? (std::to_string(fits) + (fits == 1 ? " thread" : " threads")).c_str() : "the main thread alone");
   return fits;
 }
 
@@ -204,12 +208,13 @@ ParticipantSweep makeParticipantSweep(const SweepStudy& study, const Participant
 
 // Adds participant i's points at each lowering, with and without each added mass that fits on
 // the shortened shank, and a job for each to `work`.
-void addSweepPoints(const SweepStudy& study, const Participant& p, std::size_t i, ParticipantSweep& ps, std::vector<Job>& work) {
+void addSweepPoints(const SweepStudy& study, const Participant& p, std::size_t i, ParticipantSweep& ps,
+                    std::vector<Job>& work) {
   for (double d : sweepLowerings(study, p)) {
     SweepPoint pt;
     pt.lowering = d;
-    pt.onGrid = d <= study.loweringMax + 1e-9 &&
-                std::fabs(d / study.loweringStep - std::round(d / study.loweringStep)) < 1e-6;
+    pt.onGrid =
+        d <= study.loweringMax + 1e-9 && std::fabs(d / study.loweringStep - std::round(d / study.loweringStep)) < 1e-6;
     ps.points.push_back(pt);
     work.push_back({i, false, ps.points.size() - 1});
     for (double m : study.addedMasses) {
@@ -229,8 +234,8 @@ void addSweepPoints(const SweepStudy& study, const Participant& p, std::size_t i
 
 // Simulates one point's swing (with its trajectory unless it carries an added mass); a
 // failure is the point's, never the end of the whole sweep.
-void runSweepPoint(const SweepStudy& study, const Participant& p, const std::shared_ptr<const KneeLawSum>& knee, SweepPoint& pt,
-                   bool withMass) {
+void runSweepPoint(const SweepStudy& study, const Participant& p, const std::shared_ptr<const KneeLawSum>& knee,
+                   SweepPoint& pt, bool withMass) {
   SwingSetup setup = makeSwingSetup(p, knee, pt.lowering, pt.added);
   setup.participant.kneeModelPath = studyKneeModelPath(study, p);  // the file actually used, for messages
   SwingOptions options = study.swing;
@@ -256,7 +261,8 @@ int pickBest(std::vector<SweepPoint>& pts) {
   int best = -1;
   for (std::size_t k = 0; k < pts.size(); ++k) {
     if (!pts[k].ran) pts[k].failure = "not run (interrupted)";
-    if (pts[k].ok && pts[k].onGrid && (best < 0 || pts[k].result.swingTime < pts[static_cast<std::size_t>(best)].result.swingTime - 1e-12))
+    if (pts[k].ok && pts[k].onGrid &&
+        (best < 0 || pts[k].result.swingTime < pts[static_cast<std::size_t>(best)].result.swingTime - 1e-12))
       best = static_cast<int>(k);
   }
   return best;
@@ -267,7 +273,8 @@ int pickBest(std::vector<SweepPoint>& pts) {
 SymmetryLowering calcGridSymmetry(const ParticipantSweep& ps, const Participant& p) {
   std::vector<std::pair<double, double>> samples;  // (lowering m, swing time s)
   for (const SweepPoint& pt : ps.points)
-    if (pt.onGrid) samples.emplace_back(pt.lowering, pt.ok ? pt.result.swingTime : std::numeric_limits<double>::quiet_NaN());
+    if (pt.onGrid)
+      samples.emplace_back(pt.lowering, pt.ok ? pt.result.swingTime : std::numeric_limits<double>::quiet_NaN());
   for (const SwingTimeJump& j : ps.jumps) {
     samples.emplace_back(j.below.lowering, j.below.swingTime);
     samples.emplace_back(j.above.lowering, j.above.swingTime);
@@ -322,7 +329,8 @@ SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<voi
     SweepPoint& pt = job.withMass ? ps.massPoints[job.index] : ps.points[job.index];
     runSweepPoint(study, study.participants[job.participant], knees[job.participant], pt, job.withMass);
   };
-  runParallelJobs(total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
+  runParallelJobs(
+      total, jobs, [&](int k) { runOne(work[static_cast<std::size_t>(k)]); }, progress, stopFlag);
 
   // The jumps, one participant a job; not after an interrupt (the grid is incomplete).
   if (!(stopFlag && *stopFlag)) {

@@ -32,8 +32,8 @@ struct SweepStudy {
   /// Every knee model the participants or the override name, by resolved path (the study
   /// reader loads them; runSweep reads no files).
   std::map<std::string, KneeModel> kneeModels;
-  double loweringStep = 0.010;    ///< m
-  double loweringMax = 0.200;     ///< m, capped per participant at calcMaxLowering
+  double loweringStep = 0.010;  ///< m
+  double loweringMax = 0.200;   ///< m, capped per participant at calcMaxLowering
   /// Added shank masses (kg) and their distances below the knee (m). The sweep always
   /// includes 0 kg; more entries make a lowering x mass x position grid.
   std::vector<double> addedMasses = {0.0};
@@ -56,11 +56,11 @@ struct SweepStudy {
 /// One simulated (participant, lowering, added mass) point.
 struct SweepPoint {
   double lowering = 0;
-  bool onGrid = true;       ///< a study step (false: an extra Table 4 lowering, never "fastest")
+  bool onGrid = true;  ///< a study step (false: an extra Table 4 lowering, never "fastest")
   AddedMass added;
-  bool ok = false;          ///< the swing ended
-  bool ran = false;         ///< the swing was simulated (false: an interrupted sweep never reached it)
-  std::string failure;      ///< why not, if !ok ("not run (interrupted)" if !ran)
+  bool ok = false;      ///< the swing ended
+  bool ran = false;     ///< the swing was simulated (false: an interrupted sweep never reached it)
+  std::string failure;  ///< why not, if !ok ("not run (interrupted)" if !ran)
   SwingResult result;
 };
 
@@ -69,10 +69,10 @@ struct ParticipantSweep {
   /// Burkett 2004's published rows for this participant (Tables 3 and 4), looked up once by
   /// name when the sweep runs; nullptr if he is not one of Burkett's.
   const PublishedParticipant* published = nullptr;
-  double loweringCap = 0;        ///< largest lowering simulated, m
-  std::string capNote;           ///< non-empty if the study's maximum was capped
-  std::vector<SweepPoint> points;       ///< the plain sweep (no added mass), by lowering
-  std::vector<SweepPoint> massPoints;   ///< the added-mass grid (may be empty)
+  double loweringCap = 0;              ///< largest lowering simulated, m
+  std::string capNote;                 ///< non-empty if the study's maximum was capped
+  std::vector<SweepPoint> points;      ///< the plain sweep (no added mass), by lowering
+  std::vector<SweepPoint> massPoints;  ///< the added-mass grid (may be empty)
   /// The jumps of the swing time between neighbouring grid lowerings of `points`, each
   /// narrowed to kJumpBracket (swing_time_jumps.h), by lowering.
   std::vector<SwingTimeJump> jumps;
@@ -103,7 +103,7 @@ struct TerminalImpactCheck {
   std::vector<double> bounceLowerings, bounceLoweringsWithoutFriction;
   /// Fastest grid lowering (m) and its swing time (s) without friction; NaN if none ended.
   double fastestWithoutFriction = 0, fastestTimeWithoutFriction = 0;
-  bool interiorOptimum = false;               ///< the fastest lowering is below the largest
+  bool interiorOptimum = false;  ///< the fastest lowering is below the largest
   bool interiorOptimumWithoutFriction = false;
   /// One sentence per finding: reproduced or not, and which assumption stops it.
   std::vector<std::string> findings;
@@ -115,16 +115,16 @@ struct ParticipantCalibration {
   double targetTime = 0;  ///< s
   double timeScale = 0;   ///< the calibrated scale (the stored one if !ok)
   bool ok = false;
-  std::string failure;    ///< why not (a target no time scale reaches)
+  std::string failure;  ///< why not (a target no time scale reaches)
 };
 
 /// Burkett Table 4 as a validation set for one participant: measured prosthetic swing
 /// times beside ours and Burkett's model (measured_validation.h).
 struct Table4Row {
-  double lowering = 0;              ///< m
-  double measured = 0, model = 0;   ///< s, Burkett's measured mean and model prediction
-  double ours = 0;                  ///< s, this sweep (NaN: not simulated or no swing end)
-  double oursLeaveOneOut = 0;       ///< s, with the other participants' mean time scale (NaN: not run)
+  double lowering = 0;             ///< m
+  double measured = 0, model = 0;  ///< s, Burkett's measured mean and model prediction
+  double ours = 0;                 ///< s, this sweep (NaN: not simulated or no swing end)
+  double oursLeaveOneOut = 0;      ///< s, with the other participants' mean time scale (NaN: not run)
 };
 
 struct Table4Validation {
@@ -149,7 +149,6 @@ struct SweepResults {
   /// Table 4 as validation, per Burkett participant (empty unless validateOnTable4 ran).
   std::vector<Table4Validation> table4;
 };
-
 
 /// Path of the knee model participant `p` uses in `study` (the study's override, else the
 /// participant's own).
@@ -196,8 +195,7 @@ std::vector<double> sweepGridLowerings(const SweepStudy& study, const Participan
 /// Runs the sweep on `jobs` threads (0 = all cores). `progress(done, total)` is called
 /// from the calling thread only. A stop flag (SIGINT) ends it early: unfinished points
 /// then have ran = ok = false and failure = "not run (interrupted)".
-SweepResults runSweep(const SweepStudy& study, int jobs,
-                      const std::function<void(int, int)>& progress = {},
+SweepResults runSweep(const SweepStudy& study, int jobs, const std::function<void(int, int)>& progress = {},
                       const volatile bool* stopFlag = nullptr);
 
 }  // namespace swingsim

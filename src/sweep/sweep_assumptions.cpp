@@ -12,15 +12,15 @@ namespace swingsim {
 namespace {
 
 // Half-widths and bounds of the ranges; docs/uncertainty.md gives the reasoning per row.
-constexpr double kDefaultTimeScaleSpread = 0.10;   // x tau, a participant without Table 3 data
-constexpr double kExtensionRatioLow = 0.25, kExtensionRatioHigh = 1.0;  // extension / flexion amplitude
-constexpr double kDurationLow = 0.15, kDurationHigh = 0.25;             // s, each half-sine, before tau
-constexpr double kThighTargetLowDeg = 15, kThighTargetHighDeg = 25;     // deg
-constexpr double kFrictionLow = 5, kFrictionHigh = 15;                  // N m, the span of Burkett Table 2
+constexpr double kDefaultTimeScaleSpread = 0.10;                          // x tau, a participant without Table 3 data
+constexpr double kExtensionRatioLow = 0.25, kExtensionRatioHigh = 1.0;    // extension / flexion amplitude
+constexpr double kDurationLow = 0.15, kDurationHigh = 0.25;               // s, each half-sine, before tau
+constexpr double kThighTargetLowDeg = 15, kThighTargetHighDeg = 25;       // deg
+constexpr double kFrictionLow = 5, kFrictionHigh = 15;                    // N m, the span of Burkett Table 2
 constexpr double kStopStiffnessLow = 1.25e4, kStopStiffnessHigh = 5.0e4;  // N m/rad^1.5 (knee/joint_stop.h)
 // docs/assumptions.md, "Sources for the values no paper gives":
 constexpr double kRestitutionLow = 0.3, kRestitutionHigh = 0.5;
-constexpr double kSettleDwellLow = 0.10, kSettleDwellHigh = 0.20;        // s (model/leg_parameters.h)
+constexpr double kSettleDwellLow = 0.10, kSettleDwellHigh = 0.20;  // s (model/leg_parameters.h)
 constexpr double kAccuracyLow = 3e-6, kAccuracyHigh = 2e-5;
 
 // A range that always contains the nominal value (a file outside the documented span
@@ -60,9 +60,10 @@ void addChoiceAndTimeScale(std::vector<SweepAssumption>& table) {
     a.key = "hip_time_scale";
     a.name = "hip-moment time scale";
     a.unit = "1";
-    a.source = "calibrated tau x (1 +- SD/T), SD the trial-to-trial SD of the measured standard-location swing time "
-               "and T Table 3's model time (Burkett 2004 Table 3; swing time ~ proportional to tau); +-10 % without "
-               "Table 3 data. Not recalibrated per sample";
+    a.source =
+        "calibrated tau x (1 +- SD/T), SD the trial-to-trial SD of the measured standard-location swing time "
+        "and T Table 3's model time (Burkett 2004 Table 3; swing time ~ proportional to tau); +-10 % without "
+        "Table 3 data. Not recalibrated per sample";
     a.read = [](const SweepVariant& v) { return v.participant.hipMoment.timeScale; };
     a.calcRange = [](const SweepVariant& v) {
       const double tau = v.participant.hipMoment.timeScale;
@@ -79,9 +80,10 @@ void addChoiceAndTimeScale(std::vector<SweepAssumption>& table) {
     a.key = "hip_extension_ratio";
     a.name = "hip extension / flexion amplitude";
     a.unit = "1";
-    a.source = "not published (Burkett measured it per participant); 0.25-1: from a weak terminal-swing brake to one "
-               "as strong as the flexion drive (terminal-swing hip torques rise most with running speed: "
-               "Schache 2011, Dorn 2012)";
+    a.source =
+        "not published (Burkett measured it per participant); 0.25-1: from a weak terminal-swing brake to one "
+        "as strong as the flexion drive (terminal-swing hip torques rise most with running speed: "
+        "Schache 2011, Dorn 2012)";
     a.read = [](const SweepVariant& v) {
       const auto& h = v.participant.hipMoment;
       return h.flexionAmplitude > 0 ? h.extensionAmplitude / h.flexionAmplitude : 0.0;
@@ -104,10 +106,13 @@ void addHipShape(std::vector<SweepAssumption>& table) {
     a.key = "hip_flexion_duration";
     a.name = "hip flexion half-sine duration";
     a.unit = "s";
-    a.source = "not published; 0.20 s +- 25 % (a stated assumption: the dynamometer's flexion half-cycle at "
-               "150 deg/s over 30-40 deg of hip motion)";
+    a.source =
+        "not published; 0.20 s +- 25 % (a stated assumption: the dynamometer's flexion half-cycle at "
+        "150 deg/s over 30-40 deg of hip motion)";
     a.read = [](const SweepVariant& v) { return v.participant.hipMoment.flexionDuration; };
-    a.calcRange = [read = a.read](const SweepVariant& v) { return onlyForSine(v, read(v), kDurationLow, kDurationHigh); };
+    a.calcRange = [read = a.read](const SweepVariant& v) {
+      return onlyForSine(v, read(v), kDurationLow, kDurationHigh);
+    };
     a.apply = [](SweepVariant& v, double x) { v.participant.hipMoment.flexionDuration = x; };
     table.push_back(a);
   }
@@ -118,7 +123,9 @@ void addHipShape(std::vector<SweepAssumption>& table) {
     a.unit = "s";
     a.source = "not published; 0.20 s +- 25 % (a stated assumption, as the flexion duration)";
     a.read = [](const SweepVariant& v) { return v.participant.hipMoment.extensionDuration; };
-    a.calcRange = [read = a.read](const SweepVariant& v) { return onlyForSine(v, read(v), kDurationLow, kDurationHigh); };
+    a.calcRange = [read = a.read](const SweepVariant& v) {
+      return onlyForSine(v, read(v), kDurationLow, kDurationHigh);
+    };
     a.apply = [](SweepVariant& v, double x) { v.participant.hipMoment.extensionDuration = x; };
     table.push_back(a);
   }
@@ -127,9 +134,10 @@ void addHipShape(std::vector<SweepAssumption>& table) {
     a.key = "hip_effort_adaptation";
     a.name = "hip effort adaptation exponent";
     a.unit = "1";
-    a.source = "Hale 1990: amputees raised hip effort 37-71 % when the shank got heavier, keeping swing time; hip "
-               "moment x (I_knee(d) / I_knee(0))^a, a = 0 (replayed unchanged, the files) to 1 (moment in "
-               "proportion to the shank + foot inertia about the knee)";
+    a.source =
+        "Hale 1990: amputees raised hip effort 37-71 % when the shank got heavier, keeping swing time; hip "
+        "moment x (I_knee(d) / I_knee(0))^a, a = 0 (replayed unchanged, the files) to 1 (moment in "
+        "proportion to the shank + foot inertia about the knee)";
     a.read = [](const SweepVariant& v) { return v.hipEffortExponent; };
     a.calcRange = [](const SweepVariant& v) { return around(v.hipEffortExponent, 0.0, 1.0); };
     a.apply = [](SweepVariant& v, double x) { v.hipEffortExponent = x; };
@@ -144,8 +152,9 @@ void addSwingEndAndFriction(std::vector<SweepAssumption>& table) {
     a.key = "thigh_target_flexion";
     a.name = "swing-end thigh target flexion";
     a.unit = "deg";
-    a.source = "Burkett's \"defined position of flexion\" is not given; 15-25 deg around our 20 deg (25 deg was "
-               "tried and left P2 without a swing end from 0.10 m: docs/assumptions.md, \"Swing-end rule\")";
+    a.source =
+        "Burkett's \"defined position of flexion\" is not given; 15-25 deg around our 20 deg (25 deg was "
+        "tried and left P2 without a swing end from 0.10 m: docs/assumptions.md, \"Swing-end rule\")";
     a.read = [](const SweepVariant& v) { return v.participant.swingEnd.thighTargetFlexion * kRadToDeg; };
     a.calcRange = [read = a.read](const SweepVariant& v) {
       return around(read(v), kThighTargetLowDeg, kThighTargetHighDeg);
@@ -158,8 +167,9 @@ void addSwingEndAndFriction(std::vector<SweepAssumption>& table) {
     a.key = "knee_friction";
     a.name = "knee friction Tc";
     a.unit = "N m";
-    a.source = "Burkett 2004 Table 2 gives 5-10 N m for P1-P3 and \"L5\" (read 15) for P4: the span 5-15 N m for "
-               "everyone, the reading of P4 included";
+    a.source =
+        "Burkett 2004 Table 2 gives 5-10 N m for P1-P3 and \"L5\" (read 15) for P4: the span 5-15 N m for "
+        "everyone, the reading of P4 included";
     a.read = [](const SweepVariant& v) { return v.participant.kneeFriction; };
     a.calcRange = [read = a.read](const SweepVariant& v) { return around(read(v), kFrictionLow, kFrictionHigh); };
     a.apply = [](SweepVariant& v, double x) { v.participant.kneeFriction = x; };
@@ -170,8 +180,9 @@ void addSwingEndAndFriction(std::vector<SweepAssumption>& table) {
     a.key = "settle_dwell";
     a.name = "swing-end settle dwell";
     a.unit = "s";
-    a.source = "no source defines it (a stated assumption): longer than a rebound off the stop and back out of the "
-               "zone takes (about 0.1 s at 2-3 rad/s), 0.10-0.20 s (SwingEndRule::settleDwell)";
+    a.source =
+        "no source defines it (a stated assumption): longer than a rebound off the stop and back out of the "
+        "zone takes (about 0.1 s at 2-3 rad/s), 0.10-0.20 s (SwingEndRule::settleDwell)";
     a.read = [](const SweepVariant& v) { return v.participant.swingEnd.settleDwell; };
     a.calcRange = [read = a.read](const SweepVariant& v) { return around(read(v), kSettleDwellLow, kSettleDwellHigh); };
     a.apply = [](SweepVariant& v, double x) { v.participant.swingEnd.settleDwell = x; };
@@ -186,9 +197,10 @@ void addStopAndIntegrator(std::vector<SweepAssumption>& table) {
     a.key = "stop_stiffness";
     a.name = "hyperextension-stop stiffness";
     a.unit = "N m/rad^1.5";
-    a.source = "no published bumper stiffness (docs/assumptions.md); 1.25e4 keeps a 0.2 kg m^2 shank hitting at 8 rad/s "
-               "within Burkett's 4 deg (p = (1.25 I v^2 / k)^0.4), 5e4 is 2.5 times the file's value "
-               "(JointStopParams::stiffness)";
+    a.source =
+        "no published bumper stiffness (docs/assumptions.md); 1.25e4 keeps a 0.2 kg m^2 shank hitting at 8 rad/s "
+        "within Burkett's 4 deg (p = (1.25 I v^2 / k)^0.4), 5e4 is 2.5 times the file's value "
+        "(JointStopParams::stiffness)";
     a.read = [](const SweepVariant& v) { return v.knee.spec.stop.stiffness; };
     a.calcRange = [read = a.read](const SweepVariant& v) {
       return around(read(v), kStopStiffnessLow, kStopStiffnessHigh);
@@ -201,8 +213,9 @@ void addStopAndIntegrator(std::vector<SweepAssumption>& table) {
     a.key = "stop_restitution";
     a.name = "hyperextension-stop restitution e";
     a.unit = "1";
-    a.source = "no published bumper restitution; docs/assumptions.md prior 0.3-0.5 at swing impact speeds (linear "
-               "spring-dampers with damping ratio 0.2-0.3, osim-rl's knee limit, Hunt-Crossley at c v = 1-2)";
+    a.source =
+        "no published bumper restitution; docs/assumptions.md prior 0.3-0.5 at swing impact speeds (linear "
+        "spring-dampers with damping ratio 0.2-0.3, osim-rl's knee limit, Hunt-Crossley at c v = 1-2)";
     a.read = [](const SweepVariant& v) { return v.knee.spec.stop.restitution; };
     a.calcRange = [read = a.read](const SweepVariant& v) { return around(read(v), kRestitutionLow, kRestitutionHigh); };
     a.apply = [](SweepVariant& v, double x) { v.knee.spec.stop.restitution = x; };
@@ -214,8 +227,9 @@ void addStopAndIntegrator(std::vector<SweepAssumption>& table) {
     a.name = "integrator accuracy";
     a.unit = "1";
     a.logUniform = true;
-    a.source = "docs/speed.md, \"Convergence study\": swing times converged to 0.1 ms from 2e-5 down; 3e-6 to "
-               "2e-5, drawn uniformly in log(accuracy)";
+    a.source =
+        "docs/speed.md, \"Convergence study\": swing times converged to 0.1 ms from 2e-5 down; 3e-6 to "
+        "2e-5, drawn uniformly in log(accuracy)";
     a.read = [](const SweepVariant& v) { return v.swing.accuracy; };
     a.calcRange = [read = a.read](const SweepVariant& v) { return around(read(v), kAccuracyLow, kAccuracyHigh); };
     a.apply = [](SweepVariant& v, double x) { v.swing.accuracy = x; };
@@ -257,9 +271,11 @@ std::vector<AssumptionRange> calcAssumptionRanges(const SweepVariant& variant) {
   return ranges;
 }
 
-void applyAssumptionDraw(SweepVariant& variant, const std::vector<AssumptionRange>& ranges, const std::vector<double>& u) {
+void applyAssumptionDraw(SweepVariant& variant, const std::vector<AssumptionRange>& ranges,
+                         const std::vector<double>& u) {
   const auto& table = sweepAssumptions();
-  for (std::size_t k = 0; k < table.size(); ++k) table[k].apply(variant, calcAssumptionValue(table[k], ranges[k], u[k]));
+  for (std::size_t k = 0; k < table.size(); ++k)
+    table[k].apply(variant, calcAssumptionValue(table[k], ranges[k], u[k]));
 }
 
 KneeLawSum makeSweepVariantKnee(const SweepVariant& variant) {
@@ -278,8 +294,8 @@ double calcBelowKneeInertia(const Participant& participant, double lowering) {
 Participant calcAdaptedParticipant(const Participant& participant, double lowering, double exponent) {
   Participant p = participant;
   if (exponent == 0 || lowering == 0) return p;
-  const double gain = std::pow(calcBelowKneeInertia(participant, lowering) / calcBelowKneeInertia(participant, 0),
-                               exponent);
+  const double gain =
+      std::pow(calcBelowKneeInertia(participant, lowering) / calcBelowKneeInertia(participant, 0), exponent);
   auto& h = p.hipMoment;
   h.flexionAmplitude *= gain;
   h.extensionAmplitude *= gain;

@@ -38,9 +38,9 @@ struct AssumptionRange {
 
 /// One unpublished assumption.
 struct SweepAssumption {
-  std::string key;     ///< JSON/report key: com_rule, hip_time_scale, ...
-  std::string name;    ///< what it is, for tables and figures
-  std::string unit;    ///< unit of the values ("deg", "N m", "s/rad"; "1" dimensionless, "choice" discrete)
+  std::string key;   ///< JSON/report key: com_rule, hip_time_scale, ...
+  std::string name;  ///< what it is, for tables and figures
+  std::string unit;  ///< unit of the values ("deg", "N m", "s/rad"; "1" dimensionless, "choice" discrete)
   /// A two-way choice: value 0 = the first reading, 1 = the second (`choices`); a Monte
   /// Carlo draw takes each with probability 1/2.
   bool discrete = false;
@@ -69,7 +69,8 @@ std::vector<AssumptionRange> calcAssumptionRanges(const SweepVariant& variant);
 
 /// Sets every assumption of sweepAssumptions() on `variant` to its value at fraction `u[k]` of
 /// `ranges[k]` (calcAssumptionValue): one Monte Carlo draw.
-void applyAssumptionDraw(SweepVariant& variant, const std::vector<AssumptionRange>& ranges, const std::vector<double>& u);
+void applyAssumptionDraw(SweepVariant& variant, const std::vector<AssumptionRange>& ranges,
+                         const std::vector<double>& u);
 
 /// A variant's knee law: the knee model's law rebuilt from `variant.knee.spec`
 /// (makeKneeModelLaw) plus the participant's friction (makeKneeLaw).

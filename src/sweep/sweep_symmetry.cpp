@@ -1,7 +1,7 @@
 #include "sweep/sweep_symmetry.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace swingsim {

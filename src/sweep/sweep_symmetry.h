@@ -9,9 +9,9 @@ namespace swingsim {
 /// The symmetry lowering of one lowering sweep against a sound-limb swing time.
 /// `given` false (no sound-limb time): every other field is meaningless.
 struct SymmetryLowering {
-  bool given = false;        ///< a sound-limb swing time was given
-  double soundTime = 0;      ///< s, the sound limb's swing time
-  bool found = false;        ///< at least one lowering ended a swing
+  bool given = false;    ///< a sound-limb swing time was given
+  double soundTime = 0;  ///< s, the sound limb's swing time
+  bool found = false;    ///< at least one lowering ended a swing
   /// The prosthetic swing time equals the sound limb's somewhere on the grid: `lowering` is
   /// that crossing, linearly interpolated between the two grid lowerings around it (the
   /// first crossing from the standard location if there are several). False: the sound limb

@@ -35,7 +35,8 @@ void addSymmetry(ParticipantUncertainty& pu, double soundTime) {
   if (!pu.symmetry.given) return;
   std::vector<double> lowerings;
   for (const auto& s : pu.samples) {
-    const SymmetryLowering sample = calcSymmetryLowering(s.lowerings, s.swingTimes, soundTime, calcScreenedPieces(s.swingTimes));
+    const SymmetryLowering sample =
+        calcSymmetryLowering(s.lowerings, s.swingTimes, soundTime, calcScreenedPieces(s.swingTimes));
     if (!sample.found) continue;  // counted in samplesWithoutSwingEnd
     lowerings.push_back(sample.lowering);
     if (!sample.reached) ++pu.symmetryNotReached;
@@ -135,9 +136,7 @@ const UncertaintyRun& UncertaintyPlan::findRun(std::size_t swing) const {
   return *(it - 1);
 }
 
-SwingSetup PlannedSwing::makeSetup() const {
-  return makeSwingSetup(participant, knee, lowering);
-}
+SwingSetup PlannedSwing::makeSetup() const { return makeSwingSetup(participant, knee, lowering); }
 
 PlannedSwing UncertaintyPlan::makeSwing(std::size_t swing) const {
   PlannedSwing planned;
@@ -145,8 +144,8 @@ PlannedSwing UncertaintyPlan::makeSwing(std::size_t swing) const {
   planned.lowering = planned.run->lowerings[swing - planned.run->firstSwing];
   planned.variant = makeVariant(*planned.run);
   planned.knee = std::make_shared<const KneeLawSum>(makeSweepVariantKnee(planned.variant));
-  planned.participant = calcAdaptedParticipant(planned.variant.participant, planned.lowering,
-                                               planned.variant.hipEffortExponent);
+  planned.participant =
+      calcAdaptedParticipant(planned.variant.participant, planned.lowering, planned.variant.hipEffortExponent);
   return planned;
 }
 
@@ -293,10 +292,12 @@ UncertaintyResults assembleUncertaintyResults(const SweepStudy& study, const Unc
     }
     // Largest change of the fastest lowering first; ties (most often "no change") by the
     // change of its swing time. Stable, so equal rows keep the table order.
-    std::stable_sort(pu.sensitivity.begin(), pu.sensitivity.end(), [](const SensitivityRow& a, const SensitivityRow& b) {
-      if (a.calcLoweringEffect() != b.calcLoweringEffect()) return a.calcLoweringEffect() > b.calcLoweringEffect();
-      return a.calcTimeEffect() > b.calcTimeEffect();
-    });
+    std::stable_sort(pu.sensitivity.begin(), pu.sensitivity.end(),
+                     [](const SensitivityRow& a, const SensitivityRow& b) {
+                       if (a.calcLoweringEffect() != b.calcLoweringEffect())
+                         return a.calcLoweringEffect() > b.calcLoweringEffect();
+                       return a.calcTimeEffect() > b.calcTimeEffect();
+                     });
     std::vector<double> fastestLowering, fastestTime;
     for (const auto& s : pu.samples) {
       fastestLowering.push_back(s.calcFastestLowering());
@@ -312,7 +313,8 @@ UncertaintyResults assembleUncertaintyResults(const SweepStudy& study, const Unc
       std::vector<double> bandTimes;
       for (const auto& s : pu.samples)
         for (std::size_t j = 0; j < s.lowerings.size(); ++j)
-          if (std::fabs(s.lowerings[j] - d) < 1e-9 && std::isfinite(s.swingTimes[j])) bandTimes.push_back(s.swingTimes[j]);
+          if (std::fabs(s.lowerings[j] - d) < 1e-9 && std::isfinite(s.swingTimes[j]))
+            bandTimes.push_back(s.swingTimes[j]);
       const bool enough = !pu.samples.empty() && 2 * bandTimes.size() >= pu.samples.size();
       const Interval band = calcInterval(bandTimes);
       pu.bandLowerings.push_back(d);
@@ -326,8 +328,7 @@ UncertaintyResults assembleUncertaintyResults(const SweepStudy& study, const Unc
 }
 
 UncertaintyResults runSweepUncertainty(const SweepStudy& study, const UncertaintyOptions& options, int jobs,
-                                       const std::function<void(int, int)>& progress,
-                                       const volatile bool* stopFlag) {
+                                       const std::function<void(int, int)>& progress, const volatile bool* stopFlag) {
   const UncertaintyPlan plan = planSweepUncertainty(study, options);
   UncertaintySwingTimes times = UncertaintySwingTimes::makeEmpty(plan.swingCount);
   UncertaintyRunControl control;

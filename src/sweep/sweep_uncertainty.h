@@ -30,9 +30,9 @@ constexpr int kMaxUncertaintySamples = 100000;
 
 /// What to run.
 struct UncertaintyOptions {
-  int samples = 0;         ///< Monte Carlo samples, >= 1 (0: sensitivity only)
-  std::uint64_t seed = 1;  ///< std::mt19937_64 seed
-  bool sensitivity = true; ///< also the one-at-a-time runs (2 per assumption)
+  int samples = 0;          ///< Monte Carlo samples, >= 1 (0: sensitivity only)
+  std::uint64_t seed = 1;   ///< std::mt19937_64 seed
+  bool sensitivity = true;  ///< also the one-at-a-time runs (2 per assumption)
 };
 
 /// One participant's lowering sweep under one set of assumption values.
@@ -111,8 +111,8 @@ struct UncertaintyRun {
   enum class Kind { kNominal, kLow, kHigh, kSample };
   std::size_t participant = 0;  ///< index in the study
   Kind kind = Kind::kNominal;
-  std::size_t assumption = 0;   ///< kLow, kHigh: index in sweepAssumptions()
-  std::size_t sample = 0;       ///< kSample: Monte Carlo sample index
+  std::size_t assumption = 0;     ///< kLow, kHigh: index in sweepAssumptions()
+  std::size_t sample = 0;         ///< kSample: Monte Carlo sample index
   std::vector<double> lowerings;  ///< m, the study's grid up to this variant's cap
   std::size_t firstSwing = 0;     ///< index of its first lowering in the plan's swing order
 };
@@ -138,12 +138,12 @@ struct PlannedSwing {
 /// (tens of bytes a swing, about 2 MB for 84,000).
 struct UncertaintyPlan {
   UncertaintyOptions options;
-  std::vector<std::vector<double>> draws;             ///< [sample][assumption], u in [0, 1)
-  std::vector<SweepVariant> nominals;                 ///< per participant
-  std::vector<std::vector<AssumptionRange>> ranges;   ///< [participant][assumption]
-  std::vector<UncertaintyRun> runs;                   ///< in swing order
-  std::size_t swingCount = 0;                         ///< sum of the runs' lowerings
-  std::size_t sensitivitySwings = 0;                  ///< the swings before the first sample's
+  std::vector<std::vector<double>> draws;            ///< [sample][assumption], u in [0, 1)
+  std::vector<SweepVariant> nominals;                ///< per participant
+  std::vector<std::vector<AssumptionRange>> ranges;  ///< [participant][assumption]
+  std::vector<UncertaintyRun> runs;                  ///< in swing order
+  std::size_t swingCount = 0;                        ///< sum of the runs' lowerings
+  std::size_t sensitivitySwings = 0;                 ///< the swings before the first sample's
   /// The variant a run sweeps (nominal with the run's assumption values applied).
   SweepVariant makeVariant(const UncertaintyRun& run) const;
   /// The run holding swing `swing` (< swingCount).

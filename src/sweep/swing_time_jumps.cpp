@@ -25,7 +25,8 @@ PieceSample makePieceSample(double lowering, const SwingResult& result) {
 
 std::string SwingTimeJump::describeCause() const {
   if (below.bounces == above.bounces) {
-    if (below.thighAtTarget && above.thighAtTarget && std::fabs(*below.thighAtTarget - *above.thighAtTarget) > kJumpMinSize)
+    if (below.thighAtTarget && above.thighAtTarget &&
+        std::fabs(*below.thighAtTarget - *above.thighAtTarget) > kJumpMinSize)
       return "the thigh's flexion grazing its target: it reaches it " +
              fmt("%.3f", std::fabs(*below.thighAtTarget - *above.thighAtTarget)) + " s later on one side";
     return "the swing end moves by " + fmt("%.0f", std::fabs(above.swingTime - below.swingTime) * 1000) + " ms";
@@ -88,7 +89,8 @@ std::vector<SwingTimeJump> findSwingTimeJumps(const std::vector<PieceSample>& gr
   for (const PieceSample& p : grid) times.push_back(p.swingTime);
   const double screen = calcJumpScreen(times);
   for (std::size_t k = 0; k + 1 < grid.size(); ++k) {
-    if (grid[k].bounces == grid[k + 1].bounces && std::fabs(grid[k + 1].swingTime - grid[k].swingTime) <= screen) continue;
+    if (grid[k].bounces == grid[k + 1].bounces && std::fabs(grid[k + 1].swingTime - grid[k].swingTime) <= screen)
+      continue;
     SwingTimeJump jump;
     jump.below = grid[k];
     jump.above = grid[k + 1];
@@ -111,8 +113,8 @@ std::vector<int> calcScreenedPieces(const std::vector<double>& swingTimes) {
 }
 
 int calcPieceIndex(const std::vector<SwingTimeJump>& jumps, double lowering) {
-  return static_cast<int>(std::count_if(jumps.begin(), jumps.end(),
-                                        [&](const SwingTimeJump& j) { return j.calcLowering() < lowering; }));
+  return static_cast<int>(
+      std::count_if(jumps.begin(), jumps.end(), [&](const SwingTimeJump& j) { return j.calcLowering() < lowering; }));
 }
 
 const SwingTimeJump* findJumpBetween(const std::vector<SwingTimeJump>& jumps, double a, double b) {

@@ -34,9 +34,9 @@ constexpr double kJumpScreenFloor = 0.005;  ///< s
 
 /// What one swing at one lowering says about which continuous piece it lies on.
 struct PieceSample {
-  double lowering = 0;     ///< m
-  double swingTime = 0;    ///< s
-  int bounces = 0;         ///< SwingResult::bounces: the piece's signature
+  double lowering = 0;   ///< m
+  double swingTime = 0;  ///< s
+  int bounces = 0;       ///< SwingResult::bounces: the piece's signature
   /// s, the knee's first entry into the zone after its peak (the continuous companion of the
   /// swing time); absent if it never entered
   std::optional<double> firstZoneEntry;
@@ -51,7 +51,7 @@ PieceSample makePieceSample(double lowering, const SwingResult& result);
 
 /// One jump of the swing time between two lowerings at most kJumpBracket apart.
 struct SwingTimeJump {
-  PieceSample below, above;  ///< the two sides (below: the smaller lowering)
+  PieceSample below, above;    ///< the two sides (below: the smaller lowering)
   double zoneOfStability = 0;  ///< rad, the zone's edge the rebound is measured against
   /// m, the jump's lowering (the middle of its bracket)
   double calcLowering() const { return 0.5 * (below.lowering + above.lowering); }

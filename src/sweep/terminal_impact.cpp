@@ -5,8 +5,8 @@
 #include <limits>
 #include <optional>
 
-#include "core/text_format.h"
 #include "core/input_error.h"
+#include "core/text_format.h"
 #include "core/units.h"
 #include "swing/knee_setup.h"
 
@@ -24,14 +24,16 @@ std::string describeLowerings(const std::vector<double>& lowerings, double step)
   while (i < lowerings.size()) {
     std::size_t j = i;
     while (j + 1 < lowerings.size() && lowerings[j + 1] - lowerings[j] < 1.5 * step) ++j;
-    out += (out.empty() ? "" : ", ") + fmt("%.3f", lowerings[i]) + (j > i ? "-" + fmt("%.3f", lowerings[j]) : "") + " m";
+    out +=
+        (out.empty() ? "" : ", ") + fmt("%.3f", lowerings[i]) + (j > i ? "-" + fmt("%.3f", lowerings[j]) : "") + " m";
     i = j + 1;
   }
   return "at " + out;
 }
 
 // Grid lowerings where the knee bounced, the fastest grid point, and whether it is interior.
-void summarize(const ParticipantSweep& ps, std::vector<double>& bounces, double& fastest, double& time, bool& interior) {
+void summarize(const ParticipantSweep& ps, std::vector<double>& bounces, double& fastest, double& time,
+               bool& interior) {
   bounces.clear();
   fastest = time = kNaN;
   interior = false;
@@ -96,10 +98,12 @@ std::string describeBounce(const TerminalImpactCheck& check, double step) {
 /// Whether the fastest lowering (`fastest`, m) is interior, against Burkett's finding.
 std::string describeInteriorOptimum(const TerminalImpactCheck& check, double fastest) {
   return std::string("Interior optimum (Burkett: swing time rises again past the fastest lowering): ") +
-         (check.interiorOptimum ? "yes, fastest at " + fmt("%.3f", fastest) + " m."
-                                : std::string("no, the swing is fastest at the largest lowering (not reproduced") +
-                                      (check.bounceLowerings.empty() ? "; in Burkett's Fig. 3 the slower swings past the optimum come with the bounce, which this model does not show here)."
-                                                                     : ")."));
+         (check.interiorOptimum
+              ? "yes, fastest at " + fmt("%.3f", fastest) + " m."
+              : std::string("no, the swing is fastest at the largest lowering (not reproduced") +
+                    (check.bounceLowerings.empty() ? "; in Burkett's Fig. 3 the slower swings past the optimum come "
+                                                     "with the bounce, which this model does not show here)."
+                                                   : ")."));
 }
 
 /// Where a tracked swing's first stop impact's energy goes: the stop, friction, the knee's law.
@@ -110,9 +114,10 @@ std::string describeStopImpact(const TrackedImpactSwing& t) {
   for (const auto& w : im.work)
     if (w.cause != "hyperextension stop" && w.cause != "knee friction" && w.cause != "hip drive") damping += w.work;
   return "At " + fmt("%.3f", t.lowering) + " m the knee meets its stop at " + fmt("%.1f", im.impactRate) +
-         " rad/s with " + fmt("%.2f", im.kineticEnergy) + " J of kinetic energy in the leg; to the top of the rebound the stop takes " +
-         fmt("%.2f", -stop) + " J, the knee friction " + fmt("%.2f", -friction) + " J, the knee's resisting law " +
-         fmt("%.2f", -damping) + " J; the knee leaves the stop at " + fmt("%.2f", im.reboundRate) + " rad/s and rises to " +
+         " rad/s with " + fmt("%.2f", im.kineticEnergy) +
+         " J of kinetic energy in the leg; to the top of the rebound the stop takes " + fmt("%.2f", -stop) +
+         " J, the knee friction " + fmt("%.2f", -friction) + " J, the knee's resisting law " + fmt("%.2f", -damping) +
+         " J; the knee leaves the stop at " + fmt("%.2f", im.reboundRate) + " rad/s and rises to " +
          fmt("%.1f", im.reboundHeight * kRadToDeg) + " deg.";
 }
 
@@ -122,20 +127,20 @@ std::optional<std::string> describeWhatStopsBounce(const TerminalImpactCheck& ch
                                                    double loweringCap) {
   if (check.bounceLowerings.empty() && check.bounceLoweringsWithoutFriction.empty())
     return "Friction is not what stops the bounce here: without it the knee still does not bounce at any lowering; "
-           "with the stop's restitution of " + fmt("%.2f", restitution) +
-           " the rebound does not carry the knee back out of the zone.";
+           "with the stop's restitution of " +
+           fmt("%.2f", restitution) + " the rebound does not carry the knee back out of the zone.";
   if (!(check.bounceLowerings.empty() && check.frictionMoment > 0)) return std::nullopt;
   std::string s = "What stops the bounce: the knee friction near extension (Tc = " + fmt("%.1f", check.frictionMoment) +
                   " N m below 4 deg, Burkett Table 2). Without it the knee bounces " +
                   describeLowerings(check.bounceLoweringsWithoutFriction, step);
   if (!check.bounceLoweringsWithoutFriction.empty()) {
     const bool smallOnly = check.bounceLoweringsWithoutFriction.back() < loweringCap - 1e-9;
-    s += smallOnly ? ": at small lowerings, not large ones, because the impact speed falls as the shank shortens"
-                   : "";
+    s += smallOnly ? ": at small lowerings, not large ones, because the impact speed falls as the shank shortens" : "";
     s += std::string(", and the fastest lowering ") +
-         (std::isnan(check.fastestWithoutFriction) ? "is undefined (no swing ended)"
-                                                   : "is " + fmt("%.3f", check.fastestWithoutFriction) + " m (" +
-                                                         (check.interiorOptimumWithoutFriction ? "interior" : "the largest") + ")");
+         (std::isnan(check.fastestWithoutFriction)
+              ? "is undefined (no swing ended)"
+              : "is " + fmt("%.3f", check.fastestWithoutFriction) + " m (" +
+                    (check.interiorOptimumWithoutFriction ? "interior" : "the largest") + ")");
   }
   return s + ".";
 }

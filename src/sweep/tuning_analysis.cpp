@@ -18,7 +18,8 @@ namespace {
 // Signed margin inside the window, in scale units (negative outside), and its slope d margin /
 // d value (SI): from the nearer edge, or from the edge the limit is held at.
 double marginInScaleUnits(const TuningTarget& t, double value, LimitHold hold, double* slope) {
-  const bool fromLower = hold == LimitHold::kAtLower || (hold == LimitHold::kPenalty && value - t.lower <= t.upper - value);
+  const bool fromLower =
+      hold == LimitHold::kAtLower || (hold == LimitHold::kPenalty && value - t.lower <= t.upper - value);
   if (slope != nullptr) *slope = (fromLower ? 1.0 : -1.0) / t.scale;
   return (fromLower ? value - t.lower : t.upper - value) / t.scale;
 }
@@ -92,7 +93,8 @@ void setOutcomes(const std::vector<TuningTarget>& targets, TuningResult& result)
 }
 
 // Central differences of each target's quantity over 1e-3 of each knob's range (one-sided at a range end).
-void setSensitivity(const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate, int jobs, TuningResult& result) {
+void setSensitivity(const std::vector<TuningTarget>& targets, const TuningEvaluator& evaluate, int jobs,
+                    TuningResult& result) {
   const std::size_t n = result.knobs.size();
   std::vector<TuningPoint> ends(2 * n);
   runParallelJobs(static_cast<int>(2 * n), jobs, [&](int j) {
@@ -109,8 +111,9 @@ void setSensitivity(const std::vector<TuningTarget>& targets, const TuningEvalua
       p.ran = false;
     }
   });
-  result.sensitivity = Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(targets.size()), static_cast<Eigen::Index>(n),
-                                                 std::numeric_limits<double>::quiet_NaN());
+  result.sensitivity =
+      Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(targets.size()), static_cast<Eigen::Index>(n),
+                                std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 0; k < n; ++k) {
     const TuningPoint &lo = ends[2 * k], &hi = ends[2 * k + 1];
     if (!lo.ran || !hi.ran) continue;
@@ -138,7 +141,8 @@ void setIdentifiability(TuningResult& result) {
   for (std::size_t r = 0; r < rows.size(); ++r)
     for (std::size_t k = 0; k < n; ++k) {
       const TuningKnob& knob = result.knobs[k];
-      const double perRange = knob.logScale ? result.best.knobs[k] * std::log(knob.upper / knob.lower) : knob.upper - knob.lower;
+      const double perRange =
+          knob.logScale ? result.best.knobs[k] * std::log(knob.upper / knob.lower) : knob.upper - knob.lower;
       J(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(k)) =
           result.sensitivity(static_cast<Eigen::Index>(rows[r]), static_cast<Eigen::Index>(k)) * perRange /
           result.targets[rows[r]].target.scale;
@@ -154,8 +158,8 @@ void setIdentifiability(TuningResult& result) {
   result.identifiable = ratio > kIdentifiableRatio;
   result.ridge.assign(n, 0.0);
   std::ostringstream s;
-  s << rows.size() << " target" << (rows.size() == 1 ? "" : "s") << " act" << (rows.size() == 1 ? "s" : "") << " on " << n
-    << " knob" << (n == 1 ? "" : "s");
+  s << rows.size() << " target" << (rows.size() == 1 ? "" : "s") << " act" << (rows.size() == 1 ? "s" : "") << " on "
+    << n << " knob" << (n == 1 ? "" : "s");
   if (result.identifiable) {
     s << "; the targets fix every knob (smallest/largest singular value " << ratio << ")";
   } else {

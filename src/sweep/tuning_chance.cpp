@@ -67,11 +67,14 @@ TuningChance calcTuningChance(const TunedLeg& leg, const std::vector<TuningTarge
   const std::vector<AssumptionRange> ranges = calcAssumptionRanges(nominal);
   // Job 0 is the nominal draw; job s + 1 the s-th sample.
   std::vector<TuningPoint> points(draws.size() + 1);
-  const int ran = runParallelJobs(static_cast<int>(points.size()), jobs, [&](int j) {
-    const std::vector<double> u = j == 0 ? std::vector<double>{} : draws[static_cast<std::size_t>(j - 1)];
-    points[static_cast<std::size_t>(j)] =
-        evaluateTuningPoint({}, targets, [&](const std::vector<double>&) { return simulateDraw(leg, nominal, ranges, u); });
-  }, {}, stop);
+  const int ran = runParallelJobs(
+      static_cast<int>(points.size()), jobs,
+      [&](int j) {
+        const std::vector<double> u = j == 0 ? std::vector<double>{} : draws[static_cast<std::size_t>(j - 1)];
+        points[static_cast<std::size_t>(j)] = evaluateTuningPoint(
+            {}, targets, [&](const std::vector<double>&) { return simulateDraw(leg, nominal, ranges, u); });
+      },
+      {}, stop);
   if (ran < static_cast<int>(points.size()) || (stop != nullptr && *stop)) return c;
   c.nominalSwingTime = points.front().swingTime;
   for (std::size_t s = 1; s < points.size(); ++s) {

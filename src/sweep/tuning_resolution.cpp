@@ -58,7 +58,8 @@ std::vector<std::vector<double>> cornersOf(const std::vector<TuningKnob>& knobs,
   std::vector<std::vector<double>> corners = {{}};
   for (std::size_t k = 0; k < knobs.size(); ++k) {
     std::vector<double> values;
-    if (knobs[k].resolution <= 0) values = {x[k]};
+    if (knobs[k].resolution <= 0)
+      values = {x[k]};
     else {
       values.push_back(gridValue(knobs[k], c.lo[k]));
       if (c.hi[k] != c.lo[k]) values.push_back(gridValue(knobs[k], c.hi[k]));
@@ -110,8 +111,9 @@ std::string describeFailure(const std::vector<TuningTarget>& targets, const Tuni
     if (!t.hard) continue;
     const double miss = calcTargetMiss(t, p.value(t.quantity));
     if (miss != 0)
-      return std::string(tuningQuantityKey(t.quantity)) + " " + fmt("%.4g", tuningQuantityInKeyUnit(t.quantity, p.value(t.quantity))) +
-             ", past its limit by " + fmt("%.2g", std::fabs(tuningQuantityInKeyUnit(t.quantity, miss)));
+      return std::string(tuningQuantityKey(t.quantity)) + " " +
+             fmt("%.4g", tuningQuantityInKeyUnit(t.quantity, p.value(t.quantity))) + ", past its limit by " +
+             fmt("%.2g", std::fabs(tuningQuantityInKeyUnit(t.quantity, miss)));
   }
   return "";
 }
@@ -127,9 +129,13 @@ class PointCache {
     for (const auto& x : wanted)
       if (!points_.count(x) && std::find(todo.begin(), todo.end(), x) == todo.end()) todo.push_back(x);
     std::vector<TuningPoint> done(todo.size());
-    runParallelJobs(static_cast<int>(todo.size()), jobs_, [&](int i) {
-      done[static_cast<std::size_t>(i)] = evaluateTuningPoint(todo[static_cast<std::size_t>(i)], targets_, evaluate_);
-    }, {}, stopFlag_);
+    runParallelJobs(
+        static_cast<int>(todo.size()), jobs_,
+        [&](int i) {
+          done[static_cast<std::size_t>(i)] =
+              evaluateTuningPoint(todo[static_cast<std::size_t>(i)], targets_, evaluate_);
+        },
+        {}, stopFlag_);
     for (std::size_t i = 0; i < todo.size(); ++i) points_[todo[i]] = done[i];
   }
   const TuningPoint& at(const std::vector<double>& x) const { return points_.at(x); }
@@ -201,13 +207,16 @@ std::vector<KnobBand> findBands(const std::vector<TuningKnob>& knobs, const std:
                                 const PointCache& cache, const TuningPoint& result, double window, int jobs,
                                 const volatile bool* stopFlag) {
   std::vector<KnobBand> bands(knobs.size());
-  runParallelJobs(static_cast<int>(2 * knobs.size()), jobs, [&](int job) {
-    const auto k = static_cast<std::size_t>(job / 2);
-    const bool up = job % 2 == 1;
-    const auto [value, stop] = walkBand(knobs, targets, cache, result, k, up ? 1 : -1, window);
-    (up ? bands[k].high : bands[k].low) = value;
-    (up ? bands[k].highStop : bands[k].lowStop) = stop;
-  }, {}, stopFlag);
+  runParallelJobs(
+      static_cast<int>(2 * knobs.size()), jobs,
+      [&](int job) {
+        const auto k = static_cast<std::size_t>(job / 2);
+        const bool up = job % 2 == 1;
+        const auto [value, stop] = walkBand(knobs, targets, cache, result, k, up ? 1 : -1, window);
+        (up ? bands[k].high : bands[k].low) = value;
+        (up ? bands[k].highStop : bands[k].lowStop) = stop;
+      },
+      {}, stopFlag);
   return bands;
 }
 
@@ -222,8 +231,8 @@ struct NeighbourScan {
 };
 
 NeighbourScan scanNeighbours(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets,
-                             PointCache& cache, const Cell& current, const std::vector<double>& x, double violationBelow,
-                             int& cellsTried) {
+                             PointCache& cache, const Cell& current, const std::vector<double>& x,
+                             double violationBelow, int& cellsTried) {
   const std::vector<Cell> cells = neighbourCells(knobs, current);
   std::vector<std::vector<double>> wanted;
   for (const Cell& c : cells)
@@ -255,7 +264,8 @@ NeighbourScan scanNeighbours(const std::vector<TuningKnob>& knobs, const std::ve
 // lower cost while there is one (at most kMaxCellMoves steps): the best corner of the last is
 // the result.
 void moveInside(const std::vector<TuningKnob>& knobs, const std::vector<TuningTarget>& targets, PointCache& cache,
-                const Cell& first, const std::vector<double>& x, const std::string& firstProblem, ResolutionCheck& check) {
+                const Cell& first, const std::vector<double>& x, const std::string& firstProblem,
+                ResolutionCheck& check) {
   Cell current = first;
   double currentViolation = cellViolation(check.corners);
   int inside = 0;
@@ -275,9 +285,11 @@ void moveInside(const std::vector<TuningKnob>& knobs, const std::vector<TuningTa
     }
   }
   if (!check.holds) {
-    check.verdict = "cannot: no cell within " + std::to_string(kMaxCellMoves) + " grid steps of the optimum (searched "
+    check.verdict = "cannot: no cell within " + std::to_string(kMaxCellMoves) +
+                    " grid steps of the optimum (searched "
                     "toward the limits' inside) has every corner meeting every hard limit on one piece of the swing "
-                    "time; around the optimum: " + firstProblem;
+                    "time; around the optimum: " +
+                    firstProblem;
     return;
   }
   int along = 0;
@@ -303,7 +315,7 @@ std::optional<double> findDefaultKnobResolution(const std::string& key) {
   // First match wins: the known rates before the other compound units ("_per_m", "_per_s",
   // ...), which say nothing of a setting's step (0: the study must state it), before "_m".
   static const std::vector<std::pair<std::string, double>> kBySuffix = {
-      {"_Nm_s_per_rad", 0.1}, {"_Nm_per_rad", 1.0}, {"_per_rad", 0},    {"_per_m", 0},  {"_per_s", 0},
+      {"_Nm_s_per_rad", 0.1}, {"_Nm_per_rad", 1.0}, {"_per_rad", 0},  {"_per_m", 0},     {"_per_s", 0},
       {"_deg", 1.0},          {"_kg", 0.01},        {"_scale", 0.01}, {"_factor", 0.01}, {"_m", 0.001}};
   for (const auto& [suffix, resolution] : kBySuffix)
     if (endsWith(key, suffix)) return resolution > 0 ? std::optional<double>(resolution) : std::nullopt;
@@ -312,7 +324,8 @@ std::optional<double> findDefaultKnobResolution(const std::string& key) {
 
 double roundToKnobGrid(const TuningKnob& knob, double value) {
   if (knob.resolution <= 0) return value;
-  const int index = std::clamp(static_cast<int>(std::lround(value / knob.resolution)), lowestIndex(knob), highestIndex(knob));
+  const int index =
+      std::clamp(static_cast<int>(std::lround(value / knob.resolution)), lowestIndex(knob), highestIndex(knob));
   return gridValue(knob, index);
 }
 
@@ -336,7 +349,8 @@ ResolutionCheck checkTuningResolution(const std::vector<TuningKnob>& knobs, cons
   const std::string count = std::to_string(check.corners.size());
   if (firstProblem.empty()) {
     check.holds = true;
-    check.verdict = "all " + count + " rounding neighbours (each knob rounded down and up) meet every hard limit on one "
+    check.verdict = "all " + count +
+                    " rounding neighbours (each knob rounded down and up) meet every hard limit on one "
                     "piece of the swing time";
   } else if (rounded > kMaxKnobsForCellSearch) {
     check.verdict = "cannot: the cell around the optimum fails (" + firstProblem + "), and with " +

@@ -29,8 +29,8 @@ class EarlyThighFailure {
   /// Once true, the thigh cannot reach its target: a passive knee law and hip stop only take
   /// energy away.
   bool cannotEnd() const { return shortfall_ > 0; }
-  double getShortfall() const { return shortfall_; }              ///< J below the least needed
-  double getFinalHipMoment() const { return hipMomentFinal_; }    ///< N m, M
+  double getShortfall() const { return shortfall_; }                 ///< J below the least needed
+  double getFinalHipMoment() const { return hipMomentFinal_; }       ///< N m, M
   double getConstantFrom() const { return hipMomentConstantFrom_; }  ///< s, the last breakpoint
 
  private:

@@ -4,8 +4,7 @@
 
 namespace swingsim {
 
-KneeLawSum makeKneeLaw(const Participant& participant, const KneeModel& model,
-                       const KneeFrictionParams* friction) {
+KneeLawSum makeKneeLaw(const Participant& participant, const KneeModel& model, const KneeFrictionParams* friction) {
   KneeLawSum law = model.law;
   KneeFrictionParams params = friction ? *friction : KneeFrictionParams{};
   params.frictionMoment = participant.kneeFriction;

@@ -308,7 +308,8 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
   dp.initialize(0.0, y0.data());
 
   ReferenceTrajectory out;
-  for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate, &out.hipMoment, &out.kneeMoment})
+  for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate,
+                  &out.hipMoment, &out.kneeMoment})
     v->reserve(sampleTimes.size());
   for (double t : sampleTimes) {
     while (dp.getTime() < t) {
@@ -340,14 +341,16 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
   auto kneeRate = [&](double t) { return dp.interpolate(t, 2) - dp.interpolate(t, 3); };
   auto kneeFlexionAt = [&](double t) { return eq.calcKneeFlexion(dp.interpolate(t, 0), dp.interpolate(t, 1)); };
   auto zoneSignal = [&](double t) { return zone - kneeFlexionAt(t); };
-  auto signalsAt = [&](const double* y) { return SwingSignals{y[0] - target, y[2] - y[3], zone - eq.calcKneeFlexion(y)}; };
+  auto signalsAt = [&](const double* y) {
+    return SwingSignals{y[0] - target, y[2] - y[3], zone - eq.calcKneeFlexion(y)};
+  };
 
   SwingEndTracker tracker(zone);
   SwingSignals before = signalsAt(dp.getState());
   while (true) {
     if (dp.getTime() >= rule.timeLimit) {
-      throw RunError("reference swing: the swing did not end within the time limit of " +
-                     formatNumber(rule.timeLimit) + " s");
+      throw RunError("reference swing: the swing did not end within the time limit of " + formatNumber(rule.timeLimit) +
+                     " s");
     }
     dp.step(rule.timeLimit);
     checkStepBudget(dp, relTol);
@@ -359,15 +362,22 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
     if (!tracker.thighReached() && isRising(before.thigh, after.thigh))
       crossings[count++] = {locateCrossing(dp, thighSignal), CrossingKind::kThigh};
     if (isFalling(before.rate, after.rate)) crossings[count++] = {locateCrossing(dp, kneeRate), CrossingKind::kPeak};
-    if (intoZone || isFalling(before.zone, after.zone)) crossings[count++] = {locateCrossing(dp, zoneSignal), CrossingKind::kZone};
+    if (intoZone || isFalling(before.zone, after.zone))
+      crossings[count++] = {locateCrossing(dp, zoneSignal), CrossingKind::kZone};
     sortByTime(crossings, count);
 
     for (int i = 0; i < count; ++i) {
       const double t = crossings[i].time;
       switch (crossings[i].kind) {
-        case CrossingKind::kThigh: tracker.onThighAtTarget(t); break;
-        case CrossingKind::kPeak: tracker.onKneePeak(t, kneeFlexionAt(t)); break;
-        case CrossingKind::kZone: tracker.onZoneBoundary(t, intoZone); break;
+        case CrossingKind::kThigh:
+          tracker.onThighAtTarget(t);
+          break;
+        case CrossingKind::kPeak:
+          tracker.onKneePeak(t, kneeFlexionAt(t));
+          break;
+        case CrossingKind::kZone:
+          tracker.onZoneBoundary(t, intoZone);
+          break;
       }
       if (tracker.hasEnded()) return tracker.end(t, dp.getNumSteps());
     }

@@ -4,8 +4,8 @@
 // motion are derived by hand (Lagrange, see reference_swing.cpp), integrated by our own
 // Dormand-Prince RK5(4) (dormand_prince.h). No Simbody multibody code in this unit: it shares
 // with LegModel only the inputs (LegGeometry, the knee law, the hip moment profile and the
-// hip range stop, or the prescribed thigh's spline, leg/thigh_motion.h), so a mistake in the multibody model shows up as a disagreement.
-// It is also the performance baseline for the Simbody swing.
+// hip range stop, or the prescribed thigh's spline, leg/thigh_motion.h), so a mistake in the multibody model shows up
+// as a disagreement. It is also the performance baseline for the Simbody swing.
 #include <memory>
 #include <vector>
 
@@ -71,8 +71,8 @@ class ReferenceSwing {
   /// absTol are the Dormand-Prince local error tolerances (rad, rad/s and the knee law's
   /// state units). Throws std::invalid_argument on bad sample times, std::runtime_error if
   /// the integration fails, RunError past kMaxSteps.
-  ReferenceTrajectory integrate(const InitialConditions& initial, const std::vector<double>& sampleTimes,
-                                double relTol, double absTol) const;
+  ReferenceTrajectory integrate(const InitialConditions& initial, const std::vector<double>& sampleTimes, double relTol,
+                                double absTol) const;
 
   /// Swing end by the rule of simulateSwing (swing_simulation.cpp): the thigh's first rising
   /// crossing of rule.thighTargetFlexion, a knee peak (flexion rate falling through zero)

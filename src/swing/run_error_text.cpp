@@ -34,15 +34,16 @@ std::string RunErrorText::who() const {
 
 RunError RunErrorText::integratorFailed(const State& s, const std::exception& e) const {
   return RunError(setup_.participant.name + ": the integrator failed " + describeState(leg_, s) +
-                  " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; " + e.what() + ")");
+                  " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; " + e.what() +
+                  ")");
 }
 
 RunError RunErrorText::overBudget(RunBudget::Spent spent, int realizations, const State& s) const {
-  const std::string what =
-      spent == RunBudget::Spent::kRealizations
-          ? std::to_string(realizations) + " realizations (the budget of one swing is " +
-                std::to_string(options_.maxRealizations) + "; a normal swing takes a few hundred)"
-          : formatNumber(options_.maxWallSeconds) + " s of computing (the limit for one swing; a normal swing takes milliseconds)";
+  const std::string what = spent == RunBudget::Spent::kRealizations
+                               ? std::to_string(realizations) + " realizations (the budget of one swing is " +
+                                     std::to_string(options_.maxRealizations) + "; a normal swing takes a few hundred)"
+                               : formatNumber(options_.maxWallSeconds) +
+                                     " s of computing (the limit for one swing; a normal swing takes milliseconds)";
   // What to change: the same advice for both budgets.
   return RunError(who() + ": the swing was stopped after " + what + " " + describeState(leg_, s) + ", with " +
                   integratorName(options_.integrator) + " at accuracy " + formatNumber(options_.accuracy) +
@@ -67,8 +68,10 @@ RunError RunErrorText::hipLeftRange(const State& s) const {
 RunError RunErrorText::kneeLeftRange(const State& s, double crossingTime) const {
   const bool thighMotion = setup_.participant.drive == SwingDrive::kThighKinematics;
   return RunError(who() + ": the knee flexion passed " + formatDegrees(kKneeFlexionLimit) + " deg at " +
-                  formatTo4Places(crossingTime) + " s, beyond the knee's physical range (the shank folded onto the "
-                  "thigh); the run is stopped " + describeState(leg_, s) +
+                  formatTo4Places(crossingTime) +
+                  " s, beyond the knee's physical range (the shank folded onto the "
+                  "thigh); the run is stopped " +
+                  describeState(leg_, s) +
                   (thighMotion ? " (likely cause: a measured thigh motion far more violent than a swing's, e.g. a "
                                  "trial cut at the wrong events, or too little knee resistance for it)"
                                : " (likely cause: a hip moment far too large for this leg, or too little knee "
@@ -79,9 +82,10 @@ RunError RunErrorText::cannotEnd(const State& s, double hipMomentFinal, double c
   const SwingEndRule& rule = setup_.participant.swingEnd;
   return RunError(who() + ": the swing cannot end (decided " + describeState(leg_, s) + ", before the time limit of " +
                   formatTo4Places(timeLimit_) + " s): the thigh never reached its target flexion of " +
-                  formatDegrees(rule.thighTargetFlexion) + " deg and cannot any more: with the hip moment constant at " +
-                  formatNumber(hipMomentFinal) + " N m from t = " + formatTo4Places(constantFrom) +
-                  " s, the leg's energy is " + formatTo4Places(shortfall) +
+                  formatDegrees(rule.thighTargetFlexion) +
+                  " deg and cannot any more: with the hip moment constant at " + formatNumber(hipMomentFinal) +
+                  " N m from t = " + formatTo4Places(constantFrom) + " s, the leg's energy is " +
+                  formatTo4Places(shortfall) +
                   " J short of the least the thigh at its target needs, and the knee and the hip stop only take energy "
                   "away (hip moment too small for this leg?)");
 }
@@ -97,8 +101,8 @@ RunError RunErrorText::didNotEnd(const State& s, const SwingLog& log) const {
   else if (!log.peakSeen)
     cause = "the knee never reached a flexion peak above the zone of stability";
   else if (log.enteredOnce)
-    cause = "the knee did not settle: it left the zone of stability (< " + formatDegrees(rule.zoneOfStability) + " deg) " +
-            std::to_string(log.bounces) + " times and never stayed inside it for the settle dwell of " +
+    cause = "the knee did not settle: it left the zone of stability (< " + formatDegrees(rule.zoneOfStability) +
+            " deg) " + std::to_string(log.bounces) + " times and never stayed inside it for the settle dwell of " +
             formatNumber(rule.settleDwell) + " s (a stop that returns too much of the impact, restitution near 1?)";
   else
     cause = "the knee never came back inside the zone of stability (< " + formatDegrees(rule.zoneOfStability) +

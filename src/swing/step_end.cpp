@@ -9,9 +9,15 @@ using namespace SimTK;
 StepEnd readStepEnd(const LegModel& leg, const State& s, bool trackEnergy) {
   const MultibodySystem& system = leg.getSystem();
   system.realize(s, Stage::Acceleration);
-  StepEnd e{s.getTime(), leg.getHipFlexion(s), leg.getKneeFlexion(s), leg.getHipFlexionRate(s),
-            leg.getKneeFlexionRate(s), leg.getHipFlexionAcceleration(s), leg.getKneeFlexionAcceleration(s),
-            leg.calcHipMoment(s), leg.calcKneeMoment(s)};
+  StepEnd e{s.getTime(),
+            leg.getHipFlexion(s),
+            leg.getKneeFlexion(s),
+            leg.getHipFlexionRate(s),
+            leg.getKneeFlexionRate(s),
+            leg.getHipFlexionAcceleration(s),
+            leg.getKneeFlexionAcceleration(s),
+            leg.calcHipMoment(s),
+            leg.calcKneeMoment(s)};
   if (trackEnergy) {
     e.kinetic = system.calcKineticEnergy(s);
     const int parts = std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1);
@@ -21,7 +27,6 @@ StepEnd readStepEnd(const LegModel& leg, const State& s, bool trackEnergy) {
   }
   return e;
 }
-
 
 void appendSample(SwingTrajectory& tr, const LegGeometry& g, double hipHeight, double t, double hip, double knee,
                   double hipRate, double kneeRate, double hipMoment, double kneeMoment) {
@@ -41,22 +46,22 @@ void appendSample(SwingTrajectory& tr, const LegGeometry& g, double hipHeight, d
   tr.toeY.push_back(pose.toe[1]);
 }
 
-
 void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, double interval, const LegGeometry& g,
                    double hipHeight, SwingTrajectory& tr) {
   const double h = b.t - a.t;
-  auto hermite = [&](double y0, double d0, double y1, double d1, double s) { return calcHermite(y0, d0, y1, d1, h, s); };
+  auto hermite = [&](double y0, double d0, double y1, double d1, double s) {
+    return calcHermite(y0, d0, y1, d1, h, s);
+  };
   while (nextSample <= b.t + 1e-12 && h > 0) {
     const double s = std::clamp((nextSample - a.t) / h, 0.0, 1.0);
     const double hip = hermite(a.hip, a.hipRate, b.hip, b.hipRate, s);
     const double knee = hermite(a.knee, a.kneeRate, b.knee, b.kneeRate, s);
     appendSample(tr, g, hipHeight, nextSample, hip, knee, hermite(a.hipRate, a.hipAcc, b.hipRate, b.hipAcc, s),
-                 hermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, s), a.hipMoment + s * (b.hipMoment - a.hipMoment),
-                 a.kneeMoment + s * (b.kneeMoment - a.kneeMoment));
+                 hermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, s),
+                 a.hipMoment + s * (b.hipMoment - a.hipMoment), a.kneeMoment + s * (b.kneeMoment - a.kneeMoment));
     nextSample += interval;
   }
 }
-
 
 std::optional<double> findKneeRisingAbove(const StepEnd& a, const StepEnd& b, double level) {
   if (a.knee > level) return a.t;  // already above at the step's start

@@ -45,7 +45,8 @@ class StopImpactTracker {
     if (phase_ == kContact) {
       StopImpact& impact = impacts_.back();
       impact.maxPenetration = std::max(impact.maxPenetration, engage_ - b.knee);
-      if (a.kneeRate < 0 && b.kneeRate > 0) impact.maxPenetration = std::max(impact.maxPenetration, engage_ - kneeAt(findRoot(rateAt, h)));
+      if (a.kneeRate < 0 && b.kneeRate > 0)
+        impact.maxPenetration = std::max(impact.maxPenetration, engage_ - kneeAt(findRoot(rateAt, h)));
       if (a.knee < engage_ && b.knee >= engage_) {
         const double s1 = findRoot(witness, h);
         impact.reboundRate = std::max(0.0, rateAt(s1));
@@ -67,7 +68,9 @@ class StopImpactTracker {
   static double lerp(double x0, double x1, double s) { return x0 + s * (x1 - x0); }
   static Snapshot snapshot(const StepEnd& a, const StepEnd& b, double s) {
     Snapshot w{};
-    for (int i = 0; i < b.numWork; ++i) w[static_cast<std::size_t>(i)] = lerp(a.work[static_cast<std::size_t>(i)], b.work[static_cast<std::size_t>(i)], s);
+    for (int i = 0; i < b.numWork; ++i)
+      w[static_cast<std::size_t>(i)] =
+          lerp(a.work[static_cast<std::size_t>(i)], b.work[static_cast<std::size_t>(i)], s);
     return w;
   }
   void closeRebound(const StepEnd& a, const StepEnd& b, double s, double height) {
@@ -76,7 +79,8 @@ class StopImpactTracker {
     if (b.numWork > 0) {
       const Snapshot end = snapshot(a, b, s);
       for (int i = 0; i < b.numWork && static_cast<std::size_t>(i) < causes_.size(); ++i)
-        impact.work.push_back({causes_[static_cast<std::size_t>(i)], end[static_cast<std::size_t>(i)] - start_[static_cast<std::size_t>(i)]});
+        impact.work.push_back({causes_[static_cast<std::size_t>(i)],
+                               end[static_cast<std::size_t>(i)] - start_[static_cast<std::size_t>(i)]});
     }
     phase_ = kFree;
   }

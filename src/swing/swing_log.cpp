@@ -143,10 +143,18 @@ void handleStepEvents(const StepEnd& a, const StepEnd& b, const SwingEndRule& ru
     log.confirmUntil(t);
     if (log.ended) return;
     switch (crossings[i].kind) {
-      case kThigh: log.onThighAtTarget(t); break;
-      case kPeak: log.onKneePeak(t, kneeAt(crossings[i].s), zone); break;
-      case kEnters: log.onKneeZone(t, true); break;
-      case kLeaves: log.onKneeZone(t, false); break;
+      case kThigh:
+        log.onThighAtTarget(t);
+        break;
+      case kPeak:
+        log.onKneePeak(t, kneeAt(crossings[i].s), zone);
+        break;
+      case kEnters:
+        log.onKneeZone(t, true);
+        break;
+      case kLeaves:
+        log.onKneeZone(t, false);
+        break;
     }
   }
 }

@@ -27,15 +27,15 @@ struct SwingLog {
   std::vector<SwingEvent> events;
   bool thighReached = false;
   bool peakSeen = false;
-  bool kneeInZone = false;   // inside the zone after the peak
+  bool kneeInZone = false;  // inside the zone after the peak
   bool enteredOnce = false;
-  bool candidate = false;    // in the zone with the thigh at target: the end, if the knee stays
+  bool candidate = false;  // in the zone with the thigh at target: the end, if the knee stays
   double candidateTime = 0;
   bool ended = false;
   int bounces = 0;
   std::optional<double> bounceHeight;  // rad: highest knee peak after leaving the zone, if any
   double endTime = 0;
-  std::optional<KneePeak> peak;        // the highest knee peak above the zone, if any
+  std::optional<KneePeak> peak;  // the highest knee peak above the zone, if any
 
   void add(const std::string& name, double t) { events.push_back({name, t}); }
   // The end is decided once the knee has stayed in the zone for the dwell; every handler
@@ -101,7 +101,6 @@ struct SwingLog {
 /// events, reporting to `log`, each crossing localized to `window` s. Realizes the topology.
 void addSwingEventHandlers(SimTK::MultibodySystem& system, const LegModel& leg, SwingLog& log, const SwingEndRule& rule,
                            double window);
-
 
 // The fast path's events: sign changes of the witnesses between two step ends, each
 // crossing found on the Hermite interpolant of the step (no realization, no State copy),

@@ -67,8 +67,9 @@ SwingRun::SwingRun(const SwingSetup& setup, const SwingOptions& options)
   if (options.integrator == SwingIntegrator::kDormandPrince) {
     // End steps on the hip moment's kinks; the thigh spline is smooth (C4). The stepper takes
     // the initial state over (a State copy costs about 4 % of a swing).
-    auto dp = std::make_unique<DormandPrinceStepper>(system, std::move(initial), options.accuracy,
-                                                     thighMotion_ ? std::vector<double>{} : p_.hipMoment.calcBreakpoints());
+    auto dp =
+        std::make_unique<DormandPrinceStepper>(system, std::move(initial), options.accuracy,
+                                               thighMotion_ ? std::vector<double>{} : p_.hipMoment.calcBreakpoints());
     dormandPrince_ = dp.get();
     // The knee's levels: inside the zone, the stop.
     std::vector<double> levels{rule_.zoneOfStability - kLooseDwellMargin};
@@ -123,7 +124,8 @@ bool SwingRun::takeStep() {
 
 void SwingRun::recordStep(const StepEnd& now, const State& s) {
   if (!std::isfinite(now.hip) || !std::isfinite(now.knee)) throw errors_.diverged(s);
-  if (const auto passed = findKneeRisingAbove(previous_, now, kKneeFlexionLimit)) throw errors_.kneeLeftRange(s, *passed);
+  if (const auto passed = findKneeRisingAbove(previous_, now, kKneeFlexionLimit))
+    throw errors_.kneeLeftRange(s, *passed);
   if (!options_.simbodyEvents) handleStepEvents(previous_, now, rule_, log_);
   log_.confirmUntil(now.t);
   if (impacts_) impacts_->onStep(previous_, now);
@@ -132,7 +134,8 @@ void SwingRun::recordStep(const StepEnd& now, const State& s) {
   // The hip stop is soft (Hunt-Crossley): a thigh far past it means the inputs are wrong,
   // and a swing "ending" out there would look like a result.
   constexpr double kHipRangeSlack = 2 * kDegToRad;  // rad; plausible hip moments press the stop far less
-  if (!thighMotion_ && (now.hip < p_.hipRange.minFlexion - kHipRangeSlack || now.hip > p_.hipRange.maxFlexion + kHipRangeSlack))
+  if (!thighMotion_ &&
+      (now.hip < p_.hipRange.minFlexion - kHipRangeSlack || now.hip > p_.hipRange.maxFlexion + kHipRangeSlack))
     throw errors_.hipLeftRange(s);
   thighPeak_ = std::max(thighPeak_, now.hip);
 }

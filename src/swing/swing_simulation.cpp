@@ -19,13 +19,14 @@ const char* driveKey(SwingDrive drive) { return drive == SwingDrive::kHipMoment 
 std::string describeDrive(const Participant& p) {
   if (p.drive == SwingDrive::kHipMoment) return "hip moment: " + p.hipMoment.describe();
   const ThighKinematics& k = p.thighKinematics;
-  std::string text = "measured thigh angle prescribed on the hip (" + (k.path.empty() ? std::string("given in code") : k.path) +
-                     ", " + std::to_string(k.time.size()) + " samples over " +
-                     formatSeconds(k.time.empty() ? 0.0 : k.time.back()) + " s";
+  std::string text = "measured thigh angle prescribed on the hip (" +
+                     (k.path.empty() ? std::string("given in code") : k.path) + ", " + std::to_string(k.time.size()) +
+                     " samples over " + formatSeconds(k.time.empty() ? 0.0 : k.time.back()) + " s";
   try {
     const ThighMotion motion(k);
     char buf[96];
-    std::snprintf(buf, sizeof buf, "; GCV quintic spline, %.3f deg RMS from the samples", motion.getFitRms() * kRadToDeg);
+    std::snprintf(buf, sizeof buf, "; GCV quintic spline, %.3f deg RMS from the samples",
+                  motion.getFitRms() * kRadToDeg);
     text += buf;
   } catch (const InputError& e) {
     text += std::string("; unusable: ") + e.what();
@@ -101,10 +102,12 @@ SwingOptions makePlainPathOptions(double accuracy, double eventWindow) {
 std::string TrialEnd::describe() const {
   char buf[320];
   if (unmet == "thigh_target")
-    std::snprintf(buf, sizeof buf, "the thigh never reached its target flexion of %.1f deg (its peak %.1f deg, %.1f deg at the end)",
+    std::snprintf(buf, sizeof buf,
+                  "the thigh never reached its target flexion of %.1f deg (its peak %.1f deg, %.1f deg at the end)",
                   thighTarget * kRadToDeg, thighPeak * kRadToDeg, thighFlexion * kRadToDeg);
   else if (unmet == "knee_peak")
-    std::snprintf(buf, sizeof buf, "the knee had not peaked above the zone of stability (%.1f deg); knee %.1f deg at the end",
+    std::snprintf(buf, sizeof buf,
+                  "the knee had not peaked above the zone of stability (%.1f deg); knee %.1f deg at the end",
                   zoneOfStability * kRadToDeg, kneeFlexion * kRadToDeg);
   else if (unmet == "knee_zone")
     std::snprintf(buf, sizeof buf,
@@ -113,12 +116,15 @@ std::string TrialEnd::describe() const {
                   kneeFlexion * kRadToDeg, (kneeFlexion - zoneOfStability) * kRadToDeg, zoneOfStability * kRadToDeg,
                   thighFlexion * kRadToDeg, thighTarget * kRadToDeg);
   else
-    std::snprintf(buf, sizeof buf, "the knee was back in the zone for %.3f s of the settle dwell of %.3f s (knee %.1f deg at the end)",
+    std::snprintf(buf, sizeof buf,
+                  "the knee was back in the zone for %.3f s of the settle dwell of %.3f s (knee %.1f deg at the end)",
                   dwellDone.value_or(0), settleDwell, kneeFlexion * kRadToDeg);
   return "the measured trial ended at " + formatSeconds(time) + " s before the swing did: " + buf;
 }
 
-SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) { return SwingRun(setup, options).run(); }
+SwingResult simulateSwing(const SwingSetup& setup, const SwingOptions& options) {
+  return SwingRun(setup, options).run();
+}
 
 std::optional<double> calcFirstZoneEntry(const SwingResult& result) {
   for (const SwingEvent& e : result.events)

@@ -41,19 +41,19 @@ std::string checkAccuracy(double accuracy);
 /// The defaults are the converged settings of the convergence study (docs/speed.md,
 /// "Convergence study").
 struct SwingOptions {
-  double accuracy = 1e-5;           ///< relative (and absolute) accuracy of the integrator
+  double accuracy = 1e-5;                                        ///< relative (and absolute) accuracy of the integrator
   SwingIntegrator integrator = SwingIntegrator::kDormandPrince;  ///< which integrator steps the leg
-  double sampleInterval = 0.002;    ///< s between trajectory samples (Hermite-interpolated between steps)
-  bool recordTrajectory = true;     ///< keep the sampled trajectory in SwingResult
-  bool simbodyEvents = false;       ///< locate events with Simbody's event handlers (plain path; not with Dormand-Prince)
-  double eventWindow = 1e-5;        ///< s, event localization window of the plain path
-  double dwellAccuracyFactor = 100; ///< accuracy multiplier of the loose settle dwell (1: none; fast path)
-  bool requireSwingEnd = true;      ///< false: a swing that does not end returns with swingTime NaN instead of RunError
-  bool earlySettleEnd = true;       ///< end the settle dwell once the knee provably stays in the zone (fast path)
-  bool earlyThighFailure = true;    ///< stop once the thigh provably cannot reach its target (fast path, passive knee)
-  bool trackImpactEnergy = false;   ///< energy bookkeeping of each stop impact (extra states; slower)
-  long maxRealizations = 150000;    ///< realizations one swing may take before RunError
-  double maxWallSeconds = 60;       ///< s of wall-clock time one swing may take before RunError
+  double sampleInterval = 0.002;  ///< s between trajectory samples (Hermite-interpolated between steps)
+  bool recordTrajectory = true;   ///< keep the sampled trajectory in SwingResult
+  bool simbodyEvents = false;     ///< locate events with Simbody's event handlers (plain path; not with Dormand-Prince)
+  double eventWindow = 1e-5;      ///< s, event localization window of the plain path
+  double dwellAccuracyFactor = 100;  ///< accuracy multiplier of the loose settle dwell (1: none; fast path)
+  bool requireSwingEnd = true;     ///< false: a swing that does not end returns with swingTime NaN instead of RunError
+  bool earlySettleEnd = true;      ///< end the settle dwell once the knee provably stays in the zone (fast path)
+  bool earlyThighFailure = true;   ///< stop once the thigh provably cannot reach its target (fast path, passive knee)
+  bool trackImpactEnergy = false;  ///< energy bookkeeping of each stop impact (extra states; slower)
+  long maxRealizations = 150000;   ///< realizations one swing may take before RunError
+  double maxWallSeconds = 60;      ///< s of wall-clock time one swing may take before RunError
 };
 
 /// rad: where the knee's physical flexion range ends (180 deg: the shank folded onto the
@@ -65,7 +65,7 @@ struct SwingEvent {
   /// toe_off, thigh_at_target, knee_peak_flexion, knee_enters_zone, knee_leaves_zone,
   /// knee_bounce_peak (a flexion peak above the zone after a bounce), swing_end
   std::string name;
-  double time;       ///< s since toe-off
+  double time;  ///< s since toe-off
 };
 
 /// Work done on the leg by one cause over an impact, J (negative: taken out of the leg).
@@ -107,7 +107,7 @@ struct TrialEnd {
   double zoneOfStability = 0;  ///< rad, SwingEndRule::zoneOfStability
   /// s the knee had been in the zone with the thigh at target; set only when unmet is settle_dwell
   std::optional<double> dwellDone;
-  double settleDwell = 0;      ///< s, SwingEndRule::settleDwell
+  double settleDwell = 0;  ///< s, SwingEndRule::settleDwell
   /// One line for people: the unmet condition and the numbers.
   std::string describe() const;
 };
@@ -128,21 +128,21 @@ struct SwingResult {
   /// The highest knee flexion peak above the zone of stability; absent if the knee had none
   /// (a measured trial cut before it). Always set when the swing ended.
   std::optional<KneePeak> peakKneeFlexion;
-  bool bounce = false;             ///< knee left the zone after entering it (bounces > 0)
-  int bounces = 0;                 ///< times the knee left the zone after entering it
+  bool bounce = false;  ///< knee left the zone after entering it (bounces > 0)
+  int bounces = 0;      ///< times the knee left the zone after entering it
   /// rad, highest knee flexion peak after leaving the zone; absent if it had none (no bounce,
   /// or a run that stopped before the bouncing knee peaked)
   std::optional<double> bounceHeight;
-  std::vector<StopImpact> impacts; ///< contacts with the hyperextension stop, in time order (at most 20)
+  std::vector<StopImpact> impacts;  ///< contacts with the hyperextension stop, in time order (at most 20)
   /// m, lowest ankle or toe height above ground from peak knee flexion to the swing end (or
   /// the run's end); absent without a knee peak or without a trajectory sample in that span
   std::optional<double> minToeClearance;
   std::vector<SwingEvent> events;
   SwingTrajectory trajectory;
-  int steps = 0;                   ///< integrator steps taken
-  int realizations = 0;            ///< system realizations the integrator asked for
-  int realizationsToEnd = 0;       ///< of which up to the step where the swing ended (the rest: the settle dwell)
-  int looseDwellRetries = 0;       ///< loose settle dwells redone at full accuracy (SwingOptions::dwellAccuracyFactor)
+  int steps = 0;              ///< integrator steps taken
+  int realizations = 0;       ///< system realizations the integrator asked for
+  int realizationsToEnd = 0;  ///< of which up to the step where the swing ended (the rest: the settle dwell)
+  int looseDwellRetries = 0;  ///< loose settle dwells redone at full accuracy (SwingOptions::dwellAccuracyFactor)
   /// s since toe-off when the end was decided: the swing end plus the settle dwell, or
   /// earlier where the knee could no longer leave the zone (SwingOptions::earlySettleEnd)
   double endDecidedTime = 0;

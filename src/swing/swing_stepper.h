@@ -34,7 +34,8 @@ class SwingStepper {
 
 class SimbodyStepper final : public SwingStepper {
  public:
-  SimbodyStepper(const SimTK::MultibodySystem& system, const SimTK::State& initial, const SwingOptions& options, double tLimit)
+  SimbodyStepper(const SimTK::MultibodySystem& system, const SimTK::State& initial, const SwingOptions& options,
+                 double tLimit)
       : system_(system), integrator_(makeIntegrator(options.integrator, system)) {
     integrator_->setAccuracy(options.accuracy);
     // Return after every internal step: the loop stops as soon as the swing end plus the
@@ -88,11 +89,15 @@ class DormandPrinceStepper final : public SwingStepper {
       if (b > t && b < tStop) tStop = b;
     // End steps where the falling knee reaches its next level (the zone, the stop).
     if (kneeIndex_ >= 0) tStop = std::min(tStop, t + calcTimeToKneeLevel());
-    if (loose_) loose_->step(tStop);
-    else dp_->step(tStop);
+    if (loose_)
+      loose_->step(tStop);
+    else
+      dp_->step(tStop);
     return getTime() < tLimit;
   }
-  const SimTK::State& getState() override { return ode_.realizeAt(getTime(), loose_ ? loose_->getState() : dp_->getState()); }
+  const SimTK::State& getState() override {
+    return ode_.realizeAt(getTime(), loose_ ? loose_->getState() : dp_->getState());
+  }
   int getNumSteps() const override {
     return stepsBefore_ + static_cast<int>(dp_->getNumSteps() + (loose_ ? loose_->getNumSteps() : 0));
   }
@@ -145,7 +150,7 @@ class DormandPrinceStepper final : public SwingStepper {
   SimTK::State work_;
   SimbodyOde ode_;
   std::vector<double> y_;
-  std::vector<double> breakpoints_;  // s
+  std::vector<double> breakpoints_;            // s
   static constexpr double kLevelSlack = 1e-3;  // rad
   // Time to the knee's next level from the current step end, s (+inf: none ahead).
   double calcTimeToKneeLevel() const {

@@ -15,9 +15,9 @@
 #include <regex>
 #include <thread>
 
-#include "run_swingsim.h"
 #include "../core/cpu_time.h"
 #include "../test_build.h"
+#include "run_swingsim.h"
 
 namespace swingsim {
 namespace {
@@ -49,7 +49,8 @@ fs::path writeStudy(const fs::path& dir, const std::vector<fs::path>& participan
   std::string list;
   for (const auto& p : participants) list += (list.empty() ? "" : ", ") + p.string();
   std::ofstream(dir / "study.yaml") << "kind: knee-axis-sweep\nname: cli\nparticipants: [" << list
-                                    << "]\nlowering: {step_m: " << step << ", max_m: " << max << ", include_published: false}\n"
+                                    << "]\nlowering: {step_m: " << step << ", max_m: " << max
+                                    << ", include_published: false}\n"
                                     << extra;
   return dir / "study.yaml";
 }
@@ -74,13 +75,15 @@ using swingsim::testing::childCpuSecondsOf;
 TEST(BadInputCli, DampingTableOneMillionTimesTooLargeStopsWithinSecondsSayingWhatToChange) {
   const fs::path dir = freshDir("stiff");
   std::string model = slurp(kRoot + "/models/damping-table-default.yaml");
-  model = std::regex_replace(model, std::regex("moment_Nm: +\\[[^\\]]*\\]"), "moment_Nm: [1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6]");
+  model = std::regex_replace(model, std::regex("moment_Nm: +\\[[^\\]]*\\]"),
+                             "moment_Nm: [1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6]");
   std::ofstream(dir / "stiff.yaml") << model;
   const fs::path p = writeP1(dir, "knee_model: " + kRoot + "/models/damping-table-default.yaml",
                              "knee_model: " + (dir / "stiff.yaml").string());
   testing::CliRun r{};
   constexpr double kFewSeconds = 10;  // CPU s: the budget is about 1.5 s of computing here (minutes before)
-  EXPECT_LT(childCpuSecondsOf([&] { r = runSwingsim("simulate " + p.string() + " --out " + (dir / "out").string()); }), kFewSeconds);
+  EXPECT_LT(childCpuSecondsOf([&] { r = runSwingsim("simulate " + p.string() + " --out " + (dir / "out").string()); }),
+            kFewSeconds);
   EXPECT_EQ(r.code, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("swingsim: P1 at lowering 0 m: the swing was stopped after"));
   EXPECT_THAT(r.output, HasSubstr("loosen the accuracy"));
@@ -93,7 +96,8 @@ TEST(BadInputCli, DampingTableOneMillionTimesTooLargeStopsWithinSecondsSayingWha
 TEST(BadInputCli, TooStiffKneeGivenWithKneeOptionIsTheFileNamed) {
   const fs::path dir = freshDir("stiffknee");
   std::string model = slurp(kRoot + "/models/damping-table-default.yaml");
-  model = std::regex_replace(model, std::regex("moment_Nm: +\\[[^\\]]*\\]"), "moment_Nm: [1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6]");
+  model = std::regex_replace(model, std::regex("moment_Nm: +\\[[^\\]]*\\]"),
+                             "moment_Nm: [1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6, 1e6]");
   std::ofstream(dir / "stiff.yaml") << model;
   const auto r = runSwingsim("simulate participants/p1.yaml --knee " + (dir / "stiff.yaml").string() + " --out " +
                              (dir / "out").string());
@@ -116,13 +120,15 @@ TEST(BadInputCli, FitOnABenchFileWithAMissingDataMarkerExitsOneNamingTheLine) {
                                     << "/studies/data/mauch2014/slow.csv]\n";
   const auto r = runSwingsim("fit " + (dir / "study.yaml").string() + " --json " + (dir / "fit.json").string());
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr((dir / "normal.csv").string() + ":3: force_N: expected a force in [-100000, 100000] N"));
+  EXPECT_THAT(r.output,
+              HasSubstr((dir / "normal.csv").string() + ":3: force_N: expected a force in [-100000, 100000] N"));
   EXPECT_THAT(r.output, HasSubstr("missing-data marker"));
   EXPECT_FALSE(fs::exists(dir / "fit.json"));
 }
 
 TEST(BadInputCli, AccuracyOf1e18WithRungeKutta3IsAUsageErrorNotAnHourLongRun) {
-  const auto r = runSwingsim("simulate participants/p1.yaml --integrator runge-kutta-3 --accuracy 1e-18 --out /nonexistent/x");
+  const auto r =
+      runSwingsim("simulate participants/p1.yaml --integrator runge-kutta-3 --accuracy 1e-18 --out /nonexistent/x");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("--accuracy: expected a relative accuracy in [1e-14, 0.01] (got 1e-18)"));
 }
@@ -141,7 +147,8 @@ TEST(BadInputCli, AddedMassOf1e300IsNamedAndWritesNothing) {
   const auto r = runSwingsim("simulate participants/p1.yaml --add-mass 1e300@0.1 --out " + (dir / "out").string() +
                              " --json " + (dir / "r.json").string());
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("participants/p1.yaml: added mass: expected at most 150 kg (heavier than a whole body: is it in grams?) (got 1e+300 kg)"));
+  EXPECT_THAT(r.output, HasSubstr("participants/p1.yaml: added mass: expected at most 150 kg (heavier than a whole "
+                                  "body: is it in grams?) (got 1e+300 kg)"));
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));
 }
@@ -160,7 +167,8 @@ TEST(BadInputCli, SegmentMassOf1e300ExitsOneNamingFileLineAndKey) {
   const fs::path p = writeP1(dir, "mass_kg: 3.350", "mass_kg: 1e300");
   const auto r = runSwingsim("simulate " + p.string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_THAT(r.output, HasSubstr(p.string() + ":10: segments.thigh.mass_kg: expected a segment mass of at most 150 kg"));
+  EXPECT_THAT(r.output,
+              HasSubstr(p.string() + ":10: segments.thigh.mass_kg: expected a segment mass of at most 150 kg"));
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
@@ -202,7 +210,8 @@ TEST(BadInputCli, FifoThatNeverEndsExitsOne) {
   while (std::fgets(buf, sizeof buf, pipe)) out += buf;
   const int status = pclose(pipe);
   EXPECT_EQ(WEXITSTATUS(status), 1) << out;
-  EXPECT_THAT(out, HasSubstr(fifo.string() + ": file too large for an input file (more than 16 MiB read and not at its end"));
+  EXPECT_THAT(
+      out, HasSubstr(fifo.string() + ": file too large for an input file (more than 16 MiB read and not at its end"));
 }
 
 TEST(BadInputCli, StudyOverTheSizeLimitWritesNothing) {
@@ -234,7 +243,8 @@ TEST(BadInputCli, ValueBombUnderAnUnknownKeyExitsOneQuickly) {
 
 TEST(BadInputCli, SimulateJsonNamingADirectoryFailsBeforeComputing) {
   const fs::path dir = freshDir("jsondir");
-  const auto r = runSwingsim("simulate participants/p1.yaml --json " + dir.string() + " --out " + (dir / "out").string());
+  const auto r =
+      runSwingsim("simulate participants/p1.yaml --json " + dir.string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.output, HasSubstr("--json: expected a file to write, got the directory '" + dir.string() + "'"));
   EXPECT_THAT(r.output, ::testing::Not(HasSubstr("swing time")));
@@ -245,7 +255,8 @@ TEST(BadInputCli, SweepJsonNamingADirectoryFailsBeforeAnyOutput) {
   const fs::path dir = freshDir("sweepjsondir");
   const fs::path study = writeStudy(dir, {writeP1(dir)});
   fs::create_directories(dir / "j");
-  const auto r = runSwingsim("sweep " + study.string() + " --out " + (dir / "out").string() + " --json " + (dir / "j").string());
+  const auto r =
+      runSwingsim("sweep " + study.string() + " --out " + (dir / "out").string() + " --json " + (dir / "j").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.output, HasSubstr("--json: expected a file to write, got the directory"));
   EXPECT_FALSE(fs::exists(dir / "out"));
@@ -357,7 +368,8 @@ TEST(BadInputCli, SigtermDuringASweepLeavesOnlyThePartialCsvAndNoLitter) {
 TEST(BadInputCli, Latin1NameGivesValidUtf8Json) {
   const fs::path dir = freshDir("latin1");
   const fs::path p = writeP1(dir, "name: P1\n", "name: \"J\xF6rg\"\n");
-  const auto r = runSwingsim("simulate " + p.string() + " --out " + (dir / "out").string() + " --json " + (dir / "r.json").string());
+  const auto r = runSwingsim("simulate " + p.string() + " --out " + (dir / "out").string() + " --json " +
+                             (dir / "r.json").string());
   ASSERT_EQ(r.code, 0) << r.output;
   nlohmann::json j;
   ASSERT_NO_THROW(j = nlohmann::json::parse(slurp(dir / "r.json")));
@@ -395,7 +407,10 @@ TEST(BadInputCli, SameParticipantFileTwiceIsADuplicateNameError) {
 TEST(BadInputCli, LoweringsBelowAMillimetreNeverShareAFile) {
   const fs::path dir = freshDir("lowerings");
   for (const char* lowering : {"0", "0.0004", "0.0006"})
-    ASSERT_EQ(runSwingsim(std::string("simulate participants/p1.yaml --lowering ") + lowering + " --out " + dir.string()).code, 0);
+    ASSERT_EQ(
+        runSwingsim(std::string("simulate participants/p1.yaml --lowering ") + lowering + " --out " + dir.string())
+            .code,
+        0);
   EXPECT_TRUE(fs::exists(dir / "P1-lower000mm.csv"));
   EXPECT_TRUE(fs::exists(dir / "P1-lower0.4mm.csv"));
   EXPECT_TRUE(fs::exists(dir / "P1-lower0.6mm.csv"));

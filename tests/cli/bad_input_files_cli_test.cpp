@@ -14,14 +14,14 @@
 #include <regex>
 #include <tuple>
 
+#include "../core/cpu_time.h"
+#include "../test_build.h"
 #include "core/output_files.h"
 #include "io/json_file.h"
 #include "release_only.h"
 #include "run_swingsim.h"
-#include "../core/cpu_time.h"
 #include "study/uncertainty_swings_file.h"
 #include "sweep/sweep.h"
-#include "../test_build.h"
 
 namespace swingsim {
 namespace {
@@ -64,7 +64,8 @@ TEST(BadInputFilesCli, SweepGridAboveTheLimitIsCountedAndRefusedBeforeAnyWork) {
   double seconds = 0;
   const auto r = timedRun("sweep " + study.string() + " --out " + (dir / "out").string(), seconds);
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("sweep tiny: " + swings + " swings (1 participant, 200 added masses above 0 kg x 200 distances), about "));
+  EXPECT_THAT(r.output, HasSubstr("sweep tiny: " + swings +
+                                  " swings (1 participant, 200 added masses above 0 kg x 200 distances), about "));
   EXPECT_THAT(r.output, HasSubstr(study.string() + ": the sweep has " + swings + " swings"));
   EXPECT_THAT(r.output, HasSubstr("more than the limit of " + std::to_string(kDefaultMaxSweepSwings)));
   EXPECT_THAT(r.output, HasSubstr("--max-swings " + swings + " if you mean it"));
@@ -108,7 +109,8 @@ TEST(BadInputFilesCli, CalibrateRefusesTheSameFileTwiceBeforeWritingAnything) {
   double seconds = 0;
   const auto r = timedRun("calibrate " + p.string() + " " + again, seconds);
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr(again + ": the same file as " + p.string() + " (arguments 1 and 2): give each "
+  EXPECT_THAT(r.output, HasSubstr(again + ": the same file as " + p.string() +
+                                  " (arguments 1 and 2): give each "
                                   "participant file once"));
   EXPECT_LT(seconds, kBeforeAnyWork);
   EXPECT_EQ(slurp(p), before);
@@ -119,8 +121,8 @@ TEST(BadInputFilesCli, CalibrateRefusesTheSameFileTwiceBeforeWritingAnything) {
 TEST(BadInputFilesCli, JsonDashIsTheJsonAloneOnStandardOutput) {
   const fs::path dir = freshDir("json-dash");
   const fs::path json = dir / "piped.json", text = dir / "text.txt";
-  const auto r = runSwingsim("simulate " + writeP1(dir).string() + " --json - 2> " + text.string() + " | cat > " +
-                             json.string());
+  const auto r =
+      runSwingsim("simulate " + writeP1(dir).string() + " --json - 2> " + text.string() + " | cat > " + json.string());
   EXPECT_EQ(r.code, 0) << r.output;
   const std::string piped = slurp(json);
   ASSERT_FALSE(piped.empty());
@@ -134,7 +136,8 @@ TEST(BadInputFilesCli, JsonDashIsTheJsonAloneOnStandardOutput) {
 TEST(BadInputFilesCli, JsonToDevStdoutIsStreamedAndTheLinkStays) {
   if (!fs::is_symlink(fs::symlink_status("/dev/stdout"))) GTEST_SKIP() << "/dev/stdout is not a link here";
   const fs::path dir = freshDir("dev-stdout");
-  const auto r = runSwingsim("simulate " + writeP1(dir).string() + " --json /dev/stdout --out " + (dir / "out").string());
+  const auto r =
+      runSwingsim("simulate " + writeP1(dir).string() + " --json /dev/stdout --out " + (dir / "out").string());
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("\"drive\": "));  // the JSON came out on stdout
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status("/dev/stdout"))) << "/dev/stdout was replaced by a file";
@@ -150,8 +153,8 @@ TEST(BadInputFilesCli, JsonToDevStdoutRedirectedToAFileIsWrittenOnceInOrder) {
   if (!fs::is_symlink(fs::symlink_status("/dev/stdout"))) GTEST_SKIP() << "/dev/stdout is not a link here";
   const fs::path dir = freshDir("dev-stdout-file");
   const fs::path file = dir / "both.txt";
-  const auto r = runSwingsim("simulate " + writeP1(dir).string() + " --json /dev/stdout --out " + (dir / "out").string() +
-                             " > " + file.string());
+  const auto r = runSwingsim("simulate " + writeP1(dir).string() + " --json /dev/stdout --out " +
+                             (dir / "out").string() + " > " + file.string());
   EXPECT_EQ(r.code, 0) << r.output;
   const std::string all = slurp(file);
   const auto open = all.find("{\n"), close = all.rfind("\n}");
@@ -191,12 +194,14 @@ TEST(BadInputFilesCli, MergeFromAnotherFolderSaysTheStudyPathCameFromTheShards) 
   const fs::path shard = writeShard(dir, "studies/tiny.yaml");
   const auto r = runSwingsim("merge " + shard.string());  // run from the build folder: no studies/tiny.yaml there
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr(shard.string() + ": study_path: the shards name the study file \"studies/tiny.yaml\" "
-                                  "(as their sweep command gave it), which is not there from this folder ("));
+  EXPECT_THAT(r.output,
+              HasSubstr(shard.string() + ": study_path: the shards name the study file \"studies/tiny.yaml\" "
+                                         "(as their sweep command gave it), which is not there from this folder ("));
   EXPECT_THAT(r.output, HasSubstr("run merge from the folder the shards were run in"));
   const auto twice = runSwingsim("merge " + shard.string() + " " + (dir / "." / shard.filename()).string());
   EXPECT_EQ(twice.code, 1) << twice.output;
-  EXPECT_THAT(twice.output, HasSubstr("the same file as " + shard.string() + " (arguments 1 and 2): give each shard file once"));
+  EXPECT_THAT(twice.output,
+              HasSubstr("the same file as " + shard.string() + " (arguments 1 and 2): give each shard file once"));
 }
 
 // A large --jobs under an address-space limit (ulimit -v): before issue 29 the threads that

@@ -1,22 +1,22 @@
 // The command line end to end: usage, exit codes, outputs, and no output on bad input.
 #include <gmock/gmock.h>
 
+#include <gtest/gtest.h>
 #include <map>
 #include <vector>
-#include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "run_swingsim.h"
 #include "io/json_file.h"
+#include "run_swingsim.h"
 
 namespace {
 
-using ::testing::HasSubstr;
 using swingsim::Json;
+using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 using swingsim::testing::CliRun;
@@ -27,15 +27,17 @@ fs::path freshDir(const std::string& name) { return swingsim::testing::freshTemp
 TEST(Cli, NoArgumentsPrintsUsageListingEveryCommand) {
   CliRun r = run("");
   EXPECT_EQ(r.code, 2);
-  for (const char* c : {"simulate", "sweep", "calibrate", "merge", "swings", "import-osim"}) EXPECT_THAT(r.output, HasSubstr(c));
+  for (const char* c : {"simulate", "sweep", "calibrate", "merge", "swings", "import-osim"})
+    EXPECT_THAT(r.output, HasSubstr(c));
 }
 
 // Every option of every subcommand is in its --help (CLI11 builds it from the registry), and
 // --version names the version.
 TEST(Cli, HelpListsEveryOptionAndVersionPrintsIt) {
   const std::map<std::string, std::vector<std::string>> options = {
-      {"simulate", {"--lowering", "--knee", "--add-mass", "--hip-rate-deg-s", "--knee-rate-deg-s", "--integrator", "--accuracy",
-                    "--json", "--out"}},
+      {"simulate",
+       {"--lowering", "--knee", "--add-mass", "--hip-rate-deg-s", "--knee-rate-deg-s", "--integrator", "--accuracy",
+        "--json", "--out"}},
       {"sweep", {"--out", "--json", "--jobs", "--add-mass", "--uncertainty", "--seed", "--shard"}},
       {"merge", {"SHARD_FILES", "--out", "--json", "--jobs"}},
       {"calibrate", {"--target", "--dry-run"}},
@@ -44,8 +46,9 @@ TEST(Cli, HelpListsEveryOptionAndVersionPrintsIt) {
       {"diagnose", {"--out", "--json", "--save-model"}},
       {"generate", {"--out"}},
       {"swings", {"FILE.mot", "--side", "--grf", "--vertical-force", "--threshold-N", "--knee-sign", "--json"}},
-      {"import-osim", {"MODEL.osim", "--side", "--out", "--name", "--knee", "--knee-friction-Nm", "--shank-mass-kg",
-                       "--foot-mass-kg", "--foot-length-m", "--height-m"}}};
+      {"import-osim",
+       {"MODEL.osim", "--side", "--out", "--name", "--knee", "--knee-friction-Nm", "--shank-mass-kg", "--foot-mass-kg",
+        "--foot-length-m", "--height-m"}}};
   for (const auto& [command, flags] : options) {
     const CliRun r = run(command + " --help");
     EXPECT_EQ(r.code, 0) << command;
@@ -67,7 +70,8 @@ TEST(Cli, UnknownOptionIsAUsageError) {
 
 TEST(Cli, SimulateWritesTrajectoryStoAndJson) {
   fs::path out = freshDir("simulate");
-  CliRun r = run("simulate participants/p1.yaml --lowering 0.05 --out " + out.string() + " --json " + (out / "r.json").string());
+  CliRun r = run("simulate participants/p1.yaml --lowering 0.05 --out " + out.string() + " --json " +
+                 (out / "r.json").string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("swing time"));
   EXPECT_THAT(r.output, HasSubstr("peak knee flexion"));
@@ -78,8 +82,8 @@ TEST(Cli, SimulateWritesTrajectoryStoAndJson) {
   EXPECT_THAT(s.str(), HasSubstr("inDegrees=yes\nendheader\ntime\t"));
   std::ifstream js(out / "r.json");
   const Json j = Json::parse(js);
-  for (const char* key : {"participant", "lowering_m", "swing_time_s", "peak_knee_flexion_deg", "peak_knee_flexion_time_s",
-                          "bounce", "min_toe_clearance_m", "events"})
+  for (const char* key : {"participant", "lowering_m", "swing_time_s", "peak_knee_flexion_deg",
+                          "peak_knee_flexion_time_s", "bounce", "min_toe_clearance_m", "events"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["events"][0]["name"], "toe_off");
   EXPECT_DOUBLE_EQ(j["lowering_m"].get<double>(), 0.05);
@@ -96,7 +100,8 @@ TEST(Cli, SimulateChoosesTheIntegrator) {
   };
   const CliRun dp = run("simulate participants/p1.yaml --out " + out.string());
   ASSERT_EQ(dp.code, 0) << dp.output;
-  EXPECT_THAT(dp.output, HasSubstr("integrator          Dormand-Prince 5(4) over Simbody realizations, accuracy 1e-05"));
+  EXPECT_THAT(dp.output,
+              HasSubstr("integrator          Dormand-Prince 5(4) over Simbody realizations, accuracy 1e-05"));
   const CliRun rkm = run("simulate participants/p1.yaml --integrator runge-kutta-merson --out " + out.string());
   ASSERT_EQ(rkm.code, 0) << rkm.output;
   EXPECT_THAT(rkm.output, HasSubstr("integrator          Simbody Runge-Kutta-Merson, accuracy 0.0001"));
@@ -122,7 +127,8 @@ TEST(Cli, BadParticipantExitsOneWithLocatedMessageAndWritesNothing) {
   text.replace(text.find("mass_kg: 3.350"), 14, "mass_kg: -3.35");
   text.replace(text.find("../models"), 9, fs::absolute("models").string());
   std::ofstream(out / "bad.yaml") << text;
-  CliRun r = run("simulate " + (out / "bad.yaml").string() + " --out " + (out / "o").string() + " --json " + (out / "r.json").string());
+  CliRun r = run("simulate " + (out / "bad.yaml").string() + " --out " + (out / "o").string() + " --json " +
+                 (out / "r.json").string());
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.output, HasSubstr("bad.yaml:10: segments.thigh.mass_kg: must be positive (got -3.35)"));
   EXPECT_FALSE(fs::exists(out / "o"));
@@ -169,10 +175,12 @@ TEST(Cli, SimulateRunsOnAnOpenSimMotParticipant) {
   // A .mot without those labels: exit 1, the map form named, nothing written.
   std::ofstream(dir / "other.mot") << "other\ninDegrees=yes\nendheader\ntime\thip\tknee\n";
   for (int k = 0; k < 12; ++k) std::ofstream(dir / "other.mot", std::ios::app) << 0.01 * k << "\t1\t" << 5 * k << "\n";
-  CliRun bad = run("simulate " + writeWinterWith(dir, (dir / "other.mot").string()).string() + " --out " + (dir / "bad").string());
+  CliRun bad = run("simulate " + writeWinterWith(dir, (dir / "other.mot").string()).string() + " --out " +
+                   (dir / "bad").string());
   EXPECT_EQ(bad.code, 1) << bad.output;
   EXPECT_THAT(bad.output, HasSubstr("hip_flexion_r: column is missing (available: time, hip, knee)"));
-  EXPECT_THAT(bad.output, HasSubstr("thigh_kinematics: a plain .mot/.sto name is read with OpenSim's right-leg labels"));
+  EXPECT_THAT(bad.output,
+              HasSubstr("thigh_kinematics: a plain .mot/.sto name is read with OpenSim's right-leg labels"));
   EXPECT_FALSE(fs::exists(dir / "bad"));
 }
 

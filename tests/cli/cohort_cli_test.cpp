@@ -17,11 +17,11 @@
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::ScopedEnv;
 using swingsim::testing::slurp;
+using ::testing::HasSubstr;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 const std::string kSuite = "swingsim-cohort-cli";
@@ -56,7 +56,8 @@ TEST(CohortCli, ShardsMergeAndResumeToTheWholeRunByteForByte) {
   const std::string study = writeTinyCohort(dir, 5).string();
   const fs::path whole = dir / "whole", merged = dir / "merged", shards = dir / "shards", resumed = dir / "resumed";
 
-  const auto one = runSwingsim("sweep " + study + " --out " + whole.string() + " --json " + (whole / "cohort.json").string() + " --jobs 2");
+  const auto one = runSwingsim("sweep " + study + " --out " + whole.string() + " --json " +
+                               (whole / "cohort.json").string() + " --jobs 2");
   ASSERT_EQ(one.code, 0) << one.output;
   EXPECT_THAT(one.output, HasSubstr("cohort cohort-example: 4 participants (seed 5)"));
   const auto wholeFiles = readTree(whole);
@@ -66,12 +67,15 @@ TEST(CohortCli, ShardsMergeAndResumeToTheWholeRunByteForByte) {
   EXPECT_THAT(wholeFiles.at("report.md"), HasSubstr("## What predicts the gain"));
 
   for (int k = 0; k < 3; ++k) {
-    const auto r = runSwingsim("sweep " + study + " --shard " + std::to_string(k) + "/3 --out " + shards.string() + " --jobs 1");
+    const auto r =
+        runSwingsim("sweep " + study + " --shard " + std::to_string(k) + "/3 --out " + shards.string() + " --jobs 1");
     ASSERT_EQ(r.code, 0) << r.output;
   }
-  const std::string files = (shards / "cohort-shard-0-of-3.json").string() + " " + (shards / "cohort-shard-1-of-3.json").string() +
-                            " " + (shards / "cohort-shard-2-of-3.json").string();
-  const auto m = runSwingsim("merge " + files + " --out " + merged.string() + " --json " + (merged / "cohort.json").string());
+  const std::string files = (shards / "cohort-shard-0-of-3.json").string() + " " +
+                            (shards / "cohort-shard-1-of-3.json").string() + " " +
+                            (shards / "cohort-shard-2-of-3.json").string();
+  const auto m =
+      runSwingsim("merge " + files + " --out " + merged.string() + " --json " + (merged / "cohort.json").string());
   ASSERT_EQ(m.code, 0) << m.output;
   EXPECT_EQ(readTree(merged), wholeFiles);
 
@@ -82,8 +86,8 @@ TEST(CohortCli, ShardsMergeAndResumeToTheWholeRunByteForByte) {
     EXPECT_THAT(cut.output, HasSubstr("participants are kept in " + (resumed / "cohort.partial.json").string()));
     EXPECT_FALSE(fs::exists(resumed / "report.md"));
   }
-  const auto again = runSwingsim("sweep " + study + " --out " + resumed.string() + " --json " + (resumed / "cohort.json").string() +
-                                 " --jobs 2");
+  const auto again = runSwingsim("sweep " + study + " --out " + resumed.string() + " --json " +
+                                 (resumed / "cohort.json").string() + " --jobs 2");
   ASSERT_EQ(again.code, 0) << again.output;
   EXPECT_THAT(again.output, HasSubstr("resuming from"));
   EXPECT_FALSE(fs::exists(resumed / "cohort.partial.json"));

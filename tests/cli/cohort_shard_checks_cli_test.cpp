@@ -17,10 +17,10 @@
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::slurp;
+using ::testing::HasSubstr;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 const std::string kSuite = "swingsim-cohort-shard-checks-cli";
@@ -66,8 +66,8 @@ TEST(CohortShardChecksCli, EditedShardsAreRefusedNamingFileKeyAndWhy) {
   const std::string study = writeTinyCohort(dir).string();
   const fs::path shards = dir / "shards";
   for (int k = 0; k < 2; ++k) {
-    const auto r = runSwingsim("sweep " + study + " --shard " + std::to_string(k) + "/2 --out " + shards.string() +
-                               " --jobs 1");
+    const auto r =
+        runSwingsim("sweep " + study + " --shard " + std::to_string(k) + "/2 --out " + shards.string() + " --jobs 1");
     ASSERT_EQ(r.code, 0) << r.output;
   }
   const fs::path first = shards / "cohort-shard-0-of-2.json", other = shards / "cohort-shard-1-of-2.json";

@@ -33,7 +33,8 @@ TEST(ExportOsimCli, ModelBesideSimulatesStoPlaysItAndImportsBack) {
   const std::string sto = slurp(dir / "P1-lower020mm.sto");
   ASSERT_FALSE(sto.empty());
   EXPECT_THAT(sto, HasSubstr("inDegrees=yes"));
-  const std::string columns = sto.substr(sto.find("endheader\n") + 10, sto.find('\n', sto.find("endheader\n") + 10) - sto.find("endheader\n") - 10);
+  const std::string columns = sto.substr(sto.find("endheader\n") + 10,
+                                         sto.find('\n', sto.find("endheader\n") + 10) - sto.find("endheader\n") - 10);
   const OsimModel model = loadOsimModel(osim.string());
   for (const auto& j : model.joints)
     for (const auto& c : j.coordinates) EXPECT_THAT(columns, HasSubstr("\t" + c.name + "\t")) << columns;

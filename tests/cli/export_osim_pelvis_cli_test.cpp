@@ -35,8 +35,9 @@ std::string writeLabDrivenParticipant(const std::filesystem::path& dir) {
   };
   replace("knee_model: ../models/passive-knee.yaml", "knee_model: " + kRoot + "/models/passive-knee.yaml");
   replace("thigh_kinematics: ../studies/data/winter-swing/swing1.csv",
-          "thigh_kinematics: {file: " + kLabIk + ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt, "
-          "pelvis_tx: pelvis_tx, pelvis_ty: pelvis_ty, toe_off_s: 1.41, heel_contact_s: 1.85}");
+          "thigh_kinematics: {file: " + kLabIk +
+              ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt, "
+              "pelvis_tx: pelvis_tx, pelvis_ty: pelvis_ty, toe_off_s: 1.41, heel_contact_s: 1.85}");
   const std::string path = (dir / "lab.yaml").string();
   writeFileAtomic(path, text);
   return path;
@@ -75,7 +76,8 @@ TEST(ExportOsimPelvisCli, MeasuredPelvisMovesOnTheLabsCoordinatesFromToeOff) {
   EXPECT_NEAR(ground.coordinates[2].defaultValue, labAtToeOff(lab, "pelvis_ty"), kInterpolation);
   const OsimCoordinate& hip = model.getJointTo("femur_r").coordinates.at(0);
   const OsimCoordinate& knee = model.getJointTo("tibia_r").coordinates.at(0);
-  EXPECT_NEAR(hip.defaultValue, labAtToeOff(lab, "hip_flexion_r") * kDegToRad, kInterpolation) << "in the pelvis, not in space";
+  EXPECT_NEAR(hip.defaultValue, labAtToeOff(lab, "hip_flexion_r") * kDegToRad, kInterpolation)
+      << "in the pelvis, not in space";
   EXPECT_NEAR(knee.defaultValue, labAtToeOff(lab, "knee_angle_r") * kDegToRad, kInterpolation);
   int coordinates = 0;
   for (const auto& j : model.joints)
@@ -88,7 +90,8 @@ TEST(ExportOsimPelvisCli, MeasuredPelvisMovesOnTheLabsCoordinatesFromToeOff) {
   // The leg still imports: the ground joint is not part of the leg's chain.
   const CliRun imported = runSwingsim("import-osim " + osim.string() + " --out " + (dir / "back.yaml").string());
   ASSERT_EQ(imported.code, 0) << imported.output;
-  EXPECT_NEAR(loadParticipant((dir / "back.yaml").string()).thigh.length, loadParticipant(participant).thigh.length, 1e-12);
+  EXPECT_NEAR(loadParticipant((dir / "back.yaml").string()).thigh.length, loadParticipant(participant).thigh.length,
+              1e-12);
 }
 
 TEST(ExportOsimPelvisCli, HipMomentDriveKeepsTheWeldedPelvis) {

@@ -51,9 +51,11 @@ TEST(ExportOsimSideCli, LeftModelPlaysSimulatesLeftStoAndTheLabsIkAndImportsBack
   EXPECT_LT(*std::min_element(knee.begin(), knee.end()), -60);
 
   const auto yaml = dir / "back.yaml";
-  const CliRun imported = runSwingsim("import-osim " + (dir / "P1-lower010mm.osim").string() + " --side l --out " + yaml.string());
+  const CliRun imported =
+      runSwingsim("import-osim " + (dir / "P1-lower010mm.osim").string() + " --side l --out " + yaml.string());
   ASSERT_EQ(imported.code, 0) << imported.output;
-  const LegGeometry g = calcLegGeometry(loadParticipant(kP1), 0.01), h = calcLegGeometry(loadParticipant(yaml.string()), 0);
+  const LegGeometry g = calcLegGeometry(loadParticipant(kP1), 0.01),
+                    h = calcLegGeometry(loadParticipant(yaml.string()), 0);
   EXPECT_NEAR(h.thighLength, g.thighLength, kRoundTrip);
   EXPECT_NEAR(h.shankLength, g.shankLength, kRoundTrip);
   EXPECT_NEAR(h.shankCom, g.shankCom, kRoundTrip);

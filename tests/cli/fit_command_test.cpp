@@ -8,13 +8,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "run_swingsim.h"
 #include "io/json_file.h"
+#include "run_swingsim.h"
 
 namespace {
 
-using ::testing::HasSubstr;
 using swingsim::Json;
+using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 using RunResult = swingsim::testing::CliRun;
@@ -27,7 +27,8 @@ fs::path scratch(const std::string& name) { return swingsim::testing::freshTempD
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 
 std::string study(const std::string& train) {
-  return "kind: cylinder-fit\nname: t\nmodels:\n  - " + kRoot + "/models/mauch-4phase.yaml\ntrain:\n  - " + train + "\n";
+  return "kind: cylinder-fit\nname: t\nmodels:\n  - " + kRoot + "/models/mauch-4phase.yaml\ntrain:\n  - " + train +
+         "\n";
 }
 
 TEST(FitCommand, GenerateIsReproducibleAndFitWritesTheIssueJsonShape) {
@@ -42,7 +43,7 @@ TEST(FitCommand, GenerateIsReproducibleAndFitWritesTheIssueJsonShape) {
   std::ofstream(dir / "s.yaml") << study((dir / "a" / "normal.csv").string()) + "validate:\n  - " +
                                        (dir / "a" / "slow.csv").string() + "\n";
   const RunResult r = run("fit " + (dir / "s.yaml").string() + " --out " + (dir / "out").string() + " --json " +
-                    (dir / "r.json").string());
+                          (dir / "r.json").string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("mauch-4phase"));
   const Json json = Json::parse(slurp(dir / "r.json"));
@@ -50,10 +51,12 @@ TEST(FitCommand, GenerateIsReproducibleAndFitWritesTheIssueJsonShape) {
   const Json& m = json["models"][0];
   EXPECT_EQ(m["model"], "mauch-4phase");
   ASSERT_EQ(m["coefficients"].size(), 4u);
-  for (const char* key : {"phase", "f_N", "k_N_per_m", "c_Ns_per_m"}) EXPECT_TRUE(m["coefficients"][0].contains(key)) << key;
+  for (const char* key : {"phase", "f_N", "k_N_per_m", "c_Ns_per_m"})
+    EXPECT_TRUE(m["coefficients"][0].contains(key)) << key;
   EXPECT_EQ(m["coefficients"][0]["phase"], 1);
   for (const char* file : {"normal", "slow"})
-    for (const char* key : {"me_N", "rmse_N", "r2"}) EXPECT_TRUE(m["metrics"][file].contains(key)) << file << " " << key;
+    for (const char* key : {"me_N", "rmse_N", "r2"})
+      EXPECT_TRUE(m["metrics"][file].contains(key)) << file << " " << key;
   EXPECT_TRUE(fs::exists(dir / "out" / "report.md"));
   EXPECT_TRUE(fs::exists(dir / "out" / "mauch-4phase-slow-force.svg"));
   EXPECT_TRUE(fs::exists(dir / "out" / "mauch-4phase-normal-loop.svg"));
@@ -74,7 +77,7 @@ TEST(FitCommand, BadBenchFilesFailWithLocationAndWriteNothing) {
     std::ofstream(dir / "bad.csv") << c.csv;
     std::ofstream(dir / "s.yaml") << study((dir / "bad.csv").string());
     const RunResult r = run("fit " + (dir / "s.yaml").string() + " --out " + (dir / "out").string() + " --json " +
-                      (dir / "r.json").string());
+                            (dir / "r.json").string());
     EXPECT_EQ(r.code, 1) << r.output;
     EXPECT_THAT(r.output, HasSubstr(c.expected));
     EXPECT_FALSE(fs::exists(dir / "out"));
@@ -84,8 +87,8 @@ TEST(FitCommand, BadBenchFilesFailWithLocationAndWriteNothing) {
   std::string model = slurp(kRoot + "/models/mauch-4phase.yaml");
   model.erase(model.find("      - {phase: 3"), model.find("      - {phase: 4") - model.find("      - {phase: 3"));
   std::ofstream(dir / "m.yaml") << model;
-  std::ofstream(dir / "s.yaml") << "kind: cylinder-fit\nname: t\nmodels:\n  - m.yaml\ntrain:\n  - " +
-                                       kRoot + "/studies/data/mauch2014/normal.csv\n";
+  std::ofstream(dir / "s.yaml") << "kind: cylinder-fit\nname: t\nmodels:\n  - m.yaml\ntrain:\n  - " + kRoot +
+                                       "/studies/data/mauch2014/normal.csv\n";
   const RunResult r = run("fit " + (dir / "s.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.output, HasSubstr("m.yaml:"));

@@ -12,13 +12,15 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kModel = std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim";
+const std::string kModel =
+    std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim";
 
 TEST(ImportOsimCli, WritesAParticipantThatSimulateRuns) {
   const auto dir = freshTempDir("ImportOsimCli", "runs");
   const auto yaml = dir / "subject01.yaml";
-  const CliRun imported = runSwingsim("import-osim " + kModel + " --side r --name subject01 --shank-mass-kg 1.2 --foot-mass-kg 0.9 --out " +
-                                      yaml.string());
+  const CliRun imported =
+      runSwingsim("import-osim " + kModel + " --side r --name subject01 --shank-mass-kg 1.2 --foot-mass-kg 0.9 --out " +
+                  yaml.string());
   ASSERT_EQ(imported.code, 0) << imported.output;
   const std::string text = slurp(yaml);
   EXPECT_THAT(text, HasSubstr("name: subject01"));

@@ -14,11 +14,11 @@
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
-using ::testing::Not;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::slurp;
+using ::testing::HasSubstr;
+using ::testing::Not;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 const std::string kSuite = "swingsim-large-runs";
@@ -86,7 +86,8 @@ TEST(LargeRunEstimates, ALongSwingRecordIsCountedAfterReadingAndRefusedBeforeThe
     }
   }
   const fs::path out = dir / "out";
-  const auto run = runSwingsim("diagnose " + writeSwingDiagnosis(dir, record.string()).string() + " --out " + out.string());
+  const auto run =
+      runSwingsim("diagnose " + writeSwingDiagnosis(dir, record.string()).string() + " --out " + out.string());
   EXPECT_EQ(run.code, 1) << run.output;
   EXPECT_THAT(run.output, HasSubstr("diagnose long-record: "));
   EXPECT_THAT(run.output, HasSubstr("the diagnosis has "));
@@ -98,8 +99,8 @@ TEST(LargeRunEstimates, ALongSwingRecordIsCountedAfterReadingAndRefusedBeforeThe
 
 TEST(LargeRunEstimates, AMeasuredSweepTableIsHeldToMaxRows) {
   const fs::path out = freshTempDir(kSuite, "sweep-table") / "out";
-  const auto run = runSwingsim("diagnose " + kRoot + "/studies/burkett2004-table4.yaml --out " + out.string() +
-                               " --max-rows 10");
+  const auto run =
+      runSwingsim("diagnose " + kRoot + "/studies/burkett2004-table4.yaml --out " + out.string() + " --max-rows 10");
   EXPECT_EQ(run.code, 1) << run.output;
   EXPECT_THAT(run.output, HasSubstr("rows (a measured sweep table"));
   EXPECT_THAT(run.output, HasSubstr("more than the limit of 10: give fewer rows"));

@@ -13,14 +13,15 @@
 
 namespace {
 
-using ::testing::HasSubstr;
 using swingsim::Json;
+using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 TEST(MicroprocessorKneeCli, ShippedExampleEndsP1sSwing) {
   const fs::path out = swingsim::testing::freshTempDir("swingsim_microprocessor_knee_cli_test", "osl");
-  const auto r = swingsim::testing::runSwingsim("simulate participants/p1.yaml --knee models/microprocessor-knee-osl.yaml --out " +
-                                                out.string() + " --json " + (out / "r.json").string());
+  const auto r =
+      swingsim::testing::runSwingsim("simulate participants/p1.yaml --knee models/microprocessor-knee-osl.yaml --out " +
+                                     out.string() + " --json " + (out / "r.json").string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("knee model microprocessor-knee-osl"));
   std::ifstream js(out / "r.json");
@@ -42,10 +43,12 @@ TEST(MicroprocessorKneeCli, BadFileIsRefusedWithItsLineAndNothingWritten) {
       swingsim::testing::writeSuiteTempFile("swingsim_microprocessor_knee_cli_test", "negative-damping.yaml", text);
   const fs::path out = swingsim::testing::freshTempDir("swingsim_microprocessor_knee_cli_test", "bad");
   fs::remove_all(out);
-  const auto r = swingsim::testing::runSwingsim("simulate participants/p1.yaml --knee " + knee + " --out " + out.string());
+  const auto r =
+      swingsim::testing::runSwingsim("simulate participants/p1.yaml --knee " + knee + " --out " + out.string());
   EXPECT_EQ(r.code, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("negative-damping.yaml:"));
-  EXPECT_THAT(r.output, HasSubstr("impedance_state_machine.states[1].damping_Nm_s_per_rad: expected a damping in [0, "));
+  EXPECT_THAT(r.output,
+              HasSubstr("impedance_state_machine.states[1].damping_Nm_s_per_rad: expected a damping in [0, "));
   EXPECT_THAT(r.output, HasSubstr("(got -3.816)"));
   EXPECT_FALSE(fs::exists(out));
 }

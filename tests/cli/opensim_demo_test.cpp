@@ -46,8 +46,10 @@ TEST(OpenSimDemo, SwingsFoundInTheIkFileAreTheForcePlatesThenTheKinematics) {
 
 TEST(OpenSimDemo, ShippedParticipantIsWhatImportOsimWrites) {
   const fs::path dir = freshDir("import");
-  const CliRun r = runSwingsim("import-osim " + kData + "gait2354_subject01_simbody.osim --side r --name opensim-subject01 "
-                               "--knee " + kRoot + "/models/passive-knee.yaml --out " + (dir / "p.yaml").string());
+  const CliRun r = runSwingsim("import-osim " + kData +
+                               "gait2354_subject01_simbody.osim --side r --name opensim-subject01 "
+                               "--knee " +
+                               kRoot + "/models/passive-knee.yaml --out " + (dir / "p.yaml").string());
   ASSERT_EQ(r.code, 0) << r.output;
   // The shipped file adds a three-line header saying how it was made; the rest is the output,
   // apart from the knee model's path (relative to where each file lies).
@@ -78,7 +80,8 @@ TEST(OpenSimDemo, DiagnosisRunsOnThePipelineFilesWithTheMovingAndTheFixedHip) {
     const auto at = r.output.find("max knee difference ");
     ASSERT_NE(at, std::string::npos);
     EXPECT_LT(std::stod(r.output.substr(at + 20)), kSimbodyCheckLimitDeg) << study;
-    for (const char* f : {"report.md", "held-back.svg", "before-right-swing-1-overlay.svg", "after-right-swing-2-overlay.svg"})
+    for (const char* f :
+         {"report.md", "held-back.svg", "before-right-swing-1-overlay.svg", "after-right-swing-2-overlay.svg"})
       EXPECT_TRUE(fs::exists(dir / study / f)) << study << ": " << f;
   }
 }

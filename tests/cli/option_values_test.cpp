@@ -10,9 +10,9 @@
 
 namespace {
 
-using ::testing::HasSubstr;
 using swingsim::testing::CliRun;
 using swingsim::testing::runSwingsim;
+using ::testing::HasSubstr;
 
 TEST(OptionValues, BadValuesAreUsageErrorsNamingTheOption) {
   struct Case {
@@ -24,19 +24,30 @@ TEST(OptionValues, BadValuesAreUsageErrorsNamingTheOption) {
       {"simulate participants/p1.yaml --hip-rate-deg-s 1,5", "--hip-rate-deg-s: expected a number (got '1,5')"},
       {"simulate participants/p1.yaml --knee-rate-deg-s 1e9",
        "--knee-rate-deg-s: expected a knee rate in [-3000, 3000] deg/s (a swinging knee peaks near 500 deg/s)"},
-      {"simulate participants/p1.yaml --add-mass 0.5", "--add-mass: expected KG@METRES below the knee, e.g. 0.5@0.20 (got '0.5')"},
+      {"simulate participants/p1.yaml --add-mass 0.5",
+       "--add-mass: expected KG@METRES below the knee, e.g. 0.5@0.20 (got '0.5')"},
       {"simulate participants/p1.yaml --add-mass -1@0.2", "--add-mass: expected KG@METRES"},
-      {"sweep studies/burkett2004.yaml --jobs -1", "--jobs: expected 0 (all cores) or a positive whole number (got '-1')"},
-      {"sweep studies/burkett2004.yaml --jobs 1.5", "--jobs: expected 0 (all cores) or a positive whole number (got '1.5')"},
+      {"sweep studies/burkett2004.yaml --jobs -1",
+       "--jobs: expected 0 (all cores) or a positive whole number (got '-1')"},
+      {"sweep studies/burkett2004.yaml --jobs 1.5",
+       "--jobs: expected 0 (all cores) or a positive whole number (got '1.5')"},
       {"sweep studies/burkett2004.yaml --add-mass 1@x", "--add-mass: expected KG@METRES"},
-      {"sweep studies/burkett2004.yaml --uncertainty 0", "--uncertainty: expected a whole number of samples from 1 to 100000 (got '0')"},
-      {"sweep studies/burkett2004.yaml --uncertainty -3", "--uncertainty: expected a whole number of samples from 1 to 100000 (got '-3')"},
-      {"sweep studies/burkett2004.yaml --uncertainty abc", "--uncertainty: expected a whole number of samples from 1 to 100000 (got 'abc')"},
-      {"sweep studies/burkett2004.yaml --uncertainty 2.5", "--uncertainty: expected a whole number of samples from 1 to 100000 (got '2.5')"},
-      {"sweep studies/burkett2004.yaml --uncertainty 100001", "--uncertainty: expected a whole number of samples from 1 to 100000 (got '100001')"},
-      {"sweep studies/burkett2004.yaml --uncertainty 5 --seed -1", "--seed: expected a seed from 0 to 1000000000 (got '-1')"},
-      {"sweep studies/burkett2004.yaml --uncertainty 5 --seed x", "--seed: expected a seed from 0 to 1000000000 (got 'x')"},
-      {"calibrate participants/p1.yaml --target soon --dry-run", "--target: expected model, measured or a positive swing time in seconds, found 'soon'"},
+      {"sweep studies/burkett2004.yaml --uncertainty 0",
+       "--uncertainty: expected a whole number of samples from 1 to 100000 (got '0')"},
+      {"sweep studies/burkett2004.yaml --uncertainty -3",
+       "--uncertainty: expected a whole number of samples from 1 to 100000 (got '-3')"},
+      {"sweep studies/burkett2004.yaml --uncertainty abc",
+       "--uncertainty: expected a whole number of samples from 1 to 100000 (got 'abc')"},
+      {"sweep studies/burkett2004.yaml --uncertainty 2.5",
+       "--uncertainty: expected a whole number of samples from 1 to 100000 (got '2.5')"},
+      {"sweep studies/burkett2004.yaml --uncertainty 100001",
+       "--uncertainty: expected a whole number of samples from 1 to 100000 (got '100001')"},
+      {"sweep studies/burkett2004.yaml --uncertainty 5 --seed -1",
+       "--seed: expected a seed from 0 to 1000000000 (got '-1')"},
+      {"sweep studies/burkett2004.yaml --uncertainty 5 --seed x",
+       "--seed: expected a seed from 0 to 1000000000 (got 'x')"},
+      {"calibrate participants/p1.yaml --target soon --dry-run",
+       "--target: expected model, measured or a positive swing time in seconds, found 'soon'"},
       {"calibrate participants/p1.yaml participants/p2.yaml --target 0.4 --dry-run",
        "--target: applies to one participant file"},
       {"simulate participants/p1.yaml --lowering", "--lowering"},  // no value

@@ -67,7 +67,8 @@ TEST(OutputFolderCli, ASweepWithAFolderInTheWayOfSweepCsvKeepsTheEarlierRunIntac
 TEST(OutputFolderCli, TwoSweepsIntoOneFolderLeaveOnlyTheSecondsFigures) {
   const fs::path dir = freshDir("two-sweeps");
   const fs::path out = dir / "out";
-  ASSERT_EQ(runSwingsim("sweep " + writeStudy(dir, {"p1.yaml", "p2.yaml"}).string() + " --out " + out.string()).code, 0);
+  ASSERT_EQ(runSwingsim("sweep " + writeStudy(dir, {"p1.yaml", "p2.yaml"}).string() + " --out " + out.string()).code,
+            0);
   ASSERT_TRUE(fs::exists(out / "figures" / "P2-swing-time.svg"));
   std::ofstream(out / "my-notes.txt") << "mine";
   ASSERT_EQ(runSwingsim("sweep " + writeStudy(dir, {"p1.yaml"}).string() + " --out " + out.string()).code, 0);
@@ -99,10 +100,11 @@ TEST(OutputFolderCli, SimulateWritesItsCsvStoAndFigureTogetherOrNone) {
   const fs::path dir = freshDir("simulate");
   const fs::path out = dir / "out";
   fs::create_directories(out / "P1-lower000mm.sto");  // the second of the three files cannot be written
-  const auto r = runSwingsim("simulate " + std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml --out " + out.string() +
-                             " --json " + (dir / "r.json").string());
+  const auto r = runSwingsim("simulate " + std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml --out " +
+                             out.string() + " --json " + (dir / "r.json").string());
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("--out " + out.string() + ": a folder is in the way of the output file P1-lower000mm.sto"));
+  EXPECT_THAT(r.output,
+              HasSubstr("--out " + out.string() + ": a folder is in the way of the output file P1-lower000mm.sto"));
   EXPECT_FALSE(fs::exists(out / "P1-lower000mm.csv"));
   EXPECT_FALSE(fs::exists(out / "P1-lower000mm-moments.svg"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));
@@ -120,7 +122,8 @@ TEST(OutputFolderCli, AFitWithAFolderInTheWayOfItsCsvWritesNoFigureAndKeepsTheEa
   fs::create_directories(out / "coefficients.csv");
   const auto r = runSwingsim(fit);
   EXPECT_EQ(r.code, 1) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("--out " + out.string() + ": a folder is in the way of the output file coefficients.csv"));
+  EXPECT_THAT(r.output,
+              HasSubstr("--out " + out.string() + ": a folder is in the way of the output file coefficients.csv"));
   EXPECT_EQ(slurp(out / "report.md"), "earlier report");
   EXPECT_FALSE(fs::exists(out / "mauch-2phase-slow-force.svg"));  // the figures come before the CSV
   EXPECT_EQ(litterIn(dir), std::vector<std::string>{});
@@ -131,7 +134,8 @@ TEST(OutputFolderCli, AFiveThousandCharacterOutIsAnsweredWithItsLength) {
   const std::string longOut = (dir / std::string(5000, 'b')).string();
   const auto r = runSwingsim("simulate " + std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml --out " + longOut);
   EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("--out: path too long (" + std::to_string(longOut.size()) + " characters; this system allows "));
+  EXPECT_THAT(r.output, HasSubstr("--out: path too long (" + std::to_string(longOut.size()) +
+                                  " characters; this system allows "));
   EXPECT_THAT(r.output, HasSubstr(" per path here / 255 per name)"));
   EXPECT_LT(r.output.size(), 1000u) << "the path is quoted whole";
 }

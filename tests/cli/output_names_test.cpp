@@ -67,7 +67,8 @@ TEST(OutputNames, AParticipantNamedWithSeparatorsAndACommaWritesOnlyInsideOut) {
 
 TEST(OutputNames, TwoParticipantsWithOneNameAreAnError) {
   const fs::path dir = freshDir("duplicate");
-  const fs::path study = writeStudy(dir, {writeParticipant(dir, "a.yaml", "P1"), writeParticipant(dir, "b.yaml", "P1")});
+  const fs::path study =
+      writeStudy(dir, {writeParticipant(dir, "a.yaml", "P1"), writeParticipant(dir, "b.yaml", "P1")});
   const auto r = testing::runSwingsim("sweep " + study.string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.output, HasSubstr("study.yaml:3: participants: two participant files have the same name 'P1'"));

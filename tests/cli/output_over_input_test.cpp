@@ -52,8 +52,8 @@ TEST(OutputOverInput, SimulateJsonOntoItsParticipantIsRefused) {
   const std::string participant = (fs::path(model).parent_path() / "p.yaml").string();
   ASSERT_EQ(runSwingsim("import-osim " + model + " --out " + participant).code, 0);
   const std::string before = slurp(participant);
-  const CliRun run = runSwingsim("simulate " + participant + " --out " + (fs::path(model).parent_path() / "out").string() +
-                                 " --json " + participant);
+  const CliRun run = runSwingsim("simulate " + participant + " --out " +
+                                 (fs::path(model).parent_path() / "out").string() + " --json " + participant);
   EXPECT_EQ(run.code, 1) << run.output;
   EXPECT_THAT(run.output, HasSubstr("--json '" + participant + "': would write over the input PARTICIPANT.yaml"));
   EXPECT_THAT(run.output, Not(HasSubstr("swing time")));  // refused before the swing
@@ -61,12 +61,13 @@ TEST(OutputOverInput, SimulateJsonOntoItsParticipantIsRefused) {
 }
 
 TEST(OutputOverInput, SweepJsonOntoItsStudyIsRefused) {
-  const std::string study = writeSuiteTempFile(kSuite, "sweep.yaml",
-                                                "kind: knee-axis-sweep\nname: tiny\nparticipants:\n  - " +
-                                                    std::string(SWINGSIM_SOURCE_DIR) +
-                                                    "/participants/p1.yaml\nlowering:\n  step_m: 0.01\n  max_m: 0.01\n");
+  const std::string study =
+      writeSuiteTempFile(kSuite, "sweep.yaml",
+                         "kind: knee-axis-sweep\nname: tiny\nparticipants:\n  - " + std::string(SWINGSIM_SOURCE_DIR) +
+                             "/participants/p1.yaml\nlowering:\n  step_m: 0.01\n  max_m: 0.01\n");
   const std::string before = slurp(study);
-  const CliRun run = runSwingsim("sweep " + study + " --out " + (suiteTempDir(kSuite) / "sweep-out").string() + " --json " + study);
+  const CliRun run =
+      runSwingsim("sweep " + study + " --out " + (suiteTempDir(kSuite) / "sweep-out").string() + " --json " + study);
   EXPECT_EQ(run.code, 1) << run.output;
   EXPECT_THAT(run.output, HasSubstr("--json '" + study + "': would write over the input STUDY.yaml '" + study + "'"));
   EXPECT_EQ(slurp(study), before);
@@ -76,10 +77,11 @@ TEST(OutputOverInput, SweepOutFolderHoldingItsStudyAsAReportFileIsRefused) {
   // The study is named like the report the sweep writes into --out.
   const fs::path dir = freshTempDir(kSuite, "sweep-folder");
   const std::string study = (dir / "report.md").string();
-  fs::copy_file(writeSuiteTempFile(kSuite, "sweep-for-folder.yaml",
-                                   "kind: knee-axis-sweep\nname: tiny\nparticipants:\n  - " + std::string(SWINGSIM_SOURCE_DIR) +
-                                       "/participants/p1.yaml\nlowering:\n  step_m: 0.01\n  max_m: 0.01\n"),
-                study);
+  fs::copy_file(
+      writeSuiteTempFile(kSuite, "sweep-for-folder.yaml",
+                         "kind: knee-axis-sweep\nname: tiny\nparticipants:\n  - " + std::string(SWINGSIM_SOURCE_DIR) +
+                             "/participants/p1.yaml\nlowering:\n  step_m: 0.01\n  max_m: 0.01\n"),
+      study);
   const std::string before = slurp(study);
   const CliRun run = runSwingsim("sweep " + study + " --out " + dir.string());
   EXPECT_EQ(run.code, 1) << run.output;
@@ -94,16 +96,18 @@ TEST(OutputOverInput, SweepOutFolderHoldingAParticipantOfTheStudyAsAReportFileIs
   std::string p1 = slurp(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml");
   const std::string relativeModel = "knee_model: ../models/";
   ASSERT_NE(p1.find(relativeModel), std::string::npos);
-  p1.replace(p1.find(relativeModel), relativeModel.size(), "knee_model: " + std::string(SWINGSIM_SOURCE_DIR) + "/models/");
+  p1.replace(p1.find(relativeModel), relativeModel.size(),
+             "knee_model: " + std::string(SWINGSIM_SOURCE_DIR) + "/models/");
   std::ofstream(participant) << p1;
-  const std::string study = writeSuiteTempFile(
-      kSuite, "sweep-participant.yaml",
-      "kind: knee-axis-sweep\nname: tiny\nparticipants:\n  - " + participant.string() +
-          "\nlowering:\n  step_m: 0.01\n  max_m: 0.01\n");
+  const std::string study =
+      writeSuiteTempFile(kSuite, "sweep-participant.yaml",
+                         "kind: knee-axis-sweep\nname: tiny\nparticipants:\n  - " + participant.string() +
+                             "\nlowering:\n  step_m: 0.01\n  max_m: 0.01\n");
   const std::string before = slurp(participant.string());
   const CliRun run = runSwingsim("sweep " + study + " --out " + dir.string());
   EXPECT_EQ(run.code, 1) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("--out '" + participant.string() + "': would write over the input STUDY.yaml: participant"));
+  EXPECT_THAT(run.output,
+              HasSubstr("--out '" + participant.string() + "': would write over the input STUDY.yaml: participant"));
   EXPECT_EQ(slurp(participant.string()), before);
 }
 
@@ -119,10 +123,11 @@ TEST(OutputOverInput, DiagnoseAndCompareJsonOntoATrainingRecordOfTheStudyAreRefu
   const fs::path record = dir / "normal.csv";
   const std::string before = slurp(record.string());
   for (const std::string command : {"diagnose", "compare"}) {
-    const CliRun run = runSwingsim(command + " " + study.string() + " --out " + (dir / "out").string() + " --json " +
-                                   record.string());
+    const CliRun run =
+        runSwingsim(command + " " + study.string() + " --out " + (dir / "out").string() + " --json " + record.string());
     EXPECT_EQ(run.code, 1) << command << ": " << run.output;
-    EXPECT_THAT(run.output, HasSubstr("--json '" + record.string() + "': would write over the input STUDY.yaml: train record normal"))
+    EXPECT_THAT(run.output, HasSubstr("--json '" + record.string() +
+                                      "': would write over the input STUDY.yaml: train record normal"))
         << command;
     EXPECT_EQ(slurp(record.string()), before) << command;
   }
@@ -148,7 +153,8 @@ TEST(OutputOverInput, ImportOsimMessagesNameTheModelElementNotTheOutputYaml) {
   const std::string out = (fs::path(model).parent_path() / "o.yaml").string();
   const CliRun run = runSwingsim("import-osim " + model + " --out " + out);
   EXPECT_EQ(run.code, 1) << run.output;
-  EXPECT_THAT(run.output, HasSubstr(model + ":7: <Body name=\"tibia_r\">: <inertia>: expected moments of inertia >= 0"));
+  EXPECT_THAT(run.output,
+              HasSubstr(model + ":7: <Body name=\"tibia_r\">: <inertia>: expected moments of inertia >= 0"));
   EXPECT_THAT(run.output, Not(HasSubstr("o.yaml")));
   EXPECT_FALSE(fs::exists(out));
   // What only the participant file's checks see (a prosthesis heavier than 150 kg) is named
@@ -156,8 +162,9 @@ TEST(OutputOverInput, ImportOsimMessagesNameTheModelElementNotTheOutputYaml) {
   const std::string tiny = copyTinyLeg("heavy");
   const CliRun heavy = runSwingsim("import-osim " + tiny + " --shank-mass-kg 200 --out " + out);
   EXPECT_EQ(heavy.code, 1) << heavy.output;
-  EXPECT_THAT(heavy.output, HasSubstr(tiny + ": the participant imported from it is refused: segments.shank.mass_kg: expected "
-                                      "a segment mass of at most 150 kg"));
+  EXPECT_THAT(heavy.output,
+              HasSubstr(tiny + ": the participant imported from it is refused: segments.shank.mass_kg: expected "
+                               "a segment mass of at most 150 kg"));
   EXPECT_THAT(heavy.output, Not(HasSubstr("o.yaml")));
   EXPECT_FALSE(fs::exists(out));
 }

@@ -6,7 +6,7 @@
 
 #include "../test_build.h"
 
-#define SWINGSIM_RELEASE_ONLY()                                                         \
-  do {                                                                                  \
+#define SWINGSIM_RELEASE_ONLY()                                                                         \
+  do {                                                                                                  \
     if (swingsim::testing::kSanitized) GTEST_SKIP() << "Release pass only (slow under the sanitizers)"; \
   } while (false)

@@ -14,9 +14,9 @@
 
 namespace {
 
+using swingsim::Json;
 using ::testing::HasSubstr;
 using ::testing::Not;
-using swingsim::Json;
 namespace fs = std::filesystem;
 
 TEST(SimulateCommand, MeasuredTrialEndingBeforeTheSwingIsAResult) {
@@ -76,8 +76,9 @@ TEST(SimulateCommand, NoKneePeakPrintsNoneAndWritesNull) {
 
 TEST(SimulateCommand, KneePastItsRangeFailsWithWhatAndWhen) {
   const fs::path out = swingsim::testing::freshTempDir("swingsim_simulate_command_test", "knee-past-range");
-  const auto r = swingsim::testing::runSwingsim("simulate participants/winter.yaml --knee-start initial --knee-rate-deg-s 3000 --out " +
-                                                out.string() + " --json " + (out / "r.json").string());
+  const auto r = swingsim::testing::runSwingsim(
+      "simulate participants/winter.yaml --knee-start initial --knee-rate-deg-s 3000 --out " + out.string() +
+      " --json " + (out / "r.json").string());
   EXPECT_NE(r.code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("swingsim: winter at lowering 0 m: the knee flexion passed 180 deg at "));
   EXPECT_FALSE(fs::exists(out / "r.json"));  // a failed run writes no result
@@ -98,8 +99,10 @@ std::string writeWinterOnARunningSwing() {
   const std::string from = "thigh_kinematics: ../studies/data/winter-swing/swing1.csv";
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos);
-  text.replace(at, from.size(), "thigh_kinematics: {file: " + (root / "tests/data/opensim-running/rajagopal_subject01_run_ik.mot").string() +
-                                    ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: 1, pelvis_tilt: pelvis_tilt, swing: 1}");
+  text.replace(
+      at, from.size(),
+      "thigh_kinematics: {file: " + (root / "tests/data/opensim-running/rajagopal_subject01_run_ik.mot").string() +
+          ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: 1, pelvis_tilt: pelvis_tilt, swing: 1}");
   const auto model = text.find("../models/");
   EXPECT_NE(model, std::string::npos);
   text.replace(model, 10, (root / "models/").string());
@@ -117,19 +120,25 @@ TEST(SimulateCommand, AMeasuredSwingStartsWhereTheRecordDoesAndPrintsNoMarker) {
   const auto r = swingsim::testing::runSwingsim("simulate " + participant + " --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   // The record's knee at toe-off (Rajagopal's runner: 17.9 deg, flexing at 103 deg/s), not the participant's 46.7 deg.
-  EXPECT_THAT(r.output, HasSubstr("toe-off             knee 17.9 deg, 103.5 deg/s (the record's, smoothing-spline value and slope)"));
+  EXPECT_THAT(
+      r.output,
+      HasSubstr("toe-off             knee 17.9 deg, 103.5 deg/s (the record's, smoothing-spline value and slope)"));
   EXPECT_THAT(r.output, HasSubstr("peak knee flexion   132.9 deg at 0.3020 s"));
   EXPECT_THAT(r.output, Not(HasSubstr("e+")));
   EXPECT_THAT(r.output, HasSubstr("samples over 0.4406 s"));  // a time to 0.1 ms, not 16 digits
-  const auto refused = swingsim::testing::runSwingsim("simulate " + participant + " --knee-rate-deg-s 100 --out " + out.string());
+  const auto refused =
+      swingsim::testing::runSwingsim("simulate " + participant + " --knee-rate-deg-s 100 --out " + out.string());
   EXPECT_EQ(refused.code, 1);
-  EXPECT_THAT(refused.output, HasSubstr("--knee-rate-deg-s: under the measured thigh drive the knee starts at the record's"));
+  EXPECT_THAT(refused.output,
+              HasSubstr("--knee-rate-deg-s: under the measured thigh drive the knee starts at the record's"));
   EXPECT_THAT(refused.output, HasSubstr("add --knee-start initial"));
   // The old start (the participant's 46.7 deg at 386 deg/s) flings the knee past 180 deg, the
   // issue's "knee reached 181 deg": now a failed run saying what and when, not a result.
-  const auto initial = swingsim::testing::runSwingsim("simulate " + participant + " --knee-start initial --out " + out.string());
+  const auto initial =
+      swingsim::testing::runSwingsim("simulate " + participant + " --knee-start initial --out " + out.string());
   EXPECT_EQ(initial.code, 1);
-  EXPECT_THAT(initial.output, HasSubstr("the knee flexion passed 180 deg at 0.2518 s, beyond the knee's physical range"));
+  EXPECT_THAT(initial.output,
+              HasSubstr("the knee flexion passed 180 deg at 0.2518 s, beyond the knee's physical range"));
 }
 
 }  // namespace

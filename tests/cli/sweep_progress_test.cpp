@@ -2,13 +2,13 @@
 // each starting with the step name, never a carriage return or two reports run together.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include "../test_build.h"
 
 namespace swingsim {
@@ -21,8 +21,8 @@ TEST(SweepProgress, StderrInAFileGetsOneWholeLinePerReport) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path log = dir / "stderr.txt";
-  const std::string cmd = std::string(SWINGSIM_BINARY) + " sweep studies/burkett2004.yaml --out " + (dir / "out").string() +
-                          " >/dev/null 2>" + log.string();
+  const std::string cmd = std::string(SWINGSIM_BINARY) + " sweep studies/burkett2004.yaml --out " +
+                          (dir / "out").string() + " >/dev/null 2>" + log.string();
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << cmd;
   std::ifstream in(log, std::ios::binary);
@@ -43,7 +43,8 @@ TEST(SweepProgress, StderrInAFileGetsOneWholeLinePerReport) {
     if (!std::regex_match(line, m, progressLine)) {
       if (line.rfind("sweep burkett2004: terminal impact check: ", 0) == 0) continue;  // the step after the sweep
       // The grid announced before anything runs: its swing count and estimated time.
-      if (std::regex_match(line, std::regex(R"(sweep burkett2004: \d+ swings \(.*\), about .* on \d+ threads?)"))) continue;
+      if (std::regex_match(line, std::regex(R"(sweep burkett2004: \d+ swings \(.*\), about .* on \d+ threads?)")))
+        continue;
       EXPECT_EQ(line, "sweep burkett2004: 4 participants (studies/burkett2004.yaml)");
       continue;
     }

@@ -17,24 +17,28 @@
 #include <sstream>
 #include <thread>
 
-#include "run_swingsim.h"
 #include "../test_build.h"
+#include "run_swingsim.h"
 
 namespace {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& name) { return swingsim::testing::freshTempDir("swingsim_sweep_robustness", name); }
+fs::path freshDir(const std::string& name) {
+  return swingsim::testing::freshTempDir("swingsim_sweep_robustness", name);
+}
 using swingsim::testing::slurp;
 
 // A one-participant study; `step` sets how many swings it runs.
 // `extra`: more study lines (e.g. a slow integrator accuracy for the interrupt tests).
-fs::path writeStudy(const fs::path& dir, const std::string& name, double step, double max, const std::string& extra = "") {
+fs::path writeStudy(const fs::path& dir, const std::string& name, double step, double max,
+                    const std::string& extra = "") {
   const fs::path study = dir / (name + ".yaml");
   std::ofstream(study) << "kind: knee-axis-sweep\nname: " << name << "\nparticipants: ["
                        << fs::absolute("participants/p1.yaml").string() << "]\nlowering: {step_m: " << step
-                       << ", max_m: " << max << ", include_published: false}\n" << extra;
+                       << ", max_m: " << max << ", include_published: false}\n"
+                       << extra;
   return study;
 }
 
@@ -83,9 +87,8 @@ TEST(SweepRobustness, SigintKeepsFinishedRowsReadableNamesTheMissingAndWritesNoR
   const fs::path study = writeStudy(dir, "interrupted", 0.001, 0.2, "integrator: {accuracy: 1e-10}\n");
   const fs::path out = dir / "out";
   const fs::path log = dir / "log.txt";
-  const pid_t pid = spawn({"sweep", study.string(), "--out", out.string(), "--jobs", "1", "--json",
-                           (dir / "r.json").string()},
-                          log);
+  const pid_t pid =
+      spawn({"sweep", study.string(), "--out", out.string(), "--jobs", "1", "--json", (dir / "r.json").string()}, log);
   // Wait (up to 5 min under sanitizers on a loaded machine) for the first progress report.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
   while (swingsDone(slurp(log)) == 0 && std::chrono::steady_clock::now() < deadline)
@@ -197,7 +200,8 @@ TEST(SweepRobustness, AnExceptionInAWorkerIsAFailedPointNotAnAbort) {
   const fs::path dir = freshDir("worker_exception");
   const fs::path study = writeStudy(dir, "heavy", 0.1, 0.1);
   const fs::path out = dir / "out";
-  const Finished r = runToEnd({"sweep", study.string(), "--out", out.string(), "--add-mass", "1e300@0.1"}, dir / "log.txt");
+  const Finished r =
+      runToEnd({"sweep", study.string(), "--out", out.string(), "--add-mass", "1e300@0.1"}, dir / "log.txt");
   ASSERT_EQ(r.code, 0) << r.output;
   const std::string csv = slurp(out / "sweep.csv");
   // The plain points ran; every added-mass point failed and says so.

@@ -14,12 +14,11 @@
 
 namespace {
 
-using ::testing::HasSubstr;
 using swingsim::testing::CliRun;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::slurp;
-
+using ::testing::HasSubstr;
 
 std::filesystem::path writeTinyStudy(const std::filesystem::path& dir, const std::string& extra) {
   return swingsim::testing::writeTinySweepStudy(dir, 0.2, extra);

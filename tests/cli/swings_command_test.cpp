@@ -12,18 +12,20 @@
 
 namespace {
 
-using ::testing::HasSubstr;
 using swingsim::Json;
 using swingsim::testing::CliRun;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::slurp;
+using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 const std::string kIk = kRoot + "/studies/data/opensim-subject01/gait2392_subject01_walk1_ik.mot";
 const std::string kGrf = kRoot + "/studies/data/opensim-subject01/subject01_walk1_grf.mot";
 
-fs::path scratch(const std::string& name) { return swingsim::testing::freshTempDir("swingsim_swings_command_test", name); }
+fs::path scratch(const std::string& name) {
+  return swingsim::testing::freshTempDir("swingsim_swings_command_test", name);
+}
 
 TEST(SwingsCommand, ListsForceSwingsThenKinematicOnesWithJson) {
   const auto dir = scratch("good");
@@ -57,11 +59,14 @@ const std::string kRunGrf = kRoot + "/tests/data/opensim-running/rajagopal_grf_r
 
 TEST(SwingsCommand, ARunGetsTheRunningRulesAndEachEventsDisagreement) {
   const auto dir = scratch("run");
-  const CliRun r = runSwingsim("swings " + kRunIk + " --knee-sign 1 --grf " + kRunGrf + " --vertical-force R_ground_force_vy --json " +
-                               (dir / "s.json").string());
+  const CliRun r = runSwingsim("swings " + kRunIk + " --knee-sign 1 --grf " + kRunGrf +
+                               " --vertical-force R_ground_force_vy --json " + (dir / "s.json").string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("gait: running (detected: median stride 0.69 s, under 0.85 s)"));
-  EXPECT_THAT(r.output, HasSubstr("more than 2 frames at this file's 100 Hz: the kinematics alone cannot place an event within 2 frames"));
+  EXPECT_THAT(
+      r.output,
+      HasSubstr(
+          "more than 2 frames at this file's 100 Hz: the kinematics alone cannot place an event within 2 frames"));
   // The right foot's force: toe-off 0.4178 s, heel contact 0.8678 s; the kinematics' 0.3 ms later and 9.1 ms earlier.
   EXPECT_THAT(r.output, HasSubstr("    1     0.4178          0.8678      0.4500  grf           grf"));
   EXPECT_THAT(r.output, HasSubstr("-0.3          +9.1"));
@@ -78,12 +83,16 @@ TEST(SwingsCommand, ARunGetsTheRunningRulesAndEachEventsDisagreement) {
 TEST(SwingsCommand, TheOtherFootsColumnIsRefusedOrGivesWayWhenAsked) {
   const auto dir = scratch("other");
   const std::string json = (dir / "s.json").string();
-  const CliRun refused = runSwingsim("swings " + kIk + " --grf " + kGrf + " --vertical-force 1_ground_force_vy --json " + json);
+  const CliRun refused =
+      runSwingsim("swings " + kIk + " --grf " + kGrf + " --vertical-force 1_ground_force_vy --json " + json);
   EXPECT_EQ(refused.code, 1);
-  EXPECT_THAT(refused.output, HasSubstr("they match the other leg's (hip_flexion_l, knee_angle_l): is 1_ground_force_vy the other foot's force?"));
+  EXPECT_THAT(
+      refused.output,
+      HasSubstr(
+          "they match the other leg's (hip_flexion_l, knee_angle_l): is 1_ground_force_vy the other foot's force?"));
   EXPECT_FALSE(fs::exists(json));
-  const CliRun fallback =
-      runSwingsim("swings " + kIk + " --grf " + kGrf + " --vertical-force 1_ground_force_vy --fallback-to-kinematics --json " + json);
+  const CliRun fallback = runSwingsim("swings " + kIk + " --grf " + kGrf +
+                                      " --vertical-force 1_ground_force_vy --fallback-to-kinematics --json " + json);
   ASSERT_EQ(fallback.code, 0) << fallback.output;
   EXPECT_THAT(fallback.output, HasSubstr("note: events from the kinematics, not the force (fallback_to_kinematics): "));
   EXPECT_THAT(fallback.output, HasSubstr("kinematics    kinematics"));
@@ -98,7 +107,8 @@ TEST(SwingsCommand, BadInputExitsWithAMessageAndWritesNothing) {
   const std::string json = (dir / "s.json").string();
   const CliRun column = runSwingsim("swings " + kIk + " --grf " + kGrf + " --vertical-force force_vy --json " + json);
   EXPECT_EQ(column.code, 1);
-  EXPECT_THAT(column.output, HasSubstr("subject01_walk1_grf.mot:7: force_vy: column is missing (available: time, ground_force_vx"));
+  EXPECT_THAT(column.output,
+              HasSubstr("subject01_walk1_grf.mot:7: force_vy: column is missing (available: time, ground_force_vx"));
   const CliRun side = runSwingsim("swings " + kIk + " --side x");
   EXPECT_EQ(side.code, 2);
   EXPECT_THAT(side.output, HasSubstr("expected one of r, l (got 'x')"));

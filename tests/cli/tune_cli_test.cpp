@@ -33,9 +33,11 @@ double numberAfter(const std::string& text, const std::string& label) {
 TEST(TuneCli, TheTunedFilesRerunBySimulateGiveTheReportedSwing) {
   SWINGSIM_RELEASE_ONLY();
   const auto dir = scratch("rerun");
-  const auto tune = runSwingsim("tune " + kStudy + " --out " + (dir / "out").string() + " --json " + (dir / "t.json").string());
+  const auto tune =
+      runSwingsim("tune " + kStudy + " --out " + (dir / "out").string() + " --json " + (dir / "t.json").string());
   ASSERT_EQ(tune.code, 0) << tune.output;
-  for (const char* name : {"tuned-knee.yaml", "tuning.md", "tuning.json", "tradeoff.svg"}) EXPECT_TRUE(fs::exists(dir / "out" / name));
+  for (const char* name : {"tuned-knee.yaml", "tuning.md", "tuning.json", "tradeoff.svg"})
+    EXPECT_TRUE(fs::exists(dir / "out" / name));
   const Json j = Json::parse(slurp(dir / "t.json"));
   EXPECT_EQ(slurp(dir / "t.json"), slurp(dir / "out" / "tuning.json"));
   const std::string command = j["simulate_command"];
@@ -56,7 +58,8 @@ TEST(TuneCli, TheTunedFilesRerunBySimulateGiveTheReportedSwing) {
 TEST(TuneCli, InterruptedItWritesNothingAndPrintsTheBestPointSoFar) {
   const auto dir = scratch("stop");
   ::setenv("SWINGSIM_TEST_STOP_AFTER_SWINGS", "4", 1);
-  const auto r = runSwingsim("tune " + kStudy + " --jobs 1 --out " + (dir / "out").string() + " --json " + (dir / "t.json").string());
+  const auto r = runSwingsim("tune " + kStudy + " --jobs 1 --out " + (dir / "out").string() + " --json " +
+                             (dir / "t.json").string());
   ::unsetenv("SWINGSIM_TEST_STOP_AFTER_SWINGS");
   EXPECT_EQ(r.code, 1) << r.output;
   EXPECT_NE(r.output.find("nothing in " + (dir / "out").string() + " was written"), std::string::npos) << r.output;
@@ -69,11 +72,13 @@ TEST(TuneCli, ABadStudyIsRefusedWithFileLineKeyAndExitCode1) {
   const auto dir = scratch("bad");
   const std::string study = swingsim::testing::writeSuiteTempFile(
       "swingsim_tune_cli_test", "bad.yaml",
-      "kind: knee-tuning\nparticipant: " + kRoot + "/participants/p1.yaml\nknobs:\n  - key: lowering_m\n    range: [0.04, 0.01]\n"
-      "targets:\n  swing_time_s: {value: sound_limb}\n");
+      "kind: knee-tuning\nparticipant: " + kRoot +
+          "/participants/p1.yaml\nknobs:\n  - key: lowering_m\n    range: [0.04, 0.01]\n"
+          "targets:\n  swing_time_s: {value: sound_limb}\n");
   const auto r = runSwingsim("tune " + study + " --out " + (dir / "out").string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.output.find("bad.yaml:5: knobs[0].range: expected min < max (got 0.04 >= 0.01)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.yaml:5: knobs[0].range: expected min < max (got 0.04 >= 0.01)"), std::string::npos)
+      << r.output;
   EXPECT_FALSE(fs::exists(dir / "out" / "tuning.md"));
 }
 
@@ -85,7 +90,8 @@ TEST(TuneCli, HelpListsTheCommandAndItsOptionsAndABadJobsIsAUsageError) {
   EXPECT_NE(runSwingsim("--help").output.find("tune"), std::string::npos);
   const auto help = runSwingsim("tune --help");
   EXPECT_EQ(help.code, 0);
-  for (const char* flag : {"STUDY.yaml", "--out", "--json", "--jobs"}) EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
+  for (const char* flag : {"STUDY.yaml", "--out", "--json", "--jobs"})
+    EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
   const auto bad = runSwingsim("tune " + kStudy + " --jobs -1");
   EXPECT_EQ(bad.code, 2) << bad.output;
 }

@@ -20,19 +20,19 @@
 #include <string>
 #include <vector>
 
-#include "run_swingsim.h"
 #include "../test_build.h"
+#include "run_swingsim.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
-using ::testing::Not;
 using swingsim::testing::CliRun;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::ScopedEnv;
 using swingsim::testing::slurp;
+using ::testing::HasSubstr;
+using ::testing::Not;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 const std::string kSuite = "swingsim-uncertainty-shards";
@@ -58,8 +58,9 @@ std::string uncertaintyTables(const std::string& output) {
 
 // Runs `swingsim ARGS` with stdout and stderr to files of `dir`; returns the exit code.
 int runSeparated(const std::string& args, const fs::path& dir, const std::string& name) {
-  const int status = std::system((std::string(SWINGSIM_BINARY) + " " + args + " > " + (dir / (name + ".stdout")).string() +
-                                  " 2> " + (dir / (name + ".stderr")).string()).c_str());
+  const int status = std::system((std::string(SWINGSIM_BINARY) + " " + args + " > " +
+                                  (dir / (name + ".stdout")).string() + " 2> " + (dir / (name + ".stderr")).string())
+                                     .c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -78,8 +79,8 @@ struct SingleRun {
 // The uninterrupted, unsharded run everything is compared with.
 SingleRun runSingle(const fs::path& dir, const fs::path& study) {
   SingleRun s{dir / "single", dir / "single.json", "", ""};
-  const int code = runSeparated("sweep " + study.string() + " --uncertainty 2 --seed 5 --jobs 2 --out " + s.out.string() +
-                                    " --json " + s.json.string(),
+  const int code = runSeparated("sweep " + study.string() + " --uncertainty 2 --seed 5 --jobs 2 --out " +
+                                    s.out.string() + " --json " + s.json.string(),
                                 dir, "single");
   EXPECT_EQ(code, 0) << slurp(dir / "single.stderr");
   s.stdoutText = slurp(dir / "single.stdout");
@@ -94,8 +95,8 @@ TEST(UncertaintyResume, InterruptedRunKeepsItsSwingsAndTheSameCommandResumesToTh
   const auto study = writeTinyStudy(dir);
   const SingleRun single = runSingle(dir, study);
   const fs::path out = dir / "out", json = dir / "out.json", partial = out / "uncertainty.partial.json";
-  const std::string command = "sweep " + study.string() + " --uncertainty 2 --seed 5 --out " + out.string() +
-                              " --json " + json.string();
+  const std::string command =
+      "sweep " + study.string() + " --uncertainty 2 --seed 5 --out " + out.string() + " --json " + json.string();
   constexpr int kStopAfter = 30;  // swings; fewer than the one-at-a-time runs alone
   {
     ScopedEnv stop("SWINGSIM_TEST_STOP_AFTER_SWINGS", std::to_string(kStopAfter));
@@ -203,8 +204,8 @@ TEST(UncertaintyShards, WrongShardSetsAreRefusedAndNothingIsWritten) {
   const auto study = writeTinyStudy(dir);
   const fs::path shards = dir / "shards", other = dir / "other";
   auto shard = [&](const std::string& spec, const std::string& seed, const fs::path& out, int jobs = 2) {
-    return runSwingsim("sweep " + study.string() + " --uncertainty 2 --seed " + seed + " --shard " + spec +
-                       " --jobs " + std::to_string(jobs) + " --out " + out.string());
+    return runSwingsim("sweep " + study.string() + " --uncertainty 2 --seed " + seed + " --shard " + spec + " --jobs " +
+                       std::to_string(jobs) + " --out " + out.string());
   };
   for (const char* spec : {"0/3", "1/3", "2/3"}) ASSERT_EQ(shard(spec, "5", shards).code, 0) << spec;
   ASSERT_EQ(shard("1/3", "6", other).code, 0);  // another seed
@@ -222,13 +223,15 @@ TEST(UncertaintyShards, WrongShardSetsAreRefusedAndNothingIsWritten) {
   EXPECT_THAT(missing.output, HasSubstr("merge: expected all 3 shards of tiny (K = 0 to 2), found 2; missing K = 1"));
   const CliRun duplicate = merge(s0 + " " + s1 + " " + s0 + " " + s2);
   EXPECT_EQ(duplicate.code, 1);
-  EXPECT_THAT(duplicate.output, HasSubstr(s0 + ": the same file as " + s0 + " (arguments 1 and 3): give each shard file once"));
+  EXPECT_THAT(duplicate.output,
+              HasSubstr(s0 + ": the same file as " + s0 + " (arguments 1 and 3): give each shard file once"));
   // A copy of a shard is another file, with the same shard in it.
   const std::string copy = (dir / "copy-of-shard-0.json").string();
   fs::copy_file(s0, copy, fs::copy_options::overwrite_existing);
   const CliRun copied = merge(s0 + " " + s1 + " " + copy + " " + s2);
   EXPECT_EQ(copied.code, 1);
-  EXPECT_THAT(copied.output, HasSubstr(copy + ": shard.index: expected each shard once, found shard 0/3 again (also in " + s0));
+  EXPECT_THAT(copied.output,
+              HasSubstr(copy + ": shard.index: expected each shard once, found shard 0/3 again (also in " + s0));
   const CliRun seed = merge(s0 + " " + seed6 + " " + s2);
   EXPECT_EQ(seed.code, 1);
   EXPECT_THAT(seed.output, HasSubstr(seed6 + ": seed: expected 5 (the first shard, " + s0 + "), found 6"));
@@ -303,11 +306,12 @@ TEST(SlurmExample, ShardsRunLocallyMergeToTheSingleRun) {
                           " SWINGSIM=" + std::string(SWINGSIM_BINARY) + " ";
   for (int k = 0; k < 3; ++k) {
     const int code = std::system((env + "SLURM_ARRAY_TASK_ID=" + std::to_string(k) + " bash " + kRoot +
-                                  "/examples/slurm/shard.sbatch > " + (dir / "shard.log").string() + " 2>&1").c_str());
+                                  "/examples/slurm/shard.sbatch > " + (dir / "shard.log").string() + " 2>&1")
+                                     .c_str());
     ASSERT_EQ(code, 0) << slurp(dir / "shard.log");
   }
-  const int merged = std::system((env + "bash " + kRoot + "/examples/slurm/merge.sbatch > " + (dir / "merge.log").string() +
-                                  " 2>&1").c_str());
+  const int merged = std::system(
+      (env + "bash " + kRoot + "/examples/slurm/merge.sbatch > " + (dir / "merge.log").string() + " 2>&1").c_str());
   ASSERT_EQ(merged, 0) << slurp(dir / "merge.log");
   EXPECT_EQ(slurp(out / "sweep.json"), slurp(single.json));
   EXPECT_EQ(slurp(out / "report.md"), slurp(single.out / "report.md"));
@@ -321,7 +325,8 @@ TEST(SlurmExample, ShardsRunLocallyMergeToTheSingleRun) {
   std::ofstream(bin / "sbatch") << "#!/bin/sh\necho \"$@\" >> " << log.string() << "\necho 4242\n";
   fs::permissions(bin / "sbatch", fs::perms::owner_all);
   const int submitted = std::system(("PATH=" + bin.string() + ":$PATH " + env + "bash " + kRoot +
-                                     "/examples/slurm/submit.sh > " + (dir / "submit.log").string() + " 2>&1").c_str());
+                                     "/examples/slurm/submit.sh > " + (dir / "submit.log").string() + " 2>&1")
+                                        .c_str());
   ASSERT_EQ(submitted, 0) << slurp(dir / "submit.log");
   const std::string calls = slurp(log);
   EXPECT_THAT(calls, HasSubstr("--array=0-2 "));

@@ -30,7 +30,9 @@ inline double childCpuSecondsOf(const std::function<void()>& f) {
   const auto now = [] {
     rusage u{};
     getrusage(RUSAGE_CHILDREN, &u);
-    const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+    const auto seconds = [](const timeval& t) {
+      return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+    };
     return seconds(u.ru_utime) + seconds(u.ru_stime);
   };
   const double start = now();

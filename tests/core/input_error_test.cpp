@@ -15,7 +15,8 @@ TEST(InputError, NumbersAreTheShortestTextThatReadsBackTheSame) {
   EXPECT_EQ(formatNumber(1000), "1000");
   EXPECT_EQ(formatNumber(-2.5), "-2.5");
   EXPECT_EQ(formatNumber(0.1 + 0.2), "0.30000000000000004") << "not rounded to a different number";
-  for (const double v : {1e-300, 123456.789, 2.0 / 3, 9.9e37}) EXPECT_EQ(std::strtod(formatNumber(v).c_str(), nullptr), v);
+  for (const double v : {1e-300, 123456.789, 2.0 / 3, 9.9e37})
+    EXPECT_EQ(std::strtod(formatNumber(v).c_str(), nullptr), v);
 }
 
 TEST(InputError, TimesAreRoundedToATenthOfAMillisecond) {

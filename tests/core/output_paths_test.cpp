@@ -43,16 +43,18 @@ TEST(OutputPaths, AWritablePlaceOrAFolderThatCanBeMadeIsFine) {
 
 TEST(OutputPaths, ADirectoryAsAFileOrAFileAsAFolderIsNamed) {
   const std::string dir = scratch().string();
-  EXPECT_EQ(findOutputFileProblem(dir), "expected a file to write, got the directory '" + dir + "' (give a file name inside it)");
+  EXPECT_EQ(findOutputFileProblem(dir),
+            "expected a file to write, got the directory '" + dir + "' (give a file name inside it)");
   const std::string file = writeFile("plain.txt").string();
   EXPECT_EQ(findOutputFolderProblem(file), "expected an output folder, got the existing file '" + file + "'");
-  EXPECT_EQ(findOutputFileProblem(file + "/below.csv"),
-            "cannot write '" + file + "/below.csv': '" + file + "' is not a folder, so nothing can be written below it");
+  EXPECT_EQ(findOutputFileProblem(file + "/below.csv"), "cannot write '" + file + "/below.csv': '" + file +
+                                                            "' is not a folder, so nothing can be written below it");
   try {
     checkOutputFolder(file, "study.yaml: output_dir");
     ADD_FAILURE() << "a file taken for a folder";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "study.yaml: output_dir: expected an output folder, got the existing file '" + file + "'");
+    EXPECT_EQ(std::string(e.what()),
+              "study.yaml: output_dir: expected an output folder, got the existing file '" + file + "'");
   }
 }
 
@@ -83,7 +85,8 @@ TEST(OutputPaths, TheSameFileUnderTwoNamesIsRefusedWithBothArguments) {
     checkDistinctFiles({b.string(), a.string(), dotted}, "inputs must differ");
     ADD_FAILURE() << "a file given twice";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), dotted + ": the same file as " + a.string() + " (arguments 2 and 3): inputs must differ");
+    EXPECT_EQ(std::string(e.what()),
+              dotted + ": the same file as " + a.string() + " (arguments 2 and 3): inputs must differ");
   }
   EXPECT_THROW(checkDistinctFiles({link.string(), a.string()}, "why"), InputError) << "a link to the same file";
 }

@@ -58,7 +58,8 @@ TEST(OutputSet, AFolderInTheWayOfOneFileKeepsTheEarlierRunWhole) {
       staged.commit();
       FAIL() << "committed over a folder";
     } catch (const RunError& e) {
-      EXPECT_THAT(e.what(), HasSubstr("--out " + dir.string() + ": a folder is in the way of the output file sweep.csv"));
+      EXPECT_THAT(e.what(),
+                  HasSubstr("--out " + dir.string() + ": a folder is in the way of the output file sweep.csv"));
       EXPECT_THAT(e.what(), HasSubstr("nothing in the folder was changed"));
       EXPECT_THAT(e.what(), Not(HasSubstr(".staging")));
     }
@@ -74,7 +75,8 @@ TEST(OutputSet, ASecondRunRemovesTheFirstRunsExtraFiguresButNoUserFile) {
   std::ofstream(dir / "notes.txt") << "mine";
   {
     StagedOutput first(dir.string(), OutputSetKind::kWholeRun);
-    for (const char* name : {"report.md", "figures/P1-swing-time.svg", "figures/P2-swing-time.svg"}) first.add(name, "1");
+    for (const char* name : {"report.md", "figures/P1-swing-time.svg", "figures/P2-swing-time.svg"})
+      first.add(name, "1");
     first.commit();
   }
   std::ofstream(dir / "figures" / "my-sketch.svg") << "mine";

@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <regex>
 #include <sstream>
-#include <chrono>
-#include <thread>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace swingsim {
@@ -177,7 +177,8 @@ TEST(ProgressReporterRate, AResumedRunCountsOnlyItsOwnSwingsInTheRate) {
   ASSERT_EQ(lines.size(), 2u) << c.text();
   EXPECT_THAT(lines[0], ::testing::Not(HasSubstr("left")));  // nothing done in this run yet
   std::smatch m;
-  const std::regex rate(R"(uncertainty demo: 1000/2000 swings \(50 %\), [0-9.]+ s, ([0-9]+) swings/s, ([0-9]+) s left)");
+  const std::regex rate(
+      R"(uncertainty demo: 1000/2000 swings \(50 %\), [0-9.]+ s, ([0-9]+) swings/s, ([0-9]+) s left)");
   ASSERT_TRUE(std::regex_match(lines[1], m, rate)) << lines[1];
   EXPECT_LE(std::stoi(m[1].str()), 1000) << lines[1];
   EXPECT_GE(std::stoi(m[2].str()), 1) << lines[1];  // 1000 swings left at <= 1000 swings/s

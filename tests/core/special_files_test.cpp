@@ -58,7 +58,8 @@ TEST(SpecialFiles, MissingFilesAndDirectoriesAreNamed) {
   const fs::path dir = scratch("missing");
   EXPECT_EQ(errorOf([&] { readWithoutBlocking((dir / "none.yaml").string(), 10); }),
             (dir / "none.yaml").string() + ": cannot open file (No such file or directory)");
-  EXPECT_EQ(errorOf([&] { readWithoutBlocking(dir.string(), 10); }), dir.string() + ": is a directory (expected a file)");
+  EXPECT_EQ(errorOf([&] { readWithoutBlocking(dir.string(), 10); }),
+            dir.string() + ": is a directory (expected a file)");
   EXPECT_THROW(readWithoutBlocking(dir.string(), 10), InputError);
 }
 

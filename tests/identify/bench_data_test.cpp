@@ -1,5 +1,5 @@
-#include "io/bench_csv.h"
 #include "identify/bench_data.h"
+#include "io/bench_csv.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -58,7 +58,8 @@ TEST(BenchData, NoiseIsReproducibleAndStandardNormal) {
 }
 
 TEST(BenchData, ReadsAFileAndIgnoresExtraColumns) {
-  const auto d = readBenchCsv(writeTemp("ok.csv", "time_s,position_m,force_N,note\n0,0,1,1\n0.1,0.01,2,1\n0.2,0.02,3,1\n"), 3);
+  const auto d =
+      readBenchCsv(writeTemp("ok.csv", "time_s,position_m,force_N,note\n0,0,1,1\n0.1,0.01,2,1\n0.2,0.02,3,1\n"), 3);
   EXPECT_EQ(d.stem, "ok");
   EXPECT_NEAR(d.velocity[1], 0.1, 1e-12);
 }

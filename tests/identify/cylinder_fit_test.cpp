@@ -1,14 +1,14 @@
-#include "io/bench_csv.h"
 #include "identify/cylinder_fit.h"
+#include "io/bench_csv.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "numerics/metrics.h"
 #include "core/input_error.h"
 #include "mauch_bench_fixture.h"
+#include "numerics/metrics.h"
 
 namespace swingsim {
 namespace {
@@ -95,7 +95,7 @@ TEST(CylinderFit, ProfilingSwitchesFindsTheGeneratingWidths) {
   EXPECT_TRUE(fit.switchesFitted);
   EXPECT_NEAR(fit.params.switches.positionWidth, truth.switches.positionWidth, 1e-9 * truth.switches.positionWidth);
   EXPECT_NEAR(fit.params.switches.velocityWidth, truth.switches.velocityWidth, 1e-9 * truth.switches.velocityWidth);
-  EXPECT_GT(fit.trainRmseAtStart, 1.0);  // wrong widths cost newtons ...
+  EXPECT_GT(fit.trainRmseAtStart, 1.0);         // wrong widths cost newtons ...
   EXPECT_LT(fit.regression.residualRms, 1e-6);  // ... the right ones fit exactly
 }
 

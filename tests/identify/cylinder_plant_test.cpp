@@ -1,5 +1,5 @@
-#include "io/bench_csv.h"
 #include "identify/cylinder_plant.h"
+#include "io/bench_csv.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <random>
 
-#include "identify/synthetic_bench.h"
 #include "core/input_error.h"
+#include "identify/synthetic_bench.h"
 #include "io/knee_model_loader.h"
 
 namespace swingsim {
@@ -122,13 +122,16 @@ void expectRecovered(const Hidden& h, std::uint64_t seed) {
   for (const auto& c : first.candidates) {
     if (c.effect != h.effect) continue;
     for (const auto& [name, truth] : h.parameters) {
-      const auto p = std::find_if(c.parameters.begin(), c.parameters.end(), [&](const EffectParameter& q) { return q.name == name; });
+      const auto p = std::find_if(c.parameters.begin(), c.parameters.end(),
+                                  [&](const EffectParameter& q) { return q.name == name; });
       ASSERT_NE(p, c.parameters.end()) << name;
       const bool grid = name == "width_m_per_s" || name == "time_constant_s";
       const double w = grid ? 1.0 : kCheckedIntervalWidening;
       const double lower = p->value - w * (p->value - p->lower), upper = p->value + w * (p->upper - p->value);
-      EXPECT_LE(lower, truth) << h.effect << " " << name << " = " << p->value << " [" << p->lower << ", " << p->upper << "]";
-      EXPECT_GE(upper, truth) << h.effect << " " << name << " = " << p->value << " [" << p->lower << ", " << p->upper << "]";
+      EXPECT_LE(lower, truth) << h.effect << " " << name << " = " << p->value << " [" << p->lower << ", " << p->upper
+                              << "]";
+      EXPECT_GE(upper, truth) << h.effect << " " << name << " = " << p->value << " [" << p->lower << ", " << p->upper
+                              << "]";
     }
   }
   const Comparison after = CylinderPlant(h.base, d.train, d.validate).compare(*dg.final.model);
@@ -176,8 +179,8 @@ TEST(CylinderDiagnosis, BlindDrawIsRecovered) {
   constexpr std::uint64_t kMasterSeed = 20261123;
   std::uint64_t master = kMasterSeed;
   if (const char* env = std::getenv("SWINGSIM_BLIND_SEED")) master = std::strtoull(env, nullptr, 10);
-  SCOPED_TRACE("blind test master seed " + std::to_string(master) + " (replay: SWINGSIM_BLIND_SEED=" +
-               std::to_string(master) + ")");
+  SCOPED_TRACE("blind test master seed " + std::to_string(master) +
+               " (replay: SWINGSIM_BLIND_SEED=" + std::to_string(master) + ")");
   std::mt19937_64 rng(master);
   const auto lib = effectNames(PlantKind::kCylinder);
   constexpr int kDraws = 2;
@@ -193,7 +196,8 @@ TEST(CylinderDiagnosis, BlindDrawIsRecovered) {
     for (int it = 0; it < 8 && effect != "switch_delay"; ++it)
       scale *= target / calcCylinderEffectRms(makeHidden(effect, scale).truth, effectId(effect), probe);
     if (effect == "switch_delay") scale = (rng() % 2) ? 1.0 : 2.0;
-    std::printf("  blind draw %d: %s x %.3g, seed %llu\n", k, effect.c_str(), scale, static_cast<unsigned long long>(seed));
+    std::printf("  blind draw %d: %s x %.3g, seed %llu\n", k, effect.c_str(), scale,
+                static_cast<unsigned long long>(seed));
     expectRecovered(makeHidden(effect, scale), seed);
   }
 }
@@ -214,7 +218,8 @@ TEST(CylinderDiagnosis, ResidualStructureOutsideTheLibraryIsReportedNotClaimed) 
   // The verdict says so in words: not explained, where it remains, what was tried.
   EXPECT_FALSE(dg.explained);
   EXPECT_EQ(dg.verdict.rfind("NOT explained", 0), 0u) << dg.verdict;
-  EXPECT_NE(dg.verdict.find("Tried on top of the final model: inertia, orifice_quadratic"), std::string::npos) << dg.verdict;
+  EXPECT_NE(dg.verdict.find("Tried on top of the final model: inertia, orifice_quadratic"), std::string::npos)
+      << dg.verdict;
 }
 
 TEST(CylinderDiagnosis, AugmentedModelRoundTripsThroughTheModelYamlAndActsAsAKneeLaw) {
@@ -229,7 +234,8 @@ TEST(CylinderDiagnosis, AugmentedModelRoundTripsThroughTheModelYamlAndActsAsAKne
   mauch.cylinder = h.truth;
   mauch.hasCylinderEffects = true;
   MauchDialSetting setting{mauch.flexionDial, mauch.extensionDial, {}};
-  for (int i = 0; i < h.truth.phases; ++i) setting.rows.push_back({i + 1, h.truth.coefficients[static_cast<std::size_t>(i)]});
+  for (int i = 0; i < h.truth.phases; ++i)
+    setting.rows.push_back({i + 1, h.truth.coefficients[static_cast<std::size_t>(i)]});
   mauch.settings = {setting};
   const std::string yaml = formatKneeModelYaml(spec);
   const KneeModel km = parseKneeModel(yaml, "roundtrip.yaml");

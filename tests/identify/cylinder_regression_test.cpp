@@ -4,13 +4,11 @@
 
 #include <cmath>
 
-
 #include <limits>
 #include "mauch_bench_fixture.h"
 
 namespace swingsim {
 namespace {
-
 
 using namespace mauch_bench_fixture;
 

@@ -25,16 +25,16 @@
 #include "identify/cylinder_plant.h"
 #include "identify/diagnosis_engine.h"
 #include "io/bench_csv.h"
-#include "sweep_calibration_cases.h"
 #include "study/diagnosed_model_writer.h"
 #include "study/diagnosis_study.h"
+#include "sweep_calibration_cases.h"
 
 namespace swingsim::calibration {
 
 namespace fs = std::filesystem;
 
-constexpr double kSwingNoiseDeg = 0.5;   // as the swing demo and IndependentSwingDiagnosis
-constexpr double kBenchNoiseN = 15.0;    // as IndependentCylinderDiagnosis
+constexpr double kSwingNoiseDeg = 0.5;           // as the swing demo and IndependentSwingDiagnosis
+constexpr double kBenchNoiseN = 15.0;            // as IndependentCylinderDiagnosis
 constexpr std::uint64_t kCylinderTruthSeed = 7;  // drawTruth(4, 7): switch constants away from our defaults
 
 /// One hidden effect (or none) at one size, and how to diagnose one noise seed of it.
@@ -85,7 +85,7 @@ struct SeedOutcome {
 struct CaseSummary {
   int seeds = 0, named = 0, other = 0, scored = 0, covered = 0, oneSided = 0;
   int beforeNamed = 0, beforeOther = 0;  ///< SeedOutcome::beforeNamedFirst / beforeOtherNamed
-  double bias = NAN, sd = NAN;  ///< mean estimate - truth, and the estimates' SD, over the scored seeds
+  double bias = NAN, sd = NAN;           ///< mean estimate - truth, and the estimates' SD, over the scored seeds
 };
 
 // A temporary folder unique to this process and tag.
@@ -126,7 +126,8 @@ inline Diagnosis diagnoseSwing(const independent::SwingTruth& truth, const indep
   {
     std::ofstream study(dir / "study.yaml");
     study << "kind: swing-diagnosis\nname: calibration-" << tag << "\nparticipant: participant.yaml\n"
-          << "base_model: knee.yaml\n" << split << studyTail;
+          << "base_model: knee.yaml\n"
+          << split << studyTail;
   }
   const DiagnosisStudy study = loadDiagnosisStudy((dir / "study.yaml").string());
   const auto plant = loadDiagnosisPlant(study, 8);
@@ -209,10 +210,14 @@ inline std::vector<CalibrationCase> calibrationCases() {
       swingCase("", "", 0, "none", nullptr),
       // On a table linear in speed with the same resistance both ways a viscous term is the
       // knee model scale itself; with extension at half the flexion resistance it is not.
-      swingCase("knee_viscous_damping", "damping_Nm_s_per_rad", 0.15, "+0.15 N m s/rad (extension factor 0.5)",
-                [](ST& t) { t.extraViscous = 0.15; }, [](ST& t) { t.extensionFactor = 0.5; }),
+      swingCase(
+          "knee_viscous_damping", "damping_Nm_s_per_rad", 0.15, "+0.15 N m s/rad (extension factor 0.5)",
+          [](ST& t) { t.extraViscous = 0.15; }, [](ST& t) { t.extensionFactor = 0.5; }),
       swingCase("knee_coulomb_friction", "moment_Nm", 0.5, "0.5 N m, tanh 0.3 rad/s",
-                [](ST& t) { t.coulomb = 0.5; t.coulombRate = 0.3; }),
+                [](ST& t) {
+                  t.coulomb = 0.5;
+                  t.coulombRate = 0.3;
+                }),
       swingCase("extension_assist_spring", "stiffness_Nm_per_rad", 1.5, "1.5 N m/rad",
                 [](ST& t) { t.assistStiffness = 1.5; }),
       swingCase("toe_off_velocity", "knee_rate_deg_s", 60.0, "knee 60 deg/s at toe-off",
@@ -220,22 +225,34 @@ inline std::vector<CalibrationCase> calibrationCases() {
       swingCase("hip_moment_scale", "scale", 1.2, "drive 1.2 x the recorded moment",
                 [](ST& t) { t.hipDriveGain = 1.2; }),
       swingCase("shank_mass_scale", "scale", 1.3, "shank mass and inertia x 1.3",
-                [](ST& t) { t.shank.mass *= 1.3; t.shank.inertia *= 1.3; }),
+                [](ST& t) {
+                  t.shank.mass *= 1.3;
+                  t.shank.inertia *= 1.3;
+                }),
       swingCase("below_knee_mass_scale", "scale", 1.3, "shank and foot x 1.3",
                 [](ST& t) {
-                  for (auto* s : {&t.shank, &t.foot}) { s->mass *= 1.3; s->inertia *= 1.3; }
+                  for (auto* s : {&t.shank, &t.foot}) {
+                    s->mass *= 1.3;
+                    s->inertia *= 1.3;
+                  }
                 }),
       // Outside the library (issue 54's near misses): no library effect is the truth, so any
       // acceptance counts as "other named". Only the fastest swing held out.
-      swingCase("outside:stiffening", "", 0, "20 N m/rad beyond 55 deg; train normal+slow, validate fast",
-                [](ST& t) { t.stiffening = 20.0; }, nullptr, kFastHeldOut),
-      swingCase("outside:stiffening", "", 0, "20 N m/rad beyond 55 deg; train normal, validate fast",
-                [](ST& t) { t.stiffening = 20.0; }, nullptr, "train: [normal.csv]\nvalidate: [fast.csv]\n"),
-      swingCase("outside:cushion", "", 0, "1.5 N m s/rad extending below 20 deg; train normal+slow, validate fast",
-                [](ST& t) { t.cushionDamping = 1.5; }, nullptr, kFastHeldOut),
+      swingCase(
+          "outside:stiffening", "", 0, "20 N m/rad beyond 55 deg; train normal+slow, validate fast",
+          [](ST& t) { t.stiffening = 20.0; }, nullptr, kFastHeldOut),
+      swingCase(
+          "outside:stiffening", "", 0, "20 N m/rad beyond 55 deg; train normal, validate fast",
+          [](ST& t) { t.stiffening = 20.0; }, nullptr, "train: [normal.csv]\nvalidate: [fast.csv]\n"),
+      swingCase(
+          "outside:cushion", "", 0, "1.5 N m s/rad extending below 20 deg; train normal+slow, validate fast",
+          [](ST& t) { t.cushionDamping = 1.5; }, nullptr, kFastHeldOut),
       cylinderCase("", "", 0, "none (drawn switches)", nullptr),
       cylinderCase("coulomb_friction", "force_N", 60.0, "60 N, tanh 7 mm/s",
-                   [](MT& t) { t.coulomb = 60.0; t.coulombWidth = 0.007; }),
+                   [](MT& t) {
+                     t.coulomb = 60.0;
+                     t.coulombWidth = 0.007;
+                   }),
       cylinderCase("orifice_quadratic", "coefficient_Ns2_per_m2", 4000.0, "4000 N s^2/m^2",
                    [](MT& t) { t.orifice = 4000.0; }),
       cylinderCase("position_dependent_damping", "coefficient_Ns_per_m2", 1.5e5, "1.5e5 N s/m^2",
@@ -249,22 +266,25 @@ inline std::vector<CalibrationCase> calibrationCases() {
       cylinderCase("switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms", [](MT& t) { t.latchRate = 40.0; }),
       // The same latch on a drawn truth whose training record shows it (with one training
       // speed, half the drawn truths hide a slow latch: IndependentCylinderDiagnosis).
-      cylinderCase("switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms, truth drawn with seed 42",
-                   [](MT& t) { t.latchRate = 40.0; }, 4, 42),
+      cylinderCase(
+          "switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms, truth drawn with seed 42",
+          [](MT& t) { t.latchRate = 40.0; }, 4, 42),
       // The same truth trained on two speeds (normal and fast, validated on slow): one record
       // leaves the switch widths and xhy loose and the latch rate's interval too narrow
       // (docs/diagnosis.md); a second speed pins them.
-      cylinderCase("switch_delay", "latch_rate_per_s", 40.0, "latch 25 ms, truth drawn with seed 42, trained on normal and fast",
+      cylinderCase("switch_delay", "latch_rate_per_s", 40.0,
+                   "latch 25 ms, truth drawn with seed 42, trained on normal and fast",
                    [](MT& t) { t.latchRate = 40.0; }, 4, 42, {"normal", "fast"}),
       // A 4-phase truth diagnosed from a 2-phase base: inside hyperextension both give the 4th
       // phase's law alone (the base phases are gated off by S8), so the candidate's f, k, c are
       // Chien Table 1's phase 4 term for term; outside it the base's phase 2 stands for the
       // truth's phases 2 and 3, whose misfit the transition (S8 near 1/2) shares.
-      cylinderCase("hyperextension_phase", "f_N", -488.12, "4-phase truth, 2-phase base: f (Chien phase 4)", nullptr, 2),
-      cylinderCase("hyperextension_phase", "k_N_per_m", 563313.0, "4-phase truth, 2-phase base: k (Chien phase 4)", nullptr,
+      cylinderCase("hyperextension_phase", "f_N", -488.12, "4-phase truth, 2-phase base: f (Chien phase 4)", nullptr,
                    2),
-      cylinderCase("hyperextension_phase", "c_Ns_per_m", 14672.2, "4-phase truth, 2-phase base: c (Chien phase 4)", nullptr,
-                   2),
+      cylinderCase("hyperextension_phase", "k_N_per_m", 563313.0, "4-phase truth, 2-phase base: k (Chien phase 4)",
+                   nullptr, 2),
+      cylinderCase("hyperextension_phase", "c_Ns_per_m", 14672.2, "4-phase truth, 2-phase base: c (Chien phase 4)",
+                   nullptr, 2),
   };
   for (auto& c : sweepCalibrationCases<CalibrationCase>()) cases.push_back(std::move(c));
   return cases;

@@ -36,15 +36,24 @@ Options parse(int argc, char** argv) {
     }
     if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value");
     const std::string v = argv[++i];
-    if (a == "--seeds") o.seeds = std::stoi(v);
-    else if (a == "--jobs") o.jobs = std::stoi(v);
-    else if (a == "--first") o.first = std::stoull(v);
-    else if (a == "--only") o.only = v;
-    else if (a == "--out") o.out = v;
-    else throw std::invalid_argument("unknown option " + a);
+    if (a == "--seeds")
+      o.seeds = std::stoi(v);
+    else if (a == "--jobs")
+      o.jobs = std::stoi(v);
+    else if (a == "--first")
+      o.first = std::stoull(v);
+    else if (a == "--only")
+      o.only = v;
+    else if (a == "--out")
+      o.out = v;
+    else
+      throw std::invalid_argument("unknown option " + a);
   }
   if (o.sweepEffectSizes) return o;
-  if (o.out.empty() || o.seeds < 1 || o.jobs < 1) throw std::invalid_argument("usage: diagnosis_calibration [--seeds N>=1] [--first S] [--jobs J>=1] [--only SUBSTRING[,SUBSTRING...]] --out DIR");
+  if (o.out.empty() || o.seeds < 1 || o.jobs < 1)
+    throw std::invalid_argument(
+        "usage: diagnosis_calibration [--seeds N>=1] [--first S] [--jobs J>=1] [--only SUBSTRING[,SUBSTRING...]] --out "
+        "DIR");
   return o;
 }
 
@@ -103,7 +112,8 @@ int main(int argc, char** argv) try {
   }
   std::filesystem::create_directories(o.out);
   std::ofstream md(o.out + "/calibration.md"), csv(o.out + "/calibration.csv"), seeds(o.out + "/calibration-seeds.csv");
-  md << "| plant | hidden effect | size | seeds | named first | other named | parameter | 95 % CI holds truth | bias (mean - truth) | SD |\n"
+  md << "| plant | hidden effect | size | seeds | named first | other named | parameter | 95 % CI holds truth | bias "
+        "(mean - truth) | SD |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   csv << "plant,effect,size,truth,parameter,seeds,named,other_named,scored,covered,not_wald,bias,sd,seconds,"
          "named_before,other_named_before\n";
@@ -119,9 +129,9 @@ int main(int argc, char** argv) try {
     const CaseSummary s = summarize(c, outcomes);
     md << markdownRow(c, s) << "\n";
     md.flush();
-    csv << c.plant << "," << caseName(c) << ",\"" << c.size << "\"," << c.truth << "," << c.parameter << "," << s.seeds << ","
-        << s.named << "," << s.other << "," << s.scored << "," << s.covered << "," << s.oneSided << "," << s.bias << ","
-        << s.sd << "," << secs << "," << s.beforeNamed << "," << s.beforeOther << "\n";
+    csv << c.plant << "," << caseName(c) << ",\"" << c.size << "\"," << c.truth << "," << c.parameter << "," << s.seeds
+        << "," << s.named << "," << s.other << "," << s.scored << "," << s.covered << "," << s.oneSided << "," << s.bias
+        << "," << s.sd << "," << secs << "," << s.beforeNamed << "," << s.beforeOther << "\n";
     csv.flush();
     for (std::size_t i = 0; i < outcomes.size(); ++i) {
       const auto& r = outcomes[i];
@@ -136,7 +146,8 @@ int main(int argc, char** argv) try {
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   md << "\n" << o.seeds << " seeds from " << o.first << ", " << o.jobs << " jobs, " << num(total) << " s wall\n";
-  std::cout << "wrote " << o.out << "/calibration.md, calibration.csv, calibration-seeds.csv (" << num(total) << " s)\n";
+  std::cout << "wrote " << o.out << "/calibration.md, calibration.csv, calibration-seeds.csv (" << num(total)
+            << " s)\n";
   return 0;
 } catch (const std::exception& e) {
   std::cerr << "diagnosis_calibration: " << e.what() << "\n";

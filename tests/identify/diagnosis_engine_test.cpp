@@ -246,10 +246,11 @@ TEST(DiagnosisEngine, ACandidateWithoutInformationHasNoIntervalAndIsNeverTheClos
 
   const std::string& v = dg.verdict;
   EXPECT_NE(v.find("no information in these records: orifice_quadratic"), std::string::npos) << v;
-  EXPECT_NE(v.find("The closest (largest likelihood ratio on the training records) is inertia"), std::string::npos) << v;
-  EXPECT_EQ(countOf(v, "orifice_quadratic"), 1u) << v;  // only in the list, never with an interval
-  EXPECT_EQ(countOf(v, "inertia"), 2u) << v;  // in the list tried, and once as the closest
-  EXPECT_EQ(countOf(v, "the closest, "), 0u) << v;  // the power advice names no other one
+  EXPECT_NE(v.find("The closest (largest likelihood ratio on the training records) is inertia"), std::string::npos)
+      << v;
+  EXPECT_EQ(countOf(v, "orifice_quadratic"), 1u) << v;          // only in the list, never with an interval
+  EXPECT_EQ(countOf(v, "inertia"), 2u) << v;                    // in the list tried, and once as the closest
+  EXPECT_EQ(countOf(v, "the closest, "), 0u) << v;              // the power advice names no other one
   EXPECT_EQ(countOf(v, "(largest likelihood ratio"), 1u) << v;  // defined once
 }
 

@@ -15,11 +15,11 @@ namespace {
 TEST(EffectSelection, AmbiguityGroupHoldsTheAcceptedCandidatesTheChosenOneAddsNothingTo) {
   const std::vector<std::string> names = {"a", "b", "c", "d", "e"};
   std::vector<EffectScore> s(names.size());
-  s[0].accepted = true;  // chosen
-  s[1].accepted = true;  // chosen adds nothing on top of b: ambiguous
-  s[2].accepted = true;  // chosen adds something significant on top of c: not ambiguous
-  s[3].accepted = false; // not accepted: never asked
-  s[4].accepted = true;  // joint refit failed: left out
+  s[0].accepted = true;   // chosen
+  s[1].accepted = true;   // chosen adds nothing on top of b: ambiguous
+  s[2].accepted = true;   // chosen adds something significant on top of c: not ambiguous
+  s[3].accepted = false;  // not accepted: never asked
+  s[4].accepted = true;   // joint refit failed: left out
   std::vector<EffectScore*> scores;
   for (auto& x : s) scores.push_back(&x);
   std::vector<std::size_t> asked;

@@ -57,11 +57,13 @@ class GridPlant final : public DiagnosisPlant {
     m->width = gridValue;
     return m;
   }
-  PlantModelPtr combine(const PlantModel& a, const PlantModel&, EffectId id) const override { return addEffect(a, id, 0.01); }
+  PlantModelPtr combine(const PlantModel& a, const PlantModel&, EffectId id) const override {
+    return addEffect(a, id, 0.01);
+  }
   std::vector<double> effectValues(const PlantModel& model, EffectId id) const override {
     const auto& m = dynamic_cast<const GridModel&>(model);
     if (id == EffectId::kComRuleProportional) return {m.width};  // its one "grid" value
-    return {m.fitted ? 50.0 : 0.0, m.width};  // force_N, width_m_per_s
+    return {m.fitted ? 50.0 : 0.0, m.width};                     // force_N, width_m_per_s
   }
   bool checkPhysical(const PlantModel&, EffectId, std::string&) const override { return true; }
   std::vector<std::string> phaseNames(const PlantModel&) const override { return {"all"}; }

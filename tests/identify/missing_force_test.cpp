@@ -7,8 +7,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 #include <filesystem>
+#include <stdexcept>
 
 #include "../independent/mauch_bench_generator.h"
 #include "io/bench_csv.h"
@@ -33,7 +33,8 @@ TEST(MissingForce, IsNoneOnANullAndBeyondTheStopWithIt) {
     std::vector<BenchData> records;
     std::uint64_t seed = 331;
     for (const auto& g : independent::chienGaits()) {
-      const fs::path path = fs::temp_directory_path() / ("swingsim-missing-force-" + std::to_string(::getpid()) + ".csv");
+      const fs::path path =
+          fs::temp_directory_path() / ("swingsim-missing-force-" + std::to_string(::getpid()) + ".csv");
       independent::writeCsv(independent::generate(t, g, kNoise, seed++), path.string());
       records.push_back(readBenchCsv(path.string(), 20));
       fs::remove(path);

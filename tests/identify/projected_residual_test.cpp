@@ -8,7 +8,6 @@
 namespace swingsim {
 namespace {
 
-
 using namespace mauch_bench_fixture;
 
 TEST(CylinderProjectedResidual, JacobianMatchesFiniteDifferences) {

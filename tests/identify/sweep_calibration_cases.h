@@ -24,7 +24,7 @@
 
 namespace swingsim::calibration {
 
-constexpr int kSweepTrials = 20;          // trials a row (Burkett: 5; 20 as IndependentSweepDiagnosis)
+constexpr int kSweepTrials = 20;           // trials a row (Burkett: 5; 20 as IndependentSweepDiagnosis)
 constexpr double kSweepTruthTempo = 1.04;  // the truth's hip time scale over the files'
 /// The calibration's seed k draws its records' noise with seed k x this (runCase).
 constexpr std::uint64_t kNoiseSeedFactor = 7919;
@@ -64,7 +64,8 @@ inline void withSweepCalibrationPlant(const SweepTruth& truth, std::uint64_t see
   {
     std::ofstream sweep(dir / "sweep.yaml");
     sweep << "kind: knee-axis-sweep\nname: calibration\nparticipants: [";
-    for (std::size_t i = 0; i < fileNames.size(); ++i) sweep << (i ? ", " : "") << fs::path(fileNames[i]).filename().string();
+    for (std::size_t i = 0; i < fileNames.size(); ++i)
+      sweep << (i ? ", " : "") << fs::path(fileNames[i]).filename().string();
     sweep << "]\nintegrator: {method: dormand-prince, accuracy: 1.0e-5}\n";
     std::ofstream study(dir / "study.yaml");
     study << "kind: sweep-diagnosis\nname: calibration-" << tag << "\nsweep: sweep.yaml\nmeasured: measured.csv\n"

@@ -78,11 +78,13 @@ TEST_F(SweepPlantInput, FewerThanTwoRunnersInsideIsRefusedNamingWhyEachOtherIsOu
     EXPECT_NE(m.find("needs at least two participants inside the model"), std::string::npos) << m;
     EXPECT_NE(m.find("1 of 4"), std::string::npos) << m;
     // Every participant outside, each with its own reason.
-    EXPECT_NE(m.find("P2 is outside the model and takes no part in the fits or folds: not measured"), std::string::npos) << m;
+    EXPECT_NE(m.find("P2 is outside the model and takes no part in the fits or folds: not measured"), std::string::npos)
+        << m;
     EXPECT_NE(m.find("P3 is outside the model and takes no part in the fits or folds: no lowered row to compare"),
               std::string::npos)
         << m;
-    EXPECT_NE(m.find("P4 is outside the model and takes no part in the fits or folds: not measured"), std::string::npos) << m;
+    EXPECT_NE(m.find("P4 is outside the model and takes no part in the fits or folds: not measured"), std::string::npos)
+        << m;
   }
 }
 
@@ -96,7 +98,8 @@ TEST_F(SweepPlantInput, ARowBeyondTheShankIsLeftOutWithItsLineAndP2IsOutside) {
   const auto notes = plant->warnings();
   std::string all;
   for (const auto& n : notes) all += n + "\n";
-  EXPECT_NE(all.find(std::string("m.csv:4: P1 at 450 mm is beyond the shank's physical limit")), std::string::npos) << all;
+  EXPECT_NE(all.find(std::string("m.csv:4: P1 at 450 mm is beyond the shank's physical limit")), std::string::npos)
+      << all;
   EXPECT_NE(all.find("P2 is outside the model"), std::string::npos) << all;
   EXPECT_NE(all.find("P3 is outside the model and takes no part in the fits or folds: not measured"), std::string::npos)
       << all;

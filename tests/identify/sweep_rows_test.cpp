@@ -62,8 +62,9 @@ TEST(SweepRows, AssignsRowsAndNamesTheFileAndLineOfABadOne) {
   const std::string who = study.participants[1].name;
   std::vector<bool> hasStandard;
   std::vector<std::string> notes;
-  const auto rows = assignSweepRows(study, {row(who, 0.0, 0.4, 0.01, 2), row(who, 0.05, 0.42, 0.01, 3),
-                                            row(who, 5.0, 0.5, 0.01, 4)},  // 5 m: beyond any shank
+  const auto rows = assignSweepRows(study,
+                                    {row(who, 0.0, 0.4, 0.01, 2), row(who, 0.05, 0.42, 0.01, 3),
+                                     row(who, 5.0, 0.5, 0.01, 4)},  // 5 m: beyond any shank
                                     "m.csv", 0.0, hasStandard, notes);
   ASSERT_EQ(rows.size(), study.participants.size());
   EXPECT_TRUE(hasStandard[1]);
@@ -75,7 +76,8 @@ TEST(SweepRows, AssignsRowsAndNamesTheFileAndLineOfABadOne) {
     assignSweepRows(study, {row("nobody", 0.0, 0.4, 0.01, 7)}, "m.csv", 0.0, hasStandard, notes);
     FAIL() << "a row naming no participant was taken";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("m.csv:7: participant: expected the name of a participant", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("m.csv:7: participant: expected the name of a participant", 0), 0u)
+        << e.what();
   }
   // No sd_s and no default standard error: refused.
   EXPECT_THROW(assignSweepRows(study, {row(who, 0.0, 0.4, std::numeric_limits<double>::quiet_NaN(), 9)}, "m.csv", 0.0,

@@ -22,9 +22,9 @@
 #include "study/sweep_study.h"
 #include "sweep/sweep_assumptions.h"
 #include "sweep/sweep_uncertainty.h"
+#include "sweep_calibration_cases.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
-#include "sweep_calibration_cases.h"
 
 namespace swingsim {
 namespace {

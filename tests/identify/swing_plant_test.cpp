@@ -1,5 +1,5 @@
-#include "io/knee_model_loader.h"
 #include "identify/swing_plant.h"
+#include "io/knee_model_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -9,11 +9,11 @@
 #include <cstdlib>
 #include <random>
 
-#include "identify/synthetic_swing.h"
+#include "../cli/release_only.h"
 #include "core/input_error.h"
+#include "identify/synthetic_swing.h"
 #include "io/participant_loader.h"
 #include "report/diagnosis_report.h"
-#include "../cli/release_only.h"
 
 namespace swingsim {
 namespace {
@@ -114,7 +114,8 @@ void expectRecovered(const Hidden& h, const Diagnosis& dg, double widen) {
   const auto& c = dg.acceptedScores.front();
   if (c.effect == h.effect) {
     for (const auto& [name, truth] : h.parameters) {
-      const auto p = std::find_if(c.parameters.begin(), c.parameters.end(), [&](const EffectParameter& q) { return q.name == name; });
+      const auto p = std::find_if(c.parameters.begin(), c.parameters.end(),
+                                  [&](const EffectParameter& q) { return q.name == name; });
       ASSERT_NE(p, c.parameters.end()) << name;
       const double half = 0.5 * (p->upper - p->lower) * widen, mid = 0.5 * (p->upper + p->lower);
       EXPECT_LE(std::abs(truth - mid), half) << h.effect << " " << name << " truth " << truth << " fitted " << p->value
@@ -238,12 +239,14 @@ knee_effects:
   coulomb_friction: {moment_Nm: 2, smoothing_deg_s: 57.29577951308232}
   viscous_damping: {damping_Nm_s_per_rad: 0.5}
   extension_assist_spring: {stiffness_Nm_per_rad: 3}
-)", "inline.yaml");
+)",
+                                     "inline.yaml");
   ASSERT_EQ(m.law.size(), 3u);  // table, added effects, stop
   const KneeKinematics k{0.5, 2.0};
   EXPECT_NEAR(m.law.calcPartMoment(1, k, nullptr), -2 * std::tanh(2.0) - 0.5 * 2.0 - 3 * 0.5, 1e-12);
   EXPECT_THROW(parseKneeModel("kind: damping_table\ndamping_table: {flexion_deg: [0, 70], moment_Nm: [1, 1]}\n"
-                              "knee_effects: {viscous_damping: {damping_Nm_s_per_rad: -1}}\n", "bad.yaml"),
+                              "knee_effects: {viscous_damping: {damping_Nm_s_per_rad: -1}}\n",
+                              "bad.yaml"),
                InputError);
 }
 

@@ -4,13 +4,11 @@
 
 #include <cmath>
 
-
 #include "identify/projected_residual.h"
 #include "mauch_bench_fixture.h"
 
 namespace swingsim {
 namespace {
-
 
 using namespace mauch_bench_fixture;
 
@@ -50,8 +48,10 @@ TEST(CylinderSwitchGridCosts, SameOnOneAndTwoThreads) {
   EXPECT_EQ(one, calcGridCosts(truth, set, grid, 2));
   // The generating switch constants cost less than a latch 1000 times slower.
   EXPECT_LT(calcGridCosts(truth, set, {truth.switches}, 1)[0],
-            calcGridCosts(truth, set, {{truth.switches.velocityWidth, truth.switches.positionWidth,
-                                        truth.switches.hyperextensionPosition, truth.switches.latchRate / 1000}}, 1)[0]);
+            calcGridCosts(truth, set,
+                          {{truth.switches.velocityWidth, truth.switches.positionWidth,
+                            truth.switches.hyperextensionPosition, truth.switches.latchRate / 1000}},
+                          1)[0]);
 }
 
 }  // namespace

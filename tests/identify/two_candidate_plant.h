@@ -67,7 +67,9 @@ class TwoCandidatePlant final : public DiagnosisPlant {
     m->fitted = false;
     return m;
   }
-  PlantModelPtr combine(const PlantModel& a, const PlantModel&, EffectId id) const override { return addEffect(a, id, 0); }
+  PlantModelPtr combine(const PlantModel& a, const PlantModel&, EffectId id) const override {
+    return addEffect(a, id, 0);
+  }
   std::vector<double> effectValues(const PlantModel& model, EffectId id) const override {
     const auto& m = dynamic_cast<const TwoCandidateModel&>(model);
     if (!m.fitted) return {0.0};  // neutral

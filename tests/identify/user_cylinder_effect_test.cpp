@@ -112,10 +112,10 @@ Diagnosis diagnoseStudy(const StudyFiles& f, const std::string& tag, const std::
 TEST(UserCylinderEffect, AnEndStopOutsideTheLibraryIsExplainedByTheUsersExpression) {
   independent::MauchTruth truth;
   truth.laws = independent::chienTable1(4);
-  truth.endStop = 3e6;          // N/m^2 = 3 N/mm^2: ~110 N at the normal swing's 26 mm
-  truth.endStopStart = 0.020;   // m
-  const StudyFiles library = writeStudy(truth, 301, "stop-library",
-                                        "candidates: [coulomb_friction, orifice_quadratic, position_dependent_damping]\n");
+  truth.endStop = 3e6;         // N/m^2 = 3 N/mm^2: ~110 N at the normal swing's 26 mm
+  truth.endStopStart = 0.020;  // m
+  const StudyFiles library = writeStudy(
+      truth, 301, "stop-library", "candidates: [coulomb_friction, orifice_quadratic, position_dependent_damping]\n");
   const Diagnosis before = diagnoseStudy(library, "stop-library");
   fs::remove_all(library.dir);
   EXPECT_FALSE(before.explained) << before.verdict;

@@ -11,8 +11,8 @@
 
 #include "../cli/release_only.h"
 #include "diagnosis_calibration.h"
-#include "io/knee_model_loader.h"
 #include "diagnosis_outcome.h"
+#include "io/knee_model_loader.h"
 
 namespace swingsim {
 namespace {
@@ -92,9 +92,11 @@ Diagnosis diagnose(const independent::SwingTruth& truth, std::uint64_t seed, con
   testing::printOutcome(tag, dg, "deg", kNoiseDeg);
   for (const auto& st : dg.steps)
     for (const auto& c : st.candidates) {
-      std::printf("    %s train %.4f (current %.4f) LR %.3g p %.3g %s %s", c.effect.c_str(), c.trainRmse, st.currentTrainRmse,
-                  c.likelihoodRatio, c.pAdjusted, c.notApplicable.c_str(), c.informative ? "" : "no-info");
-      for (const auto& q : c.parameters) std::printf(" %s=%.3g [%.3g, %.3g]", q.name.c_str(), q.value, q.lower, q.upper);
+      std::printf("    %s train %.4f (current %.4f) LR %.3g p %.3g %s %s", c.effect.c_str(), c.trainRmse,
+                  st.currentTrainRmse, c.likelihoodRatio, c.pAdjusted, c.notApplicable.c_str(),
+                  c.informative ? "" : "no-info");
+      for (const auto& q : c.parameters)
+        std::printf(" %s=%.3g [%.3g, %.3g]", q.name.c_str(), q.value, q.lower, q.upper);
       for (double v : c.validationRmse) std::printf(" v%.3f", v);
       std::printf("\n");
     }
@@ -108,14 +110,16 @@ TEST(UserSwingEffect, ACushionOutsideTheLibraryIsExplainedByTheUsersExpression) 
   SWINGSIM_RELEASE_ONLY();  // two diagnoses; the sanitized pass runs the null below
   independent::SwingTruth truth;
   truth.cushionDamping = 1.5;  // N m s/rad below 20 deg while extending
-  const Diagnosis library = diagnose(truth, 91, "cushion-library",
-                                     "candidates: [knee_coulomb_friction, knee_viscous_damping, extension_assist_spring]\n");
+  const Diagnosis library =
+      diagnose(truth, 91, "cushion-library",
+               "candidates: [knee_coulomb_friction, knee_viscous_damping, extension_assist_spring]\n");
   EXPECT_FALSE(library.explained) << library.verdict;
   std::printf("  library: %s\n", library.missingNote.c_str());
   EXPECT_EQ(library.missingNote.rfind("missing moment: +", 0), 0u) << "where it acts leads the remains";
   EXPECT_NE(library.missingNote.find("resisting extension"), std::string::npos) << library.missingNote;
 
-  const std::string saved = (std::filesystem::temp_directory_path() / ("user-cushion-" + std::to_string(::getpid()) + ".yaml")).string();
+  const std::string saved =
+      (std::filesystem::temp_directory_path() / ("user-cushion-" + std::to_string(::getpid()) + ".yaml")).string();
   const Diagnosis dg = diagnose(truth, 91, "cushion-user", kCushionCandidates, saved);
   ASSERT_FALSE(dg.accepted.empty()) << dg.verdict;
   EXPECT_EQ(dg.accepted.front(), "my_cushion");
@@ -155,10 +159,10 @@ TEST(UserSwingEffect, AnExpressionOfALibraryEffectScoresAsTheLibrarys) {
   independent::SwingTruth truth;
   truth.extensionFactor = 0.5;
   truth.extraViscous = 0.15;
-  const Diagnosis dg =
-      diagnose(truth, 95, "as-library",
-               "candidates:\n  - knee_viscous_damping\n  - name: my_damper\n    knee_moment_Nm: \"-c * knee_rate_rad_s\"\n"
-               "    parameters: {c: {unit: N m s/rad, min: 0, max: 50, start: 0}}\n");
+  const Diagnosis dg = diagnose(
+      truth, 95, "as-library",
+      "candidates:\n  - knee_viscous_damping\n  - name: my_damper\n    knee_moment_Nm: \"-c * knee_rate_rad_s\"\n"
+      "    parameters: {c: {unit: N m s/rad, min: 0, max: 50, start: 0}}\n");
   ASSERT_FALSE(dg.steps.empty());
   const auto& first = dg.steps.front().candidates;
   ASSERT_EQ(first.size(), 2u);

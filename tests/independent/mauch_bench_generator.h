@@ -38,12 +38,12 @@ struct MauchTruth {
   double hyperextension = 5e-5;  // xhy, m
   double latchRate = 1e4;        // 1/s
   // Hidden effects (all off at 0).
-  double orifice = 0;           // a in a xd|xd|, N s^2/m^2 (library: orifice_quadratic)
-  double coulomb = 0;           // Fc in Fc tanh(xd / coulombWidth), N (library: coulomb_friction)
-  double coulombWidth = 0.01;   // m/s
-  double positionDamping = 0;   // cx in cx x xd, N s/m^2 (library: position_dependent_damping)
-  double movingMass = 0;        // m in m xdd, kg: Newton's second law for the piston, rod and
-                                // oil moving with them (library: inertia)
+  double orifice = 0;          // a in a xd|xd|, N s^2/m^2 (library: orifice_quadratic)
+  double coulomb = 0;          // Fc in Fc tanh(xd / coulombWidth), N (library: coulomb_friction)
+  double coulombWidth = 0.01;  // m/s
+  double positionDamping = 0;  // cx in cx x xd, N s/m^2 (library: position_dependent_damping)
+  double movingMass = 0;       // m in m xdd, kg: Newton's second law for the piston, rod and
+                               // oil moving with them (library: inertia)
   /// Outside the library: oil/air compliance, the whole force lags its law by a first-order
   /// filter with this time constant (s). 0 = off.
   double complianceLag = 0;
@@ -75,8 +75,8 @@ struct PistonBump {
 /// The bumps of one stride of gait `g`.
 inline std::vector<PistonBump> pistonBumps(const Gait& g) {
   return {
-      {0.0065 * g.amplitude, 0.15, 0.07},   // loading response flexion
-      {-0.0016, 0.50, 0.045},                // terminal stance hyperextension (flat-ish dip)
+      {0.0065 * g.amplitude, 0.15, 0.07},  // loading response flexion
+      {-0.0016, 0.50, 0.045},              // terminal stance hyperextension (flat-ish dip)
       {-0.0016, 0.55, 0.045},
       {0.0260 * g.amplitude, 0.74, 0.085},  // swing flexion
   };

@@ -78,14 +78,38 @@ struct SweepParticipant {
 /// participants/p1..p4.yaml store (any truth would do: they are inputs here).
 inline std::vector<SweepParticipant> burkettParticipants() {
   return {
-      {"P1", 1.83, 70, {{0.410, 3.350, 0.284, 0.0264}, {0.515, 0.785, 0.260, 0.0161}, {0.240, 1.030, 0.140, 0.0059}},
-       10, 1.088747, 0.031, 5},
-      {"P2", 1.83, 78, {{0.435, 5.612, 0.165, 0.0744}, {0.520, 0.905, 0.255, 0.0039}, {0.245, 0.845, 0.145, 0.0073}},
-       9, 1.379699, 0.047, 5},
-      {"P3", 1.85, 76, {{0.440, 4.137, 0.335, 0.0241}, {0.540, 0.558, 0.280, 0.0033}, {0.240, 1.020, 0.140, 0.0060}},
-       5, 1.112318, 0.046, 5},
-      {"P4", 1.90, 82, {{0.450, 7.905, 0.310, 0.0795}, {0.530, 1.061, 0.290, 0.0171}, {0.220, 0.459, 0.170, 0.0030}},
-       15, 1.395026, 0.033, 5},
+      {"P1",
+       1.83,
+       70,
+       {{0.410, 3.350, 0.284, 0.0264}, {0.515, 0.785, 0.260, 0.0161}, {0.240, 1.030, 0.140, 0.0059}},
+       10,
+       1.088747,
+       0.031,
+       5},
+      {"P2",
+       1.83,
+       78,
+       {{0.435, 5.612, 0.165, 0.0744}, {0.520, 0.905, 0.255, 0.0039}, {0.245, 0.845, 0.145, 0.0073}},
+       9,
+       1.379699,
+       0.047,
+       5},
+      {"P3",
+       1.85,
+       76,
+       {{0.440, 4.137, 0.335, 0.0241}, {0.540, 0.558, 0.280, 0.0033}, {0.240, 1.020, 0.140, 0.0060}},
+       5,
+       1.112318,
+       0.046,
+       5},
+      {"P4",
+       1.90,
+       82,
+       {{0.450, 7.905, 0.310, 0.0795}, {0.530, 1.061, 0.290, 0.0171}, {0.220, 0.459, 0.170, 0.0030}},
+       15,
+       1.395026,
+       0.033,
+       5},
   };
 }
 
@@ -95,10 +119,10 @@ struct SweepModel {
   /// 9.80665 of swing_generator.h: the difference is 0.04-0.05 ms of swing time.
   double gravity = 9.81;
   // Knee model: a constant damping table (damping_table) and the stop (hyperextension_stop).
-  double tableMomentNm = 2.0;      ///< moment_Nm at every flexion_deg sample
-  double referenceDegS = 150.0;    ///< reference_speed_deg_s (Burkett's dynamometer)
-  double stopStiffness = 2e4;      ///< stiffness_Nm_per_rad1p5 (docs/assumptions.md default)
-  double stopRestitution = 0.4;    ///< restitution (docs/assumptions.md default)
+  double tableMomentNm = 2.0;                     ///< moment_Nm at every flexion_deg sample
+  double referenceDegS = 150.0;                   ///< reference_speed_deg_s (Burkett's dynamometer)
+  double stopStiffness = 2e4;                     ///< stiffness_Nm_per_rad1p5 (docs/assumptions.md default)
+  double stopRestitution = 0.4;                   ///< restitution (docs/assumptions.md default)
   ComRule comRule = ComRule::kFixedFromProximal;  ///< com_rule
   // hip_moment: biphasic_sine before the time scale.
   double flexionNm = 30, flexionS = 0.20, extensionNm = 15, extensionS = 0.20;
@@ -118,7 +142,7 @@ struct SweepEffects {
   double timeScaleSlope = 0;
   double stopRestitution = std::numeric_limits<double>::quiet_NaN();  ///< e for every knee (NaN: the files')
   double kneeFrictionNm = std::numeric_limits<double>::quiet_NaN();   ///< Tc for everyone (NaN: Table 2's)
-  std::optional<ComRule> comRule;  ///< the truth's COM rule (nullopt: the files')
+  std::optional<ComRule> comRule;                                     ///< the truth's COM rule (nullopt: the files')
   /// Outside any library: the prosthetist re-tunes the damping at each lowering, table
   /// x (1 + k d / 0.1 m).
   double dampingRetune = 0;
@@ -159,13 +183,13 @@ inline double kneeInertia(const Leg& leg) {
 /// Everything one swing of the truth needs, after the lowering and the hidden effects.
 struct SweepSwingLaw {
   Leg leg;
-  double hipScale = 1, timeScale = 1;             // amplitude factor, tau
+  double hipScale = 1, timeScale = 1;  // amplitude factor, tau
   double flexionNm, flexionS, extensionNm, extensionS;
-  double damping;                                 // N m s/rad
+  double damping;  // N m s/rad
   double frictionNm, stopStiffness, restitution;
   double strapStiffness, strapOffset;
-  double hipMin, hipMax;                          // rad
-  double gravity;                                 // m/s^2
+  double hipMin, hipMax;  // rad
+  double gravity;         // m/s^2
 };
 
 inline SweepSwingLaw makeSweepSwingLaw(const SweepParticipant& p, const SweepModel& model, const SweepEffects& fx,
@@ -231,8 +255,8 @@ inline double sweepKneeMoment(const SweepSwingLaw& law, double theta, double the
 inline void sweepDerivatives(const SweepSwingLaw& law, double t, const double* y, double* dy) {
   const double theta = y[0] - y[1], thetaDot = y[2] - y[3];
   const double Mk = sweepKneeMoment(law, theta, thetaDot, y[0]);
-  const double Mh = sweepHipMoment(law, t) + hipRangeMoment(law, y[0], y[2]) +
-                    law.strapStiffness * (theta - y[0] - law.strapOffset);
+  const double Mh =
+      sweepHipMoment(law, t) + hipRangeMoment(law, y[0], y[2]) + law.strapStiffness * (theta - y[0] - law.strapOffset);
   dy[0] = y[2];
   dy[1] = y[3];
   chainAccelerations(law.leg.thigh, law.leg.shank, law.leg.foot, y, Mh, Mk, dy + 2, law.gravity);
@@ -243,10 +267,10 @@ struct SweepSwing {
   bool ended = false;
   double swingTime = std::numeric_limits<double>::quiet_NaN();  ///< s (NaN: no end in the time limit)
   double peakKneeDeg = 0;
-  int bounces = 0;                  ///< times the knee left the zone after entering it
-  double minKneeDeg = 0;            ///< deepest knee angle (negative: into the stop)
+  int bounces = 0;        ///< times the knee left the zone after entering it
+  double minKneeDeg = 0;  ///< deepest knee angle (negative: into the stop)
   double minHipDeg = 0, maxHipDeg = 0;
-  bool hipRangeActed = false;       ///< the hip left its range (our stop law then matters)
+  bool hipRangeActed = false;  ///< the hip left its range (our stop law then matters)
   double thighTargetTime = std::numeric_limits<double>::quiet_NaN();  ///< s, thigh first at its target
   double kneeEntryTime = std::numeric_limits<double>::quiet_NaN();    ///< s, the knee's last entry into the zone
 };
@@ -323,7 +347,8 @@ struct SweepRow {
 
 /// Burkett 2004 Table 4's lowerings (m) of P1..P4, in the order of burkettParticipants().
 inline std::vector<std::vector<double>> burkettTable4Lowerings() {
-  return {{0.0, 0.050, 0.100, 0.150}, {0.0, 0.080, 0.125, 0.180}, {0.0, 0.140, 0.200, 0.240}, {0.0, 0.090, 0.130, 0.175}};
+  return {
+      {0.0, 0.050, 0.100, 0.150}, {0.0, 0.080, 0.125, 0.180}, {0.0, 0.140, 0.200, 0.240}, {0.0, 0.090, 0.130, 0.175}};
 }
 
 /// The sweep table of `participants`, participant i at `lowerings[i]` (m), with the hidden
@@ -373,7 +398,8 @@ inline void writeSweepCsv(const std::vector<SweepRow>& rows, const std::string& 
   if (!f) throw std::runtime_error("cannot write " + path);
   f.precision(10);
   f << "participant,lowering_m,swing_time_s,sd_s,n\n";
-  for (const auto& r : rows) f << r.participant << "," << r.loweringM << "," << r.swingTimeS << "," << r.sdS << "," << r.trials << "\n";
+  for (const auto& r : rows)
+    f << r.participant << "," << r.loweringM << "," << r.swingTimeS << "," << r.sdS << "," << r.trials << "\n";
 }
 
 /// The file name writeSweepModelFiles gives a participant: his name in lower case + ".yaml".
@@ -395,7 +421,8 @@ inline std::vector<std::string> writeSweepModelFiles(const std::vector<SweepPart
     const double m = model.tableMomentNm;
     knee << "kind: damping_table\nname: constant-damping\nsource: independent sweep generator\n"
          << "damping_table:\n  reference_speed_deg_s: " << model.referenceDegS << "\n  speed_rule: linear\n"
-         << "  extension_factor: 1.0\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m << ", " << m << ", " << m << "]\n"
+         << "  extension_factor: 1.0\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m << ", " << m << ", " << m
+         << "]\n"
          << "hyperextension_stop: {engage_flexion_deg: 0, stiffness_Nm_per_rad1p5: " << model.stopStiffness
          << ", restitution: " << model.stopRestitution << "}\n";
   }
@@ -406,10 +433,11 @@ inline std::vector<std::string> writeSweepModelFiles(const std::vector<SweepPart
     if (!p) throw std::runtime_error("cannot write " + paths.back());
     p.precision(10);
     auto seg = [&](const char* name, const Segment& s) {
-      p << "  " << name << ": {length_m: " << s.length << ", mass_kg: " << s.mass << ", com_from_distal_m: " << s.comFromDistal
-        << ", inertia_kgm2: " << s.inertia << "}\n";
+      p << "  " << name << ": {length_m: " << s.length << ", mass_kg: " << s.mass
+        << ", com_from_distal_m: " << s.comFromDistal << ", inertia_kgm2: " << s.inertia << "}\n";
     };
-    p << "name: " << q.name << "\nsource: independent sweep generator (Burkett 2004 Tables 1-2)\nheight_m: " << q.heightM
+    p << "name: " << q.name
+      << "\nsource: independent sweep generator (Burkett 2004 Tables 1-2)\nheight_m: " << q.heightM
       << "\nbody_mass_kg: " << q.bodyMassKg << "\nsegments:\n";
     seg("thigh", q.leg.thigh);
     seg("shank", q.leg.shank);
@@ -419,8 +447,9 @@ inline std::vector<std::string> writeSweepModelFiles(const std::vector<SweepPart
       << "initial: {hip_flexion_deg: " << model.hip0Deg << ", knee_flexion_deg: " << model.knee0Deg
       << ", hip_flexion_rate_deg_s: 0, knee_flexion_rate_deg_s: 0}\n"
       << "hip_range: {min_flexion_deg: " << model.hipMinDeg << ", max_flexion_deg: " << model.hipMaxDeg << "}\n"
-      << "swing_end: {thigh_target_flexion_deg: " << model.thighTargetDeg << ", zone_of_stability_deg: " << model.zoneDeg
-      << ", time_limit_s: " << model.timeLimitS << ", settle_dwell_s: " << model.settleDwellS << "}\n"
+      << "swing_end: {thigh_target_flexion_deg: " << model.thighTargetDeg
+      << ", zone_of_stability_deg: " << model.zoneDeg << ", time_limit_s: " << model.timeLimitS
+      << ", settle_dwell_s: " << model.settleDwellS << "}\n"
       << "toe_clearance: {gait: running}\n"
       << "hip_moment: {profile: biphasic_sine, flexion_amplitude_Nm: " << model.flexionNm
       << ", flexion_duration_s: " << model.flexionS << ", extension_amplitude_Nm: " << model.extensionNm

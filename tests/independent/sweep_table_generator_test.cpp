@@ -60,7 +60,8 @@ int crossCheck(const std::string& tag, const std::vector<independent::SweepParti
   std::ostringstream list;
   for (std::size_t i = 0; i < files.size(); ++i) list << (i ? ", " : "") << files[i];
   std::ofstream(dir / "study.yaml") << "kind: knee-axis-sweep\nname: independent-" << tag << "\nparticipants: ["
-                                    << list.str() << "]\nlowering: {step_m: 0.05, max_m: 0.15, include_published: false}\n"
+                                    << list.str()
+                                    << "]\nlowering: {step_m: 0.05, max_m: 0.15, include_published: false}\n"
                                     << "integrator: {method: dormand-prince, accuracy: " << accuracy << "}\n";
   const SweepResults swept = runSweep(loadSweepStudy((dir / "study.yaml").string()), 2);
   int bounced = 0;

@@ -42,14 +42,14 @@ struct SwingTruth {
   /// extension_factor; swing-phase control knees set the two valves apart).
   double extensionFactor = 1.0;
   // Hidden effects (0 = off).
-  double extraViscous = 0;       // N m s/rad (library: knee_viscous_damping)
-  double coulomb = 0;            // N m, tanh smoothing `coulombRate` rad/s (library: knee_coulomb_friction)
+  double extraViscous = 0;  // N m s/rad (library: knee_viscous_damping)
+  double coulomb = 0;       // N m, tanh smoothing `coulombRate` rad/s (library: knee_coulomb_friction)
   double coulombRate = 1.0;
-  double assistStiffness = 0;    // N m/rad towards extension (library: extension_assist_spring)
+  double assistStiffness = 0;  // N m/rad towards extension (library: extension_assist_spring)
   /// Outside the library: an elastic strap across hip and knee (biarticular), moment
   /// k (theta - phi - offset) flexing the hip and extending the knee. N m/rad.
   double strapStiffness = 0;
-  double strapOffset = 0.0;      // rad
+  double strapOffset = 0.0;  // rad
   /// Outside the library: a hydraulic cushion that resists extension only near full
   /// extension: -cushion * rate while the knee extends below `cushionBelow`. N m s/rad.
   double cushionDamping = 0;
@@ -131,7 +131,7 @@ inline void chainAccelerations(const Segment& thigh, const Segment& shank, const
   // Unit vectors.
   const Vec2 e1{std::sin(phi), -std::cos(phi)}, n1{std::cos(phi), std::sin(phi)};
   const Vec2 rc{c.x * std::cos(psi) - c.y * std::sin(psi), c.x * std::sin(psi) + c.y * std::cos(psi)};  // R(psi) c
-  const Vec2 rcPerp{-rc.y, rc.x};  // d(R c)/dpsi
+  const Vec2 rcPerp{-rc.y, rc.x};                                                                       // d(R c)/dpsi
   // Partial velocities of the COMs: thigh v1 = a1 n1 phi'; shank v2 = L1 n1 phi' + rcPerp psi'.
   const Vec2 v1phi = a1 * n1, v2phi = L1 * n1, v2psi = rcPerp;
   // Velocity-product accelerations (centripetal).
@@ -222,13 +222,13 @@ inline void writeSwingModelFiles(const SwingTruth& m, const std::string& dir) {
   std::ofstream knee(dir + "/knee.yaml");
   knee << "kind: damping_table\nname: constant-damping\nsource: independent test generator\n"
        << "damping_table:\n  reference_speed_deg_s: " << m.referenceDegS << "\n  speed_rule: linear\n"
-       << "  extension_factor: " << m.extensionFactor << "\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m.tableMoment << ", "
-       << m.tableMoment << ", " << m.tableMoment << "]\n"
+       << "  extension_factor: " << m.extensionFactor << "\n  flexion_deg: [0, 35, 70]\n  moment_Nm: [" << m.tableMoment
+       << ", " << m.tableMoment << ", " << m.tableMoment << "]\n"
        << "hyperextension_stop: {engage_flexion_deg: 0, stiffness_Nm_per_rad1p5: 20000, restitution: 0.4}\n";
   std::ofstream p(dir + "/participant.yaml");
   auto seg = [&](const char* name, const Segment& s) {
-    p << "  " << name << ": {length_m: " << s.length << ", mass_kg: " << s.mass << ", com_from_distal_m: " << s.comFromDistal
-      << ", inertia_kgm2: " << s.inertia << "}\n";
+    p << "  " << name << ": {length_m: " << s.length << ", mass_kg: " << s.mass
+      << ", com_from_distal_m: " << s.comFromDistal << ", inertia_kgm2: " << s.inertia << "}\n";
   };
   p << "name: INDEP\nsource: independent test generator\nheight_m: 1.83\nbody_mass_kg: 70\nsegments:\n";
   seg("thigh", m.thigh);

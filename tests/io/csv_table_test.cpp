@@ -30,7 +30,9 @@ CsvSpec timeAndForce() {
 
 TEST(CsvTable, ReadsRequiredAndOptionalColumnsInSpecOrder) {
   // Columns in another order in the file, one not asked for, a BOM, CRLF and a blank tail.
-  const std::string text = "\xEF\xBB\xBF" "force_N,comment_code,time_s,position_m\r\n10,1,0,0.5\r\n20,2,0.1,0.4\r\n\r\n";
+  const std::string text =
+      "\xEF\xBB\xBF"
+      "force_N,comment_code,time_s,position_m\r\n10,1,0,0.5\r\n20,2,0.1,0.4\r\n\r\n";
   const CsvTable t = parseCsv(text, "bench.csv", timeAndForce());
   EXPECT_EQ(t.names, (std::vector<std::string>{"time_s", "force_N", "position_m"}));
   EXPECT_EQ(t.ignored, std::vector<std::string>{"comment_code"});
@@ -74,8 +76,8 @@ CsvSpec participantAndTime() {
 }
 
 TEST(CsvTable, TextColumnsKeepTheirCellsAndAreNotParsedAsNumbers) {
-  const CsvTable t = parseCsv("swing_time_s,participant,note\n0.4,\"P 1\",  left heel \n0.5,2,\n", "p.csv",
-                              participantAndTime());
+  const CsvTable t =
+      parseCsv("swing_time_s,participant,note\n0.4,\"P 1\",  left heel \n0.5,2,\n", "p.csv", participantAndTime());
   EXPECT_EQ(t.names, std::vector<std::string>{"swing_time_s"});
   EXPECT_EQ(t.textNames, (std::vector<std::string>{"participant", "note"}));
   EXPECT_EQ(t.text("participant"), (std::vector<std::string>{"P 1", "2"})) << "quotes and blanks around a cell go";
@@ -93,7 +95,8 @@ TEST(CsvTable, TextColumnsKeepTheirCellsAndAreNotParsedAsNumbers) {
 TEST(CsvTable, RowsKeepTheirSourceLinesPastCommentsAndBlankLines) {
   CsvSpec spec = participantAndTime();
   spec.comments = true;
-  const std::string text = "# measured 2004\n\n  # indented comment\nparticipant,swing_time_s\nP1,0.4\n\n# P2 lost\nP3,0.5\n";
+  const std::string text =
+      "# measured 2004\n\n  # indented comment\nparticipant,swing_time_s\nP1,0.4\n\n# P2 lost\nP3,0.5\n";
   const CsvTable t = parseCsv(text, "c.csv", spec);
   EXPECT_EQ(t.headerLine, 4);
   EXPECT_EQ(t.lines, (std::vector<int>{5, 8}));
@@ -124,13 +127,15 @@ TEST(CsvTable, AllowedHeadersFixTheColumnsAndTheirOrder) {
             "a.csv:1: header: expected 'participant,swing_time_s' or 'participant,swing_time_s,note' (got "
             "'swing_time_s,participant')")
       << "another order is refused";
-  EXPECT_EQ(inputErrorOf([&] { parseCsv("", "a.csv", spec); }),
-            "a.csv:1: empty file (expected a header row: 'participant,swing_time_s' or 'participant,swing_time_s,note')");
+  EXPECT_EQ(
+      inputErrorOf([&] { parseCsv("", "a.csv", spec); }),
+      "a.csv:1: empty file (expected a header row: 'participant,swing_time_s' or 'participant,swing_time_s,note')");
   const std::string longHeader = "participant," + std::string(500, 'x');
-  EXPECT_EQ(inputErrorOf([&] { parseCsv(longHeader, "a.csv", spec); }).size(),
-            std::string("a.csv:1: header: expected 'participant,swing_time_s' or 'participant,swing_time_s,note' (got '")
-                    .size() +
-                120 + 5)
+  EXPECT_EQ(
+      inputErrorOf([&] { parseCsv(longHeader, "a.csv", spec); }).size(),
+      std::string("a.csv:1: header: expected 'participant,swing_time_s' or 'participant,swing_time_s,note' (got '")
+              .size() +
+          120 + 5)
       << "a long header is echoed cut to 120 characters and '...'";
 }
 

@@ -52,7 +52,9 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
-const ImpedanceStateMachine& lawOf(const KneeModel& m) { return dynamic_cast<const ImpedanceStateMachine&>(m.law.part(0)); }
+const ImpedanceStateMachine& lawOf(const KneeModel& m) {
+  return dynamic_cast<const ImpedanceStateMachine&>(m.law.part(0));
+}
 
 TEST(ImpedanceKneeModel, ShippedModelLoadsInSI) {
   const KneeModel m = loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/microprocessor-knee-osl.yaml");
@@ -93,9 +95,11 @@ TEST(ImpedanceKneeModel, WrittenModelReadsBackTheSame) {
 TEST(ImpedanceKneeModel, ValidTextLoads) { EXPECT_EQ(errorOf(kValid), ""); }
 
 TEST(ImpedanceKneeModel, NegativeDampingIsRefused) {
+  EXPECT_THAT(
+      errorOf(replaced(kValid, "damping_Nm_s_per_rad: 3.816", "damping_Nm_s_per_rad: -1")),
+      HasSubstr("mp.yaml:18: impedance_state_machine.states[1].damping_Nm_s_per_rad: expected a damping in [0, "));
   EXPECT_THAT(errorOf(replaced(kValid, "damping_Nm_s_per_rad: 3.816", "damping_Nm_s_per_rad: -1")),
-              HasSubstr("mp.yaml:18: impedance_state_machine.states[1].damping_Nm_s_per_rad: expected a damping in [0, "));
-  EXPECT_THAT(errorOf(replaced(kValid, "damping_Nm_s_per_rad: 3.816", "damping_Nm_s_per_rad: -1")), HasSubstr("(got -1)"));
+              HasSubstr("(got -1)"));
 }
 
 TEST(ImpedanceKneeModel, UnknownModeIsRefused) {
@@ -105,15 +109,17 @@ TEST(ImpedanceKneeModel, UnknownModeIsRefused) {
 }
 
 TEST(ImpedanceKneeModel, TransitionToAnUnknownStateIsRefused) {
-  EXPECT_THAT(errorOf(replaced(kValid, "to: swing_extension", "to: late_swing")),
-              HasSubstr("mp.yaml:11: impedance_state_machine.states[0].transition.to: expected the next state in the list, "
-                        "swing_extension (got late_swing)"));
+  EXPECT_THAT(
+      errorOf(replaced(kValid, "to: swing_extension", "to: late_swing")),
+      HasSubstr("mp.yaml:11: impedance_state_machine.states[0].transition.to: expected the next state in the list, "
+                "swing_extension (got late_swing)"));
 }
 
 TEST(ImpedanceKneeModel, TorqueLimitMustBePositive) {
   for (const char* bad : {"0", "-5"})
     EXPECT_THAT(errorOf(replaced(kValid, "torque_limit_Nm: 60", std::string("torque_limit_Nm: ") + bad)),
-                HasSubstr(std::string("mp.yaml:4: impedance_state_machine.torque_limit_Nm: must be positive (got ") + bad + ")"));
+                HasSubstr(std::string("mp.yaml:4: impedance_state_machine.torque_limit_Nm: must be positive (got ") +
+                          bad + ")"));
 }
 
 TEST(ImpedanceKneeModel, MissingAndSurplusTransitionsAreRefused) {
@@ -122,9 +128,10 @@ TEST(ImpedanceKneeModel, MissingAndSurplusTransitionsAreRefused) {
   EXPECT_THAT(errorOf(surplus), HasSubstr("mp.yaml:20: impedance_state_machine.states[1].transition.to: expected no "
                                           "transition in the last state"));
   // A threshold side without its threshold.
-  EXPECT_THAT(errorOf(replaced(kValid, "        flexion_deg: 50\n", "")),
-              HasSubstr("mp.yaml:12: impedance_state_machine.states[0].transition.when_flexion: expected its threshold, "
-                        "flexion_deg, beside it (got no flexion_deg)"));
+  EXPECT_THAT(
+      errorOf(replaced(kValid, "        flexion_deg: 50\n", "")),
+      HasSubstr("mp.yaml:12: impedance_state_machine.states[0].transition.when_flexion: expected its threshold, "
+                "flexion_deg, beside it (got no flexion_deg)"));
   // A threshold without its side (issue 57): it was ignored, the state ended at once and P1
   // swung 0.257 s instead of 0.429 s.
   EXPECT_THAT(errorOf(replaced(kValid, "        when_flexion: above\n", "")),

@@ -250,7 +250,8 @@ TEST(JsonArchive, RefusesEachKindOfBadValueNamingFileAndKey) {
       {edit("    0.10000000000000001,", "    [],"), "times_s[0]: expected a number or null, found []"},
       {edit("    4\n", "    -4\n"), "skipped[0]: expected a whole number, found -4"},
       {edit("    4\n", "    12\n"), "skipped[0]: expected an index below 10, found 12"},
-      {edit("\"skipped\": [", "\"skipped\": \"4\", \"x\": ["), "skipped: expected a list of whole numbers, found \"4\""},
+      {edit("\"skipped\": [", "\"skipped\": \"4\", \"x\": ["),
+       "skipped: expected a list of whole numbers, found \"4\""},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string name = "bad-" + std::to_string(k) + ".json";

@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <iterator>
 #include <limits>
-#include <unistd.h>
 
 #include "core/output_files.h"
 
@@ -14,7 +14,8 @@ namespace swingsim {
 namespace {
 
 TEST(JsonFile, KeepsKeyOrderWritesNullForNonFiniteAndParsesBack) {
-  const Json doc = {{"zeta", 1.0 / 3.0}, {"alpha", std::numeric_limits<double>::quiet_NaN()},
+  const Json doc = {{"zeta", 1.0 / 3.0},
+                    {"alpha", std::numeric_limits<double>::quiet_NaN()},
                     {"list", {1.5, std::numeric_limits<double>::infinity()}}};
   const std::string text = formatJson(doc);
   EXPECT_LT(text.find("zeta"), text.find("alpha"));  // insertion order, not sorted

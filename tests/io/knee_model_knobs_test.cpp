@@ -18,8 +18,8 @@ const std::string kMauch = kRoot + "/models/mauch-4phase.yaml";
 TEST(KneeModelKnobs, SetsAListItemANestedKeyAndAKeyTheFileLeftOut) {
   const KneeModelKnobs knobs(kTable);
   EXPECT_DOUBLE_EQ(knobs.fileValue("damping_table.moment_Nm[3]"), 1.3);
-  const KneeModel m = knobs.make({"damping_table.moment_Nm[3]", "damping_table.extension_factor", "knee_effects.model_scale"},
-                                 {2.5, 0.5, 3.0});
+  const KneeModel m = knobs.make(
+      {"damping_table.moment_Nm[3]", "damping_table.extension_factor", "knee_effects.model_scale"}, {2.5, 0.5, 3.0});
   const DampingTableParams& table = std::get<DampingTableKnee>(m.spec.kind).table;
   EXPECT_DOUBLE_EQ(table.moment[3], 2.5);
   EXPECT_DOUBLE_EQ(table.moment[2], 1.1);  // the others as in the file
@@ -33,7 +33,8 @@ TEST(KneeModelKnobs, WorksOnTheMauchCylinderThroughItsListOfSettings) {
   const KneeModelKnobs knobs(kMauch);
   EXPECT_EQ(knobs.checkKey("settings[0].coefficients[1].c_Ns_per_m"), "");
   const KneeModel m = knobs.make({"settings[0].coefficients[1].c_Ns_per_m"}, {1500});
-  EXPECT_DOUBLE_EQ(std::get<MauchKnee>(m.spec.kind).cylinder.coefficients[1].c, 1500);  // phase 2 of the dial setting in use
+  EXPECT_DOUBLE_EQ(std::get<MauchKnee>(m.spec.kind).cylinder.coefficients[1].c,
+                   1500);  // phase 2 of the dial setting in use
 }
 
 TEST(KneeModelKnobs, RefusesKeysThatAreNotOneNumber) {

@@ -76,9 +76,9 @@ TEST(KneeModelLoader, MauchTwoPhaseModelLoads) {
 
 TEST(KneeModelLoader, MissingPhaseNamesFileLineAndPhase) {
   const std::string path = writeTemp("missing.yaml", std::string(kValidHead) +
-      "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
-      "      - {phase: 2, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
-      "      - {phase: 4, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n");
+                                                         "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
+                                                         "      - {phase: 2, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
+                                                         "      - {phase: 4, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n");
   EXPECT_THAT(errorOf(path), HasSubstr("missing.yaml:13: settings[0].coefficients: phase 3 is missing"));
 }
 
@@ -89,21 +89,25 @@ TEST(KneeModelLoader, RejectsBadPhaseCountsDialsAndDuplicates) {
 
   text = kValidHead;
   text.replace(text.find("flexion_dial_deg: 90"), 20, "flexion_dial_deg: 45");
-  EXPECT_THAT(errorOf(writeTemp("dial.yaml", text)), HasSubstr("dial.yaml:8: flexion_dial_deg: must be a dial setting"));
+  EXPECT_THAT(errorOf(writeTemp("dial.yaml", text)),
+              HasSubstr("dial.yaml:8: flexion_dial_deg: must be a dial setting"));
 
-  text = std::string(kValidHead) + "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
-                                   "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n";
+  text = std::string(kValidHead) +
+         "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n"
+         "      - {phase: 1, f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n";
   EXPECT_THAT(errorOf(writeTemp("dup.yaml", text)), HasSubstr("phase appears twice"));
 
   text = kValidHead;
   text.replace(text.find("extension_dial_deg: 90\nsettings"), 22, "extension_dial_deg: 180");
   for (int phase = 1; phase <= 4; ++phase)
     text += "      - {phase: " + std::to_string(phase) + ", f_N: 1, k_N_per_m: 2, c_Ns_per_m: 3}\n";
-  EXPECT_THAT(errorOf(writeTemp("nodial.yaml", text)), HasSubstr("no coefficient set in settings for this dial setting (got F90E180)"));
+  EXPECT_THAT(errorOf(writeTemp("nodial.yaml", text)),
+              HasSubstr("no coefficient set in settings for this dial setting (got F90E180)"));
 
   text = kValidHead;
   text.replace(text.find("  position_width_m: 0.0005\n"), 26, "");
-  EXPECT_THAT(errorOf(writeTemp("nowidth.yaml", text)), HasSubstr("switches.position_width_m: required key is missing"));
+  EXPECT_THAT(errorOf(writeTemp("nowidth.yaml", text)),
+              HasSubstr("switches.position_width_m: required key is missing"));
 }
 
 // Round trip (MuJoCo's xml write/read tests): every knee model file of the repository, and
@@ -130,9 +134,9 @@ TEST(KneeModelFormat, LoadWriteLoadGivesTheSameModel) {
   knee.kneeEffects.coulombSmoothingRate = 2.0;
   knee.kneeEffects.viscousDamping = 0.3;
   // A user's expression in the hip's state and the time too, as a diagnosis saves it.
-  knee.kneeEffects.expressions.push_back(
-      {"my_cushion", "-c * knee_rate_rad_s * (knee_deg < 20 ? 1 : 0) + k * hip_rad * time_s",
-       {{"c", "N m s/rad", 1.25}, {"k", "N m/(rad s)", -0.5}}});
+  knee.kneeEffects.expressions.push_back({"my_cushion",
+                                          "-c * knee_rate_rad_s * (knee_deg < 20 ? 1 : 0) + k * hip_rad * time_s",
+                                          {{"c", "N m s/rad", 1.25}, {"k", "N m/(rad s)", -0.5}}});
   knee.hasStop = true;
   knee.stop.lower = -2.5 * kDegToRad;
   knee.stop.stiffness = 1500;
@@ -147,7 +151,8 @@ TEST(KneeModelFormat, LoadWriteLoadGivesTheSameModel) {
       for (double rate : {-5.0, 0.0, 2.0}) {
         std::vector<double> z(static_cast<std::size_t>(std::max(1, original.numStates())), 1.0);
         const KneeKinematics k{flexion, rate, 0.4, 1.0, 0.2};
-        EXPECT_EQ(back.law.calcMoment(k, z.data()), original.calcMoment(k, z.data())) << spec.name << " " << flexion << " " << rate;
+        EXPECT_EQ(back.law.calcMoment(k, z.data()), original.calcMoment(k, z.data()))
+            << spec.name << " " << flexion << " " << rate;
       }
   }
 }

@@ -7,8 +7,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "../cli/run_swingsim.h"
 #include <unistd.h>
+#include "../cli/run_swingsim.h"
 
 #include <cmath>
 #include <cstdio>
@@ -70,11 +70,13 @@ constexpr int kFirstRowLine = 8;
 /// The swing above, angles in degrees or radians, the header saying which.
 MotionText swingMotion(bool degrees) {
   MotionText m;
-  m.header = {"swing", "version=1", "nRows=" + std::to_string(kRows), "nColumns=4", degrees ? "inDegrees=yes" : "inDegrees=no"};
+  m.header = {"swing", "version=1", "nRows=" + std::to_string(kRows), "nColumns=4",
+              degrees ? "inDegrees=yes" : "inDegrees=no"};
   const double unit = degrees ? 1.0 : kDegToRad;
   for (int k = 0; k < kRows; ++k) {
     const double t = frameTime(k);
-    m.rows.push_back(number(t) + "\t" + number(hipDeg(t) * unit) + "\t" + number(kneeDeg(t) * unit) + "\t" + number(momentNm(t)));
+    m.rows.push_back(number(t) + "\t" + number(hipDeg(t) * unit) + "\t" + number(kneeDeg(t) * unit) + "\t" +
+                     number(momentNm(t)));
   }
   return m;
 }
@@ -211,8 +213,9 @@ TEST(MotionFile, SignAndOffsetGiveClinicalFlexion) {
     makeSwingRecord(table, c);
     ADD_FAILURE() << "a knee hyperextended on every sample was accepted";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), ::testing::HasSubstr("trial.sto: knee_angle_r: expected knee flexion, positive when bent (got 51 of 51 "
-                                               "samples over the swing below -5 deg"));
+    EXPECT_THAT(e.what(),
+                ::testing::HasSubstr("trial.sto: knee_angle_r: expected knee flexion, positive when bent (got 51 of 51 "
+                                     "samples over the swing below -5 deg"));
     EXPECT_THAT(e.what(), ::testing::HasSubstr("set knee_sign: 1"));
   }
 }
@@ -237,7 +240,8 @@ TEST(MotionFile, CutBetweenRowsInterpolatesTheEnds) {
   const auto line = [](double t) { return 2 + 100 * t; };  // deg
   m.rows.clear();
   for (int k = 0; k < kRows; ++k)
-    m.rows.push_back(number(frameTime(k)) + "\t" + number(line(frameTime(k))) + "\t" + number(line(frameTime(k))) + "\t0");
+    m.rows.push_back(number(frameTime(k)) + "\t" + number(line(frameTime(k))) + "\t" + number(line(frameTime(k))) +
+                     "\t0");
   MotionColumns c = swingColumns();
   c.toeOffTime = 0.105;
   c.heelContactTime = 0.3925;
@@ -258,14 +262,14 @@ TEST(MotionFile, ResampleInterpolatesAtTheStatedInterval) {
   const auto line = [](double t) { return -3 + 80 * t; };  // deg
   m.rows.clear();
   for (int k = 0; k < kRows; ++k)
-    m.rows.push_back(number(frameTime(k)) + "\t" + number(line(frameTime(k))) + "\t" + number(line(frameTime(k))) + "\t" +
-                     number(10 * frameTime(k)));
+    m.rows.push_back(number(frameTime(k)) + "\t" + number(line(frameTime(k))) + "\t" + number(line(frameTime(k))) +
+                     "\t" + number(10 * frameTime(k)));
   MotionColumns c = swingColumns();
   c.toeOffTime = 0.1;
   c.heelContactTime = 0.4;
   c.resampleInterval = 0.004;
   const SwingRecord r = makeSwingRecord(parseMotionTable(m.str(), "line.sto"), c);
-  ASSERT_EQ(r.time.size(), 76u);  // 0, 0.004, ..., 0.3 s
+  ASSERT_EQ(r.time.size(), 76u);      // 0, 0.004, ..., 0.3 s
   constexpr double kLineTol = 1e-12;  // deg or N m: rounding in interpolating a line
   for (std::size_t i = 0; i < r.time.size(); ++i) {
     const double t = 0.1 + 0.004 * static_cast<double>(i);
@@ -280,9 +284,10 @@ TEST(MotionFile, ExtensionChoosesTheReader) {
   EXPECT_TRUE(isMotionFile("b.STO"));
   EXPECT_FALSE(isMotionFile("b.csv"));
   EXPECT_FALSE(isMotionFile("sto"));
-  const std::string csv = writeTemp("trial.csv", "time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\n"
-                                                 "0,1,2,3\n0.1,1,5,3\n0.2,1,9,3\n0.3,1,9,3\n0.4,1,9,3\n"
-                                                 "0.5,1,9,3\n0.6,1,9,3\n0.7,1,9,3\n0.8,1,9,3\n0.9,1,9,3\n");
+  const std::string csv = writeTemp("trial.csv",
+                                    "time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\n"
+                                    "0,1,2,3\n0.1,1,5,3\n0.2,1,9,3\n0.3,1,9,3\n0.4,1,9,3\n"
+                                    "0.5,1,9,3\n0.6,1,9,3\n0.7,1,9,3\n0.8,1,9,3\n0.9,1,9,3\n");
   EXPECT_EQ(readSwingRecordFile(csv, std::nullopt).kneeFlexion, readSwingRecord(csv).kneeFlexion);
   const std::string sto = writeTemp("nocolumns.sto", swingMotion(true).str());
   try {
@@ -304,57 +309,95 @@ struct BadMotion {
 
 std::vector<BadMotion> badMotions() {
   return {
-      {"no endheader", [](MotionText& m) { m.endheader = false; },
+      {"no endheader",
+       [](MotionText& m) { m.endheader = false; },
        {"trial.sto:1: ", "expected an OpenSim Storage header ending in a line 'endheader' (got none in"}},
-      {"time not first", [](MotionText& m) { m.labels = "hip_flexion_r\ttime\tknee_angle_r\thip_moment"; },
+      {"time not first",
+       [](MotionText& m) { m.labels = "hip_flexion_r\ttime\tknee_angle_r\thip_moment"; },
        {"trial.sto:7: time: expected the first column label to be 'time' (got 'hip_flexion_r')"}},
-      {"repeated label", [](MotionText& m) { m.labels = "time\thip_flexion_r\tknee_angle_r\tknee_angle_r"; },
+      {"repeated label",
+       [](MotionText& m) { m.labels = "time\thip_flexion_r\tknee_angle_r\tknee_angle_r"; },
        {"trial.sto:7: knee_angle_r: column label appears twice"}},
-      {"requested column missing", [](MotionText& m) { m.labels = "time\thip_flexion_r\tknee_angle_l\thip_moment"; },
+      {"requested column missing",
+       [](MotionText& m) { m.labels = "time\thip_flexion_r\tknee_angle_l\thip_moment"; },
        {"trial.sto:7: knee_angle_r: column is missing (available: time, hip_flexion_r, knee_angle_l, hip_moment)"}},
-      {"row too short", [](MotionText& m) { m.rows[3] = "0.03\t1\t2"; },
+      {"row too short",
+       [](MotionText& m) { m.rows[3] = "0.03\t1\t2"; },
        {"trial.sto:11: expected 4 values, one per label on line 7 (got 3)"}},
-      {"comma decimals", [](MotionText& m) { m.rows[3] = "0,03\t1,5\t2\t3"; },
+      {"comma decimals",
+       [](MotionText& m) { m.rows[3] = "0,03\t1,5\t2\t3"; },
        {"trial.sto:11: time: expected a number (got '0,03')"}},
-      {"not a number", [](MotionText& m) { m.rows[4] = "0.04\t1\tabc\t3"; },
+      {"not a number",
+       [](MotionText& m) { m.rows[4] = "0.04\t1\tabc\t3"; },
        {"trial.sto:12: knee_angle_r: expected a number (got 'abc')"}},
-      {"NaN", [](MotionText& m) { m.rows[5] = "0.05\tnan\t2\t3"; },
+      {"NaN",
+       [](MotionText& m) { m.rows[5] = "0.05\tnan\t2\t3"; },
        {"trial.sto:13: hip_flexion_r: expected a finite number (got 'nan')"}},
-      {"infinity", [](MotionText& m) { m.rows[6] = "0.06\t1\t2\t-inf"; },
+      {"infinity",
+       [](MotionText& m) { m.rows[6] = "0.06\t1\t2\t-inf"; },
        {"trial.sto:14: hip_moment: expected a finite number (got '-inf')"}},
-      {"overflow", [](MotionText& m) { m.rows[6] = "0.06\t1e999\t2\t3"; },
+      {"overflow",
+       [](MotionText& m) { m.rows[6] = "0.06\t1e999\t2\t3"; },
        {"trial.sto:14: hip_flexion_r: expected a finite number (got '1e999')"}},
-      {"time repeats", [](MotionText& m) { m.rows[20] = "0.19\t1\t2\t3"; },
+      {"time repeats",
+       [](MotionText& m) { m.rows[20] = "0.19\t1\t2\t3"; },
        {"trial.sto:28: time: must strictly increase (got 0.19 after 0.19"}},
-      {"time goes back", [](MotionText& m) { m.rows[20] = "0.1\t1\t2\t3"; },
+      {"time goes back",
+       [](MotionText& m) { m.rows[20] = "0.1\t1\t2\t3"; },
        {"trial.sto:28: time: must strictly increase (got 0.1 after 0.19"}},
-      {"gap", [](MotionText& m) { m.rows.erase(m.rows.begin() + 20, m.rows.begin() + 26); m.header[2] = "nRows=45"; },
-       {"trial.sto:28: time: a gap of 0.07", "s after 0.19", "more than 5 times the median step of 0.01", "missing frames?"}},
-      {"nRows disagrees", [](MotionText& m) { m.rows.pop_back(); },
+      {"gap",
+       [](MotionText& m) {
+         m.rows.erase(m.rows.begin() + 20, m.rows.begin() + 26);
+         m.header[2] = "nRows=45";
+       },
+       {"trial.sto:28: time: a gap of 0.07", "s after 0.19", "more than 5 times the median step of 0.01",
+        "missing frames?"}},
+      {"nRows disagrees",
+       [](MotionText& m) { m.rows.pop_back(); },
        {"trial.sto:3: nRows: the header says 51 rows (got 50 rows of numbers)"}},
-      {"nRows not a number", [](MotionText& m) { m.header[2] = "nRows=many"; },
+      {"nRows not a number",
+       [](MotionText& m) { m.header[2] = "nRows=many"; },
        {"trial.sto:3: nRows: expected a whole number (got 'many')"}},
-      {"nColumns disagrees", [](MotionText& m) { m.header[3] = "nColumns=3"; },
+      {"nColumns disagrees",
+       [](MotionText& m) { m.header[3] = "nColumns=3"; },
        {"trial.sto:4: nColumns: the header says 3 columns, time included (got 4 labels on line 7)"}},
-      {"inDegrees not yes or no", [](MotionText& m) { m.header[4] = "inDegrees=true"; },
+      {"inDegrees not yes or no",
+       [](MotionText& m) { m.header[4] = "inDegrees=true"; },
        {"trial.sto:5: inDegrees: expected yes or no (got 'true')"}},
-      {"inDegrees twice", [](MotionText& m) { m.header.push_back("inDegrees=no"); },
+      {"inDegrees twice",
+       [](MotionText& m) { m.header.push_back("inDegrees=no"); },
        {"trial.sto:6: inDegrees: appears twice in the header (first on line 5)"}},
-      {"version 2", [](MotionText& m) { m.header[1] = "version=2"; },
+      {"version 2",
+       [](MotionText& m) { m.header[1] = "version=2"; },
        {"trial.sto:2: version: expected 1 (Storage version 1) (got '2')"}},
-      {"no rows", [](MotionText& m) { m.rows.clear(); m.header[2] = "nRows=0"; },
+      {"no rows",
+       [](MotionText& m) {
+         m.rows.clear();
+         m.header[2] = "nRows=0";
+       },
        {"trial.sto:7: expected rows of numbers after the column labels (got none)"}},
-      {"no labels", [](MotionText& m) { m.labels = ""; m.rows.clear(); },
-       {"trial.sto:6: expected a line of column labels after endheader, starting with 'time' (got the end of the file)"}},
+      {"no labels",
+       [](MotionText& m) {
+         m.labels = "";
+         m.rows.clear();
+       },
+       {"trial.sto:6: expected a line of column labels after endheader, starting with 'time' (got the end of the "
+        "file)"}},
       {"radians said to be degrees",
-       [](MotionText& m) { m = swingMotion(false); m.header[4] = "inDegrees=yes"; },
+       [](MotionText& m) {
+         m = swingMotion(false);
+         m.header[4] = "inDegrees=yes";
+       },
        {"trial.sto:5: knee_angle_r: the knee moves through only", "deg over the swing",
         "the column looks like radians, but the header says inDegrees=yes"}},
-      {"degrees said to be radians", [](MotionText& m) { m.header[4] = "inDegrees=no"; },
+      {"degrees said to be radians",
+       [](MotionText& m) { m.header[4] = "inDegrees=no"; },
        {"trial.sto:5: knee_angle_r: the knee moves through ", "rad over the swing",
         "the column looks like degrees, but the header says inDegrees=no"}},
-      {"degrees without inDegrees", [](MotionText& m) { m.header.pop_back(); },
-       {"trial.sto: knee_angle_r: the knee moves through ", "rad over the swing", "the header has no inDegrees line, read as no (radians)"}},
+      {"degrees without inDegrees",
+       [](MotionText& m) { m.header.pop_back(); },
+       {"trial.sto: knee_angle_r: the knee moves through ", "rad over the swing",
+        "the header has no inDegrees line, read as no (radians)"}},
   };
 }
 
@@ -376,10 +419,12 @@ TEST(MotionFileBadInput, CutOutsideTheFileOrTooShort) {
                                           "the file's time runs from 0 to 0.5 s (got -0.1 s)"));
   c.toeOffTime = 0.2;
   c.heelContactTime = 0.6;
-  EXPECT_THAT(errorOf(text, c), HasSubstr("trial.sto: heel_contact_s: expected a time after toe-off (0.2 s) and within the file"));
+  EXPECT_THAT(errorOf(text, c),
+              HasSubstr("trial.sto: heel_contact_s: expected a time after toe-off (0.2 s) and within the file"));
   c.heelContactTime = 0.25;
-  EXPECT_THAT(errorOf(text, c), HasSubstr("trial.sto: expected at least 10 samples between toe-off (0.2 s) and heel contact "
-                                          "(0.25 s) (got 6)"));
+  EXPECT_THAT(errorOf(text, c),
+              HasSubstr("trial.sto: expected at least 10 samples between toe-off (0.2 s) and heel contact "
+                        "(0.25 s) (got 6)"));
   c = swingColumns();
   c.resampleInterval = 1e-9;
   EXPECT_THAT(errorOf(text, c), HasSubstr("s gives more than 2000000 samples over the swing (the limit)"));
@@ -393,7 +438,8 @@ TEST(MotionFileBadInput, SizeAndRowLimits) {
     parseMotionTable(text, "big.sto");
     FAIL() << "too many rows accepted";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("big.sto:" + std::to_string(kMaxMotionRows + 4) + ": too many rows (more than 2000000"));
+    EXPECT_THAT(e.what(),
+                HasSubstr("big.sto:" + std::to_string(kMaxMotionRows + 4) + ": too many rows (more than 2000000"));
   }
   // Binary data and directories are named as such.
   std::string binary = "swing\nendheader\ntime\n";
@@ -541,8 +587,9 @@ TEST(MotionFileKneeMomentBadInput, NoOverlapOrNoLabelNamesFileKeyAndWhatWasFound
     makeSwingRecord(ik, c, &id);
     FAIL() << "an ID outside the swing was accepted";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr(kGait2354Id + ": inverse_dynamics: expected times that overlap the swing, 2 to 2.5 s "
-                                    "(got 0.39999976 to 1.59999928 s)"));
+    EXPECT_THAT(e.what(),
+                HasSubstr(kGait2354Id + ": inverse_dynamics: expected times that overlap the swing, 2 to 2.5 s "
+                                        "(got 0.39999976 to 1.59999928 s)"));
   }
   c.toeOffTime = 0.6;
   c.heelContactTime = 1.2;
@@ -551,13 +598,15 @@ TEST(MotionFileKneeMomentBadInput, NoOverlapOrNoLabelNamesFileKeyAndWhatWasFound
     makeSwingRecord(ik, c, &id);
     FAIL() << "a missing knee moment label was accepted";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr(kGait2354Id + ":7: knee_moment: column is missing (available: time, pelvis_tilt_moment"));
+    EXPECT_THAT(e.what(),
+                HasSubstr(kGait2354Id + ":7: knee_moment: column is missing (available: time, pelvis_tilt_moment"));
     EXPECT_THAT(e.what(), HasSubstr("motion_columns: knee_moment"));
   }
   // A pelvis label the file lacks lists those it has.
   c.kneeMoment = "";
   c.pelvisTilt = "pelvis_tlt";
-  EXPECT_THAT(errorOf(readFile(kGait2392Ik), c), HasSubstr("pelvis_tlt: column is missing (available: time, pelvis_tilt,"));
+  EXPECT_THAT(errorOf(readFile(kGait2392Ik), c),
+              HasSubstr("pelvis_tlt: column is missing (available: time, pelvis_tilt,"));
 }
 
 }  // namespace

@@ -23,8 +23,8 @@ constexpr double kRoundTrip = 1e-12;
 constexpr double kAccuracy = 1e-8;
 constexpr double kSwingTimeTol = 1e-5;  // s
 
-constexpr double kLowering = 0.03;        // m
-const AddedMass kAdded{0.7, 0.22};        // kg, m below the knee
+constexpr double kLowering = 0.03;  // m
+const AddedMass kAdded{0.7, 0.22};  // kg, m below the knee
 
 struct RoundTrip {
   Participant p1 = loadParticipant(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml");
@@ -48,7 +48,7 @@ TEST(OsimExportAddedMassRoundTrip, TheMassComesBackInTheShankByTheHandFormulas) 
   const RoundTrip r;
   const LegGeometry& g = r.exported;
   const double ms = g.shankMass, ma = kAdded.mass, cs = g.shankCom, d = kAdded.distanceBelowKnee;
-  const double com = (ms * cs + ma * d) / (ms + ma);  // below the knee
+  const double com = (ms * cs + ma * d) / (ms + ma);                                              // below the knee
   const double izz = g.shankInertia + ms * (cs - com) * (cs - com) + ma * (d - com) * (d - com);  // parallel axes
   const LegGeometry h = calcLegGeometry(r.back, 0);
   EXPECT_NEAR(h.shankMass, ms + ma, kRoundTrip);
@@ -77,7 +77,8 @@ TEST(OsimExportAddedMassRoundTrip, TheImportedLegSwingsAsTheSimulatedLegWithTheM
   RecordProperty("simulated_swing_time_s", formatNumber(simulated.swingTime));
   RecordProperty("imported_swing_time_s", formatNumber(played.swingTime));
   const SwingResult without = simulateSwing(makeSwingSetup(r.p1, knee, kLowering), options);
-  EXPECT_GT(std::fabs(without.swingTime - simulated.swingTime), 100 * kSwingTimeTol) << "the mass matters at this tolerance";
+  EXPECT_GT(std::fabs(without.swingTime - simulated.swingTime), 100 * kSwingTimeTol)
+      << "the mass matters at this tolerance";
   RecordProperty("without_mass_swing_time_s", formatNumber(without.swingTime));
 }
 

@@ -88,7 +88,8 @@ class OsimExportSide : public ::testing::TestWithParam<char> {
 TEST_P(OsimExportSide, NamesAreTheGaitModelsForThatSide) {
   Written w;
   parseInto(text, w);
-  for (const std::string& body : std::vector<std::string>{"pelvis", "femur_" + s, "tibia_" + s, "talus_" + s, "calcn_" + s, "toes_" + s})
+  for (const std::string& body :
+       std::vector<std::string>{"pelvis", "femur_" + s, "tibia_" + s, "talus_" + s, "calcn_" + s, "toes_" + s})
     EXPECT_NE(findNamed(w.bodies, "Body", body), nullptr) << body;
   const XMLElement* hip = findNamed(w.joints, "PinJoint", "hip_" + s);
   const XMLElement* knee = findNamed(w.joints, "PinJoint", "knee_" + s);
@@ -112,13 +113,18 @@ TEST_P(OsimExportSide, KneeAngleIsMinusFlexionAsSwingsimsKinematicsSaysTurningTh
   ASSERT_TRUE(hip && knee);
   for (const XMLElement* j : {hip, knee})
     for (const XMLElement* f = j->FirstChildElement("frames")->FirstChildElement(); f; f = f->NextSiblingElement())
-      EXPECT_EQ(numbersIn(f, "orientation"), (std::vector<double>{0, 0, 0})) << "frames along the body axes, as the gait models'";
-  const auto kneeInFemur = numbersIn(findNamed(knee->FirstChildElement("frames"), "PhysicalOffsetFrame", "femur_" + s + "_offset"), "translation");
+      EXPECT_EQ(numbersIn(f, "orientation"), (std::vector<double>{0, 0, 0}))
+          << "frames along the body axes, as the gait models'";
+  const auto kneeInFemur = numbersIn(
+      findNamed(knee->FirstChildElement("frames"), "PhysicalOffsetFrame", "femur_" + s + "_offset"), "translation");
   const XMLElement* ankle = findNamed(w.joints, "WeldJoint", "ankle_" + s);
-  const auto ankleInTibia = numbersIn(findNamed(ankle->FirstChildElement("frames"), "PhysicalOffsetFrame", "tibia_" + s + "_offset"), "translation");
+  const auto ankleInTibia = numbersIn(
+      findNamed(ankle->FirstChildElement("frames"), "PhysicalOffsetFrame", "tibia_" + s + "_offset"), "translation");
   ASSERT_EQ(kneeInFemur.size(), 3u);
   ASSERT_EQ(ankleInTibia.size(), 3u);
-  const auto rotateZ = [](double q, double x, double y) { return std::array<double, 2>{std::cos(q) * x - std::sin(q) * y, std::sin(q) * x + std::cos(q) * y}; };
+  const auto rotateZ = [](double q, double x, double y) {
+    return std::array<double, 2>{std::cos(q) * x - std::sin(q) * y, std::sin(q) * x + std::cos(q) * y};
+  };
   const double qHip = hipFlexion, qKnee = -kneeFlexion;  // the coordinates' values for that pose
   const auto knee2 = rotateZ(qHip, kneeInFemur[0], kneeInFemur[1]);
   const auto shank = rotateZ(qHip + qKnee, ankleInTibia[0], ankleInTibia[1]);
@@ -157,11 +163,11 @@ TEST_P(OsimExportSide, ShapesAreOpenSimsAnalyticGeometryAlongEachSegment) {
     std::vector<double> centre, size;
     const char* sizeElement;
   };
-  for (const Expected& e : std::vector<Expected>{
-           {"femur_" + s, "Cylinder", {0, -g.thighLength / 2, 0}, {g.thighLength / 2}, "half_height"},
-           {"tibia_" + s, "Cylinder", {0, -g.shankLength / 2, 0}, {g.shankLength / 2}, "half_height"},
-           {"talus_" + s, "Brick", {g.footLength / 2, 0, 0}, {g.footLength / 2}, "half_lengths"},
-           {"pelvis", "Ellipsoid", {0, 0, 0}, {}, "radii"}}) {
+  for (const Expected& e :
+       std::vector<Expected>{{"femur_" + s, "Cylinder", {0, -g.thighLength / 2, 0}, {g.thighLength / 2}, "half_height"},
+                             {"tibia_" + s, "Cylinder", {0, -g.shankLength / 2, 0}, {g.shankLength / 2}, "half_height"},
+                             {"talus_" + s, "Brick", {g.footLength / 2, 0, 0}, {g.footLength / 2}, "half_lengths"},
+                             {"pelvis", "Ellipsoid", {0, 0, 0}, {}, "radii"}}) {
     const XMLElement* body = findNamed(w.bodies, "Body", e.body);
     ASSERT_NE(body, nullptr) << e.body;
     const XMLElement* components = body->FirstChildElement("components");
@@ -193,10 +199,12 @@ TEST_P(OsimExportSide, ImportOsimGivesTheLoweredLegBackOnThatSide) {
   const Participant back = calcOsimParticipant(m, o).participant;
   const LegGeometry h = calcLegGeometry(back, 0);
   const std::vector<std::pair<double, double>> pairs = {
-      {h.thighLength, g.thighLength}, {h.thighMass, g.thighMass}, {h.thighCom, g.thighCom}, {h.thighInertia, g.thighInertia},
-      {h.shankLength, g.shankLength}, {h.shankMass, g.shankMass}, {h.shankCom, g.shankCom}, {h.shankInertia, g.shankInertia},
-      {h.footLength, g.footLength},   {h.footMass, g.footMass},   {h.footComForward, g.footComForward}, {h.footInertia, g.footInertia}};
-  for (std::size_t i = 0; i < pairs.size(); ++i) EXPECT_NEAR(pairs[i].first, pairs[i].second, kRoundTrip) << "field " << i;
+      {h.thighLength, g.thighLength},   {h.thighMass, g.thighMass},           {h.thighCom, g.thighCom},
+      {h.thighInertia, g.thighInertia}, {h.shankLength, g.shankLength},       {h.shankMass, g.shankMass},
+      {h.shankCom, g.shankCom},         {h.shankInertia, g.shankInertia},     {h.footLength, g.footLength},
+      {h.footMass, g.footMass},         {h.footComForward, g.footComForward}, {h.footInertia, g.footInertia}};
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    EXPECT_NEAR(pairs[i].first, pairs[i].second, kRoundTrip) << "field " << i;
   EXPECT_NEAR(back.bodyMass, p.bodyMass, kMassSum);
   ASSERT_TRUE(back.hipOffsetInPelvis.has_value());
   EXPECT_NEAR((*back.hipOffsetInPelvis)[1], (*place.hipOffsetInPelvis)[1], kRoundTrip);
@@ -223,17 +231,21 @@ TEST(OsimExportAddedMass, WeldedPointMassWhereSimulatePutsItAndTheMassesAddUp) {
   const XMLElement* weld = findNamed(w.joints, "WeldJoint", "added_mass_r_weld");
   ASSERT_NE(weld, nullptr);
   EXPECT_STREQ(weld->FirstChildElement("socket_parent_frame")->GetText(), "tibia_r_offset");
-  EXPECT_EQ(numbersIn(findNamed(weld->FirstChildElement("frames"), "PhysicalOffsetFrame", "tibia_r_offset"), "translation"),
-            (std::vector<double>{0, -0.25, 0}));
-  const XMLElement* sphere = body->FirstChildElement("components")->FirstChildElement("PhysicalOffsetFrame")
-                                 ->FirstChildElement("attached_geometry")->FirstChildElement("Sphere");
+  EXPECT_EQ(
+      numbersIn(findNamed(weld->FirstChildElement("frames"), "PhysicalOffsetFrame", "tibia_r_offset"), "translation"),
+      (std::vector<double>{0, -0.25, 0}));
+  const XMLElement* sphere = body->FirstChildElement("components")
+                                 ->FirstChildElement("PhysicalOffsetFrame")
+                                 ->FirstChildElement("attached_geometry")
+                                 ->FirstChildElement("Sphere");
   ASSERT_NE(sphere, nullptr);
   // A steel sphere of 0.8 kg: r = (3 * 0.8 / (4 pi 7850))^(1/3) = 0.0290 m.
   EXPECT_NEAR(numbersIn(sphere, "radius").at(0), 0.0290, 0.0001);
 
   // Masses from the file alone: the model is the body plus the added mass.
   double total = 0;
-  for (const XMLElement* b = w.bodies->FirstChildElement("Body"); b; b = b->NextSiblingElement("Body")) total += numbersIn(b, "mass").at(0);
+  for (const XMLElement* b = w.bodies->FirstChildElement("Body"); b; b = b->NextSiblingElement("Body"))
+    total += numbersIn(b, "mass").at(0);
   EXPECT_NEAR(total, p.bodyMass + 0.8, kMassSum);
   // The shank with its added mass, by hand: COM (m_s c_s + m_a d) / (m_s + m_a) below the knee.
   const OsimModel m = parseOsimModel(text, "exported.osim");
@@ -241,7 +253,9 @@ TEST(OsimExportAddedMass, WeldedPointMassWhereSimulatePutsItAndTheMassesAddUp) {
   const double shankAndAdded = tibia.mass + 0.8;
   const double comBelowKnee = (tibia.mass * -tibia.massCenter.y() + 0.8 * 0.25) / shankAndAdded;
   EXPECT_NEAR(shankAndAdded, p.shank.mass + 0.8, kMassSum);
-  EXPECT_NEAR(comBelowKnee, (g.shankMass * g.shankCom + added.mass * added.distanceBelowKnee) / (g.shankMass + added.mass), kRoundTrip);
+  EXPECT_NEAR(comBelowKnee,
+              (g.shankMass * g.shankCom + added.mass * added.distanceBelowKnee) / (g.shankMass + added.mass),
+              kRoundTrip);
   EXPECT_NEAR(m.getJointTo("added_mass_r").calcCentreInParent().y(), -0.25, kRoundTrip);
 }
 

@@ -68,10 +68,12 @@ const std::string kLeg = R"(<?xml version="1.0" encoding="UTF-8" ?>
 </OpenSimDocument>
 )";
 
-const std::string kShipped = std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim";
+const std::string kShipped =
+    std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim";
 
 // kLeg with each (from, to) replaced in turn (first occurrence).
-std::string withReplaced(const std::string& from, const std::string& to, const std::string& from2 = "", const std::string& to2 = "") {
+std::string withReplaced(const std::string& from, const std::string& to, const std::string& from2 = "",
+                         const std::string& to2 = "") {
   std::string t = kLeg;
   for (const auto& [f, r] : {std::pair{from, to}, std::pair{from2, to2}}) {
     if (f.empty()) continue;
@@ -99,7 +101,8 @@ TEST(OsimSpline, SimmSplineReproducesACubicAndNaturalSplineMatchesItsClosedForm)
   const std::vector<double> xs = {-2, -1.2, -0.3, 0.4, 1.1, 2};
   std::vector<double> ys;
   for (double x : xs) ys.push_back(cubic(x));
-  for (double at : {-1.7, 0.0, 0.77, 1.9}) EXPECT_NEAR(calcOsimSplineValue(xs, ys, at, false), cubic(at), kArithmetic) << at;
+  for (double at : {-1.7, 0.0, 0.77, 1.9})
+    EXPECT_NEAR(calcOsimSplineValue(xs, ys, at, false), cubic(at), kArithmetic) << at;
   // Natural spline through (-1, 0), (0, 1), (1, 0): second derivative -3 at 0 (from
   // 4 M1 = 6 (-2)), so S(0.5) = -3 (0.5^3)/6 + (1 + 3/6) 0.5 = 0.6875.
   EXPECT_NEAR(calcOsimSplineValue({-1, 0, 1}, {0, 1, 0}, 0.5, true), 0.6875, kArithmetic);
@@ -220,26 +223,35 @@ TEST(OsimModelErrors, AFootNeedsMassInOneOfItsBodiesNotInEach) {
   EXPECT_DOUBLE_EQ(p.foot.mass, 0.1);  // talus_r's alone
   leg.replace(leg.find("<mass>0.1</mass>"), std::string("<mass>0.1</mass>").size(), "<mass>0</mass>");
   EXPECT_THAT(errorFor(leg), HasSubstr(std::string("tiny.osim:8") +  // talus_r is line 8 of kLeg
-                                       ": <Body name=\"talus_r\">: <mass>: expected a positive mass in kg for the foot, talus_r + calcn_r + toes_r (got 0)"));
+                                       ": <Body name=\"talus_r\">: <mass>: expected a positive mass in kg for the "
+                                       "foot, talus_r + calcn_r + toes_r (got 0)"));
 }
 
 TEST(OsimModelErrors, EachBadInputNamesFileLineElementAndWhatWasFound) {
-  EXPECT_THAT(errorFor("this is not xml <"), HasSubstr("tiny.osim:1: expected an OpenSim model (.osim XML) (got text that is not XML"));
-  EXPECT_THAT(errorFor(withReplaced("Version=\"40000\"", "Version=\"30000\"")),
-              HasSubstr("tiny.osim:2: <OpenSimDocument Version>: expected an OpenSim 4 model, Version 40000 or later (got 30000"));
-  EXPECT_THAT(errorFor(kLeg, 'l'),
-              HasSubstr("tiny.osim:4: <Body name=\"femur_l\">: expected a body of that name in the BodySet (got pelvis, femur_r"));
+  EXPECT_THAT(errorFor("this is not xml <"),
+              HasSubstr("tiny.osim:1: expected an OpenSim model (.osim XML) (got text that is not XML"));
+  EXPECT_THAT(
+      errorFor(withReplaced("Version=\"40000\"", "Version=\"30000\"")),
+      HasSubstr(
+          "tiny.osim:2: <OpenSimDocument Version>: expected an OpenSim 4 model, Version 40000 or later (got 30000"));
+  EXPECT_THAT(
+      errorFor(kLeg, 'l'),
+      HasSubstr(
+          "tiny.osim:4: <Body name=\"femur_l\">: expected a body of that name in the BodySet (got pelvis, femur_r"));
   EXPECT_THAT(errorFor(withReplaced("/bodyset/toes_r</socket_child_frame>", "/bodyset/ground</socket_child_frame>")),
               HasSubstr("expected a joint whose child frame is on body toes_r (got none)"));
-  EXPECT_THAT(errorFor(withReplaced("<mass>3</mass>", "<mass>0</mass>")),
-              HasSubstr("tiny.osim:7: <Body name=\"tibia_r\">: <mass>: expected a positive mass in kg for a leg segment (got 0)"));
+  EXPECT_THAT(
+      errorFor(withReplaced("<mass>3</mass>", "<mass>0</mass>")),
+      HasSubstr(
+          "tiny.osim:7: <Body name=\"tibia_r\">: <mass>: expected a positive mass in kg for a leg segment (got 0)"));
   EXPECT_THAT(errorFor(withReplaced("<mass>3</mass>", "<mass>-3</mass>")),
               HasSubstr("tiny.osim:7: <Body name=\"tibia_r\">: <mass>: expected a mass >= 0 kg (got -3)"));
   EXPECT_THAT(errorFor(withReplaced("<mass>3</mass>", "<mass>three</mass>")),
               HasSubstr("tiny.osim:7: <Body name=\"tibia_r\">: <mass>: expected 1 finite numbers (got \"three\")"));
   EXPECT_THAT(errorFor(withReplaced("<SimmSpline>", "<GCVSpline>", "</SimmSpline>", "</GCVSpline>")),
               HasSubstr("TransformAxis function: expected Constant, LinearFunction"));
-  EXPECT_THAT(errorFor(withReplaced("<BodySet name=\"bodyset\"><objects>", "<BodySetX><objects>", "</objects></BodySet>", "</objects></BodySetX>")),
+  EXPECT_THAT(errorFor(withReplaced("<BodySet name=\"bodyset\"><objects>", "<BodySetX><objects>",
+                                    "</objects></BodySet>", "</objects></BodySetX>")),
               HasSubstr("<Model name=\"tiny\">: expected a <BodySet> element (got none)"));
 }
 

@@ -110,7 +110,8 @@ TEST_F(OsimModelWriter, BodiesHoldTheLegsMassesComsAndInertias) {
 TEST_F(OsimModelWriter, JointsSitAtTheLoweredJointCentresWithSwingsimsCoordinates) {
   tinyxml2::XMLDocument doc;
   ASSERT_EQ(doc.Parse(text.c_str()), tinyxml2::XML_SUCCESS);
-  const XMLElement* joints = doc.RootElement()->FirstChildElement("Model")->FirstChildElement("JointSet")->FirstChildElement("objects");
+  const XMLElement* joints =
+      doc.RootElement()->FirstChildElement("Model")->FirstChildElement("JointSet")->FirstChildElement("objects");
   const XMLElement* weld = findNamed(joints, "WeldJoint", "ground_pelvis");
   const XMLElement* hip = findNamed(joints, "PinJoint", "hip_r");
   const XMLElement* knee = findNamed(joints, "PinJoint", "knee_r");
@@ -124,9 +125,12 @@ TEST_F(OsimModelWriter, JointsSitAtTheLoweredJointCentresWithSwingsimsCoordinate
   EXPECT_EQ(hipInPelvis, (std::vector<double>{offset[0], offset[1], 0}));
   EXPECT_NEAR(pelvisInGround[0] + hipInPelvis[0], 0, kRoundTrip);
   EXPECT_NEAR(pelvisInGround[1] + hipInPelvis[1], place.hipHeight, kRoundTrip);
-  EXPECT_EQ(numbersIn(socketFrame(knee, "socket_parent_frame"), "translation"), (std::vector<double>{0, -g.thighLength, 0}));
-  EXPECT_EQ(numbersIn(socketFrame(ankle, "socket_parent_frame"), "translation"), (std::vector<double>{0, -g.shankLength, 0}));
-  EXPECT_EQ(numbersIn(socketFrame(mtp, "socket_parent_frame"), "translation"), (std::vector<double>{g.footLength, 0, 0}));
+  EXPECT_EQ(numbersIn(socketFrame(knee, "socket_parent_frame"), "translation"),
+            (std::vector<double>{0, -g.thighLength, 0}));
+  EXPECT_EQ(numbersIn(socketFrame(ankle, "socket_parent_frame"), "translation"),
+            (std::vector<double>{0, -g.shankLength, 0}));
+  EXPECT_EQ(numbersIn(socketFrame(mtp, "socket_parent_frame"), "translation"),
+            (std::vector<double>{g.footLength, 0, 0}));
   // Knee frames unturned, as the gait models': + rotation about z is an extension.
   for (const char* socket : {"socket_parent_frame", "socket_child_frame"})
     EXPECT_EQ(numbersIn(socketFrame(knee, socket), "orientation"), (std::vector<double>{0, 0, 0})) << socket;
@@ -157,10 +161,12 @@ TEST_F(OsimModelWriter, ReaderAndImportGiveTheLoweredLegBack) {
   const Participant back = calcOsimParticipant(m, o).participant;
   const LegGeometry h = calcLegGeometry(back, 0);  // the exported leg is the lowered one
   const std::vector<std::pair<double, double>> pairs = {
-      {h.thighLength, g.thighLength}, {h.thighMass, g.thighMass}, {h.thighCom, g.thighCom}, {h.thighInertia, g.thighInertia},
-      {h.shankLength, g.shankLength}, {h.shankMass, g.shankMass}, {h.shankCom, g.shankCom}, {h.shankInertia, g.shankInertia},
-      {h.footLength, g.footLength},   {h.footMass, g.footMass},   {h.footComForward, g.footComForward}, {h.footInertia, g.footInertia}};
-  for (std::size_t i = 0; i < pairs.size(); ++i) EXPECT_NEAR(pairs[i].first, pairs[i].second, kRoundTrip) << "field " << i;
+      {h.thighLength, g.thighLength},   {h.thighMass, g.thighMass},           {h.thighCom, g.thighCom},
+      {h.thighInertia, g.thighInertia}, {h.shankLength, g.shankLength},       {h.shankMass, g.shankMass},
+      {h.shankCom, g.shankCom},         {h.shankInertia, g.shankInertia},     {h.footLength, g.footLength},
+      {h.footMass, g.footMass},         {h.footComForward, g.footComForward}, {h.footInertia, g.footInertia}};
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    EXPECT_NEAR(pairs[i].first, pairs[i].second, kRoundTrip) << "field " << i;
   ASSERT_TRUE(back.hipOffsetInPelvis.has_value());
   EXPECT_NEAR((*back.hipOffsetInPelvis)[0], (*place.hipOffsetInPelvis)[0], kRoundTrip);
   EXPECT_NEAR((*back.hipOffsetInPelvis)[1], (*place.hipOffsetInPelvis)[1], kRoundTrip);

@@ -6,12 +6,12 @@
 
 #include <regex>
 
+#include "../cli/run_swingsim.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/units.h"
 #include "io/motion_file.h"
 #include "io/swing_events.h"
-#include "../cli/run_swingsim.h"
 
 namespace swingsim {
 namespace {
@@ -77,21 +77,33 @@ TEST(ParticipantLoader, EveryBadInputNamesFileLineKeyAndValue) {
   const std::vector<BadCase> cases = {
       {"unknown key", kGood + "colour: blue\n", "participants/px.yaml:16: colour: unknown key"},
       {"missing key", replaced("knee_friction_Nm: 10\n", ""), "knee_friction_Nm: required key is missing"},
-      {"wrong type", replaced("body_mass_kg: 75", "body_mass_kg: heavy"), "participants/px.yaml:3: body_mass_kg: expected a number (got 'heavy')"},
-      {"NaN", replaced("mass_kg: 3.350", "mass_kg: .nan"), "px.yaml:5: segments.thigh.mass_kg: expected a finite number"},
+      {"wrong type", replaced("body_mass_kg: 75", "body_mass_kg: heavy"),
+       "participants/px.yaml:3: body_mass_kg: expected a number (got 'heavy')"},
+      {"NaN", replaced("mass_kg: 3.350", "mass_kg: .nan"),
+       "px.yaml:5: segments.thigh.mass_kg: expected a finite number"},
       {"inf", replaced("length_m: 0.515", "length_m: .inf"), "segments.shank.length_m: expected a finite number"},
-      {"negative mass", replaced("mass_kg: 0.785", "mass_kg: -0.785"), "segments.shank.mass_kg: must be positive (got -0.785)"},
-      {"negative length", replaced("length_m: 0.240", "length_m: -0.24"), "segments.foot.length_m: must be positive (got -0.24)"},
-      {"negative inertia", replaced("inertia_kgm2: 0.0264", "inertia_kgm2: -1"), "segments.thigh.inertia_kgm2: must be positive (got -1)"},
-      {"COM outside segment", replaced("com_from_distal_m: 0.284", "com_from_distal_m: 0.5"), "segments.thigh.com_from_distal_m: the COM must lie on the segment"},
-      {"comma decimal", replaced("height_m: 1.80", "height_m: 1,80"), "height_m: expected a number with a decimal point"},
+      {"negative mass", replaced("mass_kg: 0.785", "mass_kg: -0.785"),
+       "segments.shank.mass_kg: must be positive (got -0.785)"},
+      {"negative length", replaced("length_m: 0.240", "length_m: -0.24"),
+       "segments.foot.length_m: must be positive (got -0.24)"},
+      {"negative inertia", replaced("inertia_kgm2: 0.0264", "inertia_kgm2: -1"),
+       "segments.thigh.inertia_kgm2: must be positive (got -1)"},
+      {"COM outside segment", replaced("com_from_distal_m: 0.284", "com_from_distal_m: 0.5"),
+       "segments.thigh.com_from_distal_m: the COM must lie on the segment"},
+      {"comma decimal", replaced("height_m: 1.80", "height_m: 1,80"),
+       "height_m: expected a number with a decimal point"},
       {"duplicate key", kGood + "name: PY\n", "px.yaml:16: name: key appears twice"},
-      {"bad choice", kGood + "com_rule: middle\n", "com_rule: expected one of: fixed_from_proximal, proportional (got 'middle')"},
-      {"non-increasing hip table", replaced("  profile: biphasic_sine\n  flexion_amplitude_Nm: 30\n  flexion_duration_s: 0.2\n  extension_amplitude_Nm: 15\n  extension_duration_s: 0.2\n",
-                                            "  profile: table\n  time_s: [0, 0.1, 0.1, 0.3]\n  moment_Nm: [0, 20, 10, 0]\n"),
+      {"bad choice", kGood + "com_rule: middle\n",
+       "com_rule: expected one of: fixed_from_proximal, proportional (got 'middle')"},
+      {"non-increasing hip table",
+       replaced("  profile: biphasic_sine\n  flexion_amplitude_Nm: 30\n  flexion_duration_s: 0.2\n  "
+                "extension_amplitude_Nm: 15\n  extension_duration_s: 0.2\n",
+                "  profile: table\n  time_s: [0, 0.1, 0.1, 0.3]\n  moment_Nm: [0, 20, 10, 0]\n"),
        "hip_moment.time_s: times must strictly increase (got 0.1 after 0.1)"},
-      {"table length mismatch", replaced("  profile: biphasic_sine\n  flexion_amplitude_Nm: 30\n  flexion_duration_s: 0.2\n  extension_amplitude_Nm: 15\n  extension_duration_s: 0.2\n",
-                                         "  profile: table\n  time_s: [0, 0.1, 0.2]\n  moment_Nm: [0, 20]\n"),
+      {"table length mismatch",
+       replaced("  profile: biphasic_sine\n  flexion_amplitude_Nm: 30\n  flexion_duration_s: 0.2\n  "
+                "extension_amplitude_Nm: 15\n  extension_duration_s: 0.2\n",
+                "  profile: table\n  time_s: [0, 0.1, 0.2]\n  moment_Nm: [0, 20]\n"),
        "hip_moment.moment_Nm: expected one moment per time (3) (got 2 values)"},
       {"empty file", "", "expected a YAML mapping"},
       {"binary garbage", std::string("\x01\x02\xff\xfe\x00zz", 7), "px.yaml:"},
@@ -147,20 +159,28 @@ TEST(ParticipantFormat, LoadWriteLoadGivesTheSameParticipant) {
     EXPECT_EQ(back.hipMoment.moments, p.hipMoment.moments);
     EXPECT_EQ(back.drive, p.drive) << p.name;
     EXPECT_EQ(back.thighKinematics.hipFlexion, p.thighKinematics.hipFlexion) << p.name;
-    for (const auto& [a, b] : std::vector<std::pair<double, double>>{
-             {back.height, p.height}, {back.bodyMass, p.bodyMass}, {back.thigh.mass, p.thigh.mass},
-             {back.shank.comFromDistal, p.shank.comFromDistal}, {back.foot.inertia, p.foot.inertia},
-             {back.kneeFriction, p.kneeFriction}, {back.initial.hipFlexion, p.initial.hipFlexion},
-             {back.initial.kneeFlexionRate, p.initial.kneeFlexionRate}, {back.hipRange.maxFlexion, p.hipRange.maxFlexion},
-             {back.swingEnd.zoneOfStability, p.swingEnd.zoneOfStability}, {back.hipMoment.timeScale, p.hipMoment.timeScale},
-             {back.hipMoment.flexionAmplitude, p.hipMoment.flexionAmplitude}, {back.minShankLength, p.minShankLength}})
+    for (const auto& [a, b] :
+         std::vector<std::pair<double, double>>{{back.height, p.height},
+                                                {back.bodyMass, p.bodyMass},
+                                                {back.thigh.mass, p.thigh.mass},
+                                                {back.shank.comFromDistal, p.shank.comFromDistal},
+                                                {back.foot.inertia, p.foot.inertia},
+                                                {back.kneeFriction, p.kneeFriction},
+                                                {back.initial.hipFlexion, p.initial.hipFlexion},
+                                                {back.initial.kneeFlexionRate, p.initial.kneeFlexionRate},
+                                                {back.hipRange.maxFlexion, p.hipRange.maxFlexion},
+                                                {back.swingEnd.zoneOfStability, p.swingEnd.zoneOfStability},
+                                                {back.hipMoment.timeScale, p.hipMoment.timeScale},
+                                                {back.hipMoment.flexionAmplitude, p.hipMoment.flexionAmplitude},
+                                                {back.minShankLength, p.minShankLength}})
       EXPECT_EQ(a, b) << p.name;  // exact: numbers are written to read back to the same double
   }
 }
 
 TEST(ParticipantLoader, HipOffsetInPelvisReadsAndWritesBack) {
   EXPECT_FALSE(parseParticipant(kGood, "participants/px.yaml").hipOffsetInPelvis);
-  const Participant p = parseParticipant(kGood + "hip_offset_in_pelvis_m: [-0.0724, -0.0677]\n", "participants/px.yaml");
+  const Participant p =
+      parseParticipant(kGood + "hip_offset_in_pelvis_m: [-0.0724, -0.0677]\n", "participants/px.yaml");
   ASSERT_TRUE(p.hipOffsetInPelvis);
   EXPECT_DOUBLE_EQ((*p.hipOffsetInPelvis)[0], -0.0724);
   EXPECT_DOUBLE_EQ((*p.hipOffsetInPelvis)[1], -0.0677);
@@ -211,17 +231,19 @@ TEST(ParticipantThighMotion, PlainMotFileReadsOpenSimRightLegWithThePelvis) {
   ASSERT_EQ(t.pelvisTilt.size(), table.rows());
   for (std::size_t r = 0; r < table.rows(); r += 25) {
     EXPECT_NEAR(t.time[r], table.column("time")[r] - table.column("time")[0], kRowTol);
-    EXPECT_NEAR(t.hipFlexion[r], (table.column("hip_flexion_r")[r] + table.column("pelvis_tilt")[r]) * kDegToRad, kRowTol);
+    EXPECT_NEAR(t.hipFlexion[r], (table.column("hip_flexion_r")[r] + table.column("pelvis_tilt")[r]) * kDegToRad,
+                kRowTol);
     EXPECT_EQ(t.pelvisX[r], table.column("pelvis_tx")[r]);  // metres, not converted
     EXPECT_EQ(t.pelvisY[r], table.column("pelvis_ty")[r]);
   }
 }
 
 TEST(ParticipantThighMotion, MapFormCutsTheFileAndRoundTrips) {
-  const Participant p = parseParticipant(
-      winterWith("{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, toe_off_s: 1.35, "
-                 "heel_contact_s: 1.8}"),
-      kRoot + "/participants/w.yaml");
+  const Participant p =
+      parseParticipant(winterWith("{file: " + kGait10Ik +
+                                  ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, toe_off_s: 1.35, "
+                                  "heel_contact_s: 1.8}"),
+                       kRoot + "/participants/w.yaml");
   const ThighKinematics& t = p.thighKinematics;
   ASSERT_TRUE(t.columns.has_value());
   EXPECT_EQ(t.columns->toeOffTime, 1.35);
@@ -240,7 +262,8 @@ TEST(ParticipantThighMotion, MapFormCutsTheFileAndRoundTrips) {
 
 TEST(ParticipantThighMotion, SwingNumberCutsTheKthSwingAndKeepsTheKnee) {
   // `swing: K` as a study's record takes it: the K-th complete swing the file holds.
-  const std::string map = "{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt";
+  const std::string map =
+      "{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt";
   const Participant p = parseParticipant(winterWith(map + ", swing: 1}"), kRoot + "/participants/w.yaml");
   const ThighKinematics& t = p.thighKinematics;
   MotionColumns columns = *t.columns;
@@ -256,14 +279,16 @@ TEST(ParticipantThighMotion, SwingNumberCutsTheKthSwingAndKeepsTheKnee) {
   EXPECT_THAT(text, HasSubstr("swing: 1}"));
   EXPECT_EQ(parseParticipant(text, dir + "/roundtrip.yaml").thighKinematics.time, t.time);
   EXPECT_THAT(thighError(map + ", swing: 1, toe_off_s: 0.2}"), HasSubstr("thigh_kinematics.swing: either swing"));
-  EXPECT_THAT(thighError(map + ", swing: 4}"), HasSubstr("subject01_walk_IK.mot: swing: expected a swing number from 1 to 2"));
+  EXPECT_THAT(thighError(map + ", swing: 4}"),
+              HasSubstr("subject01_walk_IK.mot: swing: expected a swing number from 1 to 2"));
 }
 
 TEST(ParticipantThighMotion, TheStatedGaitPicksTheSwingsEventRules) {
   // One running swing of the public Rajagopal run: stated running, the running rules (toe-off
   // at the knee's extension minimum); stated walking, the walking rules, whose toe-off lands
   // 60-120 ms later in a run, so the swing is shorter.
-  const std::string map = "{file: " + kRoot + "/tests/data/opensim-running/rajagopal_subject01_run_ik.mot, hip: hip_flexion_r, "
+  const std::string map = "{file: " + kRoot +
+                          "/tests/data/opensim-running/rajagopal_subject01_run_ik.mot, hip: hip_flexion_r, "
                           "knee: knee_angle_r, knee_sign: 1, pelvis_tilt: pelvis_tilt, swing: 1}";
   const auto durationAt = [&](const std::string& gait) {
     std::string text = winterWith(map);
@@ -276,8 +301,10 @@ TEST(ParticipantThighMotion, TheStatedGaitPicksTheSwingsEventRules) {
   const MotionTable table = readMotionTable(kRoot + "/tests/data/opensim-running/rajagopal_subject01_run_ik.mot");
   MotionColumns columns = openSimLegColumns(table, "r");
   columns.kneeSign = 1;
-  EXPECT_NEAR(durationAt("running"), listSwings(table, columns, std::nullopt, Gait::kRunning).swings.at(0).duration(), 1e-12);
-  EXPECT_NEAR(durationAt("walking"), listSwings(table, columns, std::nullopt, Gait::kWalking).swings.at(0).duration(), 1e-12);
+  EXPECT_NEAR(durationAt("running"), listSwings(table, columns, std::nullopt, Gait::kRunning).swings.at(0).duration(),
+              1e-12);
+  EXPECT_NEAR(durationAt("walking"), listSwings(table, columns, std::nullopt, Gait::kWalking).swings.at(0).duration(),
+              1e-12);
   EXPECT_LT(durationAt("walking"), durationAt("running") - 0.05);
 }
 
@@ -286,21 +313,27 @@ TEST(ParticipantThighMotion, BadInputNamesTheMapFormAndTheLabelsThere) {
   std::string rows;
   for (int k = 0; k < 12; ++k) rows += std::to_string(0.01 * k) + "\t1\t" + std::to_string(5 * k) + "\n";
   const std::string motion = testing::writeSuiteTempFile("swingsim_participant_test", "other.mot",
-                                                "other\ninDegrees=yes\nendheader\ntime\thip\tknee\n" + rows);
+                                                         "other\ninDegrees=yes\nendheader\ntime\thip\tknee\n" + rows);
   const std::string plain = thighError(motion);
   EXPECT_THAT(plain, HasSubstr("other.mot:4: hip_flexion_r: column is missing (available: time, hip, knee)"));
-  EXPECT_THAT(plain, HasSubstr("w.yaml:35: thigh_kinematics: a plain .mot/.sto name is read with OpenSim's right-leg labels"));
+  EXPECT_THAT(plain,
+              HasSubstr("w.yaml:35: thigh_kinematics: a plain .mot/.sto name is read with OpenSim's right-leg labels"));
   EXPECT_THAT(plain, HasSubstr("{file: F, hip: LABEL, knee: LABEL"));
   // The map form: a label the file lacks lists those it has; times outside the file; a CSV.
   EXPECT_THAT(thighError("{file: " + kGait10Ik + ", hip: hip_flexion, knee: knee_angle_r}"),
-              HasSubstr("w.yaml: thigh_kinematics.hip: expected a column of " + kGait10Ik + ":11 (got 'hip_flexion', which it does not "
+              HasSubstr("w.yaml: thigh_kinematics.hip: expected a column of " + kGait10Ik +
+                        ":11 (got 'hip_flexion', which it does not "
                         "have; available: time, pelvis_tilt, pelvis_tx,"));
-  EXPECT_THAT(thighError("{file: " + kGait10Ik + ", hip: hip_flexion_r, knee: knee_angle_r, toe_off_s: 3, heel_contact_s: 3.5}"),
-              HasSubstr("subject01_walk_IK.mot: toe_off_s: expected a time within the file, before its last row; the file's "
-                        "time runs from 0 to 2.5 s (got 3 s)"));
-  EXPECT_THAT(thighError("{file: ../studies/data/winter-swing/swing1.csv, hip: a, knee: b}"),
-              HasSubstr("w.yaml:35: thigh_kinematics.file: an OpenSim .mot/.sto (the map says how to read its columns"));
-  EXPECT_THAT(thighError("{file: " + kGait10Ik + ", knee: knee_angle_r}"), HasSubstr("thigh_kinematics.hip: required key is missing"));
+  EXPECT_THAT(
+      thighError("{file: " + kGait10Ik +
+                 ", hip: hip_flexion_r, knee: knee_angle_r, toe_off_s: 3, heel_contact_s: 3.5}"),
+      HasSubstr("subject01_walk_IK.mot: toe_off_s: expected a time within the file, before its last row; the file's "
+                "time runs from 0 to 2.5 s (got 3 s)"));
+  EXPECT_THAT(
+      thighError("{file: ../studies/data/winter-swing/swing1.csv, hip: a, knee: b}"),
+      HasSubstr("w.yaml:35: thigh_kinematics.file: an OpenSim .mot/.sto (the map says how to read its columns"));
+  EXPECT_THAT(thighError("{file: " + kGait10Ik + ", knee: knee_angle_r}"),
+              HasSubstr("thigh_kinematics.hip: required key is missing"));
 }
 
 }  // namespace

@@ -59,8 +59,10 @@ TEST(ParticipantSoundLimb, NotASwingTimeIsRefusedWithFileLineKeyAndValue) {
 
 TEST(ParticipantSoundLimb, BundledBurkettRunnersCarryTable4AnatomicalAtZeroLowering) {
   // Burkett 2004 Table 4, measured anatomical swing time at 0 m (s).
-  const std::vector<std::pair<std::string, double>> expected = {{"participants/p1.yaml", 0.499}, {"participants/p2.yaml", 0.332},
-                                                                {"participants/p3.yaml", 0.478}, {"participants/p4.yaml", 0.396}};
+  const std::vector<std::pair<std::string, double>> expected = {{"participants/p1.yaml", 0.499},
+                                                                {"participants/p2.yaml", 0.332},
+                                                                {"participants/p3.yaml", 0.478},
+                                                                {"participants/p4.yaml", 0.396}};
   for (const auto& [file, seconds] : expected) {
     const Participant p = loadParticipant(std::string(SWINGSIM_SOURCE_DIR) + "/" + file);
     ASSERT_TRUE(p.soundLimbSwingTime.has_value()) << file;

@@ -21,9 +21,10 @@ std::string errorOf(const std::string& text) {
 }
 
 TEST(SweepTimesCsv, ReadsRowsWithAndWithoutTrialStatistics) {
-  const auto rows = parseSweepTimesCsv("\xEF\xBB\xBF# source line\r\nparticipant,lowering_m,swing_time_s,sd_s,n\r\n"
-                                       "P1,0,0.463,0.031,5\r\nP1,0.05,0.423,0.031,5\r\n",
-                                       "t.csv");
+  const auto rows = parseSweepTimesCsv(
+      "\xEF\xBB\xBF# source line\r\nparticipant,lowering_m,swing_time_s,sd_s,n\r\n"
+      "P1,0,0.463,0.031,5\r\nP1,0.05,0.423,0.031,5\r\n",
+      "t.csv");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[1].participant, "P1");
   EXPECT_DOUBLE_EQ(rows[1].lowering, 0.05);
@@ -48,8 +49,9 @@ TEST(SweepTimesCsv, RefusesNonsenseWithFileLineAndColumn) {
   EXPECT_NE(errorOf(h + "P1,0,0.4,0.031\n").find("t.csv:2: expected 5 comma-separated values (got 4)"),
             std::string::npos);
   EXPECT_NE(errorOf(h + ",0,0.4,0.031,5\n").find("t.csv:2: participant"), std::string::npos);
-  EXPECT_NE(errorOf(h + "P1,0,0.4,0.031,5\nP1,0.0,0.41,0.031,5\n").find("t.csv:3: lowering_m: participant P1 already has "
-                                                                       "a row at 0 m (line 2)"),
+  EXPECT_NE(errorOf(h + "P1,0,0.4,0.031,5\nP1,0.0,0.41,0.031,5\n")
+                .find("t.csv:3: lowering_m: participant P1 already has "
+                      "a row at 0 m (line 2)"),
             std::string::npos);
   EXPECT_NE(errorOf(h).find("expected at least one row"), std::string::npos);
   EXPECT_NE(errorOf("").find("expected a header"), std::string::npos);
@@ -60,7 +62,8 @@ TEST(SweepTimesCsv, RefusesNonsenseWithFileLineAndColumn) {
 }
 
 TEST(SweepTimesCsv, ChecksAfterParsingNameTheRowsOwnLinePastComments) {
-  const std::string text = "# source\nparticipant,lowering_m,swing_time_s\n# P1 first\nP1,0,0.4\n\n# again\nP1,0.6,0.4\n";
+  const std::string text =
+      "# source\nparticipant,lowering_m,swing_time_s\n# P1 first\nP1,0,0.4\n\n# again\nP1,0.6,0.4\n";
   EXPECT_EQ(errorOf(text),
             "t.csv:7: lowering_m: expected 0 to 0.5 (m below the standard knee-axis location) (got 0.6)");
   EXPECT_EQ(errorOf("# only a comment\nparticipant,lowering_m,swing_time_s\n# none\n"),

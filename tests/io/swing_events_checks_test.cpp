@@ -58,15 +58,21 @@ MotionTable scaled(MotionTable t, const std::string& column, double factor) {
 
 TEST(SwingEventChecks, TheOtherFootsForceColumnIsRefusedNamingTheLegItMatches) {
   const std::string walk = walkError(readMotionTable(kWalkGrf), "1_ground_force_vy");
-  EXPECT_THAT(walk, HasSubstr("subject01_walk1_grf.mot: 1_ground_force_vy: expected the force's stance and swing to match the leg's kinematics"));
-  EXPECT_THAT(walk, HasSubstr("they match the other leg's (hip_flexion_l, knee_angle_l): is 1_ground_force_vy the other foot's force?"));
+  EXPECT_THAT(walk, HasSubstr("subject01_walk1_grf.mot: 1_ground_force_vy: expected the force's stance and swing to "
+                              "match the leg's kinematics"));
+  EXPECT_THAT(
+      walk,
+      HasSubstr(
+          "they match the other leg's (hip_flexion_l, knee_angle_l): is 1_ground_force_vy the other foot's force?"));
   const std::string run = runError(readMotionTable(kRunGrf), "L_ground_force_vy");
-  EXPECT_THAT(run, HasSubstr("rajagopal_grf_run.mot: L_ground_force_vy: expected the force's stance and swing to match"));
+  EXPECT_THAT(run,
+              HasSubstr("rajagopal_grf_run.mot: L_ground_force_vy: expected the force's stance and swing to match"));
   EXPECT_THAT(run, HasSubstr("running rules"));
   EXPECT_THAT(run, HasSubstr("they match the other leg's (hip_flexion_l, knee_angle_l)"));
   // The second runner, left leg against the right foot's column.
   const std::string hamner = inputErrorOf([&] {
-    listSwings(readMotionTable(kHamnerIk), leg("l", -1), readMotionTable(kHamnerGrf), force("ground_force_vy", kHamnerGrf));
+    listSwings(readMotionTable(kHamnerIk), leg("l", -1), readMotionTable(kHamnerGrf),
+               force("ground_force_vy", kHamnerGrf));
   });
   EXPECT_THAT(hamner, HasSubstr("they match the other leg's (hip_flexion_r, knee_angle_r)"));
 }
@@ -74,11 +80,15 @@ TEST(SwingEventChecks, TheOtherFootsForceColumnIsRefusedNamingTheLegItMatches) {
 TEST(SwingEventChecks, AnotherTrialsForceFileIsRefused) {
   // The runner's force under the walk's kinematics: the clocks overlap (0.23-5.32 s, 0.5-4 s).
   const std::string e = walkError(readMotionTable(kRunGrf), "R_ground_force_vy");
-  EXPECT_THAT(e, HasSubstr("rajagopal_grf_run.mot: R_ground_force_vy: expected the force's stance and swing to match the leg's "
-                           "kinematics (" + kWalkIk + ": hip_flexion_r, knee_angle_r, walking rules, detected: median stride 1.217 s, "
-                           "over 0.85 s) (got: "));
-  EXPECT_THAT(e, HasSubstr("another trial's force file, a clock offset, the other foot's column, or the wrong gait's rules "
-                           "(state it: --gait, a study's gait:)?"));
+  EXPECT_THAT(
+      e, HasSubstr("rajagopal_grf_run.mot: R_ground_force_vy: expected the force's stance and swing to match the leg's "
+                   "kinematics (" +
+                   kWalkIk +
+                   ": hip_flexion_r, knee_angle_r, walking rules, detected: median stride 1.217 s, "
+                   "over 0.85 s) (got: "));
+  EXPECT_THAT(
+      e, HasSubstr("another trial's force file, a clock offset, the other foot's column, or the wrong gait's rules "
+                   "(state it: --gait, a study's gait:)?"));
 }
 
 TEST(SwingEventChecks, AClockOffsetIsRefused) {
@@ -101,18 +111,22 @@ TEST(SwingEventChecks, AForceThatNeverLetsGoIsRefused) {
   for (auto& column : cut.columns) column.erase(column.begin(), column.begin() + 300);
   cut.rowLines.erase(cut.rowLines.begin(), cut.rowLines.begin() + 300);
   const std::string e = walkError(cut);
-  EXPECT_THAT(e, HasSubstr("falls in a stance of the force (the force never falls below the threshold: both feet on one plate, "
-                           "or a total force?)"));
+  EXPECT_THAT(
+      e, HasSubstr("falls in a stance of the force (the force never falls below the threshold: both feet on one plate, "
+                   "or a total force?)"));
 }
 
 TEST(SwingEventChecks, AForceInKilonewtonsNegatedOrAllZeroIsRefused) {
   const MotionTable grf = readMotionTable(kWalkGrf);
-  EXPECT_THAT(walkError(scaled(grf, "ground_force_vy", 1e-3)),
-              HasSubstr("subject01_walk1_grf.mot: ground_force_vy: expected a vertical force in newtons: a stance peaks at 1-3 "
-                        "body weights, at least 200 N (got a peak of"));
+  EXPECT_THAT(
+      walkError(scaled(grf, "ground_force_vy", 1e-3)),
+      HasSubstr("subject01_walk1_grf.mot: ground_force_vy: expected a vertical force in newtons: a stance peaks at 1-3 "
+                "body weights, at least 200 N (got a peak of"));
   EXPECT_THAT(walkError(scaled(grf, "ground_force_vy", 1e-3)), HasSubstr("in kN?"));
-  EXPECT_THAT(walkError(scaled(grf, "ground_force_vy", -1)), HasSubstr("negated? OpenSim's vertical force pushes up, +y"));
-  EXPECT_THAT(walkError(scaled(grf, "ground_force_vy", 0)), HasSubstr("(got a peak of 0 N over the kinematics' time: no load at all)"));
+  EXPECT_THAT(walkError(scaled(grf, "ground_force_vy", -1)),
+              HasSubstr("negated? OpenSim's vertical force pushes up, +y"));
+  EXPECT_THAT(walkError(scaled(grf, "ground_force_vy", 0)),
+              HasSubstr("(got a peak of 0 N over the kinematics' time: no load at all)"));
   EXPECT_THAT(runError(scaled(readMotionTable(kRunGrf), "R_ground_force_vy", 1e-3)), HasSubstr("in kN?"));
 }
 
@@ -142,9 +156,11 @@ TEST(SwingEventChecks, ATimeColumnInMillisecondsOrASlowForceIsRefused) {
 TEST(SwingEventChecks, KinematicsWhoseUnitOrKneeSignIsWrongAreRefusedInEveryCommand) {
   MotionTable radiansRead = readMotionTable(kWalkIk);
   radiansRead.inDegrees = false;  // degrees under inDegrees=no
-  EXPECT_THAT(inputErrorOf([&] { listSwings(radiansRead, leg("r", -1), std::nullopt); }),
-              HasSubstr("knee_angle_r: the knee moves through 71.26986685 rad over the file (from -70.26237926 to 1.00748759; a swing "
-                        "flexes it by tens of degrees): the column looks like degrees, but the header says inDegrees=no"));
+  EXPECT_THAT(
+      inputErrorOf([&] { listSwings(radiansRead, leg("r", -1), std::nullopt); }),
+      HasSubstr("knee_angle_r: the knee moves through 71.26986685 rad over the file (from -70.26237926 to 1.00748759; "
+                "a swing "
+                "flexes it by tens of degrees): the column looks like degrees, but the header says inDegrees=no"));
   MotionTable degreesRead = readMotionTable(kWalkIk);
   for (const char* c : {"hip_flexion_r", "knee_angle_r", "pelvis_tilt"})
     for (double& v : degreesRead.columns[degreesRead.index(c)]) v *= kDegToRad;  // radians under inDegrees=yes
@@ -175,7 +191,8 @@ TEST(SwingEventChecks, AskedForTheFallbackTheKinematicsGiveTheEventsAndSaySo) {
 }
 
 TEST(SwingEventChecks, TheRightFilesPassWithTheirDisagreementsListed) {
-  const SwingList run = listSwings(readMotionTable(kRunIk), leg("r", 1), std::optional<GrfSettings>(force("R_ground_force_vy", kRunGrf)));
+  const SwingList run =
+      listSwings(readMotionTable(kRunIk), leg("r", 1), std::optional<GrfSettings>(force("R_ground_force_vy", kRunGrf)));
   ASSERT_EQ(run.swings.size(), 7u);
   EXPECT_EQ(run.gait, Gait::kRunning);
   for (const FoundSwing& s : run.swings) {
@@ -186,7 +203,8 @@ TEST(SwingEventChecks, TheRightFilesPassWithTheirDisagreementsListed) {
   }
   // 100 Hz: 2 frames are 20 ms, under the running rules' 22 ms.
   EXPECT_TRUE(run.kinematicAccuracyBeyondTwoFrames);
-  const SwingList hamner = listSwings(readMotionTable(kHamnerIk), leg("r", -1), std::optional<GrfSettings>(force("ground_force_vy", kHamnerGrf)));
+  const SwingList hamner = listSwings(readMotionTable(kHamnerIk), leg("r", -1),
+                                      std::optional<GrfSettings>(force("ground_force_vy", kHamnerGrf)));
   EXPECT_EQ(hamner.swings.size(), 13u);
   EXPECT_FALSE(hamner.kinematicAccuracyBeyondTwoFrames);  // 60 Hz: 33 ms
 }

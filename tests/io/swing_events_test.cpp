@@ -63,8 +63,9 @@ double kneeFlexionDeg(double t) {
 }
 double hipFlexionDeg(double t) { return 25 * std::cos(2 * kPi * (phaseOf(t) - 0.95)); }
 MotionTable syntheticGait(double t0, double t1) {
-  return makeTable("time\thip_flexion_r\tknee_angle_r", t0, t1, 0.01,
-                   [](double t) { return number(hipFlexionDeg(t)) + "\t" + number(-kneeFlexionDeg(t)); }, "gait.mot");
+  return makeTable(
+      "time\thip_flexion_r\tknee_angle_r", t0, t1, 0.01,
+      [](double t) { return number(hipFlexionDeg(t)) + "\t" + number(-kneeFlexionDeg(t)); }, "gait.mot");
 }
 MotionColumns rightColumns(bool tilt) {
   MotionColumns c;
@@ -128,9 +129,12 @@ TEST(SwingEvents, ASwingCutByTheFilesStartOrEndIsLeftOut) {
 TEST(SwingEvents, AStanceOnlyRecordingHasNoSwing) {
   // Two strides' worth of the knee's loading flexion alone, 5 to 20 deg (a raised cosine over
   // the first 0.4 s of each second), the hip as in the synthetic gait: no swing in it.
-  const auto knee = [](double t) { return phaseOf(t) < 0.4 ? 5 + 7.5 * (1 - std::cos(2 * kPi * phaseOf(t) / 0.4)) : 5.0; };
-  const MotionTable stance = makeTable("time\thip_flexion_r\tknee_angle_r", 0, 2, 0.01,
-                                       [&](double t) { return number(hipFlexionDeg(t)) + "\t" + number(-knee(t)); }, "stance.mot");
+  const auto knee = [](double t) {
+    return phaseOf(t) < 0.4 ? 5 + 7.5 * (1 - std::cos(2 * kPi * phaseOf(t) / 0.4)) : 5.0;
+  };
+  const MotionTable stance = makeTable(
+      "time\thip_flexion_r\tknee_angle_r", 0, 2, 0.01,
+      [&](double t) { return number(hipFlexionDeg(t)) + "\t" + number(-knee(t)); }, "stance.mot");
   const SwingEventTimes events = findKinematicEvents(stance, rightColumns(false));
   EXPECT_TRUE(events.toeOffs.empty());
   EXPECT_TRUE(events.heelContacts.empty());
@@ -138,8 +142,9 @@ TEST(SwingEvents, AStanceOnlyRecordingHasNoSwing) {
 
 /// A GRF table of one foot's vertical force `force(t)` at `rate` Hz.
 MotionTable grfTable(double t0, double t1, double step, const std::function<double(double)>& force) {
-  return makeTable("time\tground_force_vy\t1_ground_force_vy", t0, t1, step,
-                   [&](double t) { return number(force(t)) + "\t0"; }, "grf.mot");
+  return makeTable(
+      "time\tground_force_vy\t1_ground_force_vy", t0, t1, step, [&](double t) { return number(force(t)) + "\t0"; },
+      "grf.mot");
 }
 
 /// The synthetic gait's first swing, as the walking rules place it, s.
@@ -157,7 +162,8 @@ TEST(SwingEvents, ForceCrossingsOnLinearRampsAreTheirClosedForm) {
     if (t <= rise + 0.1) return 500 * (t - rise) / 0.1;
     return 500.0;
   };
-  const auto swings = findSwings(syntheticGait(0, 1.6), rightColumns(false), grfTable(0, 1.6, 1.0 / 600, force), GrfSettings{});
+  const auto swings =
+      findSwings(syntheticGait(0, 1.6), rightColumns(false), grfTable(0, 1.6, 1.0 / 600, force), GrfSettings{});
   ASSERT_EQ(swings.size(), 1u);
   EXPECT_NEAR(swings[0].toeOff, fall + 0.1 * (500 - 20) / 500, kRoundingS);
   EXPECT_NEAR(swings[0].heelContact, rise + 0.1 * 20 / 500, kRoundingS);
@@ -181,7 +187,8 @@ TEST(SwingEvents, AForceHoveringAtTheThresholdGivesOneEventAfterWhichItStays) {
     if (row <= 74) return row % 2 ? 25.0 : 15.0;
     return row <= 102 ? 0.0 : 500.0;
   };
-  const auto swings = findSwings(syntheticGait(0, 1.6), rightColumns(false), grfTable(0, 1.6, 0.01, force), GrfSettings{});
+  const auto swings =
+      findSwings(syntheticGait(0, 1.6), rightColumns(false), grfTable(0, 1.6, 0.01, force), GrfSettings{});
   ASSERT_EQ(swings.size(), 1u);
   EXPECT_NEAR(swings[0].toeOff, 0.735, kRoundingS);  // the last fall below 20 N (25 -> 15 N at 0.73-0.74 s)
   EXPECT_NEAR(swings[0].heelContact, 1.02 + 0.01 * 20 / 500, kRoundingS);
@@ -190,7 +197,8 @@ TEST(SwingEvents, AForceHoveringAtTheThresholdGivesOneEventAfterWhichItStays) {
 TEST(SwingEvents, ForceWhereItCoversTheTimeKinematicsAfter) {
   // Force plates under the first swing only (0-1.2 s), lifted 0.01 s before the kinematic toe-off.
   const auto force = [](double t) { return t > kSynthToeOff - 0.01 && t < kSynthHeel ? 0.0 : 600.0; };
-  const auto swings = findSwings(syntheticGait(0, 2.3), rightColumns(false), grfTable(0, 1.2, 0.005, force), GrfSettings{});
+  const auto swings =
+      findSwings(syntheticGait(0, 2.3), rightColumns(false), grfTable(0, 1.2, 0.005, force), GrfSettings{});
   ASSERT_EQ(swings.size(), 2u);
   EXPECT_EQ(swings[0].toeOffSource, "grf");
   EXPECT_EQ(swings[0].heelContactSource, "grf");
@@ -207,12 +215,12 @@ std::vector<double> eventDistances(const std::vector<double>& force, const std::
   std::vector<double> d;
   for (double f : force) {
     if (f < t0 || f > t1) continue;
-    const auto near = std::find_if(kinematic.begin(), kinematic.end(), [&](double k) { return std::abs(k - f) <= window; });
+    const auto near =
+        std::find_if(kinematic.begin(), kinematic.end(), [&](double k) { return std::abs(k - f) <= window; });
     if (near == kinematic.end()) {
       std::printf("  unseen force event at %.4f s\n", f);
       ++unseen;
-    }
-    else
+    } else
       d.push_back(*near - f);
   }
   return d;
@@ -269,7 +277,8 @@ Distances distancesOf(const TrialCase& c, std::size_t& unseen) {
   const SwingEventTimes k = findKinematicEvents(ik, legColumns(c.side, c.kneeSign));
   const double t0 = std::max(ik.columns.front().front(), grf.columns.front().front());
   const double t1 = std::min(ik.columns.front().back(), grf.columns.front().back());
-  return {eventDistances(f.toeOffs, k.toeOffs, t0, t1, unseen), eventDistances(f.heelContacts, k.heelContacts, t0, t1, unseen)};
+  return {eventDistances(f.toeOffs, k.toeOffs, t0, t1, unseen),
+          eventDistances(f.heelContacts, k.heelContacts, t0, t1, unseen)};
 }
 
 double meanOf(const std::vector<double>& x) {
@@ -327,8 +336,8 @@ TEST(SwingEvents, AStatedGaitThatDetectionContradictsIsSaid) {
     const SwingList wrong = listSwings(ik, columns, std::nullopt, other);
     EXPECT_EQ(wrong.gait, other);
     EXPECT_EQ(wrong.gaitBasis, "stated");
-    const std::string expected = std::string("the gait is stated as ") + gaitName(other) + " but the trial looks like " +
-                                 gaitName(c.gait) + " (";
+    const std::string expected = std::string("the gait is stated as ") + gaitName(other) +
+                                 " but the trial looks like " + gaitName(c.gait) + " (";
     bool said = false;
     for (const auto& note : wrong.notes) said = said || note.rfind(expected, 0) == 0;
     std::string all;
@@ -385,7 +394,8 @@ TEST(SwingEvents, TheShippedWalkGivesForceSwingsThenKinematicOnes) {
   settings.path = kGrf;
   const auto swings = findSwings(readMotionTable(kIk2392), rightColumns(true), settings);
   ASSERT_GE(swings.size(), 2u);
-  // The right foot's force falls below 20 N between rows at 1.4083 and 1.4100 s, rises above between 1.8517 and 1.8533 s.
+  // The right foot's force falls below 20 N between rows at 1.4083 and 1.4100 s, rises above between 1.8517 and 1.8533
+  // s.
   EXPECT_GT(swings[0].toeOff, 1.4083);
   EXPECT_LT(swings[0].toeOff, 1.4100);
   EXPECT_GT(swings[0].heelContact, 1.8517);
@@ -402,8 +412,12 @@ TEST(SwingEvents, BadInputNamesFileKeyExpectedAndFound) {
   const MotionTable gait = syntheticGait(0, 2.3);
   GrfSettings wrongLabel;
   wrongLabel.verticalForce = "2_ground_force_vy";
-  const std::string noColumn = inputErrorOf([&] { findSwings(gait, rightColumns(false), grfTable(0, 2, 0.01, [](double) { return 0.0; }), wrongLabel); });
-  EXPECT_THAT(noColumn, HasSubstr("grf.mot:4: 2_ground_force_vy: column is missing (available: time, ground_force_vy, 1_ground_force_vy)"));
+  const std::string noColumn = inputErrorOf(
+      [&] { findSwings(gait, rightColumns(false), grfTable(0, 2, 0.01, [](double) { return 0.0; }), wrongLabel); });
+  EXPECT_THAT(
+      noColumn,
+      HasSubstr(
+          "grf.mot:4: 2_ground_force_vy: column is missing (available: time, ground_force_vy, 1_ground_force_vy)"));
 
   MotionColumns wrongHip = rightColumns(false);
   wrongHip.hip = "hip_flexion";
@@ -411,8 +425,9 @@ TEST(SwingEvents, BadInputNamesFileKeyExpectedAndFound) {
               HasSubstr("gait.mot:4: hip_flexion: column is missing (available: time, hip_flexion_r, knee_angle_r)"));
 
   const MotionTable later = grfTable(5, 6, 0.01, [](double) { return 0.0; });
-  EXPECT_THAT(inputErrorOf([&] { findSwings(gait, rightColumns(false), later, GrfSettings{}); }),
-              HasSubstr("grf.mot:5: time: expected times overlapping the kinematics' (gait.mot: 0 to 2.3 s) (got 5 to 6 s)"));
+  EXPECT_THAT(
+      inputErrorOf([&] { findSwings(gait, rightColumns(false), later, GrfSettings{}); }),
+      HasSubstr("grf.mot:5: time: expected times overlapping the kinematics' (gait.mot: 0 to 2.3 s) (got 5 to 6 s)"));
 
   GrfSettings zero;
   zero.thresholdN = 0;
@@ -425,8 +440,9 @@ TEST(SwingEvents, BadInputNamesFileKeyExpectedAndFound) {
   GrfSettings aboveThePeak;
   aboveThePeak.thresholdN = 900;
   const std::string message = "threshold_N: expected a threshold below the force's peak, 700 N (got 900 N";
-  EXPECT_THAT(inputErrorOf([&] { findSwings(gait, rightColumns(false), grfTable(0, 2.3, 0.002, stance), aboveThePeak); }),
-              HasSubstr("grf.mot: ground_force_vy: " + message));
+  EXPECT_THAT(
+      inputErrorOf([&] { findSwings(gait, rightColumns(false), grfTable(0, 2.3, 0.002, stance), aboveThePeak); }),
+      HasSubstr("grf.mot: ground_force_vy: " + message));
   EXPECT_THAT(inputErrorOf([&] { findGrfEvents(grfTable(0, 2.3, 0.002, stance), aboveThePeak); }), HasSubstr(message));
 }
 
@@ -452,7 +468,8 @@ TEST(SwingEvents, KinematicNumberingIsTheForcesOrRefused) {
     settings.path = c.grf;
     settings.verticalForce = c.force;
     const std::vector<double>& t = ik.columns.front();
-    const std::size_t stride = static_cast<std::size_t>(std::lround((c.gait == Gait::kRunning ? 0.7 : 1.2) / (t[1] - t[0])));
+    const std::size_t stride =
+        static_cast<std::size_t>(std::lround((c.gait == Gait::kRunning ? 0.7 : 1.2) / (t[1] - t[0])));
     for (std::size_t first = 0; first < stride && first + 10 < t.size(); first += c.subject == "walk" ? 1 : 3) {
       const MotionTable cut = cutFrom(ik, first);
       const SwingList kin = listSwings(cut, columns, std::nullopt, c.gait);

@@ -100,8 +100,9 @@ TEST(SwingRecordCsv, KneeInRadiansOrTooFewRowsAreRefused) {
     readSwingRecord(writeTemp("ms.csv", ms));
     ADD_FAILURE() << "a record in ms was read";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("ms.csv: time_s: expected one swing in seconds, spanning at most 10 s (got 440 s from "
-                                    "the first sample to the last: in ms?)"));
+    EXPECT_THAT(e.what(),
+                HasSubstr("ms.csv: time_s: expected one swing in seconds, spanning at most 10 s (got 440 s from "
+                          "the first sample to the last: in ms?)"));
   }
 }
 

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "swing/knee_setup.h"
-#include "io/knee_model_loader.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -40,7 +40,8 @@ TEST(ToeClearanceRule, TheAlarmHoldsForWalkingOrAStatedHipRise) {
 
 TEST(ToeClearanceRule, AStatedHipRiseLiftsTheFootByThatMuch) {
   auto clearance = [](const Participant& p) {
-    SwingSetup setup = makeSwingSetup(p, std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath))));
+    SwingSetup setup =
+        makeSwingSetup(p, std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath))));
     return simulateSwing(setup).minToeClearance.value();  // an ended swing has its clearance
   };
   const double standing = clearance(withRule("toe_clearance: {gait: running}\n"));

@@ -23,13 +23,13 @@
 namespace swingsim {
 namespace {
 
-using ::testing::Contains;
 using swingsim::testing::kHamnerRunIk;
 using swingsim::testing::kRajagopalRunIk;
 using swingsim::testing::kRoot;
 using swingsim::testing::kWalkIk10dof;
 using swingsim::testing::kWalkIk2354;
 using swingsim::testing::kWalkIk2392;
+using ::testing::Contains;
 
 // The .sto holds %.10g: a relative error of at most 5e-10 in each printed number.
 constexpr double kTenDigits = 1e-9;
@@ -58,9 +58,9 @@ std::string formatOldConventionSto(const SwingTrajectory& t) {
                     "time\thip_flexion\tknee_flexion\thip_flexion_speed\tknee_flexion_speed\thip_moment\tknee_moment\n";
   char row[256];
   for (std::size_t i = 0; i < t.size(); ++i) {
-    std::snprintf(row, sizeof row, "%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\n", t.time[i], t.hipFlexion[i] * kRadToDeg,
-                  t.kneeFlexion[i] * kRadToDeg, t.hipFlexionRate[i] * kRadToDeg, t.kneeFlexionRate[i] * kRadToDeg, t.hipMoment[i],
-                  t.kneeMoment[i]);
+    std::snprintf(row, sizeof row, "%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\n", t.time[i],
+                  t.hipFlexion[i] * kRadToDeg, t.kneeFlexion[i] * kRadToDeg, t.hipFlexionRate[i] * kRadToDeg,
+                  t.kneeFlexionRate[i] * kRadToDeg, t.hipMoment[i], t.kneeMoment[i]);
     out += row;
   }
   return out;
@@ -87,14 +87,15 @@ TEST(TrajectoryStoConventions, ColumnsNameTheExportedModelsCoordinatesOnEitherSi
     ASSERT_EQ(coordinates.size(), 2u);
     for (const auto& c : coordinates) EXPECT_THAT(table.labels, Contains(c)) << side;
     const std::string s(1, side);
-    EXPECT_EQ(table.labels, (std::vector<std::string>{"time", "hip_flexion_" + s, "knee_angle_" + s, "hip_flexion_" + s + "_speed",
-                                                      "knee_angle_" + s + "_speed", "hip_flexion_" + s + "_moment",
-                                                      "knee_angle_" + s + "_moment"}));
+    EXPECT_EQ(table.labels, (std::vector<std::string>{"time", "hip_flexion_" + s, "knee_angle_" + s,
+                                                      "hip_flexion_" + s + "_speed", "knee_angle_" + s + "_speed",
+                                                      "hip_flexion_" + s + "_moment", "knee_angle_" + s + "_moment"}));
     EXPECT_TRUE(table.inDegrees);
     // The knee's angle, rate and moment in knee_angle's sign; the hip's as they are.
     for (std::size_t i = 0; i < t.size(); i += 10) {
       EXPECT_NEAR(table.column("knee_angle_" + s)[i], -t.kneeFlexion[i] * kRadToDeg, kTenDigits * 100) << i;
-      EXPECT_NEAR(table.column("knee_angle_" + s + "_speed")[i], -t.kneeFlexionRate[i] * kRadToDeg, kTenDigits * 1e4) << i;
+      EXPECT_NEAR(table.column("knee_angle_" + s + "_speed")[i], -t.kneeFlexionRate[i] * kRadToDeg, kTenDigits * 1e4)
+          << i;
       EXPECT_NEAR(table.column("knee_angle_" + s + "_moment")[i], -t.kneeMoment[i], kTenDigits * 10) << i;
       EXPECT_NEAR(table.column("hip_flexion_" + s)[i], t.hipFlexion[i] * kRadToDeg, kTenDigits * 100) << i;
     }
@@ -131,7 +132,8 @@ TEST(TrajectoryStoConventions, NewStoReadsAsALabFileToTheSwingItWasWrittenFrom) 
   }
   // As an inverse-dynamics .sto too: knee_angle_r_moment, times knee_sign -1, is the knee moment.
   const SwingRecord withMoment = makeSwingRecord(table, openSimRightLegColumns(table), &table);
-  for (std::size_t i = 0; i < t.size(); i += 10) EXPECT_NEAR(withMoment.kneeMoment[i], t.kneeMoment[i], kTenDigits * 10) << i;
+  for (std::size_t i = 0; i < t.size(); i += 10)
+    EXPECT_NEAR(withMoment.kneeMoment[i], t.kneeMoment[i], kTenDigits * 10) << i;
 }
 
 TEST(TrajectoryStoConventions, OldConventionStoStillReadsToTheSameSwing) {
@@ -146,7 +148,8 @@ TEST(TrajectoryStoConventions, OldConventionStoStillReadsToTheSameSwing) {
     EXPECT_NEAR(a.hipFlexion[i], b.hipFlexion[i], kTenDigits * 2) << i;
     EXPECT_NEAR(a.kneeMoment[i], b.kneeMoment[i], kTenDigits * 10) << i;
   }
-  EXPECT_GT(*std::max_element(a.kneeFlexion.begin(), a.kneeFlexion.end()), 60 * kDegToRad) << "flexion positive, as written";
+  EXPECT_GT(*std::max_element(a.kneeFlexion.begin(), a.kneeFlexion.end()), 60 * kDegToRad)
+      << "flexion positive, as written";
 }
 
 // Where a participant names a plain .sto as its thigh_kinematics, the old and new files give
@@ -162,7 +165,8 @@ TEST(TrajectoryStoConventions, OldAndNewStoDriveAParticipantAlike) {
     const std::string key = "thigh_kinematics: ../studies/data/winter-swing/swing1.csv";
     const auto at = text.find(key);
     EXPECT_NE(at, std::string::npos);
-    return parseParticipant(text.replace(at, key.size(), "thigh_kinematics: " + (dir / sto).string()), kRoot + "/participants/w.yaml");
+    return parseParticipant(text.replace(at, key.size(), "thigh_kinematics: " + (dir / sto).string()),
+                            kRoot + "/participants/w.yaml");
   };
   const Participant a = participantWith("old.sto"), b = participantWith("new.sto");
   ASSERT_EQ(a.thighKinematics.time.size(), t.size());

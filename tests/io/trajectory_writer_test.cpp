@@ -42,17 +42,21 @@ TEST(TrajectoryWriter, CsvReadsBackInDegrees) {
   const TrajectoryColumns columns = calcTrajectoryColumns(t);
   ASSERT_EQ(columns.values.size(), columns.names.size());
   for (std::size_t i = 0; i < 3; ++i)
-    EXPECT_NEAR(columns.values[2][i], table.column("knee_flexion_deg")[i], kWrittenDigits * 100) << "the numbers the CSV holds";
+    EXPECT_NEAR(columns.values[2][i], table.column("knee_flexion_deg")[i], kWrittenDigits * 100)
+        << "the numbers the CSV holds";
 }
 
 TEST(TrajectoryWriter, StoHasOpenSimsHeaderAndTheModelsCoordinates) {
   const std::string sto = formatTrajectorySto(threeSamples(), "P1-lower050mm");
-  const std::string header = "P1-lower050mm\nversion=1\nnRows=3\nnColumns=7\ninDegrees=yes\nendheader\n"
-                             "time\thip_flexion_r\tknee_angle_r\thip_flexion_r_speed\tknee_angle_r_speed\thip_flexion_r_moment\tknee_angle_r_moment\n";
+  const std::string header =
+      "P1-lower050mm\nversion=1\nnRows=3\nnColumns=7\ninDegrees=yes\nendheader\n"
+      "time\thip_flexion_r\tknee_angle_r\thip_flexion_r_speed\tknee_angle_r_speed\thip_flexion_r_moment\tknee_angle_r_"
+      "moment\n";
   EXPECT_EQ(sto.substr(0, header.size()), header);
   EXPECT_EQ(sto.find(','), std::string::npos) << "tabs only";
   const std::string firstRow = sto.substr(header.size(), sto.find('\n', header.size()) - header.size());
-  EXPECT_EQ(firstRow.rfind("0\t5.729577951\t-51.56620156\t572.9577951\t57.29577951\t30\t1.25", 0), 0u) << firstRow;  // knee_angle_r: - = flexion
+  EXPECT_EQ(firstRow.rfind("0\t5.729577951\t-51.56620156\t572.9577951\t57.29577951\t30\t1.25", 0), 0u)
+      << firstRow;  // knee_angle_r: - = flexion
 }
 
 TEST(TrajectoryWriter, FileStemsKeepLoweringsApartAndNamesSafe) {

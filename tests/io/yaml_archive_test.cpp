@@ -23,11 +23,11 @@ struct Item {
 
 struct Sample {
   std::string name;
-  double length = 0;           // m
-  double angle = 0;            // rad, degrees in the file
-  double rate = 2.5;           // optional, default 2.5
+  double length = 0;  // m
+  double angle = 0;   // rad, degrees in the file
+  double rate = 2.5;  // optional, default 2.5
   int count = 0;
-  int steps = 7;               // optional, default 7
+  int steps = 7;  // optional, default 7
   bool flag = false;
   Side side = Side::kLeft;
   std::vector<double> angles;  // rad, degrees in the file
@@ -92,8 +92,8 @@ TEST(YamlArchive, ReadsEveryKindWithDefaultsAndUnits) {
   EXPECT_EQ(s.name, "knee");
   EXPECT_EQ(s.length, 0.45);
   EXPECT_EQ(s.angle, 30 * kDegToRad);
-  EXPECT_EQ(s.rate, 2.5);   // absent: the default
-  EXPECT_EQ(s.steps, 7);    // absent: the default
+  EXPECT_EQ(s.rate, 2.5);  // absent: the default
+  EXPECT_EQ(s.steps, 7);   // absent: the default
   EXPECT_EQ(s.count, 1);
   EXPECT_FALSE(s.flag);
   EXPECT_EQ(s.side, Side::kRight);
@@ -135,8 +135,10 @@ TEST(YamlArchive, FormatDegreesIsShortAndExact) {
 
 TEST(YamlArchive, BadInputNamesFileLineAndKey) {
   const std::string base = kSample;
-  EXPECT_EQ(inputErrorOf(base + "extra: {name: w, mass_kg: -1}\n"), "sample.yaml:9: extra.mass_kg: must be positive (got -1)");
-  EXPECT_EQ(inputErrorOf(base + "unknown: 1\n"), "sample.yaml:9: unknown: unknown key (check the spelling; see docs/formats.md)");
+  EXPECT_EQ(inputErrorOf(base + "extra: {name: w, mass_kg: -1}\n"),
+            "sample.yaml:9: extra.mass_kg: must be positive (got -1)");
+  EXPECT_EQ(inputErrorOf(base + "unknown: 1\n"),
+            "sample.yaml:9: unknown: unknown key (check the spelling; see docs/formats.md)");
   std::string twice = base;
   twice.replace(twice.find("count: 1"), 8, "count: 2");
   EXPECT_EQ(inputErrorOf(twice), "sample.yaml:4: count: must not exceed the number of items (got 2)");

@@ -45,7 +45,10 @@ TEST(YamlReader, RejectsDuplicateKeysAndSyntaxErrors) {
 }
 
 TEST(YamlReader, AcceptsByteOrderMarkAndCrlf) {
-  YamlMap m = YamlMap::loadString("\xEF\xBB\xBF" "a: 1\r\nb: 2\r\n", "t.yaml");
+  YamlMap m = YamlMap::loadString(
+      "\xEF\xBB\xBF"
+      "a: 1\r\nb: 2\r\n",
+      "t.yaml");
   EXPECT_DOUBLE_EQ(m.getDouble("b"), 2.0);
 }
 

@@ -1,6 +1,6 @@
-#include "io/bench_csv.h"
 #include "knee/bench_profile.h"
 #include "core/units.h"
+#include "io/bench_csv.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@ const std::string kWinter = std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/wi
 TEST(BenchProfile, ReadsOneWinterStrideHeelStrikeToHeelStrike) {
   const auto stride = readKneeAngleStride(kWinter, 28, 97);
   ASSERT_EQ(stride.flexion.size(), 69u);
-  EXPECT_NEAR(stride.flexion.front(), -0.6 * kDeg, 1e-12);   // frame 28, heel strike
+  EXPECT_NEAR(stride.flexion.front(), -0.6 * kDeg, 1e-12);  // frame 28, heel strike
   EXPECT_NEAR(*std::max_element(stride.flexion.begin(), stride.flexion.end()), 66.6 * kDeg, 1e-12);
   EXPECT_THROW(readKneeAngleStride(kWinter, 100, 140), InputError);
 }
@@ -37,7 +37,8 @@ TEST(BenchProfile, SamplesFiveCyclesAtBenchRateWithHeldHyperextension) {
   EXPECT_EQ(held, 5 * 9);
   EXPECT_DOUBLE_EQ(*std::min_element(prof.flexion.begin(), prof.flexion.end()), p.hyperextension);
   // Positions follow Eq. 1: hyperextension is x < 0.
-  EXPECT_DOUBLE_EQ(*std::min_element(prof.position.begin(), prof.position.end()), g.calcPistonPosition(p.hyperextension));
+  EXPECT_DOUBLE_EQ(*std::min_element(prof.position.begin(), prof.position.end()),
+                   g.calcPistonPosition(p.hyperextension));
 }
 
 TEST(BenchProfile, ModificationKeepsPeaksAndTerminalSwingAboveHyperextension) {

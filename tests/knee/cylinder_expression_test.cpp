@@ -16,8 +16,8 @@ KneeExpressionParams stop(double k) {
 }
 
 TEST(CylinderExpression, TheVariablesAreThePistonsPositionAndSpeedInTwoUnits) {
-  const CylinderExpressionForces f({{"units", "a * (position_m * 1000 - position_mm) + speed_mm_s - 1000 * speed_m_s + a",
-                                     {{"a", "", 7.0}}}});
+  const CylinderExpressionForces f(
+      {{"units", "a * (position_m * 1000 - position_mm) + speed_mm_s - 1000 * speed_m_s + a", {{"a", "", 7.0}}}});
   EXPECT_NEAR(f.calcForce(0.0123, -0.456), 7.0, 1e-9);
 }
 
@@ -27,8 +27,12 @@ TEST(CylinderExpression, ForcesSumAndCopiesEvaluateApart) {
   EXPECT_DOUBLE_EQ(two.calcForce(0.015, 0.1), 0.0);
   CylinderExpressionForces copy = two;
   double a = 0, b = 0;
-  std::thread t1([&] { for (int i = 0; i < 2000; ++i) a += two.calcForce(0.021, 0); });
-  std::thread t2([&] { for (int i = 0; i < 2000; ++i) b += copy.calcForce(0.022, 0); });
+  std::thread t1([&] {
+    for (int i = 0; i < 2000; ++i) a += two.calcForce(0.021, 0);
+  });
+  std::thread t2([&] {
+    for (int i = 0; i < 2000; ++i) b += copy.calcForce(0.022, 0);
+  });
   t1.join();
   t2.join();
   EXPECT_NEAR(a, 2000 * 4.0, 1e-6);
@@ -48,7 +52,8 @@ TEST(CylinderExpression, ANonFiniteForceNamesTheExpressionAndTheState) {
 
 TEST(CylinderExpression, TheCylinderAddsItToItsForceAndItsKneeMoment) {
   MauchCylinderParams p;
-  p.coefficients = {{-243.72, 29975.3, 17087.9}, {30.95, 2489.92, 928.7}, {-184.5, 10414.6, 501.49}, {-488.12, 563313, 14672.2}};
+  p.coefficients = {
+      {-243.72, 29975.3, 17087.9}, {30.95, 2489.92, 928.7}, {-184.5, 10414.6, 501.49}, {-488.12, 563313, 14672.2}};
   const MauchCylinder plain(p);
   p.effects.expressions = {stop(3)};
   EXPECT_TRUE(p.effects.any());

@@ -34,7 +34,7 @@ TEST(DampingTable, PassesThroughTheSamplesAndHoldsOutsideTheTable) {
   // w1 = 2*40 + 30 = 110 and w2 = 40 + 2*30 = 100, slope 210 / (110/0.02 + 100/0.0725)
   // = 29/950 N m/deg (0.0305); the ends are flat. At an interval's midpoint the cubic
   // Hermite is (y0 + y1)/2 + h (m0 - m1)/8.
-  constexpr double m30 = 29.0 / 950;  // N m per deg
+  constexpr double m30 = 29.0 / 950;                                              // N m per deg
   EXPECT_NEAR(table.calcTableMoment(15 * kDeg), 1.3 - 30 * m30 / 8, kRoundOff);   // 1.18553
   EXPECT_NEAR(table.calcTableMoment(50 * kDeg), 3.05 + 40 * m30 / 8, kRoundOff);  // 3.20263
 }
@@ -50,8 +50,8 @@ TEST(DampingTable, IsMonotoneBetweenMonotoneSamplesAndHasNoKinks) {
   }
   // C1 at every sample (and into the held ends): one-sided slopes agree. A linear table
   // has slope jumps of 0.05 N m/deg here.
-  constexpr double kH = 1e-6;                          // rad
-  constexpr double kSlopeTol = 1e-3 / kDeg;            // N m/rad, vs jumps of order 3 N m/rad
+  constexpr double kH = 1e-6;                // rad
+  constexpr double kSlopeTol = 1e-3 / kDeg;  // N m/rad, vs jumps of order 3 N m/rad
   for (double knot : {0.0, 30 * kDeg, 70 * kDeg}) {
     const double left = (table.calcTableMoment(knot) - table.calcTableMoment(knot - kH)) / kH;
     const double right = (table.calcTableMoment(knot + kH) - table.calcTableMoment(knot)) / kH;

@@ -28,9 +28,10 @@ TEST(ExpressionParser, RefusesWithTheCharacterWhereItStopped) {
     EXPECT_NE(line.find("x, v"), std::string::npos) << line;  // names the variables it knows
     EXPECT_NE(line.find("character 5"), std::string::npos) << line;
   }
-  EXPECT_THROW(checkExpression({"e", " ", {{"a", "", 1.0}}}, kVars, "q"), KneeExpressionError);    // empty
-  EXPECT_THROW(checkExpression({"e", "x", {{"a", "", 1.0}}}, kVars, "q"), KneeExpressionError);    // a unused
-  EXPECT_THROW(checkExpression({"e", "x * x", {{"x", "", 1.0}}}, kVars, "q"), KneeExpressionError);  // a variable's name
+  EXPECT_THROW(checkExpression({"e", " ", {{"a", "", 1.0}}}, kVars, "q"), KneeExpressionError);  // empty
+  EXPECT_THROW(checkExpression({"e", "x", {{"a", "", 1.0}}}, kVars, "q"), KneeExpressionError);  // a unused
+  EXPECT_THROW(checkExpression({"e", "x * x", {{"x", "", 1.0}}}, kVars, "q"),
+               KneeExpressionError);  // a variable's name
   EXPECT_THROW(checkExpression({"e", "a * x", {{"a", "", 1.0}, {"a", "", 2.0}}}, kVars, "q"), KneeExpressionError);
   EXPECT_THROW(checkExpression({"e", "a * x", {{"2a", "", 1.0}}}, kVars, "q"), KneeExpressionError);
   EXPECT_NO_THROW(checkExpression({"e", "a * x", {{"a", "", 1.0}}}, kVars, "q"));

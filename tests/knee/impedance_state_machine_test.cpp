@@ -68,7 +68,8 @@ class KneeOnFixedThigh final : public OdeSystem {
 // The law's states along a prescribed knee motion theta(t): y = z only.
 class PrescribedKnee final : public OdeSystem {
  public:
-  PrescribedKnee(const KneeLaw& law, std::function<KneeKinematics(double)> motion) : law_(law), motion_(std::move(motion)) {}
+  PrescribedKnee(const KneeLaw& law, std::function<KneeKinematics(double)> motion)
+      : law_(law), motion_(std::move(motion)) {}
   int numStates() const override { return law_.numStates(); }
   void calcDerivatives(double t, const double* y, double* dydt) const override {
     law_.calcStateDerivatives(motion_(t), y, dydt);

@@ -50,9 +50,9 @@ TEST(JointStop, ContinuousAtOnsetEvenWhenHitFast) {
 TEST(JointStop, LoadsWithTheFullSpringAndUnloadsWithESquaredOfIt) {
   JointStop stop = makeStop();
   const double p = 1 * kDeg, spring = 2.0e4 * std::pow(p, 1.5);
-  EXPECT_NEAR(stop.calcJointMoment(-p, -2.0), spring, 1e-6 * spring);              // going in at 2 rad/s
-  EXPECT_NEAR(stop.calcJointMoment(-p, 2.0), 0.16 * spring, 1e-6 * spring);       // coming out: e^2 = 0.16
-  EXPECT_NEAR(stop.calcJointMoment(91 * kDeg, 2.0), -spring, 1e-6 * spring);      // the upper stop, going in
+  EXPECT_NEAR(stop.calcJointMoment(-p, -2.0), spring, 1e-6 * spring);         // going in at 2 rad/s
+  EXPECT_NEAR(stop.calcJointMoment(-p, 2.0), 0.16 * spring, 1e-6 * spring);   // coming out: e^2 = 0.16
+  EXPECT_NEAR(stop.calcJointMoment(91 * kDeg, 2.0), -spring, 1e-6 * spring);  // the upper stop, going in
   EXPECT_NEAR(stop.calcJointMoment(91 * kDeg, -2.0), -0.16 * spring, 1e-6 * spring);
 }
 

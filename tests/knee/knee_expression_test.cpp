@@ -15,7 +15,9 @@ namespace {
 // Every state variable carries its unit: the same state seen in deg and in rad.
 TEST(KneeExpression, EveryVariableInItsUnit) {
   const KneeKinematics k{0.5, -2.0, 0.3, 1.5, 0.25};
-  auto eval = [&](const std::string& e) { return KneeExpressionMoment({"x", e + " + 0 * a", {{"a", "", 0}}}).calcMoment(k, nullptr); };
+  auto eval = [&](const std::string& e) {
+    return KneeExpressionMoment({"x", e + " + 0 * a", {{"a", "", 0}}}).calcMoment(k, nullptr);
+  };
   EXPECT_DOUBLE_EQ(eval("knee_deg"), 0.5 * kRadToDeg);
   EXPECT_DOUBLE_EQ(eval("knee_rad"), 0.5);
   EXPECT_DOUBLE_EQ(eval("knee_rate_deg_s"), -2.0 * kRadToDeg);
@@ -30,8 +32,9 @@ TEST(KneeExpression, EveryVariableInItsUnit) {
 // A cushion against extension near full extension: written as in docs/diagnosis.md, it is
 // the moment computed by hand (positive, flexing, while the knee extends below 15 deg).
 TEST(KneeExpression, ACushionIsTheMomentByHand) {
-  const KneeExpressionMoment cushion(
-      {"cushion", "-c * knee_rate_rad_s * (knee_rate_rad_s < 0 ? 1 : 0) * (knee_deg < 15 ? 1 : 0)", {{"c", "N m s/rad", 2.0}}});
+  const KneeExpressionMoment cushion({"cushion",
+                                      "-c * knee_rate_rad_s * (knee_rate_rad_s < 0 ? 1 : 0) * (knee_deg < 15 ? 1 : 0)",
+                                      {{"c", "N m s/rad", 2.0}}});
   EXPECT_DOUBLE_EQ(cushion.calcMoment({10 * kDegToRad, -3.0}, nullptr), 6.0);
   EXPECT_DOUBLE_EQ(cushion.calcMoment({10 * kDegToRad, 3.0}, nullptr), 0.0);   // flexing
   EXPECT_DOUBLE_EQ(cushion.calcMoment({20 * kDegToRad, -3.0}, nullptr), 0.0);  // above 15 deg
@@ -75,7 +78,8 @@ TEST(KneeExpression, ClonesEvaluateInParallel) {
   for (std::size_t t = 0; t < sums.size(); ++t)
     threads.emplace_back([&, t] {
       const auto mine = law.clone();
-      for (int i = 0; i < 2000; ++i) sums[t] += mine->calcMoment({i * 1e-3, 1.0 - i * 1e-3}, nullptr) + law.calcMoment({0.1, 0.2}, nullptr);
+      for (int i = 0; i < 2000; ++i)
+        sums[t] += mine->calcMoment({i * 1e-3, 1.0 - i * 1e-3}, nullptr) + law.calcMoment({0.1, 0.2}, nullptr);
     });
   for (auto& th : threads) th.join();
   double expected = 0;

@@ -50,8 +50,8 @@ TEST(KneeFriction, ResistsMotionWithMagnitudeTcBelow4Deg) {
 TEST(KneeFriction, SmoothInVelocityNoJumpThroughZero) {
   KneeFriction friction = makeFriction(10);
   const double rateStep = 1e-6;
-  const double slope = (friction.calcMoment({0, rateStep}, nullptr) - friction.calcMoment({0, -rateStep}, nullptr)) /
-                       (2 * rateStep);
+  const double slope =
+      (friction.calcMoment({0, rateStep}, nullptr) - friction.calcMoment({0, -rateStep}, nullptr)) / (2 * rateStep);
   // tanh(rate / w): slope -Tc gate / w with gate(0 deg) = 0.5 (1 + tanh(8)).
   const double gate = friction.calcGate(0);
   EXPECT_NEAR(slope, -10 * gate / friction.params().smoothingRate, 1e-4);

@@ -31,8 +31,8 @@ TEST(KneeGeometry, CylinderLengthMatchesEquationOneAtHandPoints) {
 TEST(KneeGeometry, PistonPositionFollowsDesignConvention) {
   const KneeGeometry g;
   EXPECT_EQ(g.calcPistonPosition(0.0), 0.0);
-  EXPECT_GT(g.calcPistonPosition(10 * kDeg), 0.0);   // flexion
-  EXPECT_LT(g.calcPistonPosition(-3 * kDeg), 0.0);   // hyperextension
+  EXPECT_GT(g.calcPistonPosition(10 * kDeg), 0.0);  // flexion
+  EXPECT_LT(g.calcPistonPosition(-3 * kDeg), 0.0);  // hyperextension
   EXPECT_GT(g.calcPistonPosition(60 * kDeg), g.calcPistonPosition(30 * kDeg));
   EXPECT_GT(g.calcPistonVelocity(20 * kDeg, 2.0), 0.0);  // flexing
   EXPECT_LT(g.calcPistonVelocity(20 * kDeg, -2.0), 0.0);

@@ -19,8 +19,8 @@ constexpr double kForceTol = 1e-9;
 MauchCylinderParams table1FourPhase() {
   MauchCylinderParams p;
   p.phases = 4;
-  p.coefficients = {{-243.72, 29975.3, 17087.9}, {30.95, 2489.92, 928.7},
-                    {-184.5, 10414.6, 501.49}, {-488.12, 563313, 14672.2}};
+  p.coefficients = {
+      {-243.72, 29975.3, 17087.9}, {30.95, 2489.92, 928.7}, {-184.5, 10414.6, 501.49}, {-488.12, 563313, 14672.2}};
   return p;
 }
 
@@ -74,7 +74,7 @@ TEST(MauchSwitches, GatesSumToOneEverywhere) {
 TEST(MauchCylinder, FourPhaseUsesDescribedPhaseForEachGaitEvent) {
   const MauchCylinder cyl(table1FourPhase());
   const auto& c = cyl.params().coefficients;
-  const double xd = 0.1, x = 0.01;  // 100 mm/s is 200 velocity widths
+  const double xd = 0.1, x = 0.01;                                        // 100 mm/s is 200 velocity widths
   EXPECT_NEAR(cyl.calcForce(x, xd, 0.0), law(c[0], x, xd), kForceTol);    // stance flexion
   EXPECT_NEAR(cyl.calcForce(x, xd, 1.0), law(c[1], x, xd), kForceTol);    // swing flexion
   EXPECT_NEAR(cyl.calcForce(x, -xd, 0.0), law(c[2], x, -xd), kForceTol);  // extension
@@ -145,18 +145,29 @@ TEST(MauchLatch, SetsInHyperextensionHoldsThroughFlexionResetsInExtension) {
   for (int i = 0; i < 200; ++i) {
     const double ti = i * dt;
     double xi, vi;
-    if (ti < 0.1) { xi = 0.004 - 0.06 * ti; vi = -0.06; }
-    else if (ti < 0.15) { xi = -0.002; vi = 0; }
-    else if (ti < 0.4) { xi = -0.002 + 0.088 * (ti - 0.15); vi = 0.088; }
-    else { xi = 0.020 - 0.06 * (ti - 0.4); vi = -0.06; }
-    t.push_back(ti); x.push_back(xi); xd.push_back(vi);
+    if (ti < 0.1) {
+      xi = 0.004 - 0.06 * ti;
+      vi = -0.06;
+    } else if (ti < 0.15) {
+      xi = -0.002;
+      vi = 0;
+    } else if (ti < 0.4) {
+      xi = -0.002 + 0.088 * (ti - 0.15);
+      vi = 0.088;
+    } else {
+      xi = 0.020 - 0.06 * (ti - 0.4);
+      vi = -0.06;
+    }
+    t.push_back(ti);
+    x.push_back(xi);
+    xd.push_back(vi);
   }
   const auto s2 = calcLatchHistory(t, x, xd, sw, 0.0);
   auto at = [&](double time) { return s2[static_cast<std::size_t>(time / dt)]; };
-  EXPECT_NEAR(at(0.02), 0.0, kSwitchTol);   // extending 2.8 mm above xhy
-  EXPECT_NEAR(at(0.14), 1.0, kSwitchTol);   // latched in hyperextension
-  EXPECT_NEAR(at(0.39), 1.0, kSwitchTol);   // held through the whole flexion
-  EXPECT_NEAR(at(0.5), 0.0, kSwitchTol);    // reset by extension above xhy
+  EXPECT_NEAR(at(0.02), 0.0, kSwitchTol);  // extending 2.8 mm above xhy
+  EXPECT_NEAR(at(0.14), 1.0, kSwitchTol);  // latched in hyperextension
+  EXPECT_NEAR(at(0.39), 1.0, kSwitchTol);  // held through the whole flexion
+  EXPECT_NEAR(at(0.5), 0.0, kSwitchTol);   // reset by extension above xhy
   for (double v2 : s2) {
     EXPECT_GE(v2, 0.0);
     EXPECT_LE(v2, 1.0);

@@ -20,10 +20,10 @@ namespace {
 
 using namespace SimTK;
 
-constexpr double kInertia = 0.2;        // kg m^2 about the pin (a shank about the knee)
-constexpr double kRoundOff = 1e-12;     // one division and Simbody's articulated-body solve
-constexpr double kAccuracy = 1e-9;      // RK-Merson accuracy of the integrated tests
-constexpr double kEnergyTol = 1e-6;     // J: drift the integrator allows at kAccuracy
+constexpr double kInertia = 0.2;     // kg m^2 about the pin (a shank about the knee)
+constexpr double kRoundOff = 1e-12;  // one division and Simbody's articulated-body solve
+constexpr double kAccuracy = 1e-9;   // RK-Merson accuracy of the integrated tests
+constexpr double kEnergyTol = 1e-6;  // J: drift the integrator allows at kAccuracy
 
 // A viscous damper, M = -c u: resists every motion, its work is -integral c u^2 dt.
 class TestDamper final : public KneeLaw {
@@ -163,15 +163,16 @@ TEST(KneeForceElement, LawStatesStartAtTheLawsValuesAndAreIntegrated) {
   const double z = rig.knee->getLawStates(end)[0];
   EXPECT_NEAR(z - 0.7, rig.pin.getOneQ(end, 0) - 0.4, 1e-7);
   EXPECT_NEAR(rig.knee->calcKneeMoment(end), -z, kRoundOff);
-  EXPECT_NEAR(rig.knee->getWork(end), rig.system.calcKineticEnergy(end) - rig.system.calcKineticEnergy(start), kEnergyTol);
+  EXPECT_NEAR(rig.knee->getWork(end), rig.system.calcKineticEnergy(end) - rig.system.calcKineticEnergy(start),
+              kEnergyTol);
 }
 
 TEST(HipDriveElement, AppliesTheProfileAtTheStatesTimePlusTheRangeStop) {
   MultibodySystem system;
   SimbodyMatterSubsystem matter(system);
   GeneralForceSubsystem forces(system);
-  MobilizedBody::Pin thigh(matter.Ground(), Transform(), Body::Rigid(MassProperties(1.0, Vec3(0), Inertia(1.0, 1.0, kInertia))),
-                           Transform());
+  MobilizedBody::Pin thigh(matter.Ground(), Transform(),
+                           Body::Rigid(MassProperties(1.0, Vec3(0), Inertia(1.0, 1.0, kInertia))), Transform());
   HipMomentProfile profile;  // 30 N m flexion half-sine over 0.2 s, then 15 N m extension
   JointStopParams range;
   range.lower = -0.3;

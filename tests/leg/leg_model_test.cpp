@@ -85,7 +85,8 @@ TEST(LegModel, CompoundPendulumSmallAnglePeriod) {
     time.push_back(s.getTime());
     angle.push_back(thigh.getOneQ(s, 0));
   });
-  const double expected = 2 * Pi * std::sqrt((inertia + mass * comDistance * comDistance) / (mass * kGravity * comDistance));
+  const double expected =
+      2 * Pi * std::sqrt((inertia + mass * comDistance * comDistance) / (mass * kGravity * comDistance));
   const double period = calcMeanPeriod(time, angle);
   EXPECT_NEAR(period / expected - 1, 0, kPeriodRelTol) << "period " << period << " s, formula " << expected << " s";
   std::printf("Simbody compound pendulum: period %.9f s, formula %.9f s, relative error %.1e\n", period, expected,
@@ -101,7 +102,7 @@ TEST(LegModel, SmallOscillationNormalModesOfTheFreeLeg) {
   const Participant p = load("p1");
   const LegGeometry g = calcLegGeometry(p, 0.0);
   const double m2 = g.shankMass + g.footMass;
-  const double comX = g.footMass * g.footComForward;            // m2 r2 sin gamma
+  const double comX = g.footMass * g.footComForward;                          // m2 r2 sin gamma
   const double comY = g.shankMass * g.shankCom + g.footMass * g.shankLength;  // m2 r2 cos gamma
   const double r2 = std::hypot(comX, comY) / m2, gamma = std::atan2(comX, comY);
   const double m11 = g.thighInertia + g.thighMass * g.thighCom * g.thighCom + m2 * g.thighLength * g.thighLength;
@@ -127,10 +128,10 @@ TEST(LegModel, SmallOscillationNormalModesOfTheFreeLeg) {
     initial.kneeFlexion = scale * v1 - scale * v2 + gamma;  // theta = phi - beta + gamma
     std::vector<double> time, hip;
     integrateAndObserve(leg.getSystem(), leg.makeInitialState(initial), kPeriodAccuracy, kSampleInterval, 3.0,
-              [&](const State& s) {
-                time.push_back(s.getTime());
-                hip.push_back(leg.getHipFlexion(s));
-              });
+                        [&](const State& s) {
+                          time.push_back(s.getTime());
+                          hip.push_back(leg.getHipFlexion(s));
+                        });
     const double expected = 2 * Pi / std::sqrt(lambda);
     const double period = calcMeanPeriod(time, hip);
     EXPECT_NEAR(period / expected - 1, 0, kPeriodRelTol) << "mode period " << period << " s, formula " << expected;
@@ -182,23 +183,24 @@ TEST(LegModel, EnergyBookkeepingWithDampingFrictionStopsAndHipDrive) {
   narrow.maxFlexion = 22 * kDegToRad;
   LegModel leg(calcLegGeometry(p, 0.0), law, p.hipMoment, narrow, kHipHeight);
   double b0 = NaN, maxDrift = 0, kneeMin = 1e9, hipMax = -1e9, kneeWork = 0, hipWork = 0;
-  integrateAndObserve(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 1.2, [&](const State& s) {
-    kneeWork = leg.getKneeWork(s);
-    hipWork = leg.getHipWork(s);
-    const double balance = leg.calcMechanicalEnergy(s) - kneeWork - hipWork;
-    if (std::isnan(b0)) b0 = balance;
-    maxDrift = std::max(maxDrift, std::abs(balance - b0));
-    kneeMin = std::min(kneeMin, leg.getKneeFlexion(s));
-    hipMax = std::max(hipMax, leg.getHipFlexion(s));
-  });
+  integrateAndObserve(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 1.2,
+                      [&](const State& s) {
+                        kneeWork = leg.getKneeWork(s);
+                        hipWork = leg.getHipWork(s);
+                        const double balance = leg.calcMechanicalEnergy(s) - kneeWork - hipWork;
+                        if (std::isnan(b0)) b0 = balance;
+                        maxDrift = std::max(maxDrift, std::abs(balance - b0));
+                        kneeMin = std::min(kneeMin, leg.getKneeFlexion(s));
+                        hipMax = std::max(hipMax, leg.getHipFlexion(s));
+                      });
   EXPECT_LT(maxDrift, kEnergyTol);
   // Every law did something, so leaving a work term out would break the balance.
   EXPECT_LT(kneeMin, 0.0) << "the knee must reach its hyperextension stop";
   EXPECT_GT(hipMax, narrow.maxFlexion) << "the thigh must reach its range stop";
   EXPECT_LT(kneeWork, -1e6 * kEnergyTol) << "the knee must dissipate";
   EXPECT_GT(std::abs(hipWork), 1e6 * kEnergyTol);
-  std::printf("bookkeeping drift over 1.2 s: %.2e J (knee work %.3f J, hip work %.3f J, tolerance %.1e J)\n",
-              maxDrift, kneeWork, hipWork, kEnergyTol);
+  std::printf("bookkeeping drift over 1.2 s: %.2e J (knee work %.3f J, hip work %.3f J, tolerance %.1e J)\n", maxDrift,
+              kneeWork, hipWork, kEnergyTol);
 }
 
 TEST(LegModel, MovingHipPendulumSwingsAsUnderGravityPlusTheHipsAcceleration) {
@@ -239,12 +241,13 @@ TEST(LegModel, MovingHipPendulumSwingsAsUnderGravityPlusTheHipsAcceleration) {
     knee.push_back(leg.getKneeFlexion(s));
     const LegPose pose = leg.calcPose(s);
     const double t = s.getTime();
-    hipPoseError = std::max({hipPoseError, std::abs(pose.hip[0] - 0.1 * t),
-                             std::abs(pose.hip[1] - (kHipHeight + 0.5 * kRise * t * t))});
+    hipPoseError = std::max(
+        {hipPoseError, std::abs(pose.hip[0] - 0.1 * t), std::abs(pose.hip[1] - (kHipHeight + 0.5 * kRise * t * t))});
   });
   const double expected = 2 * Pi * std::sqrt(j2 / (m2r2 * (kGravity + kRise)));
   const double period = calcMeanPeriod(time, knee);
-  std::printf("Simbody moving hip, support rising at 1 g: knee period %.9f s, formula (g + a) %.9f s\n", period, expected);
+  std::printf("Simbody moving hip, support rising at 1 g: knee period %.9f s, formula (g + a) %.9f s\n", period,
+              expected);
   EXPECT_NEAR(period / expected - 1, 0, kPeriodRelTol);
   // m: the spline reproduces a line and a parabola to rounding (values up to 120 m at 5 s).
   constexpr double kPoseTol = 1e-9;

@@ -105,7 +105,8 @@ TEST(MauchSwing, LatchSetsInHyperextensionAndHoldsThroughFlexion) {
       const double knee = leg.getKneeFlexion(s);
       maxLatch = std::max(maxLatch, latch);
       if (std::abs(s.getTime() - 0.02) < 1e-9) latchAt20ms = latch;
-      if (s.getTime() > 0.02 && leg.getKneeFlexionRate(s) > 0.1) minLatchDuringFlexion = std::min(minLatchDuringFlexion, latch);
+      if (s.getTime() > 0.02 && leg.getKneeFlexionRate(s) > 0.1)
+        minLatchDuringFlexion = std::min(minLatchDuringFlexion, latch);
       if (knee > peakKnee) {
         peakKnee = knee;
         latchAtPeak = latch;
@@ -132,12 +133,13 @@ TEST(MauchSwing, EnergyBookkeepingHoldsWithTheCylinder) {
   const KneeLawSum law = makeKneeLaw(p, model);
   LegModel leg(calcLegGeometry(p, 0.05), law, p.hipMoment, p.hipRange, kHipHeight);
   double b0 = NaN, maxDrift = 0, kneeWork = 0;
-  integrateAndObserve(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 0.8, [&](const State& s) {
-    kneeWork = leg.getKneeWork(s);
-    const double balance = leg.calcMechanicalEnergy(s) - kneeWork - leg.getHipWork(s);
-    if (std::isnan(b0)) b0 = balance;
-    maxDrift = std::max(maxDrift, std::abs(balance - b0));
-  });
+  integrateAndObserve(leg.getSystem(), leg.makeInitialState(p.initial), kEnergyAccuracy, 0.002, 0.8,
+                      [&](const State& s) {
+                        kneeWork = leg.getKneeWork(s);
+                        const double balance = leg.calcMechanicalEnergy(s) - kneeWork - leg.getHipWork(s);
+                        if (std::isnan(b0)) b0 = balance;
+                        maxDrift = std::max(maxDrift, std::abs(balance - b0));
+                      });
   EXPECT_LT(maxDrift, kEnergyTol);
   EXPECT_LT(kneeWork, -1.0) << "the cylinder must dissipate a real amount of energy (J)";
 }

@@ -38,7 +38,7 @@ std::string errorOf(const ThighKinematics& k) {
 
 TEST(ThighMotion, RateAndAccelerationAreTheAnglesDerivatives) {
   const ThighMotion m(sineSamples(50));
-  constexpr double h = 1e-5;          // s, central-difference step
+  constexpr double h = 1e-5;               // s, central-difference step
   constexpr double kDifferenceTol = 1e-6;  // the central difference's h^2 error and round-off, relative
   for (double t = 0.02; t < 0.47; t += 0.031) {
     const double rate = (m.calcAngle(t + h) - m.calcAngle(t - h)) / (2 * h);
@@ -70,7 +70,8 @@ TEST(ThighMotion, UnusableSamplesAreRefusedWithWhereAndWhat) {
   ThighKinematics k = sineSamples(10);
   k.hipFlexion.pop_back();
   EXPECT_EQ(errorOf(k), "thigh.csv: expected one hip flexion per time (10), found 9");
-  EXPECT_EQ(errorOf(sineSamples(5)), "thigh.csv: expected at least 6 thigh angle samples to prescribe the thigh, found 5");
+  EXPECT_EQ(errorOf(sineSamples(5)),
+            "thigh.csv: expected at least 6 thigh angle samples to prescribe the thigh, found 5");
   k = sineSamples(10);
   k.path.clear();
   for (double& t : k.time) t += 0.02;

@@ -15,7 +15,8 @@ constexpr double kSolutionTol = 1e-6;
 // y = a + b t sampled at t = 0..9 with y exact for a = 2, b = -0.5.
 Eigen::VectorXd lineResidual(const Eigen::VectorXd& p, const std::vector<double>& y) {
   Eigen::VectorXd r(static_cast<Eigen::Index>(y.size()));
-  for (std::size_t i = 0; i < y.size(); ++i) r[static_cast<Eigen::Index>(i)] = p[0] + p[1] * static_cast<double>(i) - y[i];
+  for (std::size_t i = 0; i < y.size(); ++i)
+    r[static_cast<Eigen::Index>(i)] = p[0] + p[1] * static_cast<double>(i) - y[i];
   return r;
 }
 
@@ -92,7 +93,8 @@ TEST(BoundedLeastSquares, LogScaledParameterFindsAPositiveRate) {
   }
   const ResidualFunction f = [&](const Eigen::VectorXd& p) {
     Eigen::VectorXd r(20);
-    for (int i = 0; i < 20; ++i) r[i] = std::exp(-p[0] * t[static_cast<std::size_t>(i)]) - y[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 20; ++i)
+      r[i] = std::exp(-p[0] * t[static_cast<std::size_t>(i)]) - y[static_cast<std::size_t>(i)];
     return r;
   };
   BoundedParameter k{"k", 0.3, 0.1, 10.0, true};

@@ -41,7 +41,8 @@ TEST(SampleDerivative, SecondOrderOnASine) {
     }
     const auto v = estimatePistonVelocity(t, x);
     double e = 0;
-    for (int i = 1; i < n; ++i) e = std::max(e, std::fabs(v[static_cast<std::size_t>(i)] - 3 * std::cos(3 * t[static_cast<std::size_t>(i)])));
+    for (int i = 1; i < n; ++i)
+      e = std::max(e, std::fabs(v[static_cast<std::size_t>(i)] - 3 * std::cos(3 * t[static_cast<std::size_t>(i)])));
     return e;
   };
   const double ratio = maxError(50) / maxError(100);

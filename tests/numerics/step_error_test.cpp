@@ -27,7 +27,8 @@ TEST(StepError, NormIsTheRmsOfErrorsOverTheirScales) {
 
 TEST(StepError, ToleranceCheckNamesTheMethod) {
   EXPECT_NO_THROW(checkStepTolerances("DormandPrince", 1e-8, 1e-12));
-  for (const double bad : {0.0, -1e-6, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+  for (const double bad :
+       {0.0, -1e-6, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
     try {
       checkStepTolerances("BogackiShampine", bad, 1e-6);
       ADD_FAILURE() << "relTol " << bad << " accepted";

@@ -71,9 +71,10 @@ TEST(CohortReportShortSweeps, ASweepThatStopsBeforeTheGridsEndIsNamedWithWhere) 
   t.results[0].sweep.lowerings = {0};
   t.results[0].sweep.swingTimes = {0.45};
   t.results[0].sweep.best = 0;
-  EXPECT_THAT(t.reportMd(), HasSubstr("2 participants' sweeps stop before 50 mm, where their leg runs out (the knee "
-                                      "unit's centre of mass would pass the ankle, or the shank its least length): A at "
-                                      "0 mm, B at 25 mm.\n"));
+  EXPECT_THAT(t.reportMd(),
+              HasSubstr("2 participants' sweeps stop before 50 mm, where their leg runs out (the knee "
+                        "unit's centre of mass would pass the ankle, or the shank its least length): A at "
+                        "0 mm, B at 25 mm.\n"));
 }
 
 }  // namespace

@@ -82,10 +82,11 @@ struct Fixture {
 TEST(CohortReport, MarkdownNamesTheDrawTheSourcesAndWhoWasLeftOut) {
   const Fixture f;
   const std::string md = f.file("report.md");
-  EXPECT_EQ(md.rfind("# Cohort study tiny\n\n3 participants drawn with seed 7 from the distributions below; each starts "
-                     "from `p1.yaml`",
-                     0),
-            0u)
+  EXPECT_EQ(
+      md.rfind("# Cohort study tiny\n\n3 participants drawn with seed 7 from the distributions below; each starts "
+               "from `p1.yaml`",
+               0),
+      0u)
       << md;
   EXPECT_NE(md.find("lowered in 25 mm steps up to 100 mm"), std::string::npos);
   EXPECT_NE(md.find("| stature (m) | uniform 1 .. 2 | source 0 |\n"), std::string::npos);
@@ -105,7 +106,8 @@ TEST(CohortReport, WritesTheFiguresItLinks) {
   for (const char* name : {"cohort-fastest-lowering.svg", "cohort-time-gained.svg", "cohort-predictors.svg",
                            "cohort-gain-vs-stature_m.svg"})
     EXPECT_EQ(f.file(name).rfind("<svg", 0), 0u) << name;
-  EXPECT_NE(f.file("cohort-gain-vs-stature_m.svg").find("Time gained against stature (m) (rho 0.80)"), std::string::npos);
+  EXPECT_NE(f.file("cohort-gain-vs-stature_m.svg").find("Time gained against stature (m) (rho 0.80)"),
+            std::string::npos);
 }
 
 TEST(CohortReport, CsvAndJsonLeaveAbsentNumbersEmptyOrNull) {
@@ -136,11 +138,12 @@ TEST(CohortReport, CsvAndJsonLeaveAbsentNumbersEmptyOrNull) {
 TEST(CohortReport, SummaryGivesTheIntervalsAndTheStrongestPredictors) {
   const Fixture f;
   const std::string s = formatCohortSummary(f.cohort, f.summary);
-  EXPECT_EQ(s, "cohort tiny: 3 participants (seed 7), 2 calibrated\n"
-               "  fastest lowering  median 40 mm (5-95 %: 26 .. 49 mm)\n"
-               "  time gained       median 25.0 ms (5-95 %: 20.5 .. 29.5 ms)\n"
-               "  predictor 1       stature (m): rho +0.80 (95 %: +0.10 .. +0.95)\n"
-               "  predictor 2       knee unit mass (kg): rho - (95 %: - .. -)\n");
+  EXPECT_EQ(s,
+            "cohort tiny: 3 participants (seed 7), 2 calibrated\n"
+            "  fastest lowering  median 40 mm (5-95 %: 26 .. 49 mm)\n"
+            "  time gained       median 25.0 ms (5-95 %: 20.5 .. 29.5 ms)\n"
+            "  predictor 1       stature (m): rho +0.80 (95 %: +0.10 .. +0.95)\n"
+            "  predictor 2       knee unit mass (kg): rho - (95 %: - .. -)\n");
 }
 
 }  // namespace

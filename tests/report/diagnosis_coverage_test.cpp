@@ -25,10 +25,10 @@ Diagnosis acceptedFriction() {
 
 // Every swing and cylinder candidate the study hid has a row; a candidate without one has no line.
 TEST(DiagnosisCoverage, EveryMeasuredCandidateHasARow) {
-  for (const char* effect : {"knee_coulomb_friction", "knee_viscous_damping", "extension_assist_spring",
-                             "toe_off_velocity", "hip_moment_scale", "shank_mass_scale", "below_knee_mass_scale",
-                             "coulomb_friction", "orifice_quadratic", "position_dependent_damping", "switch_delay",
-                             "hyperextension_phase"}) {
+  for (const char* effect :
+       {"knee_coulomb_friction", "knee_viscous_damping", "extension_assist_spring", "toe_off_velocity",
+        "hip_moment_scale", "shank_mass_scale", "below_knee_mass_scale", "coulomb_friction", "orifice_quadratic",
+        "position_dependent_damping", "switch_delay", "hyperextension_phase"}) {
     const auto m = findMeasuredCoverage(effect);
     ASSERT_TRUE(m.has_value()) << effect;
     EXPECT_GE(m->seeds, 20) << effect;
@@ -39,7 +39,8 @@ TEST(DiagnosisCoverage, EveryMeasuredCandidateHasARow) {
   EXPECT_FALSE(findMeasuredCoverage("an_effect_never_measured").has_value());
   EXPECT_EQ(formatMeasuredCoverage("an_effect_never_measured"), "");
   // The COM rule switch was measured (20 seeds, named in none): its line says why, no counts.
-  EXPECT_NE(formatMeasuredCoverage("com_rule_proportional").find("cannot tell the two COM rules apart"), std::string::npos);
+  EXPECT_NE(formatMeasuredCoverage("com_rule_proportional").find("cannot tell the two COM rules apart"),
+            std::string::npos);
 }
 
 TEST(DiagnosisCoverage, TheLineAppearsForAnAcceptedEffect) {
@@ -65,7 +66,8 @@ TEST(DiagnosisCoverage, NotQuotedWhenTheFinalModelDoesNotExplainTheData) {
   dg.explained = false;
   const std::string text = formatDiagnosisText(dg, Comparison{}, Comparison{});
   EXPECT_EQ(text.find("interval check (calibration study"), std::string::npos) << text;
-  EXPECT_NE(text.find("interval check not quoted: the final model does not explain these data"), std::string::npos) << text;
+  EXPECT_NE(text.find("interval check not quoted: the final model does not explain these data"), std::string::npos)
+      << text;
   EXPECT_FALSE(makeDiagnosisJson(dg, Comparison{}, Comparison{}).contains("interval_coverage"));
 }
 

@@ -13,7 +13,8 @@ using ::testing::HasSubstr;
 TEST(DiagnosisMarkdown, WarningsAreASectionOfTheReport) {
   EXPECT_EQ(formatWarningsSection({}), "");
   const std::string md = formatWarningsSection(
-      {"right1: the hip angle hip_flexion_r of walk.mot is read without the pelvis tilt: set motion_columns: pelvis_tilt: pelvis_tilt",
+      {"right1: the hip angle hip_flexion_r of walk.mot is read without the pelvis tilt: set motion_columns: "
+       "pelvis_tilt: pelvis_tilt",
        "right2: events from the kinematics, not the force (fallback_to_kinematics): grf.mot: ..."});
   EXPECT_THAT(md, HasSubstr("## Warnings\n"));
   EXPECT_THAT(md, HasSubstr("\n- right1: the hip angle hip_flexion_r of walk.mot is read without the pelvis tilt"));

@@ -4,15 +4,15 @@
 #include <limits>
 #include <string>
 
-#include "io/knee_model_loader.h"
-#include "identify/swing_plant.h"
-#include "identify/synthetic_swing.h"
-#include "io/participant_loader.h"
+#include "../cli/release_only.h"
 #include "core/text_format.h"
 #include "hidden_damper_comparison.h"
+#include "identify/swing_plant.h"
+#include "identify/synthetic_swing.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
 #include "report/diagnosis_report.h"
 #include "study/diagnosis_study.h"
-#include "../cli/release_only.h"
 
 namespace swingsim {
 namespace {
@@ -133,8 +133,9 @@ TEST(DiagnosisText, StepLineAndTablePrintThePooledTrainingRmseAndDefineMeAndTheW
   dg.finalResidualWhite = true;
   const std::string text = formatDiagnosisText(dg, c, c);
   const std::string number = fmt("%.3f", pooledRmse);
-  EXPECT_NE(text.find("step 1: current model, knee flexion RMSE: train pooled (normal, slow) " + number + " deg, fast "),
-            std::string::npos)
+  EXPECT_NE(
+      text.find("step 1: current model, knee flexion RMSE: train pooled (normal, slow) " + number + " deg, fast "),
+      std::string::npos)
       << text;
   const auto row = text.find("train pooled     |");
   ASSERT_NE(row, std::string::npos) << text;
@@ -156,8 +157,9 @@ TEST(DiagnosisText, TheRankingGivesTheAllRowsPBesideTheFoldThatFails) {
   c.allRowsPValue = 6.9e-4;
   c.significant = false;
   const std::string table = formatCandidateRanking({&c}, "ms", 1);
-  EXPECT_NE(table.find("not significant; (its least significant fold p 0.8; all participants' rows p 0.00069, unadjusted);"),
-            std::string::npos)
+  EXPECT_NE(
+      table.find("not significant; (its least significant fold p 0.8; all participants' rows p 0.00069, unadjusted);"),
+      std::string::npos)
       << table;
   // Without folds (swing, cylinder) nothing is added.
   c.foldPValues.clear();

@@ -17,7 +17,8 @@ inline std::string checkTagsBalanced(const std::string& html) {
     if (tag[0] == '/') {
       const std::string name = tag.substr(1);
       if (open.empty() || open.back() != name)
-        return "</" + name + "> at " + std::to_string(at) + " closes " + (open.empty() ? "nothing" : "<" + open.back() + ">");
+        return "</" + name + "> at " + std::to_string(at) + " closes " +
+               (open.empty() ? "nothing" : "<" + open.back() + ">");
       open.pop_back();
     } else if (tag.back() != '/') {
       open.push_back(tag.substr(0, tag.find_first_of(" \n")));

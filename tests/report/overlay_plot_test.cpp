@@ -8,12 +8,12 @@
 #include <sstream>
 #include <string>
 
+#include "hidden_damper_comparison.h"
 #include "identify/swing_plant.h"
 #include "identify/synthetic_swing.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "report/svg_plot.h"
-#include "hidden_damper_comparison.h"
 
 namespace swingsim {
 namespace {

@@ -110,7 +110,7 @@ TEST(SvgPlot, YTickLabelsReplaceNumbersAndWidenTheMargin) {
   EXPECT_THAT(svg, HasSubstr(">knee friction &lt;Tc&gt;</text>"));
   EXPECT_THAT(svg, HasSubstr(">COM rule</text>"));
   EXPECT_THAT(svg, Not(HasSubstr(">2.5</text>")));  // no numeric tick
-  EXPECT_THAT(svg, HasSubstr("M300.0 "));            // the plot starts at the new margin
+  EXPECT_THAT(svg, HasSubstr("M300.0 "));           // the plot starts at the new margin
   EXPECT_THROW(plot.setYTickLabels({}, 790), std::invalid_argument);
 }
 

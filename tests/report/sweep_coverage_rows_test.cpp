@@ -69,7 +69,7 @@ TEST(SweepCoverageRows, AnAcceptedUnmeasurableCandidateGetsTheLineAndNoCountsInT
 // quote their own counts and their own parameter.
 TEST(SweepCoverageRows, TheMeasuredSweepCandidatesQuoteTheirOwnTwentySeeds) {
   for (const auto& [effect, parameter] : {std::pair<const char*, const char*>{"hip_effort_adaptation", "exponent"},
-                                      {"hip_tempo_lowering", "change_per_100mm"}}) {
+                                          {"hip_tempo_lowering", "change_per_100mm"}}) {
     const auto m = findMeasuredCoverage(effect);
     ASSERT_TRUE(m.has_value()) << effect;
     EXPECT_EQ(std::string(m->parameter), parameter);
@@ -78,10 +78,10 @@ TEST(SweepCoverageRows, TheMeasuredSweepCandidatesQuoteTheirOwnTwentySeeds) {
     EXPECT_LE(m->covered, m->scored) << effect;
     EXPECT_LE(m->scored, m->seeds) << effect;
     const std::string line = formatMeasuredCoverage(effect);
-    EXPECT_NE(line.find("named first in " + std::to_string(m->named) + " of 20 seeds; the 95 % interval of " +
-                        parameter + " held the truth in " + std::to_string(m->covered) + " of " +
-                        std::to_string(m->scored)),
-              std::string::npos)
+    EXPECT_NE(
+        line.find("named first in " + std::to_string(m->named) + " of 20 seeds; the 95 % interval of " + parameter +
+                  " held the truth in " + std::to_string(m->covered) + " of " + std::to_string(m->scored)),
+        std::string::npos)
         << line;
   }
 }

@@ -56,8 +56,8 @@ ParticipantSweep sweepNamed(const std::string& name) {
 TEST(SweepFigures, SwingTimeFigureShowsThePapersPointsOnlyForItsParticipants) {
   const std::string p1 = makeSwingTimeFigure(sweepNamed("P1"), nullptr).render();
   EXPECT_NE(p1.find("P1: swing time vs knee-axis lowering"), std::string::npos);
-  for (const char* label : {"this model", "Burkett model (Table 4)", "measured prosthetic (Table 4)", "Burkett's fastest",
-                            "our fastest"})
+  for (const char* label :
+       {"this model", "Burkett model (Table 4)", "measured prosthetic (Table 4)", "Burkett's fastest", "our fastest"})
     EXPECT_NE(p1.find(label), std::string::npos) << label;
   EXPECT_EQ(p1.find("5-95 %"), std::string::npos) << "no band without the uncertainty analysis";
   const std::string other = makeSwingTimeFigure(sweepNamed("Q"), nullptr).render();

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/text_format.h"
+#include "html_checks.h"
 #include "model/leg_parameters.h"
 #include "report/markdown_html.h"
-#include "html_checks.h"
 #include "report/stick_figure_animation.h"
 #include "report/sweep_markdown.h"
 #include "report/sweep_report_parts.h"
@@ -21,9 +21,9 @@
 namespace swingsim {
 namespace {
 
+using testing::checkTagsBalanced;
 using ::testing::HasSubstr;
 using ::testing::Not;
-using testing::checkTagsBalanced;
 
 // Endpoints are written with 2 decimals (0.005 px of rounding each), so a segment's length
 // can be off by up to 0.01 px: in metres at the figure's scale, with a margin.
@@ -144,8 +144,8 @@ TEST(SweepHtml, AnimatesEachParticipantsFastestSwingWithItsSegmentLengths) {
     const std::size_t svgAt = html.find("class=\"stick-figure\"", at);
     const std::string svg = html.substr(svgAt, html.find("</svg>", svgAt) - svgAt);
     EXPECT_THAT(html.substr(svgAt, html.find("</figcaption>", svgAt) - svgAt),
-                HasSubstr(ps.name + ", fastest swing: knee axis lowered " + fmt("%.3f", b.lowering) + " m, swing time " +
-                          fmt("%.4f", b.result.swingTime) + " s"));
+                HasSubstr(ps.name + ", fastest swing: knee axis lowered " + fmt("%.3f", b.lowering) +
+                          " m, swing time " + fmt("%.4f", b.result.swingTime) + " s"));
     const LegGeometry g = calcLegGeometry(*sweep_report_parts::participantNamed(study, ps.name), b.lowering);
     const auto thigh = segmentLengths(svg, "thigh"), shank = segmentLengths(svg, "shank");
     ASSERT_GT(thigh.size(), 10u) << ps.name << ": frames";

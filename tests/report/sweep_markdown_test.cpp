@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "sweep/burkett_published.h"
 #include "study/sweep_study.h"
+#include "sweep/burkett_published.h"
 
 namespace swingsim {
 namespace {
@@ -76,18 +76,21 @@ TEST(SweepMarkdown, Table4RowsCarryOursAndTheDifferencesInMilliseconds) {
   EXPECT_NE(md.find("| P1 | 0.150 | 0.465 | 0.418 | no end: knee stays flexed |  |  |\n"), std::string::npos);
   EXPECT_EQ(countOf(md, "| Q | 0."), 0) << "Q is not in the paper: no Table 4 rows";
   // Three rows ended a swing; only the one at 0.10 m is more than 20 ms from Burkett's model.
-  EXPECT_NE(md.find("Agreement with the paper: 2 of 3 Table 4 rows simulated here are within 20 ms of Burkett's model.\n"),
-            std::string::npos);
+  EXPECT_NE(
+      md.find("Agreement with the paper: 2 of 3 Table 4 rows simulated here are within 20 ms of Burkett's model.\n"),
+      std::string::npos);
   EXPECT_NE(md.find("(1 rows differ from Burkett's model by more than 20 ms)"), std::string::npos);
 }
 
 TEST(SweepMarkdown, FastestLoweringIsNamedInTheSummaryItsTableAndMarkedOnce) {
   const auto files = makeSweepReport(studyOfOthers(), makeResults());
   const std::string& md = files.at("report.md");
-  EXPECT_NE(md.find("- P1: fastest at 0.050 m (swing time 0.4200 s); Burkett's model: 0.100 m.\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("- P1: fastest at 0.050 m (swing time 0.4200 s); Burkett's model: 0.100 m.\n"), std::string::npos)
+      << md;
   EXPECT_NE(md.find("- Q: no lowering ended a swing.\n"), std::string::npos);
-  EXPECT_NE(md.find("- P1: fastest at 0.050 m, slower beyond it (as in the paper); Burkett's model: fastest at 0.100 m.\n"),
-            std::string::npos);
+  EXPECT_NE(
+      md.find("- P1: fastest at 0.050 m, slower beyond it (as in the paper); Burkett's model: fastest at 0.100 m.\n"),
+      std::string::npos);
   // Fastest-lowering table: ours, its time, Burkett's, the difference, bounce, toe strike.
   EXPECT_NE(md.find("| P1 | 0.050 | 0.4200 | 0.100 | -0.050 | no | no |\n"), std::string::npos);
   EXPECT_NE(md.find("| Q | none ended |  |  |  |  |  |\n"), std::string::npos);

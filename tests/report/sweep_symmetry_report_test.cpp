@@ -77,7 +77,8 @@ std::string section(const std::string& md, const std::string& heading) {
 
 TEST(SweepSymmetryReport, Table4StarsComeFromThePublishedColumns) {
   // Burkett 2004 Table 4's `*`: P1 0.100, P2 0.125, P3 0.200, P4 0.130 m.
-  const std::vector<std::pair<std::string, double>> stars = {{"P1", 0.100}, {"P2", 0.125}, {"P3", 0.200}, {"P4", 0.130}};
+  const std::vector<std::pair<std::string, double>> stars = {
+      {"P1", 0.100}, {"P2", 0.125}, {"P3", 0.200}, {"P4", 0.130}};
   for (const auto& [name, lowering] : stars) {
     const PublishedParticipant* pub = findPublished(name);
     std::vector<double> measured;
@@ -95,7 +96,8 @@ TEST(SweepSymmetryReport, SectionShowsTheParticipantWithASoundLimbTimeOnly) {
   const std::string symmetry = section(md, "## Symmetry with the sound limb");
   ASSERT_FALSE(symmetry.empty()) << md;
   EXPECT_NE(symmetry.find("| P1 | 0.499 | 0.050 | 0.000 | no | 0.4300 | -69 | 0.862 | 0.000 - 0.070 | 17 of 20 |"),
-            std::string::npos) << symmetry;
+            std::string::npos)
+      << symmetry;
   EXPECT_EQ(symmetry.find("| Q |"), std::string::npos) << symmetry;
   // Table 4's `*` (0.100 m) beside ours (0 m, not reached).
   const std::string star = section(md, "### Best symmetry: Table 4's `*` beside this model");

@@ -50,7 +50,8 @@ TEST(SwingJson, SettleDwellDoneIsThereWhenTheDwellWasUnmet) {
   end.unmet = "settle_dwell";
   end.dwellDone = 0.03;
   r.trialEnd = end;
-  EXPECT_NEAR(makeSwingResultJson("P", 0.0, r).at("trial_end").at("settle_dwell_done_s").get<double>(), 0.03, kRoundOff);
+  EXPECT_NEAR(makeSwingResultJson("P", 0.0, r).at("trial_end").at("settle_dwell_done_s").get<double>(), 0.03,
+              kRoundOff);
 }
 
 }  // namespace

@@ -40,8 +40,9 @@ std::string summaryOf(const TuningResult& r) {
 }
 
 TEST(TuningReportSearch, AMissedTargetIsNotFoundByALocalSearchNotUnreachable) {
-  EXPECT_THAT(summaryOf(resultWithOneTarget(false)),
-              HasSubstr("search              local: a missed target was not found from 24 start points and the polish"));
+  EXPECT_THAT(
+      summaryOf(resultWithOneTarget(false)),
+      HasSubstr("search              local: a missed target was not found from 24 start points and the polish"));
 }
 
 TEST(TuningReportSearch, NothingIsSaidWhenEveryTargetIsMet) {

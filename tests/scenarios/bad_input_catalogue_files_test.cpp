@@ -5,9 +5,9 @@
 // to one is written through, never replaced by a file; over-long and unwritable output
 // paths are refused before any work; the same file twice is refused; a thread pool that
 // cannot start its threads runs on fewer; a sweep grid is counted before it starts.
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <limits.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -70,7 +70,8 @@ TEST(BadInputCatalogueFiles, MotionHeaderOfMillionsOfLabelsIsCheckedInLinearTime
   for (int i = 0; i < kLabels; ++i) text += " c" + std::to_string(i);
   text += " c0\n";  // the repeat is the last label: a pairwise check reaches it after 5e11 comparisons
   std::string e;
-  EXPECT_LT(swingsim::testing::cpuSecondsOf([&] { e = errorOf([&] { parseMotionTable(text, "wide.mot"); }); }), kLinearCheck);
+  EXPECT_LT(swingsim::testing::cpuSecondsOf([&] { e = errorOf([&] { parseMotionTable(text, "wide.mot"); }); }),
+            kLinearCheck);
   EXPECT_THAT(e, StartsWith("wide.mot:4: c0: column label appears twice"));
 }
 
@@ -83,7 +84,8 @@ TEST(BadInputCatalogueFiles, CsvHeaderOfMillionsOfColumnsIsCheckedInLinearTime) 
   CsvSpec spec;
   spec.required = {"time_s"};
   std::string e;
-  EXPECT_LT(swingsim::testing::cpuSecondsOf([&] { e = errorOf([&] { parseCsv(text, "wide.csv", spec); }); }), kLinearCheck);
+  EXPECT_LT(swingsim::testing::cpuSecondsOf([&] { e = errorOf([&] { parseCsv(text, "wide.csv", spec); }); }),
+            kLinearCheck);
   EXPECT_THAT(e, StartsWith("wide.csv:1: c0: column appears twice in the header"));
 }
 
@@ -143,7 +145,8 @@ TEST(BadInputCatalogueFiles, FifoOutputIsWrittenThroughAndStaysAFifo) {
   reader.join();
   EXPECT_EQ(received, "{\"ok\": true}\n");
   EXPECT_TRUE(fs::is_fifo(fifo)) << "replaced by a file";
-  EXPECT_EQ(std::distance(fs::directory_iterator(fifo.parent_path()), fs::directory_iterator{}), 1) << "a temporary file was left";
+  EXPECT_EQ(std::distance(fs::directory_iterator(fifo.parent_path()), fs::directory_iterator{}), 1)
+      << "a temporary file was left";
 }
 
 TEST(BadInputCatalogueFiles, FifoOutputThatNobodyReadsIsRefusedAfterTheDocumentedWait) {
@@ -215,9 +218,14 @@ TEST(BadInputCatalogueFiles, TheSameFileTwiceIsRefusedWhateverItsSpelling) {
   fs::create_symlink("a.yaml", dir / "link.yaml");
   const std::string a = (dir / "a.yaml").string(), b = (dir / "b.yaml").string();
   EXPECT_NO_THROW(checkDistinctFiles({a, b, (dir / "missing.yaml").string()}, "why"));
-  EXPECT_THAT(errorOf([&] { checkDistinctFiles({a, b, (dir / "." / "a.yaml").string()}, "once, please"); }),
-              StartsWith((dir / "." / "a.yaml").string() + ": the same file as " + a + " (arguments 1 and 3): once, please"));
-  EXPECT_THAT(errorOf([&] { checkDistinctFiles({(dir / "link.yaml").string(), a}, "once"); }),
+  EXPECT_THAT(
+      errorOf([&] {
+        checkDistinctFiles({a, b, (dir / "." / "a.yaml").string()}, "once, please");
+      }),
+      StartsWith((dir / "." / "a.yaml").string() + ": the same file as " + a + " (arguments 1 and 3): once, please"));
+  EXPECT_THAT(errorOf([&] {
+                checkDistinctFiles({(dir / "link.yaml").string(), a}, "once");
+              }),
               HasSubstr("the same file as"));
 }
 
@@ -242,7 +250,8 @@ TEST(BadInputCatalogueFiles, ThreadPoolRunsOnFewerThreadsWhenTheyCannotStart) {
     const rlimit rl{limit, limit};
     if (::setrlimit(RLIMIT_AS, &rl) != 0) ::_exit(3);
     std::atomic<int> ran{0};
-    const int done = runParallelJobs(200, 64, [&](int) { ran.fetch_add(1); }, {}, nullptr);
+    const int done = runParallelJobs(
+        200, 64, [&](int) { ran.fetch_add(1); }, {}, nullptr);
     ::_exit(done == 200 && ran.load() == 200 ? 0 : 1);
   }
   ::close(pipeFds[1]);
@@ -252,7 +261,8 @@ TEST(BadInputCatalogueFiles, ThreadPoolRunsOnFewerThreadsWhenTheyCannotStart) {
   ::close(pipeFds[0]);
   int status = 0;
   ::waitpid(child, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status)) << "the child died (signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << "): " << err;
+  ASSERT_TRUE(WIFEXITED(status)) << "the child died (signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0)
+                                 << "): " << err;
   EXPECT_EQ(WEXITSTATUS(status), 0) << "not every job ran: " << err;
   // The pool sees the limit first (capThreadsToAddressSpace), or a thread that still cannot
   // start (startWorkerThreads): either way fewer threads, said on stderr.

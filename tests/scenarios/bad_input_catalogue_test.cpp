@@ -3,38 +3,38 @@
 // one) or is a documented, tested acceptance. Acceptances: a UTF-8 byte-order mark and
 // CRLF line ends simply work. Numbers that are finite but absurd are refused at load by
 // their plausible range (core/plausible_ranges.h, docs/robustness.md).
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
-#include <csignal>
 #include <thread>
 
 #include "../cli/run_swingsim.h"
 #include "../core/cpu_time.h"
-#include "io/bench_csv.h"
-#include "identify/bench_data.h"
-#include "knee/bench_profile.h"
-#include "identify/cylinder_fit.h"
-#include "io/csv_table.h"
-#include "study/cylinder_study.h"
 #include "core/input_error.h"
-#include "io/knee_model_loader.h"
 #include "core/output_files.h"
+#include "core/units.h"
+#include "identify/bench_data.h"
+#include "identify/cylinder_fit.h"
+#include "io/bench_csv.h"
+#include "io/csv_table.h"
+#include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/swing_record_csv.h"
-#include "core/units.h"
 #include "io/yaml_reader.h"
+#include "knee/bench_profile.h"
+#include "study/cylinder_study.h"
 #include "study/sweep_study.h"
 #include "sweep/sweep.h"
 #include "swing/knee_setup.h"
@@ -171,7 +171,8 @@ TEST(BadInputCatalogue, YamlDuplicatedKeyIsNamedWithItsLine) {
 TEST(BadInputCatalogue, YamlNanAndInfinityAreRefused) {
   for (const auto& l : yamlLoaders()) {
     for (const char* v : {".nan", "NaN", "nan", ".inf", "-.inf", "inf", "1e999", "-1e999"}) {
-      EXPECT_THAT(errorOf(l, withValue(l, v)), HasSubstr(l.numericKey + ": expected a finite number")) << l.name << " " << v;
+      EXPECT_THAT(errorOf(l, withValue(l, v)), HasSubstr(l.numericKey + ": expected a finite number"))
+          << l.name << " " << v;
     }
   }
 }
@@ -179,7 +180,8 @@ TEST(BadInputCatalogue, YamlNanAndInfinityAreRefused) {
 TEST(BadInputCatalogue, YamlNotANumberAndWrongTypes) {
   for (const auto& l : yamlLoaders()) {
     EXPECT_THAT(errorOf(l, withValue(l, "ten")), HasSubstr(l.numericKey + ": expected a number (got 'ten')")) << l.name;
-    EXPECT_THAT(errorOf(l, withValue(l, "[1, 2]")), HasSubstr(l.numericKey + ": expected a number (got a list)")) << l.name;
+    EXPECT_THAT(errorOf(l, withValue(l, "[1, 2]")), HasSubstr(l.numericKey + ": expected a number (got a list)"))
+        << l.name;
   }
 }
 
@@ -192,9 +194,10 @@ TEST(BadInputCatalogue, YamlEmptyValueMeansNotGiven) {
   }
   EXPECT_THAT(errorOf(yamlLoaders()[0], withValue(yamlLoaders()[0], "")),
               HasSubstr("knee_friction_Nm: expected a number (got nothing)"));
-  const Participant p = parseParticipant(readFile("participants/p1.yaml").replace(
-                                             readFile("participants/p1.yaml").find("time_limit_s: 1.5"), 17, "time_limit_s:"),
-                                         "participants/p1.yaml");
+  const Participant p =
+      parseParticipant(readFile("participants/p1.yaml")
+                           .replace(readFile("participants/p1.yaml").find("time_limit_s: 1.5"), 17, "time_limit_s:"),
+                       "participants/p1.yaml");
   EXPECT_EQ(p.swingEnd.timeLimit, SwingEndRule{}.timeLimit);
 }
 
@@ -219,8 +222,9 @@ TEST(BadInputCatalogue, YamlHugeNumbers) {
     EXPECT_THAT(e, ::testing::Not(HasSubstr("not an InputError"))) << l.name;
   }
   const YamlLoader participant = yamlLoaders()[0];
-  EXPECT_THAT(errorOf(participant, readFile("participants/p1.yaml").replace(
-                                       readFile("participants/p1.yaml").find("height_m: 1.83"), 14, "height_m: 1e300")),
+  EXPECT_THAT(errorOf(participant,
+                      readFile("participants/p1.yaml")
+                          .replace(readFile("participants/p1.yaml").find("height_m: 1.83"), 14, "height_m: 1e300")),
               HasSubstr("height_m: expected a standing height between 0.5 and 2.6 m (got 1e+300)"));
   const YamlLoader sweep = yamlLoaders()[3];
   EXPECT_THAT(errorOf(sweep, withValue(sweep, "1e300")),
@@ -250,11 +254,11 @@ TEST(BadInputCatalogue, YamlDeepNestingIsAnErrorNotAStackOverflow) {
 }
 
 TEST(BadInputCatalogue, YamlMissingFileSaysSo) {
-  EXPECT_THAT(errorOf(YamlLoader{"missing", "", "", [](const std::string&, const std::string&) {
-                        loadParticipant("participants/nobody.yaml");
-                      }},
-                      ""),
-              HasSubstr("participants/nobody.yaml: cannot open file"));
+  EXPECT_THAT(
+      errorOf(YamlLoader{"missing", "", "",
+                         [](const std::string&, const std::string&) { loadParticipant("participants/nobody.yaml"); }},
+              ""),
+      HasSubstr("participants/nobody.yaml: cannot open file"));
   try {
     loadKneeModel("models");  // a directory
     ADD_FAILURE() << "a directory loaded as a knee model";
@@ -314,9 +318,12 @@ TEST(BadInputCatalogue, CsvBinaryGarbage) {
 TEST(BadInputCatalogue, CsvByteOrderMarkAndCrlfSimplyWork) {
   std::string crlf;
   for (char c : kBenchGood) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
-  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
-           {"bom.csv", "\xEF\xBB\xBF" + kBenchGood}, {"crlf.csv", crlf}, {"bomcrlf.csv", "\xEF\xBB\xBF" + crlf},
-           {"noeol.csv", kBenchGood.substr(0, kBenchGood.size() - 1)}, {"trailing.csv", kBenchGood + "\n\r\n\n"}}) {
+  for (const auto& [name, text] :
+       std::vector<std::pair<std::string, std::string>>{{"bom.csv", "\xEF\xBB\xBF" + kBenchGood},
+                                                        {"crlf.csv", crlf},
+                                                        {"bomcrlf.csv", "\xEF\xBB\xBF" + crlf},
+                                                        {"noeol.csv", kBenchGood.substr(0, kBenchGood.size() - 1)},
+                                                        {"trailing.csv", kBenchGood + "\n\r\n\n"}}) {
     const BenchData d = readBenchCsv(writeTemp(name, text), 3);
     EXPECT_EQ(d.time.size(), 4u) << name;
     EXPECT_EQ(d.position[3], 0.003) << name;
@@ -344,7 +351,8 @@ TEST(BadInputCatalogue, CsvDuplicatedAndMissingColumns) {
               HasSubstr("missing.csv:1: position_m: required column is missing (got header 'time_s,force_N')"));
   EXPECT_THAT(benchError("noheader.csv", "0,0.001,10\n0.01,0.002,12\n0.02,0.004,15\n"),
               HasSubstr("noheader.csv:1: time_s: required column is missing (got header '0,0.001,10')"));
-  EXPECT_THAT(benchError("case.csv", "Time_s,position_m,force_N\n0,0,1\n"), HasSubstr("time_s: required column is missing"));
+  EXPECT_THAT(benchError("case.csv", "Time_s,position_m,force_N\n0,0,1\n"),
+              HasSubstr("time_s: required column is missing"));
   EXPECT_THAT(benchError("ragged.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002\n"),
               HasSubstr("ragged.csv:3: expected 3 comma-separated values (got 2)"));
   // Extra columns are read past and listed (documented acceptance).
@@ -363,8 +371,9 @@ TEST(BadInputCatalogue, CsvNonMonotonicOrRepeatedTime) {
 
 TEST(BadInputCatalogue, CsvNanInfinityHugeAndGaps) {
   for (const char* v : {"nan", "NaN", "-nan", "inf", "-Infinity", "1e309", "-1e400"}) {
-    EXPECT_THAT(benchError("nonfinite.csv", std::string("time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,") + v + "\n"),
-                HasSubstr("nonfinite.csv:3: force_N: expected a finite number (got '" + std::string(v) + "')"));
+    EXPECT_THAT(
+        benchError("nonfinite.csv", std::string("time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,") + v + "\n"),
+        HasSubstr("nonfinite.csv:3: force_N: expected a finite number (got '" + std::string(v) + "')"));
   }
   // A gap (empty cell) as lab software writes for a lost marker.
   EXPECT_THAT(benchError("gap.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,,12\n"),
@@ -460,7 +469,9 @@ TEST(BadInputCatalogue, BenchGaitCycleWithoutHyperextensionStillFits) {
   EXPECT_EQ(fit.regression.rank, 12);
   constexpr double kRecovered = 1e-6;  // relative: noise-free data generated by the same model
   for (std::size_t ph = 0; ph < 4; ++ph)
-    EXPECT_NEAR(fit.params.coefficients[ph].k, truth.coefficients[ph].k, kRecovered * std::fabs(truth.coefficients[ph].k)) << ph;
+    EXPECT_NEAR(fit.params.coefficients[ph].k, truth.coefficients[ph].k,
+                kRecovered * std::fabs(truth.coefficients[ph].k))
+        << ph;
 }
 
 // The Winter knee-angle table used by `swingsim generate`.
@@ -486,7 +497,6 @@ TEST(BadInputCatalogue, KneeAngleStrideMissingFramesAndBadColumns) {
   }
 }
 
-
 // ---------------------------------------------------------------------------------------
 // Size limits before parsing: a bounded reader, a YAML value count taken on the
 // parser's events, and a directory named as one.
@@ -505,7 +515,8 @@ std::string loadError(const std::function<void()>& load) {
 
 using swingsim::testing::cpuSecondsOf;
 
-constexpr double kQuickRefusal = 2.0;  // CPU s (0.5 s under sanitizers): a refusal reads at most 16 MiB, never the whole input
+constexpr double kQuickRefusal =
+    2.0;  // CPU s (0.5 s under sanitizers): a refusal reads at most 16 MiB, never the whole input
 
 TEST(BadInputCatalogue, YamlFileOverTheSizeLimitIsRefusedNamingItsSizeAndTheLimit) {
   const fs::path path = tempDir() / "huge.yaml";
@@ -551,7 +562,8 @@ TEST(BadInputCatalogue, AFifoThatNeverEndsIsRefusedAtTheLimit) {
 TEST(BadInputCatalogue, ReadFileLimitIsExactToTheByte) {
   const std::string path = writeTemp("ten.txt", "0123456789");
   EXPECT_EQ(readFile(path, 10), "0123456789");
-  EXPECT_THAT(loadError([&] { readFile(path, 9); }), HasSubstr("ten.txt: file too large for an input file (10 bytes; the limit is 9 bytes)"));
+  EXPECT_THAT(loadError([&] { readFile(path, 9); }),
+              HasSubstr("ten.txt: file too large for an input file (10 bytes; the limit is 9 bytes)"));
 }
 
 TEST(BadInputCatalogue, LongFlowListUnderAnUnknownKeyIsRefusedQuickly) {
@@ -560,7 +572,8 @@ TEST(BadInputCatalogue, LongFlowListUnderAnUnknownKeyIsRefusedQuickly) {
   for (int i = 0; i < 5'000'000; ++i) text += ",0";  // 5 million values, 10 MB
   text += "]\n";
   std::string e;
-  EXPECT_LT(cpuSecondsOf([&] { e = loadError([&] { parseParticipant(text, "participants/p1.yaml"); }); }), kQuickRefusal);
+  EXPECT_LT(cpuSecondsOf([&] { e = loadError([&] { parseParticipant(text, "participants/p1.yaml"); }); }),
+            kQuickRefusal);
   EXPECT_THAT(e, StartsWith("participants/p1.yaml:"));
   EXPECT_THAT(e, HasSubstr("more than 100000 YAML values in one file"));
 }
@@ -619,7 +632,8 @@ TEST(BadInputCatalogue, SegmentLengthInMillimetresIsNamed) {
 
 TEST(BadInputCatalogue, BodyMassInGramsIsNamed) {
   EXPECT_THAT(participantWith("body_mass_kg: 70", "body_mass_kg: 70000"),
-              HasSubstr("participants/p1.yaml:8: body_mass_kg: expected a body mass of at most 500 kg (is it in grams?) (got 70000)"));
+              HasSubstr("participants/p1.yaml:8: body_mass_kg: expected a body mass of at most 500 kg (is it in "
+                        "grams?) (got 70000)"));
 }
 
 TEST(BadInputCatalogue, PlausibleMassesAndLengthsAtTheBoundsStillLoad) {
@@ -631,14 +645,16 @@ TEST(BadInputCatalogue, KneeLinkLengthInMillimetresIsNamed) {
   std::string text = readFile("models/mauch-4phase.yaml");
   text.replace(text.find("ab_m: 0.1603"), 12, "ab_m: 160.3");
   EXPECT_THAT(loadError([&] { parseKneeModel(text, "models/mauch-4phase.yaml"); }),
-              HasSubstr("models/mauch-4phase.yaml:11: geometry.ab_m: expected a link length of at most 0.5 m (is it in millimetres?"));
+              HasSubstr("models/mauch-4phase.yaml:11: geometry.ab_m: expected a link length of at most 0.5 m (is it in "
+                        "millimetres?"));
 }
 
 std::string swingRecordText(double kneeScale) {
   std::string text = "time_s,hip_flexion_deg,knee_flexion_deg,hip_moment_Nm\n";
   for (int i = 0; i < 20; ++i) {
     const double knee = 60 * std::sin(kPi * i / 19);  // deg
-    text += std::to_string(0.02 * i) + "," + std::to_string(-15 + 2 * i) + "," + std::to_string(knee * kneeScale) + ",1\n";
+    text +=
+        std::to_string(0.02 * i) + "," + std::to_string(-15 + 2 * i) + "," + std::to_string(knee * kneeScale) + ",1\n";
   }
   return text;
 }
@@ -671,13 +687,15 @@ TEST(BadInputCatalogue, SwingRecordInDegreesReads) {
   const SwingRecord r = readSwingRecord(writeTemp("degrees.csv", swingRecordText(1)));
   ASSERT_EQ(r.kneeFlexion.size(), 20u);
   constexpr double kRoundTrip = 1e-5;  // rad: six decimals written by std::to_string
-  EXPECT_NEAR(*std::max_element(r.kneeFlexion.begin(), r.kneeFlexion.end()), 60 * std::sin(kPi * 9 / 19) * kDegToRad, kRoundTrip);
+  EXPECT_NEAR(*std::max_element(r.kneeFlexion.begin(), r.kneeFlexion.end()), 60 * std::sin(kPi * 9 / 19) * kDegToRad,
+              kRoundTrip);
 }
 
 TEST(BadInputCatalogue, BenchPositionsInMillimetresAreNamed) {
-  EXPECT_THAT(benchError("mm.csv", "time_s,position_m,force_N\n0,1,10\n0.01,2,12\n0.02,4,15\n0.03,3,11\n"),
-              HasSubstr("mm.csv: position_m: the piston reaches 4 m (a knee cylinder's stroke is a few centimetres; more "
-                        "than 1 m): the column looks like millimetres, expected metres"));
+  EXPECT_THAT(
+      benchError("mm.csv", "time_s,position_m,force_N\n0,1,10\n0.01,2,12\n0.02,4,15\n0.03,3,11\n"),
+      HasSubstr("mm.csv: position_m: the piston reaches 4 m (a knee cylinder's stroke is a few centimetres; more "
+                "than 1 m): the column looks like millimetres, expected metres"));
   EXPECT_THAT(benchError("negmm.csv", "time_s,position_m,force_N\n0,-12,10\n0.01,2,12\n0.02,4,15\n"),
               HasSubstr("the piston reaches -12 m"));
 }
@@ -695,12 +713,14 @@ TEST(BadInputCatalogue, SweepStudyAccuracyBelowRoundOffIsRefused) {
 // ---------------------------------------------------------------------------------------
 
 TEST(BadInputCatalogue, BenchForcesOutsideThePlausibleRangeAreRefusedWithTheirLine) {
-  EXPECT_THAT(benchError("force.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,1e300\n0.02,0.004,15\n"),
-              HasSubstr("force.csv:3: force_N: expected a force in [-100000, 100000] N (a knee cylinder carries at most a "
-                        "few kN (150 N m on a 2 cm lever is 7.5 kN))"));
-  EXPECT_THAT(benchError("force.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,2e5\n0.02,0.004,15\n"),
-              HasSubstr("force.csv:3: force_N: expected a force in [-100000, 100000] N (a knee cylinder carries at most a "
-                        "few kN (150 N m on a 2 cm lever is 7.5 kN)) (got 2e5)"));
+  EXPECT_THAT(
+      benchError("force.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,1e300\n0.02,0.004,15\n"),
+      HasSubstr("force.csv:3: force_N: expected a force in [-100000, 100000] N (a knee cylinder carries at most a "
+                "few kN (150 N m on a 2 cm lever is 7.5 kN))"));
+  EXPECT_THAT(
+      benchError("force.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,2e5\n0.02,0.004,15\n"),
+      HasSubstr("force.csv:3: force_N: expected a force in [-100000, 100000] N (a knee cylinder carries at most a "
+                "few kN (150 N m on a 2 cm lever is 7.5 kN)) (got 2e5)"));
   // The missing-data marker of lab exports is named as such.
   EXPECT_THAT(benchError("marker.csv", "time_s,position_m,force_N\n0,0.001,10\n0.01,0.002,9.9e37\n0.02,0.004,15\n"),
               HasSubstr("marker.csv:3: force_N: expected a force in [-100000, 100000] N"));
@@ -726,8 +746,9 @@ TEST(BadInputCatalogue, SwingRecordAnglesAndMomentsOutsideTheirRangeAreRefused) 
 }
 
 TEST(BadInputCatalogue, ParticipantInitialStateAndTimeScaleOutsideTheirRangeAreRefused) {
-  EXPECT_THAT(participantWith("knee_flexion_deg: 10", "knee_flexion_deg: 1e6"),
-              HasSubstr("participants/p1.yaml:19: initial.knee_flexion_deg: expected an initial knee angle in [-30, 180] deg"));
+  EXPECT_THAT(
+      participantWith("knee_flexion_deg: 10", "knee_flexion_deg: 1e6"),
+      HasSubstr("participants/p1.yaml:19: initial.knee_flexion_deg: expected an initial knee angle in [-30, 180] deg"));
   EXPECT_THAT(participantWith("time_scale: 1.088747", "time_scale: 1e-300"),
               HasSubstr("participants/p1.yaml:38: hip_moment.time_scale: expected a time scale in [0.2, 5] (calibrated "
                         "scales lie in 0.85-1.8"));
@@ -737,16 +758,19 @@ TEST(BadInputCatalogue, ParticipantInitialStateAndTimeScaleOutsideTheirRangeAreR
 TEST(BadInputCatalogue, NegativeMauchDampingIsRefusedAtLoadNotBlamedOnTheHipLater) {
   std::string text = readFile("models/mauch-4phase.yaml");
   text.replace(text.find("c_Ns_per_m: 17087.9"), 19, "c_Ns_per_m: -500");
-  EXPECT_THAT(loadError([&] { parseKneeModel(text, "models/mauch-4phase.yaml"); }),
-              HasSubstr("models/mauch-4phase.yaml:42: settings[0].coefficients[0].c_Ns_per_m: expected a damping in "
-                        "[0, 1e+06] N s/m (a hydraulic cylinder dissipates, and fitted phases have 500-17,700 N s/m) (got -500)"));
+  EXPECT_THAT(
+      loadError([&] { parseKneeModel(text, "models/mauch-4phase.yaml"); }),
+      HasSubstr(
+          "models/mauch-4phase.yaml:42: settings[0].coefficients[0].c_Ns_per_m: expected a damping in "
+          "[0, 1e+06] N s/m (a hydraulic cylinder dissipates, and fitted phases have 500-17,700 N s/m) (got -500)"));
 }
 
 TEST(BadInputCatalogue, GeneratorNoiseOutsideItsRangeIsRefused) {
   const YamlLoader bench = yamlLoaders()[5];
-  EXPECT_THAT(errorOf(bench, withValue(bench, "1e300")),
-              HasSubstr("studies/mauch2014-bench.yaml:21: noise_N: expected a force noise in [0, 1000] N (a bench load cell "
-                        "is good to a few N)"));
+  EXPECT_THAT(
+      errorOf(bench, withValue(bench, "1e300")),
+      HasSubstr("studies/mauch2014-bench.yaml:21: noise_N: expected a force noise in [0, 1000] N (a bench load cell "
+                "is good to a few N)"));
   EXPECT_EQ(errorOf(bench, withValue(bench, "1000")), "");
 }
 
@@ -758,7 +782,8 @@ TEST(BadInputCatalogue, CrOnlyLineEndsAreNamedNotADuplicatedColumn) {
   EXPECT_THAT(benchError("mac.csv", "time_s,position_m,force_N\r0,0.001,10\r0.01,0.002,12\r0.02,0.004,15\r"),
               HasSubstr("mac.csv:1: CR-only line ends"));
   // CRLF still reads.
-  EXPECT_EQ(benchError("crlf.csv", "time_s,position_m,force_N\r\n0,0.001,10\r\n0.01,0.002,12\r\n0.02,0.004,15\r\n"), "");
+  EXPECT_EQ(benchError("crlf.csv", "time_s,position_m,force_N\r\n0,0.001,10\r\n0.01,0.002,12\r\n0.02,0.004,15\r\n"),
+            "");
 }
 
 TEST(BadInputCatalogue, YamlSecondDocumentIsRefusedWithItsLine) {

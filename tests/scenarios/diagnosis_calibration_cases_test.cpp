@@ -9,8 +9,8 @@
 #include <string>
 
 #include "../identify/diagnosis_calibration.h"
-#include "identify/sweep_effects.h"
 #include "identify/effect_table.h"
+#include "identify/sweep_effects.h"
 
 namespace swingsim {
 namespace {

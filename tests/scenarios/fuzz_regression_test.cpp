@@ -7,13 +7,13 @@
 #include <chrono>
 #include <functional>
 
-#include "io/csv_table.h"
-#include "study/cylinder_study.h"
 #include "core/input_error.h"
-#include "io/knee_model_loader.h"
 #include "core/output_files.h"
+#include "io/csv_table.h"
+#include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
+#include "study/cylinder_study.h"
 #include "study/sweep_study.h"
 #include "sweep/sweep.h"
 
@@ -57,7 +57,9 @@ TEST(FuzzRegression, HyperextensionStopBeyondAnyAngleIsAnInputError) {
 damping_table: {flexion_deg: [0, 70], moment_Nm: [1, 4]}
 hyperextension_stop: {engage_flexion_deg: 1e12}
 )");
-  EXPECT_THAT(e, HasSubstr("models/fuzz.yaml:3: hyperextension_stop.engage_flexion_deg: expected an angle near full extension"));
+  EXPECT_THAT(
+      e,
+      HasSubstr("models/fuzz.yaml:3: hyperextension_stop.engage_flexion_deg: expected an angle near full extension"));
 }
 
 // Probe: a lowering step below the 1 um grid rounding never advanced: sweepLowerings
@@ -104,26 +106,29 @@ TEST(FuzzRegression, BenchRecordSizeIsBounded) {
   EXPECT_THAT(cylinderStudyError(kBenchHead + "sample_rate_Hz: 1e300\n"),
               HasSubstr("sample_rate_Hz: expected a sample rate above 0 and at most 100000 Hz (got 1e+300)"));
   EXPECT_THAT(cylinderStudyError(kBenchHead + "cycles: 900000000\n"), HasSubstr("cycles: must be from 1 to 1000"));
-  EXPECT_THAT(cylinderStudyError(kBenchHead + "cycles: 1000\nsample_rate_Hz: 100000\n"),
-              HasSubstr("conditions[0].stride_s: cycles x stride_s x sample_rate_Hz must give 16 to 10 million samples"));
-  EXPECT_THAT(cylinderStudyError(kBenchHead + "hold_samples: 1e9\n"), HasSubstr("hold_samples: must be from 0 to 1000"));
+  EXPECT_THAT(
+      cylinderStudyError(kBenchHead + "cycles: 1000\nsample_rate_Hz: 100000\n"),
+      HasSubstr("conditions[0].stride_s: cycles x stride_s x sample_rate_Hz must give 16 to 10 million samples"));
+  EXPECT_THAT(cylinderStudyError(kBenchHead + "hold_samples: 1e9\n"),
+              HasSubstr("hold_samples: must be from 0 to 1000"));
   EXPECT_EQ(cylinderStudyError(kBenchHead), "(no error)");
 }
 
 // Fuzz (cylinder_study_fuzz and diagnosis_study_fuzz, 2026-11-24): an alias inside the list its anchor names
 // (`key: &a [*a]`) is a cycle; the duplicate-key walk recursed until the stack overflowed.
 TEST(FuzzRegression, AnAliasInsideItsOwnValueIsAnInputErrorNotAStackOverflow) {
-  const std::string error = inputErrorOf([] {
-    YamlMap::loadString("model: &loop\n  - *loop\n", SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml");
-  });
+  const std::string error =
+      inputErrorOf([] { YamlMap::loadString("model: &loop\n  - *loop\n", SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml"); });
   EXPECT_THAT(error, HasSubstr("levels deep (does an alias (*name) refer to the value that holds it?)"));
   // The fuzzer's own input.
-  const std::string found = "# Chie&data/ma^^^`mn-  \n: &data/mauch21^^^^^^^^`ml\n  -  *data/mauch21^^^^^^^^`ml\n"
-                            "  - ../h0\x9ephase.Runo\n";
+  const std::string found =
+      "# Chie&data/ma^^^`mn-  \n: &data/mauch21^^^^^^^^`ml\n  -  *data/mauch21^^^^^^^^`ml\n"
+      "  - ../h0\x9ephase.Runo\n";
   EXPECT_NE(inputErrorOf([&] { YamlMap::loadString(found, SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml"); }), "(no error)");
   // diagnosis_study_fuzz's: the anchor on the whole file, its alias under one of its keys.
   EXPECT_THAT(inputErrorOf([] {
-                YamlMap::loadString(" &./paemo-swing\npast: *./paemo-swing\naswg \n", SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml");
+                YamlMap::loadString(" &./paemo-swing\npast: *./paemo-swing\naswg \n",
+                                    SWINGSIM_SOURCE_DIR "/studies/fuzz.yaml");
               }),
               HasSubstr("levels deep"));
 }

@@ -9,11 +9,11 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "../cli/release_only.h"
+#include "../identify/diagnosis_outcome.h"
 #include "../independent/mauch_bench_generator.h"
 #include "identify/cylinder_plant.h"
 #include "identify/diagnosis_engine.h"
-#include "../identify/diagnosis_outcome.h"
-#include "../cli/release_only.h"
 #include "io/bench_csv.h"
 
 namespace swingsim {
@@ -49,7 +49,8 @@ MauchCylinderParams startModel(int phases = 4) {
   return p;
 }
 
-Diagnosis diagnose(const independent::MauchTruth& truth, std::uint64_t seed, const std::string& tag, int basePhases = 4) {
+Diagnosis diagnose(const independent::MauchTruth& truth, std::uint64_t seed, const std::string& tag,
+                   int basePhases = 4) {
   const Files f = makeFiles(truth, seed, tag);
   const CylinderPlant plant(startModel(basePhases), f.train, f.validate, /*fitSwitches=*/true);
   const Diagnosis dg = runDiagnosis(plant, {});

@@ -49,7 +49,7 @@ MauchCylinderParams startModel(int phases) {
 constexpr double kNoiseFactor = 1.2;
 
 struct Outcome {
-  double worstHeldOutRatio = 0;  // worst held-out RMSE / noise
+  double worstHeldOutRatio = 0;           // worst held-out RMSE / noise
   std::vector<std::string> undetermined;  // switch constants the fit says the data do not fix
 };
 
@@ -67,7 +67,8 @@ Outcome fitIndependent(int phases, std::uint64_t seed, double noise, bool trainO
   Outcome out;
   EXPECT_LT(fit.regression.residualRms, kNoiseFactor * noise);
   for (const auto& v : f.validate)
-    out.worstHeldOutRatio = std::max(out.worstHeldOutRatio, calcErrorMetrics(v.force, predictBench(c, v).force).rmse / noise);
+    out.worstHeldOutRatio =
+        std::max(out.worstHeldOutRatio, calcErrorMetrics(v.force, predictBench(c, v).force).rmse / noise);
   // Chien's Table 1 dampings are all positive: no linear coefficient may sit on its bound,
   // and every linear coefficient has a finite standard error.
   for (std::size_t j = 0; j < fit.constants.size(); ++j) {

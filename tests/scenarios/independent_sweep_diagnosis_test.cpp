@@ -53,7 +53,8 @@ Diagnosis diagnoseTable(const independent::SweepEffects& fx, std::uint64_t seed,
   {
     std::ofstream sweep(dir / "sweep.yaml");
     sweep << "kind: knee-axis-sweep\nname: indep\nparticipants: [";
-    for (std::size_t i = 0; i < fileNames.size(); ++i) sweep << (i ? ", " : "") << fs::path(fileNames[i]).filename().string();
+    for (std::size_t i = 0; i < fileNames.size(); ++i)
+      sweep << (i ? ", " : "") << fs::path(fileNames[i]).filename().string();
     sweep << "]\nintegrator: {method: dormand-prince, accuracy: 1.0e-5}\n";
     std::ofstream study(dir / "study.yaml");
     study << "kind: sweep-diagnosis\nname: indep-" << tag << "\nsweep: sweep.yaml\nmeasured: measured.csv\n"
@@ -67,7 +68,8 @@ Diagnosis diagnoseTable(const independent::SweepEffects& fx, std::uint64_t seed,
   std::printf("[%s] accepted:", tag.c_str());
   for (const auto& a : dg.accepted) std::printf(" %s", a.c_str());
   for (const auto& s : dg.acceptedScores)
-    for (const auto& p : s.parameters) std::printf(" %s %.3g (%.3g .. %.3g)", p.name.c_str(), p.value, p.lower, p.upper);
+    for (const auto& p : s.parameters)
+      std::printf(" %s %.3g (%.3g .. %.3g)", p.name.c_str(), p.value, p.lower, p.upper);
   std::printf("; held-out before");
   for (double v : dg.baseline.validationRmse) std::printf(" %.1f", v);
   std::printf(" after");

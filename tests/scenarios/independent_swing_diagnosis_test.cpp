@@ -56,7 +56,8 @@ TEST(IndependentSwingDiagnosis, ANearMissWithOnlyTheFastestHeldOutIsNotAccepted)
   truth.stiffening = 20.0;  // N m/rad beyond 55 deg
   independent::SwingTruth files = truth;
   files.stiffening = 0;
-  for (const char* split : {"train: [normal.csv, slow.csv]\nvalidate: [fast.csv]\n", "train: [normal.csv]\nvalidate: [fast.csv]\n"}) {
+  for (const char* split :
+       {"train: [normal.csv, slow.csv]\nvalidate: [fast.csv]\n", "train: [normal.csv]\nvalidate: [fast.csv]\n"}) {
     const Diagnosis dg = calibration::diagnoseSwing(truth, files, 111, "indep-near-miss", 1, "", "", split);
     testing::printOutcome("near-miss", dg, "deg", kNoiseDeg);
     EXPECT_TRUE(dg.accepted.empty()) << split;

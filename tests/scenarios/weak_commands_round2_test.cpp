@@ -14,11 +14,11 @@
 namespace {
 
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
-using ::testing::Not;
 using swingsim::testing::freshTempDir;
 using swingsim::testing::runSwingsim;
 using swingsim::testing::slurp;
+using ::testing::HasSubstr;
+using ::testing::Not;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 const std::string kSuite = "swingsim-weak-commands";
@@ -27,9 +27,11 @@ const std::string kData = kRoot + "/studies/data/diagnose-demo-swing/";
 // The swing diagnosis demo with absolute paths, training on `train`, plus `extra` lines.
 fs::path writeSwingDiagnosis(const fs::path& dir, const std::string& train, const std::string& extra = "") {
   const fs::path path = dir / "diagnose.yaml";
-  std::ofstream(path) << "kind: swing-diagnosis\nname: weak\nparticipant: " << kRoot << "/participants/p1.yaml\nbase_model: "
-                      << kRoot << "/models/damping-table-default.yaml\ntrain: [" << train << "]\nvalidate: [" << kData
-                      << "slow.csv, " << kData << "fast.csv]\n" << extra;
+  std::ofstream(path) << "kind: swing-diagnosis\nname: weak\nparticipant: " << kRoot
+                      << "/participants/p1.yaml\nbase_model: " << kRoot
+                      << "/models/damping-table-default.yaml\ntrain: [" << train << "]\nvalidate: [" << kData
+                      << "slow.csv, " << kData << "fast.csv]\n"
+                      << extra;
   return path;
 }
 
@@ -43,9 +45,9 @@ TEST(WeakCommandsRound2, CalibrateOnAThighDrivenParticipantGivesTheReasonNotAdvi
 
 TEST(WeakCommandsRound2, MeasurementNoiseZeroIsRefusedWithTheAlternative) {
   const fs::path dir = freshTempDir(kSuite, "noise-zero");
-  const auto run = runSwingsim("diagnose " +
-                               writeSwingDiagnosis(dir, kData + "normal.csv", "acceptance: {measurement_noise: 0}\n").string() +
-                               " --out " + (dir / "out").string());
+  const auto run = runSwingsim(
+      "diagnose " + writeSwingDiagnosis(dir, kData + "normal.csv", "acceptance: {measurement_noise: 0}\n").string() +
+      " --out " + (dir / "out").string());
   EXPECT_EQ(run.code, 1) << run.output;
   EXPECT_THAT(run.output, HasSubstr("diagnose.yaml:7: acceptance.measurement_noise: expected a positive noise"));
   EXPECT_THAT(run.output, HasSubstr("leave measurement_noise out to estimate it from the data"));
@@ -59,13 +61,15 @@ TEST(WeakCommandsRound2, AKneeMomentInNmmIsRefusedAsSuch) {
   std::string out;
   std::size_t line = 0, start = 0;
   for (std::size_t end; (end = in.find('\n', start)) != std::string::npos; start = end + 1, ++line)
-    out += in.substr(start, end - start) + (line == 0 ? ",knee_moment_Nm" : "," + std::to_string(1500.0 * (line % 7) / 6)) + "\n";
+    out += in.substr(start, end - start) +
+           (line == 0 ? ",knee_moment_Nm" : "," + std::to_string(1500.0 * (line % 7) / 6)) + "\n";
   const fs::path record = dir / "normal-nmm.csv";
   std::ofstream(record) << out;
   const auto run = runSwingsim("diagnose " + writeSwingDiagnosis(dir, record.string()).string() + " --out " +
                                (dir / "out").string());
   EXPECT_EQ(run.code, 1) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("normal-nmm.csv: knee_moment: expected a peak |moment| of at most 10 N m/kg x 70 kg"));
+  EXPECT_THAT(run.output,
+              HasSubstr("normal-nmm.csv: knee_moment: expected a peak |moment| of at most 10 N m/kg x 70 kg"));
   EXPECT_THAT(run.output, HasSubstr("it looks like N mm"));
   EXPECT_FALSE(fs::exists(dir / "out"));
 }

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "../cli/run_swingsim.h"
+#include "../test_build.h"
 #include "core/input_error.h"
 #include "io/csv_table.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/yaml_reader.h"
-#include "../test_build.h"
 
 namespace {
 

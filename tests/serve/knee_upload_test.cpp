@@ -25,7 +25,8 @@ std::string readShipped(const std::string& relative) { return readFile(kSource +
 
 TEST(KneeUpload, SwingsAsTheShippedFileOfTheSameText) {
   const std::string text = readShipped("models/microprocessor-knee-osl.yaml");
-  Json shipped = callServeApi(&ServeApi::simulate, {{"participant", "p2"}, {"knee", "microprocessor-knee-osl"}, {"lowering_m", 0.03}});
+  Json shipped = callServeApi(&ServeApi::simulate,
+                              {{"participant", "p2"}, {"knee", "microprocessor-knee-osl"}, {"lowering_m", 0.03}});
   Json uploaded = callServeApi(&ServeApi::simulate, {{"participant", "p2"}, {"knee_yaml", text}, {"lowering_m", 0.03}});
   EXPECT_EQ(uploaded["knee_model"], "upload-knee");
   ASSERT_TRUE(shipped["swing_time_s"].is_number());
@@ -54,8 +55,11 @@ TEST(KneeUpload, ABadValueIsNamedByKeyWithoutAServerPath) {
   EXPECT_THAT(bad["error"].get<std::string>(), HasSubstr("upload-knee.yaml"));
   EXPECT_THAT(bad["error"].get<std::string>(), Not(HasSubstr(kSource)));
   EXPECT_THAT(bad["key"].get<std::string>(), HasSubstr("model_scale"));
-  EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", "{ not: [yaml"}}, 400)["key"], "knee_yaml");
-  EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", text}, {"knee", "passive-knee"}}, 400)["key"], "knee_yaml");
+  EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", "{ not: [yaml"}}, 400)["key"],
+            "knee_yaml");
+  EXPECT_EQ(callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", text}, {"knee", "passive-knee"}},
+                         400)["key"],
+            "knee_yaml");
 }
 
 // No answer shows where the server's files are: the data folder is taken out of every path,
@@ -64,9 +68,12 @@ TEST(KneeUpload, ABadValueIsNamedByKeyWithoutAServerPath) {
 TEST(KneeUpload, NoAnswerNamesTheServersFolder) {
   const std::string knee = readShipped("models/damping-table-default.yaml");
   const std::vector<std::pair<ApiReply (ServeApi::*)(const std::string&) const, Json>> requests = {
-      {&ServeApi::simulate, {{"participant", "p1"}, {"knee_yaml", knee}, {"knee_settings", {{"knee_effects.model_scale", -2}}}}},
-      {&ServeApi::tune, {{"participant", "p1"}, {"knee_yaml", knee},
-                         {"knobs", {{{"key", "knee_effects.model_scale"}, {"min", -1}, {"max", 2}}}}}},
+      {&ServeApi::simulate,
+       {{"participant", "p1"}, {"knee_yaml", knee}, {"knee_settings", {{"knee_effects.model_scale", -2}}}}},
+      {&ServeApi::tune,
+       {{"participant", "p1"},
+        {"knee_yaml", knee},
+        {"knobs", {{{"key", "knee_effects.model_scale"}, {"min", -1}, {"max", 2}}}}}},
       {&ServeApi::report, {{"participant", "p1"}, {"lowering_step_m", 0.1}}},
       {&ServeApi::sweep, {{"participant", "p1"}, {"knee_yaml", knee}, {"lowering_step_m", 0.1}}},
   };
@@ -95,8 +102,8 @@ TEST(KneeUpload, TheTuningSetsItsNumbers) {
   const Json tuned = callServeApi(&ServeApi::tune, request);
   ASSERT_EQ(tuned["knobs"].size(), 1u);
   const Json swing = callServeApi(&ServeApi::simulate, {{"participant", "p1"},
-                                                {"knee_yaml", request["knee_yaml"]},
-                                                {"knee_settings", {{key, tuned["knobs"][0]["value"]}}}});
+                                                        {"knee_yaml", request["knee_yaml"]},
+                                                        {"knee_settings", {{key, tuned["knobs"][0]["value"]}}}});
   EXPECT_EQ(swing["swing_time_s"], tuned["swing_time_s"]);
 }
 

@@ -50,8 +50,10 @@ TEST(ShippedFilesTest, ListsTheShippedFilesByName) {
 TEST(ShippedFilesTest, RefusesPathTraversalNames) {
   for (const char* name : {"../../etc/passwd", "/etc/passwd", "p1/../p2", "../participants/p1", "p1.yaml", ""}) {
     EXPECT_THAT(messageOf([&] { shipped().findParticipantPath(name); }),
-                HasSubstr("participant: expected a shipped participant by name, one of")) << name;
-    EXPECT_THAT(messageOf([&] { shipped().findKneePath(name); }), HasSubstr("knee: expected a shipped knee model by name"))
+                HasSubstr("participant: expected a shipped participant by name, one of"))
+        << name;
+    EXPECT_THAT(messageOf([&] { shipped().findKneePath(name); }),
+                HasSubstr("knee: expected a shipped knee model by name"))
         << name;
   }
 }
@@ -64,7 +66,8 @@ TEST(LegRequestTest, AMassEditKeepsTheSegmentsRadiusOfGyrationUnlessTheInertiaIs
   EXPECT_NEAR(lighter.participant.shank.inertia, inertia * std::stod(std::to_string(mass / 2)) / mass, 1e-15);
   EXPECT_DOUBLE_EQ(lighter.participant.thigh.inertia, intact.participant.thigh.inertia);
   // Both edited: the inertia as given.
-  const Leg both = load({{"participant", "p1"}, {"edits", {{"segments.shank.mass_kg", "0.5"}, {"segments.shank.inertia_kgm2", "0.01"}}}});
+  const Leg both = load(
+      {{"participant", "p1"}, {"edits", {{"segments.shank.mass_kg", "0.5"}, {"segments.shank.inertia_kgm2", "0.01"}}}});
   EXPECT_DOUBLE_EQ(both.participant.shank.inertia, 0.01);
 }
 
@@ -75,7 +78,9 @@ TEST(LegRequestTest, LoadsAShippedParticipantAndItsKnee) {
 }
 
 TEST(LegRequestTest, ABadMassIsTheLoadersMessageNamingTheKey) {
-  const std::string message = messageOf([] { load({{"participant", "p1"}, {"edits", {{"segments.shank.mass_kg", "-1"}}}}); });
+  const std::string message = messageOf([] {
+    load({{"participant", "p1"}, {"edits", {{"segments.shank.mass_kg", "-1"}}}});
+  });
   EXPECT_THAT(message, HasSubstr("segments.shank.mass_kg: must be positive (got -1)"));
   EXPECT_EQ(findErrorKey(message), "segments.shank.mass_kg");
   const std::string text = messageOf([] { load({{"participant", "p1"}, {"edits", {{"body_mass_kg", "abc"}}}}); });
@@ -83,9 +88,13 @@ TEST(LegRequestTest, ABadMassIsTheLoadersMessageNamingTheKey) {
 }
 
 TEST(LegRequestTest, AnEditOutsideTheFormIsRefused) {
-  EXPECT_THAT(messageOf([] { load({{"participant", "p1"}, {"edits", {{"knee_model", "/etc/passwd"}}}}); }),
+  EXPECT_THAT(messageOf([] {
+                load({{"participant", "p1"}, {"edits", {{"knee_model", "/etc/passwd"}}}});
+              }),
               HasSubstr("edits: expected a main number of the form"));
-  EXPECT_THAT(messageOf([] { load({{"participant", "p1"}, {"knee_settings", {{"kind", 1}}}}); }),
+  EXPECT_THAT(messageOf([] {
+                load({{"participant", "p1"}, {"knee_settings", {{"kind", 1}}}});
+              }),
               HasSubstr("knee_settings: expected knee_effects.model_scale"));
 }
 
@@ -110,11 +119,16 @@ TEST(LegRequestTest, AnUploadNamesNoFileOutsideTheShippedModels) {
   // An upload's messages name it upload.yaml, not a path in the server's folders.
   std::string badMass = text;
   badMass.replace(badMass.find("body_mass_kg: 70"), 16, "body_mass_kg: -70");
-  EXPECT_THAT(messageOf([&] { load({{"participant_yaml", badMass}}); }), ::testing::StartsWith("upload.yaml:8: body_mass_kg:"));
+  EXPECT_THAT(messageOf([&] {
+                load({{"participant_yaml", badMass}});
+              }),
+              ::testing::StartsWith("upload.yaml:8: body_mass_kg:"));
   std::string byName = text;
   byName.replace(byName.find(from), from.size(), "knee_model: mauch-2phase");
   EXPECT_EQ(load({{"participant_yaml", byName}}).knee.name, "mauch-2phase");
-  EXPECT_THAT(messageOf([&] { load({{"participant_yaml", text + "thigh_kinematics: /etc/passwd\n"}}); }),
+  EXPECT_THAT(messageOf([&] {
+                load({{"participant_yaml", text + "thigh_kinematics: /etc/passwd\n"}});
+              }),
               HasSubstr("thigh_kinematics: expected none in an uploaded participant"));
 }
 
@@ -123,18 +137,29 @@ TEST(LegRequestTest, ASwingTimeLimitAboveTheBudgetIsRefused) {
   const std::string from = "time_limit_s: 1.5";
   ASSERT_NE(text.find(from), std::string::npos);
   text.replace(text.find(from), from.size(), "time_limit_s: 5");  // the loader allows up to 10 s
-  EXPECT_THAT(messageOf([&] { load({{"participant_yaml", text}}); }),
-              HasSubstr("swing_end.time_limit_s: expected at most 3 s on swingsim serve (its simulation budget) (got 5)"));
+  EXPECT_THAT(
+      messageOf([&] {
+        load({{"participant_yaml", text}});
+      }),
+      HasSubstr("swing_end.time_limit_s: expected at most 3 s on swingsim serve (its simulation budget) (got 5)"));
 }
 
 TEST(LegRequestTest, KnobsOutOfRangeNameTheirKey) {
-  EXPECT_THAT(messageOf([] { readLegRequest({{"participant", "p1"}, {"added_mass_kg", -1}}); }),
+  EXPECT_THAT(messageOf([] {
+                readLegRequest({{"participant", "p1"}, {"added_mass_kg", -1}});
+              }),
               HasSubstr("added_mass_kg: expected 0 to 150 kg (got -1)"));
-  EXPECT_THAT(messageOf([] { readLegRequest({{"participant", "p1"}, {"added_mass_position_m", 9}}); }),
+  EXPECT_THAT(messageOf([] {
+                readLegRequest({{"participant", "p1"}, {"added_mass_position_m", 9}});
+              }),
               HasSubstr("added_mass_position_m: expected 0 to 1.5 m"));
-  EXPECT_THAT(messageOf([] { readLegRequest({{"participant", "p1"}, {"lowering_m", "x"}}); }),
+  EXPECT_THAT(messageOf([] {
+                readLegRequest({{"participant", "p1"}, {"lowering_m", "x"}});
+              }),
               HasSubstr("lowering_m: expected a number"));
-  const std::string scale = messageOf([] { load({{"participant", "p1"}, {"knee_settings", {{"knee_effects.model_scale", -2}}}}); });
+  const std::string scale = messageOf([] {
+    load({{"participant", "p1"}, {"knee_settings", {{"knee_effects.model_scale", -2}}}});
+  });
   EXPECT_EQ(findErrorKey(scale), "knee_effects.model_scale") << scale;
 }
 
@@ -204,7 +229,8 @@ namespace {
 
 // Issue 57: JSON nested 30,000 deep and a number beyond a double (a 500 naming no key).
 TEST(LegRequestTest, DeepNestingAndAnOverflowingNumberAreRequestErrors) {
-  const std::string deep = R"({"participant": "p1", "edits": )" + std::string(30000, '[') + std::string(30000, ']') + "}";
+  const std::string deep =
+      R"({"participant": "p1", "edits": )" + std::string(30000, '[') + std::string(30000, ']') + "}";
   const ApiReply nested = answerOrError([&] { return readRequestBody(deep); });
   EXPECT_EQ(nested.status, 400);
   EXPECT_THAT(nested.body, HasSubstr("nested at most 64 deep"));

@@ -29,7 +29,8 @@ TEST(RequestGuard, RefusesAnotherHostAsDnsRebindingWouldSendIt) {
 // Another page open in the same browser posting to the server.
 TEST(RequestGuard, RefusesAnotherOrigin) {
   const RequestGuard guard("127.0.0.1", 8123);
-  EXPECT_THAT(guard.checkRequest("127.0.0.1:8123", "http://evil.example"), HasSubstr("Origin 'http://evil.example' is not"));
+  EXPECT_THAT(guard.checkRequest("127.0.0.1:8123", "http://evil.example"),
+              HasSubstr("Origin 'http://evil.example' is not"));
   EXPECT_THAT(guard.checkRequest("127.0.0.1:8123", "null"), HasSubstr("Origin 'null'"));
   EXPECT_THAT(guard.checkRequest("127.0.0.1:8123", "https://127.0.0.1:8123"), HasSubstr("is not this server's page"));
 }

@@ -15,7 +15,8 @@ inline const ServeApi& shippedServeApi() {
 }
 
 /// The JSON answer of `call` on `body`, checked to come with `expectedStatus`.
-inline Json callServeApi(ApiReply (ServeApi::*call)(const std::string&) const, const Json& body, int expectedStatus = 200) {
+inline Json callServeApi(ApiReply (ServeApi::*call)(const std::string&) const, const Json& body,
+                         int expectedStatus = 200) {
   const ApiReply r = (shippedServeApi().*call)(body.dump());
   EXPECT_EQ(r.status, expectedStatus) << r.body;
   return Json::parse(r.body);

@@ -35,8 +35,11 @@ const std::string kSource = SWINGSIM_SOURCE_DIR;
 const std::string kSubject01 = kSource + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim";
 
 TEST(ServeExportOsim, IsExportOsimsModelAndSimulatesSto) {
-  const Json j = callServeApi(&ServeApi::exportOsim, {{"participant", "p1"}, {"lowering_m", 0.05}, {"side", "l"},
-                                              {"added_mass_kg", 0.5}, {"added_mass_position_m", 0.2}});
+  const Json j = callServeApi(&ServeApi::exportOsim, {{"participant", "p1"},
+                                                      {"lowering_m", 0.05},
+                                                      {"side", "l"},
+                                                      {"added_mass_kg", 0.5},
+                                                      {"added_mass_position_m", 0.2}});
   const Participant p = loadParticipant(kSource + "/participants/p1.yaml");
   const KneeModel knee = loadKneeModel(p.kneeModelPath);
   const AddedMass added{0.5, 0.2};
@@ -55,7 +58,9 @@ TEST(ServeExportOsim, RefusesAWrongSide) {
 }
 
 TEST(ServeImportOsim, IsImportOsimsParticipantAndLoadsAsAnUpload) {
-  const Json j = callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"file_name", "/home/a/subject01.osim"}, {"side", "l"}});
+  const Json j =
+      callServeApi(&ServeApi::importOsim,
+                   {{"osim_text", readFile(kSubject01)}, {"file_name", "/home/a/subject01.osim"}, {"side", "l"}});
   OsimImportOptions o;
   o.side = 'l';
   o.kneeModelPath = kSource + "/models/damping-table-default.yaml";
@@ -80,12 +85,18 @@ TEST(ServeImportOsim, IsImportOsimsParticipantAndLoadsAsAnUpload) {
 }
 
 TEST(ServeImportOsim, RefusesWhatIsNotAModelByItsKey) {
-  const Json notXml = callServeApi(&ServeApi::importOsim, {{"osim_text", "<OpenSimDocument"}, {"file_name", "bad.osim"}}, 400);
+  const Json notXml =
+      callServeApi(&ServeApi::importOsim, {{"osim_text", "<OpenSimDocument"}, {"file_name", "bad.osim"}}, 400);
   EXPECT_THAT(notXml["error"].get<std::string>(), HasSubstr("bad.osim:1:"));
   EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"file_name", "x.osim"}}, 400)["key"], "osim_text");
-  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"side", "both"}}, 400)["key"], "side");
-  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"knee", "../../etc/passwd"}}, 400)["key"], "knee");
-  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"shank_mass_kg", -1}}, 400)["key"], "shank_mass_kg");
+  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"side", "both"}}, 400)["key"],
+            "side");
+  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"knee", "../../etc/passwd"}},
+                         400)["key"],
+            "knee");
+  EXPECT_EQ(
+      callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"shank_mass_kg", -1}}, 400)["key"],
+      "shank_mass_kg");
 }
 
 TEST(ServeReport, IsTheSweepsSelfContainedReport) {
@@ -122,8 +133,9 @@ TEST(ServeReport, AHostileNameGivesASafeFileName) {
 // sweep's by far more than the integrator's 0.1 ms.
 TEST(ServeSweep, WithAnAddedMassShowsTheLegWithIt) {
   const Json plain = callServeApi(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}});
-  const Json heavy = callServeApi(&ServeApi::sweep, {{"participant", "p1"}, {"lowering_step_m", 0.05}, {"added_mass_kg", 1.0},
-                                             {"added_mass_position_m", 0.25}});
+  const Json heavy = callServeApi(
+      &ServeApi::sweep,
+      {{"participant", "p1"}, {"lowering_step_m", 0.05}, {"added_mass_kg", 1.0}, {"added_mass_position_m", 0.25}});
   EXPECT_EQ(heavy["added_mass_kg"], 1.0);
   const Participant p = loadParticipant(kSource + "/participants/p1.yaml");
   const KneeModel knee = loadKneeModel(p.kneeModelPath);
@@ -132,7 +144,8 @@ TEST(ServeSweep, WithAnAddedMassShowsTheLegWithIt) {
     const double lowering = heavy["lowerings_m"][k];
     const SwingResult r = simulateSwing(makeSwingSetup(p, knee, lowering, AddedMass{1.0, 0.25}), SwingOptions{});
     EXPECT_EQ(heavy["swing_times_s"][k].get<double>(), r.swingTime) << lowering;
-    EXPECT_GT(std::abs(heavy["swing_times_s"][k].get<double>() - plain["swing_times_s"][k].get<double>()), 1e-3) << lowering;
+    EXPECT_GT(std::abs(heavy["swing_times_s"][k].get<double>() - plain["swing_times_s"][k].get<double>()), 1e-3)
+        << lowering;
   }
   double fastest = 1e9;
   for (const Json& t : heavy["swing_times_s"]) fastest = std::min(fastest, t.get<double>());
@@ -143,19 +156,21 @@ TEST(ServeSweep, WithAnAddedMassShowsTheLegWithIt) {
 // P1's damping-table knee tuned over the lowering and model_scale, as a `kind: knee-tuning`
 // study with the same knobs and targets would be by `swingsim tune`.
 const Json kTuneRequest = {{"participant", "p1"},
-                           {"knobs", {{{"key", "lowering_m"}, {"min", 0}, {"max", 0.06}},
-                                      {{"key", "knee_effects.model_scale"}, {"min", 0.5}, {"max", 8}, {"log_scale", true}}}}};
+                           {"knobs",
+                            {{{"key", "lowering_m"}, {"min", 0}, {"max", 0.06}},
+                             {{"key", "knee_effects.model_scale"}, {"min", 0.5}, {"max", 8}, {"log_scale", true}}}}};
 
 TEST(ServeTune, IsSwingsimTunesResultForTheSameKnobs) {
   const Json j = callServeApi(&ServeApi::tune, kTuneRequest);
   const auto dir = std::filesystem::temp_directory_path() / ("ServeTune-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string study = (dir / "tune.yaml").string();
-  std::ofstream(study) << "kind: knee-tuning\nparticipant: " << kSource << "/participants/p1.yaml\nknee_model: " << kSource
-                       << "/models/damping-table-default.yaml\nknobs:\n  - {key: lowering_m, range: [0, 0.06]}\n"
-                       << "  - {key: knee_effects.model_scale, range: [0.5, 8], log_scale: true}\n"
-                       << "targets:\n  swing_time_s: {value: sound_limb, weight: 1}\n"
-                       << "  peak_knee_flexion_deg: {min: 60, max: 90, hard: true}\n  min_toe_clearance_m: {min: 0.08, hard: true}\n";
+  std::ofstream(study)
+      << "kind: knee-tuning\nparticipant: " << kSource << "/participants/p1.yaml\nknee_model: " << kSource
+      << "/models/damping-table-default.yaml\nknobs:\n  - {key: lowering_m, range: [0, 0.06]}\n"
+      << "  - {key: knee_effects.model_scale, range: [0.5, 8], log_scale: true}\n"
+      << "targets:\n  swing_time_s: {value: sound_limb, weight: 1}\n"
+      << "  peak_knee_flexion_deg: {min: 60, max: 90, hard: true}\n  min_toe_clearance_m: {min: 0.08, hard: true}\n";
   SweepRunControl control;
   const TuningRun cli = runTuningStudy(loadTuningStudy(study), 1, control);
   ASSERT_EQ(j["knobs"].size(), 2u);
@@ -168,12 +183,14 @@ TEST(ServeTune, IsSwingsimTunesResultForTheSameKnobs) {
 TEST(ServeTune, ItsSettingSwingsAsTheSimulateCallShowsIt) {
   const Json j = callServeApi(&ServeApi::tune, kTuneRequest);
   const Json before = callServeApi(&ServeApi::simulate, {{"participant", "p1"}});
-  const Json after = callServeApi(&ServeApi::simulate, {{"participant", "p1"},
-                                                {"lowering_m", j["knobs"][0]["value"]},
-                                                {"knee_settings", {{"knee_effects.model_scale", j["knobs"][1]["value"]}}}});
+  const Json after =
+      callServeApi(&ServeApi::simulate, {{"participant", "p1"},
+                                         {"lowering_m", j["knobs"][0]["value"]},
+                                         {"knee_settings", {{"knee_effects.model_scale", j["knobs"][1]["value"]}}}});
   EXPECT_EQ(after["swing_time_s"].get<double>(), j["swing_time_s"].get<double>());
   const double sound = 0.499;  // P1's sound_limb_swing_time_s (participants/p1.yaml, Burkett 2004 Table 4)
-  EXPECT_LT(std::abs(after["swing_time_s"].get<double>() - sound), std::abs(before["swing_time_s"].get<double>() - sound));
+  EXPECT_LT(std::abs(after["swing_time_s"].get<double>() - sound),
+            std::abs(before["swing_time_s"].get<double>() - sound));
   for (const Json& t : j["targets"])
     if (t["hard"].get<bool>()) {
       EXPECT_TRUE(t["met"].get<bool>()) << t.dump();
@@ -205,9 +222,10 @@ TEST(ServeTune, StoppedItReturnsTheBestSimulatedSoFar) {
   const Json j = Json::parse(r.body);
   EXPECT_TRUE(j["interrupted"].get<bool>());
   EXPECT_LE(j["evaluations"].get<int>(), 31);
-  const Json swing = callServeApi(&ServeApi::simulate, {{"participant", "p1"},
-                                                        {"lowering_m", j["knobs"][0]["value"]},
-                                                        {"knee_settings", {{"knee_effects.model_scale", j["knobs"][1]["value"]}}}});
+  const Json swing =
+      callServeApi(&ServeApi::simulate, {{"participant", "p1"},
+                                         {"lowering_m", j["knobs"][0]["value"]},
+                                         {"knee_settings", {{"knee_effects.model_scale", j["knobs"][1]["value"]}}}});
   EXPECT_EQ(swing["swing_time_s"].get<double>(), j["swing_time_s"].get<double>());
 }
 

@@ -12,8 +12,8 @@
 #include <regex>
 #include <thread>
 
-#include "run_swingsim.h"
 #include "../test_build.h"
+#include "run_swingsim.h"
 
 namespace swingsim::testing {
 namespace {

@@ -104,7 +104,8 @@ TEST_F(WebServerTest, DescribesAParticipantWithItsExport) {
   EXPECT_EQ(p["fields"]["segments.shank.mass_kg"], 0.785);
   EXPECT_EQ(p["knee_model"], "damping-table-default");
   // The export loads back through the command line's loaders to the same participant.
-  const Participant back = parseParticipant(p["participant_yaml"].get<std::string>(), std::string(SWINGSIM_SOURCE_DIR) + "/participants/x.yaml");
+  const Participant back = parseParticipant(p["participant_yaml"].get<std::string>(),
+                                            std::string(SWINGSIM_SOURCE_DIR) + "/participants/x.yaml");
   EXPECT_EQ(back.shank.mass, loadParticipant(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml").shank.mass);
   EXPECT_EQ(parseKneeModel(p["knee_yaml"].get<std::string>(), "k.yaml").name, "damping-table-default");
 }
@@ -112,8 +113,9 @@ TEST_F(WebServerTest, DescribesAParticipantWithItsExport) {
 // The page's swing is the library's as swingsim simulate runs it: the same participant,
 // knee, lowering and added mass give the same swing time to the last bit.
 TEST_F(WebServerTest, SimulatesTheSwingTheLibrarySimulates) {
-  const Json s = postJson("/api/simulate",
-                          {{"participant", "p1"}, {"lowering_m", 0.1}, {"added_mass_kg", 0.5}, {"added_mass_position_m", 0.2}}, 200);
+  const Json s = postJson(
+      "/api/simulate",
+      {{"participant", "p1"}, {"lowering_m", 0.1}, {"added_mass_kg", 0.5}, {"added_mass_position_m", 0.2}}, 200);
   const Participant p = loadParticipant(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml");
   const KneeModel knee = loadKneeModel(p.kneeModelPath);
   SwingOptions options;
@@ -128,7 +130,8 @@ TEST_F(WebServerTest, SimulatesTheSwingTheLibrarySimulates) {
 
 TEST_F(WebServerTest, ModelScaleChangesTheSwing) {
   const Json base = postJson("/api/simulate", {{"participant", "p1"}}, 200);
-  const Json scaled = postJson("/api/simulate", {{"participant", "p1"}, {"knee_settings", {{"knee_effects.model_scale", 2.0}}}}, 200);
+  const Json scaled =
+      postJson("/api/simulate", {{"participant", "p1"}, {"knee_settings", {{"knee_effects.model_scale", 2.0}}}}, 200);
   EXPECT_NE(base["swing_time_s"], scaled["swing_time_s"]);
 }
 
@@ -165,7 +168,8 @@ TEST_F(WebServerTest, AnUploadIsSimulatedAsTheShippedFile) {
 // --- refusals -------------------------------------------------------------------------
 
 TEST_F(WebServerTest, RefusesAWrongHost) {
-  const auto r = post("/api/simulate", R"({"participant":"p1"})", {{"Host", "evil.example:" + std::to_string(server_->getPort())}});
+  const auto r = post("/api/simulate", R"({"participant":"p1"})",
+                      {{"Host", "evil.example:" + std::to_string(server_->getPort())}});
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 403);
   EXPECT_THAT(r->body, HasSubstr("is not this server's"));
@@ -191,12 +195,14 @@ TEST_F(WebServerTest, RefusesAnOversizedBody) {
 // An .osim upload has its own, larger limit (a scaled gait2354 model is ~420 KB); every
 // other call keeps the 64 KiB one, and the upload's limit holds too.
 TEST_F(WebServerTest, AnOsimUploadHasItsOwnBodyLimit) {
-  std::ifstream in(std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim");
+  std::ifstream in(std::string(SWINGSIM_SOURCE_DIR) +
+                   "/studies/data/opensim-subject01/gait2354_subject01_simbody.osim");
   std::stringstream text;
   text << in.rdbuf();
   ASSERT_GT(text.str().size(), ServeLimits{}.maxBodyBytes);
   const Json imported = postJson("/api/import_osim", {{"osim_text", text.str()}, {"file_name", "subject01.osim"}}, 200);
-  EXPECT_THAT(imported["participant_yaml"].get<std::string>(), HasSubstr("knee_model: ../models/damping-table-default.yaml"));
+  EXPECT_THAT(imported["participant_yaml"].get<std::string>(),
+              HasSubstr("knee_model: ../models/damping-table-default.yaml"));
   const auto simulate = post("/api/simulate", Json{{"participant", "p1"}, {"pad", text.str()}}.dump());
   ASSERT_TRUE(simulate);
   EXPECT_EQ(simulate->status, 413);
@@ -270,7 +276,8 @@ TEST_F(WebServerTest, ConcurrentRequestsAnswerAsSerialOnes) {
   constexpr int kRequests = 8;
   std::vector<std::string> bodies, serial(kRequests), concurrent(kRequests);
   for (int i = 0; i < kRequests; ++i)
-    bodies.push_back(Json{{"participant", i % 2 ? "p1" : "p2"}, {"lowering_m", 0.01 * i}, {"added_mass_kg", 0.1 * i}}.dump());
+    bodies.push_back(
+        Json{{"participant", i % 2 ? "p1" : "p2"}, {"lowering_m", 0.01 * i}, {"added_mass_kg", 0.1 * i}}.dump());
   for (int i = 0; i < kRequests; ++i) serial[i] = post("/api/simulate", bodies[i])->body;
   std::vector<std::thread> threads;
   for (int i = 0; i < kRequests; ++i)

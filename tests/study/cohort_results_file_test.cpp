@@ -220,10 +220,10 @@ TEST(CohortResultsFile, MalformedFilesNameFileKeyExpectedAndFound) {
   const std::string p = scratch("");
   EXPECT_THAT(refusal("a.json", "{\"format\": "),
               HasSubstr(p + "a.json: expected the JSON of a cohort results file (sweep COHORT.yaml --shard K/N), "
-                        "found text that is not JSON"));
+                            "found text that is not JSON"));
   EXPECT_THAT(refusal("b.json", replace("\"seed\": 5,\n", "")),
               HasSubstr(p + "b.json: seed: expected the key (this is not a complete cohort results file), "
-                        "found it missing"));
+                            "found it missing"));
   EXPECT_THAT(refusal("c.json", replace("\"format\": \"swingsim cohort results\"", "\"format\": \"other\"")),
               HasSubstr(p + "c.json: format: expected \"swingsim cohort results\", found \"other\""));
   EXPECT_THAT(refusal("d.json", replace("\"format_version\": 2", "\"format_version\": 3")),
@@ -235,7 +235,7 @@ TEST(CohortResultsFile, MalformedFilesNameFileKeyExpectedAndFound) {
               HasSubstr(p + "f.json: results: expected a list of 3 participants, found a list of 4"));
   EXPECT_THAT(refusal("g.json", replace("\"calibration_swings\": 7", "\"calibration_swings\": -7")),
               HasSubstr(p + "g.json: results[0].calibration_swings: expected a whole number from 0 to 1000000, "
-                        "found -7"));
+                            "found -7"));
   EXPECT_THAT(refusal("h.json", replace("\"ran\": true,\n      \"calibrated\": false", "\"calibrated\": false")),
               HasSubstr(p + "h.json: results[2].ran: expected the key"));
   EXPECT_THAT(refusal("i.json", replace("        0.01\n", "        0.01,\n        0.02\n")),
@@ -298,18 +298,21 @@ TEST(CohortResultsFile, MergeNeedsEveryShardOfOneRunOnce) {
     return std::string("accepted");
   };
   EXPECT_THAT(refuse({set[0], set[2]}), HasSubstr("missing K = 1"));
-  EXPECT_THAT(refuse({set[0], set[1], set[1], set[2]}), HasSubstr(set[1].path + ": shard.index: expected each shard once"));
+  EXPECT_THAT(refuse({set[0], set[1], set[1], set[2]}),
+              HasSubstr(set[1].path + ": shard.index: expected each shard once"));
   CohortResultsFile otherSeed = set[1];
   otherSeed.run.seed = 6;
   EXPECT_THAT(refuse({set[0], otherSeed, set[2]}),
-              HasSubstr(set[1].path + ": seed: expected 5 (the first shard, " + set[0].path + "), found 6: "
+              HasSubstr(set[1].path + ": seed: expected 5 (the first shard, " + set[0].path +
+                        "), found 6: "
                         "these results belong to another cohort run"));
   CohortResultsFile otherInputs = set[2];
   otherInputs.run.inputsFingerprint = "0000000000000000";
   EXPECT_THAT(refuse({set[0], set[1], otherInputs}), HasSubstr(": inputs_fingerprint: expected 0123456789abcdef"));
   CohortResultsFile unfinished = set[1];
   unfinished.results[0].ran = false;
-  EXPECT_THAT(refuse({set[0], unfinished, set[2]}), HasSubstr(": partial: expected false (a finished shard), found true"));
+  EXPECT_THAT(refuse({set[0], unfinished, set[2]}),
+              HasSubstr(": partial: expected false (a finished shard), found true"));
   CohortResultsFile whole = set[0];
   whole.sharded = false;
   EXPECT_THAT(refuse({whole, set[1], set[2]}), HasSubstr(": shard: expected {\"index\": K, \"count\": N}"));

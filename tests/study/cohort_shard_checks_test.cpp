@@ -95,8 +95,9 @@ TEST(CohortShardChecks, AnImplausibleValueWithAMatchingChecksumIsRefusedNamingKe
   CohortResultsFile f = makeShard();
   f.results[1].sweep.swingTimes[0] = -0.4;
   EXPECT_EQ(refusal(path, formatCohortResultsJson(f)),
-            path + ": results[1].swing_times_s[0]: expected a swing time above 0 and at most 10 s (the largest "
-                   "time_limit_s a participant takes), or null, found -0.4");
+            path +
+                ": results[1].swing_times_s[0]: expected a swing time above 0 and at most 10 s (the largest "
+                "time_limit_s a participant takes), or null, found -0.4");
   f = makeShard();
   f.results[0].sweep.swingTimes[1] = 50;
   EXPECT_THAT(refusal(path, formatCohortResultsJson(f)),
@@ -119,8 +120,7 @@ TEST(CohortShardChecks, AnImplausibleValueWithAMatchingChecksumIsRefusedNamingKe
 
 TEST(CohortShardChecks, AFileOfTheEarlierFormatIsRefusedWithWhatToDo) {
   const std::string path = scratch("older.json");
-  const std::string text =
-      edit(formatCohortResultsJson(makeShard()), "\"format_version\": 2", "\"format_version\": 1");
+  const std::string text = edit(formatCohortResultsJson(makeShard()), "\"format_version\": 2", "\"format_version\": 1");
   EXPECT_THAT(refusal(path, text),
               HasSubstr(path + ": format_version: expected 2 (this file was written by an older swingsim, before its "
                                "payload was checksummed and range-checked: rerun the shard, or the sweep, that wrote "

@@ -42,8 +42,9 @@ TEST(CohortStudyChecks, TheSeedTakesTheGeneratorsWholeRangeAndNamesIt) {
   // Read exactly, not through a double (which would make both of these 2^53).
   EXPECT_NE(parseCohortStudy(studyText("seed: 3", "seed: 9007199254740993"), path).values,
             parseCohortStudy(studyText("seed: 3", "seed: 9007199254740992"), path).values);
-  const std::string range = "seed: expected an integer in [0, 2^64 - 1 = 18446744073709551615, the seeds of the "
-                            "std::mt19937_64 that draws the cohort]";
+  const std::string range =
+      "seed: expected an integer in [0, 2^64 - 1 = 18446744073709551615, the seeds of the "
+      "std::mt19937_64 that draws the cohort]";
   EXPECT_EQ(errorOf(studyText("seed: 3", "seed: 18446744073709551616")),
             path + ":4: " + range + " (got 18446744073709551616)");
   EXPECT_EQ(errorOf(studyText("seed: 3", "seed: -1")), path + ":4: " + range + " (got -1)");
@@ -57,15 +58,17 @@ TEST(CohortStudyChecks, ASpreadThatFlattensOrCollapsesItsTruncationIsRefusedAtFi
   EXPECT_THAT(wide, HasSubstr(path + ":8: distributions.stature_m.sd: expected a standard deviation of at most 10 x "
                                      "(max - min) = 2.2 (a wider normal is flat across [1.649, 1.869]"));
   EXPECT_THAT(wide, HasSubstr("(got 1e+20)"));
-  EXPECT_THAT(errorOf(studyText("sd: 0.067", "sd: 1e-9")),
-              HasSubstr(path + ":8: distributions.stature_m.sd: expected a standard deviation of at least 0.001 x (max - "
-                               "min) = 0.00022 (a narrower normal draws every participant at the mean 1.759)"));
+  EXPECT_THAT(
+      errorOf(studyText("sd: 0.067", "sd: 1e-9")),
+      HasSubstr(path + ":8: distributions.stature_m.sd: expected a standard deviation of at least 0.001 x (max - "
+                       "min) = 0.00022 (a narrower normal draws every participant at the mean 1.759)"));
 }
 
 TEST(CohortStudyChecks, ADrawnLegNoParticipantFileCouldHoldIsRefusedNamingParticipantAndKey) {
   // A template whose shank must keep 0.45 m: a drawn stature of 1.649-1.869 m gives a shank
   // of 0.41-0.46 m, so some drawn participant has less shank than its own minimum.
-  const auto dir = std::filesystem::temp_directory_path() / ("swingsim-cohort-study-checks-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("swingsim-cohort-study-checks-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ifstream in(kRoot + "/participants/p1.yaml");
   std::string templ((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -73,8 +76,7 @@ TEST(CohortStudyChecks, ADrawnLegNoParticipantFileCouldHoldIsRefusedNamingPartic
   templ += "min_shank_length_m: 0.45\n";
   std::ofstream((dir / "deep.yaml").string()) << templ;
   const std::string path = (dir / "study.yaml").string();
-  const std::string message =
-      errorOf(studyText("template: participants/p1.yaml", "template: deep.yaml"), path);
+  const std::string message = errorOf(studyText("template: participants/p1.yaml", "template: deep.yaml"), path);
   EXPECT_THAT(message, HasSubstr(path + ":7: distributions: expected distributions whose every draw is a leg a "
                                         "participant file may hold (narrow the one named) (got C00"));
   EXPECT_THAT(message, HasSubstr(": min_shank_length_m: must be shorter than the shank ("));

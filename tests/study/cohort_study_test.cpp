@@ -70,14 +70,17 @@ TEST(CohortStudy, RefusesBadDistributionsWithFileLineKeyExpectedAndFound) {
   // An unknown distribution, a missing property, an unknown property.
   EXPECT_THAT(errorOf(studyText("{distribution: uniform, min: 20", "{distribution: lognormal, min: 20")),
               HasSubstr("distributions.body_mass_index_kg_m2.distribution"));
-  EXPECT_THAT(errorOf(studyText("  pylon_mass_kg: {distribution: uniform, min: 0.08, max: 0.30, source: \"assumption\"}\n", "")),
+  EXPECT_THAT(errorOf(studyText(
+                  "  pylon_mass_kg: {distribution: uniform, min: 0.08, max: 0.30, source: \"assumption\"}\n", "")),
               HasSubstr("distributions.pylon_mass_kg: required key is missing"));
-  EXPECT_THAT(errorOf(studyText("distributions:\n", "distributions:\n  shoe_size: {distribution: uniform, min: 1, max: 2, source: x}\n")),
+  EXPECT_THAT(errorOf(studyText("distributions:\n",
+                                "distributions:\n  shoe_size: {distribution: uniform, min: 1, max: 2, source: x}\n")),
               HasSubstr("shoe_size"));
   // A uniform with a normal's keys, and a participant count out of range.
   EXPECT_THAT(errorOf(studyText("min: 20, max: 26", "min: 20, max: 26, sd: 1")), HasSubstr("sd"));
-  EXPECT_THAT(errorOf(studyText("participants: 5", "participants: 0")),
-              HasSubstr("study.yaml:3: participants: expected a whole number of participants from 1 to 100000 (got 0)"));
+  EXPECT_THAT(
+      errorOf(studyText("participants: 5", "participants: 0")),
+      HasSubstr("study.yaml:3: participants: expected a whole number of participants from 1 to 100000 (got 0)"));
 }
 
 }  // namespace

@@ -6,11 +6,11 @@
 
 #include <filesystem>
 
+#include "../cli/release_only.h"
 #include "identify/cylinder_plant.h"
 #include "identify/swing_plant.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
-#include "../cli/release_only.h"
 
 namespace swingsim {
 namespace {

@@ -5,16 +5,16 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <algorithm>
 #include <fstream>
 
+#include "../io/opensim_trials.h"
 #include "core/input_error.h"
 #include "core/units.h"
 #include "io/yaml_reader.h"
-#include "../io/opensim_trials.h"
 
 namespace swingsim {
 namespace {
@@ -65,9 +65,10 @@ TEST(DiagnosisStudyFormat, LoadWriteLoadGivesTheSameStudy) {
 }
 
 TEST(DiagnosisStudyFormat, UnknownCandidateNamesThePlantsEffects) {
-  const std::string text = "kind: swing-diagnosis\nparticipant: ../participants/p1.yaml\n"
-                           "base_model: ../models/damping-table-default.yaml\ntrain: [a.csv]\nvalidate: [b.csv]\n"
-                           "candidates: [coulomb_friction]\n";
+  const std::string text =
+      "kind: swing-diagnosis\nparticipant: ../participants/p1.yaml\n"
+      "base_model: ../models/damping-table-default.yaml\ntrain: [a.csv]\nvalidate: [b.csv]\n"
+      "candidates: [coulomb_friction]\n";
   try {
     parse(text, kRoot + "/studies/bad.yaml");
     FAIL();
@@ -88,8 +89,9 @@ double trialHipDeg(double t) { return -15 + 35 * (1 - std::cos(kPi * t / 0.6)) /
 double trialKneeFlexionDeg(double t) { return 5 + 60 * std::sin(kPi * t / 0.6); }
 
 std::string trialSto() {
-  std::string text = "trial\nversion=1\nnRows=61\nnColumns=4\ninDegrees=yes\nendheader\n"
-                     "time\thip_flexion_r\tknee_angle_r\thip_moment\n";
+  std::string text =
+      "trial\nversion=1\nnRows=61\nnColumns=4\ninDegrees=yes\nendheader\n"
+      "time\thip_flexion_r\tknee_angle_r\thip_moment\n";
   char row[160];
   for (int k = 0; k <= 60; ++k) {
     const double t = k * 0.01;
@@ -204,8 +206,9 @@ TEST(MotionColumnsStudy, BadMotionColumnsNameTheKey) {
   } catch (const InputError& e) {
     // The study key that named it, and the file's label line.
     EXPECT_THAT(e.what(), HasSubstr("study.yaml: motion_columns.hip: expected a column of "));
-    EXPECT_THAT(e.what(), HasSubstr("train.sto:7 (got 'hip_flexion_l', which it does not have; available: time, hip_flexion_r, "
-                                    "knee_angle_r, hip_moment)"));
+    EXPECT_THAT(e.what(),
+                HasSubstr("train.sto:7 (got 'hip_flexion_l', which it does not have; available: time, hip_flexion_r, "
+                          "knee_angle_r, hip_moment)"));
   }
 }
 
@@ -216,15 +219,18 @@ const std::string kGait10Id = kRoot + "/tests/data/opensim-gait10dof/subject01_w
 
 /// A thigh-driven study of Winter's participant over the Gait10dof walk, with `records`
 /// (the train: and validate: lines) and `columns` (the motion_columns line).
-std::string entryStudy(const std::string& records, const std::string& columns =
-                           "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt}\n") {
+std::string entryStudy(
+    const std::string& records,
+    const std::string& columns =
+        "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r, knee_sign: -1, pelvis_tilt: pelvis_tilt}\n") {
   return "kind: swing-diagnosis\nparticipant: " + kRoot + "/participants/winter.yaml\nbase_model: " + kRoot +
          "/models/passive-knee.yaml\ndrive: thigh_kinematics\n" + columns + records;
 }
 
-const std::string kTwoSwings =
-    "train:\n  - {name: right1, file: " + kGait10Ik + ", toe_off_s: 0.25, heel_contact_s: 0.7, inverse_dynamics: " + kGait10Id +
-    "}\nvalidate:\n  - {name: right2, file: " + kGait10Ik + ", toe_off_s: 1.35, heel_contact_s: 1.8}\n";
+const std::string kTwoSwings = "train:\n  - {name: right1, file: " + kGait10Ik +
+                               ", toe_off_s: 0.25, heel_contact_s: 0.7, inverse_dynamics: " + kGait10Id +
+                               "}\nvalidate:\n  - {name: right2, file: " + kGait10Ik +
+                               ", toe_off_s: 1.35, heel_contact_s: 1.8}\n";
 
 /// Whether two entry lists say the same (paths compared as files: the writer may write an
 /// absolute path outside the study's folder as a relative one).
@@ -260,10 +266,12 @@ TEST(StudyRecordEntries, TwoSwingsOfOneFileAreTwoRecordsAndRoundTrip) {
   // ID's times lag the IK's by up to 1.5 us; the moment changes by under 0.01 N m in that).
   const MotionTable id = readMotionTable(kGait10Id);
   const auto& idTime = id.column("time");
-  const auto near = std::find_if(idTime.begin(), idTime.end(), [&](double t) { return std::abs(t - (0.25 + r.time[1])) < 2e-6; });
+  const auto near =
+      std::find_if(idTime.begin(), idTime.end(), [&](double t) { return std::abs(t - (0.25 + r.time[1])) < 2e-6; });
   ASSERT_NE(near, idTime.end());
   constexpr double kSkewTol = 0.01;  // N m
-  EXPECT_NEAR(r.kneeMoment[1], -id.column("knee_angle_r_moment")[static_cast<std::size_t>(near - idTime.begin())], kSkewTol);
+  EXPECT_NEAR(r.kneeMoment[1], -id.column("knee_angle_r_moment")[static_cast<std::size_t>(near - idTime.begin())],
+              kSkewTol);
   EXPECT_FALSE(std::isnan(r.kneeMoment.front()));
   EXPECT_TRUE(notes.empty()) << notes.front();
   const auto plant = loadDiagnosisPlant(study, 0);
@@ -278,9 +286,9 @@ TEST(StudyRecordEntries, TwoSwingsOfOneFileAreTwoRecordsAndRoundTrip) {
   EXPECT_EQ(back.motionColumns->pelvisTilt, "pelvis_tilt");
 
   // Plain entries stay plain; `swing: K` is kept for the swing finder; the name defaults to the stem.
-  const DiagnosisStudy mixed = parse(entryStudy("train: [" + kGait10Ik + "]\nvalidate:\n  - {file: " + kGait10Ik +
-                                                ", swing: 2, name: second}\n"),
-                                     path);
+  const DiagnosisStudy mixed = parse(
+      entryStudy("train: [" + kGait10Ik + "]\nvalidate:\n  - {file: " + kGait10Ik + ", swing: 2, name: second}\n"),
+      path);
   EXPECT_EQ(mixed.train.front().displayName(), "subject01_walk_IK");
   EXPECT_EQ(mixed.validate.front().swing, 2);
   const std::string mixedText = formatDiagnosisStudyYaml(mixed, dir);
@@ -292,8 +300,8 @@ TEST(StudyRecordEntries, TwoSwingsOfOneFileAreTwoRecordsAndRoundTrip) {
 
 TEST(StudyRecordEntries, WarningsNameTheKeyThatFixesThem) {
   // knee_sign forgotten, pelvis tilt not read: both said, each naming its key.
-  const DiagnosisStudy study = loadDiagnosisStudy(
-      writeMotionStudy("warnings", entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r}\n")));
+  const DiagnosisStudy study = loadDiagnosisStudy(writeMotionStudy(
+      "warnings", entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r}\n")));
   const auto plant = loadDiagnosisPlant(study, 0);
   std::string all;
   for (const auto& w : plant->warnings()) all += w + "\n";
@@ -308,14 +316,18 @@ TEST(StudyRecordEntries, BadEntriesNameFileKeyExpectedAndFound) {
               HasSubstr("study.yaml:8: validate: two records share the name 'a'"));
   EXPECT_THAT(errorOfStudy("stems", entryStudy("train: [" + kGait10Ik + "]\nvalidate: [" + kGait10Ik + "]\n")),
               HasSubstr("two records share the name 'subject01_walk_IK'"));
-  EXPECT_THAT(errorOfStudy("both", entryStudy("train:\n  - {file: " + kGait10Ik + ", swing: 1, toe_off_s: 0.2}\nvalidate: [x.mot]\n")),
+  EXPECT_THAT(errorOfStudy("both", entryStudy("train:\n  - {file: " + kGait10Ik +
+                                              ", swing: 1, toe_off_s: 0.2}\nvalidate: [x.mot]\n")),
               HasSubstr("study.yaml:7: train[0].swing: either swing (the K-th swing found in the file) or toe_off_s"));
-  EXPECT_THAT(errorOfStudy("swing0", entryStudy("train:\n  - {file: " + kGait10Ik + ", swing: 0}\nvalidate: [x.mot]\n")),
-              HasSubstr("train[0].swing: expected a whole number from 1"));
-  EXPECT_THAT(errorOfStudy("csv", entryStudy("train:\n  - {file: a.csv, toe_off_s: 0.2}\nvalidate: [x.mot]\n")),
-              HasSubstr("train[0].file: toe_off_s, heel_contact_s, swing and inverse_dynamics cut an OpenSim .mot/.sto"));
-  EXPECT_THAT(errorOfStudy("unknown", entryStudy("train:\n  - {file: " + kGait10Ik + ", tow_off_s: 0.2}\nvalidate: [x.mot]\n")),
-              HasSubstr("train[0].tow_off_s: unknown key"));
+  EXPECT_THAT(
+      errorOfStudy("swing0", entryStudy("train:\n  - {file: " + kGait10Ik + ", swing: 0}\nvalidate: [x.mot]\n")),
+      HasSubstr("train[0].swing: expected a whole number from 1"));
+  EXPECT_THAT(
+      errorOfStudy("csv", entryStudy("train:\n  - {file: a.csv, toe_off_s: 0.2}\nvalidate: [x.mot]\n")),
+      HasSubstr("train[0].file: toe_off_s, heel_contact_s, swing and inverse_dynamics cut an OpenSim .mot/.sto"));
+  EXPECT_THAT(
+      errorOfStudy("unknown", entryStudy("train:\n  - {file: " + kGait10Ik + ", tow_off_s: 0.2}\nvalidate: [x.mot]\n")),
+      HasSubstr("train[0].tow_off_s: unknown key"));
 
   // At reading the records: times outside the file; an ID without the knee moment's label.
   const auto loadError = [](const std::string& name, const std::string& text) {
@@ -326,13 +338,19 @@ TEST(StudyRecordEntries, BadEntriesNameFileKeyExpectedAndFound) {
     }
     return std::string();
   };
-  EXPECT_THAT(loadError("outside", entryStudy("train:\n  - {file: " + kGait10Ik + ", toe_off_s: 2.2, heel_contact_s: 2.9}\n"
-                                              "validate:\n  - " + entry + "\n")),
-              HasSubstr("subject01_walk_IK.mot: heel_contact_s: expected a time after toe-off (2.2 s) and within the file; the "
-                        "file's time runs from 0 to 2.5 s (got 2.9 s)"));
-  EXPECT_THAT(loadError("nolabel", entryStudy("train:\n  - {file: " + kGait10Ik + ", toe_off_s: 0.2, heel_contact_s: 0.7, "
-                                              "inverse_dynamics: " + kGait10Ik + "}\nvalidate:\n  - " + entry + "\n")),
-              HasSubstr("subject01_walk_IK.mot:11: knee_angle_r_moment: column is missing (available: time, pelvis_tilt"));
+  EXPECT_THAT(
+      loadError("outside", entryStudy("train:\n  - {file: " + kGait10Ik +
+                                      ", toe_off_s: 2.2, heel_contact_s: 2.9}\n"
+                                      "validate:\n  - " +
+                                      entry + "\n")),
+      HasSubstr("subject01_walk_IK.mot: heel_contact_s: expected a time after toe-off (2.2 s) and within the file; the "
+                "file's time runs from 0 to 2.5 s (got 2.9 s)"));
+  EXPECT_THAT(
+      loadError("nolabel", entryStudy("train:\n  - {file: " + kGait10Ik +
+                                      ", toe_off_s: 0.2, heel_contact_s: 0.7, "
+                                      "inverse_dynamics: " +
+                                      kGait10Ik + "}\nvalidate:\n  - " + entry + "\n")),
+      HasSubstr("subject01_walk_IK.mot:11: knee_angle_r_moment: column is missing (available: time, pelvis_tilt"));
 }
 
 }  // namespace
@@ -385,15 +403,18 @@ TEST(StudyRecordSwingNumber, AForceFileThatFailsItsChecksIsBlamedNotTheKinematic
   StudyRecord entry;
   entry.path = ik.path;
   entry.swing = 1;
-  EXPECT_THAT(swingsim::testing::inputErrorOf([&] { resolveRecordTimes(entry, columns, ik, grf); }),
-              HasSubstr("subject01_walk1_grf.mot: 1_ground_force_vy: expected the force's stance and swing to match the leg's "
-                        "kinematics"));
+  EXPECT_THAT(
+      swingsim::testing::inputErrorOf([&] { resolveRecordTimes(entry, columns, ik, grf); }),
+      HasSubstr("subject01_walk1_grf.mot: 1_ground_force_vy: expected the force's stance and swing to match the leg's "
+                "kinematics"));
   // Asked for, the kinematics give the events and the study's notes say so.
   grf.fallbackToKinematics = true;
   std::vector<std::string> notes;
   const MotionColumns cut = resolveRecordTimes(entry, columns, ik, grf, std::nullopt, &notes);
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_THAT(notes[0], HasSubstr("gait2392_subject01_walk1_ik: events from the kinematics, not the force (fallback_to_kinematics)"));
+  EXPECT_THAT(
+      notes[0],
+      HasSubstr("gait2392_subject01_walk1_ik: events from the kinematics, not the force (fallback_to_kinematics)"));
   EXPECT_EQ(cut.toeOffTime, findSwings(ik, columns, std::nullopt).front().toeOff);
   // A stance-only cut of the file holds no swing: said as such, with the rules used.
   MotionTable stance = ik;
@@ -404,9 +425,12 @@ TEST(StudyRecordSwingNumber, AForceFileThatFailsItsChecksIsBlamedNotTheKinematic
 }
 
 TEST(StudyRecordSwingNumber, AStudyStatesTheGaitAndTheFallbackAndTheyRoundTrip) {
-  const std::string grf = "grf: {file: " + kDemoData + "subject01_walk1_grf.mot, fallback_to_kinematics: true}\ngait: running\n";
-  const std::string path = writeMotionStudy("gait", entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: "
-                                                                           "knee_angle_r, knee_sign: -1}\n" + grf));
+  const std::string grf =
+      "grf: {file: " + kDemoData + "subject01_walk1_grf.mot, fallback_to_kinematics: true}\ngait: running\n";
+  const std::string path = writeMotionStudy("gait", entryStudy(kTwoSwings,
+                                                               "motion_columns: {hip: hip_flexion_r, knee: "
+                                                               "knee_angle_r, knee_sign: -1}\n" +
+                                                                   grf));
   const DiagnosisStudy study = loadDiagnosisStudy(path);
   ASSERT_TRUE(study.gait.has_value());
   EXPECT_EQ(*study.gait, Gait::kRunning);
@@ -415,8 +439,10 @@ TEST(StudyRecordSwingNumber, AStudyStatesTheGaitAndTheFallbackAndTheyRoundTrip) 
   const std::string yaml = formatDiagnosisStudyYaml(study, fs::path(path).parent_path().string());
   EXPECT_THAT(yaml, HasSubstr("gait: running"));
   EXPECT_THAT(yaml, HasSubstr("fallback_to_kinematics: true"));
-  EXPECT_THAT(errorOfStudy("gait", entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r}\ngait: jogging\n")),
-              HasSubstr("study.yaml:6: gait: expected one of: walking, running (got 'jogging')"));
+  EXPECT_THAT(
+      errorOfStudy("gait",
+                   entryStudy(kTwoSwings, "motion_columns: {hip: hip_flexion_r, knee: knee_angle_r}\ngait: jogging\n")),
+      HasSubstr("study.yaml:6: gait: expected one of: walking, running (got 'jogging')"));
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ using swingsim::testing::slurp;
 
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 
-fs::path scratch(const std::string& name) { return swingsim::testing::freshTempDir("swingsim_generate_run_test", name); }
+fs::path scratch(const std::string& name) {
+  return swingsim::testing::freshTempDir("swingsim_generate_run_test", name);
+}
 
 // Two runs write the same bytes; the committed demo data are what the committed study makes.
 // They were written before the leg became two Simbody bodies (the foot part of the shank's

@@ -72,8 +72,9 @@ TEST(RunArguments, SeedNeedsAnAnalysis) {
     applyUncertaintyArguments(study, std::nullopt, 3, names);
     FAIL() << "a seed alone was taken";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "sweep(): seed: sets the seed of the uncertainty analysis, which needs uncertainty=N or "
-                           "an `uncertainty:` map in s.yaml (got seed=3 alone)");
+    EXPECT_STREQ(e.what(),
+                 "sweep(): seed: sets the seed of the uncertainty analysis, which needs uncertainty=N or "
+                 "an `uncertainty:` map in s.yaml (got seed=3 alone)");
   }
   applyUncertaintyArguments(study, 4, 3, names);
   EXPECT_EQ(study.uncertaintySamples, 4);

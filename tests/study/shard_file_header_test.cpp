@@ -159,8 +159,9 @@ TEST(ShardFileHeader, AFileOfAnotherRunIsRefusedKeyByKey) {
   EXPECT_EQ(refusalOf(expected), "accepted");
   ShardFileRun otherStudy = expected;
   otherStudy.study = "other";
-  EXPECT_EQ(refusalOf(otherStudy), "s1.json: study: expected \"tiny\" (the first shard, s0.json), found \"other\": "
-                                   "these belong to another run");
+  EXPECT_EQ(refusalOf(otherStudy),
+            "s1.json: study: expected \"tiny\" (the first shard, s0.json), found \"other\": "
+            "these belong to another run");
   ShardFileRun otherInputs = expected;
   otherInputs.inputsFingerprint = "fedcba9876543210";
   otherInputs.studyPath = "elsewhere/tiny.yaml";

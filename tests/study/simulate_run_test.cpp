@@ -76,10 +76,12 @@ TEST(SimulateRun, TheSummaryPrintsTheRunsOwnNumbers) {
   const SwingOptions options = makeSimulateOptions(std::nullopt, std::nullopt);
   const SimulateRun run = runSimulate(loadParticipant(kRoot + "/participants/p1.yaml"), knee, 0.0, {}, options);
   const std::string text = formatSimulateSummary(run, knee, options);
-  EXPECT_EQ(text.rfind(run.setup.participant.name + ", knee lowered 0.000 m, knee model " + knee.name + "\n", 0), 0u) << text;
+  EXPECT_EQ(text.rfind(run.setup.participant.name + ", knee lowered 0.000 m, knee model " + knee.name + "\n", 0), 0u)
+      << text;
   EXPECT_NE(text.find(fmt("  swing time          %.4f s\n", run.result.swingTime)), std::string::npos) << text;
   EXPECT_NE(text.find(fmt("(%d realizations)", run.result.realizations)), std::string::npos) << text;
-  for (const auto& e : run.result.events) EXPECT_NE(text.find(fmt(" %s@%.4f", e.name.c_str(), e.time)), std::string::npos);
+  for (const auto& e : run.result.events)
+    EXPECT_NE(text.find(fmt(" %s@%.4f", e.name.c_str(), e.time)), std::string::npos);
   EXPECT_EQ(text.back(), '\n');
 }
 

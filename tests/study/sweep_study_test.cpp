@@ -14,7 +14,8 @@ const std::string kRoot = SWINGSIM_SOURCE_DIR;
 // write -> load to the same study, and writing again gives the same text.
 TEST(SweepStudyFormat, LoadWriteLoadGivesTheSameStudy) {
   std::vector<SweepStudy> studies;
-  for (const char* f : {"/studies/burkett2004.yaml", "/studies/burkett2004-proportional-com.yaml", "/studies/burkett2004-mauch.yaml"})
+  for (const char* f :
+       {"/studies/burkett2004.yaml", "/studies/burkett2004-proportional-com.yaml", "/studies/burkett2004-mauch.yaml"})
     studies.push_back(loadSweepStudy(kRoot + f));
   SweepStudy custom = studies.front();
   custom.description = "every optional key";
@@ -62,7 +63,8 @@ TEST(SweepStudyFormat, UncertaintyMapIsRead) {
   EXPECT_EQ(s.uncertaintySeed, 9);
   const SweepStudy unseeded = parseSweepStudy(studyWithUncertainty("{samples: 3}"), path);
   EXPECT_EQ(unseeded.uncertaintySeed, 1);
-  const SweepStudy none = parseSweepStudy("kind: knee-axis-sweep\nname: u\nparticipants: [../participants/p1.yaml]\n", path);
+  const SweepStudy none =
+      parseSweepStudy("kind: knee-axis-sweep\nname: u\nparticipants: [../participants/p1.yaml]\n", path);
   EXPECT_EQ(none.uncertaintySamples, 0);
 }
 

@@ -80,7 +80,8 @@ conditions: []
     parse(text, "studies/empty.yaml");
     FAIL() << "an empty condition list was accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "studies/empty.yaml:6: conditions: expected at least one condition (got an empty list)");
+    EXPECT_EQ(std::string(e.what()),
+              "studies/empty.yaml:6: conditions: expected at least one condition (got an empty list)");
   }
 }
 
@@ -89,10 +90,13 @@ conditions: []
 // are checked against its record's physical bounds (a toe-off rate within 20 rad/s).
 TEST(SwingKinematicsStudy, NoiseAndRatesOutsideTheirPlausibleRangeAreRefused) {
   const auto errorOf = [](const std::string& noise, const std::string& rate) {
-    const std::string text = "kind: swing-kinematics\nparticipant: ../participants/p1.yaml\n"
-                             "model: ../models/damping-table-default.yaml\nnoise_deg: " + noise +
-                             "\noutput_dir: out\nconditions: [{name: normal}]\nhidden_effects:\n"
-                             "  toe_off_velocity: {hip_rate_deg_s: 90, knee_rate_deg_s: " + rate + "}\n";
+    const std::string text =
+        "kind: swing-kinematics\nparticipant: ../participants/p1.yaml\n"
+        "model: ../models/damping-table-default.yaml\nnoise_deg: " +
+        noise +
+        "\noutput_dir: out\nconditions: [{name: normal}]\nhidden_effects:\n"
+        "  toe_off_velocity: {hip_rate_deg_s: 90, knee_rate_deg_s: " +
+        rate + "}\n";
     try {
       parse(text, "studies/inline.yaml");
     } catch (const InputError& e) {
@@ -101,11 +105,17 @@ TEST(SwingKinematicsStudy, NoiseAndRatesOutsideTheirPlausibleRangeAreRefused) {
     return std::string();
   };
   EXPECT_EQ(errorOf("0.5", "-45"), "");
-  EXPECT_EQ(errorOf("1e300", "-45").rfind("studies/inline.yaml:4: noise_deg: expected an angle noise in [0, 10] deg "
-                                          "(motion capture angles are good to about 1 deg)", 0), 0u)
+  EXPECT_EQ(errorOf("1e300", "-45")
+                .rfind("studies/inline.yaml:4: noise_deg: expected an angle noise in [0, 10] deg "
+                       "(motion capture angles are good to about 1 deg)",
+                       0),
+            0u)
       << errorOf("1e300", "-45");
-  EXPECT_EQ(errorOf("0.5", "1e9").rfind("studies/inline.yaml:8: hidden_effects.toe_off_velocity.knee_rate_deg_s: expected "
-                                        "a value within the effect's physical bounds [-1146, 1146]", 0), 0u)
+  EXPECT_EQ(errorOf("0.5", "1e9")
+                .rfind("studies/inline.yaml:8: hidden_effects.toe_off_velocity.knee_rate_deg_s: expected "
+                       "a value within the effect's physical bounds [-1146, 1146]",
+                       0),
+            0u)
       << errorOf("0.5", "1e9");
 }
 

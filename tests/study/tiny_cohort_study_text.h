@@ -10,7 +10,8 @@ namespace swingsim {
 inline std::string tinyCohortStudyText(int participants, const std::string& from = "", const std::string& to = "") {
   std::string text = R"(kind: cohort-sweep
 name: tiny-cohort
-participants: )" + std::to_string(participants) + R"(
+participants: )" + std::to_string(participants) +
+                     R"(
 seed: 3
 template: participants/p1.yaml
 lowering: {step_m: 0.05, max_m: 0.10}

@@ -20,7 +20,8 @@ namespace {
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 
 std::filesystem::path tempDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("swingsim_tuning_run_test-" + std::to_string(::getpid())) / name;
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("swingsim_tuning_run_test-" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -35,7 +36,8 @@ std::string slurp(const std::string& path) {
 // without the tuning code: the model file's text with a knee_effects map appended.
 SwingResult truthSwing(double lowering, double scale) {
   const std::string path = kRoot + "/models/damping-table-default.yaml";
-  const KneeModel model = parseKneeModel(slurp(path) + "knee_effects:\n  model_scale: " + std::to_string(scale) + "\n", path);
+  const KneeModel model =
+      parseKneeModel(slurp(path) + "knee_effects:\n  model_scale: " + std::to_string(scale) + "\n", path);
   SwingOptions options;
   options.trackImpactEnergy = true;  // simulate's options, as the tuning's swings
   return simulateSwing(makeSwingSetup(loadParticipant(kRoot + "/participants/p1.yaml"), model, lowering), options);
@@ -105,8 +107,8 @@ TEST(TuningRun, TheReportedSwingIsTheOneTheTunedFilesGive) {
   const KneeModel tuned = loadKneeModel((dir / "tuned-knee.yaml").string());
   SwingOptions options;
   options.trackImpactEnergy = true;
-  const SwingResult again =
-      simulateSwing(makeSwingSetup(loadParticipant(kRoot + "/participants/p1.yaml"), tuned, run.lowering, run.added), options);
+  const SwingResult again = simulateSwing(
+      makeSwingSetup(loadParticipant(kRoot + "/participants/p1.yaml"), tuned, run.lowering, run.added), options);
   EXPECT_EQ(again.swingTime, run.result.best.swingTime);
   EXPECT_EQ(again.peakKneeFlexion->flexion, run.result.best.peakKneeFlexion);
   EXPECT_EQ(*again.minToeClearance, run.result.best.minToeClearance);
@@ -187,14 +189,17 @@ TEST(TuningRun, AMeasuredThighDriveWhoseRecordEndsInsideTheSettleDwellIsTuned) {
       << "  shank: {length_m: 0.515, mass_kg: 0.785, com_from_distal_m: 0.260, inertia_kgm2: 0.0161}\n"
       << "  foot:  {length_m: 0.240, mass_kg: 1.030, com_from_distal_m: 0.140, inertia_kgm2: 0.0059}\n"
       << "knee_friction_Nm: 10\nknee_model: " << kRoot << "/models/damping-table-default.yaml\n"
-      << "swing_end: {thigh_target_flexion_deg: 10, zone_of_stability_deg: 6, time_limit_s: 1.5, settle_dwell_s: 0.15}\n"
+      << "swing_end: {thigh_target_flexion_deg: 10, zone_of_stability_deg: 6, time_limit_s: 1.5, settle_dwell_s: "
+         "0.15}\n"
       << "toe_clearance: {gait: walking}\ndrive: thigh_kinematics\n"
-      << "thigh_kinematics: {file: " << kRoot << "/tests/data/opensim-gait10dof/subject01_walk_IK.mot, hip: hip_flexion_l, "
+      << "thigh_kinematics: {file: " << kRoot
+      << "/tests/data/opensim-gait10dof/subject01_walk_IK.mot, hip: hip_flexion_l, "
       << "knee: knee_angle_l, knee_sign: -1, swing: 1}\n";
   const std::string study = (dir / "study.yaml").string();
-  std::ofstream(study) << "kind: knee-tuning\nparticipant: " << participant
-                       << "\nknobs:\n  - key: knee_effects.model_scale\n    range: [0.5, 4]\n    log_scale: true\n"
-                       << "targets:\n  swing_time_s: {value: 0.55}\n  peak_knee_flexion_deg: {min: 50, max: 75, hard: true}\n";
+  std::ofstream(study)
+      << "kind: knee-tuning\nparticipant: " << participant
+      << "\nknobs:\n  - key: knee_effects.model_scale\n    range: [0.5, 4]\n    log_scale: true\n"
+      << "targets:\n  swing_time_s: {value: 0.55}\n  peak_knee_flexion_deg: {min: 50, max: 75, hard: true}\n";
   SweepRunControl control;
   const TuningRun run = runTuningStudy(loadTuningStudy(study), 0, control);
   ASSERT_TRUE(run.result.best.ran) << run.result.best.failure;

@@ -17,7 +17,8 @@ namespace {
 const std::string kRoot = SWINGSIM_SOURCE_DIR;
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / ("swingsim_tuning_study_test-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("swingsim_tuning_study_test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / name) << text;
   return (dir / name).string();
@@ -56,7 +57,9 @@ TEST(TuningStudy, LoadsTheShippedExample) {
 
 TEST(TuningStudy, RefusesAKnobThatIsNotANumericKeyOfTheKneeModel) {
   const std::string m = refusal(study("  - key: damping_table.speed_rule\n    range: [0, 1]\n", kTargets));
-  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:5: knobs\[0\]\.key: expected .*numeric key.*not a number)"))) << m;
+  EXPECT_TRUE(
+      std::regex_search(m, std::regex(R"(study\.yaml:5: knobs\[0\]\.key: expected .*numeric key.*not a number)")))
+      << m;
   const std::string list = refusal(study("  - key: damping_table.moment_Nm\n    range: [0, 1]\n", kTargets));
   EXPECT_NE(list.find("knobs[0].key: "), std::string::npos) << list;
   EXPECT_NE(list.find("moment_Nm[0]"), std::string::npos) << list;
@@ -64,11 +67,14 @@ TEST(TuningStudy, RefusesAKnobThatIsNotANumericKeyOfTheKneeModel) {
 
 TEST(TuningStudy, RefusesARangeWhoseMinIsNotBelowItsMax) {
   const std::string m = refusal(study("  - key: lowering_m\n    range: [0.05, 0.05]\n", kTargets));
-  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:6: knobs\[0\]\.range: expected min < max \(got 0\.05 >= 0\.05\))"))) << m;
+  EXPECT_TRUE(std::regex_search(
+      m, std::regex(R"(study\.yaml:6: knobs\[0\]\.range: expected min < max \(got 0\.05 >= 0\.05\))")))
+      << m;
 }
 
 TEST(TuningStudy, RefusesARangeTheKneeModelOrTheLegCannotTake) {
-  const std::string stop = refusal(study("  - key: hyperextension_stop.restitution\n    range: [0.2, 1.5]\n", kTargets));
+  const std::string stop =
+      refusal(study("  - key: hyperextension_stop.restitution\n    range: [0.2, 1.5]\n", kTargets));
   EXPECT_NE(stop.find("knobs[0].range: every value of the range must be usable; at 1.5"), std::string::npos) << stop;
   const std::string leg = refusal(study("  - key: lowering_m\n    range: [0, 0.9]\n", kTargets));
   EXPECT_NE(leg.find("knobs[0].range: every value of the range must be usable; at 0.9"), std::string::npos) << leg;
@@ -79,13 +85,16 @@ TEST(TuningStudy, RefusesARangeTheKneeModelOrTheLegCannotTake) {
 TEST(TuningStudy, AKnobsResolutionIsStatedOrToldByItsUnitElseRefused) {
   const std::string m = refusal(study("  - key: hyperextension_stop.restitution\n    range: [0.2, 0.9]\n", kTargets));
   EXPECT_NE(m.find("knobs[0].resolution: the unit of hyperextension_stop.restitution cannot be told from its key"),
-            std::string::npos) << m;
+            std::string::npos)
+      << m;
   const std::string wide = refusal(study("  - key: lowering_m\n    range: [0, 0.05]\n    resolution: 0.1\n", kTargets));
-  EXPECT_NE(wide.find("knobs[0].resolution: expected a step no larger than the range (0.05) (got 0.1)"), std::string::npos)
+  EXPECT_NE(wide.find("knobs[0].resolution: expected a step no larger than the range (0.05) (got 0.1)"),
+            std::string::npos)
       << wide;
   const TuningStudy stated = loadTuningStudy(writeTemp(
       "study.yaml", study("  - key: hyperextension_stop.restitution\n    range: [0.2, 0.9]\n    resolution: 0.05\n"
-                          "  - key: lowering_m\n    range: [0, 0.05]\n", kTargets)));
+                          "  - key: lowering_m\n    range: [0, 0.05]\n",
+                          kTargets)));
   EXPECT_DOUBLE_EQ(stated.knobs[0].resolution, 0.05);
   EXPECT_DOUBLE_EQ(stated.knobs[1].resolution, 0.001);  // 1 mm, by the unit
 }
@@ -110,7 +119,10 @@ TEST(TuningStudy, RefusesSoundLimbWhenTheParticipantHasNoSoundLimbSwingTime) {
   }
   const std::string participant = writeTemp("no-sound-limb.yaml", text);
   const std::string m = refusal(study(kKnobs, kTargets, participant));
-  EXPECT_TRUE(std::regex_search(m, std::regex(R"(study\.yaml:8: targets\.swing_time_s\.value: sound_limb needs the participant's sound_limb_swing_time_s, which .*no-sound-limb\.yaml does not give)")))
+  EXPECT_TRUE(std::regex_search(
+      m,
+      std::regex(
+          R"(study\.yaml:8: targets\.swing_time_s\.value: sound_limb needs the participant's sound_limb_swing_time_s, which .*no-sound-limb\.yaml does not give)")))
       << m;
   EXPECT_EQ(refusal(study(kKnobs, "  swing_time_s: {value: 0.5}\n", participant)), "");  // a number needs no key
 }
@@ -136,7 +148,8 @@ TEST(TuningStudy, UncertaintyAsksForTheChanceOfMeetingTheLimits) {
   EXPECT_EQ(asked.chance.samples, 50);
   EXPECT_EQ(asked.chance.seed, 3u);
   const std::string zero = refusal(study(kKnobs, kTargets) + "uncertainty: {samples: 0}\n");
-  EXPECT_TRUE(std::regex_search(zero, std::regex(R"(study\.yaml:9: uncertainty\.samples: expected a whole number of samples from 1)")))
+  EXPECT_TRUE(std::regex_search(
+      zero, std::regex(R"(study\.yaml:9: uncertainty\.samples: expected a whole number of samples from 1)")))
       << zero;
   const std::string typo = refusal(study(kKnobs, kTargets) + "uncertainty: {sample: 50}\n");
   EXPECT_NE(typo.find("uncertainty"), std::string::npos) << typo;

@@ -66,7 +66,7 @@ UncertaintySwingsFile roundTrip(const UncertaintySwingsFile& f, const std::strin
 TEST(UncertaintySwingsFile, ReadsBackBitForBit) {
   UncertaintySwingsFile f = makeShard(1, 3);
   f.times.swingTimes[1] = std::numeric_limits<double>::quiet_NaN();  // ran, no swing end
-  f.times.finished[2] = 0;                                            // not run
+  f.times.finished[2] = 0;                                           // not run
   f.times.swingTimes[2] = std::numeric_limits<double>::quiet_NaN();
   const UncertaintySwingsFile back = roundTrip(f, "partial.json");
   EXPECT_TRUE(back.isPartial());
@@ -92,7 +92,7 @@ TEST(UncertaintySwingsFile, ReadsBackBitForBit) {
 TEST(UncertaintySwingsFile, WritesTheTextItAlwaysHas) {
   UncertaintySwingsFile f = makeShard(1, 3);
   f.times.swingTimes[1] = std::numeric_limits<double>::quiet_NaN();  // ran, no swing end
-  f.times.finished[2] = 0;                                            // not run
+  f.times.finished[2] = 0;                                           // not run
   EXPECT_EQ(formatUncertaintySwingsJson(f), R"({
   "format": "swingsim uncertainty swings",
   "format_version": 2,
@@ -150,14 +150,15 @@ TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
   EXPECT_THAT(refuse("a.json", "not json"), HasSubstr(p + "a.json: expected the JSON of an uncertainty swings file"));
   EXPECT_THAT(refuse("b.json", replace("\"seed\": 5", "\"seed\": -5")),
               HasSubstr(p + "b.json: seed: expected a whole number from 0 to"));
-  EXPECT_THAT(refuse("c.json", replace("\"seed\": 5,", "")),
-              HasSubstr(p + "c.json: seed: expected the key"));
+  EXPECT_THAT(refuse("c.json", replace("\"seed\": 5,", "")), HasSubstr(p + "c.json: seed: expected the key"));
   EXPECT_THAT(refuse("d.json", replace("\"partial\": false", "\"partial\": true")),
               HasSubstr(p + "d.json: partial: expected false (no swing is in not_run), found true"));
   EXPECT_THAT(refuse("e.json", replace("\"index\": 0", "\"index\": 2")),
               HasSubstr(p + "e.json: shard.index: expected a whole number from 0 to 1, found 2"));
-  EXPECT_THAT(refuse("f.json", replace("\"last_swing\": 5", "\"last_swing\": 6")),
-              HasSubstr(p + "f.json: swing_times_s: expected a list of 6 swing times (last_swing - first_swing), found a list of 5"));
+  EXPECT_THAT(
+      refuse("f.json", replace("\"last_swing\": 5", "\"last_swing\": 6")),
+      HasSubstr(
+          p + "f.json: swing_times_s: expected a list of 6 swing times (last_swing - first_swing), found a list of 5"));
   EXPECT_THAT(refuse("g.json", replace("\"format_version\": 2", "\"format_version\": 3")),
               HasSubstr(p + "g.json: format_version: expected 2 (this file was written by a newer swingsim: read it "
                             "with that version), found 3"));
@@ -167,9 +168,10 @@ TEST(UncertaintySwingsFile, MalformedFilesNameFileKeyExpectedAndFound) {
   partial.times.finished[2] = 0;
   std::string notRun = formatUncertaintySwingsJson(partial);
   notRun.replace(notRun.rfind("    5\n"), 6, "    9\n");
-  EXPECT_THAT(refuse("g3.json", notRun),
-              HasSubstr(p + "g3.json: not_run[0]: expected a swing index from first_swing to last_swing - 1 (3 to 6 - 1), "
-                        "found 9"));
+  EXPECT_THAT(
+      refuse("g3.json", notRun),
+      HasSubstr(p + "g3.json: not_run[0]: expected a swing index from first_swing to last_swing - 1 (3 to 6 - 1), "
+                    "found 9"));
 }
 
 TEST(UncertaintySwingsFile, EditedSwingTimesAreRefusedByRangeAndChecksum) {
@@ -216,13 +218,16 @@ TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {
     return std::string("accepted");
   };
   EXPECT_THAT(refusal({set[0], set[2]}), HasSubstr("missing K = 1"));
-  EXPECT_THAT(refusal({set[0], set[1], set[1], set[2]}), HasSubstr(set[1].path + ": shard.index: expected each shard once"));
+  EXPECT_THAT(refusal({set[0], set[1], set[1], set[2]}),
+              HasSubstr(set[1].path + ": shard.index: expected each shard once"));
   UncertaintySwingsFile otherSeed = set[1];
   otherSeed.run.seed = 6;
-  EXPECT_THAT(refusal({set[0], otherSeed, set[2]}), HasSubstr(": seed: expected 5 (the first shard, " + set[0].path + "), found 6"));
+  EXPECT_THAT(refusal({set[0], otherSeed, set[2]}),
+              HasSubstr(": seed: expected 5 (the first shard, " + set[0].path + "), found 6"));
   UncertaintySwingsFile otherN = set[1];
   otherN.run.samples = 3;
-  EXPECT_THAT(refusal({set[0], otherN, set[2]}), HasSubstr(": samples: expected 2 (the first shard, " + set[0].path + "), found 3"));
+  EXPECT_THAT(refusal({set[0], otherN, set[2]}),
+              HasSubstr(": samples: expected 2 (the first shard, " + set[0].path + "), found 3"));
   UncertaintySwingsFile otherStudy = set[2];
   otherStudy.run.inputsFingerprint = "0000000000000000";
   EXPECT_THAT(refusal({set[0], set[1], otherStudy}), HasSubstr(": inputs_fingerprint: expected 0123456789abcdef"));
@@ -231,7 +236,8 @@ TEST(UncertaintySwingsFile, MergeNeedsEveryShardOfOneAnalysisOnce) {
   EXPECT_THAT(refusal({set[0], set[1], otherTable}), HasSubstr(": assumptions_fingerprint: expected fedcba9876543210"));
   UncertaintySwingsFile unfinished = set[1];
   unfinished.times.finished[0] = 0;
-  EXPECT_THAT(refusal({set[0], unfinished, set[2]}), HasSubstr(": partial: expected false (a finished shard), found true"));
+  EXPECT_THAT(refusal({set[0], unfinished, set[2]}),
+              HasSubstr(": partial: expected false (a finished shard), found true"));
   UncertaintySwingsFile whole = set[0];
   whole.sharded = false;
   EXPECT_THAT(refusal({whole, set[1], set[2]}), HasSubstr(": shard: expected {\"index\": K, \"count\": N}"));

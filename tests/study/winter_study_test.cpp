@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -64,7 +64,8 @@ TEST(WinterStudy, KneeMomentColumnHasSwingsimsSign) {
   ASSERT_EQ(swing1.kneeMoment.size(), 28u);
   for (std::size_t i = 0; i < winters.size(); ++i) EXPECT_DOUBLE_EQ(swing1.kneeMoment[i], winters[i]);
   const double r = calcCorrelation(ours, winters);
-  std::printf("inverse dynamics of Winter's swing with participants/winter.yaml vs Winter's knee moment: r = %.2f\n", r);
+  std::printf("inverse dynamics of Winter's swing with participants/winter.yaml vs Winter's knee moment: r = %.2f\n",
+              r);
   EXPECT_GT(r, 0.5);
 }
 
@@ -74,9 +75,10 @@ TEST(WinterStudy, PassiveKneeDoesNotExplainAMuscleDrivenSwing) {
   const auto plant = loadDiagnosisPlant(study, 8);
   const Diagnosis dg = runDiagnosis(*plant, study.settings);
   const double noise = dg.recordNoise.front();
-  std::printf("Winter: noise %.2f deg; base train %.2f deg, held out %.2f deg; final held out %.2f deg; %zu accepted; %s\n",
-              noise, dg.baseline.trainRmse, dg.baseline.validationRmse.front(), dg.final.validationRmse.front(),
-              dg.accepted.size(), dg.verdict.c_str());
+  std::printf(
+      "Winter: noise %.2f deg; base train %.2f deg, held out %.2f deg; final held out %.2f deg; %zu accepted; %s\n",
+      noise, dg.baseline.trainRmse, dg.baseline.validationRmse.front(), dg.final.validationRmse.front(),
+      dg.accepted.size(), dg.verdict.c_str());
   // The measured thigh and a passive hinge already follow the knee within a few degrees
   // (Winter's knee swings through 67 deg)...
   EXPECT_LT(dg.baseline.trainRmse, 3.0);
@@ -118,10 +120,11 @@ std::string writeStudy(const std::string& name, std::string body) {
 }
 
 TEST(SwingStudyDrive, HipMomentDriveNeedsAHipMomentAndSaysWhatElseWorks) {
-  const std::string path = writeStudy("test-winter-hip-drive.yaml",
-                                      "kind: swing-diagnosis\nparticipant: S/participants/winter.yaml\n"
-                                      "base_model: S/models/passive-knee.yaml\n"
-                                      "train: [S/studies/data/winter-swing/swing1.csv]\nvalidate: [S/studies/data/winter-swing/swing2.csv]\n");
+  const std::string path = writeStudy(
+      "test-winter-hip-drive.yaml",
+      "kind: swing-diagnosis\nparticipant: S/participants/winter.yaml\n"
+      "base_model: S/models/passive-knee.yaml\n"
+      "train: [S/studies/data/winter-swing/swing1.csv]\nvalidate: [S/studies/data/winter-swing/swing2.csv]\n");
   try {
     const DiagnosisStudy study = loadDiagnosisStudy(path);
     loadDiagnosisPlant(study, 8);
@@ -133,10 +136,11 @@ TEST(SwingStudyDrive, HipMomentDriveNeedsAHipMomentAndSaysWhatElseWorks) {
     EXPECT_NE(what.find("drive: thigh_kinematics"), std::string::npos) << what;
   }
   std::remove(path.c_str());
-  const std::string bad = writeStudy("test-winter-bad-drive.yaml",
-                                     "kind: swing-diagnosis\nparticipant: S/participants/winter.yaml\n"
-                                     "base_model: S/models/passive-knee.yaml\ndrive: thigh\n"
-                                     "train: [S/studies/data/winter-swing/swing1.csv]\nvalidate: [S/studies/data/winter-swing/swing2.csv]\n");
+  const std::string bad = writeStudy(
+      "test-winter-bad-drive.yaml",
+      "kind: swing-diagnosis\nparticipant: S/participants/winter.yaml\n"
+      "base_model: S/models/passive-knee.yaml\ndrive: thigh\n"
+      "train: [S/studies/data/winter-swing/swing1.csv]\nvalidate: [S/studies/data/winter-swing/swing2.csv]\n");
   try {
     loadDiagnosisStudy(bad);
     ADD_FAILURE() << "expected an InputError";
@@ -150,11 +154,12 @@ TEST(SwingStudyDrive, HipMomentDriveNeedsAHipMomentAndSaysWhatElseWorks) {
 TEST(SwingStudyDrive, SeveralTrainingTrialsShareOneModelAndWholeTrialsAreHeldOut) {
   // Two training trials fit one set of model parameters (each keeps only
   // its own toe-off state); the held-out trial is judged whole.
-  const std::string path = writeStudy("test-two-trials.yaml",
-                                      "kind: swing-diagnosis\nparticipant: S/participants/p1.yaml\n"
-                                      "base_model: S/models/damping-table-default.yaml\n"
-                                      "train: [S/studies/data/diagnose-demo-swing/normal.csv, S/studies/data/diagnose-demo-swing/slow.csv]\n"
-                                      "validate: [S/studies/data/diagnose-demo-swing/fast.csv]\n");
+  const std::string path =
+      writeStudy("test-two-trials.yaml",
+                 "kind: swing-diagnosis\nparticipant: S/participants/p1.yaml\n"
+                 "base_model: S/models/damping-table-default.yaml\n"
+                 "train: [S/studies/data/diagnose-demo-swing/normal.csv, S/studies/data/diagnose-demo-swing/slow.csv]\n"
+                 "validate: [S/studies/data/diagnose-demo-swing/fast.csv]\n");
   const DiagnosisStudy study = loadDiagnosisStudy(path);
   std::remove(path.c_str());
   const auto plant = loadDiagnosisPlant(study, 8);
@@ -169,7 +174,8 @@ TEST(SwingStudyDrive, SeveralTrainingTrialsShareOneModelAndWholeTrialsAreHeldOut
   const SwingRecord slow = readSwingRecord(kSource + "/studies/data/diagnose-demo-swing/slow.csv");
   EXPECT_EQ(both.trainResidual[0].size(), normal.time.size());
   EXPECT_EQ(both.trainResidual[1].size(), slow.time.size());
-  std::printf("two training trials: knee RMSE %.3f deg, held-out fast %.3f deg\n", both.trainRmse, both.validationRmse[0]);
+  std::printf("two training trials: knee RMSE %.3f deg, held-out fast %.3f deg\n", both.trainRmse,
+              both.validationRmse[0]);
   // The Simbody check runs along every trial, to its end (a hip-moment swing that has not
   // settled when its record ends is still compared).
   const std::string check = plant->verify(*both.model);

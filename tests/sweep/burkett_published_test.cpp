@@ -32,13 +32,15 @@ TEST(BurkettPublished, Table4AtTheStandardLocationRepeatsTable3) {
     EXPECT_EQ(p.table4.front().model, p.table3Model) << p.name;
     EXPECT_EQ(p.table4.front().measuredProsthetic, p.table3Measured) << p.name;
     EXPECT_GT(p.table3MeasuredSd, 0.0) << p.name;
-    EXPECT_LT(p.table3MeasuredSd, 0.2 * p.table3Measured) << p.name << ": a trial SD well below the mean (at most 12 %)";
+    EXPECT_LT(p.table3MeasuredSd, 0.2 * p.table3Measured)
+        << p.name << ": a trial SD well below the mean (at most 12 %)";
   }
 }
 
 TEST(BurkettPublished, LoweringsIncreaseAndThePredictedOptimumIsTheModelsFastestRow) {
   for (const auto& p : publishedParticipants()) {
-    for (std::size_t i = 1; i < p.table4.size(); ++i) EXPECT_GT(p.table4[i].lowering, p.table4[i - 1].lowering) << p.name;
+    for (std::size_t i = 1; i < p.table4.size(); ++i)
+      EXPECT_GT(p.table4[i].lowering, p.table4[i - 1].lowering) << p.name;
     const auto fastest = std::min_element(p.table4.begin(), p.table4.end(),
                                           [](const auto& a, const auto& b) { return a.model < b.model; });
     EXPECT_EQ(fastest->lowering, p.predictedBestLowering) << p.name;

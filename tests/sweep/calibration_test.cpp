@@ -20,7 +20,8 @@ namespace {
 constexpr double kTable3Tolerance = 0.005;  // s
 
 TEST(Calibration, StoredParticipantsReproduceTable3) {
-  for (const char* file : {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml"}) {
+  for (const char* file :
+       {"participants/p1.yaml", "participants/p2.yaml", "participants/p3.yaml", "participants/p4.yaml"}) {
     const Participant loaded = loadParticipant(file);
     SwingSetup setup = makeSwingSetup(loaded, loadKneeModel(loaded.kneeModelPath));
     const PublishedParticipant* pub = findPublished(setup.participant.name);

@@ -8,9 +8,9 @@
 
 #include <cmath>
 
+#include "closed_form_swing.h"
 #include "core/units.h"
 #include "sweep/tuning_analysis.h"
-#include "closed_form_swing.h"
 
 namespace swingsim {
 namespace {
@@ -96,11 +96,12 @@ TEST(KneeTuningLimits, AWindowNoStartPointHitsIsFoundAndItsSoftOptimumTaken) {
   // constrained optimum is a = 0.7 on the window's upper edge b = 0.51.
   const Fake f{[](double a, double) { return 0.4 + 0.1 * a; }, [](double, double b) { return 1.0 + 10 * kDeg * b; },
                [](double, double b) { return 0.1 + 0.01 * b; }};
-  const std::vector<TuningTarget> targets = {softValue(TuningQuantity::kSwingTime, 0.47, 1),
-                                             softValue(TuningQuantity::kMinToeClearance, 0.109, 1),
-                                             hardWindow(TuningQuantity::kPeakKneeFlexion, 1.0 + 5 * kDeg, 1.0 + 5.1 * kDeg)};
+  const std::vector<TuningTarget> targets = {
+      softValue(TuningQuantity::kSwingTime, 0.47, 1), softValue(TuningQuantity::kMinToeClearance, 0.109, 1),
+      hardWindow(TuningQuantity::kPeakKneeFlexion, 1.0 + 5 * kDeg, 1.0 + 5.1 * kDeg)};
   const TuningResult r = runKneeTuning(kUnitKnobs, targets, makeEvaluator(f), {});
-  for (const TuningPoint& p : r.startSet) ASSERT_FALSE(p.feasible()) << "a start point hit the window: b = " << p.knobs[1];
+  for (const TuningPoint& p : r.startSet)
+    ASSERT_FALSE(p.feasible()) << "a start point hit the window: b = " << p.knobs[1];
   expectOnTheLimit(r, 2);
   // a is free of the limit: the polish meets its target (1 % of a scale unit: 1e-3 of a).
   EXPECT_NEAR(r.best.knobs[0], 0.7, 1e-3);

@@ -7,8 +7,8 @@
 #include <atomic>
 #include <cmath>
 
-#include "sweep/tuning_analysis.h"
 #include "closed_form_swing.h"
+#include "sweep/tuning_analysis.h"
 
 namespace swingsim {
 namespace {
@@ -29,10 +29,12 @@ constexpr double kRecoveryTol = 1e-4;
 
 TEST(KneeTuning, RecoversTheSettingsThatMadeTheTargets) {
   const Fake f{[](double a, double b) { return 0.4 + 0.1 * a + 0.03 * b; },
-               [](double a, double b) { return 1.0 + 0.3 * a - 0.05 * b; }, {}};
+               [](double a, double b) { return 1.0 + 0.3 * a - 0.05 * b; },
+               {}};
   const double a = 0.7, b = 2.5;  // truth, away from the range middles
-  const auto r = runKneeTuning(kKnobs, {valueTarget(TuningQuantity::kSwingTime, f.time(a, b)),
-                                        valueTarget(TuningQuantity::kPeakKneeFlexion, f.peak(a, b))},
+  const auto r = runKneeTuning(kKnobs,
+                               {valueTarget(TuningQuantity::kSwingTime, f.time(a, b)),
+                                valueTarget(TuningQuantity::kPeakKneeFlexion, f.peak(a, b))},
                                makeEvaluator(f), {});
   ASSERT_TRUE(r.feasible);
   EXPECT_NEAR(r.best.knobs[0], a, kRecoveryTol * 1);
@@ -60,7 +62,8 @@ TEST(KneeTuning, TwoKnobsOneTargetIsReportedAsARidge) {
 
 TEST(KneeTuning, AHardLimitNoSettingMeetsIsReportedWithItsMiss) {
   // Peak flexion at most 1.3 rad (a = 1); the limit asks for 2 rad: missed by 0.7 rad.
-  const Fake f{[](double a, double b) { return 0.4 + 0.1 * a + 0.03 * b; }, [](double a, double) { return 1.0 + 0.3 * a; }, {}};
+  const Fake f{
+      [](double a, double b) { return 0.4 + 0.1 * a + 0.03 * b; }, [](double a, double) { return 1.0 + 0.3 * a; }, {}};
   TuningTarget limit;
   limit.quantity = TuningQuantity::kPeakKneeFlexion;
   limit.lower = 2.0;
@@ -112,7 +115,8 @@ TEST(KneeTuning, AgreesWithAFineGridSearchOnTwoKnobs) {
   // A curved valley with its minimum inside the box: cost (T - 0.45)^2 / 0.01^2 + (P - 1.1)^2 / (1 deg)^2.
   const std::vector<TuningKnob> knobs = {{"a", 0, 1, false}, {"b", 0, 1, false}};
   const Fake f{[](double a, double b) { return 0.4 + 0.08 * a * a + 0.05 * b; },
-               [](double a, double b) { return 1.0 + 0.2 * a - 0.1 * b * b + 0.1 * a * b; }, {}};
+               [](double a, double b) { return 1.0 + 0.2 * a - 0.1 * b * b + 0.1 * a * b; },
+               {}};
   const std::vector<TuningTarget> targets = {valueTarget(TuningQuantity::kSwingTime, 0.45),
                                              valueTarget(TuningQuantity::kPeakKneeFlexion, 1.1)};
   const auto r = runKneeTuning(knobs, targets, makeEvaluator(f), {});
@@ -133,7 +137,8 @@ TEST(KneeTuning, AgreesWithAFineGridSearchOnTwoKnobs) {
 
 TEST(KneeTuning, TheSameSeedGivesTheSameResultOnAnyThreadCount) {
   const Fake f{[](double a, double b) { return 0.4 + 0.1 * a + 0.03 * b; },
-               [](double a, double b) { return 1.0 + 0.3 * a - 0.05 * b; }, {}};
+               [](double a, double b) { return 1.0 + 0.3 * a - 0.05 * b; },
+               {}};
   const std::vector<TuningTarget> targets = {valueTarget(TuningQuantity::kSwingTime, 0.5)};
   TuningSettings one, two;
   one.jobs = 1;

@@ -88,7 +88,8 @@ TEST(MeasuredValidation, Table4ErrorsAndTheLeaveOneOutPredictionAreWhatTheSwings
 TEST(MeasuredValidation, StudyKeyIsCheckedAndStoredIsTheDefault) {
   const std::string head = "kind: knee-axis-sweep\nname: t\nparticipants: [../participants/p1.yaml]\n";
   EXPECT_EQ(parseSweepStudy(head, "studies/t.yaml").calibrateTo, CalibrationTarget::kStored);
-  EXPECT_EQ(parseSweepStudy(head + "calibrate_to: measured\n", "studies/t.yaml").calibrateTo, CalibrationTarget::kMeasured);
+  EXPECT_EQ(parseSweepStudy(head + "calibrate_to: measured\n", "studies/t.yaml").calibrateTo,
+            CalibrationTarget::kMeasured);
   try {
     parseSweepStudy(head + "calibrate_to: measurd\n", "studies/t.yaml");
     FAIL() << "accepted a misspelled calibrate_to";

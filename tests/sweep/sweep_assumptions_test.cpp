@@ -153,8 +153,8 @@ TEST(SweepAssumptions, ShapeEntriesDoNotApplyToATabulatedHipMoment) {
   v.participant.hipMoment.times = {0, 0.2, 0.4};
   v.participant.hipMoment.moments = {0, 30, 0};
   for (const auto& a : sweepAssumptions()) {
-    const bool shape = a.key == "hip_extension_ratio" || a.key == "hip_flexion_duration" ||
-                       a.key == "hip_extension_duration";
+    const bool shape =
+        a.key == "hip_extension_ratio" || a.key == "hip_flexion_duration" || a.key == "hip_extension_duration";
     EXPECT_EQ(a.calcRange(v).applicable, !shape) << a.key;
   }
 }

@@ -148,7 +148,8 @@ TEST(SweepSymmetry, UncertaintyIntervalContainsTheNominalAndCountsSamplesNotReac
     // Samples 0-6 shift the curve by -12 .. +12 ms; 7 and 8 lift it 200 ms (never reaches
     // 0.45 s); 9 ends no swing.
     double offset = 0;
-    if (run.kind == UncertaintyRun::Kind::kSample) offset = run.sample < 7 ? -0.012 + 0.004 * static_cast<double>(run.sample) : 0.2;
+    if (run.kind == UncertaintyRun::Kind::kSample)
+      offset = run.sample < 7 ? -0.012 + 0.004 * static_cast<double>(run.sample) : 0.2;
     const bool noEnd = run.kind == UncertaintyRun::Kind::kSample && run.sample == 9;
     for (std::size_t k = 0; k < run.lowerings.size(); ++k) {
       times.swingTimes[run.firstSwing + k] = noEnd ? kNaN : 0.50 - 0.4 * run.lowerings[k] + offset;

@@ -1,7 +1,7 @@
 // The knee-axis sweep: published behaviour, pinned optimum, and thread-count invariance.
-#include "study/sweep_study.h"
-#include "io/json_file.h"
 #include "sweep/sweep.h"
+#include "io/json_file.h"
+#include "study/sweep_study.h"
 
 #include <gtest/gtest.h>
 
@@ -33,7 +33,14 @@ TEST(Sweep, LoweringsAreTenMillimetreStepsCappedByTheShank) {
   EXPECT_DOUBLE_EQ(l[0], 0.0);
   EXPECT_NEAR(l[1], 0.010, 1e-12);
   EXPECT_LE(l.back(), calcMaxLowering(s.participants[0]) + 1e-9);
-  const SweepResults r = runSweep([&] { auto t = s; t.participants.resize(1); t.loweringStep = 0.1; return t; }(), 1);
+  const SweepResults r = runSweep(
+      [&] {
+        auto t = s;
+        t.participants.resize(1);
+        t.loweringStep = 0.1;
+        return t;
+      }(),
+      1);
   EXPECT_FALSE(r.participants[0].capNote.empty());
 }
 
@@ -66,7 +73,8 @@ TEST(Sweep, HyperextensionStopKeepsTheKneeWithinFourDegrees) {
   for (const auto& ps : sweepOnce().participants) {
     for (const auto& pt : ps.points) {
       if (!pt.ok) continue;
-      for (double q : pt.result.trajectory.kneeFlexion) ASSERT_GT(q, -4 * kDegToRad) << ps.name << " at " << pt.lowering;
+      for (double q : pt.result.trajectory.kneeFlexion)
+        ASSERT_GT(q, -4 * kDegToRad) << ps.name << " at " << pt.lowering;
     }
   }
 }
@@ -130,7 +138,8 @@ TEST(Sweep, StudyComRuleOverridesEveryParticipant) {
   // lowering it sits (L - c)/L of the new length below the knee.
   const Participant& p1 = s.participants[0];
   const LegGeometry g = calcLegGeometry(p1, 0.1);
-  EXPECT_NEAR(g.shankCom, (p1.shank.length - p1.shank.comFromDistal) / p1.shank.length * (p1.shank.length - 0.1), 1e-12);
+  EXPECT_NEAR(g.shankCom, (p1.shank.length - p1.shank.comFromDistal) / p1.shank.length * (p1.shank.length - 0.1),
+              1e-12);
 }
 
 TEST(Sweep, IntegratorMethodKeyChoosesTheIntegratorAndRejectsUnknownNames) {
@@ -145,7 +154,8 @@ TEST(Sweep, IntegratorMethodKeyChoosesTheIntegratorAndRejectsUnknownNames) {
     parseSweepStudy(head + "  method: euler\n", "t.yaml");
     FAIL() << "an unknown method must be refused";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("method: expected one of: dormand-prince, runge-kutta-merson"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("method: expected one of: dormand-prince, runge-kutta-merson"),
+              std::string::npos)
         << e.what();
   }
 }

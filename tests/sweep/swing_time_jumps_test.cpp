@@ -124,7 +124,8 @@ TEST(SwingTimeJumps, AJumpThatKeepsTheBounceCountIsFoundByItsSizeAndNamedByTheTh
   const std::vector<SwingTimeJump> jumps = findSwingTimeJumps(grid, grazingThigh, kZone);
   ASSERT_EQ(jumps.size(), 1u);
   EXPECT_NEAR(jumps[0].calcLowering(), kThighJumpAt, kJumpBracket);
-  EXPECT_EQ(jumps[0].describeCause(), "the thigh's flexion grazing its target: it reaches it 0.100 s later on one side");
+  EXPECT_EQ(jumps[0].describeCause(),
+            "the thigh's flexion grazing its target: it reaches it 0.100 s later on one side");
 }
 
 TEST(SwingTimeJumps, ASteepButContinuousStepIsNoJump) {

@@ -44,7 +44,8 @@ TEST(TerminalImpact, FindingsAreWhatTheSweepsShow) {
     EXPECT_EQ(c.participant, study.participants[i].name);
     EXPECT_EQ(c.frictionMoment, study.participants[i].kneeFriction);
     for (const auto& pt : results.participants[i].points)
-      EXPECT_EQ(contains(c.bounceLowerings, pt.lowering), pt.ok && pt.result.bounce) << c.participant << " " << pt.lowering;
+      EXPECT_EQ(contains(c.bounceLowerings, pt.lowering), pt.ok && pt.result.bounce)
+          << c.participant << " " << pt.lowering;
     for (const auto& pt : withoutFriction.participants[i].points)
       EXPECT_EQ(contains(c.bounceLoweringsWithoutFriction, pt.lowering), pt.ok && pt.result.bounce)
           << c.participant << " " << pt.lowering << " without friction";
@@ -70,7 +71,8 @@ TEST(TerminalImpact, FindingsAreWhatTheSweepsShow) {
     if (!c.bounceLowerings.empty()) continue;
     EXPECT_FALSE(c.bounceLoweringsWithoutFriction.empty()) << c.participant;
     bool named = false;
-    for (const auto& f : c.findings) named = named || f.find("What stops the bounce: the knee friction") != std::string::npos;
+    for (const auto& f : c.findings)
+      named = named || f.find("What stops the bounce: the knee friction") != std::string::npos;
     EXPECT_TRUE(named) << c.participant;
   }
 
@@ -78,7 +80,8 @@ TEST(TerminalImpact, FindingsAreWhatTheSweepsShow) {
   for (const auto& p : j["participants"]) {
     ASSERT_TRUE(p.contains("terminal_impact")) << p["name"];
     const Json& t = p["terminal_impact"];
-    for (const char* key : {"knee_friction_Nm", "bounce_lowerings_m", "interior_optimum", "without_friction", "impacts", "findings"})
+    for (const char* key :
+         {"knee_friction_Nm", "bounce_lowerings_m", "interior_optimum", "without_friction", "impacts", "findings"})
       EXPECT_TRUE(t.contains(key)) << key;
     EXPECT_TRUE(t["impacts"][0]["first_stop_impact"].contains("restitution"));
     EXPECT_TRUE(p["bounces"].is_array());

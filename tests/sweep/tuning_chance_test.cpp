@@ -68,7 +68,7 @@ TEST(TuningChance, CountsTheSamplesThatMeetEveryHardLimit) {
   // Below the nominal time: the samples that swing faster than the tuned leg.
   const TuningChance below = calcTuningChance(leg, {swingTimeWithin(0.1, nominal)}, options, 1);
   ASSERT_TRUE(below.ran);
-  EXPECT_GT(below.met, 0) << below.verdict;   // the assumptions move the time both ways
+  EXPECT_GT(below.met, 0) << below.verdict;  // the assumptions move the time both ways
   EXPECT_LT(below.met, 12) << below.verdict;
   EXPECT_EQ(below.met + below.misses.at(0) + below.failed, 12);
   EXPECT_LE(below.low, below.chance());

@@ -29,7 +29,11 @@ SwingResult plane(const std::vector<double>& x) {
 }
 
 TuningTarget peakAtMost90() {
-  return {TuningQuantity::kPeakKneeFlexion, 60 * kDegToRad, 90 * kDegToRad, true, 1,
+  return {TuningQuantity::kPeakKneeFlexion,
+          60 * kDegToRad,
+          90 * kDegToRad,
+          true,
+          1,
           tuningTargetScale(TuningQuantity::kPeakKneeFlexion)};
 }
 

@@ -18,8 +18,8 @@
 #include "io/participant_loader.h"
 #include "leg/leg_model.h"
 #include "study/sweep_study.h"
-#include "swing/knee_setup.h"
 #include "sweep/sweep_uncertainty.h"
+#include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 #include "swing_outcome.h"
 
@@ -49,8 +49,10 @@ TEST(EarlyFailure, ChangesNoSwingOfTheMonteCarloVariants) {
         // Both fail because the thigh never reaches its target.
         EXPECT_THAT(b.failure, HasSubstr("the thigh never reached its target flexion"));
         EXPECT_THAT(a.failure, HasSubstr("the thigh never reached its target flexion"));
-        if (a.failure.find("cannot end") != std::string::npos) ++failedEarly;
-        else ++failedAtLimit;
+        if (a.failure.find("cannot end") != std::string::npos)
+          ++failedEarly;
+        else
+          ++failedAtLimit;
       });
   std::printf("Monte Carlo variants: %d swings ended, %d never did: %d decided early, %d at the time limit\n", ended,
               failedEarly + failedAtLimit, failedEarly, failedAtLimit);

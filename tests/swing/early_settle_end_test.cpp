@@ -30,7 +30,7 @@ TEST(EarlySettleEnd, DecidesAsTheClosedFormClimbUnderAConstantHold) {
   law.add(std::make_unique<JointStop>(stop));
   const KneeClimb climb(law);
   const double edge = 5.5 * kDegToRad, knee = 2 * kDegToRad, mu = 5.0;  // mu: 1/(kg m^2), any
-  const double freeAcceleration = -80;                                   // rad/s^2
+  const double freeAcceleration = -80;                                  // rad/s^2
   const double critical = std::sqrt(2 * kHoldFraction * -freeAcceleration * (edge - knee));
   StepEnd e{};
   e.knee = knee;

@@ -12,11 +12,11 @@
 #include <limits>
 #include <sstream>
 
-#include "io/bench_csv.h"
 #include "../cli/run_swingsim.h"
+#include "core/input_error.h"
 #include "identify/bench_data.h"
 #include "identify/cylinder_fit.h"
-#include "core/input_error.h"
+#include "io/bench_csv.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "swing/knee_setup.h"
@@ -53,7 +53,8 @@ std::string runErrorOf(const SwingSetup& setup) {
 constexpr const char* kStatePattern = "at t = [0-9.]+ s: hip flexion -?[0-9.]+ deg \\(-?[0-9]+ deg/s\\), knee flexion";
 
 TEST(FailingRuns, IntegratorFailureGivesTimeStateAndCause) {
-  const SwingSetup setup = makeSwingSetup(loadParticipant("participants/p1.yaml"), std::make_shared<const BrokenKnee>());
+  const SwingSetup setup =
+      makeSwingSetup(loadParticipant("participants/p1.yaml"), std::make_shared<const BrokenKnee>());
   const std::string e = runErrorOf(setup);
   EXPECT_THAT(e, HasSubstr("P1: "));
   EXPECT_THAT(e, ::testing::ContainsRegex(kStatePattern));
@@ -119,7 +120,7 @@ TEST(FailingRuns, CliExitsOneAndWritesNothing) {
   std::ofstream(dir / "weak.yaml") << text;
   const swingsim::testing::CliRun run =
       swingsim::testing::runSwingsim(std::string("simulate ") + (dir / "weak.yaml").string() + " --out " +
-                          (dir / "out").string() + " --json " + (dir / "r.json").string());
+                                     (dir / "out").string() + " --json " + (dir / "r.json").string());
   const std::string& output = run.output;
   EXPECT_EQ(run.code, 1) << output;
   EXPECT_THAT(output, HasSubstr("swingsim: P1 at lowering 0 m: the swing cannot end"));
@@ -145,7 +146,9 @@ TEST(FailingRuns, SingularRegressionNamesThePhaseTheDataAndTheCause) {
   } catch (const RunError& e) {
     // Phase 2 follows the S2 latch, which only hyperextension sets: it is idle too.
     EXPECT_THAT(e.what(), ::testing::ContainsRegex("cannot fit the 4-phase model: phase 2 in [-0-9.e]+, phase 4 in "));
-    EXPECT_THAT(e.what(), HasSubstr(" of 1783 training samples (studies/data/mauch2014/normal.csv; piston position 6.31 to 33.3 mm"));
+    EXPECT_THAT(
+        e.what(),
+        HasSubstr(" of 1783 training samples (studies/data/mauch2014/normal.csv; piston position 6.31 to 33.3 mm"));
     EXPECT_THAT(e.what(), HasSubstr("singular regression"));
     EXPECT_THAT(e.what(), HasSubstr("Likely cause: the training record never enters those phases (no hyperextension"));
   }
@@ -162,20 +165,20 @@ TEST(FailingRuns, FitCliWithSingularRegressionExitsOneAndWritesNothing) {
     std::ofstream csv(dir / "far.csv");
     csv.precision(17);
     csv << "time_s,position_m,force_N\n";
-    for (std::size_t i = 0; i < d.time.size(); ++i) csv << d.time[i] << "," << d.position[i] << "," << d.force[i] << "\n";
+    for (std::size_t i = 0; i < d.time.size(); ++i)
+      csv << d.time[i] << "," << d.position[i] << "," << d.force[i] << "\n";
   }
-  std::ofstream(dir / "study.yaml") << "kind: cylinder-fit\nname: far\nmodels: [" << fs::absolute("models/mauch-4phase.yaml").string()
-                                    << "]\ntrain: [far.csv]\n";
+  std::ofstream(dir / "study.yaml") << "kind: cylinder-fit\nname: far\nmodels: ["
+                                    << fs::absolute("models/mauch-4phase.yaml").string() << "]\ntrain: [far.csv]\n";
   const swingsim::testing::CliRun run =
       swingsim::testing::runSwingsim(std::string("fit ") + (dir / "study.yaml").string() + " --out " +
-                          (dir / "out").string() + " --json " + (dir / "r.json").string());
+                                     (dir / "out").string() + " --json " + (dir / "r.json").string());
   const std::string& output = run.output;
   EXPECT_EQ(run.code, 1) << output;
   EXPECT_THAT(output, HasSubstr("swingsim: cannot fit the 4-phase model: phase 2 in "));
   EXPECT_FALSE(fs::exists(dir / "out"));
   EXPECT_FALSE(fs::exists(dir / "r.json"));
 }
-
 
 // Budgets: a swing past its realization or wall-clock budget stops with a
 // RunError naming the participant, the lowering, the integrator and what to change.
@@ -211,7 +214,9 @@ TEST(FailingRuns, WallClockBudgetStopsTheSwing) {
     simulateSwing(setup, options);
     ADD_FAILURE() << "no RunError";
   } catch (const RunError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("P1 at lowering 0.05 m: the swing was stopped after 0 s of computing (the limit for one swing"));
+    EXPECT_THAT(
+        e.what(),
+        HasSubstr("P1 at lowering 0.05 m: the swing was stopped after 0 s of computing (the limit for one swing"));
     EXPECT_THAT(e.what(), HasSubstr("with Simbody Runge-Kutta-Merson at accuracy 0.0001"));
   }
 }

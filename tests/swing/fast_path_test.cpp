@@ -10,9 +10,9 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "knee/joint_stop.h"
-#include "swing/knee_setup.h"
 #include "study/sweep_study.h"
 #include "sweep/sweep.h"
+#include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -64,12 +64,13 @@ TEST(FastPath, SameSwingTimesAsThePlainPathForAllParticipantsAndLowerings) {
       EXPECT_LT(diff, kConvergedTol) << f.name << " at " << a.lowering << " m";
       EXPECT_EQ(a.result.bounce, b.result.bounce) << f.name << " at " << a.lowering << " m";
       ASSERT_TRUE(a.result.peakKneeFlexion && b.result.peakKneeFlexion) << f.name << " at " << a.lowering;
-      EXPECT_NEAR(a.result.peakKneeFlexion->time, b.result.peakKneeFlexion->time, kConvergedTol) << f.name << " at " << a.lowering;
+      EXPECT_NEAR(a.result.peakKneeFlexion->time, b.result.peakKneeFlexion->time, kConvergedTol)
+          << f.name << " at " << a.lowering;
     }
     EXPECT_EQ(f.best, p.best) << f.name;
   }
-  std::printf("fast vs plain path: %d swings, largest swing time difference %.2e s (tolerance %.0e s)\n", compared, maxDiff,
-              kConvergedTol);
+  std::printf("fast vs plain path: %d swings, largest swing time difference %.2e s (tolerance %.0e s)\n", compared,
+              maxDiff, kConvergedTol);
 }
 
 // The counters say where a swing's realizations go: up to the step where the knee entered
@@ -144,8 +145,8 @@ TEST(FastPath, BounceFlagAndEventsAgreeWithThePlainPathOnAKneeThatBounces) {
     for (double restitution : {0.4, 0.6}) {
       KneeModel model = loadKneeModel(p.kneeModelPath);
       model.spec.stop.restitution = restitution;
-      const SwingSetup setup = makeSwingSetup(
-          p, KneeModel{model.path, model.name, makeKneeModelLaw(model.spec), model.spec});
+      const SwingSetup setup =
+          makeSwingSetup(p, KneeModel{model.path, model.name, makeKneeModelLaw(model.spec), model.spec});
       const SwingOptions plainOptions = makePlainPathOptions(kTightAccuracy, kTightEventWindow);
       const SwingResult fast = simulateSwing(setup);
       const SwingResult plain = simulateSwing(setup, plainOptions);

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <memory>
 
+#include "../independent/rk4_step.h"
 #include "core/units.h"
+#include "knee/joint_stop.h"
 #include "knee/knee_added_effects.h"
 #include "knee/knee_friction.h"
-#include "knee/joint_stop.h"
-#include "../independent/rk4_step.h"
 
 namespace swingsim {
 namespace {
@@ -40,7 +40,7 @@ double climbInTime(const KneeLaw& others, double q0, double w0, double trusted) 
     return -trusted * kHold + kMu * (trusted * std::min(m, 0.0) + std::max(m, 0.0));
   };
   double q = q0, w = w0;
-  const double h = 1e-6;  // s
+  const double h = 1e-6;      // s
   while (w > 0 && q < 1.0) {  // 1 rad: far past any edge
     testing::stepRk4(q, w, h, acc);
   }
@@ -137,7 +137,9 @@ TEST(KneeClimb, PartsWithStatesAreLeftOut) {
   const KneeClimb climb(law);
   const KneeClimb bare(law.part(1));
   for (double w : {0.3, 1.0, 2.0})
-    EXPECT_EQ(climb.canReach(0.5 * kDeg, w, kEdge, kMu, kHold, 0.5), bare.canReach(0.5 * kDeg, w, kEdge, kMu, kHold, 0.5)) << w;
+    EXPECT_EQ(climb.canReach(0.5 * kDeg, w, kEdge, kMu, kHold, 0.5),
+              bare.canReach(0.5 * kDeg, w, kEdge, kMu, kHold, 0.5))
+        << w;
 }
 
 TEST(KneeClimb, NoStopWithoutAJointStop) {

@@ -64,9 +64,10 @@ TEST(MicroprocessorKneeSwing, ReferenceIntegratorAgreesWithSimbody) {
   EXPECT_NEAR(end.swingTime, sim.swingTime, kSwingTimeTol);
   EXPECT_NEAR(end.peakKneeFlexion, sim.peakKneeFlexion->flexion, kAngleTol);
   EXPECT_NEAR(end.peakKneeFlexionTime, sim.peakKneeFlexion->time, kSwingTimeTol);
-  std::printf("microprocessor knee P1: max |knee diff| %.2e rad, |hip diff| %.2e rad; swing time Simbody %.9f s, "
-              "reference %.9f s; peak %.4f deg\n",
-              maxKneeDiff, maxHipDiff, sim.swingTime, end.swingTime, sim.peakKneeFlexion->flexion * kRadToDeg);
+  std::printf(
+      "microprocessor knee P1: max |knee diff| %.2e rad, |hip diff| %.2e rad; swing time Simbody %.9f s, "
+      "reference %.9f s; peak %.4f deg\n",
+      maxKneeDiff, maxHipDiff, sim.swingTime, end.swingTime, sim.peakKneeFlexion->flexion * kRadToDeg);
 }
 
 TEST(MicroprocessorKneeSwing, DefaultAccuracyHoldsAcrossTheTransitions) {
@@ -85,7 +86,8 @@ TEST(MicroprocessorKneeSwing, DefaultAccuracyHoldsAcrossTheTransitions) {
   EXPECT_NEAR(fast.swingTime, ref.swingTime, kTimeTol);
   EXPECT_NEAR(fast.peakKneeFlexion->flexion, ref.peakKneeFlexion->flexion, kPeakTol);
   std::printf("microprocessor knee P1, default accuracy vs 1e-10: swing time %.2e s, peak %.2e deg apart\n",
-              fast.swingTime - ref.swingTime, (fast.peakKneeFlexion->flexion - ref.peakKneeFlexion->flexion) * kRadToDeg);
+              fast.swingTime - ref.swingTime,
+              (fast.peakKneeFlexion->flexion - ref.peakKneeFlexion->flexion) * kRadToDeg);
 }
 
 TEST(MicroprocessorKneeSwing, P1SwingEndsThroughItsStatesInOrder) {
@@ -149,14 +151,14 @@ TEST(MicroprocessorKneeSwing, DissipativeKneeNeverAddsEnergy) {
   const KneeLawSum powered = makeKneeLaw(p, loadOsl());
   LegModel poweredLeg(calcLegGeometry(p, 0), powered, p.hipMoment, p.hipRange, 1.0);
   double maxPoweredWork = 0;
-  swingsim::testing::integrateAndObserve(poweredLeg.getSystem(), poweredLeg.makeInitialState(p.initial), 1e-8, 0.002,
-                                         0.8, [&](const SimTK::State& s) {
-                                           maxPoweredWork = std::max(maxPoweredWork, poweredLeg.getKneePartWork(s, 0));
-                                         });
+  swingsim::testing::integrateAndObserve(
+      poweredLeg.getSystem(), poweredLeg.makeInitialState(p.initial), 1e-8, 0.002, 0.8,
+      [&](const SimTK::State& s) { maxPoweredWork = std::max(maxPoweredWork, poweredLeg.getKneePartWork(s, 0)); });
   EXPECT_GT(maxPoweredWork, 0.1);
-  std::printf("dissipative knee P1 over 0.8 s: its work max %.2e J, final %.3f J; balance drift %.2e J; "
-              "powered, max work %.3f J\n",
-              maxMachineWork, machineWork, maxDrift, maxPoweredWork);
+  std::printf(
+      "dissipative knee P1 over 0.8 s: its work max %.2e J, final %.3f J; balance drift %.2e J; "
+      "powered, max work %.3f J\n",
+      maxMachineWork, machineWork, maxDrift, maxPoweredWork);
 }
 
 }  // namespace

@@ -13,11 +13,11 @@
 
 #include "core/input_error.h"
 #include "core/units.h"
+#include "io/knee_model_loader.h"
+#include "io/participant_loader.h"
+#include "knee/knee_expression.h"
 #include "leg/hip_path.h"
 #include "leg/thigh_motion.h"
-#include "io/knee_model_loader.h"
-#include "knee/knee_expression.h"
-#include "io/participant_loader.h"
 #include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 
@@ -33,7 +33,7 @@ constexpr double kAngleTol = 1e-6;  // rad
 // Simbody localizes each event within its window; the reference to 1e-12 s. With a 1e-9 s
 // window the swing ends may differ by the window plus the trajectory difference divided by
 // the knee's rate through the zone boundary (> 1 rad/s): 1e-6 s is a safe bound.
-constexpr double kEventWindow = 1e-9;  // s
+constexpr double kEventWindow = 1e-9;   // s
 constexpr double kSwingTimeTol = 1e-6;  // s
 
 Participant load(const std::string& stem) {
@@ -94,10 +94,11 @@ TEST_P(ReferenceVsSimbody, TrajectoryAndSwingTimeAgree) {
   EXPECT_NEAR(c.referencePeak, c.simbodyPeak, kAngleTol);
   RecordProperty("max_hip_diff_rad", std::to_string(c.maxHipDiff));
   RecordProperty("max_knee_diff_rad", std::to_string(c.maxKneeDiff));
-  std::printf("%s lowering %.2f m: max |hip diff| %.2e rad, max |knee diff| %.2e rad over %zu samples; "
-              "swing time Simbody %.9f s, reference %.9f s (diff %.1e s)\n",
-              stem, lowering, c.maxHipDiff, c.maxKneeDiff, c.samples, c.simbodySwingTime, c.referenceSwingTime,
-              c.referenceSwingTime - c.simbodySwingTime);
+  std::printf(
+      "%s lowering %.2f m: max |hip diff| %.2e rad, max |knee diff| %.2e rad over %zu samples; "
+      "swing time Simbody %.9f s, reference %.9f s (diff %.1e s)\n",
+      stem, lowering, c.maxHipDiff, c.maxKneeDiff, c.samples, c.simbodySwingTime, c.referenceSwingTime,
+      c.referenceSwingTime - c.simbodySwingTime);
 }
 
 INSTANTIATE_TEST_SUITE_P(Participants, ReferenceVsSimbody,
@@ -153,8 +154,10 @@ TEST(ReferenceSwing, IntegratesKneeLawStatesLikeSimbody) {
 TEST(ReferenceSwing, PassesTheHipAndTheTimeToAUsersExpressionLikeSimbody) {
   const Participant p = load("p1");
   KneeLawSum law = makeKneeLaw(p, loadKneeModel(p.kneeModelPath));
-  law.add(std::make_unique<KneeExpressionMoment>(KneeExpressionParams{
-      "hip and time", "-a * hip_rad * knee_rate_rad_s - b * time_s * sin(hip_rate_rad_s)", {{"a", "", 0.3}, {"b", "", 0.5}}}));
+  law.add(std::make_unique<KneeExpressionMoment>(
+      KneeExpressionParams{"hip and time",
+                           "-a * hip_rad * knee_rate_rad_s - b * time_s * sin(hip_rate_rad_s)",
+                           {{"a", "", 0.3}, {"b", "", 0.5}}}));
   const Comparison c = compare(p, std::make_shared<const KneeLawSum>(std::move(law)), 0.0);
   EXPECT_LT(c.maxHipDiff, kAngleTol);
   EXPECT_LT(c.maxKneeDiff, kAngleTol);
@@ -185,8 +188,8 @@ TEST(ReferenceSwing, ConservesEnergyWithKneeLawsAndHipMomentOff) {
   std::vector<double> times;
   for (int i = 0; i <= 200; ++i) times.push_back(0.01 * i);
   const ReferenceTrajectory tr = reference.integrate(initial, times, kTol, kTol);
-  const double e0 = reference.calcMechanicalEnergy(tr.hipFlexion[0], tr.kneeFlexion[0], tr.hipFlexionRate[0],
-                                                   tr.kneeFlexionRate[0]);
+  const double e0 =
+      reference.calcMechanicalEnergy(tr.hipFlexion[0], tr.kneeFlexion[0], tr.hipFlexionRate[0], tr.kneeFlexionRate[0]);
   constexpr double kEnergyScale = 10;  // J: m g L of the leg
   const double energyTol = 10 * kTol * kEnergyScale;
   double maxDrift = 0, kneeRange = 0;
@@ -266,8 +269,8 @@ TEST(ReferenceSwing, PendulumOnARisingSupportSwingsAsUnderGravityPlusItsAccelera
   const double period = calcMeanPeriod(tr.time, tr.kneeFlexion);
   const double expected = 2 * 3.141592653589793 * std::sqrt(j2 / (m2r2 * (kGravity + kRise)));
   const double fixedHip = 2 * 3.141592653589793 * std::sqrt(j2 / (m2r2 * kGravity));
-  std::printf("pendulum on a support rising at 1 g: period %.9f s, formula (g + a) %.9f s, fixed support %.6f s\n", period,
-              expected, fixedHip);
+  std::printf("pendulum on a support rising at 1 g: period %.9f s, formula (g + a) %.9f s, fixed support %.6f s\n",
+              period, expected, fixedHip);
   // Relative error: finite amplitude (amplitude^2 / 16 = 6e-8), crossing interpolation
   // (~1e-9 s over ~0.7 s) and the integrator; the fixed-support period is 41 % longer.
   constexpr double kPeriodRelTol = 2e-7;
@@ -334,7 +337,8 @@ struct IkSwing {
   std::vector<double> kneeFlexion;  // rad, measured (knee_angle_r with sign -1)
 };
 IkSwing readSubject01RightSwing() {
-  std::ifstream in(std::string(SWINGSIM_SOURCE_DIR) + "/studies/data/opensim-subject01/gait2392_subject01_walk1_ik.mot");
+  std::ifstream in(std::string(SWINGSIM_SOURCE_DIR) +
+                   "/studies/data/opensim-subject01/gait2392_subject01_walk1_ik.mot");
   std::string line;
   while (std::getline(in, line) && line.rfind("endheader", 0) != 0) {
   }
@@ -426,12 +430,14 @@ TEST(ReferenceSwing, MovingHipMatchesSimbodyOnSubject01sMeasuredPelvis) {
   atSamples(moving.trajectory, movingModel, movingMeasured);
   const double fixedVsMeasured = rmse(fixedModel, fixedMeasured, fixedModel.size());
   const double movingVsMeasured = rmse(movingModel, movingMeasured, movingModel.size());
-  std::printf("subject01 right swing on P1's knee: Simbody vs reference max |knee diff| %.2e deg; "
-              "fixed vs moving hip knee RMSE %.3f deg (max %.3f deg) over %.3f s; vs measured knee: fixed %.2f deg, "
-              "moving %.2f deg RMSE (%zu samples)\n",
-              kneeDiff * kRadToDeg, between * kRadToDeg, maxBetween * kRadToDeg, moving.trajectory.time[n - 1],
-              fixedVsMeasured * kRadToDeg, movingVsMeasured * kRadToDeg, movingModel.size());
-  EXPECT_GT(maxBetween, kMovingHipKneeTol) << "walking's pelvis motion must show in the knee for this to measure anything";
+  std::printf(
+      "subject01 right swing on P1's knee: Simbody vs reference max |knee diff| %.2e deg; "
+      "fixed vs moving hip knee RMSE %.3f deg (max %.3f deg) over %.3f s; vs measured knee: fixed %.2f deg, "
+      "moving %.2f deg RMSE (%zu samples)\n",
+      kneeDiff * kRadToDeg, between * kRadToDeg, maxBetween * kRadToDeg, moving.trajectory.time[n - 1],
+      fixedVsMeasured * kRadToDeg, movingVsMeasured * kRadToDeg, movingModel.size());
+  EXPECT_GT(maxBetween, kMovingHipKneeTol)
+      << "walking's pelvis motion must show in the knee for this to measure anything";
 }
 
 }  // namespace

@@ -34,8 +34,8 @@ struct Fixture {
     const Participant p = loadParticipant("participants/p1.yaml");
     setup = makeSwingSetup(p, loadKneeModel(p.kneeModelPath));
     setup.lowering = 0.05;
-    leg = std::make_unique<LegModel>(calcLegGeometry(p, setup.lowering, setup.added), *setup.knee, p.hipMoment, p.hipRange,
-                                     calcHipHeight(p), false);
+    leg = std::make_unique<LegModel>(calcLegGeometry(p, setup.lowering, setup.added), *setup.knee, p.hipMoment,
+                                     p.hipRange, calcHipHeight(p), false);
     InitialConditions at;
     at.hipFlexion = 0.2;
     at.hipFlexionRate = 1.0;
@@ -58,26 +58,30 @@ TEST(RunErrorText, DescribesTheStateInDegreesRounded) {
 TEST(RunErrorText, IntegratorFailureAndDivergenceNameTheParticipantStateAndCause) {
   const Fixture f;
   const std::string failed = f.text().integratorFailed(f.state, std::runtime_error("step size too small")).what();
-  EXPECT_EQ(failed, std::string("P1: the integrator failed ") + kState +
-                        " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; step size "
-                        "too small)");
+  EXPECT_EQ(failed,
+            std::string("P1: the integrator failed ") + kState +
+                " (likely cause: a knee or hip law too stiff for the accuracy, or an unphysical input; step size "
+                "too small)");
   EXPECT_EQ(std::string(f.text().diverged(f.state).what()),
-            std::string("P1: the simulation diverged ") + kState + " (likely cause: an unphysical input such as a near-zero inertia)");
+            std::string("P1: the simulation diverged ") + kState +
+                " (likely cause: an unphysical input such as a near-zero inertia)");
 }
 
 TEST(RunErrorText, OverBudgetSaysWhichBudgetAndWhatToChange) {
   Fixture f;
   f.options.maxRealizations = 1000;
   const std::string realizations = f.text().overBudget(RunBudget::Spent::kRealizations, 1234, f.state).what();
-  EXPECT_THAT(realizations, StartsWith("P1 at lowering 0.05 m: the swing was stopped after 1234 realizations (the budget "
-                                       "of one swing is 1000; a normal swing takes a few hundred) " +
-                                       std::string(kState)));
+  EXPECT_THAT(realizations,
+              StartsWith("P1 at lowering 0.05 m: the swing was stopped after 1234 realizations (the budget "
+                         "of one swing is 1000; a normal swing takes a few hundred) " +
+                         std::string(kState)));
   EXPECT_THAT(realizations, HasSubstr(std::string(integratorName(f.options.integrator)) + " at accuracy 1e-05"));
   EXPECT_THAT(realizations, EndsWith("check the knee model " + f.setup.participant.kneeModelPath +
                                      " for a value far too large (a unit mistake?)"));
   f.options.maxWallSeconds = 2.5;
-  EXPECT_THAT(f.text().overBudget(RunBudget::Spent::kWallClock, 1234, f.state).what(),
-              HasSubstr("stopped after 2.5 s of computing (the limit for one swing; a normal swing takes milliseconds)"));
+  EXPECT_THAT(
+      f.text().overBudget(RunBudget::Spent::kWallClock, 1234, f.state).what(),
+      HasSubstr("stopped after 2.5 s of computing (the limit for one swing; a normal swing takes milliseconds)"));
 }
 
 TEST(RunErrorText, RangeMessagesGiveTheLimitsAndTheCauseForTheDrive) {
@@ -98,14 +102,16 @@ TEST(RunErrorText, CannotEndGivesTheShortfallRounded) {
   const std::string m = f.text().cannotEnd(f.state, -2.5, 0.41234567, 1.23456789).what();
   EXPECT_THAT(m, StartsWith("P1 at lowering 0.05 m: the swing cannot end (decided " + std::string(kState) +
                             ", before the time limit of 0.8 s): the thigh never reached its target flexion of "));
-  EXPECT_THAT(m, HasSubstr("with the hip moment constant at -2.5 N m from t = 0.4123 s, the leg's energy is 1.2346 J short"));
+  EXPECT_THAT(
+      m, HasSubstr("with the hip moment constant at -2.5 N m from t = 0.4123 s, the leg's energy is 1.2346 J short"));
 }
 
 TEST(RunErrorText, DidNotEndNamesThePartOfTheEndRuleThatFailed) {
   const Fixture f;
   SwingLog log(0.05);
   const auto message = [&](const Fixture& at) { return std::string(at.text().didNotEnd(at.state, log).what()); };
-  const std::string prefix = "P1 at lowering 0.05 m: the swing did not end within the time limit of 0.8 s; " + std::string(kState) + "; ";
+  const std::string prefix =
+      "P1 at lowering 0.05 m: the swing did not end within the time limit of 0.8 s; " + std::string(kState) + "; ";
   EXPECT_THAT(message(f), StartsWith(prefix + "the thigh never reached its target flexion of "));
   EXPECT_THAT(message(f), EndsWith(" deg (hip moment too small for this leg?)"));
   EXPECT_THAT(message(Fixture(SwingDrive::kThighKinematics)),

@@ -9,9 +9,9 @@
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "study/sweep_study.h"
-#include "swing/knee_setup.h"
 #include "sweep/sweep.h"
 #include "sweep/sweep_uncertainty.h"
+#include "swing/knee_setup.h"
 #include "swing/swing_simulation.h"
 #include "swing_outcome.h"
 
@@ -32,7 +32,8 @@ Outcome run(const SwingSetup& setup, const SwingOptions& options) { return testi
 
 TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingForEveryLoweringAndBouncyKnees) {
   const SweepStudy study = loadSweepStudy("studies/burkett2004.yaml");
-  const KneeVariant variants[] = {{"as published", -1, true}, {"restitution 0.9, no friction", 0.9, false},
+  const KneeVariant variants[] = {{"as published", -1, true},
+                                  {"restitution 0.9, no friction", 0.9, false},
                                   {"restitution 0.6, no friction", 0.6, false}};
   SwingOptions early;
   early.recordTrajectory = false;
@@ -127,7 +128,8 @@ TEST(SettleDwell, EarlyEndGivesTheFullDwellsSwingOnTheMonteCarloVariants) {
         EXPECT_EQ(x.bounces, y.bounces);
         EXPECT_EQ(x.bounceHeight, y.bounceHeight);
         ASSERT_EQ(x.events.size(), y.events.size());
-        for (std::size_t i = 0; i < x.events.size(); ++i) EXPECT_EQ(x.events[i].time, y.events[i].time) << x.events[i].name;
+        for (std::size_t i = 0; i < x.events.size(); ++i)
+          EXPECT_EQ(x.events[i].time, y.events[i].time) << x.events[i].name;
       });
   std::printf("Monte Carlo variants: %d swings ended, %d ended early, %d of them before the hip moment was constant\n",
               compared, endedEarly, beforeHipConstant);

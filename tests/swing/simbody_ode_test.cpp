@@ -68,7 +68,8 @@ TEST(SimbodyOde, LegWithoutWorkTrackingHasOnlyTheLawStates) {
   ASSERT_EQ(tracked.numKneeWorkParts(), 3);
   EXPECT_EQ(tracked.makeInitialState(p.initial).getNZ(), 4);
 
-  const KneeLawSum mauch = makeKneeLaw(p, loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-4phase.yaml"));
+  const KneeLawSum mauch =
+      makeKneeLaw(p, loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-4phase.yaml"));
   const LegModel latch(calcLegGeometry(p, 0.0), mauch, p.hipMoment, p.hipRange, 1.0, /*trackWork=*/false);
   EXPECT_EQ(latch.makeInitialState(p.initial).getNZ(), mauch.numStates());
 }
@@ -76,8 +77,8 @@ TEST(SimbodyOde, LegWithoutWorkTrackingHasOnlyTheLawStates) {
 // Dormand-Prince over SimbodyOde against Simbody's RK-Merson on the same Mauch leg (S2
 // latch as a Z state), both far tighter than the agreement asked for.
 TEST(SimbodyOde, DormandPrinceAgreesWithSimbodysIntegratorOnTheMauchLeg) {
-  constexpr double kTol = 1e-11;    // both integrators
-  constexpr double kAgree = 1e-7;   // rad, rad/s and S2 after 0.3 s
+  constexpr double kTol = 1e-11;   // both integrators
+  constexpr double kAgree = 1e-7;  // rad, rad/s and S2 after 0.3 s
   const Participant p = loadP1();
   const KneeModel model = loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/mauch-4phase.yaml");
   const KneeLawSum knee = makeKneeLaw(p, model);

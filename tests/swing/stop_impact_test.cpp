@@ -26,8 +26,8 @@ Participant load(const std::string& stem) {
 }
 
 struct ChainImpact {
-  double exitRate = 0;   // rad/s, knee flexion rate when it leaves the stop
-  double stopWork = 0;   // J, work of the stop from contact to separation
+  double exitRate = 0;  // rad/s, knee flexion rate when it leaves the stop
+  double stopWork = 0;  // J, work of the stop from contact to separation
 };
 
 // The shank of P1's leg, thigh free (no hip moment), knee 0.5 deg above its stop and moving

@@ -7,9 +7,9 @@
 namespace swingsim {
 namespace {
 
-constexpr double kDwell = 0.1;   // s
-constexpr double kZone = 0.1;    // rad
-constexpr double kPeak = 1.0;    // rad, above the zone
+constexpr double kDwell = 0.1;  // s
+constexpr double kZone = 0.1;   // rad
+constexpr double kPeak = 1.0;   // rad, above the zone
 
 TEST(SwingEvents, EndIsTheEntryConfirmedByTheDwell) {
   SwingLog log(kDwell);

@@ -101,7 +101,7 @@ TEST(SwingRun, AnEndedSwingHasItsPeakAndClearance) {
 TEST(SwingRun, KneePastItsPhysicalRangeIsAFailedRun) {
   SwingSetup setup = winter();
   setup.participant.initial.kneeFlexionRate = 3000 * kDegToRad;  // the most the CLI accepts
-  setup.participant.initial.kneeStart = KneeStart::kInitial;       // not the record's knee at toe-off
+  setup.participant.initial.kneeStart = KneeStart::kInitial;     // not the record's knee at toe-off
   try {
     const SwingResult r = simulateSwing(setup);
     ADD_FAILURE() << "expected a RunError; the swing had " << r.trajectory.size() << " samples";

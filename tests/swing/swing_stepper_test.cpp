@@ -18,8 +18,8 @@ namespace {
 using namespace SimTK;
 
 constexpr double kAccuracy = 1e-8;
-constexpr double kSolutionTol = 1e-5;   // rad: global error of a 1 s run at kAccuracy, with margin
-constexpr double kRoundOff = 1e-12;     // s or rad: a step end placed on a time or a level
+constexpr double kSolutionTol = 1e-5;  // rad: global error of a 1 s run at kAccuracy, with margin
+constexpr double kRoundOff = 1e-12;    // s or rad: a step end placed on a time or a level
 
 // One body on a pin (q about z, inertia 1 kg m^2) with either a spring or a constant moment.
 struct Rig {
@@ -56,7 +56,8 @@ SwingOptions simbodyOptions(SwingIntegrator kind, bool events) {
 TEST(SwingStepper, MakeIntegratorGivesSimbodysOwnAndRefusesDormandPrince) {
   Oscillator rig;
   rig.system.realizeTopology();
-  EXPECT_EQ(std::string(makeIntegrator(SwingIntegrator::kRungeKuttaMerson, rig.system)->getMethodName()), "RungeKuttaMerson");
+  EXPECT_EQ(std::string(makeIntegrator(SwingIntegrator::kRungeKuttaMerson, rig.system)->getMethodName()),
+            "RungeKuttaMerson");
   EXPECT_EQ(std::string(makeIntegrator(SwingIntegrator::kRungeKuttaFeldberg, rig.system)->getMethodName()),
             "RungeKuttaFeldberg");
   EXPECT_EQ(std::string(makeIntegrator(SwingIntegrator::kRungeKutta3, rig.system)->getMethodName()), "RungeKutta3");

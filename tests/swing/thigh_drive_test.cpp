@@ -118,9 +118,10 @@ TEST(ThighDrive, SimbodyMatchesTheReferenceOnWintersMeasuredThigh) {
     momentRange = std::max(momentRange, std::abs(ref.hipMoment[i]));
   }
   const ReferenceSwingEnd end = reference.calcSwingEnd(p.initial, p.swingEnd, kReferenceTol, kReferenceTol);
-  std::printf("Winter thigh on P1: max |hip diff| %.1e rad, |knee diff| %.1e rad, |hip moment diff| %.2e N m (peak %.1f N m); "
-              "swing time Simbody %.6f s, reference %.6f s\n",
-              hipDiff, kneeDiff, momentDiff, momentRange, sim.swingTime, end.swingTime);
+  std::printf(
+      "Winter thigh on P1: max |hip diff| %.1e rad, |knee diff| %.1e rad, |hip moment diff| %.2e N m (peak %.1f N m); "
+      "swing time Simbody %.6f s, reference %.6f s\n",
+      hipDiff, kneeDiff, momentDiff, momentRange, sim.swingTime, end.swingTime);
   // The thigh follows the same spline in both: only integration error separates them.
   EXPECT_LT(hipDiff, 1e-6);
   EXPECT_LT(kneeDiff, 1e-6);
@@ -185,11 +186,12 @@ TEST(ThighDrive, RoundTripGivesBackTheKneeAndTheAppliedHipMoment) {
     }
   }
   momentRms = std::sqrt(momentRms / static_cast<double>(n));
-  std::printf("round trip over %zu samples (stop contact at %.3f s): knee max %.1e deg (before the contact %.1e deg); "
-              "hip moment max diff before the contact %.3f N m, from 20 ms after it %.3f N m, RMS over all %.3f N m, "
-              "of peak %.1f N m; swing time %.5f s vs %.5f s\n",
-              n, contact, kneeMax * kRadToDeg, preKnee * kRadToDeg, preMoment, postMoment, momentRms, momentPeak,
-              thigh.swingTime, moment.swingTime);
+  std::printf(
+      "round trip over %zu samples (stop contact at %.3f s): knee max %.1e deg (before the contact %.1e deg); "
+      "hip moment max diff before the contact %.3f N m, from 20 ms after it %.3f N m, RMS over all %.3f N m, "
+      "of peak %.1f N m; swing time %.5f s vs %.5f s\n",
+      n, contact, kneeMax * kRadToDeg, preKnee * kRadToDeg, preMoment, postMoment, momentRms, momentPeak,
+      thigh.swingTime, moment.swingTime);
   ASSERT_GT(n, 800u);
   // Measured: 4x denser samples (2 ms -> 0.5 ms) cut the knee error before the contact from
   // 0.034 to 0.002 deg and the moment error from 0.91 to 0.36 N m: the spline converges on
@@ -236,8 +238,9 @@ thigh_kinematics: ../studies/data/diagnose-demo-swing/normal.csv
   EXPECT_EQ(p.thighKinematics.time.front(), 0.0);
   // A hip moment with the thigh drive is a contradiction, said as such.
   try {
-    parseParticipant(text + "hip_moment: {profile: biphasic_sine, flexion_amplitude_Nm: 30, flexion_duration_s: 0.2, "
-                            "extension_amplitude_Nm: 15, extension_duration_s: 0.2}\n",
+    parseParticipant(text +
+                         "hip_moment: {profile: biphasic_sine, flexion_amplitude_Nm: 30, flexion_duration_s: 0.2, "
+                         "extension_amplitude_Nm: 15, extension_duration_s: 0.2}\n",
                      dir + "thigh-driven.yaml");
     ADD_FAILURE() << "expected an InputError";
   } catch (const InputError& e) {
