@@ -19,6 +19,10 @@ struct SocketPeer {
   int port = 0;         ///< the peer's
 };
 
+/// A peer's key, "ADDRESS:PORT": how the request deadline names a connection, from the
+/// socket's side (SocketPeer) and from the request's (Request::remote_addr, remote_port).
+inline std::string makePeerKey(const std::string& address, int port) { return address + ":" + std::to_string(port); }
+
 /// Every connected TCP socket of this process (/proc/self/fd, getsockname, getpeername).
 std::vector<SocketPeer> listSocketPeers();
 /// The descriptor `socket` as a connected TCP socket; nullopt if it is not one (any more).

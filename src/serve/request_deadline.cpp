@@ -54,14 +54,13 @@ void RequestDeadline::check(std::chrono::steady_clock::time_point now, const std
   std::set<std::string> open;
   for (const SocketPeer& p : peers) {
     if (p.localPort != port_) continue;
-    const std::string key = p.address + ":" + std::to_string(p.port);
+    const std::string key = makePeerKey(p.address, p.port);
     open.insert(key);
     auto [it, added] = connections_.try_emplace(key);
     Connection& c = it->second;
     if (added || c.socket != p.socket) {  // new (or the descriptor now serves another connection)
       c.socket = p.socket;
-      c.since = now;
-      if (added) c.answering = false;
+      c.since = now;  // a new connection is not answering (Connection's default)
     }
     if (!c.answering && now - c.since > deadline_) {
       // The descriptor is checked again just before: it may have been closed and reused since.

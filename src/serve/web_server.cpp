@@ -125,7 +125,7 @@ void WebServer::Impl::addRoutes() {
         RequestDeadline& d;
         std::string peer;
         ~Answering() { d.finish(peer); }
-      } answering{*deadline, req.remote_addr + ":" + std::to_string(req.remote_port)};
+      } answering{*deadline, makePeerKey(req.remote_addr, req.remote_port)};
       deadline->start(answering.peer);
       slots.acquire();
       struct Release {
