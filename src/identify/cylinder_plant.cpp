@@ -161,10 +161,10 @@ void setExpressionValues(MauchCylinderParams& p, const std::vector<ExpressionSlo
     p.effects.expressions[slots[k].expression].parameters[slots[k].parameter].value = v(static_cast<Eigen::Index>(k));
 }
 
-}  // namespace
-
-BoundedFitResult CylinderPlant::fitExpressions(MauchCylinderParams& params) const {
-  const std::vector<ExpressionSlot> slots = findExpressionSlots(params);
+// The parameters of the users' expressions at `slots` of `params` (written there), fitted
+// within their bounds with the coefficients projected out at the model's switch constants.
+BoundedFitResult fitExpressions(MauchCylinderParams& params, const std::vector<ExpressionSlot>& slots,
+                                const std::vector<BenchData>& train) {
   std::vector<BoundedParameter> bounds;
   for (const auto& s : slots) bounds.push_back(s.bounds);
   // Variable projection (Golub & Pereyra 1973): at each trial of the expressions'
@@ -175,7 +175,7 @@ BoundedFitResult CylinderPlant::fitExpressions(MauchCylinderParams& params) cons
     setExpressionValues(q, slots, v);
     Eigen::MatrixXd X;
     Eigen::VectorXd y;
-    buildRegression(q, train_, X, y);
+    buildRegression(q, train, X, y);
     const LinearFit f = fitLeastSquares(X, y);
     return Eigen::VectorXd(y - X * Eigen::Map<const Eigen::VectorXd>(f.coefficients.data(), X.cols()));
   };
@@ -183,6 +183,8 @@ BoundedFitResult CylinderPlant::fitExpressions(MauchCylinderParams& params) cons
   setExpressionValues(params, slots, r.x);
   return r;
 }
+
+}  // namespace
 
 PlantFit CylinderPlant::fit(const PlantModel& model) const {
   // With fit_switches, every candidate refits the switch widths and xhy too (a polish from
@@ -199,7 +201,7 @@ PlantFit CylinderPlant::fit(const PlantModel& model) const {
   MauchCylinderParams params = m.params;
   const std::vector<ExpressionSlot> slots = findExpressionSlots(params);
   BoundedFitResult expressions;
-  if (!slots.empty()) expressions = fitExpressions(params);
+  if (!slots.empty()) expressions = fitExpressions(params, slots, train_);
   const CylinderFit fitted = fitCylinder(params, train_, options);
   PlantFit s = summarize(fitted);
   s.model = std::make_shared<CylinderModel>(fitted.params, m.switchesFree, m.latchFree);

@@ -88,9 +88,6 @@ class CylinderPlant final : public DiagnosisPlant {
  private:
   /// A fitted model as the engine takes it: residuals, held-out RMSE, named constants.
   PlantFit summarize(const CylinderFit& fitted) const;
-  /// The parameters of the users' expressions in `params` (written there), fitted within
-  /// their bounds with the coefficients projected out at the model's switch constants.
-  BoundedFitResult fitExpressions(MauchCylinderParams& params) const;
   /// The joint fit of refitAccepted for one model structure.
   PlantFit fitJointly(const MauchCylinderParams& params, bool fitLatchRate) const;
 
