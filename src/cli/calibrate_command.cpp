@@ -1,12 +1,10 @@
 // swingsim calibrate PARTICIPANT.yaml... [--target S] [--dry-run]
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/command.h"
-#include "cli/option_checks.h"
 #include "core/output_paths.h"
 #include "study/calibration_run.h"
 

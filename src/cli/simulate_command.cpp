@@ -2,18 +2,14 @@
 //   [--hip-rate-deg-s DEG/S] [--knee-rate-deg-s DEG/S] [--knee-start measured|initial]
 //   [--integrator METHOD] [--accuracy A]
 //   [--json FILE] [--out DIR]
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
-#include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/plausible_ranges.h"
-#include "core/text_format.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
 #include "io/trajectory_writer.h"
