@@ -19,7 +19,7 @@ if [ $# -gt 0 ]; then
     case "$f" in tests/data/*) ;; src/*|python/src/*|tests/*|bench/*|fuzz/*)
       case "$f" in *.cpp|*.h) [ -f "$f" ] && files+=("$f") ;; esac ;; esac
   done
-elif [ -d .git ] || git rev-parse --git-dir >/dev/null 2>&1; then
+elif git rev-parse --git-dir >/dev/null 2>&1; then
   while IFS= read -r -d '' f; do files+=("$f"); done < <(git ls-files -z -- 'src/*.cpp' 'src/*.h' 'python/src/*.cpp' \
     'python/src/*.h' 'tests/*.cpp' 'tests/*.h' 'bench/*.cpp' 'bench/*.h' 'fuzz/*.cpp' 'fuzz/*.h' ':!tests/data/*')
 else
