@@ -38,6 +38,7 @@ Command addImportOsimCommand(CLI::App& app);
 Command addExportOsimCommand(CLI::App& app);
 Command addTuneCommand(CLI::App& app);
 Command addServeCommand(CLI::App& app);
+Command addPartsCommand(CLI::App& app);
 
 /// Declares `--flag VALUE` stored in `value` (left unset unless given), shown as `typeName`
 /// in --help. `value` must outlive the parse (a member of the command's argument struct).

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
                                          addFitCommand(app),        addCompareCommand(app),    addDiagnoseCommand(app),
                                          addGenerateCommand(app),   addMergeCommand(app),      addSwingsCommand(app),
                                          addImportOsimCommand(app), addExportOsimCommand(app), addTuneCommand(app),
-                                         addServeCommand(app)};
+                                         addServeCommand(app),      addPartsCommand(app)};
   // Set after adding the subcommands, which would inherit it.
   app.footer("'swingsim <command> --help' lists a command's options with their units and defaults.");
   if (argc < 2) {

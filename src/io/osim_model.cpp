@@ -499,8 +499,25 @@ void importFoot(const LegParts& leg, const OsimImportOptions& o, Participant& p,
       << "\n";
 }
 
-/// The prosthesis's masses given on the command line replace the model's shank and foot.
+/// The prosthesis's masses given on the command line replace the model's shank and foot:
+/// as masses, or as catalogue parts (the participant then names them, and its loader makes
+/// the segments from them).
 void replaceProsthesisMasses(const OsimImportOptions& o, Participant& p, std::ostream& why) {
+  if (o.parts) {
+    const ProsthesisPartsChoice& c = *o.parts;
+    if ((c.makesShank() && o.shankMass) || (c.makesFoot() && o.footMass))
+      throw InputError("import-osim: a segment's mass given both as a mass and as catalogue parts; give one");
+    p.parts = c;
+    std::string named;
+    for (const auto& [key, id] : {std::pair<const char*, const std::string&>{"knee", c.knee},
+                                  {"pylon", c.pylon},
+                                  {"ankle", c.ankle},
+                                  {"foot", c.foot}})
+      if (!id.empty()) named += std::string(named.empty() ? "" : ", ") + key + " " + id;
+    why << "prosthesis_parts: " << named << " (their catalogue's masses, COMs and inertias make the "
+        << (c.makesShank() ? (c.makesFoot() ? "shank and foot" : "shank") : "foot")
+        << " in place of the model's masses above; the model gives only the lengths)\n";
+  }
   if (o.shankMass) {
     replaceMass(p.shank, *o.shankMass);
     why << "shank mass: --shank-mass-kg (the prosthesis); COM kept, inertia scaled with the mass\n";

@@ -104,6 +104,9 @@ struct OsimImportOptions {
   std::optional<double> shankMass, footMass;  ///< kg: the prosthesis's parts (inertia scales with mass)
   std::optional<double> footLength;           ///< m, ankle to toe
   std::optional<double> height;               ///< m, standing height
+  /// The prosthesis by its catalogue parts (model/prosthesis_parts.h): they replace the
+  /// model's shank and foot masses for the segments they make.
+  std::optional<ProsthesisPartsChoice> parts;
 };
 
 /// The participant and, line by line, where each of its numbers comes from.

@@ -1,12 +1,15 @@
 #include "io/participant_loader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <tuple>
 
 #include "core/output_files.h"
 #include "io/motion_columns_yaml.h"
 #include "io/motion_file.h"
+#include "io/parts_catalogue_loader.h"
 #include "io/swing_events.h"
 #include "io/swing_record_csv.h"
 #include "io/yaml_archive.h"
@@ -42,11 +45,61 @@ void serialize(A& a, SegmentParams& s) {
             [&] { return formatNumber(s.comFromDistal); });
 }
 
+struct LengthOnly {};  // context: a segment whose mass, COM and inertia prosthesis_parts give
+
+template <class A>
+void serialize(A& a, SegmentParams& s, LengthOnly) {
+  a.number("length_m", s.length, checkSegmentLength);
+  if constexpr (A::kReading)
+    for (const char* key : {"mass_kg", "com_from_distal_m", "inertia_kgm2"})
+      a.require(!a.has(key), key,
+                "this segment's mass, COM and inertia come from prosthesis_parts: give length_m only, or drop the "
+                "segment's parts from prosthesis_parts",
+                [] { return std::string("both"); });
+}
+
 template <class A>
 void serialize(A& a, Participant& p, SegmentsOf) {
   a.flowMap("thigh", p.thigh);
-  a.flowMap("shank", p.shank);
-  a.flowMap("foot", p.foot);
+  if (p.parts && p.parts->makesShank())
+    a.flowMap("shank", p.shank, LengthOnly{});
+  else
+    a.flowMap("shank", p.shank);
+  if (p.parts && p.parts->makesFoot())
+    a.flowMap("foot", p.foot, LengthOnly{});
+  else
+    a.flowMap("foot", p.foot);
+}
+
+/// prosthesis_parts: {catalogue: FILE (default the shipped one), knee: ID, pylon: ID, foot: ID}.
+template <class A>
+void serialize(A& a, ProsthesisPartsChoice& c) {
+  const std::string shipped = defaultPartsCataloguePath();
+  if constexpr (A::kReading) {
+    c.cataloguePath = shipped;
+    if (a.has("catalogue")) a.path("catalogue", c.cataloguePath);
+  } else if (c.cataloguePath != shipped) {
+    a.path("catalogue", c.cataloguePath);
+  }
+  a.optionalText("knee", c.knee);
+  a.optionalText("pylon", c.pylon);
+  a.optionalText("ankle", c.ankle);
+  a.optionalText("foot", c.foot);
+  a.require(c.makesShank() || c.makesFoot(), "knee", "expected at least one of knee, pylon, ankle, foot",
+            [] { return std::string("none"); });
+  if constexpr (A::kReading) {
+    const PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
+    const std::tuple<const char*, PartCategory, const std::string*> keys[] = {{"knee", PartCategory::kKnee, &c.knee},
+                                                                              {"pylon", PartCategory::kPylon, &c.pylon},
+                                                                              {"ankle", PartCategory::kAnkle, &c.ankle},
+                                                                              {"foot", PartCategory::kFoot, &c.foot}};
+    for (const auto& [key, category, named] : keys) {
+      const std::string& id = *named;
+      if (id.empty()) continue;
+      const std::string problem = checkCataloguePart(catalogue, id, category);
+      a.require(problem.empty(), key, problem, [&] { return "'" + id + "'"; });
+    }
+  }
 }
 
 template <class A>
@@ -156,6 +209,9 @@ void serialize(A& a, Participant& p) {
                ? std::string()
                : "expected a body mass of at most " + formatNumber(kMaxBodyMass) + " kg (is it in grams?)";
   });
+  if constexpr (A::kReading)
+    if (a.has("prosthesis_parts")) p.parts.emplace();
+  if (p.parts) a.map("prosthesis_parts", *p.parts);
   a.map("segments", p, SegmentsOf{});
   a.number("knee_friction_Nm", p.kneeFriction, mustBeNonNegative);
   a.path("knee_model", p.kneeModelPath);
@@ -249,12 +305,32 @@ SwingRecord readThighMotion(const ThighKinematics& t, const ToeClearanceRule& to
   }
 }
 
+/// The shank and foot the participant's prosthesis_parts make (their ids are checked).
+void assembleFromParts(Participant& p, const YamlMap& yaml) {
+  const ProsthesisPartsChoice& c = *p.parts;
+  const PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
+  auto part = [&](const std::string& id) { return id.empty() ? nullptr : catalogue.find(id); };
+  try {
+    if (c.makesShank()) {
+      p.shank = assembleShank({part(c.knee), part(c.pylon), part(c.ankle)}, p.shank.length);
+      // The knee and ankle units keep their heights when the axis is lowered (the pylon is
+      // cut): the shank cannot become shorter than the two.
+      const double units = (c.knee.empty() ? 0 : part(c.knee)->length) + (c.ankle.empty() ? 0 : part(c.ankle)->length);
+      p.minShankLength = std::max(p.minShankLength, units);
+    }
+    if (c.makesFoot()) p.foot = assembleFoot(*part(c.foot), p.foot.length, p.footComFrom);
+  } catch (const std::invalid_argument& e) {
+    yaml.fail("prosthesis_parts", e.what(), "the segments' lengths");
+  }
+}
+
 Participant readParticipant(YamlMap& yaml) {
   Participant p;
   p.path = yaml.path();
   YamlReadArchive a(yaml);
   serialize(a, p);
   yaml.finish();
+  if (p.parts) assembleFromParts(p, yaml);
   if (p.drive == SwingDrive::kThighKinematics) {
     // The hip (and the pelvis) drive; the knee gives the state at toe-off (leg/toe_off_state.h).
     ThighKinematics& t = p.thighKinematics;

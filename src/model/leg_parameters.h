@@ -131,6 +131,14 @@ struct ThighKinematics {
   std::optional<MotionColumns> columns;
 };
 
+/// The parts a participant names (`prosthesis_parts:`, docs/parts.md); an empty id names none.
+struct ProsthesisPartsChoice {
+  std::string cataloguePath;  ///< resolved; the shipped catalogue unless the file names another
+  std::string knee, pylon, ankle, foot;
+  bool makesShank() const { return !knee.empty() || !pylon.empty() || !ankle.empty(); }
+  bool makesFoot() const { return !foot.empty(); }
+};
+
 struct Participant {
   std::string path;  ///< file it was loaded from
   std::string name;
@@ -156,6 +164,9 @@ struct Participant {
   /// The sound (anatomical) limb's measured swing time, s (`sound_limb_swing_time_s`): the
   /// symmetry target of the sweep and of tuning. nullopt: not measured.
   std::optional<double> soundLimbSwingTime;
+  /// The prosthesis parts the shank and foot are made of (model/prosthesis_parts.h); the
+  /// segments they make are in shank and foot. nullopt: the segments' masses as written.
+  std::optional<ProsthesisPartsChoice> parts;
 };
 
 /// The leg as the dynamics sees it, after lowering: distances from the proximal joint.

@@ -1,0 +1,118 @@
+#include "io/parts_catalogue_loader.h"
+
+#include "core/input_error.h"
+#include "io/yaml_archive.h"
+#include "io/yaml_reader.h"
+
+namespace swingsim {
+
+namespace {
+
+constexpr double kMaxPartMass = 10;     // kg: heavier than any prosthetic knee, foot or pylon
+constexpr double kMaxPartLength = 1.5;  // m
+
+std::string checkPartMass(double v) {
+  if (!(v > 0)) return "must be positive";
+  return v <= kMaxPartMass ? ""
+                           : "expected a part's mass of at most " + formatNumber(kMaxPartMass) +
+                                 " kg (is it in grams? the key is in kg)";
+}
+
+std::string checkPartLength(double v) {
+  if (!(v > 0)) return "must be positive";
+  return v <= kMaxPartLength
+             ? ""
+             : "expected at most " + formatNumber(kMaxPartLength) + " m (is it in millimetres? the key is in metres)";
+}
+
+void readOptional(YamlReadArchive& a, const char* key, std::optional<double>& v, const ValueCheck& check) {
+  if (!a.has(key)) return;
+  double x = 0;
+  a.number(key, x, check);
+  v = x;
+}
+
+}  // namespace
+
+// Found by the archive's namedMaps through argument-dependent lookup: not in the anonymous namespace.
+void serialize(YamlReadArchive& a, ProsthesisPart& p) {
+  a.choice("category", p.category,
+           {{"knee", PartCategory::kKnee},
+            {"pylon", PartCategory::kPylon},
+            {"ankle", PartCategory::kAnkle},
+            {"foot", PartCategory::kFoot}});
+  a.text("name", p.name);
+  a.text("maker", p.maker);
+  a.text("source", p.source);
+  a.optionalText("notes", p.notes);
+  a.number("mass_kg", p.mass, checkPartMass);
+  switch (p.category) {
+    case PartCategory::kKnee:
+      a.number("axis_to_connector_m", p.length, checkPartLength);
+      readOptional(a, "com_below_axis_m", p.com, mustBeNonNegative);
+      readOptional(a, "inertia_kgm2", p.inertia, mustBePositive);
+      a.require(!p.com || *p.com <= p.length, "com_below_axis_m",
+                "the COM must lie on the knee unit (0.." + formatNumber(p.length) + " m below its axis)",
+                [&] { return formatNumber(*p.com); });
+      break;
+    case PartCategory::kPylon:
+      a.number("length_m", p.length, checkPartLength);
+      readOptional(a, "max_length_m", p.maxLength, checkPartLength);
+      break;
+    case PartCategory::kAnkle:
+      a.number("connector_to_ankle_m", p.length, checkPartLength);
+      readOptional(a, "com_above_ankle_m", p.com, mustBeNonNegative);
+      readOptional(a, "inertia_kgm2", p.inertia, mustBePositive);
+      a.require(!p.com || *p.com <= p.length, "com_above_ankle_m",
+                "the COM must lie on the ankle unit (0.." + formatNumber(p.length) + " m above the ankle)",
+                [&] { return formatNumber(*p.com); });
+      break;
+    case PartCategory::kFoot:
+      a.number("length_m", p.length, checkPartLength);
+      readOptional(a, "com_forward_of_ankle_m", p.com, mustBeNonNegative);
+      readOptional(a, "inertia_kgm2", p.inertia, mustBePositive);
+      a.require(!p.com || *p.com <= p.length, "com_forward_of_ankle_m",
+                "the COM must lie on the foot (0.." + formatNumber(p.length) + " m)",
+                [&] { return formatNumber(*p.com); });
+      break;
+  }
+}
+
+namespace {
+
+PartsCatalogue readCatalogue(YamlMap& yaml) {
+  PartsCatalogue c;
+  c.path = yaml.path();
+  YamlReadArchive a(yaml);
+  a.namedMaps("parts", c.parts, &ProsthesisPart::id);
+  a.require(!c.parts.empty(), "parts", "expected at least one part", [] { return std::string("none"); });
+  yaml.finish();
+  return c;
+}
+
+}  // namespace
+
+std::string defaultPartsCataloguePath() { return std::string(SWINGSIM_SOURCE_DIR) + "/parts/prosthesis-parts.yaml"; }
+
+PartsCatalogue loadPartsCatalogue(const std::string& path) {
+  YamlMap yaml = YamlMap::loadFile(path);
+  return readCatalogue(yaml);
+}
+
+PartsCatalogue parsePartsCatalogue(const std::string& text, const std::string& path) {
+  YamlMap yaml = YamlMap::loadString(text, path);
+  return readCatalogue(yaml);
+}
+
+std::string checkCataloguePart(const PartsCatalogue& catalogue, const std::string& id, PartCategory category) {
+  const ProsthesisPart* part = catalogue.find(id);
+  if (part && part->category == category) return "";
+  std::string ids;
+  for (const ProsthesisPart& p : catalogue.parts)
+    if (p.category == category) ids += (ids.empty() ? "" : ", ") + p.id;
+  return std::string("expected a ") + partCategoryKey(category) + " of " + catalogue.path + ", one of " +
+         (ids.empty() ? "(none)" : ids) +
+         (part ? std::string(" (it is a ") + partCategoryKey(part->category) + ")" : "");
+}
+
+}  // namespace swingsim
