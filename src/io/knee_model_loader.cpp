@@ -353,6 +353,26 @@ void serialize(A& a, ImpedanceStateMachineParams& p) {
   }
 }
 
+template <class A>
+void serialize(A& a, PneumaticCylinderParams& c) {
+  const auto length = [](double v) { return v > 0 && v <= 0.5 ? "" : "expected metres, above 0 and at most 0.5"; };
+  a.number("bore_m", c.bore, length);
+  a.number("lever_arm_m", c.leverArm, length);
+  a.number("chamber_length_m", c.chamberLength, length);
+  a.require(c.chamberLength > c.leverArm * PneumaticCylinderParams::kFullFlexion, "chamber_length_m",
+            "must exceed the piston's travel to 150 deg of flexion, lever_arm_m x 2.618 = " +
+                formatNumber(c.leverArm * PneumaticCylinderParams::kFullFlexion) + " m",
+            [&] { return formatNumber(c.chamberLength); });
+  const auto valve = [](double v) {
+    return v > 0 && v <= 10 ? "" : "expected a valve time from 0 (exclusive) to 10 s";
+  };
+  a.number("flexion_valve_time_s", c.flexionValveTime, valve);
+  a.number("extension_valve_time_s", c.extensionValveTime, valve);
+  a.optionalNumber("ambient_pressure_Pa", c.ambientPressure, [](double v) {
+    return v >= 5e4 && v <= 1.1e5 ? "" : "expected an ambient pressure from 50000 to 110000 Pa";
+  });
+}
+
 // Each kind's own keys (the alternatives of KneeKind, model/knee_model.h).
 template <class A>
 void serializeKind(A& a, DampingTableKnee& k) {
@@ -361,6 +381,10 @@ void serializeKind(A& a, DampingTableKnee& k) {
 template <class A>
 void serializeKind(A& a, ImpedanceStateMachineKnee& k) {
   a.map("impedance_state_machine", k.stateMachine);
+}
+template <class A>
+void serializeKind(A& a, PneumaticKnee& k) {
+  a.map("pneumatic", k.cylinder);
 }
 template <class A>
 void serializeKind(A& a, MauchKnee& k) {

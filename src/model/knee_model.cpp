@@ -12,6 +12,9 @@ std::unique_ptr<KneeLaw> makeResistingLaw(const MauchKnee& k) { return std::make
 std::unique_ptr<KneeLaw> makeResistingLaw(const ImpedanceStateMachineKnee& k) {
   return std::make_unique<ImpedanceStateMachine>(k.stateMachine);
 }
+std::unique_ptr<KneeLaw> makeResistingLaw(const PneumaticKnee& k) {
+  return std::make_unique<PneumaticCylinder>(k.cylinder);
+}
 
 }  // namespace
 

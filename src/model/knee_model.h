@@ -12,6 +12,7 @@
 #include "knee/knee_added_effects.h"
 #include "knee/knee_law.h"
 #include "knee/mauch_cylinder.h"
+#include "knee/pneumatic_cylinder.h"
 
 namespace swingsim {
 
@@ -54,10 +55,16 @@ struct ImpedanceStateMachineKnee {
   ImpedanceStateMachineParams stateMachine;
 };
 
+/// kind pneumatic: an air cylinder with flexion and extension valves.
+struct PneumaticKnee {
+  static constexpr const char* kKey = "pneumatic";
+  PneumaticCylinderParams cylinder;
+};
+
 /// The knee kinds, one alternative each: its `kind:` key and parameters here, the law it
 /// makes in knee_model.cpp, its keys in io/knee_model_loader.cpp. Both are std::visit over
 /// this variant, so a kind added here and forgotten there does not compile.
-using KneeKind = std::variant<DampingTableKnee, MauchKnee, ImpedanceStateMachineKnee>;
+using KneeKind = std::variant<DampingTableKnee, MauchKnee, ImpedanceStateMachineKnee, PneumaticKnee>;
 
 /// Everything a knee model file says.
 struct KneeModelSpec {
@@ -69,7 +76,7 @@ struct KneeModelSpec {
   bool hasStop = false;  ///< a `hyperextension_stop:` map (else defaults)
   JointStopParams stop;
 
-  /// The `kind:` key: damping_table, mauch, impedance_state_machine.
+  /// The `kind:` key: damping_table, mauch, impedance_state_machine, pneumatic.
   const char* kindKey() const;
   /// The parameters of kind K, or nullptr if the spec is another kind.
   template <class K>

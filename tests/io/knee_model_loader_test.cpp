@@ -116,7 +116,8 @@ TEST(KneeModelLoader, RejectsBadPhaseCountsDialsAndDuplicates) {
 TEST(KneeModelFormat, LoadWriteLoadGivesTheSameModel) {
   const std::string root = SWINGSIM_SOURCE_DIR;
   std::vector<KneeModelSpec> specs;
-  for (const char* f : {"/models/damping-table-default.yaml", "/models/mauch-2phase.yaml", "/models/mauch-4phase.yaml"})
+  for (const char* f : {"/models/damping-table-default.yaml", "/models/mauch-2phase.yaml", "/models/mauch-4phase.yaml",
+                        "/models/pneumatic-knee.yaml"})
     specs.push_back(loadKneeModel(root + f).spec);
   KneeModelSpec cylinder = specs[1];
   MauchKnee& mauch = std::get<MauchKnee>(cylinder.kind);
@@ -155,6 +156,20 @@ TEST(KneeModelFormat, LoadWriteLoadGivesTheSameModel) {
             << spec.name << " " << flexion << " " << rate;
       }
   }
+}
+
+TEST(KneeModelLoader, APneumaticChamberThePistonWouldReachIsRefusedAtItsLine) {
+  const std::string path = writeTemp("short-chamber.yaml", R"(kind: pneumatic
+pneumatic:
+  bore_m: 0.035
+  lever_arm_m: 0.035
+  chamber_length_m: 0.08
+  flexion_valve_time_s: 0.05
+  extension_valve_time_s: 0.02
+)");
+  const std::string e = errorOf(path);
+  EXPECT_THAT(e, HasSubstr("short-chamber.yaml:5: pneumatic.chamber_length_m"));
+  EXPECT_THAT(e, HasSubstr("lever_arm_m x 2.618"));
 }
 
 // A user's expression that does not parse is refused at its line with the parser's message
