@@ -80,7 +80,9 @@ std::optional<double> readOptionalPositive(const py::object& value, const std::s
 /// `swingsim import-osim MODEL.osim` as the participant file's dict and its name.
 py::tuple importOsim(const py::object& model, const py::object& side, const py::object& name, const py::object& knee,
                      const py::object& friction, const py::object& shankMass, const py::object& footMass,
-                     const py::object& footLength, const py::object& height) {
+                     const py::object& footLength, const py::object& height, const py::object& kneePart,
+                     const py::object& pylonPart, const py::object& anklePart, const py::object& footPart,
+                     const py::object& catalogue) {
   const std::string path = readPathArgument(model, "import_osim(): osim_path");
   OsimImportOptions o;
   o.side = readChoiceArgument(side, "import_osim(): side", {"r", "l"}).front();
@@ -91,6 +93,15 @@ py::tuple importOsim(const py::object& model, const py::object& side, const py::
   o.footMass = readOptionalPositive(footMass, "import_osim(): foot_mass_kg");
   o.footLength = readOptionalPositive(footLength, "import_osim(): foot_length_m");
   o.height = readOptionalPositive(height, "import_osim(): height_m");
+  ImportPartNames parts;
+  const std::pair<const py::object*, std::optional<std::string>*> named[] = {
+      {&kneePart, &parts.knee}, {&pylonPart, &parts.pylon}, {&anklePart, &parts.ankle}, {&footPart, &parts.foot}};
+  for (const auto& [value, id] : named)
+    if (!value->is_none()) *id = readTextArgument(*value, "import_osim(): a part's id");
+  if (!catalogue.is_none()) parts.catalogue = readPathArgument(catalogue, "import_osim(): parts_catalogue");
+  o.parts = chooseImportParts(parts, [](const std::string& key) {
+    return "import_osim(): " + (key == "catalogue" ? std::string("parts_catalogue") : key + "_part");
+  });
   ImportedParticipantYaml imported;
   {
     py::gil_scoped_release release;
@@ -129,7 +140,9 @@ void addRecordFunctions(py::module_& m) {
         py::arg("fallback_to_kinematics") = false, py::arg("gait") = py::none(), py::arg("knee_sign") = -1.0);
   m.def("import_osim", &importOsim, py::arg("osim_path"), py::arg("side") = "r", py::arg("name") = py::none(),
         py::arg("knee") = py::none(), py::arg("knee_friction_Nm") = 0.0, py::arg("shank_mass_kg") = py::none(),
-        py::arg("foot_mass_kg") = py::none(), py::arg("foot_length_m") = py::none(), py::arg("height_m") = py::none());
+        py::arg("foot_mass_kg") = py::none(), py::arg("foot_length_m") = py::none(), py::arg("height_m") = py::none(),
+        py::arg("knee_part") = py::none(), py::arg("pylon_part") = py::none(), py::arg("ankle_part") = py::none(),
+        py::arg("foot_part") = py::none(), py::arg("parts_catalogue") = py::none());
   m.def("export_osim", &exportOsim, py::arg("participant"), py::arg("path"), py::arg("lowering_m") = 0.0,
         py::arg("side") = "r", py::arg("added_mass_kg") = py::none(), py::arg("added_mass_below_knee_m") = py::none());
 }

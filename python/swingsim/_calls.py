@@ -125,7 +125,8 @@ def swings(motion_path, side="r", grf=None, vertical_force=None, threshold_N=20.
 
 
 def import_osim(osim_path, side="r", name=None, knee=None, knee_friction_Nm=0.0, shank_mass_kg=None,
-                foot_mass_kg=None, foot_length_m=None, height_m=None):
+                foot_mass_kg=None, foot_length_m=None, height_m=None, knee_part=None, pylon_part=None,
+                ankle_part=None, foot_part=None, parts_catalogue=None):
     """A Participant from one leg of a scaled OpenSim 4 model, as `swingsim import-osim
     MODEL.osim` (docs/import-osim.md): thigh, shank and foot from femur_<side>, tibia_<side>,
     talus + calcn + toes, every other field the project's default.
@@ -134,11 +135,14 @@ def import_osim(osim_path, side="r", name=None, knee=None, knee_friction_Nm=0.0,
     model path written as knee_model (default models/damping-table-default.yaml);
     knee_friction_Nm: N m (>= 0); shank_mass_kg, foot_mass_kg: the prosthesis's parts, kg
     (inertia scales with the mass, as set_mass(keep="radius_of_gyration")); foot_length_m:
-    ankle to toe, m; height_m: standing height, m. The Participant's origin is
+    ankle to toe, m; height_m: standing height, m. knee_part, pylon_part, ankle_part,
+    foot_part: catalogue ids (`swingsim parts`; docs/parts.md) whose masses make the shank and
+    foot instead; parts_catalogue: their catalogue (default the shipped one). The Participant's origin is
     "<name>.yaml" in the current folder (save(path) writes it; the file's provenance
     comments are the command line's only)."""
     values, participant_name = _swingsim.import_osim(osim_path, side, name, knee, knee_friction_Nm, shank_mass_kg,
-                                                     foot_mass_kg, foot_length_m, height_m)
+                                                     foot_mass_kg, foot_length_m, height_m, knee_part, pylon_part,
+                                                     ankle_part, foot_part, parts_catalogue)
     return Participant(values, f"{participant_name}.yaml")
 
 

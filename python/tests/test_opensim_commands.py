@@ -67,7 +67,20 @@ def test_import_osim_equals_cli(repo, cli, tmp_path):
     assert p.segments.shank.mass_kg == 1.5
 
 
+def test_import_osim_with_catalogue_parts_equals_cli(repo, cli, tmp_path):
+    out = tmp_path / "s01.yaml"
+    subprocess.run([cli, "import-osim", OSIM, "--name", "s01", "--knee-part", "ottobock-3r15", "--foot-part",
+                    "proteor-kinterra-26", "--out", str(out)], cwd=repo, check=True, capture_output=True)
+    p = swingsim.import_osim(repo / OSIM, name="s01", knee_part="ottobock-3r15", foot_part="proteor-kinterra-26")
+    expected = swingsim.load_participant(out).to_dict()
+    got = p.to_dict()
+    assert (tmp_path / expected.pop("knee_model")).resolve() == pathlib.Path(p.resolve(got.pop("knee_model"))).resolve()
+    assert got == expected
+    assert got["prosthesis_parts"] == {"knee": "ottobock-3r15", "foot": "proteor-kinterra-26"}
+
+
 @pytest.mark.parametrize("kwargs, error, match", [
+    ({"knee_part": "c-leg"}, swingsim.InputError, "import_osim\\(\\): knee_part: expected a knee"),
     ({"side": "left"}, ValueError, "import_osim\\(\\): side"),
     ({"shank_mass_kg": 0}, ValueError, "import_osim\\(\\): shank_mass_kg: expected a positive value"),
     ({"height_m": "1.8"}, TypeError, "import_osim\\(\\): height_m"),

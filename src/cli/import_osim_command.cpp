@@ -9,7 +9,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <tuple>
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
@@ -18,7 +17,6 @@
 #include "io/knee_model_loader.h"
 #include "io/osim_model.h"
 #include "io/participant_loader.h"
-#include "io/parts_catalogue_loader.h"
 #include "study/osim_import.h"
 
 namespace swingsim::cli {
@@ -28,37 +26,15 @@ struct ImportOsimArguments {
   std::string model;
   std::string side = "r";
   std::optional<std::string> out, name, knee;
-  std::optional<std::string> kneePart, pylonPart, anklePart, footPart, catalogue;
+  ImportPartNames parts;
   OsimImportOptions options;
 };
 
-// The catalogue parts named on the command line, checked against their catalogue.
-std::optional<ProsthesisPartsChoice> namedParts(const ImportOsimArguments& a) {
-  if (!a.kneePart && !a.pylonPart && !a.anklePart && !a.footPart) {
-    if (a.catalogue) throw InputError("--parts-catalogue: names no part (give --knee-part, --foot-part, ...)");
-    return std::nullopt;
-  }
-  ProsthesisPartsChoice c;
-  c.cataloguePath =
-      std::filesystem::absolute(a.catalogue.value_or(defaultPartsCataloguePath())).lexically_normal().string();
-  const PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
-  const std::tuple<const char*, PartCategory, const std::optional<std::string>*, std::string*> options[] = {
-      {"--knee-part", PartCategory::kKnee, &a.kneePart, &c.knee},
-      {"--pylon-part", PartCategory::kPylon, &a.pylonPart, &c.pylon},
-      {"--ankle-part", PartCategory::kAnkle, &a.anklePart, &c.ankle},
-      {"--foot-part", PartCategory::kFoot, &a.footPart, &c.foot}};
-  for (const auto& [option, category, given, id] : options) {
-    if (!*given) continue;
-    const std::string problem = checkCataloguePart(catalogue, **given, category);
-    if (!problem.empty()) throw InputError(std::string(option) + ": " + problem + " (got '" + **given + "')");
-    *id = **given;
-  }
-  return c;
-}
-
 int runImportOsim(ImportOsimArguments& a) {
   OsimImportOptions o = a.options;
-  o.parts = namedParts(a);
+  o.parts = chooseImportParts(a.parts, [](const std::string& key) {
+    return key == "catalogue" ? std::string("--parts-catalogue") : "--" + key + "-part";
+  });
   o.side = a.side.front();
   o.name = a.name.value_or("");
   o.kneeModelPath = std::filesystem::absolute(a.knee.value_or(defaultImportKneePath())).lexically_normal().string();
@@ -108,15 +84,15 @@ Command addImportOsimCommand(CLI::App& app) {
          "the prosthetic foot's mass, kg (default: the model's talus + calcn + toes; inertia scales with it)")
       ->type_name("KG")
       ->check(positive);
-  addTextOption(sub, "--knee-part", a->kneePart,
+  addTextOption(sub, "--knee-part", a->parts.knee,
                 "the knee unit by its catalogue id (`swingsim parts` lists them): its mass, COM and inertia make the "
                 "shank with the other shank parts (instead of --shank-mass-kg)",
                 "ID");
-  addTextOption(sub, "--pylon-part", a->pylonPart, "the pylon by its catalogue id (its mass per metre over the span)",
+  addTextOption(sub, "--pylon-part", a->parts.pylon, "the pylon by its catalogue id (its mass per metre over the span)",
                 "ID");
-  addTextOption(sub, "--ankle-part", a->anklePart, "an ankle unit carried by the shank, by its catalogue id", "ID");
-  addTextOption(sub, "--foot-part", a->footPart, "the foot by its catalogue id (instead of --foot-mass-kg)", "ID");
-  addTextOption(sub, "--parts-catalogue", a->catalogue,
+  addTextOption(sub, "--ankle-part", a->parts.ankle, "an ankle unit carried by the shank, by its catalogue id", "ID");
+  addTextOption(sub, "--foot-part", a->parts.foot, "the foot by its catalogue id (instead of --foot-mass-kg)", "ID");
+  addTextOption(sub, "--parts-catalogue", a->parts.catalogue,
                 "the parts catalogue YAML (default parts/prosthesis-parts.yaml, shipped)", "FILE");
   sub->add_option_function<double>(
          "--foot-length-m", [&o](double v) { o.footLength = v; },

@@ -59,6 +59,18 @@ ApiReply ServeApi::importOsim(const std::string& body) const {
     o.kneeModelPath = files_.findKneePath(json.value("knee", std::string("damping-table-default")));
     o.shankMass = readOptionalPositive(json, "shank_mass_kg");
     o.footMass = readOptionalPositive(json, "foot_mass_kg");
+    // Catalogue parts by id, from the shipped catalogue only (a request names no server path).
+    ImportPartNames parts;
+    for (const auto& [key, id] : {std::pair<const char*, std::optional<std::string>*>{"knee_part", &parts.knee},
+                                  {"pylon_part", &parts.pylon},
+                                  {"ankle_part", &parts.ankle},
+                                  {"foot_part", &parts.foot}}) {
+      if (!json.contains(key)) continue;
+      if (!json[key].is_string())
+        throw InputError(std::string(key) + ": expected a part's catalogue id (got " + json[key].dump() + ")");
+      *id = json[key].get<std::string>();
+    }
+    o.parts = chooseImportParts(parts, [](const std::string& key) { return key + "_part"; });
     // Paths relative to the participants folder: knee_model is ../models/NAME.yaml, as an upload's must be.
     const ImportedParticipantYaml imported = importOsimParticipantText(
         json["osim_text"].get<std::string>(), readUploadLabel(json), o, files_.getParticipantsDir());

@@ -2,11 +2,13 @@
 
 #include <cctype>
 #include <filesystem>
+#include <tuple>
 #include <utility>
 
 #include "core/input_error.h"
 #include "io/knee_model_loader.h"
 #include "io/participant_loader.h"
+#include "io/parts_catalogue_loader.h"
 
 namespace swingsim {
 namespace {
@@ -43,6 +45,31 @@ ImportedParticipantYaml formatImported(const OsimModel& model, const std::string
 }
 
 }  // namespace
+
+std::optional<ProsthesisPartsChoice> chooseImportParts(const ImportPartNames& names,
+                                                       const std::function<std::string(const std::string&)>& label) {
+  if (!names.knee && !names.pylon && !names.ankle && !names.foot) {
+    if (names.catalogue)
+      throw InputError(label("catalogue") + ": names no part (give a knee, pylon, ankle or foot part)");
+    return std::nullopt;
+  }
+  ProsthesisPartsChoice c;
+  c.cataloguePath =
+      std::filesystem::absolute(names.catalogue.value_or(defaultPartsCataloguePath())).lexically_normal().string();
+  const PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
+  const std::tuple<const char*, PartCategory, const std::optional<std::string>*, std::string*> parts[] = {
+      {"knee", PartCategory::kKnee, &names.knee, &c.knee},
+      {"pylon", PartCategory::kPylon, &names.pylon, &c.pylon},
+      {"ankle", PartCategory::kAnkle, &names.ankle, &c.ankle},
+      {"foot", PartCategory::kFoot, &names.foot, &c.foot}};
+  for (const auto& [key, category, given, id] : parts) {
+    if (!*given) continue;
+    const std::string problem = checkCataloguePart(catalogue, **given, category);
+    if (!problem.empty()) throw InputError(label(key) + ": " + problem + " (got '" + **given + "')");
+    *id = **given;
+  }
+  return c;
+}
 
 std::string defaultImportKneePath() { return std::string(SWINGSIM_SOURCE_DIR) + "/models/damping-table-default.yaml"; }
 

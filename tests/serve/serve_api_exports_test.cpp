@@ -84,6 +84,21 @@ TEST(ServeImportOsim, IsImportOsimsParticipantAndLoadsAsAnUpload) {
   EXPECT_EQ(described["knee_model"], "damping-table-default");
 }
 
+TEST(ServeImportOsim, NamesCatalogueParts) {
+  const Json j = callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)},
+                                                      {"file_name", "subject01.osim"},
+                                                      {"knee_part", "osl-knee"},
+                                                      {"foot_part", "osl-foot"}});
+  const std::string yaml = j["participant_yaml"];
+  EXPECT_THAT(yaml, HasSubstr("knee: osl-knee"));
+  EXPECT_THAT(yaml, HasSubstr("foot: osl-foot"));
+  EXPECT_EQ(
+      callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"knee_part", "c-leg"}}, 400)["key"],
+      "knee_part");
+  EXPECT_EQ(callServeApi(&ServeApi::importOsim, {{"osim_text", readFile(kSubject01)}, {"foot_part", 3}}, 400)["key"],
+            "foot_part");
+}
+
 TEST(ServeImportOsim, RefusesWhatIsNotAModelByItsKey) {
   const Json notXml =
       callServeApi(&ServeApi::importOsim, {{"osim_text", "<OpenSimDocument"}, {"file_name", "bad.osim"}}, 400);
