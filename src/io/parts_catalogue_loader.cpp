@@ -32,6 +32,25 @@ void readOptional(YamlReadArchive& a, const char* key, std::optional<double>& v,
   v = x;
 }
 
+// Each category's keys: its length, its COM (none for a pylon: the middle of its span) and
+// the part the COM must lie on.
+struct CategoryKeys {
+  const char *length, *com, *part;
+};
+CategoryKeys keysOf(PartCategory c) {
+  switch (c) {
+    case PartCategory::kKnee:
+      return {"axis_to_connector_m", "com_below_axis_m", "the knee unit, below its axis"};
+    case PartCategory::kPylon:
+      return {"length_m", "", "the pylon"};
+    case PartCategory::kAnkle:
+      return {"connector_to_ankle_m", "com_above_ankle_m", "the ankle unit, above the ankle"};
+    case PartCategory::kFoot:
+      return {"length_m", "com_forward_of_ankle_m", "the foot, forward of the ankle"};
+  }
+  return {"length_m", "", ""};
+}
+
 }  // namespace
 
 // Found by the archive's namedMaps through argument-dependent lookup: not in the anonymous namespace.
@@ -46,36 +65,17 @@ void serialize(YamlReadArchive& a, ProsthesisPart& p) {
   a.text("source", p.source);
   a.optionalText("notes", p.notes);
   a.number("mass_kg", p.mass, checkPartMass);
-  switch (p.category) {
-    case PartCategory::kKnee:
-      a.number("axis_to_connector_m", p.length, checkPartLength);
-      readOptional(a, "com_below_axis_m", p.com, mustBeNonNegative);
-      readOptional(a, "inertia_kgm2", p.inertia, mustBePositive);
-      a.require(!p.com || *p.com <= p.length, "com_below_axis_m",
-                "the COM must lie on the knee unit (0.." + formatNumber(p.length) + " m below its axis)",
-                [&] { return formatNumber(*p.com); });
-      break;
-    case PartCategory::kPylon:
-      a.number("length_m", p.length, checkPartLength);
-      readOptional(a, "max_length_m", p.maxLength, checkPartLength);
-      break;
-    case PartCategory::kAnkle:
-      a.number("connector_to_ankle_m", p.length, checkPartLength);
-      readOptional(a, "com_above_ankle_m", p.com, mustBeNonNegative);
-      readOptional(a, "inertia_kgm2", p.inertia, mustBePositive);
-      a.require(!p.com || *p.com <= p.length, "com_above_ankle_m",
-                "the COM must lie on the ankle unit (0.." + formatNumber(p.length) + " m above the ankle)",
-                [&] { return formatNumber(*p.com); });
-      break;
-    case PartCategory::kFoot:
-      a.number("length_m", p.length, checkPartLength);
-      readOptional(a, "com_forward_of_ankle_m", p.com, mustBeNonNegative);
-      readOptional(a, "inertia_kgm2", p.inertia, mustBePositive);
-      a.require(!p.com || *p.com <= p.length, "com_forward_of_ankle_m",
-                "the COM must lie on the foot (0.." + formatNumber(p.length) + " m)",
-                [&] { return formatNumber(*p.com); });
-      break;
+  const CategoryKeys keys = keysOf(p.category);
+  a.number(keys.length, p.length, checkPartLength);
+  if (p.category == PartCategory::kPylon) {
+    readOptional(a, "max_length_m", p.maxLength, checkPartLength);
+    return;
   }
+  readOptional(a, keys.com, p.com, mustBeNonNegative);
+  readOptional(a, "inertia_kgm2", p.inertia, mustBePositive);
+  a.require(!p.com || *p.com <= p.length, keys.com,
+            std::string("the COM must lie on ") + keys.part + " (0.." + formatNumber(p.length) + " m)",
+            [&] { return formatNumber(*p.com); });
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include "io/participant_loader.h"
 #include "knee/pneumatic_cylinder.h"
 #include "leg/leg_model.h"
+#include "reference_agreement.h"
 #include "swing/knee_setup.h"
 #include "swing/reference_swing.h"
 #include "swing/swing_simulation.h"
@@ -22,46 +23,30 @@
 namespace swingsim {
 namespace {
 
-// As tests/swing/reference_swing_test.cpp: both integrators far tighter than the agreement
-// asked for, so a disagreement means different equations.
-constexpr double kSimbodyAccuracy = 1e-10;
-constexpr double kReferenceTol = 1e-11;
-constexpr double kAngleTol = 1e-6;      // rad (docs/verification.md)
-constexpr double kEventWindow = 1e-9;   // s
-constexpr double kSwingTimeTol = 1e-6;  // s
+using namespace swingsim::testing;  // the reference agreement's tolerances
 
 Participant loadP1() { return loadParticipant(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml"); }
 KneeModel loadPneumatic() { return loadKneeModel(std::string(SWINGSIM_SOURCE_DIR) + "/models/pneumatic-knee.yaml"); }
 
 TEST(PneumaticKneeSwing, ReferenceIntegratorAgreesWithSimbody) {
   const Participant p = loadP1();
-  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadPneumatic()));
-  SwingOptions options = makeSimbodyIntegratorOptions(kSimbodyAccuracy);
-  options.sampleInterval = 0.002;
-  options.eventWindow = kEventWindow;
-  const SwingResult sim = simulateSwing(makeSwingSetup(p, law, 0.0), options);
-  const ReferenceSwing reference(calcLegGeometry(p, 0.0), *law, p.hipMoment, p.hipRange);
-  const ReferenceTrajectory tr = reference.integrate(p.initial, sim.trajectory.time, kReferenceTol, kReferenceTol);
-  double maxKneeDiff = 0, maxHipDiff = 0;
-  for (std::size_t i = 0; i < tr.size(); ++i) {
-    maxHipDiff = std::max(maxHipDiff, std::abs(tr.hipFlexion[i] - sim.trajectory.hipFlexion[i]));
-    maxKneeDiff = std::max(maxKneeDiff, std::abs(tr.kneeFlexion[i] - sim.trajectory.kneeFlexion[i]));
-  }
-  const ReferenceSwingEnd end = reference.calcSwingEnd(p.initial, p.swingEnd, kReferenceTol, kReferenceTol);
-  ASSERT_TRUE(sim.peakKneeFlexion);
-  EXPECT_LT(maxHipDiff, kAngleTol);
-  EXPECT_LT(maxKneeDiff, kAngleTol);
+  const ReferenceAgreement a =
+      compareWithReference(p, std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadPneumatic())));
+  ASSERT_TRUE(a.sim.peakKneeFlexion);
+  EXPECT_LT(a.maxHipDiff, kAngleTol);
+  EXPECT_LT(a.maxKneeDiff, kAngleTol);
   // The air rebounds the knee out of the zone; the reference's end is the first entry into
   // it (it has no settle dwell), which the Simbody swing records as its first zone entry.
-  const std::optional<double> firstEntry = calcFirstZoneEntry(sim);
+  const std::optional<double> firstEntry = calcFirstZoneEntry(a.sim);
   ASSERT_TRUE(firstEntry);
-  EXPECT_NEAR(end.swingTime, *firstEntry, kSwingTimeTol);
-  EXPECT_NEAR(end.peakKneeFlexion, sim.peakKneeFlexion->flexion, kAngleTol);
-  EXPECT_LT(sim.swingTime, p.swingEnd.timeLimit);
+  EXPECT_NEAR(a.end.swingTime, *firstEntry, kSwingTimeTol);
+  EXPECT_NEAR(a.end.peakKneeFlexion, a.sim.peakKneeFlexion->flexion, kAngleTol);
+  EXPECT_LT(a.sim.swingTime, p.swingEnd.timeLimit);
   std::printf(
       "pneumatic knee P1: max |knee diff| %.2e rad, |hip diff| %.2e rad; swing time Simbody %.9f s; first zone "
       "entry Simbody %.9f s, reference %.9f s; peak %.2f deg\n",
-      maxKneeDiff, maxHipDiff, sim.swingTime, *firstEntry, end.swingTime, sim.peakKneeFlexion->flexion * kRadToDeg);
+      a.maxKneeDiff, a.maxHipDiff, a.sim.swingTime, *firstEntry, a.end.swingTime,
+      a.sim.peakKneeFlexion->flexion * kRadToDeg);
 }
 
 TEST(PneumaticKneeSwing, CylinderGivesBackNoMoreThanItsAirHeld) {
