@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <iterator>
 
 #include "core/input_error.h"
 #include "core/output_files.h"
@@ -94,10 +95,9 @@ py::tuple importOsim(const py::object& model, const py::object& side, const py::
   o.footLength = readOptionalPositive(footLength, "import_osim(): foot_length_m");
   o.height = readOptionalPositive(height, "import_osim(): height_m");
   ImportPartNames parts;
-  const std::pair<const py::object*, std::optional<std::string>*> named[] = {
-      {&kneePart, &parts.knee}, {&pylonPart, &parts.pylon}, {&anklePart, &parts.ankle}, {&footPart, &parts.foot}};
-  for (const auto& [value, id] : named)
-    if (!value->is_none()) *id = readTextArgument(*value, "import_osim(): a part's id");
+  const py::object* named[] = {&kneePart, &pylonPart, &anklePart, &footPart};  // in kPartCategories' order
+  for (std::size_t i = 0; i < std::size(kPartCategories); ++i)
+    if (!named[i]->is_none()) parts.of(kPartCategories[i]) = readTextArgument(*named[i], "import_osim(): a part's id");
   if (!catalogue.is_none()) parts.catalogue = readPathArgument(catalogue, "import_osim(): parts_catalogue");
   o.parts = chooseImportParts(parts, [](const std::string& key) {
     return "import_osim(): " + (key == "catalogue" ? std::string("parts_catalogue") : key + "_part");

@@ -23,7 +23,7 @@ struct PartsArguments {
 int runParts(const PartsArguments& a) {
   const PartsCatalogue catalogue = loadPartsCatalogue(a.catalogue.value_or(defaultPartsCataloguePath()));
   std::optional<PartCategory> category;
-  for (PartCategory c : {PartCategory::kKnee, PartCategory::kPylon, PartCategory::kAnkle, PartCategory::kFoot})
+  for (PartCategory c : kPartCategories)
     if (a.category && *a.category == partCategoryKey(c)) category = c;
   std::printf("%s", formatPartsTable(catalogue, category).c_str());
   return 0;

@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "io/osim_model_checks.h"
+#include "model/prosthesis_parts.h"
 
 namespace swingsim {
 
@@ -509,11 +510,9 @@ void replaceProsthesisMasses(const OsimImportOptions& o, Participant& p, std::os
       throw InputError("import-osim: a segment's mass given both as a mass and as catalogue parts; give one");
     p.parts = c;
     std::string named;
-    for (const auto& [key, id] : {std::pair<const char*, const std::string&>{"knee", c.knee},
-                                  {"pylon", c.pylon},
-                                  {"ankle", c.ankle},
-                                  {"foot", c.foot}})
-      if (!id.empty()) named += std::string(named.empty() ? "" : ", ") + key + " " + id;
+    for (PartCategory category : kPartCategories)
+      if (!partId(c, category).empty())
+        named += std::string(named.empty() ? "" : ", ") + partCategoryKey(category) + " " + partId(c, category);
     why << "prosthesis_parts: " << named << " (their catalogue's masses, COMs and inertias make the "
         << (c.makesShank() ? (c.makesFoot() ? "shank and foot" : "shank") : "foot")
         << " in place of the model's masses above; the model gives only the lengths)\n";

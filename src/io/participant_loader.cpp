@@ -4,7 +4,6 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
-#include <tuple>
 
 #include "core/output_files.h"
 #include "io/motion_columns_yaml.h"
@@ -71,9 +70,11 @@ void serialize(A& a, Participant& p, SegmentsOf) {
     a.flowMap("foot", p.foot);
 }
 
-/// prosthesis_parts: {catalogue: FILE (default the shipped one), knee: ID, pylon: ID, foot: ID}.
+/// prosthesis_parts: {catalogue: FILE (default the shipped one), knee: ID, pylon: ID, ankle: ID,
+/// foot: ID}. Reading, the ids are checked against the catalogue, which is kept in `loaded`
+/// (if given) for the segments to be made from.
 template <class A>
-void serialize(A& a, ProsthesisPartsChoice& c) {
+void serialize(A& a, ProsthesisPartsChoice& c, PartsCatalogue* loaded) {
   const std::string shipped = defaultPartsCataloguePath();
   if constexpr (A::kReading) {
     c.cataloguePath = shipped;
@@ -81,24 +82,18 @@ void serialize(A& a, ProsthesisPartsChoice& c) {
   } else if (c.cataloguePath != shipped) {
     a.path("catalogue", c.cataloguePath);
   }
-  a.optionalText("knee", c.knee);
-  a.optionalText("pylon", c.pylon);
-  a.optionalText("ankle", c.ankle);
-  a.optionalText("foot", c.foot);
+  for (PartCategory category : kPartCategories) a.optionalText(partCategoryKey(category), partId(c, category));
   a.require(c.makesShank() || c.makesFoot(), "knee", "expected at least one of knee, pylon, ankle, foot",
             [] { return std::string("none"); });
   if constexpr (A::kReading) {
-    const PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
-    const std::tuple<const char*, PartCategory, const std::string*> keys[] = {{"knee", PartCategory::kKnee, &c.knee},
-                                                                              {"pylon", PartCategory::kPylon, &c.pylon},
-                                                                              {"ankle", PartCategory::kAnkle, &c.ankle},
-                                                                              {"foot", PartCategory::kFoot, &c.foot}};
-    for (const auto& [key, category, named] : keys) {
-      const std::string& id = *named;
+    PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
+    for (PartCategory category : kPartCategories) {
+      const std::string& id = partId(c, category);
       if (id.empty()) continue;
       const std::string problem = checkCataloguePart(catalogue, id, category);
-      a.require(problem.empty(), key, problem, [&] { return "'" + id + "'"; });
+      a.require(problem.empty(), partCategoryKey(category), problem, [&] { return "'" + id + "'"; });
     }
+    if (loaded) *loaded = std::move(catalogue);
   }
 }
 
@@ -197,8 +192,9 @@ void serialize(A& a, ThighKinematics& t) {
             [&] { return std::to_string(t.swing.value_or(0)) + " with times"; });
 }
 
+/// `catalogue`, reading: where the catalogue prosthesis_parts names is kept (or nullptr).
 template <class A>
-void serialize(A& a, Participant& p) {
+void serialize(A& a, Participant& p, PartsCatalogue* catalogue = nullptr) {
   a.text("name", p.name);
   a.optionalText("source", p.source);
   a.number("height_m", p.height,
@@ -211,7 +207,7 @@ void serialize(A& a, Participant& p) {
   });
   if constexpr (A::kReading)
     if (a.has("prosthesis_parts")) p.parts.emplace();
-  if (p.parts) a.map("prosthesis_parts", *p.parts);
+  if (p.parts) a.map("prosthesis_parts", *p.parts, catalogue);
   a.map("segments", p, SegmentsOf{});
   a.number("knee_friction_Nm", p.kneeFriction, mustBeNonNegative);
   a.path("knee_model", p.kneeModelPath);
@@ -305,10 +301,10 @@ SwingRecord readThighMotion(const ThighKinematics& t, const ToeClearanceRule& to
   }
 }
 
-/// The shank and foot the participant's prosthesis_parts make (their ids are checked).
-void assembleFromParts(Participant& p, const YamlMap& yaml) {
+/// The shank and foot the participant's prosthesis_parts make from `catalogue`, the
+/// catalogue they name (their ids checked there).
+void assembleFromParts(Participant& p, const PartsCatalogue& catalogue, const YamlMap& yaml) {
   const ProsthesisPartsChoice& c = *p.parts;
-  const PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
   auto part = [&](const std::string& id) { return id.empty() ? nullptr : catalogue.find(id); };
   try {
     if (c.makesShank()) {
@@ -328,9 +324,10 @@ Participant readParticipant(YamlMap& yaml) {
   Participant p;
   p.path = yaml.path();
   YamlReadArchive a(yaml);
-  serialize(a, p);
+  PartsCatalogue catalogue;
+  serialize(a, p, &catalogue);
   yaml.finish();
-  if (p.parts) assembleFromParts(p, yaml);
+  if (p.parts) assembleFromParts(p, catalogue, yaml);
   if (p.drive == SwingDrive::kThighKinematics) {
     // The hip (and the pelvis) drive; the knee gives the state at toe-off (leg/toe_off_state.h).
     ThighKinematics& t = p.thighKinematics;

@@ -1,5 +1,9 @@
 #include "io/parts_catalogue_loader.h"
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "core/input_error.h"
 #include "io/yaml_archive.h"
 #include "io/yaml_reader.h"
@@ -55,11 +59,9 @@ CategoryKeys keysOf(PartCategory c) {
 
 // Found by the archive's namedMaps through argument-dependent lookup: not in the anonymous namespace.
 void serialize(YamlReadArchive& a, ProsthesisPart& p) {
-  a.choice("category", p.category,
-           {{"knee", PartCategory::kKnee},
-            {"pylon", PartCategory::kPylon},
-            {"ankle", PartCategory::kAnkle},
-            {"foot", PartCategory::kFoot}});
+  std::vector<std::pair<std::string, PartCategory>> categories;
+  for (PartCategory c : kPartCategories) categories.emplace_back(partCategoryKey(c), c);
+  a.choice("category", p.category, categories);
   a.text("name", p.name);
   a.text("maker", p.maker);
   a.text("source", p.source);

@@ -7,7 +7,6 @@
 namespace swingsim {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinVolumeFraction = 0.02;  // V / V0 below this is held there (a piston at its end)
 }  // namespace
 

@@ -20,6 +20,7 @@
 #include <memory>
 #include <string>
 
+#include "core/units.h"
 #include "knee/knee_law.h"
 
 namespace swingsim {
@@ -34,7 +35,7 @@ struct PneumaticCylinderParams {
   double valveSwitchWidth = 0.01;    ///< w: pressure ratio over which the valves hand over (> 0)
   /// The knee flexion the chamber must allow, rad: the piston may not reach the chamber's end
   /// before it (150 deg, a knee's full flexion).
-  static constexpr double kFullFlexion = 2.617993877991494;
+  static constexpr double kFullFlexion = 150 * kDegToRad;
 };
 
 /// The pneumatic cylinder as a knee law. One state: the gas content z (1 at rest at full

@@ -48,6 +48,24 @@ const char* partCategoryKey(PartCategory c) {
   return "?";
 }
 
+const std::string& partId(const ProsthesisPartsChoice& choice, PartCategory category) {
+  return partId(const_cast<ProsthesisPartsChoice&>(choice), category);
+}
+
+std::string& partId(ProsthesisPartsChoice& choice, PartCategory category) {
+  switch (category) {
+    case PartCategory::kKnee:
+      return choice.knee;
+    case PartCategory::kPylon:
+      return choice.pylon;
+    case PartCategory::kAnkle:
+      return choice.ankle;
+    case PartCategory::kFoot:
+      break;
+  }
+  return choice.foot;
+}
+
 double calcPartCom(const ProsthesisPart& part, double footLength) {
   if (part.com) return *part.com;
   if (part.category == PartCategory::kFoot) return footLength / 3.0;

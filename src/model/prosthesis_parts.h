@@ -46,8 +46,16 @@ struct PartsCatalogue {
   const ProsthesisPart* find(const std::string& id) const;
 };
 
-/// The category's key in the catalogue (knee, pylon, foot).
+/// Every category, in the order a participant's and a command's keys list them.
+constexpr PartCategory kPartCategories[] = {PartCategory::kKnee, PartCategory::kPylon, PartCategory::kAnkle,
+                                            PartCategory::kFoot};
+
+/// The category's key in the catalogue (knee, pylon, ankle, foot).
 const char* partCategoryKey(PartCategory c);
+
+/// The id `choice` names for `category` ("" if none).
+const std::string& partId(const ProsthesisPartsChoice& choice, PartCategory category);
+std::string& partId(ProsthesisPartsChoice& choice, PartCategory category);
 
 /// A part's COM: its catalogue value, or the assumption. A knee or an ankle unit without
 /// one: half its height from its joint. A foot without one: a third of the ankle-to-toe length

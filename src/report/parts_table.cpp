@@ -1,16 +1,10 @@
 #include "report/parts_table.h"
 
-#include <cstdio>
+#include "core/text_format.h"
 
 namespace swingsim {
 
 namespace {
-
-std::string fixed(double v, const char* format) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 // The length's meaning per category, for the column's note.
 const char* lengthMeaning(PartCategory c) {
@@ -33,11 +27,11 @@ std::string comText(const ProsthesisPart& p) {
     case PartCategory::kPylon:
       return "middle of its span";
     case PartCategory::kFoot:
-      return p.com ? fixed(*p.com * 1000, "%.0f mm forward of the ankle") : "assumed 1/3 of ankle-to-toe";
+      return p.com ? fmt("%.0f mm forward of the ankle", *p.com * 1000) : "assumed 1/3 of ankle-to-toe";
     case PartCategory::kKnee:
-      return p.com ? fixed(*p.com * 1000, "%.0f mm below the axis") : "assumed at half its height";
+      return p.com ? fmt("%.0f mm below the axis", *p.com * 1000) : "assumed at half its height";
     case PartCategory::kAnkle:
-      return p.com ? fixed(*p.com * 1000, "%.0f mm above the ankle") : "assumed at half its height";
+      return p.com ? fmt("%.0f mm above the ankle", *p.com * 1000) : "assumed at half its height";
   }
   return "";
 }
@@ -46,20 +40,17 @@ std::string comText(const ProsthesisPart& p) {
 
 std::string formatPartsTable(const PartsCatalogue& catalogue, std::optional<PartCategory> category) {
   std::string out = "Prosthesis parts in " + catalogue.path + " (docs/parts.md)\n\n";
-  char line[256];
-  std::snprintf(line, sizeof line, "%-24s %-6s %9s %10s  %s\n", "id", "kind", "mass kg", "length mm", "COM; inertia");
-  out += line;
+  out += fmt("%-24s %-6s %9s %10s  %s\n", "id", "kind", "mass kg", "length mm", "COM; inertia");
   for (const ProsthesisPart& p : catalogue.parts) {
     if (category && p.category != *category) continue;
     const std::string inertia =
         p.category == PartCategory::kPylon
             ? "uniform tube"
-            : (p.inertia ? fixed(*p.inertia * 1e4, "%.1f kg cm^2") : "assumed uniform rod over its length");
-    std::snprintf(line, sizeof line, "%-24s %-6s %9.5g %10.0f  %s; %s\n", p.id.c_str(), partCategoryKey(p.category),
-                  p.mass, p.length * 1000, comText(p).c_str(), inertia.c_str());
-    out += line;
+            : (p.inertia ? fmt("%.1f kg cm^2", *p.inertia * 1e4) : "assumed uniform rod over its length");
+    out += fmt("%-24s %-6s %9.5g %10.0f  %s; %s\n", p.id.c_str(), partCategoryKey(p.category), p.mass, p.length * 1000,
+               comText(p).c_str(), inertia.c_str());
     out += "    " + p.name + "; maker: " + p.maker + "; length: " + lengthMeaning(p.category) +
-           (p.maxLength ? fixed(*p.maxLength * 1000, ", sold up to %.0f mm") : "") + "\n";
+           (p.maxLength ? fmt(", sold up to %.0f mm", *p.maxLength * 1000) : "") + "\n";
     out += "    source: " + p.source + "\n";
     if (!p.notes.empty()) out += "    notes: " + p.notes + "\n";
   }

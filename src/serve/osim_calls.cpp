@@ -61,14 +61,12 @@ ApiReply ServeApi::importOsim(const std::string& body) const {
     o.footMass = readOptionalPositive(json, "foot_mass_kg");
     // Catalogue parts by id, from the shipped catalogue only (a request names no server path).
     ImportPartNames parts;
-    for (const auto& [key, id] : {std::pair<const char*, std::optional<std::string>*>{"knee_part", &parts.knee},
-                                  {"pylon_part", &parts.pylon},
-                                  {"ankle_part", &parts.ankle},
-                                  {"foot_part", &parts.foot}}) {
+    for (PartCategory category : kPartCategories) {
+      const std::string key = std::string(partCategoryKey(category)) + "_part";
       if (!json.contains(key)) continue;
       if (!json[key].is_string())
-        throw InputError(std::string(key) + ": expected a part's catalogue id (got " + json[key].dump() + ")");
-      *id = json[key].get<std::string>();
+        throw InputError(key + ": expected a part's catalogue id (got " + json[key].dump() + ")");
+      parts.of(category) = json[key].get<std::string>();
     }
     o.parts = chooseImportParts(parts, [](const std::string& key) { return key + "_part"; });
     // Paths relative to the participants folder: knee_model is ../models/NAME.yaml, as an upload's must be.

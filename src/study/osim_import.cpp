@@ -1,8 +1,9 @@
 #include "study/osim_import.h"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <tuple>
+#include <iterator>
 #include <utility>
 
 #include "core/input_error.h"
@@ -46,9 +47,28 @@ ImportedParticipantYaml formatImported(const OsimModel& model, const std::string
 
 }  // namespace
 
+std::optional<std::string>& ImportPartNames::of(PartCategory category) {
+  switch (category) {
+    case PartCategory::kKnee:
+      return knee;
+    case PartCategory::kPylon:
+      return pylon;
+    case PartCategory::kAnkle:
+      return ankle;
+    case PartCategory::kFoot:
+      break;
+  }
+  return foot;
+}
+
+const std::optional<std::string>& ImportPartNames::of(PartCategory category) const {
+  return const_cast<ImportPartNames&>(*this).of(category);
+}
+
 std::optional<ProsthesisPartsChoice> chooseImportParts(const ImportPartNames& names,
                                                        const std::function<std::string(const std::string&)>& label) {
-  if (!names.knee && !names.pylon && !names.ankle && !names.foot) {
+  if (std::none_of(std::begin(kPartCategories), std::end(kPartCategories),
+                   [&](PartCategory category) { return names.of(category).has_value(); })) {
     if (names.catalogue)
       throw InputError(label("catalogue") + ": names no part (give a knee, pylon, ankle or foot part)");
     return std::nullopt;
@@ -57,16 +77,13 @@ std::optional<ProsthesisPartsChoice> chooseImportParts(const ImportPartNames& na
   c.cataloguePath =
       std::filesystem::absolute(names.catalogue.value_or(defaultPartsCataloguePath())).lexically_normal().string();
   const PartsCatalogue catalogue = loadPartsCatalogue(c.cataloguePath);
-  const std::tuple<const char*, PartCategory, const std::optional<std::string>*, std::string*> parts[] = {
-      {"knee", PartCategory::kKnee, &names.knee, &c.knee},
-      {"pylon", PartCategory::kPylon, &names.pylon, &c.pylon},
-      {"ankle", PartCategory::kAnkle, &names.ankle, &c.ankle},
-      {"foot", PartCategory::kFoot, &names.foot, &c.foot}};
-  for (const auto& [key, category, given, id] : parts) {
-    if (!*given) continue;
-    const std::string problem = checkCataloguePart(catalogue, **given, category);
-    if (!problem.empty()) throw InputError(label(key) + ": " + problem + " (got '" + **given + "')");
-    *id = **given;
+  for (PartCategory category : kPartCategories) {
+    const std::optional<std::string>& given = names.of(category);
+    if (!given) continue;
+    const std::string problem = checkCataloguePart(catalogue, *given, category);
+    if (!problem.empty())
+      throw InputError(label(partCategoryKey(category)) + ": " + problem + " (got '" + *given + "')");
+    partId(c, category) = *given;
   }
   return c;
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/osim_model.h"
+#include "model/prosthesis_parts.h"
 
 namespace swingsim {
 
@@ -18,6 +19,9 @@ std::string defaultImportKneePath();
 /// shipped one, io/parts_catalogue_loader.h).
 struct ImportPartNames {
   std::optional<std::string> knee, pylon, ankle, foot, catalogue;
+  /// The id named for `category`.
+  std::optional<std::string>& of(PartCategory category);
+  const std::optional<std::string>& of(PartCategory category) const;
 };
 /// The parts `names` names, each checked against its catalogue; an InputError names the
 /// argument as `label(key)` gives it, key one of knee, pylon, ankle, foot, catalogue

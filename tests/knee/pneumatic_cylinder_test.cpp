@@ -13,9 +13,7 @@
 namespace swingsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-PneumaticCylinderParams shipped() { return PneumaticCylinderParams{}; }
+PneumaticCylinderParams defaults() { return PneumaticCylinderParams{}; }
 
 KneeKinematics at(double flexionDeg, double rateDegS = 0) {
   KneeKinematics k;
@@ -25,7 +23,7 @@ KneeKinematics at(double flexionDeg, double rateDegS = 0) {
 }
 
 TEST(PneumaticCylinder, ShutValvesFollowBoylesLaw) {
-  const PneumaticCylinderParams p = shipped();
+  const PneumaticCylinderParams p = defaults();
   const PneumaticCylinder law(p);
   const double area = kPi * p.bore * p.bore / 4;
   for (double deg : {-5.0, 0.0, 30.0, 60.0, 120.0}) {
@@ -43,7 +41,7 @@ TEST(PneumaticCylinder, ShutValvesFollowBoylesLaw) {
 TEST(PneumaticCylinder, ValvesRelaxThePressureExponentially) {
   // With equal valve times the handover does not matter: at a held angle the pressure
   // ratio's excess decays as exp(-t / (tau c)), c = V / V0.
-  PneumaticCylinderParams p = shipped();
+  PneumaticCylinderParams p = defaults();
   p.flexionValveTime = p.extensionValveTime = 0.04;
   const PneumaticCylinder law(p);
   const KneeKinematics knee = at(50);
@@ -65,7 +63,7 @@ TEST(PneumaticCylinder, ValvesRelaxThePressureExponentially) {
 }
 
 TEST(PneumaticCylinder, StoredEnergyIsTheMomentsPotentialAndTheValvesDissipate) {
-  const PneumaticCylinder law(shipped());
+  const PneumaticCylinder law(defaults());
   for (double z : {0.8, 1.0, 1.3}) {
     for (double deg : {10.0, 45.0, 90.0}) {
       // dPhi/dtheta at fixed gas content = -M (central difference).
@@ -89,10 +87,10 @@ TEST(PneumaticCylinder, StoredEnergyIsTheMomentsPotentialAndTheValvesDissipate) 
 }
 
 TEST(PneumaticCylinder, RefusesAChamberThePistonWouldReach) {
-  PneumaticCylinderParams p = shipped();
+  PneumaticCylinderParams p = defaults();
   p.chamberLength = p.leverArm * 2.0;  // the piston reaches the end at 115 deg
   EXPECT_THROW(PneumaticCylinder{p}, std::invalid_argument);
-  p = shipped();
+  p = defaults();
   p.flexionValveTime = 0;
   EXPECT_THROW(PneumaticCylinder{p}, std::invalid_argument);
 }
