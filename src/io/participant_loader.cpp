@@ -97,6 +97,29 @@ void serialize(A& a, ProsthesisPartsChoice& c, PartsCatalogue* loaded) {
   }
 }
 
+/// socket: {every key optional, MyoSuite's OSL leg by default (model/leg_parameters.h)}.
+template <class A>
+void serialize(A& a, SocketCompliance& c) {
+  const auto within = [](double lo, double hi, const char* what) {
+    return [=](double v) {
+      return v > lo && v <= hi
+                 ? std::string()
+                 : "expected " + std::string(what) + " above " + formatNumber(lo) + " and at most " + formatNumber(hi);
+    };
+  };
+  const auto damping = [](double v) { return v >= 0 && v <= 1e6 ? "" : "expected a damping from 0 to 1e6"; };
+  a.optionalNumber("piston_stiffness_N_per_m", c.pistonStiffness, within(0, 1e7, "a stiffness in N/m"));
+  a.optionalNumber("piston_damping_N_s_per_m", c.pistonDamping, damping);
+  a.optionalNumber("rotation_stiffness_Nm_per_rad", c.rotationStiffness, within(0, 1e6, "a stiffness in N m/rad"));
+  a.optionalNumber("rotation_damping_Nm_s_per_rad", c.rotationDamping, damping);
+  a.optionalNumber("mass_kg", c.mass, within(0, 5, "a socket's mass in kg (is it in grams?)"));
+  a.optionalNumber("com_above_pivot_m", c.comAbovePivot, within(-0.5, 0.5, "a distance in m"));
+  a.optionalNumber("inertia_kg_m2", c.inertia, within(0, 1, "an inertia about the COM in kg m^2"));
+  a.optionalNumber("pivot_above_knee_m", c.pivotAboveKnee, within(0, 0.6, "a distance in m"));
+  a.optionalNumber("piston_range_m", c.pistonRange, within(0, 0.2, "a distance in m"));
+  a.optionalAngle("rotation_range_deg", c.rotationRange, within(0, 45, "an angle in deg"));
+}
+
 template <class A>
 void serialize(A& a, InitialConditions& c) {
   a.optionalAngle("hip_flexion_deg", c.hipFlexion, mustBePlausible(kJointAngleRange, "a hip angle"));
@@ -235,6 +258,9 @@ void serialize(A& a, Participant& p, PartsCatalogue* catalogue = nullptr) {
               [&] { return std::to_string(xy.size()) + " values"; });
     p.hipOffsetInPelvis = std::array<double, 2>{xy[0], xy[1]};
   }
+  if constexpr (A::kReading)
+    if (a.has("socket")) p.socket.emplace();
+  if (p.socket) a.map("socket", *p.socket);
   bool present = true;
   a.optionalMap("initial", p.initial, present);
   a.optionalMap("hip_range", p.hipRange, present = true);

@@ -119,15 +119,26 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
   if (movingHip_) {
     carrier_ = MobilizedBody::Translation(matter_.Ground(), hipInGround, Body::Massless(), Transform());
     Motion::Custom(carrier_, new PrescribedHipImpl(*hipPath));
-    kneeCoordinate_ = 4;
   }
-  const Body::Rigid thighBody(segmentMassProperties(g.thighMass, Vec3(0, -g.thighCom, 0), g.thighInertia));
+  // With a compliant socket the thigh body is the residual limb alone (docs/socket.md).
+  const SegmentMassProperties limb = calcResidualLimb(g);
+  const Body::Rigid thighBody(segmentMassProperties(limb.mass, Vec3(0, -limb.com, 0), limb.inertia));
   thigh_ = movingHip_ ? MobilizedBody::Pin(carrier_, Transform(), thighBody, Transform())
                       : MobilizedBody::Pin(matter_.Ground(), hipInGround, thighBody, Transform());
 
+  // What the knee pin hangs from: the thigh, or the socket on its slide and pivot.
+  MobilizedBody kneeParent = thigh_;
+  Vec3 kneeInParent(0, -g.thighLength, 0);
+  if (g.socket) {
+    addSocket(g);
+    kneeParent = socket_;
+    kneeInParent = Vec3(0, -(g.thighLength - g.socketPivotBelowHip), 0);
+  }
+  kneeCoordinate_ = (movingHip_ ? 4 : 1) + (g.socket ? 2 : 0);
+
   const Rotation flip(Pi, XAxis);  // makes the knee pin's +q a flexion (see header)
-  shank_ = MobilizedBody::Pin(thigh_, Transform(flip, Vec3(0, -g.thighLength, 0)),
-                              Body::Rigid(calcShankFootMassProperties(g)), Transform(flip, Vec3(0)));
+  shank_ = MobilizedBody::Pin(kneeParent, Transform(flip, kneeInParent), Body::Rigid(calcShankFootMassProperties(g)),
+                              Transform(flip, Vec3(0)));
 
   JointStopParams range;
   range.lower = hipRange.minFlexion;
@@ -144,6 +155,24 @@ LegModel::LegModel(const LegGeometry& g, const KneeLaw& knee, const HipMomentPro
   }
 
   system_.realizeTopology();
+}
+
+void LegModel::addSocket(const LegGeometry& g) {
+  const SocketCompliance& c = *g.socket;
+  // The slide: Simbody's Slider moves along its frames' common x, turned here to point down
+  // the thigh (+q pulls the socket off the limb). A massless carrier holds the slide's
+  // displacement; the socket pin turns about the pivot (+q flexes the socket and all below
+  // it on the limb, the hip's sense).
+  const Rotation alongThigh(-Pi / 2, ZAxis);
+  piston_ = MobilizedBody::Slider(thigh_, Transform(alongThigh, Vec3(0, -g.socketPivotBelowHip, 0)), Body::Massless(),
+                                  Transform(alongThigh));
+  socket_ = MobilizedBody::Pin(piston_, Transform(),
+                               Body::Rigid(segmentMassProperties(c.mass, Vec3(0, c.comAbovePivot, 0), c.inertia)),
+                               Transform());
+  Force::MobilityLinearSpring(forces_, piston_, MobilizerUIndex(0), c.pistonStiffness, 0);
+  Force::MobilityLinearDamper(forces_, piston_, MobilizerUIndex(0), c.pistonDamping);
+  Force::MobilityLinearSpring(forces_, socket_, MobilizerUIndex(0), c.rotationStiffness, 0);
+  Force::MobilityLinearDamper(forces_, socket_, MobilizerUIndex(0), c.rotationDamping);
 }
 
 State LegModel::makeInitialState(const InitialConditions& initial) const {
@@ -192,6 +221,11 @@ double LegModel::calcLeastPotentialEnergy(double hipFlexion) const {
   const double v0 = potentialAt(0), v90 = potentialAt(Pi / 2), v180 = potentialAt(Pi);
   const double c = 0.5 * (v0 + v180), a = 0.5 * (v0 - v180), b = v90 - c;
   return c - std::sqrt(a * a + b * b);
+}
+
+SocketDeflection LegModel::getSocketDeflection(const State& s) const {
+  if (!hasSocket()) return {};
+  return {piston_.getOneQ(s, 0), socket_.getOneQ(s, 0)};
 }
 
 LegPose LegModel::calcPose(const State& s) const {

@@ -10,6 +10,11 @@
 // at 0), so the swing feels the hip's acceleration (docs/moving-hip.md). Without it the hip
 // is fixed in space, as Burkett assumed.
 //
+// With a compliant socket (LegGeometry::socket, docs/socket.md) the thigh body is the residual
+// limb; the socket hangs from it on a slide along the thigh (a massless carrier) and a pin at
+// the residual limb's end, each with a linear spring and damper, and the knee pin hangs from
+// the socket.
+//
 // Coordinates: hip pin q = hip flexion (counter-clockwise about +z with the subject facing
 // +x); knee pin q = knee flexion (its frames are flipped about x so that a positive q
 // swings the shank backwards, the clinical sign).
@@ -27,6 +32,12 @@ namespace swingsim {
 /// Ground-frame positions of the chain's landmarks (m), for stick figures and clearance.
 struct LegPose {
   SimTK::Vec2 hip, knee, ankle, toe;
+};
+
+/// The socket's deflection on the residual limb: m (+ = pulled off the limb) and rad (+ = the
+/// socket flexed on the limb).
+struct SocketDeflection {
+  double piston = 0, rotation = 0;
 };
 
 class LegModel {
@@ -62,7 +73,7 @@ class LegModel {
   double getHipFlexionAcceleration(const SimTK::State& s) const { return thigh_.getOneUDot(s, 0); }
   double getKneeFlexionAcceleration(const SimTK::State& s) const { return shank_.getOneUDot(s, 0); }
   /// Where the knee's q (and u) sits in the state: 1 with the hip fixed, 4 after the hip
-  /// carrier's three translations.
+  /// carrier's three translations; 2 more after a compliant socket's slide and pivot.
   int getKneeCoordinateIndex() const { return kneeCoordinate_; }
   /// The hip moves along a measured pelvis path (a hip carrier is in the chain).
   bool hasMovingHip() const { return movingHip_; }
@@ -93,16 +104,25 @@ class LegModel {
   std::string getKneeWorkPartName(int i) const { return knee_->getWorkPartName(i); }
   double getKneePartWork(const SimTK::State& s, int i) const { return knee_->getPartWork(s, i); }
 
+  /// The socket gives on the residual limb (LegGeometry::socket).
+  bool hasSocket() const { return !socket_.isEmptyHandle(); }
+  /// Zero without a compliant socket.
+  SocketDeflection getSocketDeflection(const SimTK::State& s) const;
+
   /// Landmark positions (needs Position stage).
   LegPose calcPose(const SimTK::State& s) const;
 
  private:
+  void addSocket(const LegGeometry& geometry);
+
   SimTK::MultibodySystem system_;
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;
   SimTK::MobilizedBody::Translation carrier_;  // only with a moving hip
   SimTK::MobilizedBody::Pin thigh_;
   SimTK::MobilizedBody::Pin shank_;
+  SimTK::MobilizedBody::Slider piston_;        // only with a compliant socket
+  SimTK::MobilizedBody::Pin socket_;           // only with a compliant socket
   const KneeForceElement* knee_ = nullptr;     // owned by forces_
   const HipDriveElement* hipDrive_ = nullptr;  // owned by forces_; null with a prescribed thigh
   double footLength_;                          // m, ankle to toe (for calcPose)

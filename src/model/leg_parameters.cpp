@@ -61,7 +61,39 @@ LegGeometry calcLegGeometry(const Participant& p, double lowering, const AddedMa
                      " kg (heavier than a whole body: is it in grams?) (got " + formatNumber(added.mass) + " kg)");
   }
   g.added = added;
+  if (p.socket) {
+    g.socket = p.socket;
+    g.socketPivotBelowHip = p.thigh.length - p.socket->pivotAboveKnee;
+    const double comBelowHip = g.socketPivotBelowHip - p.socket->comAbovePivot;
+    if (!(g.socketPivotBelowHip > 0) || comBelowHip < 0)
+      throw InputError(p.path +
+                       ": socket: pivot_above_knee_m and com_above_pivot_m must put the pivot and the socket's "
+                       "COM on the thigh (thigh " +
+                       formatNumber(p.thigh.length) + " m; got the pivot " + formatNumber(g.socketPivotBelowHip) +
+                       " m and the COM " + formatNumber(comBelowHip) + " m below the hip)");
+    if (!(p.socket->mass < p.thigh.mass))
+      throw InputError(p.path + ": socket: mass_kg must be less than the thigh's " + formatNumber(p.thigh.mass) +
+                       " kg, which includes it (got " + formatNumber(p.socket->mass) + " kg)");
+    if (!(calcResidualLimb(g).inertia > 0))
+      throw InputError(p.path + ": socket: the socket's inertia (inertia_kg_m2 " + formatNumber(p.socket->inertia) +
+                       " kg m^2 at " + formatNumber(comBelowHip) + " m below the hip) is more than the thigh's (" +
+                       formatNumber(g.thighInertia) + " kg m^2 about its COM), which includes it");
+  }
   return g;
+}
+
+SegmentMassProperties calcResidualLimb(const LegGeometry& g) {
+  if (!g.socket) return {g.thighMass, g.thighCom, g.thighInertia};
+  const SocketCompliance& s = *g.socket;
+  const double socketCom = g.socketPivotBelowHip - s.comAbovePivot;
+  SegmentMassProperties r{};
+  r.mass = g.thighMass - s.mass;
+  r.com = (g.thighMass * g.thighCom - s.mass * socketCom) / r.mass;
+  // Inertias about the hip subtract; then back to the residual limb's own COM.
+  const double aboutHip =
+      g.thighInertia + g.thighMass * g.thighCom * g.thighCom - (s.inertia + s.mass * socketCom * socketCom);
+  r.inertia = aboutHip - r.mass * r.com * r.com;
+  return r;
 }
 
 PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion) {

@@ -139,6 +139,25 @@ struct ProsthesisPartsChoice {
   bool makesFoot() const { return !foot.empty(); }
 };
 
+/// Socket compliance (docs/socket.md): the socket, and the prosthesis hanging from it, ride on
+/// the residual limb through a pistoning slide along the thigh and a sagittal rotation about a
+/// pivot at the residual limb's end, each a linear spring and damper. Defaults: MyoSuite's
+/// transfemoral OSL leg (MyoHub/myo_sim@2cef885 `osl/assets/myolegs_osl_chain.xml`, body
+/// `prosthetic_socket`: joints `socket_piston` and `socket_rotation_1`); its socket's mass is
+/// taken out of the thigh segment, which Burkett's Table 2 gives as residual limb plus socket.
+struct SocketCompliance {
+  double pistonStiffness = 20000;   ///< N/m (socket_piston stiffness)
+  double pistonDamping = 10000;     ///< N s/m (socket_piston damping)
+  double rotationStiffness = 350;   ///< N m/rad (socket_rotation_1 stiffness)
+  double rotationDamping = 175;     ///< N m s/rad (socket_rotation_1 damping)
+  double mass = 0.849991;           ///< kg (prosthetic_socket inertial mass)
+  double comAbovePivot = 0.101169;  ///< m, along the thigh (prosthetic_socket inertial pos y)
+  double inertia = 0.0039776;       ///< kg m^2 about the COM, sagittal (diaginertia rotated by its quat)
+  double pivotAboveKnee = 0.11270;  ///< m, unlowered (the femoral pylon's 0.02829 + the adapter's 0.08441)
+  double pistonRange = 0.035;       ///< m: MyoSuite's joint range; a swing past it is reported
+  double rotationRange = 0.122173;  ///< rad (7 deg), as pistonRange
+};
+
 struct Participant {
   std::string path;  ///< file it was loaded from
   std::string name;
@@ -167,6 +186,8 @@ struct Participant {
   /// The prosthesis parts the shank and foot are made of (model/prosthesis_parts.h); the
   /// segments they make are in shank and foot. nullopt: the segments' masses as written.
   std::optional<ProsthesisPartsChoice> parts;
+  /// `socket:`: the socket's give (off = the socket is rigid on the residual limb, Burkett's leg).
+  std::optional<SocketCompliance> socket;
 };
 
 /// The leg as the dynamics sees it, after lowering: distances from the proximal joint.
@@ -176,12 +197,25 @@ struct LegGeometry {
   double footLength, footMass, footComForward,
       footInertia;  ///< footComForward: m ahead of the ankle, foot perpendicular to the shank
   AddedMass added;
+  /// The socket's give; nullopt = rigid. Its pivot stays at `socketPivotBelowHip` under a
+  /// lowering (the residual limb does not change; the knee moves down the pylon).
+  std::optional<SocketCompliance> socket;
+  double socketPivotBelowHip = 0;  ///< m, with `socket`
 };
 
 /// Applies a knee-axis lowering `lowering` (m, >= 0): thigh + d, shank - d, inertias about
 /// the COMs unchanged, COMs per `comRule`. Throws InputError if the shank would be shorter
 /// than `minShankLength` or a COM would leave its segment.
 LegGeometry calcLegGeometry(const Participant& participant, double lowering, const AddedMass& added = {});
+
+/// A planar segment's mass properties: kg, m below the hip along the thigh, kg m^2 about the COM.
+struct SegmentMassProperties {
+  double mass, com, inertia;
+};
+
+/// The residual limb alone with a compliant socket: the thigh segment less the socket, at
+/// zero deflection (so the two together are the thigh segment exactly).
+SegmentMassProperties calcResidualLimb(const LegGeometry& geometry);
 
 /// Ground-frame landmark positions (m) from the joint angles, by planar kinematics: hip at
 /// (0, hipHeight), x forward, y up; the foot points along +x of the shank.

@@ -156,6 +156,16 @@ std::string formatToeClearance(const SwingResult& r, const Participant& p) {
       clearance.c_str());
 }
 
+// A compliant socket's largest give, against MyoSuite's joint ranges (docs/socket.md).
+std::string formatSocket(const SwingResult& r, const Participant& p) {
+  if (!r.socketPeakPiston || !p.socket) return "";
+  const double piston = *r.socketPeakPiston, rotation = r.socketPeakRotation.value_or(0);
+  const bool past = piston > p.socket->pistonRange || rotation > p.socket->rotationRange;
+  return fmt("  socket              peak piston %.2f mm, peak rotation %.2f deg (range +-%.0f mm, +-%.1f deg)%s\n",
+             piston * 1e3, rotation * kRadToDeg, p.socket->pistonRange * 1e3, p.socket->rotationRange * kRadToDeg,
+             past ? "  (PAST THE SOCKET'S RANGE: its springs are linear there, a real socket's are not)" : "");
+}
+
 }  // namespace
 
 std::string formatSimulateSummary(const SimulateRun& run, const KneeModel& knee, const SwingOptions& options) {
@@ -167,6 +177,7 @@ std::string formatSimulateSummary(const SimulateRun& run, const KneeModel& knee,
   s += formatSwingOutcome(r, p);
   s += formatStopImpacts(r.impacts);
   s += formatToeClearance(r, p);
+  s += formatSocket(r, p);
   s += fmt("  integrator          %s, accuracy %g (%d realizations)\n", integratorName(options.integrator),
            options.accuracy, r.realizations);
   s += "  events:";

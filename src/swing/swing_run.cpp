@@ -138,6 +138,11 @@ void SwingRun::recordStep(const StepEnd& now, const State& s) {
       (now.hip < p_.hipRange.minFlexion - kHipRangeSlack || now.hip > p_.hipRange.maxFlexion + kHipRangeSlack))
     throw errors_.hipLeftRange(s);
   thighPeak_ = std::max(thighPeak_, now.hip);
+  if (leg_.hasSocket()) {
+    const SocketDeflection d = leg_.getSocketDeflection(s);
+    result_.socketPeakPiston = std::max(result_.socketPeakPiston.value_or(0), std::abs(d.piston));
+    result_.socketPeakRotation = std::max(result_.socketPeakRotation.value_or(0), std::abs(d.rotation));
+  }
 }
 
 void SwingRun::redoLooseDwell(StepEnd& now) {

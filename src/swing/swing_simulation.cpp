@@ -53,6 +53,7 @@ constexpr IntegratorInfo kIntegrators[] = {
     {"runge-kutta-feldberg", "Simbody Runge-Kutta-Feldberg", 1e-5},
     {"runge-kutta-3", "Simbody Runge-Kutta 3", 1e-3},
     {"verlet", "Simbody Verlet", 1e-5},
+    {"cpodes", "Simbody CPodes (implicit BDF)", 1e-5},
 };
 
 const IntegratorInfo& infoOf(SwingIntegrator integrator) { return kIntegrators[static_cast<int>(integrator)]; }

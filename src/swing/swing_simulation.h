@@ -24,6 +24,7 @@ enum class SwingIntegrator {
   kRungeKuttaFeldberg,  ///< RK 4(5), 6 stages
   kRungeKutta3,         ///< RK 3(2), 3 stages
   kVerlet,              ///< velocity Verlet with error control
+  kCPodes,              ///< CPODES, implicit BDF: for a stiff leg (a compliant socket, docs/socket.md)
 };
 
 /// Display name ("Dormand-Prince 5(4) over Simbody realizations", "Simbody Runge-Kutta-Merson").
@@ -138,6 +139,9 @@ struct SwingResult {
   /// the run's end); absent without a knee peak or without a trajectory sample in that span
   std::optional<double> minToeClearance;
   std::vector<SwingEvent> events;
+  /// A compliant socket's largest deflections at the steps' ends up to the run's end: m, rad
+  /// (magnitudes); absent without a compliant socket (docs/socket.md).
+  std::optional<double> socketPeakPiston, socketPeakRotation;
   SwingTrajectory trajectory;
   int steps = 0;              ///< integrator steps taken
   int realizations = 0;       ///< system realizations the integrator asked for

@@ -16,6 +16,8 @@ std::unique_ptr<Integrator> makeIntegrator(SwingIntegrator kind, const Multibody
       return std::make_unique<VerletIntegrator>(system);
     case SwingIntegrator::kRungeKuttaMerson:
       return std::make_unique<RungeKuttaMersonIntegrator>(system);
+    case SwingIntegrator::kCPodes:
+      return std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
     case SwingIntegrator::kDormandPrince:
       break;
   }

@@ -62,6 +62,7 @@ TEST(SwingStepper, MakeIntegratorGivesSimbodysOwnAndRefusesDormandPrince) {
             "RungeKuttaFeldberg");
   EXPECT_EQ(std::string(makeIntegrator(SwingIntegrator::kRungeKutta3, rig.system)->getMethodName()), "RungeKutta3");
   EXPECT_EQ(std::string(makeIntegrator(SwingIntegrator::kVerlet, rig.system)->getMethodName()), "Verlet");
+  EXPECT_EQ(std::string(makeIntegrator(SwingIntegrator::kCPodes, rig.system)->getMethodName()), "CPodesBDF");
   EXPECT_THROW(makeIntegrator(SwingIntegrator::kDormandPrince, rig.system), std::invalid_argument);
 }
 
