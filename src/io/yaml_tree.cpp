@@ -84,6 +84,7 @@ void YamlTree::set(const std::string& dottedKey, const std::string& value, const
   std::stringstream parts(dottedKey);
   std::string part;
   while (std::getline(parts, part, '.')) {
+    if (!node.IsDefined() || node.IsNull()) node = YAML::Node(YAML::NodeType::Map);  // a map not yet written
     if (!node.IsMap()) throw InputError(dottedKey + ": expected a map above '" + part + "' in " + what);
     YAML::Node next = node[part];
     node.reset(next);

@@ -215,6 +215,8 @@ const std::vector<std::string>& editableParticipantKeys() {
       for (const char* field : {"length_m", "mass_kg", "com_from_distal_m", "inertia_kgm2"})
         keys.push_back(std::string("segments.") + segment + "." + field);
     keys.insert(keys.end(), {"knee_friction_Nm", "sound_limb_swing_time_s", "hip_moment.time_scale"});
+    // A compliant socket (docs/socket.md): a value typed turns it on, the rest at its defaults.
+    keys.insert(keys.end(), {"socket.piston_stiffness_N_per_m", "socket.rotation_stiffness_Nm_per_rad"});
     return keys;
   }();
   return kKeys;

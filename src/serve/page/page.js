@@ -12,6 +12,8 @@ const kFieldLabels = {
   'knee_friction_Nm': ['knee friction', 'N m'],
   'sound_limb_swing_time_s': ['sound-limb swing time', 's'],
   'hip_moment.time_scale': ['hip moment time scale', ''],
+  'socket.piston_stiffness_N_per_m': ['socket piston stiffness (empty: rigid)', 'N/m'],
+  'socket.rotation_stiffness_Nm_per_rad': ['socket rotation stiffness (empty: rigid)', 'N m/rad'],
 };
 for (const seg of ['thigh', 'shank', 'foot']) {
   kFieldLabels[`segments.${seg}.length_m`] = [`${seg} length`, 'm'];
@@ -131,7 +133,7 @@ function fmt(value, digits, unit) {
 // other knobs.
 function showNoSwing(json) {
   showError(json);
-  for (const id of ['swing-time', 'peak-flexion', 'toe-clearance', 'stop-impact']) $(id).textContent = '-';
+  for (const id of ['swing-time', 'peak-flexion', 'toe-clearance', 'stop-impact', 'socket-give']) $(id).textContent = '-';
   $('figure').innerHTML = '';
 }
 
@@ -143,6 +145,9 @@ function showSwing(json) {
   const impact = json.stop_impacts && json.stop_impacts[0];
   $('stop-impact').textContent = impact ?
     `${impact.impact_rate_rad_s.toFixed(2)} rad/s at ${impact.time_s.toFixed(4)} s` : 'none';
+  const socket = json.socket_peak;
+  $('socket-give').textContent = socket ?
+    `${(socket.piston_m * 1000).toFixed(2)} mm, ${socket.rotation_deg.toFixed(2)} deg` : 'rigid';
   $('figure').innerHTML = json.stick_figure_svg || '';
 }
 

@@ -1,0 +1,45 @@
+// A compliant socket from swingsim serve's form (docs/socket.md): a stiffness typed into a
+// socket field turns the socket on with MyoSuite's other values, the reply carries its peak
+// give, an empty form leaves the leg rigid, and a bad value is named by its key.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "serve/leg_request.h"
+#include "serve/serve_api.h"
+#include "serve_api_calls.h"
+
+namespace swingsim {
+namespace {
+
+using ::testing::HasSubstr;
+
+using serve_test::callServeApi;
+
+TEST(ServeSocket, ATypedStiffnessTurnsTheSocketOnAndTheReplyHasItsGive) {
+  const Json rigid = callServeApi(&ServeApi::simulate, {{"participant", "p1"}});
+  EXPECT_FALSE(rigid.contains("socket_peak"));
+  const auto withRotationStiffness = [](const char* value) {
+    return callServeApi(&ServeApi::simulate,
+                        {{"participant", "p1"}, {"edits", {{"socket.rotation_stiffness_Nm_per_rad", value}}}});
+  };
+  const Json myo = withRotationStiffness("350"), loose = withRotationStiffness("100");
+  ASSERT_TRUE(myo.contains("socket_peak")) << myo.dump();
+  ASSERT_TRUE(loose.contains("socket_peak")) << loose.dump();
+  // The socket gives, the swing moves, and a looser socket turns further.
+  EXPECT_GT(myo["socket_peak"]["piston_m"].get<double>(), 0);
+  EXPECT_NE(myo["swing_time_s"].get<double>(), rigid["swing_time_s"].get<double>());
+  EXPECT_GT(loose["socket_peak"]["rotation_deg"].get<double>(), myo["socket_peak"]["rotation_deg"].get<double>());
+}
+
+TEST(ServeSocket, TheFormOffersTheSocketAndABadValueIsNamedByItsKey) {
+  const auto& keys = editableParticipantKeys();
+  EXPECT_NE(std::find(keys.begin(), keys.end(), "socket.piston_stiffness_N_per_m"), keys.end());
+  const Json bad = callServeApi(&ServeApi::simulate,
+                                {{"participant", "p1"}, {"edits", {{"socket.piston_stiffness_N_per_m", "-5"}}}}, 400);
+  EXPECT_THAT(bad.dump(), HasSubstr("piston_stiffness_N_per_m"));
+}
+
+}  // namespace
+}  // namespace swingsim
