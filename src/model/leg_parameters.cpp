@@ -96,13 +96,19 @@ SegmentMassProperties calcResidualLimb(const LegGeometry& g) {
   return r;
 }
 
-PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion) {
-  const double shank = hipFlexion - kneeFlexion;  // absolute shank angle from the downward vertical
+PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion,
+                            double piston, double socketRotation) {
+  if (!g.socket) piston = socketRotation = 0;
+  const double socketAngle = hipFlexion + socketRotation;  // the socket's line from hanging straight down
+  const double shank = socketAngle - kneeFlexion;          // absolute shank angle from the downward vertical
+  // The knee: down the thigh to the socket's pivot (moved by the piston), then down the socket.
+  const double toPivot = g.socket ? g.socketPivotBelowHip + piston : g.thighLength;
+  const double pivotToKnee = g.socket ? g.thighLength - g.socketPivotBelowHip : 0;
   PlanarPose p{};
   p.hip[0] = 0;
   p.hip[1] = hipHeight;
-  p.knee[0] = g.thighLength * std::sin(hipFlexion);
-  p.knee[1] = hipHeight - g.thighLength * std::cos(hipFlexion);
+  p.knee[0] = toPivot * std::sin(hipFlexion) + pivotToKnee * std::sin(socketAngle);
+  p.knee[1] = hipHeight - toPivot * std::cos(hipFlexion) - pivotToKnee * std::cos(socketAngle);
   p.ankle[0] = p.knee[0] + g.shankLength * std::sin(shank);
   p.ankle[1] = p.knee[1] - g.shankLength * std::cos(shank);
   p.toe[0] = p.ankle[0] + g.footLength * std::cos(shank);

@@ -222,7 +222,10 @@ SegmentMassProperties calcResidualLimb(const LegGeometry& geometry);
 struct PlanarPose {
   double hip[2], knee[2], ankle[2], toe[2];
 };
-PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion);
+/// With a compliant socket (g.socket), `piston` (m, + = off the limb) and `socketRotation` (rad,
+/// + = flexed on the limb) place the knee; without one they are ignored.
+PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion,
+                            double piston = 0, double socketRotation = 0);
 
 /// The largest lowering `calcLegGeometry` accepts for this participant, m.
 double calcMaxLowering(const Participant& participant);

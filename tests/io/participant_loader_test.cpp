@@ -12,44 +12,17 @@
 #include "core/units.h"
 #include "io/motion_file.h"
 #include "io/swing_events.h"
+#include "participant_text.h"
 
 namespace swingsim {
 namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kGood = R"(name: PX
-height_m: 1.80
-body_mass_kg: 75
-segments:
-  thigh: {length_m: 0.410, mass_kg: 3.350, com_from_distal_m: 0.284, inertia_kgm2: 0.0264}
-  shank: {length_m: 0.515, mass_kg: 0.785, com_from_distal_m: 0.260, inertia_kgm2: 0.0161}
-  foot:  {length_m: 0.240, mass_kg: 1.030, com_from_distal_m: 0.140, inertia_kgm2: 0.0059}
-knee_friction_Nm: 10
-knee_model: ../models/damping-table-default.yaml
-hip_moment:
-  profile: biphasic_sine
-  flexion_amplitude_Nm: 30
-  flexion_duration_s: 0.2
-  extension_amplitude_Nm: 15
-  extension_duration_s: 0.2
-)";
+const std::string& kGood = testing::kParticipantText;
 
-std::string errorFor(const std::string& text) {
-  try {
-    parseParticipant(text, "participants/px.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-std::string replaced(const std::string& from, const std::string& to) {
-  std::string t = kGood;
-  auto at = t.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return t.replace(at, from.size(), to);
-}
+std::string errorFor(const std::string& text) { return testing::participantError(text); }
+std::string replaced(const std::string& from, const std::string& to) { return testing::replacedIn(kGood, from, to); }
 
 TEST(ParticipantLoader, GoodFileLoadsWithDefaultsAndResolvedPaths) {
   Participant p = parseParticipant(kGood, "participants/px.yaml");

@@ -8,6 +8,7 @@
 #include "io/participant_loader.h"
 #include "io/parts_catalogue_loader.h"
 #include "model/prosthesis_parts.h"
+#include "participant_text.h"
 
 namespace swingsim {
 namespace {
@@ -34,20 +35,9 @@ hip_moment:
   extension_duration_s: 0.2
 )";
 
-std::string errorFor(const std::string& text) {
-  try {
-    parseParticipant(text, "participants/px.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
+std::string errorFor(const std::string& text) { return testing::participantError(text); }
 std::string replaced(const std::string& from, const std::string& to) {
-  std::string t = kWithParts;
-  const auto at = t.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return t.replace(at, from.size(), to);
+  return testing::replacedIn(kWithParts, from, to);
 }
 
 TEST(ParticipantParts, SegmentsAreTheCatalogueParts) {

@@ -6,37 +6,18 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
+#include "participant_text.h"
 
 namespace swingsim {
 namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kParticipant = R"(name: PX
-height_m: 1.80
-body_mass_kg: 75
-segments:
-  thigh: {length_m: 0.410, mass_kg: 3.350, com_from_distal_m: 0.284, inertia_kgm2: 0.0264}
-  shank: {length_m: 0.515, mass_kg: 0.785, com_from_distal_m: 0.260, inertia_kgm2: 0.0161}
-  foot:  {length_m: 0.240, mass_kg: 1.030, com_from_distal_m: 0.140, inertia_kgm2: 0.0059}
-knee_friction_Nm: 10
-knee_model: ../models/damping-table-default.yaml
-hip_moment:
-  profile: biphasic_sine
-  flexion_amplitude_Nm: 30
-  flexion_duration_s: 0.2
-  extension_amplitude_Nm: 15
-  extension_duration_s: 0.2
-)";
+const std::string& kParticipant = testing::kParticipantText;
 constexpr int kKeyLine = 16;  // the appended key's line in the text above
 
 std::string errorFor(const std::string& value) {
-  try {
-    parseParticipant(kParticipant + "sound_limb_swing_time_s: " + value + "\n", "participants/px.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::participantError(kParticipant + "sound_limb_swing_time_s: " + value + "\n");
 }
 
 TEST(ParticipantSoundLimb, ReadInSecondsAndAbsentWhenNotGiven) {

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "core/input_error.h"
 #include "core/units.h"
@@ -244,6 +245,35 @@ TEST(SocketCompliance, AStiffSocketSwingsAsTheRigidLegAndTheDefaultOneGivesAsIts
               stiffer.swingTime);
   EXPECT_GT(std::abs(myo.swingTime - base.swingTime), 1e-5);
   EXPECT_LT(std::abs(stiffer.swingTime - base.swingTime), 0.1 * std::abs(myo.swingTime - base.swingTime));
+}
+
+TEST(SocketCompliance, TheTrajectorysLandmarksFollowTheSocketsDeflection) {
+  // calcPlanarPoseXY (what the trajectory files and the toe clearance use) against Simbody's
+  // own kinematics of the deflected leg.
+  Participant p = loadP1();
+  p.socket = SocketCompliance{};
+  const LegGeometry g = calcLegGeometry(p, 0.04);
+  const KneeLawSum none;
+  const double hipHeight = 0.97;
+  LegModel leg(g, none, p.hipMoment, p.hipRange, hipHeight, false);
+  SimTK::State s = leg.makeInitialState(p.initial);
+  const double hip = 0.3, piston = 0.012, rotation = -0.05, knee = 0.9;
+  s.updQ()[0] = hip;
+  s.updQ()[1] = piston;
+  s.updQ()[2] = rotation;
+  s.updQ()[3] = knee;
+  leg.getSystem().realize(s, SimTK::Stage::Position);
+  ASSERT_NEAR(leg.getSocketDeflection(s).piston, piston, 0);
+  const LegPose simbody = leg.calcPose(s);
+  const PlanarPose planar = calcPlanarPoseXY(g, hipHeight, hip, knee, piston, rotation);
+  for (const auto& [a, b] : {std::pair{simbody.knee, planar.knee}, std::pair{simbody.ankle, planar.ankle},
+                             std::pair{simbody.toe, planar.toe}}) {
+    EXPECT_NEAR(a[0], b[0], 1e-14);
+    EXPECT_NEAR(a[1], b[1], 1e-14);
+  }
+  // The deflection moves the toe by millimetres to centimetres: the check is not of a rigid leg.
+  const PlanarPose rigid = calcPlanarPoseXY(g, hipHeight, hip, knee);
+  EXPECT_GT(std::hypot(rigid.toe[0] - planar.toe[0], rigid.toe[1] - planar.toe[1]), 0.02);
 }
 
 TEST(SocketCompliance, ASocketHeavierThanTheThighIsRefused) {
