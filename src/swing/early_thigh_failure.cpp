@@ -19,7 +19,7 @@ double calcConstantFrom(const HipMomentProfile& hipMoment) {
 EarlyThighFailure::EarlyThighFailure(const SwingSetup& setup, const SwingOptions& options, bool fastPath)
     : setup_(setup),
       allowed_(options.earlyThighFailure && fastPath && setup.participant.drive != SwingDrive::kThighKinematics &&
-               setup.knee->isPassive()),
+               setup.knee->isPassive() && !setup.participant.socket),
       hipMomentConstantFrom_(calcConstantFrom(setup.participant.hipMoment)),
       hipMomentFinal_(setup.participant.hipMoment.calcMoment(hipMomentConstantFrom_ + 1.0)),
       thighTargetEnergy_(std::numeric_limits<double>::quiet_NaN()) {}

@@ -17,7 +17,8 @@ constexpr double kUnreachableEnergyMargin = 0.01;
 
 class EarlyThighFailure {
  public:
-  /// `fastPath`: the run steps with Dormand-Prince.
+  /// `fastPath`: the run steps with Dormand-Prince. Off with a compliant socket: the least
+  /// potential energy is taken at zero deflection, and a sagging socket can go below it.
   EarlyThighFailure(const SwingSetup& setup, const SwingOptions& options, bool fastPath);
   bool isAllowed() const { return allowed_; }
   /// Checks step end `now` (of state `s`) of a swing whose thigh has not reached its target

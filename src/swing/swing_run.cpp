@@ -139,9 +139,8 @@ void SwingRun::recordStep(const StepEnd& now, const State& s) {
     throw errors_.hipLeftRange(s);
   thighPeak_ = std::max(thighPeak_, now.hip);
   if (leg_.hasSocket()) {
-    const SocketDeflection d = leg_.getSocketDeflection(s);
-    result_.socketPeakPiston = std::max(result_.socketPeakPiston.value_or(0), std::abs(d.piston));
-    result_.socketPeakRotation = std::max(result_.socketPeakRotation.value_or(0), std::abs(d.rotation));
+    result_.socketPeakPiston = std::max(result_.socketPeakPiston.value_or(0), std::abs(now.piston));
+    result_.socketPeakRotation = std::max(result_.socketPeakRotation.value_or(0), std::abs(now.socketRotation));
   }
 }
 

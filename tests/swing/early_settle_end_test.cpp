@@ -65,6 +65,10 @@ TEST(EarlySettleEnd, OnlyOnTheFastPathUnderAHipMomentWithoutEnergyBookkeeping) {
   SwingSetup measured = setup;
   measured.participant.drive = SwingDrive::kThighKinematics;
   EXPECT_FALSE(EarlySettleEnd(measured, defaults, climb, true, kMobilities).isAllowed());
+  // A compliant socket adds two mobilities the bound does not know (docs/socket.md).
+  SwingSetup socket = setup;
+  socket.participant.socket = SocketCompliance{};
+  EXPECT_FALSE(EarlySettleEnd(socket, defaults, climb, true, kMobilities + 2).isAllowed());
 }
 
 }  // namespace

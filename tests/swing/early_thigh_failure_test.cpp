@@ -63,6 +63,10 @@ TEST(EarlyThighFailure, OnlyOnTheFastPathWithAPassiveKneeUnderAHipMoment) {
   SwingSetup measured = setup;
   measured.participant.drive = SwingDrive::kThighKinematics;
   EXPECT_FALSE(EarlyThighFailure(measured, SwingOptions{}, true).isAllowed());
+  // A sagging socket can go below the least potential energy taken at zero deflection.
+  SwingSetup socket = setup;
+  socket.participant.socket = SocketCompliance{};
+  EXPECT_FALSE(EarlyThighFailure(socket, SwingOptions{}, true).isAllowed());
 }
 
 }  // namespace
