@@ -34,12 +34,6 @@ struct LegPose {
   SimTK::Vec2 hip, knee, ankle, toe;
 };
 
-/// The socket's deflection on the residual limb: m (+ = pulled off the limb) and rad (+ = the
-/// socket flexed on the limb).
-struct SocketDeflection {
-  double piston = 0, rotation = 0;
-};
-
 class LegModel {
  public:
   /// Builds the system. `hipHeight` (m) places the hip above the ground. `trackWork`: also

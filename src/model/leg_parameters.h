@@ -158,6 +158,12 @@ struct SocketCompliance {
   double rotationRange = 0.122173;  ///< rad (7 deg), as pistonRange
 };
 
+/// A compliant socket's deflection on the residual limb: m (+ = pulled off the limb) and rad
+/// (+ = the socket flexed on the limb, the hip's sense).
+struct SocketDeflection {
+  double piston = 0, rotation = 0;
+};
+
 struct Participant {
   std::string path;  ///< file it was loaded from
   std::string name;
@@ -222,10 +228,10 @@ SegmentMassProperties calcResidualLimb(const LegGeometry& geometry);
 struct PlanarPose {
   double hip[2], knee[2], ankle[2], toe[2];
 };
-/// With a compliant socket (g.socket), `piston` (m, + = off the limb) and `socketRotation` (rad,
-/// + = flexed on the limb) place the knee; without one they are ignored.
+/// With a compliant socket (g.socket), its deflection `socket` places the knee; without one it
+/// is ignored.
 PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion,
-                            double piston = 0, double socketRotation = 0);
+                            const SocketDeflection& socket = {});
 
 /// The largest lowering `calcLegGeometry` accepts for this participant, m.
 double calcMaxLowering(const Participant& participant);

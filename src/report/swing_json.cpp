@@ -37,9 +37,8 @@ Json makeSwingResultJson(const std::string& participant, double lowering, const 
                {"stop_impacts", impacts},
                {"min_toe_clearance_m", jsonOrNull(r.minToeClearance)},
                {"events", events}};
-  if (r.socketPeakPiston)
-    json["socket_peak"] = {{"piston_m", *r.socketPeakPiston},
-                           {"rotation_deg", r.socketPeakRotation.value_or(0) * kRadToDeg}};
+  if (r.socketPeak)
+    json["socket_peak"] = {{"piston_m", r.socketPeak->piston}, {"rotation_deg", r.socketPeak->rotation * kRadToDeg}};
   if (const auto& e = r.trialEnd) {
     json["trial_end"] = {{"unmet", e->unmet},
                          {"time_s", e->time},

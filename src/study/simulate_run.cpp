@@ -158,8 +158,8 @@ std::string formatToeClearance(const SwingResult& r, const Participant& p) {
 
 // A compliant socket's largest give, against MyoSuite's joint ranges (docs/socket.md).
 std::string formatSocket(const SwingResult& r, const Participant& p) {
-  if (!r.socketPeakPiston || !p.socket) return "";
-  const double piston = *r.socketPeakPiston, rotation = r.socketPeakRotation.value_or(0);
+  if (!r.socketPeak || !p.socket) return "";
+  const double piston = r.socketPeak->piston, rotation = r.socketPeak->rotation;
   const bool past = piston > p.socket->pistonRange || rotation > p.socket->rotationRange;
   return fmt("  socket              peak piston %.2f mm, peak rotation %.2f deg (range +-%.0f mm, +-%.1f deg)%s\n",
              piston * 1e3, rotation * kRadToDeg, p.socket->pistonRange * 1e3, p.socket->rotationRange * kRadToDeg,

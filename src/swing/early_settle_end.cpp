@@ -16,7 +16,7 @@ EarlySettleEnd::EarlySettleEnd(const SwingSetup& setup, const SwingOptions& opti
       climb_(climb),
       allowed_(options.earlySettleEnd && fastPath && !options.trackImpactEnergy && climb.getStop() != nullptr &&
                climb.getStop()->params().lower < setup.participant.swingEnd.zoneOfStability &&
-               setup.participant.drive != SwingDrive::kThighKinematics && !setup.participant.socket),
+               setup.participant.drive != SwingDrive::kThighKinematics && nu == 2),
       edge_(setup.participant.swingEnd.zoneOfStability - kLooseDwellMargin),
       unitKneeForce_(nu, 0.0) {
   unitKneeForce_[1] = 1.0;

@@ -35,8 +35,9 @@ class EarlySettleEnd {
   /// `fastPath`: the run steps with Dormand-Prince. Off with trackImpactEnergy (the impact
   /// bookkeeping wants the whole dwell), without a stop below the zone, and with the
   /// measured thigh drive (the prescribed thigh's future is not bounded like a hip moment's),
-  /// and with a compliant socket (the bound is of the two-coordinate leg, hip and knee at
-  /// mobilities 0 and 1; the socket's springs can give back what they hold).
+  /// and on any leg but the two-mobility one, hip and knee at mobilities 0 and 1, that the
+  /// bound is worked out for (`nu` mobilities: a compliant socket's springs add two and can
+  /// give back what they hold).
   EarlySettleEnd(const SwingSetup& setup, const SwingOptions& options, const KneeClimb& climb, bool fastPath, int nu);
   bool isAllowed() const { return allowed_; }
   /// Whether the swing end candidate of `log` is decided at step end `now` (of state `s`;

@@ -18,9 +18,7 @@ StepEnd readStepEnd(const LegModel& leg, const State& s, bool trackEnergy) {
             leg.getKneeFlexionAcceleration(s),
             leg.calcHipMoment(s),
             leg.calcKneeMoment(s)};
-  const SocketDeflection socket = leg.getSocketDeflection(s);
-  e.piston = socket.piston;
-  e.socketRotation = socket.rotation;
+  e.socket = leg.getSocketDeflection(s);
   if (trackEnergy) {
     e.kinetic = system.calcKineticEnergy(s);
     const int parts = std::min(leg.numKneeWorkParts(), kMaxWorkCauses - 1);
@@ -32,7 +30,8 @@ StepEnd readStepEnd(const LegModel& leg, const State& s, bool trackEnergy) {
 }
 
 void appendSample(SwingTrajectory& tr, const LegGeometry& g, double hipHeight, double t, double hip, double knee,
-                  double hipRate, double kneeRate, double hipMoment, double kneeMoment, std::array<double, 2> socket) {
+                  double hipRate, double kneeRate, double hipMoment, double kneeMoment,
+                  const SocketDeflection& socket) {
   tr.time.push_back(t);
   tr.hipFlexion.push_back(hip);
   tr.kneeFlexion.push_back(knee);
@@ -40,7 +39,7 @@ void appendSample(SwingTrajectory& tr, const LegGeometry& g, double hipHeight, d
   tr.kneeFlexionRate.push_back(kneeRate);
   tr.hipMoment.push_back(hipMoment);
   tr.kneeMoment.push_back(kneeMoment);
-  const PlanarPose pose = calcPlanarPoseXY(g, hipHeight, hip, knee, socket[0], socket[1]);
+  const PlanarPose pose = calcPlanarPoseXY(g, hipHeight, hip, knee, socket);
   tr.kneeX.push_back(pose.knee[0]);
   tr.kneeY.push_back(pose.knee[1]);
   tr.ankleX.push_back(pose.ankle[0]);
@@ -63,7 +62,8 @@ void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, doubl
                  hermite(a.kneeRate, a.kneeAcc, b.kneeRate, b.kneeAcc, s),
                  a.hipMoment + s * (b.hipMoment - a.hipMoment), a.kneeMoment + s * (b.kneeMoment - a.kneeMoment),
                  // The socket's millimetres: linear within a step (its steps are short, docs/socket.md).
-                 {a.piston + s * (b.piston - a.piston), a.socketRotation + s * (b.socketRotation - a.socketRotation)});
+                 {a.socket.piston + s * (b.socket.piston - a.socket.piston),
+                  a.socket.rotation + s * (b.socket.rotation - a.socket.rotation)});
     nextSample += interval;
   }
 }

@@ -27,8 +27,7 @@ constexpr int kMaxWorkCauses = 12;
 // with energy tracking the kinetic energy and the work done so far.
 struct StepEnd {
   double t, hip, knee, hipRate, kneeRate, hipAcc, kneeAcc, hipMoment, kneeMoment;
-  double piston = 0,
-         socketRotation = 0;  ///< a compliant socket's deflection, m and rad (LegModel::getSocketDeflection)
+  SocketDeflection socket;  ///< a compliant socket's (LegModel::getSocketDeflection); zero without one
   double kinetic = 0;
   int numWork = 0;
   std::array<double, kMaxWorkCauses> work{};
@@ -39,10 +38,10 @@ struct StepEnd {
 StepEnd readStepEnd(const LegModel& leg, const SimTK::State& s, bool trackEnergy);
 
 /// One output sample: joint state, moments, and the landmarks by planar kinematics (with a
-/// compliant socket's deflection, `socket` = {piston, rotation}).
+/// compliant socket's deflection `socket`).
 void appendSample(SwingTrajectory& tr, const LegGeometry& g, double hipHeight, double t, double hip, double knee,
                   double hipRate, double kneeRate, double hipMoment, double kneeMoment,
-                  std::array<double, 2> socket = {0, 0});
+                  const SocketDeflection& socket = {});
 
 /// The samples from `nextSample` (s, advanced past them) to step end b, on the Hermite
 /// interpolants of the step a-b: they cost no realization, so the integrator chooses its

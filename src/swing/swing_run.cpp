@@ -139,8 +139,10 @@ void SwingRun::recordStep(const StepEnd& now, const State& s) {
     throw errors_.hipLeftRange(s);
   thighPeak_ = std::max(thighPeak_, now.hip);
   if (leg_.hasSocket()) {
-    result_.socketPeakPiston = std::max(result_.socketPeakPiston.value_or(0), std::abs(now.piston));
-    result_.socketPeakRotation = std::max(result_.socketPeakRotation.value_or(0), std::abs(now.socketRotation));
+    if (!result_.socketPeak) result_.socketPeak.emplace();
+    SocketDeflection& peak = *result_.socketPeak;
+    peak.piston = std::max(peak.piston, std::abs(now.socket.piston));
+    peak.rotation = std::max(peak.rotation, std::abs(now.socket.rotation));
   }
 }
 

@@ -139,9 +139,9 @@ struct SwingResult {
   /// the run's end); absent without a knee peak or without a trajectory sample in that span
   std::optional<double> minToeClearance;
   std::vector<SwingEvent> events;
-  /// A compliant socket's largest deflections at the steps' ends up to the run's end: m, rad
-  /// (magnitudes); absent without a compliant socket (docs/socket.md).
-  std::optional<double> socketPeakPiston, socketPeakRotation;
+  /// A compliant socket's largest deflections (magnitudes, each at its own step end) up to the
+  /// run's end; absent without a compliant socket (docs/socket.md).
+  std::optional<SocketDeflection> socketPeak;
   SwingTrajectory trajectory;
   int steps = 0;              ///< integrator steps taken
   int realizations = 0;       ///< system realizations the integrator asked for

@@ -17,23 +17,18 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const std::string kWithParts = R"(name: PX
-height_m: 1.80
-body_mass_kg: 75
-prosthesis_parts: {knee: osl-knee, pylon: osl-tibial-pylon, foot: proteor-kinterra-26}
-segments:
-  thigh: {length_m: 0.410, mass_kg: 3.350, com_from_distal_m: 0.284, inertia_kgm2: 0.0264}
-  shank: {length_m: 0.515}
-  foot:  {length_m: 0.180}
-knee_friction_Nm: 10
-knee_model: ../models/damping-table-default.yaml
-hip_moment:
-  profile: biphasic_sine
-  flexion_amplitude_Nm: 30
-  flexion_duration_s: 0.2
-  extension_amplitude_Nm: 15
-  extension_duration_s: 0.2
-)";
+// The shared participant with its shank and foot named as parts: the segments keep only
+// their lengths (prosthesis_parts on line 4, the shank on line 7).
+const std::string kWithParts = [] {
+  using testing::replacedIn;
+  std::string t = replacedIn(testing::kParticipantText, "segments:\n",
+                             "prosthesis_parts: {knee: osl-knee, pylon: osl-tibial-pylon, foot: proteor-kinterra-26}\n"
+                             "segments:\n");
+  t = replacedIn(t, "  shank: {length_m: 0.515, mass_kg: 0.785, com_from_distal_m: 0.260, inertia_kgm2: 0.0161}",
+                 "  shank: {length_m: 0.515}");
+  return replacedIn(t, "  foot:  {length_m: 0.240, mass_kg: 1.030, com_from_distal_m: 0.140, inertia_kgm2: 0.0059}",
+                    "  foot:  {length_m: 0.180}");
+}();
 
 std::string errorFor(const std::string& text) { return testing::participantError(text); }
 std::string replaced(const std::string& from, const std::string& to) {

@@ -265,7 +265,7 @@ TEST(SocketCompliance, TheTrajectorysLandmarksFollowTheSocketsDeflection) {
   leg.getSystem().realize(s, SimTK::Stage::Position);
   ASSERT_NEAR(leg.getSocketDeflection(s).piston, piston, 0);
   const LegPose simbody = leg.calcPose(s);
-  const PlanarPose planar = calcPlanarPoseXY(g, hipHeight, hip, knee, piston, rotation);
+  const PlanarPose planar = calcPlanarPoseXY(g, hipHeight, hip, knee, {piston, rotation});
   for (const auto& [a, b] : {std::pair{simbody.knee, planar.knee}, std::pair{simbody.ankle, planar.ankle},
                              std::pair{simbody.toe, planar.toe}}) {
     EXPECT_NEAR(a[0], b[0], 1e-14);
