@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "numerics/dormand_prince.h"
+#include "swing/reference_socket_chain.h"
 
 namespace swingsim {
 
@@ -17,6 +18,7 @@ namespace {
 // gamma off the shank axis, the inertia terms and the gravity moments.
 struct ChainTerms {
   double gamma, m11, m22, m2L1r2, massMoment1, massMoment2, gravity1, gravity2;
+  double shankBodyMass;  // kg: shank, foot and added mass
 };
 
 ChainTerms calcChainTerms(const LegGeometry& g) {
@@ -37,6 +39,7 @@ ChainTerms calcChainTerms(const LegGeometry& g) {
   c.massMoment2 = m2 * r2;
   c.gravity1 = c.massMoment1 * kGravity;
   c.gravity2 = c.massMoment2 * kGravity;
+  c.shankBodyMass = m2;
   return c;
 }
 
@@ -58,7 +61,9 @@ KneeMomentNeeded calcKneeMomentNeeded(const LegGeometry& g, double hip, double h
 }
 
 // The equations of motion, derived by hand (2-DOF Lagrangian): docs/reference-swing.md; the
-// moving hip's support-acceleration forces: docs/moving-hip.md.
+// moving hip's support-acceleration forces: docs/moving-hip.md. With a compliant socket the
+// leg is ReferenceSocketChain's four coordinates; its piston and rotation and their rates
+// follow the knee law's states in y (y[0..3] keep their meaning: limb, shank line, rates).
 class ReferenceSwing::Equations final : public OdeSystem {
  public:
   Equations(const LegGeometry& g, const KneeLaw& knee, const HipMomentProfile& hipMoment, const HipRange& hipRange,
@@ -78,9 +83,16 @@ class ReferenceSwing::Equations final : public OdeSystem {
     massMoment2_ = c.massMoment2;
     gravity1_ = c.gravity1;
     gravity2_ = c.gravity2;
+    if (g.socket) {
+      socket_.emplace(g, c.gamma, c.massMoment2, c.shankBodyMass, c.m22);
+      socketIndex_ = 4 + numLawStates_;
+    }
   }
 
-  int numStates() const override { return 4 + numLawStates_; }
+  int numStates() const override { return 4 + numLawStates_ + (socket_ ? 4 : 0); }
+
+  /// The socket's piston in y (then rotation and their rates); -1 without a socket.
+  int socketIndex() const { return socketIndex_; }
 
   void calcDerivatives(double t, const double* y, double* dydt) const override {
     double hipMoment;
@@ -89,6 +101,10 @@ class ReferenceSwing::Equations final : public OdeSystem {
 
   /// The derivatives and the hip moment (the drive's, or the one a prescribed thigh needs).
   void calcDerivativesAndHipMoment(double t, const double* y, double* dydt, double& hipMoment) const {
+    if (socket_) {
+      calcSocketDerivatives(t, y, dydt, hipMoment);
+      return;
+    }
     const double phi = y[0], beta = y[1], phiDot = y[2], betaDot = y[3];
     const KneeKinematics knee{calcKneeFlexion(y), phiDot - betaDot, phi, phiDot, t};
     const double* z = y + 4;
@@ -132,10 +148,14 @@ class ReferenceSwing::Equations final : public OdeSystem {
   }
   /// The knee law's moment at y, N m.
   double calcKneeMoment(double t, const double* y) const {
-    return law_->calcMoment({calcKneeFlexion(y), y[2] - y[3], y[0], y[2], t}, y + 4);
+    return law_->calcMoment({calcKneeFlexion(y), calcKneeFlexionRate(y), y[0], y[2], t}, y + 4);
   }
 
-  double calcKneeFlexion(const double* y) const { return calcKneeFlexion(y[0], y[1]); }
+  /// The knee's flexion and rate at y: the limb to the shank, plus the socket's rotation.
+  double calcKneeFlexion(const double* y) const {
+    return calcKneeFlexion(y[0], y[1]) + (socket_ ? y[socketIndex_ + 1] : 0.0);
+  }
+  double calcKneeFlexionRate(const double* y) const { return y[2] - y[3] + (socket_ ? y[socketIndex_ + 3] : 0.0); }
   double calcKneeFlexion(double phi, double beta) const { return phi - beta + gamma_; }
   double toBeta(double hipFlexion, double kneeFlexion) const { return hipFlexion - kneeFlexion + gamma_; }
 
@@ -149,16 +169,46 @@ class ReferenceSwing::Equations final : public OdeSystem {
     y[2] = hipRate;
     y[3] = hipRate - initial.kneeFlexionRate;
     if (numLawStates_ > 0) law_->initialStates(y.data() + 4);
+    // The socket at rest and undeflected (docs/socket.md): y's trailing zeros.
     return y;
   }
 
-  double calcEnergy(double phi, double beta, double phiDot, double betaDot) const {
+  double calcEnergy(double phi, double beta, double phiDot, double betaDot, const SocketDeflection& d = {},
+                    const SocketDeflection& rate = {}) const {
+    if (socket_)
+      return socket_->calcEnergy({phi, beta, d.piston, d.rotation}, {phiDot, betaDot, rate.piston, rate.rotation});
     const double m12 = m2L1r2_ * std::cos(phi - beta);
     const double kinetic = 0.5 * m11_ * phiDot * phiDot + m12 * phiDot * betaDot + 0.5 * m22_ * betaDot * betaDot;
     return kinetic - gravity1_ * std::cos(phi) - gravity2_ * std::cos(beta);
   }
 
  private:
+  // The socket leg's derivatives and hip moment (ReferenceSocketChain), y as above.
+  void calcSocketDerivatives(double t, const double* y, double* dydt, double& hipMoment) const {
+    const int s = socketIndex_;
+    const ReferenceSocketChain::Vec q{y[0], y[1], y[s], y[s + 1]}, u{y[2], y[3], y[s + 2], y[s + 3]};
+    const KneeKinematics knee{calcKneeFlexion(y), calcKneeFlexionRate(y), y[0], y[2], t};
+    const double* z = y + 4;
+    ReferenceSocketChain::Forces f;
+    f.kneeMoment = law_->calcMoment(knee, z);
+    if (hip_) f.support = hip_->calcAcceleration(t);
+    ReferenceSocketChain::Vec a;
+    if (thigh_) {
+      a = socket_->calcAccelerationWithThigh(q, u, thigh_->calcAcceleration(t), f, hipMoment);
+    } else {
+      hipMoment = hipMoment_.calcMoment(t) + hipStop_.calcJointMoment(y[0], y[2]);
+      f.hipMoment = hipMoment;
+      a = socket_->calcAcceleration(q, u, f);
+    }
+    for (int i = 0; i < 2; ++i) {
+      dydt[i] = u[static_cast<std::size_t>(i)];
+      dydt[i + 2] = a[static_cast<std::size_t>(i)];
+      dydt[s + i] = u[static_cast<std::size_t>(i + 2)];
+      dydt[s + i + 2] = a[static_cast<std::size_t>(i + 2)];
+    }
+    if (numLawStates_ > 0) law_->calcStateDerivatives(knee, z, dydt + 4);
+  }
+
   static JointStop makeHipStop(const HipRange& range) {
     JointStopParams p;  // stiffness and restitution: the defaults, as in LegModel
     p.lower = range.minFlexion;
@@ -170,8 +220,10 @@ class ReferenceSwing::Equations final : public OdeSystem {
   int numLawStates_;
   HipMomentProfile hipMoment_;
   JointStop hipStop_;
-  std::optional<ThighMotion> thigh_;  // the prescribed thigh, if it drives the swing
-  std::optional<HipPath> hip_;        // the moving hip, if the pelvis is measured
+  std::optional<ThighMotion> thigh_;            // the prescribed thigh, if it drives the swing
+  std::optional<HipPath> hip_;                  // the moving hip, if the pelvis is measured
+  std::optional<ReferenceSocketChain> socket_;  // a compliant socket's leg
+  int socketIndex_ = -1;
   double gamma_ = 0, m11_ = 0, m22_ = 0, m2L1r2_ = 0, gravity1_ = 0, gravity2_ = 0;
   double massMoment1_ = 0, massMoment2_ = 0;  // kg m: m1 a1 + m2 L1, m2 r2
 };
@@ -311,6 +363,7 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
   for (auto* v : {&out.time, &out.hipFlexion, &out.kneeFlexion, &out.hipFlexionRate, &out.kneeFlexionRate,
                   &out.hipMoment, &out.kneeMoment})
     v->reserve(sampleTimes.size());
+  const int socket = eq.socketIndex();
   for (double t : sampleTimes) {
     while (dp.getTime() < t) {
       dp.step(t);
@@ -321,9 +374,13 @@ ReferenceTrajectory ReferenceSwing::integrate(const InitialConditions& initial, 
     out.hipFlexion.push_back(y[0]);
     out.kneeFlexion.push_back(eq.calcKneeFlexion(y));
     out.hipFlexionRate.push_back(y[2]);
-    out.kneeFlexionRate.push_back(y[2] - y[3]);
+    out.kneeFlexionRate.push_back(eq.calcKneeFlexionRate(y));
     out.hipMoment.push_back(eq.calcHipMoment(t, y));
     out.kneeMoment.push_back(eq.calcKneeMoment(t, y));
+    if (socket >= 0) {
+      out.socket.push_back({y[socket], y[socket + 1]});
+      out.socketRate.push_back({y[socket + 2], y[socket + 3]});
+    }
   }
   return out;
 }
@@ -338,11 +395,16 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
   // The three trigger functions of simulateSwing's event handlers.
   const double target = rule.thighTargetFlexion, zone = rule.zoneOfStability;
   auto thighSignal = [&](double t) { return dp.interpolate(t, 0) - target; };
-  auto kneeRate = [&](double t) { return dp.interpolate(t, 2) - dp.interpolate(t, 3); };
-  auto kneeFlexionAt = [&](double t) { return eq.calcKneeFlexion(dp.interpolate(t, 0), dp.interpolate(t, 1)); };
+  // With a socket the knee adds its rotation (adding 0.0 without one changes nothing).
+  const int socket = eq.socketIndex();
+  auto socketAt = [&](double t, int offset) { return socket < 0 ? 0.0 : dp.interpolate(t, socket + offset); };
+  auto kneeRate = [&](double t) { return dp.interpolate(t, 2) - dp.interpolate(t, 3) + socketAt(t, 3); };
+  auto kneeFlexionAt = [&](double t) {
+    return eq.calcKneeFlexion(dp.interpolate(t, 0), dp.interpolate(t, 1)) + socketAt(t, 1);
+  };
   auto zoneSignal = [&](double t) { return zone - kneeFlexionAt(t); };
   auto signalsAt = [&](const double* y) {
-    return SwingSignals{y[0] - target, y[2] - y[3], zone - eq.calcKneeFlexion(y)};
+    return SwingSignals{y[0] - target, eq.calcKneeFlexionRate(y), zone - eq.calcKneeFlexion(y)};
   };
 
   SwingEndTracker tracker(zone);
@@ -390,10 +452,12 @@ double ReferenceSwing::calcSwingTime(const InitialConditions& initial, const Swi
 }
 
 double ReferenceSwing::calcMechanicalEnergy(double hipFlexion, double kneeFlexion, double hipFlexionRate,
-                                            double kneeFlexionRate) const {
+                                            double kneeFlexionRate, const SocketDeflection& socket,
+                                            const SocketDeflection& socketRate) const {
   const Equations& eq = *equations_;
-  return eq.calcEnergy(hipFlexion, eq.toBeta(hipFlexion, kneeFlexion), hipFlexionRate,
-                       hipFlexionRate - kneeFlexionRate);
+  // The shank's line from the socket's: phi + rotation - knee + gamma.
+  return eq.calcEnergy(hipFlexion, eq.toBeta(hipFlexion + socket.rotation, kneeFlexion), hipFlexionRate,
+                       hipFlexionRate + socketRate.rotation - kneeFlexionRate, socket, socketRate);
 }
 
 }  // namespace swingsim

@@ -1,6 +1,7 @@
 #pragma once
 // An independent reference for the Simbody swing: the thigh and
-// the rigid shank+foot(+added mass) as a 2-DOF planar double pendulum whose equations of
+// the rigid shank+foot(+added mass) as a 2-DOF planar double pendulum (with a compliant
+// socket, four coordinates: swing/reference_socket_chain.h) whose equations of
 // motion are derived by hand (Lagrange, see reference_swing.cpp), integrated by our own
 // Dormand-Prince RK5(4) (dormand_prince.h). No Simbody multibody code in this unit: it shares
 // with LegModel only the inputs (LegGeometry, the knee law, the hip moment profile and the
@@ -25,6 +26,9 @@ struct ReferenceTrajectory {
   /// thigh the moment the prescription needs (inverse dynamics of the thigh equation).
   std::vector<double> hipMoment;
   std::vector<double> kneeMoment;  ///< N m, + = flexion: the knee law's moment
+  /// A compliant socket's deflection at each sample (empty without one); hipFlexion is then
+  /// the residual limb's and kneeFlexion the knee's own (socket to shank).
+  std::vector<SocketDeflection> socket, socketRate;  ///< m and rad; m/s and rad/s
   std::size_t size() const { return time.size(); }
 };
 
@@ -87,9 +91,11 @@ class ReferenceSwing {
   double calcSwingTime(const InitialConditions& initial, const SwingEndRule& rule, double tol) const;
 
   /// Kinetic + gravitational potential energy (J) at hip/knee angles and rates, with the
-  /// potential zero at hip height (LegModel's differs by a constant).
-  double calcMechanicalEnergy(double hipFlexion, double kneeFlexion, double hipFlexionRate,
-                              double kneeFlexionRate) const;
+  /// potential zero at hip height (LegModel's differs by a constant). With a compliant
+  /// socket, its deflection and rates too (the springs' energy included; the knee the
+  /// socket's to the shank).
+  double calcMechanicalEnergy(double hipFlexion, double kneeFlexion, double hipFlexionRate, double kneeFlexionRate,
+                              const SocketDeflection& socket = {}, const SocketDeflection& socketRate = {}) const;
 
   /// Time tolerance of the crossing search on the dense output, s.
   static constexpr double kEventTimeTol = 1e-12;

@@ -22,6 +22,7 @@
 #include "leg/leg_model.h"
 #include "simbody_sampling.h"
 #include "swing/knee_setup.h"
+#include "swing/reference_swing.h"
 #include "swing/swing_simulation.h"
 
 namespace swingsim {
@@ -211,6 +212,83 @@ TEST(SocketCompliance, SimbodyLegMatchesAnIndependentIntegrationOfTheSameLeg) {
   // ... and both integrations agree far inside it (central differences: ~1e-8 relative).
   EXPECT_LT(worstAngle, 1e-6);
   EXPECT_LT(worstPiston, 1e-8);
+}
+
+TEST(SocketCompliance, ReferenceIntegratorMatchesTheIndependentIntegrationOfTheSameLeg) {
+  // The reference integrator's socket leg (swing/reference_socket_chain.h: exact Jacobians)
+  // against this file's leg (central differences, RK4): same drive and knee as above, with
+  // softer socket springs and dampers so that it gives by degrees and centimetres.
+  Participant p = loadP1();
+  p.socket = SocketCompliance{};
+  p.socket->rotationStiffness = 60;
+  p.socket->rotationDamping = 2;
+  p.socket->pistonStiffness = 3000;
+  p.socket->pistonDamping = 40;
+  const LegGeometry g = calcLegGeometry(p, 0.02);
+  const ReferenceSwing ref(g, KneeDamper(), p.hipMoment, HipRange{-3, 3});
+  std::vector<double> times;
+  for (int i = 0; i <= 30; ++i) times.push_back(0.01 * i);
+  const ReferenceTrajectory tr = ref.integrate(p.initial, times, 1e-11, 1e-11);
+  ASSERT_EQ(tr.socket.size(), times.size());
+  constexpr double kStep = 1e-5;
+  const IndependentSocketLeg independent(g, p.hipMoment);
+  Vec4 q{p.initial.hipFlexion, 0, 0, p.initial.kneeFlexion}, u{p.initial.hipFlexionRate, 0, 0, 0};
+  double worstAngle = 0, worstPiston = 0, peakPiston = 0, peakRotation = 0;
+  int k = 0;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    for (; k * kStep < times[i] - 1e-12; ++k) stepRk4(independent, k * kStep, kStep, q, u);
+    worstAngle = std::max({worstAngle, std::abs(tr.hipFlexion[i] - q[0]), std::abs(tr.socket[i].rotation - q[2]),
+                           std::abs(tr.kneeFlexion[i] - q[3]), std::abs(tr.kneeFlexionRate[i] - u[3]) * 0.01});
+    worstPiston = std::max(worstPiston, std::abs(tr.socket[i].piston - q[1]));
+    peakPiston = std::max(peakPiston, std::abs(q[1]));
+    peakRotation = std::max(peakRotation, std::abs(q[2]));
+  }
+  std::printf(
+      "reference socket leg vs independent leg over 0.3 s: worst angle %.2e rad, piston %.2e m; peak "
+      "piston %.2f mm, rotation %.2f deg\n",
+      worstAngle, worstPiston, peakPiston * 1e3, peakRotation * kRadToDeg);
+  EXPECT_GT(peakPiston, 1e-3);
+  EXPECT_GT(peakRotation, 0.02);
+  EXPECT_LT(worstAngle, 1e-6);
+  EXPECT_LT(worstPiston, 1e-8);
+}
+
+TEST(SocketCompliance, ReferenceSocketLegKeepsItsEnergyWithoutDampersOrDrive) {
+  // No knee law, no dampers, no hip moment, the hip stop out of reach: kinetic + potential +
+  // the socket springs' energy stays put while the socket swaps energy with the leg.
+  Participant p = loadP1();
+  p.socket = SocketCompliance{};
+  p.socket->rotationStiffness = 80;
+  p.socket->rotationDamping = 0;
+  p.socket->pistonStiffness = 2000;
+  p.socket->pistonDamping = 0;
+  const LegGeometry g = calcLegGeometry(p, 0.0);
+  HipMomentProfile noHipMoment;
+  noHipMoment.flexionAmplitude = 0;
+  noHipMoment.extensionAmplitude = 0;
+  const ReferenceSwing ref(g, KneeLawSum(), noHipMoment, HipRange{-100, 100});
+  InitialConditions start = p.initial;
+  start.hipFlexion = 0.5;
+  start.kneeFlexion = 0.8;
+  const double e0 = ref.calcMechanicalEnergy(start.hipFlexion, start.kneeFlexion, 0, 0);
+  std::vector<double> times;
+  for (int i = 1; i <= 40; ++i) times.push_back(0.025 * i);
+  const ReferenceTrajectory tr = ref.integrate(start, times, 1e-11, 1e-11);
+  double peakRotation = 0, peakPiston = 0, worst = 0;
+  for (std::size_t i = 0; i < tr.size(); ++i) {
+    peakRotation = std::max(peakRotation, std::abs(tr.socket[i].rotation));
+    peakPiston = std::max(peakPiston, std::abs(tr.socket[i].piston));
+    const double e = ref.calcMechanicalEnergy(tr.hipFlexion[i], tr.kneeFlexion[i], tr.hipFlexionRate[i],
+                                              tr.kneeFlexionRate[i], tr.socket[i], tr.socketRate[i]);
+    worst = std::max(worst, std::abs(e - e0));
+  }
+  std::printf(
+      "reference socket leg, 1 s undamped: energy drift %.2e J of %.3f J; peak rotation %.2f deg, piston "
+      "%.2f mm\n",
+      worst, std::abs(e0), peakRotation * kRadToDeg, peakPiston * 1e3);
+  EXPECT_GT(peakRotation, 0.01);  // the socket takes part
+  EXPECT_GT(peakPiston, 1e-3);
+  EXPECT_LT(worst, 1e-8);  // J: ~10 x tolerance x the leg's energy scale, as the rigid leg's test
 }
 
 TEST(SocketCompliance, AtZeroDeflectionTheLegCarriesTheThighSegmentsMass) {

@@ -109,6 +109,32 @@ INSTANTIATE_TEST_SUITE_P(Participants, ReferenceVsSimbody,
                            return std::string(std::get<0>(info.param)) + "_lowered_" + std::to_string(mm) + "mm";
                          });
 
+TEST(ReferenceSwing, ASocketLegMatchesSimbodyWithP1sKnee) {
+  // A loose socket (docs/socket.md; rotation 100 N m/rad and 10 N m s/rad, piston 5000 N/m
+  // and 200 N s/m): Simbody's Slider and Pin against the reference's own four-coordinate
+  // equations (swing/reference_socket_chain.h), through the whole swing and its end.
+  Participant p = load("p1");
+  p.socket = SocketCompliance{};
+  p.socket->rotationStiffness = 100;
+  p.socket->rotationDamping = 10;
+  p.socket->pistonStiffness = 5000;
+  p.socket->pistonDamping = 200;
+  const auto law = std::make_shared<const KneeLawSum>(makeKneeLaw(p, loadKneeModel(p.kneeModelPath)));
+  const Comparison c = compare(p, law, 0.03);
+  ASSERT_GT(c.samples, 100u);
+  std::printf(
+      "P1 with a loose socket: max |hip diff| %.2e rad, max |knee diff| %.2e rad; swing time Simbody %.9f s, "
+      "reference %.9f s\n",
+      c.maxHipDiff, c.maxKneeDiff, c.simbodySwingTime, c.referenceSwingTime);
+  EXPECT_LT(c.maxHipDiff, kAngleTol);
+  EXPECT_LT(c.maxKneeDiff, kAngleTol);
+  EXPECT_NEAR(c.referenceSwingTime, c.simbodySwingTime, kSwingTimeTol);
+  EXPECT_NEAR(c.referencePeak, c.simbodyPeak, kAngleTol);
+  // The socket changes the swing by far more than the agreement.
+  const Comparison rigid = compare(load("p1"), law, 0.03);
+  EXPECT_GT(std::abs(rigid.simbodySwingTime - c.simbodySwingTime), 100 * kSwingTimeTol);
+}
+
 TEST(ReferenceSwing, DisagreesWhenTheLegDiffers) {
   // The comparison can fail: 1 % more shank mass in the reference moves the knee by far
   // more than the tolerance.
