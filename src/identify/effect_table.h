@@ -36,6 +36,7 @@ enum class EffectId {
   kHipMomentScale,
   kShankMassScale,
   kBelowKneeMassScale,
+  kSocketCompliance,
   // Sweep (Burkett 2004's unpublished assumptions, sweep/sweep_assumptions.h), each one
   // value shared by every participant.
   kHipEffortAdaptation,

@@ -123,6 +123,12 @@ MissingMoment calcMissingMoment(const SwingBase& base, const SwingModelParams& p
     return out;
   }
   const LegGeometry g = calcLegGeometry(applyParticipantEffects(base.participant, params.effects), 0.0);
+  if (g.socket) {
+    out.note =
+        "not computed: the leg has a compliant socket (the knee moment a measured motion needs is taken on a "
+        "rigid thigh)";
+    return out;
+  }
   std::map<std::pair<bool, int>, Bin> bins;
   bool pelvis = false;
   std::vector<double> hipNoises, kneeNoises;

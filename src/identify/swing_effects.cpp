@@ -193,6 +193,43 @@ const std::vector<SwingEffectRecord>& swingEffectRecords() {
          p.foot.mass *= e.belowKneeMassScale;
          p.foot.inertia *= e.belowKneeMassScale;
        }},
+      // A leg-level candidate: it adds the socket's two mobilities (docs/socket.md) to the
+      // leg the refits integrate (the reference integrator's four-coordinate leg) and to the
+      // Simbody check; its values are the socket rotation's spring and damper, started at
+      // MyoSuite's (MyoHub/myo_sim@2cef885, socket_rotation_1). Bounds (an assumption; no
+      // published range of sockets): springs 35x softer to 10x stiffer; dampers up to
+      // MyoSuite's, which already holds P1's socket within 0.42 deg over a swing (below a
+      // lab's noise: a more damped socket is the rigid leg), down to 350x less.
+      {{E::kSocketCompliance,
+        P::kSwing,
+        "socket_compliance",
+        "the socket gives on the residual limb: it turns (and pistons) on soft tissue, so the hip's drive reaches the "
+        "prosthesis through a spring and a damper",
+        "Burkett 2004's thigh is rigid from hip to knee; a residual limb in a socket is not (MyoSuite's transfemoral "
+        "leg models its rotation and pistoning)",
+        "the socket's angle measured against the femur (fluoroscopy), or swings with different hip effort",
+        {"rotation_stiffness_Nm_per_rad", "rotation_damping_Nm_s_per_rad"},
+        2,
+        {},
+        1.0,
+        true},
+       {{{"", 350.0, 10.0, 3500.0, true, 1.0},
+         1.0,
+         [](SwingEffects& e) -> double& { return e.socket.rotationStiffness; }},
+        {{"", 175.0, 0.5, 175.0, true, 1.0}, 1.0, [](SwingEffects& e) -> double& { return e.socket.rotationDamping; }}},
+       nullptr,
+       "the measured thigh drives the swing: its markers sit on the socket, so the prescribed thigh already "
+       "carries the socket's rotation",
+       [](const SwingEffects& e, std::string& note) {
+         note = "a socket's spring and damper must hold it on the limb (both > 0): " + fmt(e.socket.rotationStiffness) +
+                " N m/rad, " + fmt(e.socket.rotationDamping) + " N m s/rad";
+         return e.socket.rotationStiffness > 0 && e.socket.rotationDamping > 0;
+       },
+       [](const SwingEffects& e, Participant& p) {
+         if (!p.socket) p.socket = e.socket;
+         p.socket->rotationStiffness = e.socket.rotationStiffness;
+         p.socket->rotationDamping = e.socket.rotationDamping;
+       }},
   };
   return table;
 }

@@ -27,6 +27,9 @@ struct SwingEffects {
   double hipMomentScale = 1;                     ///< multiplies the measured hip moment
   double shankMassScale = 1;                     ///< multiplies shank mass and inertia
   double belowKneeMassScale = 1;                 ///< multiplies shank and foot masses and inertias
+  /// The socket's give on the residual limb (its rotation's stiffness and damping are
+  /// fitted; the rest stays at MyoSuite's values, docs/socket.md).
+  SocketCompliance socket;
   /// Whether `effect` (a swing effect of the table) is present.
   bool has(EffectId effect) const;
   /// Marks `effect` present or absent (its values are left as they are).
@@ -55,7 +58,8 @@ struct SwingEffectRecord {
   const char* notUnderThighDrive = "";
   /// The sign rule: true if the values are physical; `note` says the rule and the value.
   bool (*isPhysical)(const SwingEffects&, std::string& note) = nullptr;
-  /// Where a participant-level effect acts (mass, toe-off rates, hip moment profile).
+  /// Where a participant-level effect acts (mass, toe-off rates, hip moment profile, or a
+  /// socket that adds two mobilities to the leg).
   void (*applyToParticipant)(const SwingEffects&, Participant&) = nullptr;
   /// On each record's measured hip moment (N m) when it drives the swing.
   void (*applyToHipDrive)(const SwingEffects&, std::vector<double>& moments) = nullptr;

@@ -91,7 +91,11 @@ SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& para
   } catch (const std::runtime_error& ex) {
     throw RunError(std::string("swing model along ") + record.stem + ": " + ex.what());
   }
-  return {tr.hipFlexion, tr.kneeFlexion, tr.kneeFlexionRate, tr.hipMoment, tr.kneeMoment};
+  // With a compliant socket a lab's thigh is the socket's: its markers sit on it, not on the
+  // residual limb inside (docs/socket.md). The knee is the knee's own, socket to shank.
+  std::vector<double> labThigh = tr.hipFlexion;
+  for (std::size_t i = 0; i < tr.socket.size(); ++i) labThigh[i] += tr.socket[i].rotation;
+  return {labThigh, tr.kneeFlexion, tr.kneeFlexionRate, tr.hipMoment, tr.kneeMoment};
 }
 
 std::vector<std::string> swingPhaseNames() { return {"early flexion", "late extension", "terminal/stop contact"}; }

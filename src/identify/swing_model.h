@@ -52,7 +52,8 @@ SwingModelParams addSwingEffect(const SwingModelParams& params, EffectId effect,
 /// Knee law of the model: scaled model law + added effects + stop + participant Tc.
 KneeLawSum makeSwingKneeLaw(const SwingBase& base, const SwingModelParams& params);
 
-/// Model hip and knee flexion (rad) at the record's times from toe-off pose `hipPose`,
+/// Model hip and knee flexion (rad) at the record's times (with a compliant socket the hip's
+/// is the socket's angle, where a lab's thigh markers are) from toe-off pose `hipPose`,
 /// `kneePose` (rad), driven by the record's hip moment, or with base.drive ==
 /// kThighKinematics by its hip angle (`thigh`: that angle's spline, made from the record if
 /// null; `hipPose` is then the knee's toe-off rate, rad/s). `tolerance`: the reference

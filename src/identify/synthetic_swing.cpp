@@ -30,7 +30,9 @@ SwingRecord makeSyntheticSwing(const SwingBase& base, const SwingModelParams& tr
   for (std::size_t i = 0; i < tr.size(); ++i) {
     r.time.push_back(tr.time[i]);
     r.kneeFlexion.push_back(tr.kneeFlexion[i] + noise * kDegToRad * kneeNoise.next());
-    r.hipFlexion.push_back(tr.hipFlexion[i] + noise * kDegToRad * hipNoise.next());
+    // With a socket the lab's thigh is the socket's (identify/swing_model.h).
+    const double thigh = tr.hipFlexion[i] + (tr.socket.empty() ? 0.0 : tr.socket[i].rotation);
+    r.hipFlexion.push_back(thigh + noise * kDegToRad * hipNoise.next());
     r.hipMoment.push_back(measured.hipMoment.calcMoment(tr.time[i]));
   }
   return r;

@@ -216,7 +216,10 @@ const std::vector<std::string>& editableParticipantKeys() {
         keys.push_back(std::string("segments.") + segment + "." + field);
     keys.insert(keys.end(), {"knee_friction_Nm", "sound_limb_swing_time_s", "hip_moment.time_scale"});
     // A compliant socket (docs/socket.md): a value typed turns it on, the rest at its defaults.
-    keys.insert(keys.end(), {"socket.piston_stiffness_N_per_m", "socket.rotation_stiffness_Nm_per_rad"});
+    // The dampers hold the socket more than its springs over a swing: both are here.
+    keys.insert(keys.end(),
+                {"socket.piston_stiffness_N_per_m", "socket.piston_damping_N_s_per_m",
+                 "socket.rotation_stiffness_Nm_per_rad", "socket.rotation_damping_Nm_s_per_rad", "socket.mass_kg"});
     return keys;
   }();
   return kKeys;

@@ -43,17 +43,17 @@ ReferenceSocketChain::ReferenceSocketChain(const LegGeometry& g, double gamma, d
   const SegmentMassProperties limb = calcResidualLimb(g);
   const double toPivot = g.socketPivotBelowHip, pivotToKnee = g.thighLength - g.socketPivotBelowHip;
   const double r2 = massMomentShank / shankMass;
-  const Vec limbAngle{1, 0, 0, 0}, socketAngle{1, 0, 0, 1}, shankAngle{0, 1, 0, 0};
-  bodies_[0] = {limb.mass, limb.inertia, limbAngle, {{{limb.com, false, limbAngle}}}, 1};
+  enum { kLimb = 0, kSocket = 1, kShank = 2 };  // kDirections
+  bodies_[0] = {limb.mass, limb.inertia, kDirections[kLimb], {{{limb.com, false, kLimb}}}, 1};
   bodies_[1] = {socket_.mass,
                 socket_.inertia,
-                socketAngle,
-                {{{toPivot, true, limbAngle}, {-socket_.comAbovePivot, false, socketAngle}}},
+                kDirections[kSocket],
+                {{{toPivot, true, kLimb}, {-socket_.comAbovePivot, false, kSocket}}},
                 2};
   bodies_[2] = {shankMass,
                 inertiaAboutKnee - shankMass * r2 * r2,
-                shankAngle,
-                {{{toPivot, true, limbAngle}, {pivotToKnee, false, socketAngle}, {r2, false, shankAngle}}},
+                kDirections[kShank],
+                {{{toPivot, true, kLimb}, {pivotToKnee, false, kSocket}, {r2, false, kShank}}},
                 3};
 }
 
@@ -63,6 +63,13 @@ void ReferenceSocketChain::assemble(const Vec& q, const Vec& u, const std::array
     rhs[i] = 0;
     for (int j = 0; j < kN; ++j) m[i][j] = 0;
   }
+  double sines[3], cosines[3], rates[3];
+  for (std::size_t d = 0; d < kDirections.size(); ++d) {
+    const double theta = dotQ(kDirections[d], q);
+    sines[d] = std::sin(theta);
+    cosines[d] = std::cos(theta);
+    rates[d] = dotQ(kDirections[d], u);
+  }
   for (const Body& b : bodies_) {
     // J (2 x 4) and J' q' of the body's centre of mass, term by term: for L down(theta),
     // d/dq_j = [slides, j = piston] down + L w_j normal, and the convective acceleration
@@ -70,12 +77,13 @@ void ReferenceSocketChain::assemble(const Vec& q, const Vec& u, const std::array
     double jx[kN] = {}, jy[kN] = {}, cx = 0, cy = 0;
     for (int k = 0; k < b.numTerms; ++k) {
       const Term& t = b.terms[static_cast<std::size_t>(k)];
-      const double theta = dotQ(t.w, q), rate = dotQ(t.w, u);
-      const double s = std::sin(theta), c = std::cos(theta);  // down = (s, -c), normal = (c, s)
+      const Vec& w = kDirections[static_cast<std::size_t>(t.direction)];
+      const double rate = rates[t.direction];
+      const double s = sines[t.direction], c = cosines[t.direction];  // down = (s, -c), normal = (c, s)
       const double length = t.length + (t.slides ? q[kPiston] : 0.0);
       for (int j = 0; j < kN; ++j) {
-        jx[j] += length * t.w[static_cast<std::size_t>(j)] * c;
-        jy[j] += length * t.w[static_cast<std::size_t>(j)] * s;
+        jx[j] += length * w[static_cast<std::size_t>(j)] * c;
+        jy[j] += length * w[static_cast<std::size_t>(j)] * s;
       }
       if (t.slides) {
         jx[kPiston] += s;
@@ -139,7 +147,7 @@ double ReferenceSocketChain::calcEnergy(const Vec& q, const Vec& u) const {
     for (int k = 0; k < b.numTerms; ++k) {
       const Term& t = b.terms[static_cast<std::size_t>(k)];
       const double length = t.length + (t.slides ? q[kPiston] : 0.0);
-      potential -= b.mass * kGravity * length * std::cos(dotQ(t.w, q));
+      potential -= b.mass * kGravity * length * std::cos(dotQ(kDirections[static_cast<std::size_t>(t.direction)], q));
     }
   return kinetic + potential;
 }

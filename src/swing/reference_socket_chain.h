@@ -54,7 +54,7 @@ class ReferenceSocketChain {
   struct Term {
     double length;
     bool slides;
-    Vec w;
+    int direction;  // index into kDirections: the limb's, the socket's or the shank's line
   };
   struct Body {
     double mass, inertia;
@@ -66,6 +66,8 @@ class ReferenceSocketChain {
   void assemble(const Vec& q, const Vec& u, const std::array<double, 2>& support, double m[kDof][kDof],
                 double rhs[kDof]) const;
 
+  /// The three lines the terms lie along, each an angle w . q.
+  static constexpr std::array<Vec, 3> kDirections{{{1, 0, 0, 0}, {1, 0, 0, 1}, {0, 1, 0, 0}}};
   std::array<Body, 3> bodies_{};
   SocketCompliance socket_;
   double gamma_ = 0;

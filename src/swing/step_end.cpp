@@ -46,6 +46,7 @@ void appendSample(SwingTrajectory& tr, const LegGeometry& g, double hipHeight, d
   tr.ankleY.push_back(pose.ankle[1]);
   tr.toeX.push_back(pose.toe[0]);
   tr.toeY.push_back(pose.toe[1]);
+  if (g.socket) tr.socket.push_back(socket);
 }
 
 void appendSamples(const StepEnd& a, const StepEnd& b, double& nextSample, double interval, const LegGeometry& g,

@@ -152,6 +152,7 @@ void SwingRun::redoLooseDwell(StepEnd& now) {
   impacts_ = checkpoint.impacts;
   now = checkpoint.previous;
   for (auto* v : result_.trajectory.columns()) v->resize(checkpoint.samples);
+  if (!result_.trajectory.socket.empty()) result_.trajectory.socket.resize(checkpoint.samples);
   nextSample_ = checkpoint.nextSample;
 }
 

@@ -236,6 +236,13 @@ inline std::vector<CalibrationCase> calibrationCases() {
                     s->inertia *= 1.3;
                   }
                 }),
+      // A loose socket (docs/socket.md): its rotation's spring and damper far below MyoSuite's
+      // 350 N m/rad and 175 N m s/rad; the user's participant file has a rigid leg.
+      swingCase("socket_compliance", "rotation_stiffness_Nm_per_rad", 100.0, "socket rotation 100 N m/rad, 5 N m s/rad",
+                [](ST& t) {
+                  t.socket.rotationStiffness = 100.0;
+                  t.socket.rotationDamping = 5.0;
+                }),
       // Outside the library (issue 54's near misses): no library effect is the truth, so any
       // acceptance counts as "other named". Only the fastest swing held out.
       swingCase(

@@ -49,9 +49,9 @@ TEST(EffectTable, FindsByPlantAndName) {
 
 TEST(EffectTable, NamesPerPlantInTableOrder) {
   const auto swing = effectNames(PlantKind::kSwing);
-  ASSERT_EQ(swing.size(), 7u);
+  ASSERT_EQ(swing.size(), 8u);
   EXPECT_EQ(swing.front(), "knee_coulomb_friction");
-  EXPECT_EQ(swing.back(), "below_knee_mass_scale");
+  EXPECT_EQ(swing.back(), "socket_compliance");
   const auto cylinder = effectNames(PlantKind::kCylinder);
   ASSERT_EQ(cylinder.size(), 6u);
   EXPECT_EQ(cylinder.front(), "coulomb_friction");

@@ -83,6 +83,12 @@ Hidden hidden(const std::string& effect, double size) {
   } else if (effect == "hip_moment_scale") {
     e.hipMomentScale = 1.0 + 0.1 * size;
     h.parameters = {{"scale", e.hipMomentScale}};
+  } else if (effect == "socket_compliance") {
+    // A loose socket (docs/socket.md): far softer and less damped than MyoSuite's 350 and 175.
+    e.socket.rotationStiffness = 120.0 / size;
+    e.socket.rotationDamping = 6.0 / size;
+    h.parameters = {{"rotation_stiffness_Nm_per_rad", e.socket.rotationStiffness},
+                    {"rotation_damping_Nm_s_per_rad", e.socket.rotationDamping}};
   } else if (effect == "below_knee_mass_scale") {
     e.belowKneeMassScale = 1.0 + 0.3 * size;
     h.parameters = {{"scale", e.belowKneeMassScale}};

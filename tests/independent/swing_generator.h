@@ -12,6 +12,7 @@
 // forward positive), knee flexion theta = phi - psi (psi the shank's absolute angle).
 // The swing runs from toe-off until the knee, after its peak, is back below `endKneeDeg`,
 // before the extension stop and the friction near extension act (they are not modelled).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -27,6 +28,17 @@ constexpr double kG = 9.80665;  // standard gravity, m/s^2
 
 struct Segment {
   double length, mass, comFromDistal, inertia;  // m, kg, m, kg m^2 about the COM
+};
+
+/// A socket that gives on the residual limb (library: socket_compliance; MyoSuite's
+/// transfemoral leg, MyoHub/myo_sim osl/assets/myolegs_osl_chain.xml): the socket rides on a
+/// slide along the limb and turns about a pivot at the limb's end, each on a spring and a
+/// damper. Its mass is part of the thigh segment. rotationStiffness 0: no socket (rigid).
+struct SocketTruth {
+  double rotationStiffness = 0, rotationDamping = 0;      // N m/rad, N m s/rad
+  double pistonStiffness = 20000, pistonDamping = 10000;  // N/m, N s/m
+  double mass = 0.849991, comAbovePivot = 0.101169;       // kg, m
+  double inertia = 0.0039776, pivotAboveKnee = 0.1127;    // kg m^2, m
 };
 
 struct SwingTruth {
@@ -65,6 +77,9 @@ struct SwingTruth {
   /// file keeps 0.
   double toeOffHipRate = 0.0;
   double toeOffKneeRate = 0.0;
+  /// Hidden: the socket's give (off by default). With it the measured thigh is the socket's
+  /// (a lab's thigh markers sit on the socket) and the knee is socket to shank.
+  SocketTruth socket;
 };
 
 /// A hip drive: flexion half-sine then extension half-sine, then nothing.
@@ -159,6 +174,87 @@ inline void accelerations(const SwingTruth& m, const HipDrive& d, double t, cons
   chainAccelerations(m.thigh, m.shank, m.foot, y, Mh, Mk, acc);
 }
 
+/// The leg with a socket (m.socket), by Kane's method in absolute angles: y = (phi, p,
+/// sigma, psi) and their rates: phi the residual limb, p the piston (m, + = down the limb),
+/// sigma the socket, psi the shank (all from hanging straight down). The thigh segment is
+/// the limb plus the socket (first and second moments about the hip). The socket spring and
+/// damper act on sigma - phi, the knee's moment on sigma - psi. Accelerations to `acc` (4).
+inline void socketAccelerations(const SwingTruth& m, const HipDrive& d, double t, const double* y, double* acc) {
+  const SocketTruth& sk = m.socket;
+  const double phi = y[0], p = y[1], sigma = y[2], psi = y[3];
+  const double phiDot = y[4], pDot = y[5], sigmaDot = y[6], psiDot = y[7];
+  // Limb = thigh - socket.
+  const double toPivot = m.thigh.length - sk.pivotAboveKnee, socketCom = toPivot - sk.comAbovePivot;
+  const double thighCom = m.thigh.length - m.thigh.comFromDistal;
+  const double limbMass = m.thigh.mass - sk.mass;
+  const double limbCom = (m.thigh.mass * thighCom - sk.mass * socketCom) / limbMass;
+  const double limbInertia = m.thigh.inertia + m.thigh.mass * thighCom * thighCom -
+                             (sk.inertia + sk.mass * socketCom * socketCom) - limbMass * limbCom * limbCom;
+  // Shank + foot in the shank frame, as chainAccelerations.
+  const double as = m.shank.length - m.shank.comFromDistal, L2 = m.shank.length;
+  const double cf = m.foot.length - m.foot.comFromDistal;
+  const double m2 = m.shank.mass + m.foot.mass;
+  const Vec2 c{m.foot.mass * cf / m2, -(m.shank.mass * as + m.foot.mass * L2) / m2};
+  const double i2 =
+      m.shank.inertia + m.shank.mass * as * as + m.foot.inertia + m.foot.mass * (cf * cf + L2 * L2) - m2 * dot(c, c);
+  const Vec2 eP{std::sin(phi), -std::cos(phi)}, nP{std::cos(phi), std::sin(phi)};
+  const Vec2 eS{std::sin(sigma), -std::cos(sigma)}, nS{std::cos(sigma), std::sin(sigma)};
+  const Vec2 rc{c.x * std::cos(psi) - c.y * std::sin(psi), c.x * std::sin(psi) + c.y * std::cos(psi)};
+  const Vec2 rcPerp{-rc.y, rc.x};
+  const double r = toPivot + p, a = sk.pivotAboveKnee;
+  // Partial velocities (per phi', p', sigma', psi') and velocity-product accelerations.
+  const Vec2 zero{0, 0};
+  const Vec2 vLimb[4] = {limbCom * nP, zero, zero, zero};
+  const Vec2 vSocket[4] = {r * nP, eP, (-sk.comAbovePivot) * nS, zero};
+  const Vec2 vShank[4] = {r * nP, eP, a * nS, rcPerp};
+  const Vec2 pivotRest = (2 * pDot * phiDot) * nP + (-r * phiDot * phiDot) * eP;
+  const Vec2 restLimb = (-limbCom * phiDot * phiDot) * eP;
+  const Vec2 restSocket = pivotRest + (sk.comAbovePivot * sigmaDot * sigmaDot) * eS;
+  const Vec2 restShank = pivotRest + (-a * sigmaDot * sigmaDot) * eS + (-psiDot * psiDot) * rc;
+  const double spin[3][4] = {{1, 0, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+  const double masses[3] = {limbMass, sk.mass, m2}, inertias[3] = {limbInertia, sk.inertia, i2};
+  const Vec2* partials[3] = {vLimb, vSocket, vShank};
+  const Vec2 rests[3] = {restLimb, restSocket, restShank};
+  // Active forces: the drive on the limb, the socket's spring and damper, the knee.
+  const double theta = sigma - psi, thetaDot = sigmaDot - psiDot;
+  const double Mk = kneeMoment(m, theta, thetaDot, sigma);
+  const double socketMoment = -sk.rotationStiffness * (sigma - phi) - sk.rotationDamping * (sigmaDot - phiDot);
+  double Q[4] = {m.hipDriveGain * hipMoment(d, t) - socketMoment, -sk.pistonStiffness * p - sk.pistonDamping * pDot,
+                 socketMoment + Mk, -Mk};
+  double M[4][4] = {};
+  for (int b = 0; b < 3; ++b)
+    for (int j = 0; j < 4; ++j) {
+      Q[j] += dot(Vec2{0, -masses[b] * kG}, partials[b][j]) - masses[b] * dot(rests[b], partials[b][j]);
+      for (int k = 0; k < 4; ++k)
+        M[j][k] += masses[b] * dot(partials[b][k], partials[b][j]) + inertias[b] * spin[b][j] * spin[b][k];
+    }
+  for (int k = 0; k < 4; ++k)  // Gaussian elimination (M is positive definite)
+    for (int i = k + 1; i < 4; ++i) {
+      const double f = M[i][k] / M[k][k];
+      for (int j = k; j < 4; ++j) M[i][j] -= f * M[k][j];
+      Q[i] -= f * Q[k];
+    }
+  for (int i = 3; i >= 0; --i) {
+    double s = Q[i];
+    for (int j = i + 1; j < 4; ++j) s -= M[i][j] * acc[j];
+    acc[i] = s / M[i][i];
+  }
+}
+
+/// One classical RK4 step of y' = f(t, y) (N states).
+template <int N, class F>
+void rk4Step(F f, double t, double step, double* y) {
+  double k1[N], k2[N], k3[N], k4[N], tmp[N];
+  f(t, y, k1);
+  for (int j = 0; j < N; ++j) tmp[j] = y[j] + step / 2 * k1[j];
+  f(t + step / 2, tmp, k2);
+  for (int j = 0; j < N; ++j) tmp[j] = y[j] + step / 2 * k2[j];
+  f(t + step / 2, tmp, k3);
+  for (int j = 0; j < N; ++j) tmp[j] = y[j] + step * k3[j];
+  f(t + step, tmp, k4);
+  for (int j = 0; j < N; ++j) y[j] += step / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+}
+
 struct SwingSamples {
   std::vector<double> time, hipDeg, kneeDeg, hipMomentNm;
   std::vector<double> cleanKneeDeg;
@@ -170,7 +266,19 @@ inline SwingSamples generateSwing(const SwingTruth& m, const HipDrive& d, double
                                   double hip0Deg = -15.0, double knee0Deg = 10.0, double endKneeDeg = 8.0,
                                   double rate = 500.0, double step = 1e-4) {
   const double deg = kPi / 180.0;
-  double y[4] = {hip0Deg * deg, (hip0Deg - knee0Deg) * deg, m.toeOffHipRate, m.toeOffHipRate - m.toeOffKneeRate};
+  // Rigid: (phi, psi, rates). With a socket: (phi, p, sigma, psi, rates), the socket at rest
+  // and undeflected at toe-off.
+  const bool socket = m.socket.rotationStiffness > 0;
+  const double hip0 = hip0Deg * deg, shank0 = (hip0Deg - knee0Deg) * deg;
+  const double shankRate0 = m.toeOffHipRate - m.toeOffKneeRate;
+  double y[8] = {hip0, shank0, m.toeOffHipRate, shankRate0};
+  if (socket) {
+    const double z[8] = {hip0, 0, hip0, shank0, m.toeOffHipRate, 0, m.toeOffHipRate, shankRate0};
+    std::copy(z, z + 8, y);
+  }
+  // The lab's thigh (the socket's, where the markers are) and knee.
+  auto thighOf = [&] { return socket ? y[2] : y[0]; };
+  auto kneeOf = [&] { return socket ? y[2] - y[3] : y[0] - y[1]; };
   std::mt19937_64 engine(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   SwingSamples s;
@@ -178,31 +286,33 @@ inline SwingSamples generateSwing(const SwingTruth& m, const HipDrive& d, double
   double peak = 0;
   for (int i = 0; i < 100000; ++i) {
     const double t = i / rate;
-    const double knee = (y[0] - y[1]) / deg;
+    const double knee = kneeOf() / deg;
     peak = std::max(peak, knee);
     if (i > 10 && peak > knee0Deg + 20.0 && knee < endKneeDeg) break;
     if (t > 1.5) throw std::runtime_error("independent swing did not return within 1.5 s");
     s.time.push_back(t);
-    s.hipDeg.push_back(y[0] / deg + noiseDeg * normal(engine));
+    s.hipDeg.push_back(thighOf() / deg + noiseDeg * normal(engine));
     s.kneeDeg.push_back(knee + noiseDeg * normal(engine));
     s.cleanKneeDeg.push_back(knee);
     s.hipMomentNm.push_back(hipMoment(d, t));
     for (int k = 0; k < perSample; ++k) {
       const double tk = t + k * step;
-      double k1[4], k2[4], k3[4], k4[4], tmp[4];
-      auto f = [&](double tt, const double* yy, double* out) {
-        out[0] = yy[2];
-        out[1] = yy[3];
-        accelerations(m, d, tt, yy, out + 2);
-      };
-      f(tk, y, k1);
-      for (int j = 0; j < 4; ++j) tmp[j] = y[j] + step / 2 * k1[j];
-      f(tk + step / 2, tmp, k2);
-      for (int j = 0; j < 4; ++j) tmp[j] = y[j] + step / 2 * k2[j];
-      f(tk + step / 2, tmp, k3);
-      for (int j = 0; j < 4; ++j) tmp[j] = y[j] + step * k3[j];
-      f(tk + step, tmp, k4);
-      for (int j = 0; j < 4; ++j) y[j] += step / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+      if (socket) {
+        rk4Step<8>(
+            [&](double tt, const double* yy, double* out) {
+              std::copy(yy + 4, yy + 8, out);
+              socketAccelerations(m, d, tt, yy, out + 4);
+            },
+            tk, step, y);
+        continue;
+      }
+      rk4Step<4>(
+          [&](double tt, const double* yy, double* out) {
+            out[0] = yy[2];
+            out[1] = yy[3];
+            accelerations(m, d, tt, yy, out + 2);
+          },
+          tk, step, y);
     }
   }
   return s;

@@ -8,6 +8,7 @@
 
 #include <random>
 
+#include "../cli/release_only.h"
 #include "../identify/diagnosis_calibration.h"
 #include "../identify/diagnosis_outcome.h"
 
@@ -44,6 +45,30 @@ TEST(IndependentSwingDiagnosis, HiddenAssistSpringIsNamedAndExplained) {
   // The record-agreement rule was run on it and held: one stiffness in all three records.
   EXPECT_EQ(dg.acceptedScores.front().agreement.rfind("stiffness_Nm_per_rad agrees between records", 0), 0u)
       << dg.acceptedScores.front().agreement;
+}
+
+// A loose socket hidden in swings of the independent generator (its own four-coordinate
+// leg by Kane's method, the socket's angle as the lab's thigh): the socket candidate is named,
+// its two values land near the truth, and the held-out error falls to the noise.
+TEST(IndependentSwingDiagnosis, HiddenLooseSocketIsNamedWithItsSpringAndDamper) {
+  SWINGSIM_RELEASE_ONLY();  // the socket leg's refits: 5-7 s in Release
+  independent::SwingTruth truth;
+  truth.socket.rotationStiffness = 100.0;                           // N m/rad (MyoSuite: 350)
+  truth.socket.rotationDamping = 5.0;                               // N m s/rad (MyoSuite: 175)
+  const independent::SwingTruth files = independent::SwingTruth{};  // the user's leg is rigid
+  const Diagnosis dg = diagnoseIndependent(truth, 61, "socket", &files);
+  ASSERT_FALSE(dg.accepted.empty());
+  EXPECT_EQ(dg.accepted.front(), "socket_compliance");
+  EXPECT_LT(worstHeldOut(dg), 1.2 * kNoiseDeg);
+  const auto& c = dg.acceptedScores.front();
+  ASSERT_EQ(c.parameters.size(), 2u);
+  const double truths[2] = {truth.socket.rotationStiffness, truth.socket.rotationDamping};
+  for (std::size_t i = 0; i < 2; ++i) {
+    // Within the 99.9 % interval (the 95 % one widened as the blind draw's check).
+    const double half = 0.5 * (c.parameters[i].upper - c.parameters[i].lower) * 3.2905 / 1.96;
+    const double mid = 0.5 * (c.parameters[i].upper + c.parameters[i].lower);
+    EXPECT_LE(std::abs(truths[i] - mid), half) << c.parameters[i].name << " " << c.parameters[i].value;
+  }
 }
 
 // Issue 54, a near miss: a stiffening outside the library (beyond 55 deg) with only the

@@ -13,7 +13,10 @@ const kFieldLabels = {
   'sound_limb_swing_time_s': ['sound-limb swing time', 's'],
   'hip_moment.time_scale': ['hip moment time scale', ''],
   'socket.piston_stiffness_N_per_m': ['socket piston stiffness (empty: rigid)', 'N/m'],
+  'socket.piston_damping_N_s_per_m': ['socket piston damping (empty: rigid)', 'N s/m'],
   'socket.rotation_stiffness_Nm_per_rad': ['socket rotation stiffness (empty: rigid)', 'N m/rad'],
+  'socket.rotation_damping_Nm_s_per_rad': ['socket rotation damping (empty: rigid)', 'N m s/rad'],
+  'socket.mass_kg': ['socket mass (empty: rigid)', 'kg'],
 };
 for (const seg of ['thigh', 'shank', 'foot']) {
   kFieldLabels[`segments.${seg}.length_m`] = [`${seg} length`, 'm'];
