@@ -33,6 +33,19 @@ using P2 = std::array<double, 2>;
 
 Participant loadP1() { return loadParticipant(std::string(SWINGSIM_SOURCE_DIR) + "/participants/p1.yaml"); }
 
+/// P1 with a socket of these springs and dampers (N m/rad, N m s/rad, N/m, N s/m), the rest
+/// MyoSuite's.
+Participant loadP1WithSocket(double rotationStiffness, double rotationDamping, double pistonStiffness,
+                             double pistonDamping) {
+  Participant p = loadP1();
+  p.socket = SocketCompliance{};
+  p.socket->rotationStiffness = rotationStiffness;
+  p.socket->rotationDamping = rotationDamping;
+  p.socket->pistonStiffness = pistonStiffness;
+  p.socket->pistonDamping = pistonDamping;
+  return p;
+}
+
 /// A plain knee damper, so the test's knee is a known function of the knee's rate.
 class KneeDamper final : public KneeLaw {
  public:
@@ -218,12 +231,7 @@ TEST(SocketCompliance, ReferenceIntegratorMatchesTheIndependentIntegrationOfTheS
   // The reference integrator's socket leg (swing/reference_socket_chain.h: exact Jacobians)
   // against this file's leg (central differences, RK4): same drive and knee as above, with
   // softer socket springs and dampers so that it gives by degrees and centimetres.
-  Participant p = loadP1();
-  p.socket = SocketCompliance{};
-  p.socket->rotationStiffness = 60;
-  p.socket->rotationDamping = 2;
-  p.socket->pistonStiffness = 3000;
-  p.socket->pistonDamping = 40;
+  const Participant p = loadP1WithSocket(60, 2, 3000, 40);
   const LegGeometry g = calcLegGeometry(p, 0.02);
   const ReferenceSwing ref(g, KneeDamper(), p.hipMoment, HipRange{-3, 3});
   std::vector<double> times;
@@ -256,12 +264,7 @@ TEST(SocketCompliance, ReferenceIntegratorMatchesTheIndependentIntegrationOfTheS
 TEST(SocketCompliance, ReferenceSocketLegKeepsItsEnergyWithoutDampersOrDrive) {
   // No knee law, no dampers, no hip moment, the hip stop out of reach: kinetic + potential +
   // the socket springs' energy stays put while the socket swaps energy with the leg.
-  Participant p = loadP1();
-  p.socket = SocketCompliance{};
-  p.socket->rotationStiffness = 80;
-  p.socket->rotationDamping = 0;
-  p.socket->pistonStiffness = 2000;
-  p.socket->pistonDamping = 0;
+  const Participant p = loadP1WithSocket(80, 0, 2000, 0);
   const LegGeometry g = calcLegGeometry(p, 0.0);
   HipMomentProfile noHipMoment;
   noHipMoment.flexionAmplitude = 0;
