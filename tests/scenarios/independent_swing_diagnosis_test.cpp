@@ -11,6 +11,7 @@
 #include "../cli/release_only.h"
 #include "../identify/diagnosis_calibration.h"
 #include "../identify/diagnosis_outcome.h"
+#include "io/participant_loader.h"
 
 namespace swingsim {
 namespace {
@@ -56,7 +57,10 @@ TEST(IndependentSwingDiagnosis, HiddenLooseSocketIsNamedWithItsSpringAndDamper) 
   truth.socket.rotationStiffness = 100.0;                           // N m/rad (MyoSuite: 350)
   truth.socket.rotationDamping = 5.0;                               // N m s/rad (MyoSuite: 175)
   const independent::SwingTruth files = independent::SwingTruth{};  // the user's leg is rigid
-  const Diagnosis dg = diagnoseIndependent(truth, 61, "socket", &files);
+  // As `diagnose --save-model` would save it: the knee file and the participant beside it.
+  const std::string saved = ::testing::TempDir() + "swingsim-socket-knee.yaml";
+  const Diagnosis dg = calibration::diagnoseSwing(truth, files, 61, "indep-socket", 1, "", saved);
+  testing::printOutcome("socket", dg, "deg", kNoiseDeg);
   ASSERT_FALSE(dg.accepted.empty());
   EXPECT_EQ(dg.accepted.front(), "socket_compliance");
   EXPECT_LT(worstHeldOut(dg), 1.2 * kNoiseDeg);
@@ -69,6 +73,12 @@ TEST(IndependentSwingDiagnosis, HiddenLooseSocketIsNamedWithItsSpringAndDamper) 
     const double mid = 0.5 * (c.parameters[i].upper + c.parameters[i].lower);
     EXPECT_LE(std::abs(truths[i] - mid), half) << c.parameters[i].name << " " << c.parameters[i].value;
   }
+  // The saved participant hangs its prosthesis on the diagnosed socket.
+  const Participant p = loadParticipant(::testing::TempDir() + "swingsim-socket-knee-participant.yaml");
+  ASSERT_TRUE(p.socket.has_value());
+  EXPECT_NEAR(p.socket->rotationStiffness, c.parameters[0].value, 1e-6 * c.parameters[0].value);
+  EXPECT_NEAR(p.socket->rotationDamping, c.parameters[1].value, 1e-6 * c.parameters[1].value);
+  EXPECT_EQ(p.socket->pistonStiffness, SocketCompliance{}.pistonStiffness);
 }
 
 // Issue 54, a near miss: a stiffening outside the library (beyond 55 deg) with only the
