@@ -171,6 +171,12 @@ SwingPlant::SwingPlant(SwingBase base, std::vector<SwingRecord> train, std::vect
                        double tolerance)
     : base_(std::move(base)), train_(std::move(train)), validate_(std::move(validate)), tolerance_(tolerance) {
   if (train_.empty()) throw InputError("diagnose: no training file (train:)");
+  if (base_.drive == SwingDrive::kThighKinematics && base_.participant.socket)
+    base_.notes.push_back(
+        "the participant has a compliant socket (socket:) and the measured thigh drives the swing, which prescribes "
+        "the residual "
+        "limb's angle; a lab's thigh markers sit on the socket, so the records' thigh is the socket's and its "
+        "rotation is counted twice (docs/socket.md; drive the swing by the hip moment, or leave socket: out)");
   if (base_.drive == SwingDrive::kThighKinematics)
     for (std::size_t i = 0; i < train_.size() + validate_.size(); ++i) {
       const SwingRecord& r = record(i);

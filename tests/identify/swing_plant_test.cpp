@@ -147,6 +147,23 @@ TEST(SwingDiagnosis, EveryHiddenEffectIsFoundWithItsParameterAndTheErrorFallsToT
   }
 }
 
+TEST(SwingDiagnosis, UnderTheThighDriveTheSocketIsNotACandidateAndAParticipantsSocketIsWarnedOf) {
+  const Data d = makeData({}, 7);
+  SwingBase thighDriven = base();
+  thighDriven.drive = SwingDrive::kThighKinematics;
+  const SwingPlant rigid(thighDriven, d.train, {});
+  EXPECT_NE(rigid.checkApplicable(*rigid.baseModel(), EffectId::kSocketCompliance).find("markers sit on the socket"),
+            std::string::npos);
+  EXPECT_TRUE(rigid.warnings().empty());
+  thighDriven.participant.socket = SocketCompliance{};
+  const SwingPlant withSocket(thighDriven, d.train, {});
+  ASSERT_EQ(withSocket.warnings().size(), 1u);
+  EXPECT_NE(withSocket.warnings().front().find("counted twice"), std::string::npos);
+  // Driven by the hip moment, the socket is a candidate.
+  const SwingPlant hipDriven(base(), d.train, {});
+  EXPECT_EQ(hipDriven.checkApplicable(*hipDriven.baseModel(), EffectId::kSocketCompliance), "");
+}
+
 TEST(SwingDiagnosis, NullDataAcceptNothingInAtLeastNineteenOfTwentySeeds) {
   SWINGSIM_RELEASE_ONLY();  // 50-180 s under the sanitizers
   int falseAcceptances = 0, falseAlarms = 0;
