@@ -15,8 +15,9 @@ enum Coordinate { kPhi = 0, kBeta = 1, kPiston = 2, kRotation = 3 };
 
 double dotQ(const Vec& w, const Vec& q) { return w[0] * q[0] + w[1] * q[1] + w[2] * q[2] + w[3] * q[3]; }
 
-// Solves m x = r for the first `n` unknowns after `skip` ones (m symmetric positive definite):
-// Gaussian elimination without pivoting on the trailing block.
+// Solves m x = r for the unknowns from index `skip` on (the leading ones known and already
+// taken into r; m symmetric positive definite): Gaussian elimination without pivoting on the
+// trailing block. x's leading entries are left 0.
 Vec solveTrailing(double m[kN][kN], double r[kN], int skip) {
   for (int k = skip; k < kN; ++k)
     for (int i = k + 1; i < kN; ++i) {
