@@ -94,7 +94,7 @@ SwingPrediction predictSwing(const SwingBase& base, const SwingModelParams& para
   // With a compliant socket a lab's thigh is the socket's: its markers sit on it, not on the
   // residual limb inside (docs/socket.md). The knee is the knee's own, socket to shank.
   std::vector<double> labThigh = tr.hipFlexion;
-  for (std::size_t i = 0; i < tr.socket.size(); ++i) labThigh[i] += tr.socket[i].rotation;
+  for (std::size_t i = 0; i < tr.socket.size(); ++i) labThigh[i] = tr.socket[i].calcSocketAngle(tr.hipFlexion[i]);
   return {labThigh, tr.kneeFlexion, tr.kneeFlexionRate, tr.hipMoment, tr.kneeMoment};
 }
 

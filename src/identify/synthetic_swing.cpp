@@ -31,7 +31,7 @@ SwingRecord makeSyntheticSwing(const SwingBase& base, const SwingModelParams& tr
     r.time.push_back(tr.time[i]);
     r.kneeFlexion.push_back(tr.kneeFlexion[i] + noise * kDegToRad * kneeNoise.next());
     // With a socket the lab's thigh is the socket's (identify/swing_model.h).
-    const double thigh = tr.hipFlexion[i] + (tr.socket.empty() ? 0.0 : tr.socket[i].rotation);
+    const double thigh = tr.socket.empty() ? tr.hipFlexion[i] : tr.socket[i].calcSocketAngle(tr.hipFlexion[i]);
     r.hipFlexion.push_back(thigh + noise * kDegToRad * hipNoise.next());
     r.hipMoment.push_back(measured.hipMoment.calcMoment(tr.time[i]));
   }

@@ -99,8 +99,8 @@ SegmentMassProperties calcResidualLimb(const LegGeometry& g) {
 PlanarPose calcPlanarPoseXY(const LegGeometry& g, double hipHeight, double hipFlexion, double kneeFlexion,
                             const SocketDeflection& socket) {
   const SocketDeflection d = g.socket ? socket : SocketDeflection{};
-  const double socketAngle = hipFlexion + d.rotation;  // the socket's line from hanging straight down
-  const double shank = socketAngle - kneeFlexion;      // absolute shank angle from the downward vertical
+  const double socketAngle = d.calcSocketAngle(hipFlexion);  // the socket's line from hanging straight down
+  const double shank = socketAngle - kneeFlexion;            // absolute shank angle from the downward vertical
   // The knee: down the thigh to the socket's pivot (moved by the piston), then down the socket.
   const double toPivot = g.socket ? g.socketPivotBelowHip + d.piston : g.thighLength;
   const double pivotToKnee = g.socket ? g.thighLength - g.socketPivotBelowHip : 0;

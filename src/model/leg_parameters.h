@@ -162,6 +162,9 @@ struct SocketCompliance {
 /// (+ = the socket flexed on the limb, the hip's sense).
 struct SocketDeflection {
   double piston = 0, rotation = 0;
+  /// The socket's angle from hanging straight down (rad; or its rate, of rates) on a residual
+  /// limb at `limbFlexion`: where a lab's thigh markers are, on the socket.
+  double calcSocketAngle(double limbFlexion) const { return limbFlexion + rotation; }
 };
 
 struct Participant {

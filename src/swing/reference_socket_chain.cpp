@@ -45,15 +45,12 @@ ReferenceSocketChain::ReferenceSocketChain(const LegGeometry& g, double gamma, d
   const double toPivot = g.socketPivotBelowHip, pivotToKnee = g.thighLength - g.socketPivotBelowHip;
   const double r2 = massMomentShank / shankMass;
   enum { kLimb = 0, kSocket = 1, kShank = 2 };  // kDirections
-  bodies_[0] = {limb.mass, limb.inertia, kDirections[kLimb], {{{limb.com, false, kLimb}}}, 1};
-  bodies_[1] = {socket_.mass,
-                socket_.inertia,
-                kDirections[kSocket],
-                {{{toPivot, true, kLimb}, {-socket_.comAbovePivot, false, kSocket}}},
-                2};
+  bodies_[0] = {limb.mass, limb.inertia, kLimb, {{{limb.com, false, kLimb}}}, 1};
+  bodies_[1] = {
+      socket_.mass, socket_.inertia, kSocket, {{{toPivot, true, kLimb}, {-socket_.comAbovePivot, false, kSocket}}}, 2};
   bodies_[2] = {shankMass,
                 inertiaAboutKnee - shankMass * r2 * r2,
-                kDirections[kShank],
+                kShank,
                 {{{toPivot, true, kLimb}, {pivotToKnee, false, kSocket}, {r2, false, kShank}}},
                 3};
 }
@@ -96,11 +93,12 @@ void ReferenceSocketChain::assemble(const Vec& q, const Vec& u, const std::array
       cy += length * rate * rate * c;
     }
     const double ax = cx + support[0], ay = cy + kGravity + support[1];
+    const Vec& angle = kDirections[static_cast<std::size_t>(b.direction)];
     for (int i = 0; i < kN; ++i) {
       rhs[i] -= b.mass * (jx[i] * ax + jy[i] * ay);
       for (int j = 0; j < kN; ++j)
         m[i][j] += b.mass * (jx[i] * jx[j] + jy[i] * jy[j]) +
-                   b.inertia * b.angle[static_cast<std::size_t>(i)] * b.angle[static_cast<std::size_t>(j)];
+                   b.inertia * angle[static_cast<std::size_t>(i)] * angle[static_cast<std::size_t>(j)];
     }
   }
   rhs[kPiston] -= socket_.pistonStiffness * q[kPiston] + socket_.pistonDamping * u[kPiston];

@@ -50,7 +50,8 @@ class ReferenceSocketChain {
 
  private:
   // One body: its centre of mass as terms length * down(w . q), the length growing with the
-  // piston when `slides`; its planar angle w_angle . q (plus a constant).
+  // piston when `slides`; its planar angle is its own line's, kDirections[direction] . q (plus
+  // a constant).
   struct Term {
     double length;
     bool slides;
@@ -58,7 +59,7 @@ class ReferenceSocketChain {
   };
   struct Body {
     double mass, inertia;
-    Vec angle;
+    int direction;
     std::array<Term, 3> terms;
     int numTerms;
   };

@@ -395,12 +395,16 @@ ReferenceSwingEnd ReferenceSwing::calcSwingEnd(const InitialConditions& initial,
   // The three trigger functions of simulateSwing's event handlers.
   const double target = rule.thighTargetFlexion, zone = rule.zoneOfStability;
   auto thighSignal = [&](double t) { return dp.interpolate(t, 0) - target; };
-  // With a socket the knee adds its rotation (adding 0.0 without one changes nothing).
-  const int socket = eq.socketIndex();
-  auto socketAt = [&](double t, int offset) { return socket < 0 ? 0.0 : dp.interpolate(t, socket + offset); };
-  auto kneeRate = [&](double t) { return dp.interpolate(t, 2) - dp.interpolate(t, 3) + socketAt(t, 3); };
+  // The knee at t from the whole interpolated state, by the equations' own rule (with a
+  // socket, its rotation too).
+  std::vector<double> yAt(static_cast<std::size_t>(eq.numStates()));
+  auto kneeRate = [&](double t) {
+    dp.interpolate(t, yAt.data());
+    return eq.calcKneeFlexionRate(yAt.data());
+  };
   auto kneeFlexionAt = [&](double t) {
-    return eq.calcKneeFlexion(dp.interpolate(t, 0), dp.interpolate(t, 1)) + socketAt(t, 1);
+    dp.interpolate(t, yAt.data());
+    return eq.calcKneeFlexion(yAt.data());
   };
   auto zoneSignal = [&](double t) { return zone - kneeFlexionAt(t); };
   auto signalsAt = [&](const double* y) {
@@ -456,8 +460,8 @@ double ReferenceSwing::calcMechanicalEnergy(double hipFlexion, double kneeFlexio
                                             const SocketDeflection& socketRate) const {
   const Equations& eq = *equations_;
   // The shank's line from the socket's: phi + rotation - knee + gamma.
-  return eq.calcEnergy(hipFlexion, eq.toBeta(hipFlexion + socket.rotation, kneeFlexion), hipFlexionRate,
-                       hipFlexionRate + socketRate.rotation - kneeFlexionRate, socket, socketRate);
+  return eq.calcEnergy(hipFlexion, eq.toBeta(socket.calcSocketAngle(hipFlexion), kneeFlexion), hipFlexionRate,
+                       socketRate.calcSocketAngle(hipFlexionRate) - kneeFlexionRate, socket, socketRate);
 }
 
 }  // namespace swingsim

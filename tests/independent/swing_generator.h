@@ -110,6 +110,23 @@ inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
 inline Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
 inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 
+/// The shank and foot as one rigid body, in the shank frame (x forward along the foot, y up
+/// along the shank, origin at the knee): mass, COM and inertia about the COM.
+struct ShankBody {
+  double mass;
+  Vec2 com;
+  double inertia;
+};
+
+inline ShankBody shankBodyOf(const Segment& shank, const Segment& foot) {
+  const double as = shank.length - shank.comFromDistal, L2 = shank.length;
+  const double cf = foot.length - foot.comFromDistal;
+  const double m2 = shank.mass + foot.mass;
+  const Vec2 c{foot.mass * cf / m2, -(shank.mass * as + foot.mass * L2) / m2};
+  const double jKnee = shank.inertia + shank.mass * as * as + foot.inertia + foot.mass * (cf * cf + L2 * L2);
+  return {m2, c, jKnee - m2 * dot(c, c)};
+}
+
 /// Knee moment (N m, positive flexes) from the knee law and the hidden knee effects.
 inline double kneeMoment(const SwingTruth& m, double theta, double thetaDot, double phi) {
   const double c = m.tableMoment / (m.referenceDegS * kPi / 180.0) * (thetaDot < 0 ? m.extensionFactor : 1.0);
@@ -136,13 +153,9 @@ inline void chainAccelerations(const Segment& thigh, const Segment& shank, const
   const double phi = y[0], psi = y[1], phiDot = y[2], psiDot = y[3];
   // Thigh: COM a1 below the hip along the thigh.
   const double a1 = thigh.length - thigh.comFromDistal, L1 = thigh.length;
-  // Shank + foot, in the shank frame (x forward along the foot, y up along the shank).
-  const double as = shank.length - shank.comFromDistal, L2 = shank.length;
-  const double cf = foot.length - foot.comFromDistal;
-  const double m2 = shank.mass + foot.mass;
-  const Vec2 c{foot.mass * cf / m2, -(shank.mass * as + foot.mass * L2) / m2};
-  const double jKnee = shank.inertia + shank.mass * as * as + foot.inertia + foot.mass * (cf * cf + L2 * L2);
-  const double i2 = jKnee - m2 * dot(c, c);
+  const ShankBody body = shankBodyOf(shank, foot);
+  const double m2 = body.mass, i2 = body.inertia;
+  const Vec2 c = body.com;
   // Unit vectors.
   const Vec2 e1{std::sin(phi), -std::cos(phi)}, n1{std::cos(phi), std::sin(phi)};
   const Vec2 rc{c.x * std::cos(psi) - c.y * std::sin(psi), c.x * std::sin(psi) + c.y * std::cos(psi)};  // R(psi) c
@@ -190,13 +203,9 @@ inline void socketAccelerations(const SwingTruth& m, const HipDrive& d, double t
   const double limbCom = (m.thigh.mass * thighCom - sk.mass * socketCom) / limbMass;
   const double limbInertia = m.thigh.inertia + m.thigh.mass * thighCom * thighCom -
                              (sk.inertia + sk.mass * socketCom * socketCom) - limbMass * limbCom * limbCom;
-  // Shank + foot in the shank frame, as chainAccelerations.
-  const double as = m.shank.length - m.shank.comFromDistal, L2 = m.shank.length;
-  const double cf = m.foot.length - m.foot.comFromDistal;
-  const double m2 = m.shank.mass + m.foot.mass;
-  const Vec2 c{m.foot.mass * cf / m2, -(m.shank.mass * as + m.foot.mass * L2) / m2};
-  const double i2 =
-      m.shank.inertia + m.shank.mass * as * as + m.foot.inertia + m.foot.mass * (cf * cf + L2 * L2) - m2 * dot(c, c);
+  const ShankBody body = shankBodyOf(m.shank, m.foot);
+  const double m2 = body.mass, i2 = body.inertia;
+  const Vec2 c = body.com;
   const Vec2 eP{std::sin(phi), -std::cos(phi)}, nP{std::cos(phi), std::sin(phi)};
   const Vec2 eS{std::sin(sigma), -std::cos(sigma)}, nS{std::cos(sigma), std::sin(sigma)};
   const Vec2 rc{c.x * std::cos(psi) - c.y * std::sin(psi), c.x * std::sin(psi) + c.y * std::cos(psi)};

@@ -68,7 +68,7 @@ TEST(SwingGenerator, ItsSocketLegSwingsAsSwingsimsReferenceSocketLeg) {
     const ReferenceTrajectory tr = reference.integrate(q.initial, times, 1e-10, 1e-10);
     Swings out;
     for (std::size_t i = 0; i < tr.size(); ++i) {
-      out.thigh.push_back((tr.hipFlexion[i] + (socket ? tr.socket[i].rotation : 0.0)) * kRadToDeg);
+      out.thigh.push_back((socket ? tr.socket[i].calcSocketAngle(tr.hipFlexion[i]) : tr.hipFlexion[i]) * kRadToDeg);
       out.knee.push_back(tr.kneeFlexion[i] * kRadToDeg);
     }
     return out;

@@ -17,14 +17,16 @@ using ::testing::HasSubstr;
 
 using serve_test::callServeApi;
 
+/// P1 simulated on the page's API with one socket field typed.
+Json simulateP1With(const char* key, const char* value) {
+  return callServeApi(&ServeApi::simulate, {{"participant", "p1"}, {"edits", {{key, value}}}});
+}
+
 TEST(ServeSocket, ATypedStiffnessTurnsTheSocketOnAndTheReplyHasItsGive) {
   const Json rigid = callServeApi(&ServeApi::simulate, {{"participant", "p1"}});
   EXPECT_FALSE(rigid.contains("socket_peak"));
-  const auto withRotationStiffness = [](const char* value) {
-    return callServeApi(&ServeApi::simulate,
-                        {{"participant", "p1"}, {"edits", {{"socket.rotation_stiffness_Nm_per_rad", value}}}});
-  };
-  const Json myo = withRotationStiffness("350"), loose = withRotationStiffness("100");
+  const char* key = "socket.rotation_stiffness_Nm_per_rad";
+  const Json myo = simulateP1With(key, "350"), loose = simulateP1With(key, "100");
   ASSERT_TRUE(myo.contains("socket_peak")) << myo.dump();
   ASSERT_TRUE(loose.contains("socket_peak")) << loose.dump();
   // The socket gives, the swing moves, and a looser socket turns further.
@@ -36,11 +38,8 @@ TEST(ServeSocket, ATypedStiffnessTurnsTheSocketOnAndTheReplyHasItsGive) {
 TEST(ServeSocket, ATypedDamperTurnsTheSocketOnAndALighterOneLetsItGiveMore) {
   // The dampers hold the socket over a swing (docs/socket.md): MyoSuite's 175 N m s/rad
   // against a tenth of it.
-  const auto withRotationDamping = [](const char* value) {
-    return callServeApi(&ServeApi::simulate,
-                        {{"participant", "p1"}, {"edits", {{"socket.rotation_damping_Nm_s_per_rad", value}}}});
-  };
-  const Json myo = withRotationDamping("175"), light = withRotationDamping("17.5");
+  const char* key = "socket.rotation_damping_Nm_s_per_rad";
+  const Json myo = simulateP1With(key, "175"), light = simulateP1With(key, "17.5");
   ASSERT_TRUE(myo.contains("socket_peak")) << myo.dump();
   ASSERT_TRUE(light.contains("socket_peak")) << light.dump();
   EXPECT_GT(light["socket_peak"]["rotation_deg"].get<double>(), 2 * myo["socket_peak"]["rotation_deg"].get<double>());

@@ -76,8 +76,8 @@ TEST(SwingEvents, AReboundOutAndBackWithinOneStepKeepsItsHeight) {
   rule.zoneOfStability = kZone;
   rule.thighTargetFlexion = -1;  // the thigh already at its target, above it throughout
   // Inside the settle dwell after the entry at 0.20 s.
-  const StepEnd a{0.25, 0.5, 0.099, 0, 1.0, 0, 0, 0, 0};
-  const StepEnd b{0.26, 0.5, 0.099, 0, -1.0, 0, 0, 0, 0};
+  const StepEnd a{0.25, 0.5, 0.099, 0, 1.0, 0, 0, 0, 0, {}};
+  const StepEnd b{0.26, 0.5, 0.099, 0, -1.0, 0, 0, 0, 0, {}};
   handleStepEvents(a, b, rule, log);
   EXPECT_EQ(log.bounces, 1);
   ASSERT_TRUE(log.bounceHeight);
